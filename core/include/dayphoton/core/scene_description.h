@@ -1,0 +1,88 @@
+// SceneDescription: the typed, file-format-free description of what the engine must build.
+// Produced by the project library from a project file (project/), consumed by the engine
+// (engine/Scene). Materials are given by their physical parameters; surfaces are planar
+// polygons in world coordinates (metres, +X east, +Y north, +Z up, after the site's north
+// rotation); sensors are points with normals. Every element keeps its source location so
+// that errors found later (e.g. by geometry validation) can still name the input line.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/source_location.h"
+#include "dayphoton/core/vec3.h"
+
+namespace dayphoton {
+
+enum class MaterialType {
+  Lambertian,   ///< RADIANCE plastic: diffuse RGB reflectance + specular lobe (specularity, roughness)
+  Metal,        ///< RADIANCE metal: specular lobe tinted by the RGB reflectance
+  Mirror,       ///< perfect specular reflector, RGB reflectance
+  Glass,        ///< thin glass: normal transmittance per RGB channel, Fresnel angular behaviour
+  Dielectric,   ///< thick refracting interface (prisms): refractive index, RGB transmission
+  Translucent,  ///< RADIANCE trans: plastic with diffuse/specular transmission
+};
+
+/// Name used in project files and messages ("lambertian", "metal", ...).
+const char* material_type_name(MaterialType type);
+
+struct MaterialSpec {
+  std::string name;
+  MaterialType type = MaterialType::Lambertian;
+  SourceLocation location;
+
+  /// Lambertian/Metal/Mirror/Translucent: RGB reflectance in [0,1].
+  Vec3 reflectance{0, 0, 0};
+  /// Lambertian/Metal/Translucent: fraction of reflection that is specular, [0,1].
+  double specularity = 0;
+  /// Lambertian/Metal/Translucent: RMS facet slope (0 = perfectly smooth), [0,1].
+  double roughness = 0;
+  /// Glass: normal-incidence visible transmittance per RGB channel, [0,1] (not RADIANCE's
+  /// transmissivity; the engine converts). Dielectric: RGB transmission per metre = 1 - absorption.
+  Vec3 transmittance{0, 0, 0};
+  /// Glass/Dielectric: refractive index (glass default 1.52).
+  double refractive_index = 1.52;
+  /// Translucent: fraction of the non-specularly-reflected light that is transmitted, [0,1].
+  double transmissivity = 0;
+  /// Translucent: fraction of the transmitted light that is transmitted specularly, [0,1].
+  double transmitted_specular = 0;
+};
+
+/// A planar polygon with a material. Ports are openings through which photons from distant
+/// sources enter (windows become ports automatically).
+struct Surface {
+  std::string name;
+  int material = -1;           ///< index into SceneDescription::materials
+  std::vector<Vec3> vertices;  ///< planar, simple; normal by winding (counter-clockwise)
+  bool port = false;           ///< photons from the sky/sun enter through this surface
+  SourceLocation location;
+};
+
+struct SensorPoint {
+  Vec3 position;  ///< metres
+  Vec3 normal;    ///< unit vector the sensor faces
+};
+
+/// A named set of sensors. Grids generated on a plane also give the plane, so the engine can
+/// place a virtual photon receiver there (DESIGN.md section 5).
+struct SensorGrid {
+  std::string name;
+  std::vector<SensorPoint> points;
+  bool planar = false;       ///< all points on one plane with one normal
+  Vec3 plane_normal{0, 0, 1};
+  double plane_height_m = 0;     ///< for planar grids: signed distance of the plane along plane_normal
+  std::vector<Vec3> outline;     ///< for planar grids: the polygon the grid covers
+  double spacing_m = 0;          ///< for generated grids
+  int columns = 0, rows = 0;     ///< for rectangular generated grids (row-major, rows outer)
+  SourceLocation location;
+};
+
+struct SceneDescription {
+  std::vector<MaterialSpec> materials;
+  std::vector<Surface> surfaces;
+  std::vector<SensorGrid> grids;
+
+  int find_material(const std::string& name) const;
+};
+
+}  // namespace dayphoton

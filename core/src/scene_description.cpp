@@ -1,0 +1,23 @@
+#include "dayphoton/core/scene_description.h"
+
+namespace dayphoton {
+
+const char* material_type_name(MaterialType type) {
+  switch (type) {
+    case MaterialType::Lambertian: return "lambertian";
+    case MaterialType::Metal: return "metal";
+    case MaterialType::Mirror: return "mirror";
+    case MaterialType::Glass: return "glass";
+    case MaterialType::Dielectric: return "dielectric";
+    case MaterialType::Translucent: return "translucent";
+  }
+  return "unknown";
+}
+
+int SceneDescription::find_material(const std::string& name) const {
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace dayphoton

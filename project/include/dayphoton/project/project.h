@@ -1,0 +1,200 @@
+// Project: the typed content of a project file (docs/project-format.md), every value with
+// the location it came from. Loading is staged (STYLE.md A.3):
+//   YAML text --parse--> located node tree --validate against the schema--> Project
+//   Project --generate geometry (rooms, windows, boxes, meshes, grids)--> SceneDescription
+// Both stages report every problem as a located error (file:line:col) and throw InputError
+// with all of them (up to a cap); neither writes anything.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/core/source_location.h"
+#include "dayphoton/core/vec3.h"
+
+namespace dayphoton::project {
+
+/// A value together with where it was written (location unknown for defaults).
+template <typename T>
+struct Located {
+  T value{};
+  SourceLocation location;
+};
+
+struct Site {
+  std::string name;
+  double latitude_deg = 0;    ///< north positive
+  double longitude_deg = 0;   ///< east positive (as EPW; RADIANCE's -o uses west positive)
+  double time_zone_h = 0;     ///< standard time offset from UTC, east positive (EPW convention)
+  double elevation_m = 0;
+  /// Angle (degrees, clockwise seen from above) from model +Y to true north (Honeybee
+  /// convention): the model is rotated by this angle about +Z to world coordinates.
+  double north_deg = 0;
+  /// If the model is drawn in a UTM grid, its zone (1..60) and hemisphere; the meridian
+  /// convergence at the site is then added to north_deg (see rotation_to_true_north_deg).
+  std::optional<int> utm_zone;
+  bool utm_north = true;
+  /// Meridian convergence (degrees) computed with GeographicLib; 0 without a UTM zone.
+  double meridian_convergence_deg = 0;
+  SourceLocation location;
+
+  /// Total clockwise rotation from model +Y to true north: north_deg + convergence.
+  double rotation_to_true_north_deg() const { return north_deg + meridian_convergence_deg; }
+};
+
+struct Weather {
+  std::string path;           ///< resolved against the project file's folder
+  std::string path_as_written;
+  SourceLocation location;
+};
+
+/// Model walls of a room generator, named by the compass direction they face *outward* in
+/// model coordinates (south = the wall at the room's minimum y).
+enum class Wall { South, North, East, West };
+const char* wall_name(Wall wall);
+
+struct WindowSpec {
+  std::string name;
+  Wall wall = Wall::South;
+  double width_m = 0;
+  double height_m = 0;
+  double sill_m = 0;   ///< height of the window's bottom edge above the floor
+  /// Distance along the wall from its lower-coordinate end (min x for south/north walls,
+  /// min y for east/west walls) to the window's near edge; centred if absent.
+  std::optional<double> offset_m;
+  std::string material;  ///< glazing material name
+  SourceLocation location;
+};
+
+struct RoomSpec {
+  std::string name;
+  Vec3 origin{0, 0, 0};   ///< the room's (min x, min y, floor) corner, metres
+  Vec3 size_m{0, 0, 0};   ///< x, y, z extents
+  std::string floor_material, ceiling_material;
+  std::string wall_material[4];  ///< indexed by Wall
+  std::vector<WindowSpec> windows;
+  SourceLocation location;
+};
+
+struct PolygonSpec {
+  std::string name;
+  std::vector<Vec3> vertices;
+  std::string material;
+  bool port = false;
+  SourceLocation location;
+};
+
+/// Axis-aligned box (before the site rotation), outward normals, optional rotation about +Z
+/// around its origin corner.
+struct BoxSpec {
+  std::string name;
+  Vec3 origin{0, 0, 0};
+  Vec3 size_m{0, 0, 0};
+  double rotation_deg = 0;
+  std::string material;
+  SourceLocation location;
+};
+
+struct MeshSpec {
+  std::string name;
+  std::string path;             ///< resolved OBJ path
+  std::string path_as_written;
+  /// OBJ `usemtl` name -> project material name; faces without a mapping take default_material.
+  std::vector<std::pair<std::string, std::string>> material_map;
+  std::string default_material;  ///< may be empty if every usemtl is mapped
+  Vec3 translate{0, 0, 0};
+  double scale = 1;
+  double rotation_deg = 0;  ///< about +Z, applied after scale, before translate
+  bool port = false;
+  SourceLocation location;
+};
+
+struct Geometry {
+  std::vector<RoomSpec> rooms;
+  std::vector<PolygonSpec> polygons;
+  std::vector<BoxSpec> boxes;
+  std::vector<MeshSpec> meshes;
+};
+
+struct GridSpec {
+  std::string name;
+  std::string room;                 ///< room name, or empty if `polygon` is given
+  std::vector<Vec3> polygon;        ///< outline (z ignored, height from height_m)
+  double height_m = 0.8;
+  double spacing_m = 0.5;
+  double inset_m = 0.5;
+  Vec3 normal{0, 0, 1};
+  SourceLocation location;
+};
+
+struct PointsSpec {
+  std::string name;
+  std::vector<SensorPoint> points;  ///< inline points
+  std::string file;                 ///< resolved .pts path (x y z nx ny nz per line), or empty
+  std::string file_as_written;
+  SourceLocation location;
+};
+
+struct Sensors {
+  std::vector<GridSpec> grids;
+  std::vector<PointsSpec> points;
+};
+
+enum class SkyBasis { Tregenza, Reinhart };
+enum class SunMode { Bins, Spread };
+
+struct Simulation {
+  SkyBasis basis = SkyBasis::Tregenza;
+  int reinhart_mf = 1;           ///< subdivision for Reinhart (1 = Tregenza)
+  long long photons_per_bin = 20000;   ///< stored photons per sky/sun bin
+  int bandwidth = 50;            ///< nearest photons per density estimate
+  unsigned long long seed = 1;
+  double ground_reflectance = 0.2;
+  SunMode sun = SunMode::Bins;
+  int sun_mf = 6;                ///< Reinhart subdivision whose patch centres are sun bins
+  int direct_samples_per_bin = 16;  ///< shadow rays per bin for the direct component
+  SourceLocation location;
+};
+
+struct Outputs {
+  std::string folder;            ///< resolved; default "results" beside the project file
+  std::string folder_as_written;
+  bool daylight_factor = true;
+  bool annual_illuminance = true;
+  bool metrics = true;
+  bool coefficients = true;
+  bool images = true;
+  bool report = true;
+  std::string matrix_format = "ascii";  ///< "ascii" or "float"
+  SourceLocation location;
+};
+
+struct Project {
+  std::string path;       ///< the project file as given
+  std::string directory;  ///< its folder, for resolving relative paths
+  Site site;
+  Weather weather;
+  std::vector<MaterialSpec> materials;
+  Geometry geometry;
+  Sensors sensors;
+  Simulation simulation;
+  Outputs outputs;
+};
+
+/// Parse and validate a project file. Throws InputError with every problem found (located,
+/// up to a cap); throws nothing else for bad input.
+Project load_project(const std::string& path);
+
+/// Same, from text already in memory (`path` is used in messages and to resolve relative paths).
+Project load_project_from_string(const std::string& text, const std::string& path);
+
+/// Generate the scene: rooms with their windows cut out (windows become glazing ports),
+/// polygons, boxes, OBJ meshes, sensor grids and point files, all rotated by the site's
+/// rotation_to_true_north_deg about +Z. Validates the geometry (non-planar polygons,
+/// windows outside their wall or overlapping, unknown materials, degenerate faces, NaN/Inf)
+/// and throws InputError with located messages.
+SceneDescription build_scene_description(const Project& project);
+
+}  // namespace dayphoton::project
