@@ -1,1 +1,57 @@
-int main() { return 0; }
+// dayphoton command line: parses options with CLI11 and dispatches to app/command_*.cpp.
+// Errors in input files are printed located (file:line:col) and give exit code 1.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "commands.h"
+#include "dayphoton/core/diagnostics.h"
+
+#ifndef DAYPHOTON_VERSION
+#define DAYPHOTON_VERSION "unknown"
+#endif
+
+int main(int argc, char** argv) {
+  using namespace dayphoton::app;
+  CLI::App cli{"dayphoton: climate-based daylight modelling with contribution photon maps"};
+  cli.set_version_flag("--version", std::string("dayphoton ") + DAYPHOTON_VERSION);
+  cli.require_subcommand(1);
+
+  CheckOptions check;
+  auto* check_cmd = cli.add_subcommand("check", "Validate a project file and print a summary of the model");
+  check_cmd->add_option("project", check.project_path, "Project file (YAML)")->required();
+
+  RunOptions run;
+  auto* run_cmd = cli.add_subcommand("run", "Run the daylight study of one or more projects");
+  run_cmd->add_option("projects", run.project_paths, "Project files (YAML)")->required();
+  run_cmd->add_option("-o,--output", run.output_dir, "Output folder (default: results/ beside the project)");
+  run_cmd->add_option("-j,--threads", run.threads, "Worker threads (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  run_cmd->add_flag("--force", run.force, "Recompute every step even if cached");
+  run_cmd->add_flag("-q,--quiet", run.quiet, "Print errors only");
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return cli.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return cli.exit(e);
+  } catch (const CLI::ParseError& e) {
+    cli.exit(e);
+    return ExitUsageError;
+  }
+
+  try {
+    if (check_cmd->parsed()) return run_check(check, std::cout);
+    if (run_cmd->parsed()) return run_run(run, std::cout, std::cerr);
+  } catch (const dayphoton::InputError& e) {
+    std::cerr << e.what();
+    return ExitInputError;
+  } catch (const std::exception& e) {
+    std::cerr << "dayphoton: error: " << e.what() << '\n';
+    return ExitInternalError;
+  }
+  return ExitUsageError;
+}

@@ -1,0 +1,34 @@
+// The dayphoton subcommands. Each is a function from parsed options to an exit code; they
+// only wire the libraries together (all modelling lives in core/ weather/ sky/ project/ engine/).
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace dayphoton::app {
+
+/// Process exit codes, documented in docs/cli.md.
+enum ExitCode : int {
+  ExitOk = 0,
+  ExitInputError = 1,      ///< a project, weather or geometry file is invalid (located messages)
+  ExitUsageError = 2,      ///< bad command line
+  ExitNotImplemented = 3,  ///< the requested step does not exist yet (said plainly, nothing written)
+  ExitInternalError = 4,   ///< a bug or an I/O failure
+};
+
+struct CheckOptions {
+  std::string project_path;
+};
+int run_check(const CheckOptions& options, std::ostream& out);
+
+struct RunOptions {
+  std::vector<std::string> project_paths;
+  std::string output_dir;
+  int threads = 0;
+  bool force = false;
+  bool quiet = false;
+};
+int run_run(const RunOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace dayphoton::app

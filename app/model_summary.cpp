@@ -1,0 +1,120 @@
+#include "model_summary.h"
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "dayphoton/core/polygon.h"
+#include "dayphoton/core/units.h"
+
+namespace dayphoton::app {
+
+std::string compass_point(double azimuth_deg) {
+  static const char* points[16] = {"N", "NNE", "NE", "ENE", "E", "ESE", "SE", "SSE",
+                                   "S", "SSW", "SW", "WSW", "W", "WNW", "NW", "NNW"};
+  double a = std::fmod(azimuth_deg, 360.0);
+  if (a < 0) a += 360.0;
+  return points[static_cast<int>(std::floor(a / 22.5 + 0.5)) % 16];
+}
+
+ModelSummary summarize_model(const project::Project& proj) {
+  ModelSummary s;
+  s.project_path = proj.path;
+  s.site = proj.site;
+  s.scene = project::build_scene_description(proj);
+
+  s.materials.resize(s.scene.materials.size());
+  for (std::size_t i = 0; i < s.scene.materials.size(); ++i) {
+    s.materials[i].name = s.scene.materials[i].name;
+    s.materials[i].type = material_type_name(s.scene.materials[i].type);
+  }
+  s.surface_count = s.scene.surfaces.size();
+  for (const Surface& surface : s.scene.surfaces) {
+    const double area = polygon_area_m2(surface.vertices);
+    if (surface.material >= 0) {
+      s.materials[surface.material].surfaces += 1;
+      s.materials[surface.material].area_m2 += area;
+    }
+    s.triangle_count += surface.vertices.size() - 2;
+    if (surface.port) {
+      // Port normals face into the room; the window faces the opposite way.
+      const Vec3 outward = -polygon_normal(surface.vertices);
+      PortInfo port;
+      port.name = surface.name;
+      port.area_m2 = area;
+      port.azimuth_deg = rad_to_deg(std::atan2(outward.x, outward.y));
+      if (port.azimuth_deg < 0) port.azimuth_deg += 360.0;
+      port.tilt_deg = rad_to_deg(std::acos(std::clamp(outward.z, -1.0, 1.0)));
+      s.ports.push_back(port);
+    }
+  }
+  for (const SensorGrid& grid : s.scene.grids) {
+    GridInfo info;
+    info.name = grid.name;
+    info.sensors = grid.points.size();
+    info.columns = grid.columns;
+    info.rows = grid.rows;
+    info.spacing_m = grid.spacing_m;
+    info.planar = grid.planar;
+    info.plane_height_m = grid.plane_height_m;
+    s.grids.push_back(info);
+  }
+  return s;
+}
+
+namespace {
+std::string fixed(double v, int digits) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+std::string latitude_text(double deg) {
+  return fixed(std::abs(deg), 4) + (deg >= 0 ? " N" : " S");
+}
+std::string longitude_text(double deg) {
+  return fixed(std::abs(deg), 4) + (deg >= 0 ? " E" : " W");
+}
+}  // namespace
+
+void print_model_summary(const ModelSummary& s, std::ostream& out) {
+  out << "project  " << s.project_path << '\n';
+  out << "site     " << (s.site.name.empty() ? std::string("(unnamed)") : s.site.name) << ": "
+      << latitude_text(s.site.latitude_deg) << ", " << longitude_text(s.site.longitude_deg)
+      << ", UTC" << (s.site.time_zone_h >= 0 ? "+" : "") << s.site.time_zone_h << ", elevation "
+      << fixed(s.site.elevation_m, 1) << " m, north " << fixed(s.site.north_deg, 2) << " deg";
+  if (s.site.utm_zone)
+    out << " + meridian convergence " << fixed(s.site.meridian_convergence_deg, 4) << " deg (UTM "
+        << *s.site.utm_zone << (s.site.utm_north ? "N" : "S") << ")";
+  out << '\n';
+  for (std::size_t i = 0; i < s.weather_lines.size(); ++i)
+    out << (i == 0 ? "weather  " : "         ") << s.weather_lines[i] << '\n';
+
+  out << "surfaces " << s.surface_count << " polygons, " << s.triangle_count << " triangles\n";
+  out << "  " << std::left << std::setw(20) << "material" << std::setw(13) << "type"
+      << std::right << std::setw(9) << "surfaces" << std::setw(12) << "area_m2" << '\n';
+  for (const MaterialArea& m : s.materials)
+    out << "  " << std::left << std::setw(20) << m.name << std::setw(13) << m.type << std::right
+        << std::setw(9) << m.surfaces << std::setw(12) << fixed(m.area_m2, 2) << '\n';
+
+  out << "ports    " << s.ports.size() << '\n';
+  if (!s.ports.empty())
+    out << "  " << std::left << std::setw(20) << "name" << std::right << std::setw(10) << "area_m2"
+        << std::setw(13) << "azimuth_deg" << std::setw(10) << "tilt_deg" << "  facing\n";
+  for (const PortInfo& p : s.ports)
+    out << "  " << std::left << std::setw(20) << p.name << std::right << std::setw(10)
+        << fixed(p.area_m2, 2) << std::setw(13) << fixed(p.azimuth_deg, 1) << std::setw(10)
+        << fixed(p.tilt_deg, 1) << "  " << compass_point(p.azimuth_deg) << '\n';
+
+  out << "sensors  " << s.grids.size() << (s.grids.size() == 1 ? " grid" : " grids") << '\n';
+  for (const GridInfo& g : s.grids) {
+    out << "  " << std::left << std::setw(20) << g.name << std::right << std::setw(6) << g.sensors
+        << " sensors";
+    if (g.columns > 0 && g.rows > 0)
+      out << " (" << g.columns << " x " << g.rows << ", spacing " << fixed(g.spacing_m, 2) << " m)";
+    if (g.planar) out << " on the plane at " << fixed(g.plane_height_m, 2) << " m";
+    out << '\n';
+  }
+}
+
+}  // namespace dayphoton::app

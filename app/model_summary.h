@@ -1,0 +1,59 @@
+// ModelSummary: what `check` (and the head of `run`) prints about a project: site, weather,
+// surfaces and areas per material, ports with orientation, sensor grids. Building it performs
+// every validation (weather header, geometry, Embree scene), so a summary exists only for a
+// valid model.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/project/project.h"
+
+namespace dayphoton::app {
+
+struct MaterialArea {
+  std::string name;
+  std::string type;
+  int surfaces = 0;
+  double area_m2 = 0;
+};
+
+struct PortInfo {
+  std::string name;
+  double area_m2 = 0;
+  double azimuth_deg = 0;  ///< of the outward normal, clockwise from true north
+  double tilt_deg = 0;     ///< of the outward normal from the zenith (90 = vertical window)
+};
+
+struct GridInfo {
+  std::string name;
+  std::size_t sensors = 0;
+  int columns = 0, rows = 0;
+  double spacing_m = 0;
+  bool planar = false;
+  double plane_height_m = 0;
+};
+
+struct ModelSummary {
+  std::string project_path;
+  project::Site site;
+  std::vector<std::string> weather_lines;  ///< human-readable weather header
+  std::vector<MaterialArea> materials;
+  std::size_t surface_count = 0;
+  std::size_t triangle_count = 0;
+  std::vector<PortInfo> ports;
+  std::vector<GridInfo> grids;
+  SceneDescription scene;
+};
+
+/// Validate everything the project refers to and gather the summary; throws InputError.
+ModelSummary summarize_model(const project::Project& proj);
+
+void print_model_summary(const ModelSummary& summary, std::ostream& out);
+
+/// Compass point (N, NNE, ..., NNW) of an azimuth in degrees clockwise from north.
+std::string compass_point(double azimuth_deg);
+
+}  // namespace dayphoton::app
