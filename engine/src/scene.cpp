@@ -1,0 +1,219 @@
+// Scene: validation, triangulation and the Embree-backed queries. Conventions, the
+// validation rules, the precision refinement and the self-intersection epsilon are
+// documented in scene.h; Embree itself is only touched through EmbreeAccel
+// (embree_accel.cpp).
+#include "dayphoton/engine/scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/polygon.h"
+#include "embree_accel.h"
+
+namespace dayphoton::engine {
+
+struct Scene::Impl {
+  SceneDescription description;
+  std::vector<SceneTriangle> triangles;
+  std::vector<int> surface_port;  ///< per surface: port index or -1
+  PortSet ports;
+  Bounds3 bounds;
+  double scale_m = 1;      ///< max(1 m, largest absolute coordinate)
+  double epsilon_m = 1e-5;
+  std::unique_ptr<EmbreeAccel> accel;
+};
+
+namespace {
+
+/// Relative size of the smallest polygon area we accept, times (scene size)^2 (scene.h).
+constexpr double DegenerateAreaFraction = 1e-12;
+/// Self-intersection offset relative to the coordinate scale (scene.h).
+constexpr double RayEpsilonFraction = 1e-5;
+
+std::string describe(const Surface& s, std::size_t index) {
+  std::ostringstream out;
+  out << "surface '" << (s.name.empty() ? "#" + std::to_string(index) : s.name) << "'";
+  return out.str();
+}
+
+}  // namespace
+
+Scene::Scene(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)) {}
+Scene::Scene(Scene&&) noexcept = default;
+Scene& Scene::operator=(Scene&&) noexcept = default;
+Scene::~Scene() = default;
+
+Scene Scene::build(const SceneDescription& description) {
+  auto impl = std::make_unique<Impl>();
+  impl->description = description;
+  const auto& surfaces = impl->description.surfaces;
+
+  // Scene size from every finite vertex: it scales the degenerate-area threshold and the
+  // ray epsilon.
+  double max_abs_m = 0;
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (const auto& s : surfaces)
+    for (const auto& p : s.vertices)
+      if (is_finite(p))
+        for (int k = 0; k < 3; ++k) {
+          max_abs_m = std::max(max_abs_m, std::abs(p[k]));
+          lo[k] = std::min(lo[k], p[k]);
+          hi[k] = std::max(hi[k], p[k]);
+        }
+  const double size_m = lo.x <= hi.x ? std::max(1.0, length(hi - lo)) : 1.0;
+  const double min_area_m2 = DegenerateAreaFraction * size_m * size_m;
+  impl->scale_m = std::max(1.0, max_abs_m);
+  impl->epsilon_m = RayEpsilonFraction * impl->scale_m;
+
+  // Validate everything first (Embree would drop bad primitives silently), then report all.
+  Diagnostics diagnostics;
+  const int material_count = static_cast<int>(impl->description.materials.size());
+  std::vector<std::vector<std::array<std::uint32_t, 3>>> triangulation(surfaces.size());
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    const Surface& s = surfaces[i];
+    const std::string what = describe(s, i);
+    if (s.material < 0 || s.material >= material_count) {
+      diagnostics.error(s.location, what + ": material index " + std::to_string(s.material) +
+                                        " is out of range (" + std::to_string(material_count) +
+                                        " materials)");
+    }
+    if (s.vertices.size() < 3) {
+      diagnostics.error(s.location, what + " has " + std::to_string(s.vertices.size()) +
+                                        " vertices; a polygon needs at least 3");
+      continue;
+    }
+    bool finite = true;
+    for (std::size_t v = 0; v < s.vertices.size() && finite; ++v)
+      if (!is_finite(s.vertices[v])) {
+        diagnostics.error(s.location, what + ": vertex " + std::to_string(v + 1) +
+                                          " has a NaN or infinite coordinate");
+        finite = false;
+      }
+    if (!finite) continue;
+    const double area_m2 = polygon_area_m2(s.vertices);
+    if (!(area_m2 >= min_area_m2)) {
+      std::ostringstream m;
+      m << what << " is degenerate: area " << area_m2 << " m^2 is below " << min_area_m2
+        << " m^2 (collinear or repeated vertices?)";
+      diagnostics.error(s.location, m.str());
+      continue;
+    }
+    try {
+      triangulation[i] = triangulate_polygon(s.vertices);
+    } catch (const std::exception& e) {
+      diagnostics.error(s.location, what + " cannot be triangulated: " + e.what());
+      continue;
+    }
+    // Ears at collinear vertices of a valid polygon have zero area: drop them.
+    auto& tris = triangulation[i];
+    tris.erase(std::remove_if(tris.begin(), tris.end(),
+                              [&](const std::array<std::uint32_t, 3>& t) {
+                                const Vec3 e = cross(s.vertices[t[1]] - s.vertices[t[0]],
+                                                     s.vertices[t[2]] - s.vertices[t[0]]);
+                                return !(0.5 * length(e) >= min_area_m2);
+                              }),
+               tris.end());
+    if (tris.empty()) {
+      diagnostics.error(s.location, what + " triangulates to degenerate triangles only");
+      continue;
+    }
+  }
+  diagnostics.throw_if_errors();
+
+  // Triangles in surface order; the Embree primitive id is the index into impl->triangles.
+  std::vector<float> vertices_xyz;
+  std::vector<std::uint32_t> indices;
+  impl->surface_port.assign(surfaces.size(), -1);
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    const Surface& s = surfaces[i];
+    const auto base = static_cast<std::uint32_t>(vertices_xyz.size() / 3);
+    for (const auto& p : s.vertices) {
+      vertices_xyz.push_back(static_cast<float>(p.x));
+      vertices_xyz.push_back(static_cast<float>(p.y));
+      vertices_xyz.push_back(static_cast<float>(p.z));
+    }
+    for (const auto& t : triangulation[i]) {
+      SceneTriangle tri;
+      tri.vertices = {s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]};
+      tri.normal = normalize(cross(tri.vertices[1] - tri.vertices[0],
+                                   tri.vertices[2] - tri.vertices[0]));
+      tri.surface = static_cast<int>(i);
+      impl->triangles.push_back(tri);
+      for (int k = 0; k < 3; ++k) indices.push_back(base + t[k]);
+    }
+    if (s.port)
+      impl->surface_port[i] = impl->ports.add(static_cast<int>(i), s, triangulation[i]);
+  }
+  if (!impl->triangles.empty()) {
+    impl->bounds = {lo, hi};
+  }
+  impl->accel = std::make_unique<EmbreeAccel>(vertices_xyz, indices);
+  return Scene(std::move(impl));
+}
+
+std::optional<Hit> Scene::intersect(const Ray& ray) const {
+  AccelHit raw;
+  if (!m_impl->accel->intersect(ray, raw)) return std::nullopt;
+  const SceneTriangle& tri = m_impl->triangles[raw.primitive];
+  Hit hit;
+  hit.t = raw.t;
+  // Refine Embree's single-precision t against the triangle's plane in double precision.
+  // Guard: only accept the refinement if it agrees with Embree's t to well within float
+  // error (a grazing ray has an ill-conditioned plane distance; keep Embree's t then).
+  const double denom = dot(ray.direction, tri.normal);
+  if (denom != 0) {
+    const double t_plane = dot(tri.vertices[0] - ray.origin, tri.normal) / denom;
+    const double tolerance = 1e-4 * (std::abs(hit.t) + m_impl->scale_m / length(ray.direction));
+    if (std::isfinite(t_plane) && std::abs(t_plane - hit.t) <= tolerance) hit.t = t_plane;
+  }
+  hit.t = std::clamp(hit.t, ray.tmin, ray.tmax);
+  hit.position = ray.origin + ray.direction * hit.t;
+  hit.normal = tri.normal;
+  hit.front_face = denom < 0;
+  hit.surface = tri.surface;
+  hit.material = m_impl->description.surfaces[static_cast<std::size_t>(tri.surface)].material;
+  hit.port = m_impl->surface_port[static_cast<std::size_t>(tri.surface)];
+  hit.primitive = raw.primitive;
+  hit.u = raw.u;
+  hit.v = raw.v;
+  return hit;
+}
+
+bool Scene::occluded(const Ray& ray) const { return m_impl->accel->occluded(ray); }
+
+void Scene::intersect_batch(const Ray* rays, std::size_t count, std::optional<Hit>* hits) const {
+  for (std::size_t i = 0; i < count; ++i) hits[i] = intersect(rays[i]);
+}
+
+void Scene::occluded_batch(const Ray* rays, std::size_t count, bool* occluded_out) const {
+  for (std::size_t i = 0; i < count; ++i) occluded_out[i] = occluded(rays[i]);
+}
+
+const Bounds3& Scene::bounds() const { return m_impl->bounds; }
+double Scene::ray_epsilon_m() const { return m_impl->epsilon_m; }
+
+Vec3 Scene::offset_ray_origin(const Vec3& position, const Vec3& normal,
+                              const Vec3& direction) const {
+  return engine::offset_ray_origin(position, normal, direction, m_impl->epsilon_m);
+}
+
+std::size_t Scene::triangle_count() const { return m_impl->triangles.size(); }
+
+const SceneTriangle& Scene::triangle(std::uint32_t primitive) const {
+  return m_impl->triangles.at(primitive);
+}
+
+const SceneDescription& Scene::description() const { return m_impl->description; }
+const PortSet& Scene::ports() const { return m_impl->ports; }
+const std::vector<SensorGrid>& Scene::sensor_grids() const { return m_impl->description.grids; }
+
+bool Scene::is_port(int surface_index) const {
+  return surface_index >= 0 &&
+         static_cast<std::size_t>(surface_index) < m_impl->surface_port.size() &&
+         m_impl->surface_port[static_cast<std::size_t>(surface_index)] >= 0;
+}
+
+}  // namespace dayphoton::engine
