@@ -1,0 +1,147 @@
+// Annual daylight metrics. Sources: Reinhart & Walkenhorst 2001 (DA), Rogers 2006 (cDA,
+// DAmax), Nabil & Mardaljevic 2005 and Mardaljevic's revision (UDI), IES LM-83-12 (sDA, ASE),
+// EN 17037:2018 (daylight provision); conventions in docs/metrics.md, distilled in
+// ../shared/facts/sky-and-metrics.md section 5.
+#include "dayphoton/metrics/annual_metrics.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace dayphoton::metrics {
+
+namespace {
+
+void check_shapes(const IlluminanceTable& table, const OccupancySchedule& occupancy) {
+  if (table.step_count() != occupancy.step_count())
+    throw std::invalid_argument("occupancy schedule has " + std::to_string(occupancy.step_count()) +
+                                " steps, the illuminance table " + std::to_string(table.step_count()));
+}
+
+double weighted_mean(const std::vector<double>& values, const std::vector<double>& weights) {
+  double sum = 0, weight_sum = 0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double w = weights.empty() ? 1.0 : weights[i];
+    sum += w * values[i];
+    weight_sum += w;
+  }
+  return weight_sum > 0 ? sum / weight_sum : 0;
+}
+
+}  // namespace
+
+std::vector<SensorMetrics> compute_sensor_metrics(const IlluminanceTable& table,
+                                                  const OccupancySchedule& occupancy,
+                                                  const MetricSettings& settings) {
+  check_shapes(table, occupancy);
+  const std::size_t n_sensors = table.sensor_count();
+  const double n_occupied = static_cast<double>(occupancy.occupied_count());
+  std::vector<SensorMetrics> result(n_sensors);
+  if (n_occupied == 0) return result;
+
+  const double x = settings.da_threshold_lux;
+  const double low = settings.udi_lower_lux;
+  const double up1 = settings.udi_upper_original_lux;
+  const double up2 = settings.udi_upper_revised_lux;
+  for (std::size_t t = 0; t < table.step_count(); ++t) {
+    if (!occupancy.occupied(t)) continue;
+    for (std::size_t s = 0; s < n_sensors; ++s) {
+      const double e = table.lux(t, s);
+      SensorMetrics& m = result[s];
+      m.da_percent += e >= x;
+      m.cda_percent += std::min(1.0, e / x);
+      m.da_max_percent += e > 10 * x;
+      m.udi_below_percent += e < low;
+      m.udi_original_percent += e >= low && e <= up1;
+      m.udi_above_original_percent += e > up1;
+      m.udi_supplementary_percent += e >= low && e < x;
+      m.udi_autonomous_percent += e >= x && e <= up2;
+      m.udi_above_revised_percent += e > up2;
+      m.mean_occupied_lux += e;
+    }
+  }
+  const double to_percent = 100.0 / n_occupied;
+  for (SensorMetrics& m : result) {
+    for (double* v : {&m.da_percent, &m.cda_percent, &m.da_max_percent, &m.udi_below_percent,
+                      &m.udi_original_percent, &m.udi_above_original_percent,
+                      &m.udi_supplementary_percent, &m.udi_autonomous_percent,
+                      &m.udi_above_revised_percent})
+      *v *= to_percent;
+    m.mean_occupied_lux /= n_occupied;
+  }
+  return result;
+}
+
+std::vector<int> ase_hours_per_sensor(const IlluminanceTable& direct_sun,
+                                      const OccupancySchedule& occupancy,
+                                      const MetricSettings& settings) {
+  check_shapes(direct_sun, occupancy);
+  std::vector<int> hours(direct_sun.sensor_count(), 0);
+  for (std::size_t t = 0; t < direct_sun.step_count(); ++t) {
+    if (!occupancy.occupied(t)) continue;
+    for (std::size_t s = 0; s < hours.size(); ++s)
+      hours[s] += direct_sun.lux(t, s) >= settings.ase_threshold_lux;
+  }
+  return hours;
+}
+
+GridMetrics summarize_grid(const std::vector<SensorMetrics>& sensors, const MetricSettings& settings,
+                           const std::vector<double>& area_weights, const std::vector<int>* ase_hours) {
+  if (!area_weights.empty() && area_weights.size() != sensors.size())
+    throw std::invalid_argument("area weights and sensors differ in number");
+  GridMetrics grid;
+  auto mean_of = [&](double SensorMetrics::*field) {
+    std::vector<double> v(sensors.size());
+    for (std::size_t i = 0; i < sensors.size(); ++i) v[i] = sensors[i].*field;
+    return weighted_mean(v, area_weights);
+  };
+  for (double SensorMetrics::*field :
+       {&SensorMetrics::da_percent, &SensorMetrics::cda_percent, &SensorMetrics::da_max_percent,
+        &SensorMetrics::udi_below_percent, &SensorMetrics::udi_original_percent,
+        &SensorMetrics::udi_above_original_percent, &SensorMetrics::udi_supplementary_percent,
+        &SensorMetrics::udi_autonomous_percent, &SensorMetrics::udi_above_revised_percent,
+        &SensorMetrics::mean_occupied_lux})
+    grid.mean.*field = mean_of(field);
+
+  std::vector<double> passes(sensors.size());
+  for (std::size_t i = 0; i < sensors.size(); ++i)
+    passes[i] = sensors[i].da_percent >= 100.0 * settings.sda_time_fraction ? 100.0 : 0.0;
+  grid.sda_percent = weighted_mean(passes, area_weights);
+
+  if (ase_hours) {
+    std::vector<double> fails(ase_hours->size());
+    for (std::size_t i = 0; i < fails.size(); ++i) fails[i] = (*ase_hours)[i] > settings.ase_hours ? 100.0 : 0.0;
+    grid.ase_percent = weighted_mean(fails, area_weights);
+  }
+  return grid;
+}
+
+std::vector<En17037Result> en17037_daylight_provision(const IlluminanceTable& table,
+                                                      const OccupancySchedule& daylight_hours,
+                                                      const std::vector<double>& area_weights) {
+  check_shapes(table, daylight_hours);
+  const double n_hours = static_cast<double>(daylight_hours.occupied_count());
+  std::vector<En17037Result> results;
+  for (const En17037Level& level : En17037Levels) {
+    std::vector<double> target(table.sensor_count()), minimum(table.sensor_count());
+    for (std::size_t s = 0; s < table.sensor_count(); ++s) {
+      double hours_target = 0, hours_minimum = 0;
+      for (std::size_t t = 0; t < table.step_count(); ++t) {
+        if (!daylight_hours.occupied(t)) continue;
+        hours_target += table.lux(t, s) >= level.target_lux;
+        hours_minimum += table.lux(t, s) >= level.minimum_target_lux;
+      }
+      // A point meets a target when it is reached for at least half of the daylight hours.
+      target[s] = n_hours > 0 && hours_target >= 0.5 * n_hours ? 100.0 : 0.0;
+      minimum[s] = n_hours > 0 && hours_minimum >= 0.5 * n_hours ? 100.0 : 0.0;
+    }
+    En17037Result r;
+    r.level = level.name;
+    r.target_area_percent = weighted_mean(target, area_weights);
+    r.minimum_target_area_percent = weighted_mean(minimum, area_weights);
+    r.passes = r.target_area_percent >= 50.0 && r.minimum_target_area_percent >= 95.0;
+    results.push_back(r);
+  }
+  return results;
+}
+
+}  // namespace dayphoton::metrics
