@@ -33,15 +33,20 @@ struct Site {
   /// convention): the model is rotated by this angle about +Z to world coordinates.
   double north_deg = 0;
   /// If the model is drawn in a UTM grid, its zone (1..60) and hemisphere; the meridian
-  /// convergence at the site is then added to north_deg (see rotation_to_true_north_deg).
+  /// convergence at the site then corrects north_deg (see rotation_to_true_north_deg).
   std::optional<int> utm_zone;
   bool utm_north = true;
-  /// Meridian convergence (degrees) computed with GeographicLib; 0 without a UTM zone.
+  /// Meridian convergence gamma (degrees) at the site, from GeographicLib::UTMUPS::Forward;
+  /// 0 without a UTM zone. GeographicLib's sign: the bearing of grid north measured clockwise
+  /// from true north (positive east of the zone's central meridian in the northern
+  /// hemisphere). See dayphoton/project/site_geodesy.h.
   double meridian_convergence_deg = 0;
   SourceLocation location;
 
-  /// Total clockwise rotation from model +Y to true north: north_deg + convergence.
-  double rotation_to_true_north_deg() const { return north_deg + meridian_convergence_deg; }
+  /// Total clockwise rotation from model +Y to true north. With a UTM zone, north_deg is
+  /// measured from model +Y to grid north, and true north lies gamma counter-clockwise of
+  /// grid north: north_deg - meridian_convergence_deg.
+  double rotation_to_true_north_deg() const { return north_deg - meridian_convergence_deg; }
 };
 
 struct Weather {
@@ -172,6 +177,7 @@ struct Outputs {
 };
 
 struct Project {
+  int format_version = 1; ///< `version` key of the file (only 1 exists)
   std::string path;       ///< the project file as given
   std::string directory;  ///< its folder, for resolving relative paths
   Site site;

@@ -1,0 +1,617 @@
+// load_project: stage 2 of project loading (STYLE.md A.3): located YAML tree -> typed Project.
+// Every section is read through a ParamReader against its schema (project_schema.cpp), so
+// unknown keys, missing keys, wrong types, ranges and enumerations are checked uniformly and
+// located. Names are checked for uniqueness per kind; material and room references are
+// resolved after everything is read, with "did you mean" hints. All errors are collected
+// (Diagnostics, cap 50) and thrown together as one InputError. The file format is described
+// in docs/project-format.md.
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/project/project.h"
+#include "dayphoton/project/project_schema.h"
+#include "dayphoton/project/site_geodesy.h"
+#include "param_reader.h"
+#include "yaml_document.h"
+
+namespace dayphoton::project {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct NameUse {
+  std::string name;
+  SourceLocation location;
+};
+
+/// Names of one kind (rooms, windows, ...): reports a second definition of the same name.
+class NameSet {
+ public:
+  explicit NameSet(std::string kind) : m_kind(std::move(kind)) {}
+  void add(const std::string& name, const SourceLocation& loc, Reporter& reporter) {
+    auto [it, inserted] = m_first.emplace(name, loc);
+    if (!inserted)
+      reporter.error(loc, "duplicate " + m_kind + " name '" + name + "' (first defined at line " +
+                              std::to_string(it->second.line) + ")");
+  }
+  bool contains(const std::string& name) const { return m_first.count(name) > 0; }
+  std::vector<std::string> names() const {
+    std::vector<std::string> n;
+    for (const auto& kv : m_first) n.push_back(kv.first);
+    return n;
+  }
+
+ private:
+  std::string m_kind;
+  std::map<std::string, SourceLocation> m_first;
+};
+
+class Loader {
+ public:
+  Loader(Project& project, Reporter& reporter) : m_project(project), m_reporter(reporter) {}
+
+  void load(const YamlNode& root) {
+    if (root.is_null()) {
+      if (!m_reporter.has_errors())
+        m_reporter.error(root.location, "the project file is empty");
+      return;
+    }
+    if (!expect_map(root, "project", m_reporter)) return;
+    ParamReader r(root, schema_section("project"), m_reporter);
+    long long version = 1;
+    if (r.read_integer("version", version)) m_project.format_version = static_cast<int>(version);
+    if (const YamlNode* n = r.take("site")) read_site(*n);
+    const YamlNode* weather = r.take("weather");
+    if (weather && weather->is_null())
+      m_reporter.error(weather->location, "missing value for 'weather'");
+    else if (weather)
+      read_weather(*weather);
+    if (const YamlNode* n = r.take("materials")) read_materials(*n);
+    if (const YamlNode* n = r.take("geometry")) read_geometry(*n);
+    if (const YamlNode* n = r.take("sensors")) read_sensors(*n);
+    if (const YamlNode* n = r.take("simulation")) {
+      read_simulation(*n);
+    } else {
+      YamlNode empty_map;
+      empty_map.kind = YamlNode::Kind::Map;
+      empty_map.location = root.location;
+      read_simulation(empty_map);
+    }
+    if (const YamlNode* n = r.take("outputs")) {
+      read_outputs(*n);
+    } else {
+      YamlNode empty_map;
+      empty_map.kind = YamlNode::Kind::Map;
+      empty_map.location = root.location;
+      read_outputs(empty_map);
+    }
+    r.finish();
+
+    const Outputs& o = m_project.outputs;
+    if (m_project.weather.path.empty() && !weather && (o.annual_illuminance || o.metrics))
+      m_reporter.error(root.location,
+                       "missing required key 'weather' in project (needed for annual_illuminance "
+                       "and metrics; set both to false in outputs for a daylight-factor study)");
+    check_references();
+  }
+
+ private:
+  // ---- paths ----------------------------------------------------------------------------
+  std::string resolve(const std::string& written) const {
+    const fs::path p(written);
+    if (p.is_absolute() || m_project.directory.empty()) return p.lexically_normal().string();
+    return (fs::path(m_project.directory) / p).lexically_normal().string();
+  }
+
+  /// Resolve a path value and check that a regular file exists there.
+  bool existing_file(const std::string& what, const std::string& written,
+                     const SourceLocation& loc, std::string& resolved) {
+    resolved = resolve(written);
+    std::error_code ec;
+    if (!fs::is_regular_file(resolved, ec)) {
+      m_reporter.error(loc, what + " '" + written + "' not found (looked for '" + resolved + "')");
+      return false;
+    }
+    return true;
+  }
+
+  // ---- site -----------------------------------------------------------------------------
+  void read_site(const YamlNode& node) {
+    if (!expect_map(node, "site", m_reporter)) return;
+    Site& site = m_project.site;
+    site.location = node.location;
+    ParamReader r(node, schema_section("site"), m_reporter);
+    r.read_string("name", site.name);
+    const bool have_lat = r.read_angle("latitude", AngleKind::Latitude, site.latitude_deg);
+    const bool have_lon = r.read_angle("longitude", AngleKind::Longitude, site.longitude_deg);
+    r.read_number("time_zone", site.time_zone_h);
+    r.read_number("elevation", site.elevation_m);
+    r.read_number("north", site.north_deg);
+    if (const YamlNode* z = r.take("utm_zone"); z && !z->is_null()) {
+      if (read_utm_zone(*z) && have_lat && have_lon) {
+        try {
+          site.meridian_convergence_deg =
+              utm_meridian_convergence_deg(site.latitude_deg, site.longitude_deg, *site.utm_zone);
+        } catch (const std::invalid_argument& e) {
+          m_reporter.error(z->location, "cannot project the site into UTM zone " +
+                                            std::to_string(*site.utm_zone) + ": " + e.what());
+        }
+      }
+    }
+    r.finish();
+  }
+
+  bool read_utm_zone(const YamlNode& node) {
+    Site& site = m_project.site;
+    if (node.is_scalar()) {
+      int zone = 0;
+      bool north = true;
+      try {
+        parse_utm_zone(node.scalar, zone, north);
+      } catch (const std::invalid_argument& e) {
+        m_reporter.error(node.location, "bad value " + node.describe() + " for 'utm_zone': " + e.what());
+        return false;
+      }
+      site.utm_zone = zone;
+      site.utm_north = north;
+      return true;
+    }
+    if (!node.is_map()) {
+      m_reporter.error(node.location, "expected '33N' or {zone: 33, hemisphere: north} for "
+                                      "'utm_zone', got " + node.describe());
+      return false;
+    }
+    ParamReader r(node, schema_section("utm_zone"), m_reporter);
+    long long zone = 0;
+    std::string hemisphere;
+    const bool ok = r.read_integer("zone", zone) & r.read_choice("hemisphere", hemisphere);
+    r.finish();
+    if (!ok) return false;
+    site.utm_zone = static_cast<int>(zone);
+    site.utm_north = hemisphere == "north";
+    return true;
+  }
+
+  // ---- weather --------------------------------------------------------------------------
+  void read_weather(const YamlNode& node) {
+    Weather& w = m_project.weather;
+    w.location = node.location;
+    if (node.is_scalar()) {
+      w.path_as_written = node.scalar;
+    } else if (node.is_map()) {
+      ParamReader r(node, schema_section("weather"), m_reporter);
+      const bool ok = r.read_string("file", w.path_as_written);
+      w.location = r.location_of("file");
+      r.finish();
+      if (!ok) return;
+    } else {
+      m_reporter.error(node.location, "expected an EPW path or {file: path} for 'weather', got " +
+                                          node.describe());
+      return;
+    }
+    existing_file("weather file", w.path_as_written, w.location, w.path);
+  }
+
+  // ---- materials ------------------------------------------------------------------------
+  void read_materials(const YamlNode& node) {
+    if (!expect_map(node, "materials", m_reporter)) return;
+    for (const auto& entry : node.entries) {
+      m_material_names.add(entry.key, entry.key_location, m_reporter);
+      if (!expect_map(entry.value, entry.key, m_reporter)) continue;
+      const YamlEntry* type_entry = entry.value.find("type");
+      if (!type_entry) {
+        m_reporter.error(entry.value.location,
+                         "missing required key 'type' in material '" + entry.key + "'");
+        continue;
+      }
+      // Validate the type itself (allowed values, hint) with any material section's entry.
+      std::string type;
+      {
+        ParamReader type_reader(entry.value, schema_section("lambertian material"), m_reporter);
+        if (!type_reader.read_choice("type", type)) continue;
+      }
+      MaterialSpec m;
+      m.name = entry.key;
+      m.location = entry.key_location;
+      ParamReader r(entry.value, schema_section(type + " material"), m_reporter);
+      r.take("type");
+      if (type == "lambertian") {
+        m.type = MaterialType::Lambertian;
+        r.read_rgb("reflectance", m.reflectance);
+      } else if (type == "plastic" || type == "metal" || type == "translucent") {
+        m.type = type == "plastic" ? MaterialType::Lambertian
+                 : type == "metal" ? MaterialType::Metal
+                                   : MaterialType::Translucent;
+        r.read_rgb("reflectance", m.reflectance);
+        r.read_number("specularity", m.specularity);
+        r.read_number("roughness", m.roughness);
+        if (type == "translucent") {
+          r.read_number("transmissivity", m.transmissivity);
+          r.read_number("transmitted_specular", m.transmitted_specular);
+        }
+      } else if (type == "mirror") {
+        m.type = MaterialType::Mirror;
+        r.read_rgb("reflectance", m.reflectance);
+      } else if (type == "glass") {
+        m.type = MaterialType::Glass;
+        r.read_rgb("transmittance", m.transmittance);
+        r.read_number("refractive_index", m.refractive_index);
+      } else if (type == "dielectric") {
+        m.type = MaterialType::Dielectric;
+        r.read_number("refractive_index", m.refractive_index);
+        r.read_rgb("transmittance", m.transmittance);
+      }
+      r.finish();
+      m_project.materials.push_back(std::move(m));
+    }
+  }
+
+  void use_material(const ParamReader& r, const std::string& key, const std::string& name) {
+    if (!name.empty()) m_material_uses.push_back({name, r.location_of(key)});
+  }
+
+  // ---- geometry -------------------------------------------------------------------------
+  void read_geometry(const YamlNode& node) {
+    if (!expect_map(node, "geometry", m_reporter)) return;
+    ParamReader r(node, schema_section("geometry"), m_reporter);
+    for_each_item(r, "rooms", [&](const YamlNode& n) { read_room(n); });
+    for_each_item(r, "polygons", [&](const YamlNode& n) { read_polygon(n); });
+    for_each_item(r, "boxes", [&](const YamlNode& n) { read_box(n); });
+    for_each_item(r, "meshes", [&](const YamlNode& n) { read_mesh(n); });
+    r.finish();
+  }
+
+  template <typename F>
+  void for_each_item(ParamReader& r, const std::string& key, F read_item) {
+    const YamlNode* list = r.take(key);
+    if (!list || !expect_list(*list, key, m_reporter)) return;
+    const std::string section = r.schema().find(key)->section;
+    for (const auto& item : list->items)
+      if (expect_map(item, section, m_reporter)) read_item(item);
+  }
+
+  void read_room(const YamlNode& node) {
+    RoomSpec room;
+    room.location = node.location;
+    ParamReader r(node, schema_section("room"), m_reporter);
+    if (r.read_string("name", room.name)) m_room_names.add(room.name, r.location_of("name"), m_reporter);
+    r.read_vec3("origin", room.origin);
+    r.read_vec3("size", room.size_m);
+    if (const YamlNode* mats = r.take("materials"); mats && expect_map(*mats, "materials", m_reporter)) {
+      ParamReader m(*mats, schema_section("room materials"), m_reporter);
+      if (m.read_string("floor", room.floor_material)) use_material(m, "floor", room.floor_material);
+      if (m.read_string("ceiling", room.ceiling_material)) use_material(m, "ceiling", room.ceiling_material);
+      std::string walls;
+      const bool have_walls = m.has("walls") && m.read_string("walls", walls);
+      if (have_walls) use_material(m, "walls", walls);
+      else m.take("walls");
+      static const char* const wall_keys[4] = {"south", "north", "east", "west"};
+      bool all_overridden = true;
+      for (int w = 0; w < 4; ++w) {
+        std::string own;
+        if (m.has(wall_keys[w]) && m.read_string(wall_keys[w], own)) {
+          use_material(m, wall_keys[w], own);
+          room.wall_material[w] = own;
+        } else {
+          m.take(wall_keys[w]);
+          all_overridden = all_overridden && m.has(wall_keys[w]);
+          room.wall_material[w] = walls;
+        }
+      }
+      if (!m.has("walls") && !all_overridden)
+        m_reporter.error(mats->location, "missing required key 'walls' in room materials");
+      m.finish();
+    }
+    for_each_item(r, "windows", [&](const YamlNode& n) { room.windows.push_back(read_window(n)); });
+    r.finish();
+    m_project.geometry.rooms.push_back(std::move(room));
+  }
+
+  WindowSpec read_window(const YamlNode& node) {
+    WindowSpec w;
+    w.location = node.location;
+    ParamReader r(node, schema_section("window"), m_reporter);
+    if (r.read_string("name", w.name)) m_window_names.add(w.name, r.location_of("name"), m_reporter);
+    std::string wall;
+    if (r.read_choice("wall", wall))
+      w.wall = wall == "south" ? Wall::South : wall == "north" ? Wall::North
+               : wall == "east" ? Wall::East : Wall::West;
+    r.read_number("width", w.width_m);
+    r.read_number("height", w.height_m);
+    r.read_number("sill", w.sill_m);
+    double offset = 0;
+    if (r.read_number("offset", offset)) w.offset_m = offset;
+    if (r.read_string("material", w.material)) use_material(r, "material", w.material);
+    r.finish();
+    return w;
+  }
+
+  void read_polygon(const YamlNode& node) {
+    PolygonSpec p;
+    p.location = node.location;
+    ParamReader r(node, schema_section("polygon"), m_reporter);
+    if (r.read_string("name", p.name)) m_polygon_names.add(p.name, r.location_of("name"), m_reporter);
+    if (r.read_points("vertices", p.vertices) && p.vertices.size() < 3)
+      m_reporter.error(r.location_of("vertices"), "'vertices' needs at least 3 points, got " +
+                                                      std::to_string(p.vertices.size()));
+    if (r.read_string("material", p.material)) use_material(r, "material", p.material);
+    r.read_bool("port", p.port);
+    r.finish();
+    m_project.geometry.polygons.push_back(std::move(p));
+  }
+
+  void read_box(const YamlNode& node) {
+    BoxSpec b;
+    b.location = node.location;
+    ParamReader r(node, schema_section("box"), m_reporter);
+    if (r.read_string("name", b.name)) m_box_names.add(b.name, r.location_of("name"), m_reporter);
+    r.read_vec3("origin", b.origin);
+    r.read_vec3("size", b.size_m);
+    r.read_number("rotation", b.rotation_deg);
+    if (r.read_string("material", b.material)) use_material(r, "material", b.material);
+    r.finish();
+    m_project.geometry.boxes.push_back(std::move(b));
+  }
+
+  void read_mesh(const YamlNode& node) {
+    MeshSpec m;
+    m.location = node.location;
+    ParamReader r(node, schema_section("mesh"), m_reporter);
+    if (r.read_string("name", m.name)) m_mesh_names.add(m.name, r.location_of("name"), m_reporter);
+    if (r.read_string("file", m.path_as_written))
+      existing_file("OBJ file", m.path_as_written, r.location_of("file"), m.path);
+    if (const YamlNode* map = r.take("material_map"); map && expect_map(*map, "material_map", m_reporter)) {
+      for (const auto& e : map->entries) {
+        if (!e.value.is_scalar() || e.value.scalar.empty()) {
+          m_reporter.error(e.value.location, "expected a material name for '" + e.key + "', got " +
+                                                 e.value.describe());
+          continue;
+        }
+        m.material_map.emplace_back(e.key, e.value.scalar);
+        m_material_uses.push_back({e.value.scalar, e.value.location});
+      }
+    }
+    if (r.has("default_material") && r.read_string("default_material", m.default_material))
+      use_material(r, "default_material", m.default_material);
+    else
+      r.take("default_material");
+    r.read_vec3("translate", m.translate);
+    r.read_number("scale", m.scale);
+    r.read_number("rotation", m.rotation_deg);
+    r.read_bool("port", m.port);
+    r.finish();
+    m_project.geometry.meshes.push_back(std::move(m));
+  }
+
+  // ---- sensors --------------------------------------------------------------------------
+  void read_sensors(const YamlNode& node) {
+    if (!expect_map(node, "sensors", m_reporter)) return;
+    ParamReader r(node, schema_section("sensors"), m_reporter);
+    for_each_item(r, "grids", [&](const YamlNode& n) { read_grid(n); });
+    for_each_item(r, "points", [&](const YamlNode& n) { read_points(n); });
+    r.finish();
+  }
+
+  void read_grid(const YamlNode& node) {
+    GridSpec g;
+    g.location = node.location;
+    ParamReader r(node, schema_section("grid"), m_reporter);
+    if (r.read_string("name", g.name)) m_sensor_names.add(g.name, r.location_of("name"), m_reporter);
+    const bool has_room = r.has("room"), has_polygon = r.has("polygon");
+    if (has_room && r.read_string("room", g.room)) m_room_uses.push_back({g.room, r.location_of("room")});
+    else r.take("room");
+    if (has_polygon) {
+      if (r.read_points("polygon", g.polygon) && g.polygon.size() < 3)
+        m_reporter.error(r.location_of("polygon"), "'polygon' needs at least 3 points, got " +
+                                                       std::to_string(g.polygon.size()));
+    } else {
+      r.take("polygon");
+    }
+    if (has_room && has_polygon)
+      m_reporter.error(r.location_of("polygon"), "grid takes 'room' or 'polygon', not both");
+    else if (!has_room && !has_polygon)
+      m_reporter.error(node.location, "grid needs 'room' or 'polygon'");
+    r.read_number("height", g.height_m);
+    r.read_number("spacing", g.spacing_m);
+    r.read_number("inset", g.inset_m);
+    Vec3 normal;
+    if (r.read_vec3("normal", normal)) {
+      if (length(normal) > 0) g.normal = normalize(normal);
+      else m_reporter.error(r.location_of("normal"), "'normal' must not be the zero vector");
+    }
+    r.finish();
+    m_project.sensors.grids.push_back(std::move(g));
+  }
+
+  void read_points(const YamlNode& node) {
+    PointsSpec p;
+    p.location = node.location;
+    ParamReader r(node, schema_section("points"), m_reporter);
+    if (r.read_string("name", p.name)) m_sensor_names.add(p.name, r.location_of("name"), m_reporter);
+    const bool has_points = r.has("points"), has_file = r.has("file");
+    if (const YamlNode* list = r.take("points"); list && has_points) read_point_list(*list, p.points);
+    if (has_file) {
+      if (r.read_string("file", p.file_as_written))
+        existing_file("points file", p.file_as_written, r.location_of("file"), p.file);
+    } else {
+      r.take("file");
+    }
+    if (has_points && has_file)
+      m_reporter.error(r.location_of("file"), "points takes 'points' or 'file', not both");
+    else if (!has_points && !has_file)
+      m_reporter.error(node.location, "points needs 'points' or 'file'");
+    r.finish();
+    m_project.sensors.points.push_back(std::move(p));
+  }
+
+  void read_point_list(const YamlNode& list, std::vector<SensorPoint>& out) {
+    if (!list.is_sequence() || list.items.empty()) {
+      m_reporter.error(list.location, "expected a list of [x, y, z, nx, ny, nz] for 'points', got " +
+                                          list.describe());
+      return;
+    }
+    for (const auto& item : list.items) {
+      double v[6] = {};
+      bool good = item.is_sequence() && item.items.size() == 6;
+      for (int i = 0; good && i < 6; ++i) {
+        const YamlNode& c = item.items[static_cast<std::size_t>(i)];
+        good = c.is_scalar() && parse_double(c.scalar, v[i]);
+      }
+      if (!good) {
+        m_reporter.error(item.location, "expected [x, y, z, nx, ny, nz] numbers in 'points', got " +
+                                            item.describe());
+        continue;
+      }
+      const Vec3 normal{v[3], v[4], v[5]};
+      if (!(length(normal) > 0)) {
+        m_reporter.error(item.location, "sensor normal must not be the zero vector");
+        continue;
+      }
+      out.push_back({Vec3{v[0], v[1], v[2]}, normalize(normal)});
+    }
+  }
+
+  // ---- simulation and outputs -----------------------------------------------------------
+  void read_simulation(const YamlNode& node) {
+    if (!expect_map(node, "simulation", m_reporter)) return;
+    Simulation& s = m_project.simulation;
+    s.location = node.location;
+    ParamReader r(node, schema_section("simulation"), m_reporter);
+    read_basis(r);
+    long long v = 0;
+    if (r.read_integer("photons_per_bin", v)) s.photons_per_bin = v;
+    if (r.read_integer("bandwidth", v)) s.bandwidth = static_cast<int>(v);
+    if (r.read_integer("seed", v)) s.seed = static_cast<unsigned long long>(v);
+    r.read_number("ground_reflectance", s.ground_reflectance);
+    std::string sun;
+    if (r.read_choice("sun", sun)) s.sun = sun == "spread" ? SunMode::Spread : SunMode::Bins;
+    if (r.read_integer("sun_mf", v)) s.sun_mf = static_cast<int>(v);
+    if (r.read_integer("direct_samples_per_bin", v)) s.direct_samples_per_bin = static_cast<int>(v);
+    r.finish();
+  }
+
+  void read_basis(ParamReader& r) {
+    Simulation& s = m_project.simulation;
+    const YamlNode* node = r.take("basis");
+    if (!node || node->is_null()) {
+      s.basis = SkyBasis::Tregenza;  // schema default "tregenza"
+      s.reinhart_mf = 1;
+      return;
+    }
+    if (node->is_map()) {
+      ParamReader b(*node, schema_section("basis"), m_reporter);
+      long long mf = 1;
+      if (b.read_integer("reinhart", mf)) {
+        s.basis = SkyBasis::Reinhart;
+        s.reinhart_mf = static_cast<int>(mf);
+      }
+      b.finish();
+      return;
+    }
+    const std::string text = node->is_scalar() ? node->scalar : std::string();
+    if (text == "tregenza") {
+      s.basis = SkyBasis::Tregenza;
+      s.reinhart_mf = 1;
+      return;
+    }
+    const std::string prefix = "reinhart:";
+    long long mf = 0;
+    if (text.compare(0, prefix.size(), prefix) == 0) {
+      std::string number = text.substr(prefix.size());
+      while (!number.empty() && number.front() == ' ') number.erase(number.begin());
+      if (parse_integer(number, mf) && mf >= 1 && mf <= 12) {
+        s.basis = SkyBasis::Reinhart;
+        s.reinhart_mf = static_cast<int>(mf);
+      } else {
+        m_reporter.error(node->location, "Reinhart subdivision in 'basis' must be an integer in "
+                                         "[1, 12], got '" + number + "'");
+      }
+      return;
+    }
+    std::string message = "unknown value " + node->describe() +
+                          " for 'basis': expected tregenza, reinhart:N or {reinhart: N}";
+    const std::string hint = closest_match(text, {"tregenza", "reinhart"});
+    if (!text.empty() && !hint.empty())
+      message += " (did you mean '" + std::string(hint == "reinhart" ? "reinhart:N" : hint) + "'?)";
+    m_reporter.error(node->location, message);
+  }
+
+  void read_outputs(const YamlNode& node) {
+    if (!expect_map(node, "outputs", m_reporter)) return;
+    Outputs& o = m_project.outputs;
+    o.location = node.location;
+    ParamReader r(node, schema_section("outputs"), m_reporter);
+    if (r.read_string("folder", o.folder_as_written)) o.folder = resolve(o.folder_as_written);
+    r.read_bool("daylight_factor", o.daylight_factor);
+    r.read_bool("annual_illuminance", o.annual_illuminance);
+    r.read_bool("metrics", o.metrics);
+    r.read_bool("coefficients", o.coefficients);
+    r.read_bool("images", o.images);
+    r.read_bool("report", o.report);
+    r.read_choice("matrix_format", o.matrix_format);
+    r.finish();
+  }
+
+  // ---- references -----------------------------------------------------------------------
+  void check_references() {
+    for (const auto& use : m_material_uses)
+      if (!m_material_names.contains(use.name))
+        unknown_name("material", use, m_material_names.names());
+    for (const auto& use : m_room_uses)
+      if (!m_room_names.contains(use.name)) unknown_name("room", use, m_room_names.names());
+  }
+
+  void unknown_name(const std::string& kind, const NameUse& use, const std::vector<std::string>& known) {
+    std::string message = "unknown " + kind + " '" + use.name + "'";
+    const std::string hint = closest_match(use.name, known);
+    if (!hint.empty()) message += " (did you mean '" + hint + "'?)";
+    m_reporter.error(use.location, message);
+  }
+
+  Project& m_project;
+  Reporter& m_reporter;
+  NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
+      m_polygon_names{"polygon"}, m_box_names{"box"}, m_mesh_names{"mesh"},
+      m_sensor_names{"sensor set"};
+  std::vector<NameUse> m_material_uses, m_room_uses;
+};
+
+}  // namespace
+
+const char* wall_name(Wall wall) {
+  switch (wall) {
+    case Wall::South: return "south";
+    case Wall::North: return "north";
+    case Wall::East: return "east";
+    case Wall::West: return "west";
+  }
+  return "south";
+}
+
+Project load_project_from_string(const std::string& text, const std::string& path) {
+  Project project;
+  project.path = path;
+  project.directory = fs::path(path).parent_path().string();
+  Diagnostics diagnostics;  // cap 50
+  const SourceText source(path, text);
+  Reporter reporter(diagnostics, source);
+  const YamlNode root = parse_yaml_document(text, reporter);
+  Loader(project, reporter).load(root);  // a syntax error leaves a Null root: nothing more to say
+  diagnostics.throw_if_errors();
+  return project;
+}
+
+Project load_project(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open project file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(SourceLocation{path, 0, 0}, "cannot read project file");
+  return load_project_from_string(text.str(), path);
+}
+
+}  // namespace dayphoton::project

@@ -1,0 +1,301 @@
+// Project-file schema tables (see project_schema.h). One line per key; the loader reads each
+// key through these entries, so a default or a range written here is the one that applies.
+// Units follow DESIGN.md section 4 (metres, degrees in files, hours for time zones).
+#include "dayphoton/project/project_schema.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+namespace dayphoton::project {
+
+namespace {
+
+std::string format_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// Fluent construction keeps each schema entry on one readable line.
+struct P {
+  ParamSchema s;
+  P(std::string name, ParamType type, std::string help) {
+    s.name = std::move(name);
+    s.type = type;
+    s.help = std::move(help);
+  }
+  P& unit(std::string u) { s.unit = std::move(u); return *this; }
+  P& range(double lo, double hi) { s.min = lo; s.max = hi; return *this; }
+  P& above(double lo) { s.min = lo; s.min_exclusive = true; return *this; }
+  P& at_least(double lo) { s.min = lo; return *this; }
+  P& required() { s.required = true; return *this; }
+  P& def(std::string d) { s.default_value = std::move(d); return *this; }
+  P& choices(std::vector<std::string> c) { s.choices = std::move(c); return *this; }
+  P& section(std::string n) { s.section = std::move(n); return *this; }
+  operator ParamSchema() const { return s; }
+};
+
+using T = ParamType;
+
+const std::vector<std::string> MaterialTypes = {"lambertian", "plastic", "metal", "mirror",
+                                                "glass", "dielectric", "translucent"};
+
+ParamSchema material_type() {
+  return P("type", T::Choice, "material model").required().choices(MaterialTypes);
+}
+ParamSchema reflectance(const char* help) {
+  return P("reflectance", T::Rgb, help).range(0, 1).required();
+}
+ParamSchema specularity(bool is_required) {
+  P p("specularity", T::Number, "fraction of the reflection that is specular");
+  p.range(0, 1);
+  if (is_required) p.required(); else p.def("0");
+  return p;
+}
+ParamSchema roughness() {
+  return P("roughness", T::Number, "RMS facet slope of the specular lobe (0 = smooth)")
+      .range(0, 1).def("0");
+}
+
+std::vector<SectionSchema> build_schema() {
+  std::vector<SectionSchema> s;
+  s.push_back({"project", "the top level of a project file", {
+      P("version", T::Integer, "project-file format version").range(1, 1).def("1"),
+      P("site", T::Section, "where the building is").section("site").required(),
+      P("weather", T::Special, "EPW file: a path, or a map {file: path}; needed for annual outputs"),
+      P("materials", T::NameMap, "material name -> material definition (map by `type`)").required(),
+      P("geometry", T::Section, "rooms, polygons, boxes and meshes").section("geometry").required(),
+      P("sensors", T::Section, "sensor grids and point sets").section("sensors"),
+      P("simulation", T::Section, "photon and sky settings").section("simulation"),
+      P("outputs", T::Section, "what to write and where").section("outputs"),
+  }});
+  s.push_back({"site", "location of the site and orientation of the model", {
+      P("name", T::String, "site name for reports").def(""),
+      P("latitude", T::Angle, "north positive; decimal degrees or DMS (41d58'48\"N)").unit("deg").range(-90, 90).required(),
+      P("longitude", T::Angle, "east positive (as EPW); decimal degrees or DMS (87d54'W)").unit("deg").range(-180, 180).required(),
+      P("time_zone", T::Number, "standard-time offset from UTC, east positive (EPW convention)").unit("h").range(-12, 14).required(),
+      P("elevation", T::Number, "site elevation above sea level").unit("m").range(-500, 9000).def("0"),
+      P("north", T::Number, "angle clockwise (seen from above) from model +Y to true north").unit("deg").range(-360, 360).def("0"),
+      P("utm_zone", T::Special, "UTM zone the model is drawn in: '33N' or {zone: 33, hemisphere: north}; north is then measured to grid north and corrected by the meridian convergence"),
+  }});
+  s.push_back({"utm_zone", "UTM zone of a model drawn in projected coordinates", {
+      P("zone", T::Integer, "UTM zone number").range(1, 60).required(),
+      P("hemisphere", T::Choice, "hemisphere of the zone").choices({"north", "south"}).required(),
+  }});
+  s.push_back({"weather", "weather file (map form of `weather`)", {
+      P("file", T::Path, "EPW file, relative to the project file; must exist").required(),
+  }});
+  s.push_back({"lambertian material", "ideal diffuse reflector (RADIANCE plastic, no specular lobe)", {
+      material_type(), reflectance("diffuse reflectance, grey or [r, g, b]"),
+  }});
+  s.push_back({"plastic material", "diffuse reflector with an uncoloured specular lobe (RADIANCE plastic)", {
+      material_type(), reflectance("reflectance, grey or [r, g, b]"), specularity(false), roughness(),
+  }});
+  s.push_back({"metal material", "specular reflector tinted by its colour (RADIANCE metal)", {
+      material_type(), reflectance("reflectance, grey or [r, g, b]"), specularity(true), roughness(),
+  }});
+  s.push_back({"mirror material", "perfect specular reflector", {
+      material_type(), reflectance("specular reflectance, grey or [r, g, b]"),
+  }});
+  s.push_back({"glass material", "thin glazing with Fresnel angular transmission", {
+      material_type(),
+      P("transmittance", T::Rgb, "normal-incidence visible transmittance (not RADIANCE transmissivity)").range(0, 1).required(),
+      P("refractive_index", T::Number, "refractive index of the pane").above(1).def("1.52"),
+  }});
+  s.push_back({"dielectric material", "thick refracting interface (prisms, light pipes)", {
+      material_type(),
+      P("refractive_index", T::Number, "refractive index").above(1).required(),
+      P("transmittance", T::Rgb, "transmission per metre of path (1 - absorption)").range(0, 1).def("1"),
+  }});
+  s.push_back({"translucent material", "diffusing transmitter (RADIANCE trans)", {
+      material_type(), reflectance("reflectance, grey or [r, g, b]"), specularity(false), roughness(),
+      P("transmissivity", T::Number, "fraction of the non-specularly reflected light that is transmitted").range(0, 1).required(),
+      P("transmitted_specular", T::Number, "fraction of the transmitted light transmitted specularly").range(0, 1).def("0"),
+  }});
+  s.push_back({"geometry", "the building and its surroundings (model coordinates, metres)", {
+      P("rooms", T::SectionList, "box-shaped rooms with windows").section("room"),
+      P("polygons", T::SectionList, "planar polygons").section("polygon"),
+      P("boxes", T::SectionList, "solid boxes (shading, furniture)").section("box"),
+      P("meshes", T::SectionList, "Wavefront OBJ meshes").section("mesh"),
+  }});
+  s.push_back({"room", "a box-shaped room, surfaces facing inward", {
+      P("name", T::String, "unique room name").required(),
+      P("origin", T::Vec3, "(min x, min y, floor) corner").unit("m").def("[0, 0, 0]"),
+      P("size", T::Vec3, "x, y, z extents").unit("m").above(0).required(),
+      P("materials", T::Section, "surface materials").section("room materials").required(),
+      P("windows", T::SectionList, "openings glazed with a material; they become photon ports").section("window"),
+  }});
+  s.push_back({"room materials", "materials of a room's surfaces (names from `materials`)", {
+      P("floor", T::String, "floor material").required(),
+      P("ceiling", T::String, "ceiling material").required(),
+      P("walls", T::String, "material of every wall not overridden below (required unless all four are given)"),
+      P("south", T::String, "wall at minimum y"),
+      P("north", T::String, "wall at maximum y"),
+      P("east", T::String, "wall at maximum x"),
+      P("west", T::String, "wall at minimum x"),
+  }});
+  s.push_back({"window", "a rectangular opening in a room wall", {
+      P("name", T::String, "unique window name").required(),
+      P("wall", T::Choice, "wall the window is in").choices({"south", "north", "east", "west"}).required(),
+      P("width", T::Number, "width along the wall").unit("m").above(0).required(),
+      P("height", T::Number, "height").unit("m").above(0).required(),
+      P("sill", T::Number, "height of the bottom edge above the floor").unit("m").at_least(0).required(),
+      P("offset", T::Number, "from the wall's lower-coordinate end (min x or min y) to the near edge; centred if absent").unit("m").at_least(0),
+      P("material", T::String, "glazing material").required(),
+  }});
+  s.push_back({"polygon", "a planar polygon; normal by counter-clockwise winding", {
+      P("name", T::String, "unique polygon name").required(),
+      P("vertices", T::PointList, "at least 3 vertices [x, y, z]").unit("m").required(),
+      P("material", T::String, "material name").required(),
+      P("port", T::Boolean, "photons from sky and sun enter through it").def("false"),
+  }});
+  s.push_back({"box", "a solid box with outward faces", {
+      P("name", T::String, "unique box name").required(),
+      P("origin", T::Vec3, "min corner before rotation").unit("m").def("[0, 0, 0]"),
+      P("size", T::Vec3, "x, y, z extents").unit("m").above(0).required(),
+      P("rotation", T::Number, "counter-clockwise rotation about +Z around the origin").unit("deg").range(-360, 360).def("0"),
+      P("material", T::String, "material name").required(),
+  }});
+  s.push_back({"mesh", "a Wavefront OBJ mesh; usemtl groups map to project materials", {
+      P("name", T::String, "unique mesh name").required(),
+      P("file", T::Path, "OBJ file, relative to the project file; must exist").required(),
+      P("material_map", T::NameMap, "OBJ usemtl name -> project material name"),
+      P("default_material", T::String, "material of faces whose usemtl is not mapped").def(""),
+      P("translate", T::Vec3, "offset applied last").unit("m").def("[0, 0, 0]"),
+      P("scale", T::Number, "uniform scale applied first").above(0).def("1"),
+      P("rotation", T::Number, "counter-clockwise rotation about +Z after scaling").unit("deg").range(-360, 360).def("0"),
+      P("port", T::Boolean, "all faces are photon ports").def("false"),
+  }});
+  s.push_back({"sensors", "where illuminance is computed", {
+      P("grids", T::SectionList, "regular grids on a horizontal plane").section("grid"),
+      P("points", T::SectionList, "explicit sensor points").section("points"),
+  }});
+  s.push_back({"grid", "a regular sensor grid over a room floor or a polygon (give one of them)", {
+      P("name", T::String, "unique sensor-set name (also the output folder)").required(),
+      P("room", T::String, "room whose floor the grid covers"),
+      P("polygon", T::PointList, "outline [x, y, z] (z ignored)").unit("m"),
+      P("height", T::Number, "height of the sensor plane above z = 0 of the room floor").unit("m").def("0.8"),
+      P("spacing", T::Number, "distance between sensors").unit("m").above(0).def("0.5"),
+      P("inset", T::Number, "distance kept from the outline").unit("m").at_least(0).def("0.5"),
+      P("normal", T::Vec3, "direction the sensors face").def("[0, 0, 1]"),
+  }});
+  s.push_back({"points", "explicit sensors (give `points` or `file`)", {
+      P("name", T::String, "unique sensor-set name (also the output folder)").required(),
+      P("points", T::Special, "[[x, y, z, nx, ny, nz], ...] in metres"),
+      P("file", T::Path, "RADIANCE .pts file (x y z nx ny nz per line), must exist"),
+  }});
+  s.push_back({"simulation", "photon tracing and sky discretisation", {
+      P("basis", T::Special, "sky patches: tregenza, reinhart:N or {reinhart: N} (N = 1..12)").def("tregenza"),
+      P("photons_per_bin", T::Integer, "stored photons per sky/sun bin").at_least(1).def("20000"),
+      P("bandwidth", T::Integer, "nearest photons per density estimate").at_least(1).def("50"),
+      P("seed", T::Integer, "random seed").at_least(0).def("1"),
+      P("ground_reflectance", T::Number, "reflectance of the ground below the horizon").range(0, 1).def("0.2"),
+      P("sun", T::Choice, "direct sun: fixed sun bins, or spread over sky patches").choices({"bins", "spread"}).def("bins"),
+      P("sun_mf", T::Integer, "Reinhart subdivision whose patch centres are the sun bins").range(1, 12).def("6"),
+      P("direct_samples_per_bin", T::Integer, "shadow rays per bin for the direct component").at_least(1).def("16"),
+  }});
+  s.push_back({"basis", "map form of simulation.basis", {
+      P("reinhart", T::Integer, "Reinhart subdivision MF (1 = Tregenza, 145 patches; MF n: 144 n^2 + 1)").range(1, 12).required(),
+  }});
+  s.push_back({"outputs", "what is written, and where", {
+      P("folder", T::Path, "output folder, relative to the project file").def("results"),
+      P("daylight_factor", T::Boolean, "CIE overcast daylight factors").def("true"),
+      P("annual_illuminance", T::Boolean, "hourly illuminance for the weather year").def("true"),
+      P("metrics", T::Boolean, "annual metrics (DA, UDI, sDA, ASE, ...)").def("true"),
+      P("coefficients", T::Boolean, "daylight-coefficient matrices (.mtx)").def("true"),
+      P("images", T::Boolean, "EXR/PNG false-colour images").def("true"),
+      P("report", T::Boolean, "report.html").def("true"),
+      P("matrix_format", T::Choice, "encoding of .mtx files").choices({"ascii", "float"}).def("ascii"),
+  }});
+  return s;
+}
+
+}  // namespace
+
+std::string param_type_name(ParamType type) {
+  switch (type) {
+    case ParamType::Number: return "number";
+    case ParamType::Integer: return "integer";
+    case ParamType::Boolean: return "boolean";
+    case ParamType::String: return "string";
+    case ParamType::Choice: return "choice";
+    case ParamType::Angle: return "angle";
+    case ParamType::Vec3: return "[x, y, z]";
+    case ParamType::Rgb: return "number or [r, g, b]";
+    case ParamType::Path: return "path";
+    case ParamType::PointList: return "list of [x, y, z]";
+    case ParamType::Section: return "map";
+    case ParamType::SectionList: return "list";
+    case ParamType::NameMap: return "map";
+    case ParamType::Special: return "see help";
+  }
+  return "?";
+}
+
+bool ParamSchema::has_range() const { return std::isfinite(min) || std::isfinite(max); }
+
+std::string ParamSchema::range_text() const {
+  const bool lo = std::isfinite(min), hi = std::isfinite(max);
+  if (lo && hi) return (min_exclusive ? "(" : "[") + format_number(min) + ", " + format_number(max) + "]";
+  if (lo) return (min_exclusive ? "> " : ">= ") + format_number(min);
+  if (hi) return "<= " + format_number(max);
+  return {};
+}
+
+bool ParamSchema::in_range(double value) const {
+  if (min_exclusive ? !(value > min) : !(value >= min)) return false;
+  return value <= max;
+}
+
+const ParamSchema* SectionSchema::find(const std::string& key) const {
+  for (const auto& p : params)
+    if (p.name == key) return &p;
+  return nullptr;
+}
+
+std::vector<std::string> SectionSchema::keys() const {
+  std::vector<std::string> k;
+  for (const auto& p : params) k.push_back(p.name);
+  return k;
+}
+
+const std::vector<SectionSchema>& project_schema() {
+  static const std::vector<SectionSchema> schema = build_schema();
+  return schema;
+}
+
+const SectionSchema& schema_section(const std::string& name) {
+  for (const auto& s : project_schema())
+    if (s.name == name) return s;
+  throw std::logic_error("no schema section '" + name + "'");
+}
+
+std::string format_project_schema() {
+  std::ostringstream out;
+  for (const auto& section : project_schema()) {
+    out << "### " << section.name << "\n\n" << section.help << ".\n\n";
+    out << "| key | type | unit | range | default | help |\n";
+    out << "| --- | --- | --- | --- | --- | --- |\n";
+    for (const auto& p : section.params) {
+      std::string type = param_type_name(p.type);
+      if (p.type == ParamType::Choice) {
+        type.clear();
+        for (const auto& c : p.choices) type += (type.empty() ? "" : " \\| ") + c;
+      } else if (p.type == ParamType::Section) {
+        type = "map (" + p.section + ")";
+      } else if (p.type == ParamType::SectionList) {
+        type = "list of " + p.section;
+      }
+      const std::string def = p.required ? "**required**"
+                              : p.default_value.empty() ? "" : "`" + p.default_value + "`";
+      out << "| `" << p.name << "` | " << type << " | " << p.unit << " | " << p.range_text()
+          << " | " << def << " | " << p.help << " |\n";
+    }
+    out << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace dayphoton::project
