@@ -176,7 +176,7 @@ std::vector<SectionSchema> build_schema() {
       P("name", T::String, "unique sensor-set name (also the output folder)").required(),
       P("room", T::String, "room whose floor the grid covers"),
       P("polygon", T::PointList, "outline [x, y, z] (z ignored)").unit("m"),
-      P("height", T::Number, "height of the sensor plane above z = 0 of the room floor").unit("m").def("0.8"),
+      P("height", T::Number, "sensor plane: above the room floor for room grids, absolute z for polygon grids").unit("m").def("0.8"),
       P("spacing", T::Number, "distance between sensors").unit("m").above(0).def("0.5"),
       P("inset", T::Number, "distance kept from the outline").unit("m").at_least(0).def("0.5"),
       P("normal", T::Vec3, "direction the sensors face").def("[0, 0, 1]"),
