@@ -1,0 +1,60 @@
+// Internal interface of the geometry stage (Project -> SceneDescription, see project.h):
+// one generator per kind of project geometry, all working in MODEL coordinates (the north
+// rotation is applied once, by build_scene_description, afterwards). Generators report
+// every problem located into a Diagnostics and skip what they cannot build.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/project/project.h"
+
+namespace dayphoton::project::detail {
+
+/// Resolves project material names to indices into SceneDescription::materials, reporting
+/// unknown names (with a "did you mean") at the referring location.
+class MaterialLookup {
+ public:
+  MaterialLookup(const std::vector<MaterialSpec>& materials, Diagnostics& diag);
+  /// Index of `name`, or -1 after reporting an error naming `what` (e.g. "floor material of
+  /// room 'office'").
+  int resolve(const std::string& name, const SourceLocation& where, const std::string& what);
+
+ private:
+  const std::vector<MaterialSpec>& m_materials;
+  std::vector<std::string> m_names;
+  Diagnostics& m_diag;
+};
+
+/// Report an error, quoting the source line when the location names a readable file.
+void report(Diagnostics& diag, const SourceLocation& where, const std::string& message);
+
+/// Room box (normals into the room) with its windows cut out of the named walls; each
+/// window becomes a glazing Surface with port = true and its normal into the room.
+void generate_room(const RoomSpec& room, MaterialLookup& materials, Diagnostics& diag,
+                   std::vector<Surface>& out);
+
+/// Axis-aligned box rotated about +Z (counter-clockwise for positive rotation_deg) around
+/// its origin corner; six faces with outward normals.
+void generate_box(const BoxSpec& box, MaterialLookup& materials, Diagnostics& diag,
+                  std::vector<Surface>& out);
+
+/// One Surface per OBJ face, transformed by scale, rotation about +Z and translation.
+void generate_mesh(const MeshSpec& mesh, MaterialLookup& materials, Diagnostics& diag,
+                   std::vector<Surface>& out);
+
+/// Check one surface: at least 3 finite vertices, non-zero area, planar within
+/// 1e-3 m x max(1, size), simple enough to triangulate.
+void validate_surface(const Surface& surface, Diagnostics& diag);
+
+/// Sensor grid over a room's floor rectangle or a polygon (model coordinates). Returns
+/// false (after reporting) when the spec is invalid or yields no point.
+bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
+                   SensorGrid& out);
+
+/// Sensor points given inline and/or in a .pts file.
+bool generate_points(const PointsSpec& spec, Diagnostics& diag, SensorGrid& out);
+
+}  // namespace dayphoton::project::detail

@@ -1,0 +1,159 @@
+// build_scene_description: Project -> SceneDescription (the geometry stage of project.h).
+//
+// Order: materials are copied; rooms (windows cut out, glazing as ports), free polygons,
+// boxes and OBJ meshes are generated in model coordinates and validated (finite vertices,
+// non-zero area, planarity within 1e-3 m x max(1, size) where size is the largest extent of
+// the polygon's bounding box, triangulable); sensor grids and point sets are generated;
+// finally every position and direction is rotated to world coordinates by the site's
+// rotation_to_true_north_deg (convention: north_rotation.h). All problems are collected and
+// thrown together as one InputError.
+#include "dayphoton/project/project.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+#include "dayphoton/core/polygon.h"
+#include "dayphoton/project/north_rotation.h"
+#include "geometry_generators.h"
+
+namespace dayphoton::project {
+
+namespace detail {
+
+void report(Diagnostics& diag, const SourceLocation& where, const std::string& message) {
+  std::string line;
+  if (where.known() && !diag.at_cap()) line = read_source_line(where.file, where.line);
+  diag.error(where, message, line);
+}
+
+MaterialLookup::MaterialLookup(const std::vector<MaterialSpec>& materials, Diagnostics& diag)
+    : m_materials(materials), m_diag(diag) {
+  for (const MaterialSpec& m : materials) m_names.push_back(m.name);
+}
+
+int MaterialLookup::resolve(const std::string& name, const SourceLocation& where,
+                            const std::string& what) {
+  for (std::size_t i = 0; i < m_materials.size(); ++i)
+    if (m_materials[i].name == name) return static_cast<int>(i);
+  std::string message = name.empty() ? "no material given for " + what
+                                     : "unknown material '" + name + "' for " + what;
+  const std::string hint = name.empty() ? std::string() : closest_match(name, m_names);
+  if (!hint.empty()) message += " (did you mean '" + hint + "'?)";
+  report(m_diag, where, message);
+  return -1;
+}
+
+void validate_surface(const Surface& surface, Diagnostics& diag) {
+  const std::string what = "surface '" + surface.name + "'";
+  if (surface.vertices.size() < 3) {
+    report(diag, surface.location,
+           what + " has " + std::to_string(surface.vertices.size()) + " vertices; a polygon needs at least 3");
+    return;
+  }
+  for (std::size_t i = 0; i < surface.vertices.size(); ++i)
+    if (!is_finite(surface.vertices[i])) {
+      report(diag, surface.location, what + ": vertex " + std::to_string(i + 1) + " is not finite (NaN or Inf)");
+      return;
+    }
+  Vec3 lo = surface.vertices[0], hi = surface.vertices[0];
+  for (const Vec3& p : surface.vertices)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  const double size_m = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  const double area_m2 = polygon_area_m2(surface.vertices);
+  if (polygon_normal(surface.vertices) == Vec3{0, 0, 0} || area_m2 < 1e-10) {
+    report(diag, surface.location, what + " is degenerate (zero area)");
+    return;
+  }
+  const double deviation_m = planarity_deviation_m(surface.vertices);
+  const double tolerance_m = 1e-3 * std::max(1.0, size_m);
+  if (deviation_m > tolerance_m) {
+    report(diag, surface.location,
+           what + " is not planar: a vertex is " + std::to_string(deviation_m) +
+               " m from the mean plane (tolerance " + std::to_string(tolerance_m) + " m)");
+    return;
+  }
+  try {
+    (void)triangulate_polygon(surface.vertices);
+  } catch (const std::invalid_argument& e) {
+    report(diag, surface.location, what + " cannot be triangulated: " + e.what());
+  }
+}
+
+}  // namespace detail
+
+namespace {
+
+void generate_polygon(const PolygonSpec& spec, detail::MaterialLookup& materials,
+                      std::vector<Surface>& out) {
+  Surface s;
+  s.name = spec.name;
+  s.material = materials.resolve(spec.material, spec.location, "polygon '" + spec.name + "'");
+  s.vertices = spec.vertices;
+  s.port = spec.port;
+  s.location = spec.location;
+  out.push_back(std::move(s));
+}
+
+void rotate_scene(SceneDescription& scene, double north_deg) {
+  if (north_deg == 0) return;
+  for (Surface& s : scene.surfaces)
+    for (Vec3& v : s.vertices) v = model_to_world(v, north_deg);
+  for (SensorGrid& g : scene.grids) {
+    for (SensorPoint& p : g.points) {
+      p.position = model_to_world(p.position, north_deg);
+      p.normal = model_to_world(p.normal, north_deg);
+    }
+    for (Vec3& v : g.outline) v = model_to_world(v, north_deg);
+    g.plane_normal = model_to_world(g.plane_normal, north_deg);
+    // A rotation about the origin keeps the plane's distance along its (rotated) normal.
+  }
+}
+
+}  // namespace
+
+SceneDescription build_scene_description(const Project& project) {
+  Diagnostics diag;
+  SceneDescription scene;
+  scene.materials = project.materials;
+  detail::MaterialLookup materials(scene.materials, diag);
+
+  const double north_deg = project.site.rotation_to_true_north_deg();
+  if (!std::isfinite(north_deg))
+    detail::report(diag, project.site.location, "site north angle is not finite");
+
+  const Geometry& g = project.geometry;
+  std::vector<Surface> surfaces;
+  for (const RoomSpec& room : g.rooms) detail::generate_room(room, materials, diag, surfaces);
+  for (const PolygonSpec& poly : g.polygons) generate_polygon(poly, materials, surfaces);
+  for (const BoxSpec& box : g.boxes) detail::generate_box(box, materials, diag, surfaces);
+  for (const MeshSpec& mesh : g.meshes) detail::generate_mesh(mesh, materials, diag, surfaces);
+  for (const Surface& s : surfaces) detail::validate_surface(s, diag);
+  scene.surfaces = std::move(surfaces);
+
+  std::set<std::string> sensor_names;
+  auto check_name = [&](const std::string& name, const SourceLocation& where) {
+    if (!sensor_names.insert(name).second)
+      detail::report(diag, where, "sensor set name '" + name + "' is used twice (names must be unique: each gets its own output folder)");
+  };
+  for (const GridSpec& spec : project.sensors.grids) {
+    check_name(spec.name, spec.location);
+    SensorGrid grid;
+    if (detail::generate_grid(spec, g.rooms, diag, grid)) scene.grids.push_back(std::move(grid));
+  }
+  for (const PointsSpec& spec : project.sensors.points) {
+    check_name(spec.name, spec.location);
+    SensorGrid grid;
+    if (detail::generate_points(spec, diag, grid)) scene.grids.push_back(std::move(grid));
+  }
+
+  diag.throw_if_errors();
+  rotate_scene(scene, north_deg);
+  return scene;
+}
+
+}  // namespace dayphoton::project

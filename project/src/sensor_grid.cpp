@@ -1,0 +1,208 @@
+// Sensor grids and point sets (model coordinates; build_scene_description rotates them).
+//
+// Room grid: over the room's floor rectangle at height_m above the floor, inset_m from the
+// walls, spacing_m apart. Along each axis the number of points is
+//   n = floor((extent - 2 inset) / spacing + 1e-9) + 1
+// (the 1e-9 keeps floating error, e.g. 4.9999999/0.5, from dropping the last row) and the
+// lattice is centred in the inset rectangle, so when (extent - 2 inset) is a multiple of the
+// spacing the first and last points lie exactly at the inset. Order: rows in y outer,
+// x inner, both ascending: index = columns * iy + ix, as the reference office's
+// grid_0p8m.pts (../shared/refdata/sensors/README.md: 11 x 15 = 165 points,
+// x = 0.5..5.5, y = 0.5..7.5 at z = 0.8).
+//
+// Polygon grid: the outline's x, y (its z is ignored) at z = height_m (absolute); the same
+// centred lattice over the outline's bounding box shrunk by the inset, keeping the points
+// inside the outline whose distance to its boundary is >= inset_m. Same order.
+//
+// A grid is a planar virtual receiver (SensorGrid::planar) when its sensors face straight
+// up or down; the outline is the floor rectangle (room grids) or the polygon at the grid's
+// height.
+//
+// Point sets: inline points followed by the points of a .pts file (pts_reader.h), normals
+// normalised.
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "dayphoton/core/polygon.h"
+#include "dayphoton/project/pts_reader.h"
+#include "geometry_generators.h"
+
+namespace dayphoton::project::detail {
+
+namespace {
+
+constexpr double CountEpsilon = 1e-9;
+
+/// Number of lattice points over `span_m` and the first point's offset (centred).
+int lattice(double span_m, double spacing_m, double& first_m) {
+  if (span_m < -CountEpsilon * std::max(1.0, spacing_m)) return 0;
+  span_m = std::max(0.0, span_m);
+  const int n = static_cast<int>(std::floor(span_m / spacing_m + CountEpsilon)) + 1;
+  first_m = 0.5 * (span_m - (n - 1) * spacing_m);
+  return n;
+}
+
+void set_plane(SensorGrid& out, const Vec3& normal, double height_m) {
+  out.planar = std::fabs(normal.z) > 1 - 1e-12;
+  out.plane_normal = out.planar ? Vec3{0, 0, normal.z > 0 ? 1.0 : -1.0} : normal;
+  out.plane_height_m = out.planar ? out.plane_normal.z * height_m : 0;
+}
+
+}  // namespace
+
+bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
+                   SensorGrid& out) {
+  const std::string what = "grid '" + spec.name + "'";
+  bool ok = true;
+  if (!std::isfinite(spec.spacing_m) || spec.spacing_m <= 0) {
+    report(diag, spec.location, what + ": spacing must be positive");
+    ok = false;
+  }
+  if (!std::isfinite(spec.inset_m) || spec.inset_m < 0) {
+    report(diag, spec.location, what + ": inset must be >= 0");
+    ok = false;
+  }
+  if (!std::isfinite(spec.height_m)) {
+    report(diag, spec.location, what + ": height is not finite");
+    ok = false;
+  }
+  const double normal_length = length(spec.normal);
+  if (!is_finite(spec.normal) || !(normal_length > 1e-12)) {
+    report(diag, spec.location, what + ": sensor normal must be a non-zero vector");
+    ok = false;
+  }
+  if (spec.room.empty() == spec.polygon.empty()) {
+    report(diag, spec.location, what + ": give either a room or a polygon");
+    ok = false;
+  }
+  if (!ok) return false;
+  const Vec3 normal = spec.normal / normal_length;
+
+  out = SensorGrid{};
+  out.name = spec.name;
+  out.location = spec.location;
+  out.spacing_m = spec.spacing_m;
+
+  if (!spec.room.empty()) {
+    const RoomSpec* room = nullptr;
+    std::vector<std::string> names;
+    for (const RoomSpec& r : rooms) {
+      names.push_back(r.name);
+      if (r.name == spec.room) room = &r;
+    }
+    if (!room) {
+      std::string message = what + ": unknown room '" + spec.room + "'";
+      const std::string hint = closest_match(spec.room, names);
+      if (!hint.empty()) message += " (did you mean '" + hint + "'?)";
+      report(diag, spec.location, message);
+      return false;
+    }
+    if (!is_finite(room->origin) || !is_finite(room->size_m)) return false;  // reported by the room
+    const double z = room->origin.z + spec.height_m;
+    double x_first = 0, y_first = 0;
+    const int nx = lattice(room->size_m.x - 2 * spec.inset_m, spec.spacing_m, x_first);
+    const int ny = lattice(room->size_m.y - 2 * spec.inset_m, spec.spacing_m, y_first);
+    if (nx <= 0 || ny <= 0) {
+      report(diag, spec.location,
+             what + " has no points: the inset (" + std::to_string(spec.inset_m) + " m) leaves nothing of room '" +
+                 room->name + "' (" + std::to_string(room->size_m.x) + " x " + std::to_string(room->size_m.y) + " m)");
+      return false;
+    }
+    const double x0 = room->origin.x + spec.inset_m + x_first;
+    const double y0 = room->origin.y + spec.inset_m + y_first;
+    for (int iy = 0; iy < ny; ++iy)
+      for (int ix = 0; ix < nx; ++ix)
+        out.points.push_back({{x0 + ix * spec.spacing_m, y0 + iy * spec.spacing_m, z}, normal});
+    out.columns = nx;
+    out.rows = ny;
+    const Vec3 o{room->origin.x, room->origin.y, z};
+    out.outline = {o, o + Vec3{room->size_m.x, 0, 0}, o + Vec3{room->size_m.x, room->size_m.y, 0},
+                   o + Vec3{0, room->size_m.y, 0}};
+    set_plane(out, normal, z);
+    return true;
+  }
+
+  // Polygon outline at the grid height.
+  std::vector<Vec3> outline;
+  for (const Vec3& p : spec.polygon) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
+      report(diag, spec.location, what + ": polygon vertex is not finite");
+      return false;
+    }
+    outline.push_back({p.x, p.y, spec.height_m});
+  }
+  if (outline.size() < 3 || polygon_area_m2(outline) < 1e-10) {
+    report(diag, spec.location, what + ": polygon needs at least 3 vertices enclosing an area (seen from above)");
+    return false;
+  }
+  try {
+    (void)triangulate_polygon(outline);
+  } catch (const std::invalid_argument& e) {
+    report(diag, spec.location, what + ": polygon is not simple: " + e.what());
+    return false;
+  }
+  Vec3 lo = outline[0], hi = outline[0];
+  for (const Vec3& p : outline) {
+    lo.x = std::min(lo.x, p.x);
+    lo.y = std::min(lo.y, p.y);
+    hi.x = std::max(hi.x, p.x);
+    hi.y = std::max(hi.y, p.y);
+  }
+  double x_first = 0, y_first = 0;
+  const int nx = lattice(hi.x - lo.x - 2 * spec.inset_m, spec.spacing_m, x_first);
+  const int ny = lattice(hi.y - lo.y - 2 * spec.inset_m, spec.spacing_m, y_first);
+  const double boundary_tolerance_m = 1e-9 * std::max(1.0, std::max(hi.x - lo.x, hi.y - lo.y));
+  for (int iy = 0; iy < ny; ++iy)
+    for (int ix = 0; ix < nx; ++ix) {
+      const Vec3 p{lo.x + spec.inset_m + x_first + ix * spec.spacing_m,
+                   lo.y + spec.inset_m + y_first + iy * spec.spacing_m, spec.height_m};
+      const double d = distance_to_polygon_boundary_m(outline, p);
+      const bool on_boundary = d <= boundary_tolerance_m;
+      if (d < spec.inset_m - boundary_tolerance_m) continue;
+      if (!on_boundary && !polygon_contains(outline, p)) continue;
+      out.points.push_back({p, normal});
+    }
+  if (out.points.empty()) {
+    report(diag, spec.location,
+           what + " has no points: no lattice point of spacing " + std::to_string(spec.spacing_m) +
+               " m lies inside the polygon at least " + std::to_string(spec.inset_m) + " m from its edges");
+    return false;
+  }
+  out.outline = outline;
+  set_plane(out, normal, spec.height_m);
+  return true;
+}
+
+bool generate_points(const PointsSpec& spec, Diagnostics& diag, SensorGrid& out) {
+  const std::string what = "sensor points '" + spec.name + "'";
+  out = SensorGrid{};
+  out.name = spec.name;
+  out.location = spec.location;
+  bool ok = true;
+  for (std::size_t i = 0; i < spec.points.size(); ++i) {
+    const SensorPoint& p = spec.points[i];
+    const double len = length(p.normal);
+    if (!is_finite(p.position) || !is_finite(p.normal) || !(len > 1e-12)) {
+      report(diag, spec.location,
+             what + ": point " + std::to_string(i + 1) + " needs a finite position and a non-zero direction");
+      ok = false;
+      continue;
+    }
+    out.points.push_back({p.position, p.normal / len});
+  }
+  const std::string path = spec.file.empty() ? spec.file_as_written : spec.file;
+  if (!path.empty()) {
+    const std::size_t errors_before = diag.error_count();
+    std::vector<SensorPoint> from_file = read_pts(path, diag, spec.location);
+    if (diag.error_count() != errors_before) ok = false;
+    out.points.insert(out.points.end(), from_file.begin(), from_file.end());
+  }
+  if (ok && out.points.empty()) {
+    report(diag, spec.location, what + " has no points");
+    return false;
+  }
+  return ok;
+}
+
+}  // namespace dayphoton::project::detail

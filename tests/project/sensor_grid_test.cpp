@@ -1,0 +1,221 @@
+// Sensor grids and point files:
+// - the office work-plane grid equals ../shared/refdata/sensors/grid_0p8m.pts (165 points,
+//   11 x 15, y rows outer, x inner, first (0.5, 0.5, 0.8), last (5.5, 7.5, 0.8));
+// - floating error never drops the last row (0.7 / 0.1 = 6.999999999999999);
+// - lattices are centred when the span is not a multiple of the spacing;
+// - polygon grids keep the lattice points inside with distance to the boundary >= inset
+//   (hand-counted L-shapes);
+// - grids without points and unknown rooms are located errors;
+// - .pts files: comments, normalisation, located errors for every malformed line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "dayphoton/core/polygon.h"
+#include "dayphoton/project/project.h"
+#include "dayphoton/project/pts_reader.h"
+#include "geometry_fixture.h"
+
+namespace dayphoton::project {
+namespace {
+
+using testing::build_error;
+using testing::office_project;
+
+TEST(SensorGrid, OfficeWorkPlaneMatchesReferenceOrder) {
+  const SceneDescription scene = build_scene_description(office_project());
+  ASSERT_EQ(scene.grids.size(), 1u);
+  const SensorGrid& g = scene.grids[0];
+  EXPECT_EQ(g.name, "workplane");
+  ASSERT_EQ(g.points.size(), 165u);
+  EXPECT_EQ(g.columns, 11);
+  EXPECT_EQ(g.rows, 15);
+  EXPECT_DOUBLE_EQ(g.spacing_m, 0.5);
+  EXPECT_TRUE(g.planar);
+  EXPECT_EQ(g.plane_normal, Vec3(0, 0, 1));
+  EXPECT_DOUBLE_EQ(g.plane_height_m, 0.8);
+  EXPECT_EQ(g.points.front().position, Vec3(0.5, 0.5, 0.8));
+  EXPECT_EQ(g.points.back().position, Vec3(5.5, 7.5, 0.8));
+  for (int iy = 0; iy < 15; ++iy)
+    for (int ix = 0; ix < 11; ++ix) {
+      const SensorPoint& s = g.points[static_cast<std::size_t>(11 * iy + ix)];
+      EXPECT_NEAR(s.position.x, 0.5 + 0.5 * ix, 1e-12);
+      EXPECT_NEAR(s.position.y, 0.5 + 0.5 * iy, 1e-12);
+      EXPECT_EQ(s.normal, Vec3(0, 0, 1));
+    }
+
+  const std::string ref = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/sensors/grid_0p8m.pts";
+  if (!std::ifstream(ref)) GTEST_SKIP() << "reference sensors not found: " << ref;
+  Diagnostics diag;
+  const std::vector<SensorPoint> expected = read_pts(ref, diag);
+  ASSERT_FALSE(diag.has_errors()) << diag.format();
+  ASSERT_EQ(expected.size(), g.points.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_LT(length(expected[i].position - g.points[i].position), 1e-9) << "sensor " << i;
+    EXPECT_LT(length(expected[i].normal - g.points[i].normal), 1e-12) << "sensor " << i;
+  }
+}
+
+TEST(SensorGrid, FloatingErrorDoesNotDropTheLastRow) {
+  Project p = office_project();
+  RoomSpec& room = p.geometry.rooms[0];
+  room.origin = {10, 20, 3};
+  room.size_m = {0.7, 0.3, 2.5};
+  room.windows.clear();
+  GridSpec& g = p.sensors.grids[0];
+  g.spacing_m = 0.1;
+  g.inset_m = 0;
+  ASSERT_LT(0.7 / 0.1, 7.0);  // the trap
+  const SceneDescription scene = build_scene_description(p);
+  const SensorGrid& grid = scene.grids[0];
+  EXPECT_EQ(grid.columns, 8);
+  EXPECT_EQ(grid.rows, 4);
+  ASSERT_EQ(grid.points.size(), 32u);
+  EXPECT_NEAR(grid.points.back().position.x, 10.7, 1e-12);
+  EXPECT_NEAR(grid.points.back().position.y, 20.3, 1e-12);
+  EXPECT_NEAR(grid.points.back().position.z, 3.8, 1e-12);  // height above the room's floor
+}
+
+TEST(SensorGrid, LatticeIsCentredInTheInsetRectangle) {
+  Project p = office_project();
+  p.geometry.rooms[0].size_m.x = 6.2;  // span 5.2 = 10 spacings + 0.2 left over
+  const SceneDescription scene = build_scene_description(p);
+  const SensorGrid& grid = scene.grids[0];
+  EXPECT_EQ(grid.columns, 11);
+  EXPECT_NEAR(grid.points.front().position.x, 0.6, 1e-12);
+  EXPECT_NEAR(grid.points[10].position.x, 5.6, 1e-12);
+}
+
+GridSpec l_shape_grid(double inset_m) {
+  GridSpec g;
+  g.name = "l";
+  g.polygon = {{0, 0, 7}, {4, 0, 7}, {4, 2, 7}, {2, 2, 7}, {2, 4, 7}, {0, 4, 7}};  // z ignored
+  g.height_m = 0.75;
+  g.spacing_m = 1;
+  g.inset_m = inset_m;
+  g.location = {"p.yaml", 40, 3};
+  return g;
+}
+
+TEST(SensorGrid, PolygonGridKeepsPointsInsideAtTheInset) {
+  Project p = office_project();
+  p.sensors.grids = {l_shape_grid(0.5)};
+  SceneDescription scene = build_scene_description(p);
+  ASSERT_EQ(scene.grids.size(), 1u);
+  // 4 x 4 lattice at 0.5, 1.5, 2.5, 3.5 minus the 4 points of the missing quadrant.
+  const std::vector<std::pair<double, double>> expected{
+      {0.5, 0.5}, {1.5, 0.5}, {2.5, 0.5}, {3.5, 0.5}, {0.5, 1.5}, {1.5, 1.5},
+      {2.5, 1.5}, {3.5, 1.5}, {0.5, 2.5}, {1.5, 2.5}, {0.5, 3.5}, {1.5, 3.5}};
+  const SensorGrid& g = scene.grids[0];
+  ASSERT_EQ(g.points.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_NEAR(g.points[i].position.x, expected[i].first, 1e-12) << i;
+    EXPECT_NEAR(g.points[i].position.y, expected[i].second, 1e-12) << i;
+    EXPECT_DOUBLE_EQ(g.points[i].position.z, 0.75);
+  }
+  EXPECT_TRUE(g.planar);
+  EXPECT_EQ(g.outline.size(), 6u);
+  EXPECT_DOUBLE_EQ(g.outline[0].z, 0.75);
+
+  // Inset 0.6: lattice 1, 2, 3 in each axis; points on the inner edges (distance 0) and in
+  // the missing quadrant are dropped, leaving 5.
+  p.sensors.grids = {l_shape_grid(0.6)};
+  scene = build_scene_description(p);
+  const std::vector<std::pair<double, double>> kept{{1, 1}, {2, 1}, {3, 1}, {1, 2}, {1, 3}};
+  ASSERT_EQ(scene.grids[0].points.size(), kept.size());
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    const Vec3 q = scene.grids[0].points[i].position;
+    EXPECT_NEAR(q.x, kept[i].first, 1e-12);
+    EXPECT_NEAR(q.y, kept[i].second, 1e-12);
+    EXPECT_GE(distance_to_polygon_boundary_m(scene.grids[0].outline, q), 0.6 - 1e-12);
+  }
+}
+
+TEST(SensorGrid, GridsWithoutPointsAndUnknownRoomsAreLocatedErrors) {
+  Project p = office_project();
+  p.sensors.grids[0].inset_m = 3.5;  // 6 - 7 < 0
+  EXPECT_NE(build_error(p).find("office.yaml:30:5: error: grid 'workplane' has no points"), std::string::npos)
+      << build_error(p);
+  p = office_project();
+  p.sensors.grids = {l_shape_grid(1.5)};  // no lattice point is 1.5 m from every edge
+  EXPECT_NE(build_error(p).find("p.yaml:40:3: error: grid 'l' has no points"), std::string::npos)
+      << build_error(p);
+  p = office_project();
+  p.sensors.grids[0].room = "ofice";
+  EXPECT_NE(build_error(p).find("unknown room 'ofice' (did you mean 'office'?)"), std::string::npos);
+  p = office_project();
+  p.sensors.grids[0].spacing_m = 0;
+  EXPECT_NE(build_error(p).find("spacing must be positive"), std::string::npos);
+  p = office_project();
+  p.sensors.grids.push_back(p.sensors.grids[0]);
+  EXPECT_NE(build_error(p).find("sensor set name 'workplane' is used twice"), std::string::npos);
+}
+
+TEST(PtsReader, ReadsAndNormalises) {
+  Diagnostics diag;
+  const auto pts = read_pts_from_string(
+      "# sensors\n"
+      "0.5 0.5 0.8 0 0 1\n"
+      "\n"
+      "  1\t2 3   0 0 2   # trailing comment\r\n"
+      "1e0 -2.5 0 3 4 0\n",
+      "s.pts", diag);
+  ASSERT_FALSE(diag.has_errors()) << diag.format();
+  ASSERT_EQ(pts.size(), 3u);
+  EXPECT_EQ(pts[0].position, Vec3(0.5, 0.5, 0.8));
+  EXPECT_EQ(pts[1].position, Vec3(1, 2, 3));
+  EXPECT_EQ(pts[1].normal, Vec3(0, 0, 1));
+  EXPECT_NEAR(pts[2].normal.x, 0.6, 1e-15);
+  EXPECT_NEAR(pts[2].normal.y, 0.8, 1e-15);
+}
+
+TEST(PtsReader, EveryMalformedLineIsLocated) {
+  Diagnostics diag;
+  const auto pts = read_pts_from_string(
+      "0 0 0 0 0 1\n"
+      "0 0 0.8 0 0\n"       // 2: five values
+      "0 x 0.8 0 0 1\n"     // 3: not a number at column 3
+      "0 0 0.8 0 0 0\n"     // 4: zero direction (column of nx = 9)
+      "0 0 nan 0 0 1\n"     // 5: not finite at column 5
+      "0 0 0 0 0 1 7\n",    // 6: seven values, extra at column 13
+      "s.pts", diag);
+  EXPECT_EQ(pts.size(), 1u);
+  const std::string text = diag.format();
+  EXPECT_NE(text.find("s.pts:2:12: error: expected 6 values per sensor (x y z nx ny nz), found 5"),
+            std::string::npos) << text;
+  EXPECT_NE(text.find("s.pts:3:3: error: expected a number, found 'x'\n    0 x 0.8 0 0 1\n      ^\n"),
+            std::string::npos) << text;
+  EXPECT_NE(text.find("s.pts:4:9: error: sensor direction is zero"), std::string::npos) << text;
+  EXPECT_NE(text.find("s.pts:5:5: error: value is not finite ('nan')"), std::string::npos) << text;
+  EXPECT_NE(text.find("s.pts:6:13: error: expected 6 values"), std::string::npos) << text;
+  EXPECT_EQ(diag.error_count(), 5u);
+}
+
+TEST(PtsReader, PointSetsThroughTheSceneBuilder) {
+  testing::TempFile file("sensor_grid_test_points.pts", "1 2 3 0 0 -5\n4 5 6 1 0 0\n");
+  Project p = office_project();
+  PointsSpec spec;
+  spec.name = "extra";
+  spec.points = {{{0, 0, 1}, {0, 1, 0}}};
+  spec.file = file.path();
+  spec.location = {"office.yaml", 50, 5};
+  p.sensors.points.push_back(spec);
+  const SceneDescription scene = build_scene_description(p);
+  ASSERT_EQ(scene.grids.size(), 2u);
+  const SensorGrid& g = scene.grids[1];
+  ASSERT_EQ(g.points.size(), 3u);  // inline first, then the file's
+  EXPECT_EQ(g.points[1].normal, Vec3(0, 0, -1));
+  EXPECT_EQ(g.points[2].position, Vec3(4, 5, 6));
+
+  // A missing file is reported at the project entry that names it.
+  p.sensors.points[0].file = file.path() + ".missing";
+  EXPECT_NE(build_error(p).find("office.yaml:50:5: error: cannot open sensor file"), std::string::npos);
+  // Zero inline direction.
+  p.sensors.points[0].file.clear();
+  p.sensors.points[0].points[0].normal = {0, 0, 0};
+  EXPECT_NE(build_error(p).find("point 1 needs a finite position and a non-zero direction"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace dayphoton::project
