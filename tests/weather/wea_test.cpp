@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <random>
 #include <sstream>
 
 #include "epw_test_support.h"
@@ -208,6 +209,35 @@ TEST(Wea, ReadErrorsAreLocatedByLineAndColumn) {
   EXPECT_NE(errors(units4)[0].find("x.wea:6:25: error: weather_data_file_units: expected 1, 2 "
                                    "or 3, found '4'"),
             std::string::npos);
+}
+
+// Seeded random corruptions of a .wea text: success or InputError, never a crash.
+TEST(Wea, FuzzedCorruptionsNeverCrash) {
+  std::ostringstream out;
+  write_wea(out, epw_to_wea(SyntheticEpw().read()));
+  const std::string text = out.str().substr(0, 20000);
+  std::mt19937 rng(7u);
+  const std::string alphabet = "0123456789 .-+\n\tabc_\xff";
+  int failures = 0;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    std::string t = text;
+    for (int k = 0; k < 3 && !t.empty(); ++k) {
+      const std::size_t pos = rng() % t.size();
+      switch (rng() % 3) {
+        case 0: t[pos] = alphabet[rng() % alphabet.size()]; break;
+        case 1: t.erase(pos, 1 + rng() % 50); break;
+        case 2: t.insert(pos, 1, alphabet[rng() % alphabet.size()]); break;
+      }
+    }
+    std::istringstream in(t);
+    try {
+      read_wea(in, "fuzz.wea");
+    } catch (const InputError& e) {
+      ++failures;
+      for (const Diagnostic& d : e.diagnostics()) EXPECT_GE(d.location.line, 1);
+    }
+  }
+  EXPECT_GT(failures, 100);
 }
 
 }  // namespace
