@@ -10,7 +10,10 @@
 //    only then queried (commit-then-query); a committed scene is never modified, so queries
 //    are thread-safe;
 //  - RTC_SCENE_FLAG_ROBUST: watertight triangle tests (no leaks through shared edges and
-//    vertices of a closed room), at a small speed cost; RTC_BUILD_QUALITY_HIGH since a
+//    vertices of a closed room), at a small speed cost. Measured with Embree 3.13.5: without
+//    it, 465 of 1e5 rays aimed at the edges and corners of a closed unit box escaped, and 91
+//    of 1e5 in the office (tests/engine/scene_test.cpp, ClosedBoxIsWatertight and
+//    OfficeWithWindowIsClosed); with it, none. RTC_BUILD_QUALITY_HIGH since a
 //    scene is built once and traced 1e7..1e9 times.
 #include "embree_accel.h"
 

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <thread>
 #include <type_traits>
 
 #include "dayphoton/core/units.h"
@@ -377,6 +378,29 @@ TEST(Scene, SensorGridsAreNotGeometry) {
   const auto hit = scene.intersect({{0, 0, 2}, {0, 0, -1}});
   ASSERT_TRUE(hit.has_value());
   EXPECT_DOUBLE_EQ(hit->t, 2.0);  // passes the grid plane at 1.2 m untouched
+}
+
+// A built scene is queried from several threads at once (as the photon tracer will do):
+// every thread sees exactly the single-threaded answers.
+TEST(Scene, ConcurrentQueriesGiveTheSameAnswers) {
+  const Scene scene = Scene::build(office_room());
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Ray> rays(20000);
+  for (auto& r : rays) r = {{6 * u(rng), 8 * u(rng), 3 * u(rng)}, random_unit_vector(rng)};
+  std::vector<std::uint32_t> serial(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) serial[i] = scene.intersect(rays[i])->primitive;
+  std::vector<std::vector<std::uint32_t>> results(4, std::vector<std::uint32_t>(rays.size()));
+  std::vector<std::thread> threads;
+  for (std::size_t k = 0; k < results.size(); ++k)
+    threads.emplace_back([&, k] {
+      for (std::size_t i = 0; i < rays.size(); ++i) {
+        const auto hit = scene.intersect(rays[i]);
+        results[k][i] = hit && scene.occluded(rays[i]) ? hit->primitive : 0xFFFFFFFFu;
+      }
+    });
+  for (auto& t : threads) t.join();
+  for (const auto& r : results) EXPECT_EQ(r, serial);
 }
 
 TEST(Scene, EmptySceneHitsNothing) {
