@@ -157,9 +157,10 @@ class ObjParser {
     }
     const long long resolved = value > 0 ? value - 1 : n + value;
     if (resolved < 0 || resolved >= n) {
+      const std::string plural = std::string(what) == "vertex" ? "vertices" : std::string(what) + "s";
       error(line, line_no, column,
             std::string(what) + " index " + text + " is out of range (" + std::to_string(n) + " " +
-                what + (n == 1 ? "" : "s") + " defined so far)");
+                (n == 1 ? std::string(what) : plural) + " defined so far)");
       return false;
     }
     index = static_cast<std::size_t>(resolved);

@@ -227,8 +227,12 @@ TEST(Geometry, NorthRotationConvention) {
 
 TEST(Geometry, SceneIsRotatedToTrueNorth) {
   Project p = office_project();
-  p.site.north_deg = 60;
-  p.site.meridian_convergence_deg = 30;  // total 90
+  // The builder uses Site::rotation_to_true_north_deg() (grid north corrected for the UTM
+  // meridian convergence, see project.h); here a 120 degree grid angle and 30 degrees of
+  // convergence.
+  p.site.north_deg = 120;
+  p.site.meridian_convergence_deg = 30;
+  ASSERT_DOUBLE_EQ(p.site.rotation_to_true_north_deg(), 90);
   PointsSpec pts;
   pts.name = "facade";
   pts.points = {{{3, 0.1, 1.5}, {0, 2, 0}}};  // facing +y (into the room) in the model

@@ -80,9 +80,9 @@ TEST(ObjReader, MalformedObjGivesLocatedErrors) {
       "f 1 2\n"             // 7: two vertices
       "curv 0 1 1 2\n"      // 8: free-form
       "  bogus 1 2\n"       // 9: unknown statement, column 3
-      "f 1/1/1 2 -1\n"      // 10: no texture coordinates, column 5
+      "f 1/1/1 2 -1\n"      // 10: no vt (col 5), no vn (col 7), -1 is the bad v4 (col 11)
       "v nan 0 0\n"         // 11: not finite, column 3
-      "f 1 2 11\n"          // 12: uses the invalid vertex 11
+      "f 1 2 5\n"           // 12: uses the invalid vertex 5
       "f 1 2 2/x\n"         // 13: bad texture index, column 9
       "usemtl\n"            // 14: no name
       "f 1 2 4\n";          // 15: v4 counted (bad) -> reported
@@ -92,14 +92,16 @@ TEST(ObjReader, MalformedObjGivesLocatedErrors) {
   const char* const expected[] = {
       "bad.obj:3:7: error: expected a number, found 'x'\n    v 1 1 x\n          ^\n",
       "bad.obj:4:6: error: a vertex needs x y z (optionally w, or r g b), found 2 value(s)\n",
-      "bad.obj:5:7: error: vertex index 5 is out of range (4 vertexs defined so far)",
+      "bad.obj:5:7: error: vertex index 5 is out of range (4 vertices defined so far)",
       "bad.obj:6:5: error: vertex index 0 is invalid (OBJ indices start at 1)\n",
       "bad.obj:7:1: error: a face needs at least 3 vertices, found 2\n",
       "bad.obj:8:1: error: free-form geometry ('curv') is not supported",
       "bad.obj:9:3: error: unknown OBJ statement 'bogus'\n      bogus 1 2\n      ^\n",
-      "bad.obj:10:5: error: texture coordinate index 1 is out of range",
+      "bad.obj:10:5: error: texture coordinate index 1 is out of range (0 texture coordinates defined so far)",
+      "bad.obj:10:7: error: normal index 1 is out of range (0 normals defined so far)",
+      "bad.obj:10:11: error: face uses vertex -1, which is invalid\n    f 1/1/1 2 -1\n              ^\n",
       "bad.obj:11:3: error: vertex coordinate is not finite ('nan')\n",
-      "bad.obj:12:7: error: face uses vertex 11, which is invalid\n",
+      "bad.obj:12:7: error: face uses vertex 5, which is invalid\n",
       "bad.obj:13:9: error: expected a texture coordinate index, found 'x'\n",
       "bad.obj:14:7: error: usemtl takes exactly one material name\n",
       "bad.obj:15:7: error: face uses vertex 4, which is invalid\n",
