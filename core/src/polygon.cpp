@@ -180,13 +180,18 @@ std::vector<std::array<std::uint32_t, 3>> triangulate_polygon(const std::vector<
   };
 
   remove_collinear();
+  // The search resumes where the last ear was cut (its neighbours are the likeliest new
+  // ears), which keeps typical polygons at O(n^2) instead of O(n^3).
+  std::size_t cursor = 0;
   while (ring.size() > 3) {
     bool clipped = false;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
+    const std::size_t m = ring.size();
+    for (std::size_t step = 0; step < m; ++step) {
+      const std::size_t i = (cursor + step) % m;
       if (!is_ear(i)) continue;
-      const std::size_t m = ring.size();
       triangles.push_back({ring[(i + m - 1) % m], ring[i], ring[(i + 1) % m]});
       ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
+      cursor = i == 0 ? 0 : i - 1;
       clipped = true;
       break;
     }

@@ -165,6 +165,21 @@ TEST(Polygon, RandomStarPolygonsTriangulate) {
   }
 }
 
+TEST(Polygon, LargeConcavePolygonTriangulates) {
+  // 2000-vertex star (radii alternating 1 and 0.6): every other corner is reflex.
+  // Area closed form: n triangles of sides r1, r2 at angle 2 pi / n: n/2 r1 r2 sin(2 pi/n).
+  const int n = 2000;
+  std::vector<Vec3> v;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2 * Pi * i / n, r = i % 2 ? 0.6 : 1.0;
+    v.push_back({r * std::cos(a), r * std::sin(a), 0});
+  }
+  EXPECT_NEAR(polygon_area_m2(v), 0.5 * n * 0.6 * std::sin(2 * Pi / n), 1e-12);
+  const auto tris = triangulate_polygon(v);
+  EXPECT_EQ(tris.size(), static_cast<std::size_t>(n - 2));
+  expect_valid_triangulation(v);
+}
+
 TEST(Polygon, ContainsAndDistanceToBoundary) {
   const std::vector<Vec3> l{{0, 0, 1}, {2, 0, 1}, {2, 1, 1}, {1, 1, 1}, {1, 2, 1}, {0, 2, 1}};
   EXPECT_TRUE(polygon_contains(l, {0.5, 0.5, 1}));
