@@ -134,6 +134,7 @@ class Loader {
     if (const YamlNode* z = r.take("utm_zone"); z && !z->is_null()) {
       if (read_utm_zone(*z) && have_lat && have_lon) {
         try {
+          // GeographicLib's gamma (grid north's bearing from true north); see project.h.
           site.meridian_convergence_deg =
               utm_meridian_convergence_deg(site.latitude_deg, site.longitude_deg, *site.utm_zone);
         } catch (const std::invalid_argument& e) {

@@ -345,10 +345,12 @@ TEST(ProjectLoader, UtmZoneSetsConvergenceAndRotation) {
   EXPECT_EQ(*p.site.utm_zone, 16);
   EXPECT_TRUE(p.site.utm_north);
   // Zone 16: central meridian -87; the site is 0.9 deg west, so gamma < 0 (about -0.6 deg).
-  const double expected = utm_meridian_convergence_deg(41.98, -87.9, 16);
-  EXPECT_NEAR(p.site.meridian_convergence_deg, expected, 1e-12);
-  EXPECT_NEAR(expected, std::atan(std::tan(-0.9 * M_PI / 180) * std::sin(41.98 * M_PI / 180)) * 180 / M_PI, 1e-4);
-  EXPECT_NEAR(p.site.rotation_to_true_north_deg(), 5 - expected, 1e-12);
+  const double gamma = utm_meridian_convergence_deg(41.98, -87.9, 16);
+  EXPECT_NEAR(gamma, std::atan(std::tan(-0.9 * M_PI / 180) * std::sin(41.98 * M_PI / 180)) * 180 / M_PI, 1e-4);
+  // Grid north is gamma clockwise of true north, so true north is -gamma clockwise of model +Y
+  // when model +Y is grid north: with north = 5 the rotation is 5 - gamma (about 5.60 deg).
+  EXPECT_NEAR(p.site.meridian_convergence_deg, gamma, 1e-12);
+  EXPECT_NEAR(p.site.rotation_to_true_north_deg(), 5 - gamma, 1e-12);
 
   const Project q = load_project_from_string(
       "site: {latitude: -33.87, longitude: 151.21, time_zone: 10, utm_zone: {zone: 56, hemisphere: south}}\n"

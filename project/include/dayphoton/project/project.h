@@ -39,7 +39,7 @@ struct Site {
   /// Meridian convergence gamma (degrees) at the site, from GeographicLib::UTMUPS::Forward;
   /// 0 without a UTM zone. GeographicLib's sign: the bearing of grid north measured clockwise
   /// from true north (positive east of the zone's central meridian in the northern
-  /// hemisphere). See dayphoton/project/site_geodesy.h.
+  /// hemisphere). See dayphoton/project/site_geodesy.h and docs/project-format.md.
   double meridian_convergence_deg = 0;
   SourceLocation location;
 

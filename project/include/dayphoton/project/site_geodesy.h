@@ -6,7 +6,8 @@
 // zone's central meridian in the northern hemisphere gamma > 0: grid north points east of
 // true north, so true north lies gamma degrees *counter-clockwise* of grid north.
 // A model drawn in UTM coordinates has model +Y = grid north; the clockwise angle from model
-// +Y to true north is therefore north_deg - gamma (Site::rotation_to_true_north_deg).
+// +Y to true north is therefore north_deg - gamma. The loader stores gamma in
+// Site::meridian_convergence_deg; Site::rotation_to_true_north_deg() = north_deg - gamma.
 #pragma once
 
 #include <string>
