@@ -227,12 +227,7 @@ TEST(Geometry, NorthRotationConvention) {
 
 TEST(Geometry, SceneIsRotatedToTrueNorth) {
   Project p = office_project();
-  // The builder uses Site::rotation_to_true_north_deg() (grid north corrected for the UTM
-  // meridian convergence, see project.h); here a 120 degree grid angle and 30 degrees of
-  // convergence.
-  p.site.north_deg = 120;
-  p.site.meridian_convergence_deg = 30;
-  ASSERT_DOUBLE_EQ(p.site.rotation_to_true_north_deg(), 90);
+  p.site.north_deg = 90;
   PointsSpec pts;
   pts.name = "facade";
   pts.points = {{{3, 0.1, 1.5}, {0, 2, 0}}};  // facing +y (into the room) in the model
@@ -259,6 +254,21 @@ TEST(Geometry, SceneIsRotatedToTrueNorth) {
   ASSERT_EQ(facade.points.size(), 1u);
   expect_vec_near(facade.points[0].position, {-0.1, 3, 1.5}, 1e-12);
   expect_vec_near(facade.points[0].normal, {-1, 0, 0}, 1e-15);  // normalised and rotated
+}
+
+TEST(Geometry, RotationIncludesTheMeridianConvergence) {
+  // The builder rotates by Site::rotation_to_true_north_deg(), which combines north_deg with
+  // the UTM meridian convergence (sign convention in project.h / site_geodesy.h).
+  Project p = office_project();
+  p.site.north_deg = 20;
+  p.site.meridian_convergence_deg = 1.5;
+  const double total = p.site.rotation_to_true_north_deg();
+  ASSERT_NE(total, 20.0);
+  const SceneDescription scene = build_scene_description(p);
+  const Surface* floor = find_surface(scene, "office.floor");
+  ASSERT_NE(floor, nullptr);
+  expect_vec_near(floor->vertices[2], model_to_world({6, 8, 0}, total), 1e-12);
+  expect_vec_near(scene.grids[0].points[0].position, model_to_world({0.5, 0.5, 0.8}, total), 1e-12);
 }
 
 TEST(Geometry, WindowOutsideItsWallIsALocatedError) {
