@@ -31,4 +31,12 @@ struct RunOptions {
 };
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err);
 
+struct SunOptions {
+  std::string weather_path;
+  std::string solar_position = "spa";
+  bool no_refraction = false;
+  std::string output_path;  ///< empty: standard output
+};
+int run_sun(const SunOptions& options, std::ostream& out);
+
 }  // namespace dayphoton::app

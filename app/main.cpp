@@ -30,6 +30,15 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--force", run.force, "Recompute every step even if cached");
   run_cmd->add_flag("-q,--quiet", run.quiet, "Print errors only");
 
+  SunOptions sun;
+  auto* sun_cmd = cli.add_subcommand("sun", "Sun position for every hour of a weather file (CSV)");
+  sun_cmd->add_option("weather", sun.weather_path, "Weather file (EPW)")->required();
+  sun_cmd->add_option("--solar-position", sun.solar_position,
+                      "spa (NREL SPA, default) or radiance (gendaymtx's formulas)")
+      ->check(CLI::IsMember({"spa", "radiance"}));
+  sun_cmd->add_flag("--no-refraction", sun.no_refraction, "SPA: geometric altitude (no refraction)");
+  sun_cmd->add_option("-o,--output", sun.output_path, "Output CSV (default: standard output)");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -46,6 +55,7 @@ int main(int argc, char** argv) {
   try {
     if (check_cmd->parsed()) return run_check(check, std::cout);
     if (run_cmd->parsed()) return run_run(run, std::cout, std::cerr);
+    if (sun_cmd->parsed()) return run_sun(sun, std::cout);
   } catch (const dayphoton::InputError& e) {
     std::cerr << e.what();
     return ExitInputError;

@@ -1,5 +1,6 @@
 #include "model_summary.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <ostream>
@@ -7,6 +8,8 @@
 
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/engine/scene.h"
+#include "dayphoton/weather/epw_reader.h"
 
 namespace dayphoton::app {
 
@@ -16,51 +19,6 @@ std::string compass_point(double azimuth_deg) {
   double a = std::fmod(azimuth_deg, 360.0);
   if (a < 0) a += 360.0;
   return points[static_cast<int>(std::floor(a / 22.5 + 0.5)) % 16];
-}
-
-ModelSummary summarize_model(const project::Project& proj) {
-  ModelSummary s;
-  s.project_path = proj.path;
-  s.site = proj.site;
-  s.scene = project::build_scene_description(proj);
-
-  s.materials.resize(s.scene.materials.size());
-  for (std::size_t i = 0; i < s.scene.materials.size(); ++i) {
-    s.materials[i].name = s.scene.materials[i].name;
-    s.materials[i].type = material_type_name(s.scene.materials[i].type);
-  }
-  s.surface_count = s.scene.surfaces.size();
-  for (const Surface& surface : s.scene.surfaces) {
-    const double area = polygon_area_m2(surface.vertices);
-    if (surface.material >= 0) {
-      s.materials[surface.material].surfaces += 1;
-      s.materials[surface.material].area_m2 += area;
-    }
-    s.triangle_count += surface.vertices.size() - 2;
-    if (surface.port) {
-      // Port normals face into the room; the window faces the opposite way.
-      const Vec3 outward = -polygon_normal(surface.vertices);
-      PortInfo port;
-      port.name = surface.name;
-      port.area_m2 = area;
-      port.azimuth_deg = rad_to_deg(std::atan2(outward.x, outward.y));
-      if (port.azimuth_deg < 0) port.azimuth_deg += 360.0;
-      port.tilt_deg = rad_to_deg(std::acos(std::clamp(outward.z, -1.0, 1.0)));
-      s.ports.push_back(port);
-    }
-  }
-  for (const SensorGrid& grid : s.scene.grids) {
-    GridInfo info;
-    info.name = grid.name;
-    info.sensors = grid.points.size();
-    info.columns = grid.columns;
-    info.rows = grid.rows;
-    info.spacing_m = grid.spacing_m;
-    info.planar = grid.planar;
-    info.plane_height_m = grid.plane_height_m;
-    s.grids.push_back(info);
-  }
-  return s;
 }
 
 namespace {
@@ -75,13 +33,91 @@ std::string latitude_text(double deg) {
 std::string longitude_text(double deg) {
   return fixed(std::abs(deg), 4) + (deg >= 0 ? " E" : " W");
 }
+std::string utc_offset_text(double hours) {
+  std::ostringstream s;
+  s << "UTC" << (hours >= 0 ? "+" : "") << hours;
+  return s.str();
+}
+
+std::vector<std::string> describe_weather(const project::Project& proj) {
+  const weather::EpwFile epw = weather::read_epw(proj.weather.path);
+  const weather::EpwLocation& loc = epw.header.location;
+  std::vector<std::string> lines;
+  lines.push_back(proj.weather.path_as_written + ": " + loc.city + ", " + loc.state + ", " + loc.country +
+                  " (WMO " + loc.wmo + ", " + loc.source + ")");
+  lines.push_back(latitude_text(loc.latitude_deg) + ", " + longitude_text(loc.longitude_east_deg) + ", " +
+                  utc_offset_text(loc.time_zone_h) + ", elevation " + fixed(loc.elevation_m, 1) + " m; " +
+                  std::to_string(epw.records.size()) + " hourly records" +
+                  (epw.leap_day_present ? " (with 29 February)" : ""));
+  for (const Diagnostic& w : epw.warnings) lines.push_back("warning: " + w.location.to_string() + ": " + w.message);
+  // A weather station far from the site is legal (the nearest station) but worth a look.
+  const double distance_deg = std::hypot(loc.latitude_deg - proj.site.latitude_deg,
+                                         loc.longitude_east_deg - proj.site.longitude_deg);
+  if (distance_deg > 1.0)
+    lines.push_back("note: the weather station is " + fixed(distance_deg, 1) +
+                    " degrees from the site; the sun is computed for the site");
+  if (std::abs(loc.time_zone_h - proj.site.time_zone_h) > 1e-9)
+    lines.push_back("note: the weather file's time zone (" + utc_offset_text(loc.time_zone_h) +
+                    ") differs from the site's (" + utc_offset_text(proj.site.time_zone_h) +
+                    "); records are read in the file's time zone");
+  return lines;
+}
 }  // namespace
+
+ModelSummary summarize_model(const project::Project& proj) {
+  ModelSummary s;
+  s.project_path = proj.path;
+  s.site = proj.site;
+  s.weather_lines = describe_weather(proj);
+  s.scene = project::build_scene_description(proj);
+  // Building the Embree scene runs the engine's own validation (degenerate triangles etc.).
+  const engine::Scene scene = engine::Scene::build(s.scene);
+
+  s.materials.resize(s.scene.materials.size());
+  for (std::size_t i = 0; i < s.scene.materials.size(); ++i) {
+    s.materials[i].name = s.scene.materials[i].name;
+    s.materials[i].type = material_type_name(s.scene.materials[i].type);
+  }
+  s.surface_count = s.scene.surfaces.size();
+  for (const Surface& surface : s.scene.surfaces) {
+    const double area = polygon_area_m2(surface.vertices);
+    if (surface.material >= 0) {
+      s.materials[surface.material].surfaces += 1;
+      s.materials[surface.material].area_m2 += area;
+    }
+    if (surface.port) {
+      // Port normals face into the room; the window faces the opposite way.
+      const Vec3 outward = -polygon_normal(surface.vertices);
+      PortInfo port;
+      port.name = surface.name;
+      port.area_m2 = area;
+      port.azimuth_deg = rad_to_deg(std::atan2(outward.x, outward.y));
+      if (port.azimuth_deg < 0) port.azimuth_deg += 360.0;
+      port.tilt_deg = rad_to_deg(std::acos(std::clamp(outward.z, -1.0, 1.0)));
+      s.ports.push_back(port);
+    }
+  }
+  s.triangle_count = scene.triangle_count();
+  for (const SensorGrid& grid : s.scene.grids) {
+    GridInfo info;
+    info.name = grid.name;
+    info.sensors = grid.points.size();
+    info.columns = grid.columns;
+    info.rows = grid.rows;
+    info.spacing_m = grid.spacing_m;
+    info.planar = grid.planar;
+    info.plane_height_m = grid.plane_height_m;
+    s.grids.push_back(info);
+  }
+  return s;
+}
+
 
 void print_model_summary(const ModelSummary& s, std::ostream& out) {
   out << "project  " << s.project_path << '\n';
   out << "site     " << (s.site.name.empty() ? std::string("(unnamed)") : s.site.name) << ": "
       << latitude_text(s.site.latitude_deg) << ", " << longitude_text(s.site.longitude_deg)
-      << ", UTC" << (s.site.time_zone_h >= 0 ? "+" : "") << s.site.time_zone_h << ", elevation "
+      << ", " << utc_offset_text(s.site.time_zone_h) << ", elevation "
       << fixed(s.site.elevation_m, 1) << " m, north " << fixed(s.site.north_deg, 2) << " deg";
   if (s.site.utm_zone)
     out << " + meridian convergence " << fixed(s.site.meridian_convergence_deg, 4) << " deg (UTM "

@@ -1,0 +1,55 @@
+// `dayphoton sun WEATHER.epw`: the sun position for every record of a weather file, at the
+// record's mid-hour in local standard time, for the site of the file's LOCATION header.
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "commands.h"
+#include "dayphoton/core/atomic_file.h"
+#include "dayphoton/core/units.h"
+#include "dayphoton/sky/solar_position.h"
+#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/site_clock.h"
+
+namespace dayphoton::app {
+
+sky::SolarPositionAlgorithm parse_solar_position(const std::string& name) {
+  if (name == "spa") return sky::SolarPositionAlgorithm::Spa;
+  if (name == "radiance") return sky::SolarPositionAlgorithm::Radiance;
+  throw std::invalid_argument("unknown solar position algorithm '" + name + "' (spa or radiance)");
+}
+
+sky::SolarSite solar_site_of(const weather::EpwFile& epw) {
+  sky::SolarSite site;
+  site.latitude_deg = epw.header.location.latitude_deg;
+  site.longitude_deg = epw.header.location.longitude_east_deg;
+  site.time_zone_h = epw.header.location.time_zone_h;
+  site.elevation_m = epw.header.location.elevation_m;
+  return site;
+}
+
+int run_sun(const SunOptions& options, std::ostream& out) {
+  const weather::EpwFile epw = weather::read_epw(options.weather_path);
+  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
+  const sky::SolarSite site = solar_site_of(epw);
+  sky::SolarPositionOptions solar;
+  solar.algorithm = parse_solar_position(options.solar_position);
+  solar.apply_refraction = solar.algorithm == sky::SolarPositionAlgorithm::Spa && !options.no_refraction;
+  solar.radiance_series_has_leap_day = epw.leap_day_present;
+
+  std::ostringstream table;
+  table << "month,day,hour,altitude_deg,azimuth_deg,sun_up\n";
+  char line[128];
+  for (const weather::TimeStep& step : clock.steps(epw.records)) {
+    const sky::SolarPosition p =
+        sky::solar_position(site, sky::SolarTime{clock.year(), step.month, step.day, step.hour_lst}, solar);
+    std::snprintf(line, sizeof line, "%d,%d,%.1f,%.4f,%.4f,%d\n", step.month, step.day, step.hour_lst,
+                  rad_to_deg(p.altitude_rad), rad_to_deg(p.azimuth_rad), p.sun_up ? 1 : 0);
+    table << line;
+  }
+  if (options.output_path.empty()) out << table.str();
+  else write_file_atomically(options.output_path, table.str());
+  return ExitOk;
+}
+
+}  // namespace dayphoton::app
