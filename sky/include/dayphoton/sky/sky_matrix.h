@@ -1,0 +1,95 @@
+// Sky vectors and annual sky matrices in a patch basis (RADIANCE row order: bin 0 = ground,
+// then the Tregenza/Reinhart sky patches), one column per weather record, RGB radiance in
+// W/(sr m^2) ("visible" units: luminance / 179), so that E = C . S with a daylight-coefficient
+// matrix C, exactly as dctimestep computes it. Sources: ../shared/facts/sky-and-metrics.md
+// sections 2.4, 2.6, 4.3, 4.4 and 6.1 (what gendaymtx does, restated from its source).
+//
+// Two ways to turn a sky into patch values:
+//  - PatchValue::Mean (dayphoton's default): the mean radiance over each patch, by a
+//    stratified midpoint rule in solid angle, of the continuous Perez sky, then scaled so
+//    that sum(L_i x projected solid angle_i) equals the Perez diffuse horizontal illuminance
+//    of the record (the discrete sky keeps the measured diffuse light exactly; the scale
+//    corrects the in-patch variation of L with altitude, a few % at low suns for Tregenza).
+//  - PatchValue::Centre (gendaymtx compatibility): the Perez relative luminance at each patch
+//    centre, normalised by the discrete sum of lv sin(h) Omega over the patches (gendaymtx's
+//    rule), times the gendaymtx default sky colour.
+// The sun (direct normal illuminance from the Perez 1990 direct efficacy) is either spread
+// into the 4 nearest patches (gendaymtx default), left out (gendaymtx -s), kept alone
+// (gendaymtx -d), and is always reported as a list of SunRecords for engines that treat the
+// sun as its own source.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/core/vec3.h"
+#include "dayphoton/sky/patch_basis.h"
+#include "dayphoton/sky/sky_model.h"
+#include "dayphoton/sky/solar_position.h"
+#include "dayphoton/weather/epw_reader.h"
+
+namespace dayphoton::sky {
+
+enum class SunInMatrix {
+  Spread,  ///< sun added to the 4 nearest sky patches, conserving direct normal illuminance
+  None,    ///< sky and ground only (gendaymtx -s)
+  Only,    ///< sun only, sky and ground zero (gendaymtx -d)
+};
+
+enum class PatchValue { Mean, Centre };
+
+/// gendaymtx's default sky colour (-c 0.960 1.004 1.118), applied to sky patches only.
+constexpr Vec3 GendaymtxSkyColour{0.960, 1.004, 1.118};
+
+struct SkyMatrixOptions {
+  SunInMatrix sun = SunInMatrix::Spread;
+  PatchValue patch_value = PatchValue::Mean;
+  SolarPositionOptions solar;           ///< algorithm (SPA or RADIANCE's formulas), refraction
+  double ground_reflectance = 0.2;      ///< grey ground, RADIANCE default
+  Vec3 sky_colour{1, 1, 1};             ///< multiplies sky patches (not ground, not sun)
+  /// Dew point from the weather file (falls back to 11 C where missing) or gendaymtx's fixed 11 C.
+  bool dew_point_from_weather = true;
+  /// Day of year for the extraterrestrial irradiance: RADIANCE's (ignores 29 Feb) or the calendar's.
+  bool radiance_day_of_year = false;
+  int mean_samples_per_axis = 6;        ///< PatchValue::Mean: n x n midpoints per patch
+
+  /// Everything gendaymtx -m MF does by default: RADIANCE sun formulas, centre values, sky
+  /// colour, 11 C dew point, RADIANCE day of year.
+  static SkyMatrixOptions gendaymtx_compatible();
+};
+
+/// The sun of one time step, for engines with their own sun sources.
+struct SunRecord {
+  std::size_t step = 0;          ///< column of the matrix
+  Vec3 direction;                ///< unit vector to the sun
+  double direct_normal_illuminance_lux = 0;
+  /// Radiance of a 0.533 degree disc giving that illuminance, W/(sr m^2) visible units.
+  double disc_radiance = 0;
+};
+
+struct SkyMatrix {
+  RadianceMatrix matrix;            ///< bins x steps x RGB
+  std::vector<SunRecord> suns;      ///< steps with direct sun (sun up, direct illuminance > 0)
+  std::size_t sun_below_horizon_with_direct = 0;  ///< records gendaymtx warns about
+};
+
+/// Site of the sky computation (position, time zone) from an EPW header.
+SolarSite solar_site_of(const weather::EpwFile& epw);
+
+/// The annual sky matrix of a weather file. Throws InputError naming the record and field when
+/// a record needed for a daytime sky lacks its direct normal or diffuse horizontal irradiance.
+SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, const PatchBasis& basis,
+                           const SkyMatrixOptions& options);
+
+/// A sky vector (bins x 1 x RGB) for one sky model with a uniform ground of the given radiance.
+RadianceMatrix sky_vector(const SkyModel& sky, const PatchBasis& basis, const Vec3& ground_radiance_rgb,
+                          PatchValue patch_value = PatchValue::Mean, int mean_samples_per_axis = 6);
+
+/// Horizontal illuminance (lux) of a sky column: sum over sky patches of L sin(h_centre) Omega x 179,
+/// with L the RADIANCE luminance of the RGB triple. Ground excluded.
+double column_horizontal_illuminance_lux(const RadianceMatrix& matrix, std::size_t column,
+                                         const PatchBasis& basis);
+
+}  // namespace dayphoton::sky

@@ -1,0 +1,257 @@
+// Annual sky matrices and sky vectors; see sky_matrix.h. gendaymtx behaviour restated from
+// ../shared/facts/sky-and-metrics.md sections 2.4 (normalisation, ground), 2.6 (edge cases),
+// 4.4 (the sun spread over the 4 nearest patches with weights 1/(1.002 - cos)).
+#include "dayphoton/sky/sky_matrix.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/units.h"
+#include "dayphoton/sky/perez.h"
+#include "dayphoton/weather/site_clock.h"
+
+namespace dayphoton::sky {
+
+namespace {
+
+/// Solid angle of the 0.533 degree sun disc (sr).
+const double SunDiscSolidAngle_sr = 2.0 * Pi * (1.0 - std::cos(SunHalfAngle_rad));
+
+/// Mean of f over a bin by an n x n midpoint rule in the bin's equal-solid-angle parameters.
+template <typename F>
+double bin_mean(const PatchBasis& basis, int bin, int n, const F& f) {
+  double sum = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) sum += f(basis.sample_direction(bin, (i + 0.5) / n, (j + 0.5) / n));
+  return sum / (n * n);
+}
+
+/// Integral of cos(theta) over a sky bin (sr): dphi (sin^2 h_max - sin^2 h_min) / 2.
+double projected_solid_angle_sr(const PatchBasis& basis, int bin) {
+  const PatchBounds b = basis.bounds(bin);
+  const double s0 = std::sin(b.altitude_min_rad), s1 = std::sin(b.altitude_max_rad);
+  return (b.azimuth_max_rad - b.azimuth_min_rad) * (s1 * s1 - s0 * s0) / 2.0;
+}
+
+/// Add the sun to the 4 sky patches nearest to it, as gendaymtx does: weights
+/// w = 1/(1.002 - cos angle), patch radiance += w/sum(w) * E_nv / (179 Omega).
+void spread_sun(const PatchBasis& basis, const Vec3& sun, double direct_normal_lux, RadianceMatrix& m,
+                std::size_t column) {
+  constexpr int N = 4;
+  std::array<int, N> best{};
+  std::array<double, N> best_cos{};
+  best.fill(-1);
+  best_cos.fill(-2.0);
+  for (int bin = 1; bin < basis.bin_count(); ++bin) {
+    const double c = dot(basis.centre(bin), sun);
+    for (int k = 0; k < N; ++k)
+      if (c > best_cos[k]) {
+        for (int j = N - 1; j > k; --j) {
+          best[j] = best[j - 1];
+          best_cos[j] = best_cos[j - 1];
+        }
+        best[k] = bin;
+        best_cos[k] = c;
+        break;
+      }
+  }
+  double weight_sum = 0;
+  for (int k = 0; k < N; ++k) weight_sum += 1.0 / (1.002 - best_cos[k]);
+  for (int k = 0; k < N; ++k) {
+    const double w = 1.0 / (1.002 - best_cos[k]) / weight_sum;
+    const double add = w * direct_normal_lux / (RadianceWhiteEfficacy_lm_per_W * basis.solid_angle_sr(best[k]));
+    for (int c = 0; c < 3; ++c) m.at(best[k], column, c) += static_cast<float>(add);
+  }
+}
+
+void set_rgb(RadianceMatrix& m, std::size_t row, std::size_t column, const Vec3& rgb) {
+  for (int c = 0; c < 3; ++c) m.at(row, column, c) = static_cast<float>(rgb[c]);
+}
+
+}  // namespace
+
+SkyMatrixOptions SkyMatrixOptions::gendaymtx_compatible() {
+  SkyMatrixOptions o;
+  o.patch_value = PatchValue::Centre;
+  o.solar.algorithm = SolarPositionAlgorithm::Radiance;
+  o.sky_colour = GendaymtxSkyColour;
+  o.dew_point_from_weather = false;
+  o.radiance_day_of_year = true;
+  return o;
+}
+
+SolarSite solar_site_of(const weather::EpwFile& epw) {
+  SolarSite site;
+  site.latitude_deg = epw.header.location.latitude_deg;
+  site.longitude_deg = epw.header.location.longitude_east_deg;
+  site.time_zone_h = epw.header.location.time_zone_h;
+  site.elevation_m = epw.header.location.elevation_m;
+  return site;
+}
+
+SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, const PatchBasis& basis,
+                           const SkyMatrixOptions& options) {
+  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
+  const std::vector<weather::TimeStep> steps = clock.steps(epw.records);
+  const std::size_t n_steps = steps.size();
+  const int n_bins = basis.bin_count();
+
+  // Missing irradiance makes a daytime sky impossible: report every such record, located.
+  Diagnostics diagnostics;
+  for (const weather::WeatherRecord& r : epw.records) {
+    if (!r.direct_normal_w_m2)
+      diagnostics.error(weather::epw_field_location(epw, r, weather::epw_field::DirectNormalRadiation),
+                        "field 15 (direct normal radiation) is missing; the sky needs it");
+    if (!r.diffuse_horizontal_w_m2)
+      diagnostics.error(weather::epw_field_location(epw, r, weather::epw_field::DiffuseHorizontalRadiation),
+                        "field 16 (diffuse horizontal radiation) is missing; the sky needs it");
+  }
+  diagnostics.throw_if_errors();
+
+  SolarPositionOptions solar = options.solar;
+  solar.radiance_series_has_leap_day = epw.leap_day_present;
+
+  SkyMatrix result;
+  result.matrix = RadianceMatrix(static_cast<std::size_t>(n_bins), n_steps, 3);
+  std::vector<std::optional<SunRecord>> suns(n_steps);
+  std::vector<char> below_with_direct(n_steps, 0);
+
+  // Patch centres and projected solid angles, shared by every step.
+  std::vector<double> centre_zenith(n_bins), centre_weight(n_bins), projected_solid_angle(n_bins);
+  for (int bin = 1; bin < n_bins; ++bin) {
+    projected_solid_angle[bin] = projected_solid_angle_sr(basis, bin);
+    const Vec3 c = basis.centre(bin);
+    centre_zenith[bin] = std::acos(std::clamp(c.z, -1.0, 1.0));
+    centre_weight[bin] = c.z * basis.solid_angle_sr(bin);  // sin(h) Omega, gendaymtx's divisor
+  }
+
+  tbb::parallel_for(std::size_t(0), n_steps, [&](std::size_t t) {
+    const weather::WeatherRecord& record = epw.records[t];
+    const weather::TimeStep& step = steps[t];
+    const double dni = *record.direct_normal_w_m2;
+    const double dhi = *record.diffuse_horizontal_w_m2;
+    if (dni + dhi <= 1e-4) return;  // night: the whole column stays zero (gendaymtx)
+
+    const SolarPosition sun =
+        solar_position(site, SolarTime{clock.year(), step.month, step.day, step.hour_lst}, solar);
+    PerezInputs inputs;
+    inputs.direct_normal_irradiance_W_m2 = dni;
+    inputs.diffuse_horizontal_irradiance_W_m2 = dhi;
+    inputs.sun_direction = sun.direction;
+    inputs.day_of_year = options.radiance_day_of_year
+                             ? radiance_day_of_year(step.month, step.day, epw.leap_day_present)
+                             : step.day_of_year;
+    if (options.dew_point_from_weather && record.dew_point_c) inputs.dew_point_C = *record.dew_point_c;
+
+    const double sun_lux_normal = [&] {
+      const PerezState s = perez_state(inputs);
+      return s.direct_normal_illuminance_lux;
+    }();
+    const bool with_sky = options.sun != SunInMatrix::Only;
+    double sky_horizontal_lux = 0;
+
+    if (with_sky) {
+      if (options.patch_value == PatchValue::Centre) {
+        const PerezState state = perez_state(inputs);
+        std::vector<double> lv(n_bins, 0.0);
+        double s = 0;
+        for (int bin = 1; bin < n_bins; ++bin) {
+          const double gamma = std::acos(std::clamp(dot(basis.centre(bin), state.model_sun_direction), -1.0, 1.0));
+          lv[bin] = perez_relative_luminance(state, centre_zenith[bin], gamma);
+          s += lv[bin] * centre_weight[bin];
+        }
+        if (s <= 1e-9) {  // lv vanished everywhere: uniform sky, as gendaymtx
+          std::fill(lv.begin() + 1, lv.end(), 1.0);
+          s = Pi;
+        }
+        sky_horizontal_lux = state.diffuse_horizontal_illuminance_lux;
+        for (int bin = 1; bin < n_bins; ++bin) {
+          const double value = lv[bin] * sky_horizontal_lux / (s * RadianceWhiteEfficacy_lm_per_W);
+          set_rgb(result.matrix, bin, t, options.sky_colour * value);
+        }
+      } else {
+        const PerezSky perez = make_perez_sky(inputs);
+        sky_horizontal_lux = perez.state.diffuse_horizontal_illuminance_lux;
+        const int n = options.mean_samples_per_axis;
+        std::vector<double> luminance(n_bins, 0.0);
+        double horizontal = 0;
+        for (int bin = 1; bin < n_bins; ++bin) {
+          luminance[bin] = bin_mean(basis, bin, n, [&](const Vec3& d) { return perez.sky->luminance_cd_m2(d); });
+          horizontal += luminance[bin] * projected_solid_angle[bin];
+        }
+        // A patch mean times the patch's projected solid angle is not the patch's horizontal
+        // illuminance when L varies with altitude inside the patch (low suns, horizon bands:
+        // up to a few % for Tregenza). Rescale so that the discrete sky reproduces the measured
+        // diffuse horizontal illuminance exactly, as gendaymtx's discrete normalisation does.
+        const double scale = horizontal > 0 ? sky_horizontal_lux / horizontal : 0.0;
+        for (int bin = 1; bin < n_bins; ++bin)
+          set_rgb(result.matrix, bin, t,
+                  options.sky_colour * (scale * luminance[bin] / RadianceWhiteEfficacy_lm_per_W));
+      }
+      const Vec3 ground = ground_radiance_rgb(Vec3{1, 1, 1} * options.ground_reflectance, sky_horizontal_lux,
+                                              sun_lux_normal, sun.direction);
+      set_rgb(result.matrix, 0, t, ground);
+    }
+
+    if (sun_lux_normal > 0) {
+      if (sun.direction.z <= 0) below_with_direct[t] = dni > 20.0;
+      if (options.sun != SunInMatrix::None) spread_sun(basis, sun.direction, sun_lux_normal, result.matrix, t);
+      if (sun.disc_visible) {
+        SunRecord record_out;
+        record_out.step = t;
+        record_out.direction = sun.direction;
+        record_out.direct_normal_illuminance_lux = sun_lux_normal;
+        record_out.disc_radiance = sun_lux_normal / (RadianceWhiteEfficacy_lm_per_W * SunDiscSolidAngle_sr);
+        suns[t] = record_out;
+      }
+    }
+  });
+
+  for (const auto& s : suns)
+    if (s) result.suns.push_back(*s);
+  result.sun_below_horizon_with_direct =
+      static_cast<std::size_t>(std::count(below_with_direct.begin(), below_with_direct.end(), 1));
+  return result;
+}
+
+RadianceMatrix sky_vector(const SkyModel& sky, const PatchBasis& basis, const Vec3& ground_radiance,
+                          PatchValue patch_value, int mean_samples_per_axis) {
+  RadianceMatrix m(static_cast<std::size_t>(basis.bin_count()), 1, 3);
+  set_rgb(m, 0, 0, ground_radiance);
+  std::vector<Vec3> values(basis.bin_count());
+  double horizontal = 0;
+  for (int bin = 1; bin < basis.bin_count(); ++bin) {
+    if (patch_value == PatchValue::Centre) {
+      values[bin] = sky.radiance_rgb(basis.centre(bin));
+      horizontal += rgb_to_photometric(values[bin]) * basis.centre(bin).z * basis.solid_angle_sr(bin);
+    } else {
+      const int n = mean_samples_per_axis;
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) values[bin] += sky.radiance_rgb(basis.sample_direction(bin, (i + 0.5) / n, (j + 0.5) / n));
+      values[bin] = values[bin] / double(n * n);
+      horizontal += rgb_to_photometric(values[bin]) * projected_solid_angle_sr(basis, bin);
+    }
+  }
+  // Same discrete normalisation as the annual matrices: the vector keeps the sky's horizontal
+  // illuminance exactly (Centre: gendaymtx's sin(h) Omega weights; Mean: projected solid angles).
+  const double target = sky.horizontal_illuminance_lux();
+  const double scale = horizontal > 0 ? target / horizontal : 0.0;
+  for (int bin = 1; bin < basis.bin_count(); ++bin) set_rgb(m, bin, 0, values[bin] * scale);
+  return m;
+}
+
+double column_horizontal_illuminance_lux(const RadianceMatrix& matrix, std::size_t column,
+                                         const PatchBasis& basis) {
+  double e = 0;
+  for (int bin = 1; bin < basis.bin_count(); ++bin) {
+    const Vec3 rgb{matrix.at(bin, column, 0), matrix.at(bin, column, 1), matrix.at(bin, column, 2)};
+    e += rgb_to_photometric(rgb) * projected_solid_angle_sr(basis, bin);
+  }
+  return e;
+}
+
+}  // namespace dayphoton::sky

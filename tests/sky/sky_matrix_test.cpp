@@ -1,0 +1,181 @@
+// Annual sky matrices: gendaymtx compatibility bin by bin and hour by hour against RADIANCE's
+// own output for the Oakland EPW (../shared/refdata/results/c_annual), normalisation of every
+// hour to the Perez diffuse illuminance, and sun conservation.
+#include "dayphoton/sky/sky_matrix.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "dayphoton/core/units.h"
+#include "dayphoton/sky/perez.h"
+#include "dayphoton/weather/site_clock.h"
+
+using namespace dayphoton;
+using namespace dayphoton::sky;
+
+namespace {
+
+const std::string OaklandEpw =
+    std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
+const std::string ReferenceDir = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/results/c_annual";
+
+RadianceMatrix read_gz_matrix(const std::string& path) {
+  FILE* pipe = popen(("gzip -dc '" + path + "'").c_str(), "r");
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) text.append(buffer, n);
+  pclose(pipe);
+  std::istringstream in(text);
+  return RadianceMatrix::read(in, path);
+}
+
+struct Comparison {
+  std::size_t compared = 0, failed = 0;
+  double max_relative = 0, sum_squared = 0;
+  std::string worst;
+};
+
+/// Relative difference per element whose reference luminance is above 1 % of its hour's
+/// maximum (the acceptance rule), luminance of the RGB triple.
+Comparison compare(const RadianceMatrix& ours, const RadianceMatrix& ref, double tolerance) {
+  Comparison c;
+  for (std::size_t t = 0; t < ref.columns(); ++t) {
+    double hour_max = 0;
+    for (std::size_t b = 0; b < ref.rows(); ++b)
+      hour_max = std::max(hour_max, rgb_to_photometric({ref.at(b, t, 0), ref.at(b, t, 1), ref.at(b, t, 2)}));
+    for (std::size_t b = 0; b < ref.rows(); ++b) {
+      const double r = rgb_to_photometric({ref.at(b, t, 0), ref.at(b, t, 1), ref.at(b, t, 2)});
+      if (r <= 0.01 * hour_max || r <= 0) continue;
+      const double o = rgb_to_photometric({ours.at(b, t, 0), ours.at(b, t, 1), ours.at(b, t, 2)});
+      const double rel = std::abs(o - r) / r;
+      ++c.compared;
+      c.sum_squared += rel * rel;
+      if (rel > tolerance) ++c.failed;
+      if (rel > c.max_relative) {
+        c.max_relative = rel;
+        c.worst = "bin " + std::to_string(b) + " step " + std::to_string(t) + ": ours " + std::to_string(o) +
+                  " ref " + std::to_string(r);
+      }
+    }
+  }
+  return c;
+}
+
+class GendaymtxCompatibility : public ::testing::TestWithParam<std::pair<SunInMatrix, const char*>> {};
+
+}  // namespace
+
+TEST_P(GendaymtxCompatibility, MatchesRadianceBinByBinHourByHour) {
+  const std::string ref_path = ReferenceDir + "/" + GetParam().second;
+  if (!std::filesystem::exists(ref_path)) GTEST_SKIP() << "reference data not found: " << ref_path;
+  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
+  SkyMatrixOptions options = SkyMatrixOptions::gendaymtx_compatible();
+  options.sun = GetParam().first;
+  const SkyMatrix ours = build_sky_matrix(epw, solar_site_of(epw), PatchBasis::tregenza(), options);
+  const RadianceMatrix ref = read_gz_matrix(ref_path);
+  ASSERT_EQ(ours.matrix.rows(), ref.rows());
+  ASSERT_EQ(ours.matrix.columns(), ref.columns());
+
+  // gendaymtx prints 3 significant digits (relative rounding up to 0.5 %); the issue's
+  // acceptance is 1 % on every element above 1 % of its hour's maximum.
+  const Comparison c = compare(ours.matrix, ref, 0.01);
+  std::printf("[ gendaymtx %s ] %zu elements compared, max relative difference %.4f %% (%s), RMS %.4f %%\n",
+              GetParam().second, c.compared, 100 * c.max_relative, c.worst.c_str(),
+              100 * std::sqrt(c.sum_squared / std::max<std::size_t>(1, c.compared)));
+  EXPECT_GE(c.compared, 3600u * 4);  // at least the 4 sun patches of every sun hour
+  EXPECT_EQ(c.failed, 0u) << "worst: " << c.worst;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Oakland, GendaymtxCompatibility,
+    ::testing::Values(std::make_pair(SunInMatrix::Spread, "oakland_sky_m1.mtx.gz"),
+                      std::make_pair(SunInMatrix::None, "oakland_sky_m1_skyonly.mtx.gz"),
+                      std::make_pair(SunInMatrix::Only, "oakland_sky_m1_sunonly.mtx.gz")));
+
+TEST(SkyMatrix, EveryHourIsNormalisedToThePerezDiffuseIlluminance) {
+  // Every daytime column, summed with the exact projected solid angle of each patch, must give
+  // E_d x eta_diffuse of the hour, recomputed here from an independent sun position and Perez
+  // state: the discrete normalisation makes this exact up to float storage (1e-6) -- a wrong
+  // record/column pairing, sun, day of year or dew point would show as percent-level errors.
+  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
+  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
+  const auto steps = clock.steps(epw.records);
+  const SolarSite site = solar_site_of(epw);
+  SkyMatrixOptions options;
+  options.sun = SunInMatrix::None;
+  for (const PatchBasis& basis : {PatchBasis::tregenza(), PatchBasis::reinhart(2)}) {
+    const SkyMatrix sky = build_sky_matrix(epw, site, basis, options);
+    double worst = 0, sum_squared = 0;
+    std::size_t daytime = 0;
+    for (std::size_t t = 0; t < epw.records.size(); ++t) {
+      const double dhi = *epw.records[t].diffuse_horizontal_w_m2;
+      const double dni = *epw.records[t].direct_normal_w_m2;
+      if (dhi + dni <= 1e-4 || dhi <= 0) continue;
+      PerezInputs in;
+      in.direct_normal_irradiance_W_m2 = dni;
+      in.diffuse_horizontal_irradiance_W_m2 = dhi;
+      in.sun_direction =
+          solar_position(site, SolarTime{clock.year(), steps[t].month, steps[t].day, steps[t].hour_lst}).direction;
+      in.day_of_year = steps[t].day_of_year;
+      in.dew_point_C = epw.records[t].dew_point_c;
+      const double target = perez_state(in).diffuse_horizontal_illuminance_lux;
+      const double column = column_horizontal_illuminance_lux(sky.matrix, t, basis);
+      const double rel = std::abs(column - target) / target;
+      worst = std::max(worst, rel);
+      sum_squared += rel * rel;
+      ++daytime;
+      EXPECT_LT(rel, 1e-5) << "step " << t << ": " << column << " lux vs " << target;
+    }
+    std::printf("[ MF %d ] %zu daytime hours: horizontal illuminance vs Perez diffuse, max %.4f %%, RMS %.4f %%\n",
+                basis.multiplication_factor(), daytime, 100 * worst, 100 * std::sqrt(sum_squared / daytime));
+    EXPECT_GT(daytime, 4000u);
+  }
+}
+
+TEST(SkyMatrix, SpreadSunConservesDirectNormalIlluminance) {
+  // gendaymtx's rule: sum over patches of Delta L Omega x 179 = E_n,v for every sun hour.
+  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
+  SkyMatrixOptions options;
+  options.sun = SunInMatrix::Only;
+  const PatchBasis basis = PatchBasis::reinhart(2);
+  const SkyMatrix sky = build_sky_matrix(epw, solar_site_of(epw), basis, options);
+  ASSERT_GT(sky.suns.size(), 3000u);
+  for (const SunRecord& sun : sky.suns) {
+    double sum = 0;
+    for (int b = 0; b < basis.bin_count(); ++b)
+      sum += rgb_to_photometric({sky.matrix.at(b, sun.step, 0), sky.matrix.at(b, sun.step, 1),
+                                 sky.matrix.at(b, sun.step, 2)}) * basis.solid_angle_sr(b);
+    // float storage: 1e-6 relative per element.
+    EXPECT_NEAR(sum, sun.direct_normal_illuminance_lux, 1e-5 * sun.direct_normal_illuminance_lux) << sun.step;
+    // The disc radiance reproduces the same illuminance over the 0.533 degree disc.
+    const double disc_sr = 2 * Pi * (1 - std::cos(SunHalfAngle_rad));
+    EXPECT_NEAR(sun.disc_radiance * 179 * disc_sr, sun.direct_normal_illuminance_lux,
+                1e-9 * sun.direct_normal_illuminance_lux);
+  }
+}
+
+TEST(SkyVector, CieOvercastSkyVectorKeepsItsHorizontalIlluminance) {
+  // E_h = 7 pi / 9 Lz for the CIE overcast sky (closed form). The vector's patches, weighted
+  // by their projected solid angles, must give it back (float storage: 1e-6), and the shape
+  // must stay the overcast one: patch ratios equal the (1 + 2 cos theta)/3 law at the patch
+  // centres to the in-patch averaging error (a patch 12 degrees high: below 1 %).
+  const double lz = 1000;
+  const auto sky = make_cie_overcast_sky(SkyScale::zenith_luminance_cd_m2(lz));
+  ASSERT_NEAR(sky->horizontal_illuminance_lux(), 7 * Pi / 9 * lz, 1e-4 * lz);
+  for (const PatchBasis& basis : {PatchBasis::tregenza(), PatchBasis::reinhart(4)}) {
+    const RadianceMatrix v = sky_vector(*sky, basis, Vec3{0, 0, 0});
+    EXPECT_NEAR(column_horizontal_illuminance_lux(v, 0, basis), 7 * Pi / 9 * lz, 1e-5 * lz);
+    const int zenith = basis.bin_count() - 1;
+    const double l_zenith = rgb_to_photometric({v.at(zenith, 0, 0), v.at(zenith, 0, 1), v.at(zenith, 0, 2)});
+    for (int b = 1; b < basis.bin_count(); ++b) {
+      const double l = rgb_to_photometric({v.at(b, 0, 0), v.at(b, 0, 1), v.at(b, 0, 2)});
+      const double expected_ratio = (1 + 2 * basis.centre(b).z) / 3;
+      EXPECT_NEAR(l / l_zenith, expected_ratio, 0.01 * expected_ratio) << "bin " << b;
+    }
+  }
+}
