@@ -6,7 +6,7 @@
 // the published numbers). The integrand L cos(theta) sin(theta) is smooth in (theta, phi)
 // except where the circumsolar term exp(d * gamma) has a cone-shaped kink at the sun; with
 // breakpoints at the sun's zenith angle and azimuth the kink sits on interval ends, where
-// the adaptive splitting resolves it. Error estimate |K15 - G7| per interval (conservative).
+// the adaptive splitting resolves it. Error estimate per interval as QUADPACK's QK15.
 //
 // Ground: gendaymtx.c ComputeSky ("parr[0] = diff_illum; if (altitude > 0) parr[0] +=
 // dir_illum * sin(altitude); ... *= 1/PI/WHTEFFICACY; multcolor(grefl)"), restated in
@@ -62,16 +62,30 @@ template <typename F>
 Piece gauss_kronrod_15(const F& f, double a, double b) {
   const double centre = 0.5 * (a + b);
   const double half = 0.5 * (b - a);
-  const double fc = f(centre);
-  double kronrod = fc * Wgk[7];
-  double gauss = fc * Wg[3];
+  double fv[15];
+  fv[7] = f(centre);
   for (int j = 0; j < 7; ++j) {
     const double dx = half * Xgk[static_cast<std::size_t>(j)];
-    const double sum = f(centre - dx) + f(centre + dx);
+    fv[j] = f(centre - dx);
+    fv[14 - j] = f(centre + dx);
+  }
+  double kronrod = fv[7] * Wgk[7];
+  double gauss = fv[7] * Wg[3];
+  for (int j = 0; j < 7; ++j) {
+    const double sum = fv[j] + fv[14 - j];
     kronrod += Wgk[static_cast<std::size_t>(j)] * sum;
     if (j % 2 == 1) gauss += Wg[static_cast<std::size_t>(j / 2)] * sum;
   }
-  return {a, b, kronrod * half, std::abs((kronrod - gauss) * half)};
+  // QUADPACK's error estimate: |K - G| scaled by the variation of f on the interval
+  // (resasc = integral of |f - mean|), err = resasc * min(1, (200 |K - G| / resasc)^1.5).
+  const double mean = 0.5 * kronrod;
+  double resasc = Wgk[7] * std::abs(fv[7] - mean);
+  for (int j = 0; j < 7; ++j)
+    resasc += Wgk[static_cast<std::size_t>(j)] * (std::abs(fv[j] - mean) + std::abs(fv[14 - j] - mean));
+  double error = std::abs((kronrod - gauss) * half);
+  resasc *= std::abs(half);
+  if (resasc != 0 && error != 0) error = resasc * std::min(1.0, std::pow(200 * error / resasc, 1.5));
+  return {a, b, kronrod * half, error};
 }
 
 /// Globally adaptive integration over the union of [breaks[i], breaks[i+1]]: split the
