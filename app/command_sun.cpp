@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/solar_position.h"
 #include "dayphoton/weather/epw_reader.h"
 #include "dayphoton/weather/site_clock.h"
@@ -19,19 +20,10 @@ sky::SolarPositionAlgorithm parse_solar_position(const std::string& name) {
   throw std::invalid_argument("unknown solar position algorithm '" + name + "' (spa or radiance)");
 }
 
-sky::SolarSite solar_site_of(const weather::EpwFile& epw) {
-  sky::SolarSite site;
-  site.latitude_deg = epw.header.location.latitude_deg;
-  site.longitude_deg = epw.header.location.longitude_east_deg;
-  site.time_zone_h = epw.header.location.time_zone_h;
-  site.elevation_m = epw.header.location.elevation_m;
-  return site;
-}
-
 int run_sun(const SunOptions& options, std::ostream& out) {
   const weather::EpwFile epw = weather::read_epw(options.weather_path);
   const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
-  const sky::SolarSite site = solar_site_of(epw);
+  const sky::SolarSite site = sky::solar_site_of(epw);
   sky::SolarPositionOptions solar;
   solar.algorithm = parse_solar_position(options.solar_position);
   solar.apply_refraction = solar.algorithm == sky::SolarPositionAlgorithm::Spa && !options.no_refraction;

@@ -39,4 +39,18 @@ struct SunOptions {
 };
 int run_sun(const SunOptions& options, std::ostream& out);
 
+struct SkyOptions {
+  std::string weather_path;       ///< EPW for an annual matrix
+  std::string cie;                ///< or a CIE sky: "1".."15", "overcast", "uniform"
+  double sun_altitude_deg = 45, sun_azimuth_deg = 180;  ///< for CIE general skies
+  double horizontal_illuminance_lux = 10000;            ///< for CIE skies
+  std::string basis = "tregenza";
+  std::string sun = "spread";
+  std::string solar_position = "spa";
+  double ground_reflectance = 0.2;
+  std::string format = "ascii";
+  std::string output_path;
+};
+int run_sky(const SkyOptions& options, const std::string& command_line, std::ostream& out);
+
 }  // namespace dayphoton::app

@@ -39,6 +39,29 @@ int main(int argc, char** argv) {
   sun_cmd->add_flag("--no-refraction", sun.no_refraction, "SPA: geometric altitude (no refraction)");
   sun_cmd->add_option("-o,--output", sun.output_path, "Output CSV (default: standard output)");
 
+  SkyOptions sky;
+  auto* sky_cmd = cli.add_subcommand(
+      "sky", "Annual sky matrix of a weather file, or the sky vector of a CIE sky (RADIANCE matrix format)");
+  sky_cmd->add_option("weather", sky.weather_path, "Weather file (EPW)");
+  sky_cmd->add_option("--cie", sky.cie, "CIE sky instead of a weather file: 1..15 (ISO 15469), overcast, uniform");
+  sky_cmd->add_option("--altitude", sky.sun_altitude_deg, "CIE general skies: sun altitude (deg)");
+  sky_cmd->add_option("--azimuth", sky.sun_azimuth_deg, "CIE general skies: sun azimuth (deg, clockwise from north)");
+  sky_cmd->add_option("--illuminance", sky.horizontal_illuminance_lux,
+                      "CIE skies: diffuse horizontal illuminance (lux, default 10000)")
+      ->check(CLI::PositiveNumber);
+  sky_cmd->add_option("--basis", sky.basis, "tregenza (default) or reinhart:N");
+  sky_cmd->add_option("--sun", sky.sun, "spread (into 4 patches, default), none (sky only), only (sun only)")
+      ->check(CLI::IsMember({"spread", "none", "only"}));
+  sky_cmd->add_option("--solar-position", sky.solar_position,
+                      "spa (default) or radiance (gendaymtx-compatible: its sun formulas, patch-centre values, "
+                      "sky colour, 11 C dew point)")
+      ->check(CLI::IsMember({"spa", "radiance"}));
+  sky_cmd->add_option("--ground-reflectance", sky.ground_reflectance, "Ground reflectance (default 0.2)")
+      ->check(CLI::Range(0.0, 1.0));
+  sky_cmd->add_option("--format", sky.format, "ascii (default), float or double")
+      ->check(CLI::IsMember({"ascii", "float", "double"}));
+  sky_cmd->add_option("-o,--output", sky.output_path, "Output matrix file (default: standard output)");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -56,9 +79,17 @@ int main(int argc, char** argv) {
     if (check_cmd->parsed()) return run_check(check, std::cout);
     if (run_cmd->parsed()) return run_run(run, std::cout, std::cerr);
     if (sun_cmd->parsed()) return run_sun(sun, std::cout);
+    if (sky_cmd->parsed()) {
+      std::string command_line = "dayphoton";
+      for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
+      return run_sky(sky, command_line, std::cout);
+    }
   } catch (const dayphoton::InputError& e) {
     std::cerr << e.what();
     return ExitInputError;
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "dayphoton: error: " << e.what() << '\n';
+    return ExitUsageError;
   } catch (const std::exception& e) {
     std::cerr << "dayphoton: error: " << e.what() << '\n';
     return ExitInternalError;

@@ -112,6 +112,10 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
   }
   diagnostics.throw_if_errors();
 
+  // Reinhart MF n patches are n times smaller per axis than Tregenza's: keep the sample
+  // spacing (not the count) per patch, at least 2 x 2.
+  const int samples_per_axis =
+      std::max(2, (options.mean_samples_per_axis + basis.multiplication_factor() - 1) / basis.multiplication_factor());
   SolarPositionOptions solar = options.solar;
   solar.radiance_series_has_leap_day = epw.leap_day_present;
 
@@ -174,14 +178,22 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
           set_rgb(result.matrix, bin, t, options.sky_colour * value);
         }
       } else {
-        const PerezSky perez = make_perez_sky(inputs);
-        sky_horizontal_lux = perez.state.diffuse_horizontal_illuminance_lux;
-        const int n = options.mean_samples_per_axis;
+        // The continuous Perez shape lv, averaged over each patch; normalised below.
+        const PerezState state = perez_state(inputs);
+        sky_horizontal_lux = state.diffuse_horizontal_illuminance_lux;
+        const int n = samples_per_axis;
         std::vector<double> luminance(n_bins, 0.0);
         double horizontal = 0;
         for (int bin = 1; bin < n_bins; ++bin) {
-          luminance[bin] = bin_mean(basis, bin, n, [&](const Vec3& d) { return perez.sky->luminance_cd_m2(d); });
+          luminance[bin] = bin_mean(basis, bin, n, [&](const Vec3& d) {
+            const double gamma = std::acos(std::clamp(dot(d, state.model_sun_direction), -1.0, 1.0));
+            return perez_relative_luminance(state, std::acos(std::clamp(d.z, -1.0, 1.0)), gamma);
+          });
           horizontal += luminance[bin] * projected_solid_angle[bin];
+        }
+        if (horizontal <= 1e-9) {  // lv vanished everywhere: uniform sky, as gendaymtx
+          std::fill(luminance.begin() + 1, luminance.end(), 1.0);
+          horizontal = Pi;
         }
         // A patch mean times the patch's projected solid angle is not the patch's horizontal
         // illuminance when L varies with altitude inside the patch (low suns, horizon bands:

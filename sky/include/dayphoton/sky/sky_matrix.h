@@ -53,7 +53,9 @@ struct SkyMatrixOptions {
   bool dew_point_from_weather = true;
   /// Day of year for the extraterrestrial irradiance: RADIANCE's (ignores 29 Feb) or the calendar's.
   bool radiance_day_of_year = false;
-  int mean_samples_per_axis = 6;        ///< PatchValue::Mean: n x n midpoints per patch
+  /// PatchValue::Mean: n x n midpoints per Tregenza-sized patch; ceil(n / MF), at least 2,
+  /// for Reinhart MF patches (same sample spacing).
+  int mean_samples_per_axis = 6;
 
   /// Everything gendaymtx -m MF does by default: RADIANCE sun formulas, centre values, sky
   /// colour, 11 C dew point, RADIANCE day of year.

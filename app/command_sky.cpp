@@ -1,0 +1,91 @@
+// `dayphoton sky`: an annual sky matrix from a weather file, or a sky vector for one CIE sky,
+// in RADIANCE matrix format (bins x steps x RGB, W/(sr m^2)). See docs/cli.md.
+#include <iostream>
+#include <sstream>
+
+#include "commands.h"
+#include "dayphoton/core/units.h"
+#include "dayphoton/sky/patch_basis.h"
+#include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/sky/sky_model.h"
+#include "dayphoton/weather/epw_reader.h"
+
+namespace dayphoton::app {
+
+namespace {
+
+sky::PatchBasis parse_basis(const std::string& text) {
+  if (text == "tregenza") return sky::PatchBasis::tregenza();
+  const std::string prefix = "reinhart:";
+  if (text.rfind(prefix, 0) == 0) {
+    try {
+      std::size_t used = 0;
+      const int mf = std::stoi(text.substr(prefix.size()), &used);
+      if (used == text.size() - prefix.size() && mf >= 1 && mf <= 64) return sky::PatchBasis::reinhart(mf);
+    } catch (const std::exception&) {
+    }
+  }
+  throw std::invalid_argument("--basis must be 'tregenza' or 'reinhart:N' with N in 1..64, not '" + text + "'");
+}
+
+std::unique_ptr<sky::SkyModel> make_cie_sky(const SkyOptions& o) {
+  const sky::SkyScale scale = sky::SkyScale::horizontal_illuminance_lux(o.horizontal_illuminance_lux);
+  if (o.cie == "uniform") return sky::make_uniform_sky(o.horizontal_illuminance_lux / Pi);
+  if (o.cie == "overcast") return sky::make_cie_overcast_sky(scale);
+  int type = 0;
+  try {
+    std::size_t used = 0;
+    type = std::stoi(o.cie, &used);
+    if (used != o.cie.size()) type = 0;
+  } catch (const std::exception&) {
+  }
+  if (type < 1 || type > 15)
+    throw std::invalid_argument("--cie must be 1..15, 'overcast' or 'uniform', not '" + o.cie + "'");
+  const double alt = deg_to_rad(o.sun_altitude_deg), az = deg_to_rad(o.sun_azimuth_deg);
+  const Vec3 sun{std::cos(alt) * std::sin(az), std::cos(alt) * std::cos(az), std::sin(alt)};
+  return sky::make_cie_general_sky(type, sun, scale);
+}
+
+}  // namespace
+
+int run_sky(const SkyOptions& o, const std::string& command_line, std::ostream& out) {
+  const sky::PatchBasis basis = parse_basis(o.basis);
+  const MatrixFormat format = parse_matrix_format(o.format);
+  RadianceMatrix matrix;
+
+  if (!o.cie.empty()) {
+    const auto sky = make_cie_sky(o);
+    const double e_h = sky->horizontal_illuminance_lux();
+    // Lambertian ground lit by this sky alone (CIE skies carry no sun here).
+    const double ground = o.ground_reflectance * e_h / (Pi * RadianceWhiteEfficacy_lm_per_W);
+    matrix = sky::sky_vector(*sky, basis, Vec3{ground, ground, ground});
+    matrix.header_lines().push_back(command_line);
+    matrix.header_lines().push_back("SKY= " + sky->description());
+  } else {
+    if (o.weather_path.empty()) throw std::invalid_argument("give a weather file or --cie TYPE");
+    const weather::EpwFile epw = weather::read_epw(o.weather_path);
+    sky::SkyMatrixOptions options;
+    if (o.solar_position == "radiance") options = sky::SkyMatrixOptions::gendaymtx_compatible();
+    if (o.sun == "spread") options.sun = sky::SunInMatrix::Spread;
+    else if (o.sun == "none") options.sun = sky::SunInMatrix::None;
+    else options.sun = sky::SunInMatrix::Only;
+    options.ground_reflectance = o.ground_reflectance;
+    const sky::SolarSite site = sky::solar_site_of(epw);
+    sky::SkyMatrix result = sky::build_sky_matrix(epw, site, basis, options);
+    matrix = std::move(result.matrix);
+    matrix.header_lines().push_back(command_line);
+    std::ostringstream latlong;
+    latlong.precision(8);
+    latlong << std::fixed << "LATLONG= " << site.latitude_deg << ' ' << site.longitude_deg;
+    matrix.header_lines().push_back(latlong.str());
+    if (result.sun_below_horizon_with_direct > 0)
+      std::cerr << "dayphoton sky: note: " << result.sun_below_horizon_with_direct
+                << " records have direct irradiance > 20 W/m2 with the sun below the horizon; "
+                   "their sun was kept, as gendaymtx does\n";
+  }
+  if (o.output_path.empty()) matrix.write(out, format);
+  else matrix.write_file(o.output_path, format);
+  return ExitOk;
+}
+
+}  // namespace dayphoton::app
