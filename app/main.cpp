@@ -14,6 +14,7 @@
 int main(int argc, char** argv) {
   using namespace dayphoton::app;
   CLI::App cli{"dayphoton: climate-based daylight modelling with contribution photon maps"};
+  cli.name("dayphoton");
   cli.set_version_flag("--version", std::string("dayphoton ") + DAYPHOTON_VERSION);
   cli.require_subcommand(1);
 

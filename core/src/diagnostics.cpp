@@ -1,6 +1,7 @@
 #include "dayphoton/core/diagnostics.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -72,6 +73,12 @@ InputError::InputError(const SourceLocation& loc, const std::string& message,
                        std::string source_line)
     : std::runtime_error(Diagnostic{Severity::Error, loc, message, source_line}.format()),
       m_diagnostics{Diagnostic{Severity::Error, loc, message, std::move(source_line)}} {}
+
+std::string format_number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.6g", value);
+  return buffer;
+}
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
   std::vector<std::size_t> row(b.size() + 1);

@@ -4,6 +4,7 @@
 // as six quadrilaterals with OUTWARD normals (a solid obstruction, a shelf, a column).
 // Surface names: "<box>.bottom", ".top", ".south", ".north", ".west", ".east" (the face
 // names refer to the unrotated box).
+#include "dayphoton/core/diagnostics.h"
 #include <cmath>
 
 #include "dayphoton/core/units.h"
@@ -21,8 +22,8 @@ void generate_box(const BoxSpec& box, MaterialLookup& materials, Diagnostics& di
   const Vec3 s = box.size_m;
   if (!(std::isfinite(s.x) && std::isfinite(s.y) && std::isfinite(s.z) && s.x > 0 && s.y > 0 && s.z > 0)) {
     report(diag, box.location,
-           what + ": every size must be positive, got " + std::to_string(s.x) + " x " +
-               std::to_string(s.y) + " x " + std::to_string(s.z) + " m");
+           what + ": every size must be positive, got " + format_number(s.x) + " x " +
+               format_number(s.y) + " x " + format_number(s.z) + " m");
     return;
   }
   const int mat = materials.resolve(box.material, box.location, what);

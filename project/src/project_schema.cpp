@@ -8,15 +8,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "dayphoton/core/diagnostics.h"
+
 namespace dayphoton::project {
 
 namespace {
-
-std::string format_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
 
 // Fluent construction keeps each schema entry on one readable line.
 struct P {

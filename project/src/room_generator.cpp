@@ -16,6 +16,7 @@
 //
 // Surface names: "<room>.floor", "<room>.ceiling", "<room>.wall_<dir>" (".1", ".2", ...
 // when split), "<room>.<window name>".
+#include "dayphoton/core/diagnostics.h"
 #include <algorithm>
 #include <cmath>
 
@@ -160,9 +161,9 @@ void generate_room(const RoomSpec& room, MaterialLookup& materials, Diagnostics&
     if (r.u0 < -SnapTolerance_m || r.u1 > frame.length_m + SnapTolerance_m || r.v1 > s.z + SnapTolerance_m) {
       report(diag, w.location,
              wwhat + " does not fit in the " + wall_name(w.wall) + " wall (" +
-                 std::to_string(frame.length_m) + " x " + std::to_string(s.z) + " m): it spans " +
-                 std::to_string(r.u0) + " to " + std::to_string(r.u1) + " m along the wall and " +
-                 std::to_string(r.v0) + " to " + std::to_string(r.v1) + " m above the floor");
+                 format_number(frame.length_m) + " x " + format_number(s.z) + " m): it spans " +
+                 format_number(r.u0) + " to " + format_number(r.u1) + " m along the wall and " +
+                 format_number(r.v0) + " to " + format_number(r.v1) + " m above the floor");
       continue;
     }
     // Snap to the wall edges so no sliver of wall is left.

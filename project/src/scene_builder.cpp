@@ -7,6 +7,7 @@
 // finally every position and direction is rotated to world coordinates by the site's
 // rotation_to_true_north_deg (convention: north_rotation.h). All problems are collected and
 // thrown together as one InputError.
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
 
 #include <algorithm>
@@ -73,8 +74,8 @@ void validate_surface(const Surface& surface, Diagnostics& diag) {
   const double tolerance_m = 1e-3 * std::max(1.0, size_m);
   if (deviation_m > tolerance_m) {
     report(diag, surface.location,
-           what + " is not planar: a vertex is " + std::to_string(deviation_m) +
-               " m from the mean plane (tolerance " + std::to_string(tolerance_m) + " m)");
+           what + " is not planar: a vertex is " + format_number(deviation_m) +
+               " m from the mean plane (tolerance " + format_number(tolerance_m) + " m)");
     return;
   }
   try {

@@ -20,6 +20,7 @@
 //
 // Point sets: inline points followed by the points of a .pts file (pts_reader.h), normals
 // normalised.
+#include "dayphoton/core/diagnostics.h"
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -105,8 +106,8 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Dia
     const int ny = lattice(room->size_m.y - 2 * spec.inset_m, spec.spacing_m, y_first);
     if (nx <= 0 || ny <= 0) {
       report(diag, spec.location,
-             what + " has no points: the inset (" + std::to_string(spec.inset_m) + " m) leaves nothing of room '" +
-                 room->name + "' (" + std::to_string(room->size_m.x) + " x " + std::to_string(room->size_m.y) + " m)");
+             what + " has no points: the inset (" + format_number(spec.inset_m) + " m) leaves nothing of room '" +
+                 room->name + "' (" + format_number(room->size_m.x) + " x " + format_number(room->size_m.y) + " m)");
       return false;
     }
     const double x0 = room->origin.x + spec.inset_m + x_first;
@@ -165,8 +166,8 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Dia
     }
   if (out.points.empty()) {
     report(diag, spec.location,
-           what + " has no points: no lattice point of spacing " + std::to_string(spec.spacing_m) +
-               " m lies inside the polygon at least " + std::to_string(spec.inset_m) + " m from its edges");
+           what + " has no points: no lattice point of spacing " + format_number(spec.spacing_m) +
+               " m lies inside the polygon at least " + format_number(spec.inset_m) + " m from its edges");
     return false;
   }
   out.outline = outline;

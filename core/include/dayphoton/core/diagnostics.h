@@ -68,6 +68,9 @@ class InputError : public std::runtime_error {
   std::vector<Diagnostic> m_diagnostics;
 };
 
+/// A number for a message: up to 6 significant digits, no trailing zeros ("6", "0.9", "1e-05").
+std::string format_number(double value);
+
 /// Levenshtein distance (for "did you mean" hints).
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
