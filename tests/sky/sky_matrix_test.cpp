@@ -95,7 +95,12 @@ INSTANTIATE_TEST_SUITE_P(
     Oakland, GendaymtxCompatibility,
     ::testing::Values(std::make_pair(SunInMatrix::Spread, "oakland_sky_m1.mtx.gz"),
                       std::make_pair(SunInMatrix::None, "oakland_sky_m1_skyonly.mtx.gz"),
-                      std::make_pair(SunInMatrix::Only, "oakland_sky_m1_sunonly.mtx.gz")));
+                      std::make_pair(SunInMatrix::Only, "oakland_sky_m1_sunonly.mtx.gz")),
+    [](const auto& param_info) {
+      return std::string(param_info.param.first == SunInMatrix::Spread ? "SunSpread"
+                         : param_info.param.first == SunInMatrix::None ? "SkyOnly"
+                                                                 : "SunOnly");
+    });
 
 TEST(SkyMatrix, EveryHourIsNormalisedToThePerezDiffuseIlluminance) {
   // Every daytime column, summed with the exact projected solid angle of each patch, must give
