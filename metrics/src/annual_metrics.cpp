@@ -59,13 +59,14 @@ std::vector<SensorMetrics> compute_sensor_metrics(const IlluminanceTable& table,
       m.mean_occupied_lux += e;
     }
   }
-  const double to_percent = 100.0 / n_occupied;
   for (SensorMetrics& m : result) {
+    // 100 * count / n (not count * (100 / n)): correctly rounded, so exactly half the hours
+    // gives exactly 50 % and the sDA ">= 50 %" test cannot fail on rounding.
     for (double* v : {&m.da_percent, &m.cda_percent, &m.da_max_percent, &m.udi_below_percent,
                       &m.udi_original_percent, &m.udi_above_original_percent,
                       &m.udi_supplementary_percent, &m.udi_autonomous_percent,
                       &m.udi_above_revised_percent})
-      *v *= to_percent;
+      *v = 100.0 * *v / n_occupied;
     m.mean_occupied_lux /= n_occupied;
   }
   return result;

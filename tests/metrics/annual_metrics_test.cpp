@@ -100,6 +100,17 @@ TEST(AnnualMetrics, AseCountsHoursAtOrAbove1000AndFailsAbove250) {
   EXPECT_DOUBLE_EQ(grid.ase_percent, 50);
 }
 
+TEST(AnnualMetrics, ExactlyHalfTheHoursPassesSdaForEveryScheduleLength) {
+  // Regression: percentages computed as count * (100 / n) gave 49.999... for some n (e.g. 194).
+  for (std::size_t n = 2; n <= 1000; n += 2) {
+    std::vector<TimeStamp> steps(n, TimeStamp{1, 1, 12.5});
+    IlluminanceTable table(steps, 1);
+    for (std::size_t t = 0; t < n / 2; ++t) table.lux(t, 0) = 300;
+    const auto m = compute_sensor_metrics(table, OccupancySchedule(std::vector<bool>(n, true)));
+    ASSERT_EQ(summarize_grid(m, MetricSettings{}).sda_percent, 100.0) << n << " hours";
+  }
+}
+
 TEST(AnnualMetrics, AreaWeightsWeightTheGridSummary) {
   std::vector<TimeStamp> steps(2, TimeStamp{1, 1, 12.5});
   IlluminanceTable table(steps, 2);
