@@ -132,7 +132,10 @@ RadianceMatrix RadianceMatrix::read(std::istream& in, const std::string& display
     if (t.rfind("NROWS=", 0) == 0) rows = integer("NROWS=");
     else if (t.rfind("NCOLS=", 0) == 0) columns = integer("NCOLS=");
     else if (t.rfind("NCOMP=", 0) == 0) components = integer("NCOMP=");
-    else if (t.rfind("BigEndian=", 0) == 0) big_endian = static_cast<int>(integer("BigEndian="));
+    else if (t.rfind("BigEndian=", 0) == 0) {
+      big_endian = static_cast<int>(integer("BigEndian="));
+      if (big_endian > 1) fail(line_number, "BigEndian= must be 0 or 1", line);
+    }
     else if (t.rfind("FORMAT=", 0) == 0) {
       const std::string f = value_of("FORMAT=");
       try {
@@ -148,6 +151,11 @@ RadianceMatrix RadianceMatrix::read(std::istream& in, const std::string& display
   if (rows < 0 || columns < 0) fail(line_number, "the header lacks NROWS= or NCOLS=");
   if (components < 1 || components > 64) fail(line_number, "NCOMP must be between 1 and 64");
 
+  // Guard the allocation: a corrupt header must give a located error, not an overflow or an
+  // out-of-memory abort. 2^31 elements (8 GiB of floats) is far beyond any daylight matrix.
+  constexpr long long MaxElements = 1LL << 31;
+  if (rows > 0 && (columns > MaxElements / rows || rows * columns > MaxElements / components))
+    fail(line_number, "NROWS x NCOLS x NCOMP is implausibly large (more than 2^31 values)");
   RadianceMatrix m(static_cast<std::size_t>(rows), static_cast<std::size_t>(columns),
                    static_cast<int>(components));
   m.m_header = std::move(header);

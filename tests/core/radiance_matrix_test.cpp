@@ -84,6 +84,9 @@ TEST(RadianceMatrix, BadInputGivesLocatedErrors) {
   EXPECT_EQ(read_error("#?RADIANCE\nNROWS=1\nNCOLS=1\n\n1 1 1 1\n"),
             "m.mtx:5: more values than NROWS x NCOLS x NCOMP");
   EXPECT_EQ(read_error("#?RADIANCE\nNROWS=1\nNCOLS=1\nFORMAT=float\n\nab"), "m.mtx:5: truncated binary matrix data");
+  EXPECT_EQ(read_error("#?RADIANCE\nNROWS=4294967296\nNCOLS=4294967296\n\n"),
+            "m.mtx:4: NROWS x NCOLS x NCOMP is implausibly large (more than 2^31 values)");
+  EXPECT_EQ(read_error("#?RADIANCE\nBigEndian=2\n\n"), "m.mtx:2: BigEndian= must be 0 or 1");
 }
 
 TEST(RadianceMatrix, ReadsGendaymtxOutput) {
