@@ -151,16 +151,13 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
                              : step.day_of_year;
     if (options.dew_point_from_weather && record.dew_point_c) inputs.dew_point_C = *record.dew_point_c;
 
-    const double sun_lux_normal = [&] {
-      const PerezState s = perez_state(inputs);
-      return s.direct_normal_illuminance_lux;
-    }();
+    const PerezState state = perez_state(inputs);
+    const double sun_lux_normal = state.direct_normal_illuminance_lux;
     const bool with_sky = options.sun != SunInMatrix::Only;
     double sky_horizontal_lux = 0;
 
     if (with_sky) {
       if (options.patch_value == PatchValue::Centre) {
-        const PerezState state = perez_state(inputs);
         std::vector<double> lv(n_bins, 0.0);
         double s = 0;
         for (int bin = 1; bin < n_bins; ++bin) {
@@ -179,7 +176,6 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
         }
       } else {
         // The continuous Perez shape lv, averaged over each patch; normalised below.
-        const PerezState state = perez_state(inputs);
         sky_horizontal_lux = state.diffuse_horizontal_illuminance_lux;
         const int n = samples_per_axis;
         std::vector<double> luminance(n_bins, 0.0);
@@ -212,7 +208,7 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
     if (sun_lux_normal > 0) {
       if (sun.direction.z <= 0) below_with_direct[t] = dni > 20.0;
       if (options.sun != SunInMatrix::None) spread_sun(basis, sun.direction, sun_lux_normal, result.matrix, t);
-      if (sun.disc_visible) {
+      if (sun.direction.z > 0) {
         SunRecord record_out;
         record_out.step = t;
         record_out.direction = sun.direction;

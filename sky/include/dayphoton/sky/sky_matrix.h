@@ -73,7 +73,9 @@ struct SunRecord {
 
 struct SkyMatrix {
   RadianceMatrix matrix;            ///< bins x steps x RGB
-  std::vector<SunRecord> suns;      ///< steps with direct sun (sun up, direct illuminance > 0)
+  /// Steps whose sun centre is above the horizon and whose direct illuminance is > 0. With
+  /// SunInMatrix::Spread or Only the same sun is also in the matrix: use one or the other.
+  std::vector<SunRecord> suns;
   std::size_t sun_below_horizon_with_direct = 0;  ///< records gendaymtx warns about
 };
 
@@ -89,8 +91,10 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
 RadianceMatrix sky_vector(const SkyModel& sky, const PatchBasis& basis, const Vec3& ground_radiance_rgb,
                           PatchValue patch_value = PatchValue::Mean, int mean_samples_per_axis = 6);
 
-/// Horizontal illuminance (lux) of a sky column: sum over sky patches of L sin(h_centre) Omega x 179,
-/// with L the RADIANCE luminance of the RGB triple. Ground excluded.
+/// Horizontal illuminance (lux) of a sky column: sum over sky patches of 179 L x (integral of
+/// cos(theta) over the patch), L the RADIANCE luminance of the RGB triple; ground excluded.
+/// Exact for PatchValue::Mean columns; Centre columns are normalised with gendaymtx's
+/// sin(h_centre) Omega weights instead and differ from it by up to ~1 % (horizon band).
 double column_horizontal_illuminance_lux(const RadianceMatrix& matrix, std::size_t column,
                                          const PatchBasis& basis);
 
