@@ -25,7 +25,7 @@ sky::PatchBasis parse_basis(const std::string& text) {
     } catch (const std::exception&) {
     }
   }
-  throw std::invalid_argument("--basis must be 'tregenza' or 'reinhart:N' with N in 1..64, not '" + text + "'");
+  throw UsageError("--basis must be 'tregenza' or 'reinhart:N' with N in 1..64, not '" + text + "'");
 }
 
 std::unique_ptr<sky::SkyModel> make_cie_sky(const SkyOptions& o) {
@@ -40,7 +40,7 @@ std::unique_ptr<sky::SkyModel> make_cie_sky(const SkyOptions& o) {
   } catch (const std::exception&) {
   }
   if (type < 1 || type > 15)
-    throw std::invalid_argument("--cie must be 1..15, 'overcast' or 'uniform', not '" + o.cie + "'");
+    throw UsageError("--cie must be 1..15, 'overcast' or 'uniform', not '" + o.cie + "'");
   const double alt = deg_to_rad(o.sun_altitude_deg), az = deg_to_rad(o.sun_azimuth_deg);
   const Vec3 sun{std::cos(alt) * std::sin(az), std::cos(alt) * std::cos(az), std::sin(alt)};
   return sky::make_cie_general_sky(type, sun, scale);
@@ -53,6 +53,12 @@ int run_sky(const SkyOptions& o, const std::string& command_line, std::ostream& 
   const MatrixFormat format = parse_matrix_format(o.format);
   RadianceMatrix matrix;
 
+  if (!o.cie.empty() && !o.weather_path.empty())
+    throw UsageError("give either a weather file or --cie, not both");
+  if (!o.cie.empty() && (o.sun != "spread" || o.solar_position != "spa"))
+    throw UsageError("--sun and --solar-position apply to weather files, not to --cie skies");
+  if (o.cie.empty() && o.cie_options_given)
+    throw UsageError("--altitude, --azimuth and --illuminance apply to --cie skies only");
   if (!o.cie.empty()) {
     const auto sky = make_cie_sky(o);
     const double e_h = sky->horizontal_illuminance_lux();
@@ -62,7 +68,7 @@ int run_sky(const SkyOptions& o, const std::string& command_line, std::ostream& 
     matrix.header_lines().push_back(command_line);
     matrix.header_lines().push_back("SKY= " + sky->description());
   } else {
-    if (o.weather_path.empty()) throw std::invalid_argument("give a weather file or --cie TYPE");
+    if (o.weather_path.empty()) throw UsageError("give a weather file or --cie TYPE");
     const weather::EpwFile epw = weather::read_epw(o.weather_path);
     sky::SkyMatrixOptions options;
     if (o.solar_position == "radiance") options = sky::SkyMatrixOptions::gendaymtx_compatible();
@@ -83,8 +89,12 @@ int run_sky(const SkyOptions& o, const std::string& command_line, std::ostream& 
                 << " records have direct irradiance > 20 W/m2 with the sun below the horizon; "
                    "their sun was kept, as gendaymtx does\n";
   }
-  if (o.output_path.empty()) matrix.write(out, format);
-  else matrix.write_file(o.output_path, format);
+  if (o.output_path.empty()) {
+    matrix.write(out, format);
+    require_written(out, "the sky matrix");
+  } else {
+    matrix.write_file(o.output_path, format);
+  }
   return ExitOk;
 }
 

@@ -17,7 +17,12 @@ namespace dayphoton::app {
 sky::SolarPositionAlgorithm parse_solar_position(const std::string& name) {
   if (name == "spa") return sky::SolarPositionAlgorithm::Spa;
   if (name == "radiance") return sky::SolarPositionAlgorithm::Radiance;
-  throw std::invalid_argument("unknown solar position algorithm '" + name + "' (spa or radiance)");
+  throw UsageError("unknown solar position algorithm '" + name + "' (spa or radiance)");
+}
+
+void require_written(std::ostream& out, const std::string& what) {
+  out.flush();
+  if (!out) throw std::runtime_error("could not write " + what + " to standard output");
 }
 
 int run_sun(const SunOptions& options, std::ostream& out) {
@@ -39,7 +44,10 @@ int run_sun(const SunOptions& options, std::ostream& out) {
                   rad_to_deg(p.altitude_rad), rad_to_deg(p.azimuth_rad), p.sun_up ? 1 : 0);
     table << line;
   }
-  if (options.output_path.empty()) out << table.str();
+  if (options.output_path.empty()) {
+    out << table.str();
+    require_written(out, "the sun table");
+  }
   else write_file_atomically(options.output_path, table.str());
   return ExitOk;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,15 @@ enum ExitCode : int {
   ExitNotImplemented = 3,  ///< the requested step does not exist yet (said plainly, nothing written)
   ExitInternalError = 4,   ///< a bug or an I/O failure
 };
+
+/// A command line that parses but makes no sense (bad --basis, conflicting options): exit 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Flush `out` and throw if anything written to it was lost (full disk, closed pipe).
+void require_written(std::ostream& out, const std::string& what);
 
 struct CheckOptions {
   std::string project_path;
@@ -44,6 +54,7 @@ struct SkyOptions {
   std::string cie;                ///< or a CIE sky: "1".."15", "overcast", "uniform"
   double sun_altitude_deg = 45, sun_azimuth_deg = 180;  ///< for CIE general skies
   double horizontal_illuminance_lux = 10000;            ///< for CIE skies
+  bool cie_options_given = false;  ///< --altitude/--azimuth/--illuminance on the command line
   std::string basis = "tregenza";
   std::string sun = "spread";
   std::string solar_position = "spa";

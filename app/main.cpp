@@ -81,6 +81,8 @@ int main(int argc, char** argv) {
     if (run_cmd->parsed()) return run_run(run, std::cout, std::cerr);
     if (sun_cmd->parsed()) return run_sun(sun, std::cout);
     if (sky_cmd->parsed()) {
+      sky.cie_options_given = sky_cmd->count("--altitude") + sky_cmd->count("--azimuth") +
+                                  sky_cmd->count("--illuminance") > 0;
       std::string command_line = "dayphoton";
       for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
       return run_sky(sky, command_line, std::cout);
@@ -88,7 +90,7 @@ int main(int argc, char** argv) {
   } catch (const dayphoton::InputError& e) {
     std::cerr << e.what();
     return ExitInputError;
-  } catch (const std::invalid_argument& e) {
+  } catch (const UsageError& e) {
     std::cerr << "dayphoton: error: " << e.what() << '\n';
     return ExitUsageError;
   } catch (const std::exception& e) {

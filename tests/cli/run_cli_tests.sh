@@ -39,6 +39,7 @@ check_case check_missing_file 1 check tests/cli/cases/does_not_exist.yaml
 check_case usage_no_subcommand 2
 check_case sun_bad_epw 1 sun tests/cli/cases/truncated.epw
 check_case sky_bad_cie_type 2 sky --cie 19
+check_case sky_conflicting_options 2 sky projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw --cie overcast
 check_case sky_overcast_vector 0 sky --cie overcast --illuminance 10000
 
 # run is not implemented yet: it must say so, exit 3 and write nothing.
