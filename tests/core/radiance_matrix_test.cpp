@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "../reference_data.h"
 #include "dayphoton/core/diagnostics.h"
 
 using namespace dayphoton;
@@ -92,16 +93,7 @@ TEST(RadianceMatrix, BadInputGivesLocatedErrors) {
 TEST(RadianceMatrix, ReadsGendaymtxOutput) {
   const std::string path = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/results/c_annual/oakland_sky_m1.mtx.gz";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "reference data not found: " << path;
-  const std::string command = "gzip -dc '" + path + "'";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) text.append(buffer, n);
-  ASSERT_EQ(pclose(pipe), 0);
-  std::istringstream in(text);
-  const RadianceMatrix m = RadianceMatrix::read(in, path);
+  const RadianceMatrix m = test::read_gzip_matrix(path);
   EXPECT_EQ(m.rows(), 146u);
   EXPECT_EQ(m.columns(), 8760u);
   EXPECT_EQ(m.components(), 3);

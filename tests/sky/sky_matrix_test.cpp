@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "../reference_data.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/sky/perez.h"
 #include "dayphoton/weather/site_clock.h"
@@ -22,17 +23,6 @@ namespace {
 const std::string OaklandEpw =
     std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
 const std::string ReferenceDir = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/results/c_annual";
-
-RadianceMatrix read_gz_matrix(const std::string& path) {
-  FILE* pipe = popen(("gzip -dc '" + path + "'").c_str(), "r");
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) text.append(buffer, n);
-  pclose(pipe);
-  std::istringstream in(text);
-  return RadianceMatrix::read(in, path);
-}
 
 struct Comparison {
   std::size_t compared = 0, failed = 0;
@@ -77,7 +67,7 @@ TEST_P(GendaymtxCompatibility, MatchesRadianceBinByBinHourByHour) {
   SkyMatrixOptions options = SkyMatrixOptions::gendaymtx_compatible();
   options.sun = GetParam().first;
   const SkyMatrix ours = build_sky_matrix(epw, solar_site_of(epw), PatchBasis::tregenza(), options);
-  const RadianceMatrix ref = read_gz_matrix(ref_path);
+  const RadianceMatrix ref = test::read_gzip_matrix(ref_path);
   ASSERT_EQ(ours.matrix.rows(), ref.rows());
   ASSERT_EQ(ours.matrix.columns(), ref.columns());
 

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../reference_data.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/sky/patch_basis.h"
 
@@ -298,20 +299,12 @@ TEST(RadianceSolarTest, ReproducesGendaymtxSunPatchesForOakland) {
   const std::string dir = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/results/c_annual/";
   std::ifstream wea(dir + "oakland.wea");
   if (!wea) GTEST_SKIP() << "reference data not found: " << dir << "oakland.wea";
-  const std::string cmd = "gzip -dc '" + dir + "oakland_sky_m1_sunonly.mtx.gz'";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) GTEST_SKIP() << "cannot run gzip to read the reference sky matrix";
-  char line[256];
-  while (std::fgets(line, sizeof line, pipe) && line[0] != '\n') {
-  }
+  const RadianceMatrix matrix = test::read_gzip_matrix(dir + "oakland_sky_m1_sunonly.mtx.gz");
   const int rows = 146, cols = 8760;
+  ASSERT_EQ(matrix.rows(), static_cast<std::size_t>(rows));
+  ASSERT_EQ(matrix.columns(), static_cast<std::size_t>(cols));
   std::vector<float> value(static_cast<std::size_t>(rows) * cols);
-  for (std::size_t i = 0; i < value.size(); ++i) {
-    float r = 0, g = 0, b = 0;
-    ASSERT_EQ(std::fscanf(pipe, "%f %f %f", &r, &g, &b), 3) << "element " << i;
-    value[i] = r;
-  }
-  pclose(pipe);
+  for (std::size_t i = 0; i < value.size(); ++i) value[i] = matrix.data()[3 * i];  // red channel
 
   std::string text;
   for (int i = 0; i < 6; ++i) std::getline(wea, text);  // site header
