@@ -1,0 +1,115 @@
+// Fixed-bandwidth density estimates and the contribution estimate (seeds/000 section 3.1.3,
+// section 6.2 for the averaged radius; seeds/001 eq. 18). Rules for the kernel disc, the
+// maximum search radius and the degenerate cases: see density_estimate.h.
+#include "dayphoton/engine/density_estimate.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "dayphoton/engine/engine_error.h"
+
+namespace dayphoton::engine {
+namespace {
+
+void check_options(const DensityEstimateOptions& options) {
+  if (options.bandwidth == 0)
+    throw std::invalid_argument("density estimate: the bandwidth must be at least 1 photon");
+  if (!(options.max_radius_m > 0) || !std::isfinite(options.max_radius_m))
+    throw std::invalid_argument("density estimate: the maximum search radius must be positive and finite");
+}
+
+/// Photons to gather: the (N+1)-th defines the averaged radius.
+std::size_t lookup_count(const DensityEstimateOptions& options) {
+  return options.average_radius ? options.bandwidth + 1 : options.bandwidth;
+}
+
+}  // namespace
+
+Vec3 accumulate_disc(const PhotonMap& map, const std::vector<NeighbourPhoton>& sorted,
+                     const KernelDisc& disc, KernelType kernel, std::vector<Vec3>* per_source) {
+  if (disc.photon_count == 0) return Vec3{};
+  const auto& photons = map.photons();
+  if (!(disc.radius_m > 0)) {
+    const Vec3 at = photons[sorted[0].index].position_m();
+    throw EngineError("density estimate at (" + std::to_string(at.x) + ", " +
+                      std::to_string(at.y) + ", " + std::to_string(at.z) +
+                      "): the photons that define the kernel radius all lie on the query "
+                      "point, so the density is not finite");
+  }
+  if (per_source) {
+    for (std::size_t j = 0; j < disc.photon_count; ++j) {
+      const std::uint32_t source = photons[sorted[j].index].source;
+      if (source >= per_source->size())
+        throw std::out_of_range("contribution estimate: a photon of source " +
+                                std::to_string(source) + " but only " +
+                                std::to_string(per_source->size()) + " source slots");
+    }
+  }
+  // The uniform kernel has one weight for all photons: skip the square roots.
+  const bool uniform = kernel == KernelType::Uniform;
+  const double uniform_weight = kernel_weight(KernelType::Uniform, 0.0, disc.radius_m);
+  Vec3 sum{};
+  for (std::size_t j = 0; j < disc.photon_count; ++j) {
+    const Photon& photon = photons[sorted[j].index];
+    const double weight =
+        uniform ? uniform_weight
+                : kernel_weight(kernel, std::sqrt(sorted[j].distance_squared_m2), disc.radius_m);
+    const Vec3 term = photon.flux_rgb() * weight;
+    sum += term;
+    if (per_source) (*per_source)[photon.source] += term;
+  }
+  return sum;
+}
+
+KernelDisc kernel_disc(const std::vector<NeighbourPhoton>& sorted, std::size_t bandwidth,
+                       bool average_radius, double max_radius_m) {
+  KernelDisc disc;
+  const std::size_t needed = average_radius ? bandwidth + 1 : bandwidth;
+  if (bandwidth == 0 || sorted.size() < needed) {
+    // Short lookup: the radius-defining photon lies beyond the maximum search radius.
+    disc.radius_m = max_radius_m;
+    disc.photon_count = sorted.size();
+    return disc;
+  }
+  const double d_n = std::sqrt(sorted[bandwidth - 1].distance_squared_m2);
+  disc.radius_m = average_radius ? 0.5 * (d_n + std::sqrt(sorted[bandwidth].distance_squared_m2))
+                                 : d_n;
+  disc.photon_count = bandwidth;
+  return disc;
+}
+
+DensityEstimate estimate_irradiance(const PhotonMap& map, const Vec3& point,
+                                    const PhotonFilter& filter,
+                                    const DensityEstimateOptions& options) {
+  check_options(options);
+  std::vector<NeighbourPhoton> neighbours;
+  map.nearest(point, lookup_count(options), options.max_radius_m, filter, neighbours);
+  const KernelDisc disc =
+      kernel_disc(neighbours, options.bandwidth, options.average_radius, options.max_radius_m);
+  DensityEstimate estimate;
+  estimate.radius_m = disc.radius_m;
+  estimate.photon_count = disc.photon_count;
+  estimate.irradiance = accumulate_disc(map, neighbours, disc, options.kernel);
+  return estimate;
+}
+
+DensityEstimate estimate_contributions(const PhotonMap& map, const Vec3& point,
+                                       const PhotonFilter& filter,
+                                       const DensityEstimateOptions& options,
+                                       std::vector<Vec3>& per_source) {
+  check_options(options);
+  PhotonFilter any_source = filter;
+  any_source.source = PhotonFilter::AnySource;
+  std::vector<NeighbourPhoton> neighbours;
+  map.nearest(point, lookup_count(options), options.max_radius_m, any_source, neighbours);
+  const KernelDisc disc =
+      kernel_disc(neighbours, options.bandwidth, options.average_radius, options.max_radius_m);
+  DensityEstimate estimate;
+  estimate.radius_m = disc.radius_m;
+  estimate.photon_count = disc.photon_count;
+  estimate.irradiance = accumulate_disc(map, neighbours, disc, options.kernel, &per_source);
+  return estimate;
+}
+
+}  // namespace dayphoton::engine
