@@ -2,7 +2,8 @@
 //   - layered (Lambertian = RADIANCE plastic, metal, mirror, translucent = RADIANCE trans):
 //     up to four components, diffuse reflection, specular reflection (delta mirror or Ward
 //     lobe, ward_lobe.h), diffuse transmission, specular transmission (straight through or a
-//     Ward lobe mirrored through the surface); two-sided (a back-side hit flips the normal);
+//     Ward lobe of roughness alpha / 2 mirrored through the surface, see below); two-sided
+//     (a back-side hit flips the normal);
 //   - thin glass (thin_glass_fresnel.h): delta reflection and straight transmission;
 //   - dielectric interface (fresnel.h): delta reflection and refraction;
 //   - opening: straight transmission with weight 1.
@@ -70,19 +71,22 @@ enum Component : int {
 struct Material::Model {
   MaterialSpec spec;
 
-  // Layered models: per-channel albedo factors of the four components and the shared Ward
-  // lobe of the specular ones (absent when roughness is 0: delta mirror / straight through).
+  // Layered models: per-channel albedo factors of the four components and the Ward lobes of
+  // the specular ones (absent when roughness is 0: delta mirror / straight through).
   std::array<Vec3, ComponentCount> factor{};
-  std::optional<WardLobe> lobe;
+  std::optional<WardLobe> lobe;               // glossy reflection, alpha = roughness
+  std::optional<WardLobe> transmission_lobe;  // glossy transmission, alpha = roughness / 2
 
   // Thin glass: per-pass transmissivity per channel.
   Vec3 glass_transmissivity{0, 0, 0};
 
   // Mean-RGB selection weights of the layered components at incidence cosine cos_i.
   std::array<double, ComponentCount> selection(double cos_i) const {
-    const double lobe_albedo = lobe ? lobe->selection_albedo(cos_i) : 1.0;
-    return {mean(factor[DiffuseReflect]), mean(factor[SpecularReflect]) * lobe_albedo,
-            mean(factor[DiffuseTransmit]), mean(factor[SpecularTransmit]) * lobe_albedo};
+    const double reflect_albedo = lobe ? lobe->selection_albedo(cos_i) : 1.0;
+    const double transmit_albedo =
+        transmission_lobe ? transmission_lobe->selection_albedo(cos_i) : 1.0;
+    return {mean(factor[DiffuseReflect]), mean(factor[SpecularReflect]) * reflect_albedo,
+            mean(factor[DiffuseTransmit]), mean(factor[SpecularTransmit]) * transmit_albedo};
   }
 
   bool layered() const {
@@ -129,7 +133,12 @@ Material Material::from_spec(const MaterialSpec& spec) {
       m.factor[SpecularReflect] = spec.type == MaterialType::Metal ? colour * s : white * s;
       m.factor[DiffuseTransmit] = colour * ((1.0 - s) * t * (1.0 - ts));
       m.factor[SpecularTransmit] = colour * ((1.0 - s) * t * ts);
-      if (spec.roughness > 0 && (s > 0 || t * ts > 0)) m.lobe.emplace(spec.roughness);
+      if (spec.roughness > 0 && s > 0) m.lobe.emplace(spec.roughness);
+      // RADIANCE's trans spreads its specular transmission as a Gaussian of width alpha / sqrt(2)
+      // per axis about the straight direction (normal.c), half the angular spread of its
+      // reflected lobe (a half-vector slope of alpha / sqrt(2) per axis, doubled by the
+      // reflection). A mirrored Ward lobe of roughness alpha / 2 has that small-angle spread.
+      if (spec.roughness > 0 && t * ts > 0) m.transmission_lobe.emplace(0.5 * spec.roughness);
       break;
     }
     case MaterialType::Mirror:
@@ -261,13 +270,13 @@ std::optional<ScatterSample> Material::sample(const Vec3& incoming, const Vec3& 
       type = ScatterType::GlossyReflection;
       break;
     default:  // SpecularTransmit
-      if (!m.lobe)
+      if (!m.transmission_lobe)
         return ScatterSample{incoming, m.factor[SpecularTransmit] / p_chosen,
                              ScatterType::StraightTransmission, true};
       {
-        // The transmission lobe is the reflection lobe mirrored through the surface plane,
+        // The transmission lobe is a reflection lobe mirrored through the surface plane,
         // i.e. centred on the straight-through direction.
-        const std::optional<Vec3> o = m.lobe->sample(to_light, n, u1, u2);
+        const std::optional<Vec3> o = m.transmission_lobe->sample(to_light, n, u1, u2);
         if (!o) return std::nullopt;
         outgoing = reflect(*o, n);
       }
@@ -293,7 +302,8 @@ Vec3 Material::eval(const Vec3& incoming, const Vec3& outgoing, const Vec3& norm
   }
   if (cos_o < 0) {
     Vec3 f = m.factor[DiffuseTransmit] / Pi;
-    if (m.lobe) f += m.factor[SpecularTransmit] * m.lobe->eval(to_light, reflect(outgoing, n), n);
+    if (m.transmission_lobe)
+      f += m.factor[SpecularTransmit] * m.transmission_lobe->eval(to_light, reflect(outgoing, n), n);
     return f;
   }
   return {0, 0, 0};
@@ -314,7 +324,8 @@ double Material::pdf(const Vec3& incoming, const Vec3& outgoing, const Vec3& nor
     if (m.lobe) density += w[SpecularReflect] * m.lobe->pdf(to_light, outgoing, n);
   } else if (cos_o < 0) {
     density += w[DiffuseTransmit] * -cos_o / Pi;
-    if (m.lobe) density += w[SpecularTransmit] * m.lobe->pdf(to_light, reflect(outgoing, n), n);
+    if (m.transmission_lobe)
+      density += w[SpecularTransmit] * m.transmission_lobe->pdf(to_light, reflect(outgoing, n), n);
   }
   return density / total;
 }
@@ -333,9 +344,10 @@ Vec3 Material::albedo(const Vec3& incoming, const Vec3& normal) const {
   }
   // Layered: diffuse components are exact (their cosine lobes lie wholly on one side); the
   // specular ones are exact for delta events and Ward-lobe quadrature otherwise.
-  const double lobe_albedo = m.lobe ? m.lobe->albedo(cos_i) : 1.0;
+  const double reflect_albedo = m.lobe ? m.lobe->albedo(cos_i) : 1.0;
+  const double transmit_albedo = m.transmission_lobe ? m.transmission_lobe->albedo(cos_i) : 1.0;
   return m.factor[DiffuseReflect] + m.factor[DiffuseTransmit] +
-         (m.factor[SpecularReflect] + m.factor[SpecularTransmit]) * lobe_albedo;
+         m.factor[SpecularReflect] * reflect_albedo + m.factor[SpecularTransmit] * transmit_albedo;
 }
 
 Vec3 Material::straight_transmittance(const Vec3& incoming, const Vec3& normal) const {
@@ -348,7 +360,7 @@ Vec3 Material::straight_transmittance(const Vec3& incoming, const Vec3& normal) 
     case MaterialType::Translucent:
       // A rough translucent scatters its specular transmission into a glossy lobe (eval()),
       // so nothing passes undeviated.
-      return m.lobe ? Vec3{0, 0, 0} : m.factor[SpecularTransmit];
+      return m.transmission_lobe ? Vec3{0, 0, 0} : m.factor[SpecularTransmit];
     default:
       return {0, 0, 0};
   }
