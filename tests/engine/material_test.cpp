@@ -259,6 +259,35 @@ TEST(Material, CopiesAreIndependentValues) {
   EXPECT_EQ(moved.type(), MaterialType::Lambertian);
 }
 
+TEST(MaterialHarness, ChiSquarePValueMatchesTables) {
+  // Upper quantiles of the chi-square distribution (Abramowitz & Stegun table 26.8):
+  // chi2_{0.999}(10) = 29.588, chi2_{0.999}(100) = 149.449, chi2_{0.5}(100) = 99.334.
+  // Wilson-Hilferty is good to a few percent in p at these points.
+  EXPECT_NEAR(test::chi2_p_value(29.588, 10), 1e-3, 0.2e-3);
+  EXPECT_NEAR(test::chi2_p_value(149.449, 100), 1e-3, 0.1e-3);
+  EXPECT_NEAR(test::chi2_p_value(99.334, 100), 0.5, 0.005);
+}
+
+TEST(MaterialHarness, ChiSquareDetectsAWrongDensity) {
+  // Negative controls: the harness must reject a sampler judged against another model's pdf,
+  // even when the two differ only slightly. Same sample count and cells as the real checks.
+  const Vec3 n = tilted_normal();
+  const Vec3 d = incident_direction(n, 30, 0);
+  const Material rough_02 =
+      Material::from_spec(make_spec(MaterialType::Lambertian, {0.5, 0.5, 0.5}, 0.5, 0.2));
+  const Material rough_025 =
+      Material::from_spec(make_spec(MaterialType::Lambertian, {0.5, 0.5, 0.5}, 0.5, 0.25));
+  EXPECT_LT(test::measure_sampling(rough_02, rough_025, d, n, 42, "ward 0.2 vs 0.25", 100000).p_value,
+            1e-3);
+  // A Lambertian judged as a plastic whose pdf puts 5 % into a delta mirror.
+  const Material matte = Material::from_spec(make_spec(MaterialType::Lambertian, {0.5, 0.5, 0.5}));
+  const Material shiny =
+      Material::from_spec(make_spec(MaterialType::Lambertian, {0.5, 0.5, 0.5}, 0.025, 0.0));
+  EXPECT_LT(test::measure_sampling(matte, shiny, d, n, 43, "matte vs shiny", 100000).p_value, 1e-3);
+  // And the right density passes with the same seeds.
+  EXPECT_GT(test::measure_sampling(rough_02, rough_02, d, n, 42, "ward 0.2", 100000).p_value, 1e-3);
+}
+
 TEST(Material, ScatterTypeClassification) {
   EXPECT_TRUE(is_diffuse(ScatterType::DiffuseReflection));
   EXPECT_TRUE(is_diffuse(ScatterType::DiffuseTransmission));

@@ -112,10 +112,14 @@ struct SamplingReport {
   double max_consistency_error = 0;  ///< relative |weight - eval cos / pdf|
 };
 
-/// Runs the checks above and reports them with gtest expectations tagged by `label`.
-inline SamplingReport check_sampling(const Material& material, const Vec3& incoming,
-                                     const Vec3& normal, std::uint64_t seed,
-                                     const std::string& label, int samples = 100000) {
+/// Draws `samples` events from `material` and measures them against the eval/pdf/albedo of
+/// `model` (the same material for the real checks; a different one for the negative
+/// controls that show the chi-square test can fail). Records no expectations itself except
+/// unit-length directions.
+inline SamplingReport measure_sampling(const Material& material, const Material& model,
+                                       const Vec3& incoming, const Vec3& normal,
+                                       std::uint64_t seed, const std::string& label,
+                                       int samples) {
   constexpr int CosBins = 20, PhiBins = 20;
   const TestFrame frame(normal);
   Rng rng(seed, 0, 0, RandomStream::Scattering);
@@ -142,8 +146,8 @@ inline SamplingReport check_sampling(const Material& material, const Vec3& incom
       observed[other_cell] += 1;
       continue;
     }
-    const Vec3 f = material.eval(incoming, out->direction, normal);
-    const double density = material.pdf(incoming, out->direction, normal);
+    const Vec3 f = model.eval(incoming, out->direction, normal);
+    const double density = model.pdf(incoming, out->direction, normal);
     const double cos_o = std::fabs(dot(out->direction, normal));
     for (int c = 0; c < 3; ++c) {
       const double expected = density > 0 ? f[c] * cos_o / density : 0.0;
@@ -162,14 +166,14 @@ inline SamplingReport check_sampling(const Material& material, const Vec3& incom
     const double variance = std::max(0.0, sum2[c] / samples - mean * mean);
     report.weight_sigma_of_mean[c] = std::sqrt(variance / (samples - 1.0));
   }
-  report.albedo = material.albedo(incoming, normal);
+  report.albedo = model.albedo(incoming, normal);
 
   // Expected counts: pdf() integrated over each cell adaptively (see integrate_cell).
   std::vector<double> expected(observed.size(), 0.0);
   double total_probability = 0;
   const double dcos = 2.0 / CosBins, dphi = 2 * Pi / PhiBins;
   const auto density = [&](double cos_theta, double phi) {
-    return material.pdf(incoming, frame.world(cos_theta, phi), normal);
+    return model.pdf(incoming, frame.world(cos_theta, phi), normal);
   };
   for (int ci = 0; ci < CosBins; ++ci)
     for (int pi = 0; pi < PhiBins; ++pi) {
@@ -207,13 +211,22 @@ inline SamplingReport check_sampling(const Material& material, const Vec3& incom
   report.chi2 = chi2;
   report.dof = std::max(1, cells - 1);
   report.p_value = cells > 1 ? chi2_p_value(chi2, report.dof) : (chi2 > 0 ? 0.0 : 1.0);
-
   if (std::getenv("DAYPHOTON_TEST_VERBOSE"))  // numbers for docs and reports
     std::printf("%-34s chi2 %8.1f dof %3d p %.3g | E[w] %.5f albedo %.5f sigma %.1e | delta %d absorbed %d\n",
                 label.c_str(), chi2, report.dof, report.p_value, report.mean_weight.y,
                 report.albedo.y, report.weight_sigma_of_mean.y, report.delta, report.absorbed);
+  return report;
+}
+
+/// Runs the checks above and reports them with gtest expectations tagged by `label`.
+inline SamplingReport check_sampling(const Material& material, const Vec3& incoming,
+                                     const Vec3& normal, std::uint64_t seed,
+                                     const std::string& label, int samples = 100000) {
+  const SamplingReport report =
+      measure_sampling(material, material, incoming, normal, seed, label, samples);
+
   EXPECT_LT(report.max_consistency_error, 1e-9) << label;
-  EXPECT_GT(report.p_value, 1e-3) << label << ": chi2 " << chi2 << " dof " << report.dof;
+  EXPECT_GT(report.p_value, 1e-3) << label << ": chi2 " << report.chi2 << " dof " << report.dof;
   for (int c = 0; c < 3; ++c) {
     // 4 sigma of the sample mean. The 1e-10 absolute term covers zero-variance cases (a pure
     // Lambertian or a mirror, whose weight is the constant albedo): summing 1e5 terms in
