@@ -68,6 +68,19 @@ TEST(MaterialWard, AlbedoQuadratureMatchesDirectIntegration) {
     }
 }
 
+TEST(MaterialWard, NormalIncidenceAlbedoHasAClosedForm) {
+  // At normal incidence i = n, the half vector at slope angle delta reflects to
+  // cos_o = cos(2 delta), and the sample weight cos_o / ((i.h) cos delta) is 1 - tan^2 delta.
+  // With tan^2 delta = alpha^2 X, X ~ Exp(1) (the sampling law), and the horizon clip
+  // tan delta < 1:  albedo = E[(1 - alpha^2 X) 1{X < 1/alpha^2}]
+  //                        = 1 - alpha^2 + alpha^2 exp(-1 / alpha^2).
+  const Vec3 n = tilted_normal();
+  for (double alpha : {0.02, 0.1, 0.3, 0.5, 0.8, 1.0}) {
+    const double exact = 1 - alpha * alpha + alpha * alpha * std::exp(-1 / (alpha * alpha));
+    EXPECT_NEAR(ward_only(alpha).albedo(incident_direction(n, 0, 0), n).x, exact, 1e-9) << alpha;
+  }
+}
+
 TEST(MaterialWard, AlbedoNeverExceedsOne) {
   const Vec3 n = tilted_normal();
   for (double alpha : {0.01, 0.05, 0.1, 0.2, 0.5, 1.0}) {
