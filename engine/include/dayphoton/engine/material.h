@@ -1,7 +1,9 @@
 // Material: the scattering models photons and shadow rays meet (DESIGN.md section 5), built
 // from a MaterialSpec (core/scene_description.h). Each model offers sample / eval / pdf /
 // albedo so that tests can check sampling against evaluation (chi-square, sample/pdf
-// consistency, energy <= 1, reciprocity).
+// consistency, energy <= 1, reciprocity). Models, parameters, formulas and their RADIANCE
+// counterparts: docs/materials.md. Implementation: engine/src/material.cpp, with
+// fresnel.h, thin_glass_fresnel.h and ward_lobe.h.
 //
 // Direction conventions (the photon tracer's view):
 //   - `incoming` is the PROPAGATION direction of the arriving light (it points at the
@@ -18,7 +20,15 @@
 // `outgoing` through those components, component-selection probability included. For a
 // non-delta sample, weight == eval * |dot(outgoing, normal)| / pdf (the consistency the
 // tests check). Delta events (mirror, smooth specular, glass, refraction, straight
-// transmission) are flagged and covered only by sample().
+// transmission) are flagged and covered only by sample(). eval() is reciprocal in
+// propagation-direction form: eval(a, b, n) == eval(-b, -a, n).
+//
+// Component selection: sample() picks a component (diffuse / specular reflection, diffuse /
+// specular transmission) with probability proportional to the mean over RGB of its albedo at
+// this incidence, so that E[weight] = albedo per channel and, for white light, the photon
+// survives Russian roulette with probability equal to the mean albedo. Glossy (Ward) lobes
+// sample the half vector and absorb directions that fall below the surface (sample() returns
+// nothing), which is how their albedo falls below the specular reflectance.
 //
 // Analogue photon transport (seeds/000 section 3.1.1.2; digest section 2.1.4): the tracer
 // multiplies the photon's RGB flux by `weight`, then plays Russian roulette with survival
@@ -64,7 +74,10 @@ struct ScatterSample {
 class Material {
  public:
   /// Build the model of `spec`. Parameters are assumed valid (the project reader checks
-  /// ranges); throws std::invalid_argument if they are not.
+  /// ranges); throws std::invalid_argument if they are not. Glass additionally needs its
+  /// normal transmittance reachable by a pane of its index: Tn <= (1 - r0) / (1 + r0),
+  /// r0 = ((n - 1) / (n + 1))^2 (0.918 for n = 1.52); a clearer "glass" is an opening.
+  /// Glossy materials tabulate their lobe's albedo here (about 1 ms each).
   static Material from_spec(const MaterialSpec& spec);
 
   Material(const Material&);
@@ -78,8 +91,9 @@ class Material {
 
   /// Sample a scattering event for light arriving along `incoming`, from three independent
   /// uniform numbers in [0, 1) (u_component picks the component, u1/u2 the direction).
-  /// Returns nothing when the light is absorbed by the sampling itself (e.g. a glossy
-  /// direction below the surface); the caller still plays Russian roulette on `weight`.
+  /// Returns nothing when the light is absorbed by the sampling itself (a glossy direction
+  /// below the surface, or a material whose albedo is zero at this incidence); otherwise the
+  /// caller plays Russian roulette on `weight`.
   std::optional<ScatterSample> sample(const Vec3& incoming, const Vec3& normal,
                                       double u_component, double u1, double u2) const;
 
@@ -89,17 +103,21 @@ class Material {
   double pdf(const Vec3& incoming, const Vec3& outgoing, const Vec3& normal) const;
 
   /// Directional albedo: fraction of the light arriving along `incoming` that is scattered
-  /// (reflected + transmitted), per channel. Exact where a closed form exists; otherwise a
-  /// deterministic quadrature (documented in the implementation).
+  /// (reflected + transmitted), per channel. Exact where a closed form exists (diffuse,
+  /// mirror, thin glass, dielectric interface); for Ward lobes a deterministic quadrature
+  /// over the half vector (WardLobe::albedo, ~1e-6 accurate, ~0.1 ms): meant for setup and
+  /// tests, not for every photon.
   Vec3 albedo(const Vec3& incoming, const Vec3& normal) const;
 
   /// Per-channel transmittance of the straight (unrefracted) pass-through for light along
-  /// `incoming`: the thin-glass Fresnel transmittance, 1 for an opening, translucent's
-  /// specular transmission, 0 for everything else. Shadow rays of the direct component
-  /// pass through surfaces with this weight.
+  /// `incoming`: the thin-glass Fresnel transmittance, 1 for an opening, a smooth
+  /// (roughness 0) translucent's specular transmission, 0 for everything else (a rough
+  /// translucent spreads that light into a glossy lobe, which is in eval()). Shadow rays of
+  /// the direct component pass through surfaces with this weight.
   Vec3 straight_transmittance(const Vec3& incoming, const Vec3& normal) const;
 
-  /// True if the material has a diffuse component, i.e. photons arriving here are stored.
+  /// True if the material has a diffuse component (reflection or transmission) with non-zero
+  /// albedo, i.e. photons arriving here are stored.
   bool stores_photons() const;
 
   /// Dielectric only: per-channel transmission per metre of path inside the material
