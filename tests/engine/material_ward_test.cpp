@@ -85,17 +85,15 @@ TEST(MaterialWard, AlbedoNeverExceedsOne) {
   const Vec3 n = tilted_normal();
   for (double alpha : {0.01, 0.05, 0.1, 0.2, 0.5, 1.0}) {
     const Material m = ward_only(alpha);
-    double smallest = 1, largest = 0;
     for (double theta = 0; theta < 90; theta += 1.0) {
       const double a = m.albedo(incident_direction(n, theta, 0), n).x;
       EXPECT_LE(a, 1.0) << "alpha " << alpha << " theta " << theta;
       EXPECT_GT(a, 0.0);
-      smallest = std::min(smallest, a);
-      largest = std::max(largest, a);
     }
     // Smooth lobes lose almost nothing below the horizon at normal incidence.
-    if (alpha <= 0.05)
+    if (alpha <= 0.05) {
       EXPECT_GT(m.albedo(incident_direction(n, 0, 0), n).x, 0.99) << alpha;
+    }
   }
 }
 
