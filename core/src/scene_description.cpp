@@ -10,6 +10,7 @@ const char* material_type_name(MaterialType type) {
     case MaterialType::Glass: return "glass";
     case MaterialType::Dielectric: return "dielectric";
     case MaterialType::Translucent: return "translucent";
+    case MaterialType::Opening: return "opening";
   }
   return "unknown";
 }

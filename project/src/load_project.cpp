@@ -245,6 +245,8 @@ class Loader {
         m.type = MaterialType::Dielectric;
         r.read_number("refractive_index", m.refractive_index);
         r.read_rgb("transmittance", m.transmittance);
+      } else if (type == "opening") {
+        m.type = MaterialType::Opening;
       }
       r.finish();
       m_project.materials.push_back(std::move(m));

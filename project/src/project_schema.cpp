@@ -36,7 +36,8 @@ struct P {
 using T = ParamType;
 
 const std::vector<std::string> MaterialTypes = {"lambertian", "plastic", "metal", "mirror",
-                                                "glass", "dielectric", "translucent"};
+                                                "glass", "dielectric", "translucent",
+                                                "opening"};
 
 ParamSchema material_type() {
   return P("type", T::Choice, "material model").required().choices(MaterialTypes);
@@ -109,6 +110,9 @@ std::vector<SectionSchema> build_schema() {
       material_type(), reflectance("reflectance, grey or [r, g, b]"), specularity(false), roughness(),
       P("transmissivity", T::Number, "fraction of the non-specularly reflected light that is transmitted").range(0, 1).required(),
       P("transmitted_specular", T::Number, "fraction of the transmitted light transmitted specularly").range(0, 1).def("0"),
+  }});
+  s.push_back({"opening material", "fully transparent aperture: an open window or an invisible photon port", {
+      material_type(),
   }});
   s.push_back({"geometry", "the building and its surroundings (model coordinates, metres)", {
       P("rooms", T::SectionList, "box-shaped rooms with windows").section("room"),

@@ -21,6 +21,7 @@ enum class MaterialType {
   Glass,        ///< thin glass: normal transmittance per RGB channel, Fresnel angular behaviour
   Dielectric,   ///< thick refracting interface (prisms): refractive index, RGB transmission
   Translucent,  ///< RADIANCE trans: plastic with diffuse/specular transmission
+  Opening,      ///< fully transparent aperture (an "invisible" photon port); no scattering
 };
 
 /// Name used in project files and messages ("lambertian", "metal", ...).
