@@ -1,0 +1,160 @@
+// Office daylight factor against RADIANCE: traces the reference office (projects/office, the
+// room of ../shared/refdata) with the engine alone, multiplies the coefficients by the CIE
+// overcast sky vector (ground reflectance 0.2, as gensky -g 0.2) and compares each sensor
+// with refdata's rtrace result (a_daylight_factor/df_office.csv, DF_main_pct), then the
+// per-bin sums over sensors with refdata's rfluxmtx matrix (b_dc_classic).
+//
+// Usage: office_daylight_factor [photons_per_bin=20000] [bandwidth=50]
+//                               [estimator=per_source|contribution] [direct_samples=64]
+// Prints time per stage, photons/s and the accuracy figures of issue 5's acceptance:
+// RMS of the per-sensor relative DF difference (goal <= 2 %) and the largest (goal <= 5 %).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../tests/reference_data.h"
+#include "dayphoton/core/units.h"
+#include "dayphoton/engine/daylight_coefficients.h"
+#include "dayphoton/engine/photon_tracer.h"
+#include "dayphoton/project/project.h"
+#include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/sky/sky_model.h"
+
+using namespace dayphoton;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+std::vector<double> read_reference_df(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);  // header
+  std::vector<double> df;
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string field;
+    for (int i = 0; i < 6 && std::getline(ss, field, ','); ++i) {
+    }
+    df.push_back(std::stod(field));  // DF_main_pct
+  }
+  return df;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::size_t photons = argc > 1 ? std::stoul(argv[1]) : 20000;
+  const std::size_t bandwidth = argc > 2 ? std::stoul(argv[2]) : 50;
+  const std::string estimator = argc > 3 ? argv[3] : "per_source";
+  const int direct_samples = argc > 4 ? std::stoi(argv[4]) : 64;
+  const std::string source_dir = DAYPHOTON_BENCH_SOURCE_DIR;
+  const std::string shared = source_dir + "/../shared";
+
+  const project::Project proj = project::load_project(source_dir + "/projects/office/project.yaml");
+  const SceneDescription description = project::build_scene_description(proj);
+  auto t0 = Clock::now();
+  const engine::Scene scene = engine::Scene::build(description);
+  std::vector<engine::Material> materials;
+  for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
+  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  const engine::SourceSet sources = engine::SourceSet::sky_bins(basis);
+  const SensorGrid& grid = description.grids.at(0);
+  const engine::ReceiverPlane plane = engine::ReceiverPlane::from_grid(grid);
+  const double t_build = seconds_since(t0);
+
+  engine::TracingOptions to;
+  to.photons_per_source = photons;
+  to.seed = 1;
+  t0 = Clock::now();
+  const engine::TracedPhotons traced = engine::trace_photons(scene, materials, sources, {plane}, to);
+  const double t_trace = seconds_since(t0);
+  std::uint64_t attempts = 0, stored = traced.surface.size() + traced.planes[0].size();
+  for (const auto& t : traced.tallies) attempts += t.prepass_attempts + t.mainpass_attempts;
+
+  engine::CoefficientOptions co;
+  co.density.bandwidth = bandwidth;
+  co.estimator = estimator == "contribution" ? engine::PhotonEstimator::Contribution
+                                             : engine::PhotonEstimator::PerSource;
+  co.direct.samples_per_source = direct_samples;
+  t0 = Clock::now();
+  const engine::GridPhotons gp = engine::GridPhotons::for_plane(plane, traced.planes[0], sources.size());
+  const double t_maps = seconds_since(t0);
+  t0 = Clock::now();
+  engine::DaylightCoefficients c;
+  c.sensors = grid.points.size();
+  c.sources = sources.size();
+  c.direct = engine::direct_coefficients(scene, materials, sources, grid.points, co.direct);
+  const double t_direct = seconds_since(t0);
+  t0 = Clock::now();
+  c.caustic.assign(c.sensors * c.sources, Vec3{0, 0, 0});
+  c.global.assign(c.sensors * c.sources, Vec3{0, 0, 0});
+  engine::estimate_photon_coefficients(gp, grid.points, co, c);
+  const double t_estimate = seconds_since(t0);
+
+  // CIE overcast sky of 10000 lux horizontal, ground 0.2 (gensky -c -B 55.866 -g 0.2).
+  const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(10000));
+  const Vec3 ground = sky::ground_radiance_rgb({0.2, 0.2, 0.2}, 10000, 0, {0, 0, -1});
+  const RadianceMatrix sv = sky::sky_vector(*overcast, basis, ground);
+  const std::vector<double> ref = read_reference_df(shared + "/refdata/results/a_daylight_factor/df_office.csv");
+  double sum2 = 0, worst = 0, mean_ours = 0, mean_ref = 0;
+  std::size_t worst_at = 0;
+  std::vector<double> row_ours(15, 0), row_ref(15, 0);
+  for (std::size_t s = 0; s < c.sensors; ++s) {
+    Vec3 e{0, 0, 0};
+    for (std::size_t p = 0; p < c.sources; ++p) {
+      const Vec3 cp = c.total(s, p);
+      e = e + mul(cp, Vec3{sv.at(p, 0, 0), sv.at(p, 0, 1), sv.at(p, 0, 2)});
+    }
+    const double df = rgb_to_photometric(e) / 10000 * 100;
+    const double rel = df / ref[s] - 1;
+    sum2 += rel * rel;
+    if (std::fabs(rel) > std::fabs(worst)) { worst = rel; worst_at = s; }
+    mean_ours += df / c.sensors;
+    mean_ref += ref[s] / c.sensors;
+    row_ours[s / 11] += df / 11;
+    row_ref[s / 11] += ref[s] / 11;
+  }
+  std::printf("office DF, %zu stored photons per bin target, bandwidth %zu, %s, %d direct samples/bin\n",
+              photons, bandwidth, estimator.c_str(), direct_samples);
+  std::printf("  scene %.2f s, trace %.2f s (%.0f attempts/s, %.0f stored/s, %zu stored), maps %.2f s,"
+              " direct %.2f s, photon estimates %.2f s\n",
+              t_build, t_trace, attempts / t_trace, stored / t_trace, std::size_t(stored), t_maps,
+              t_direct, t_estimate);
+  std::printf("  mean DF %.3f %% (RADIANCE %.3f %%); per-sensor relative difference RMS %.2f %%, "
+              "largest %+.2f %% at sensor %zu\n",
+              mean_ours, mean_ref, 100 * std::sqrt(sum2 / c.sensors), 100 * worst, worst_at);
+  std::printf("  row means (y = 0.5 .. 7.5 m), ours / RADIANCE:\n   ");
+  for (int r = 0; r < 15; ++r) std::printf(" %.2f/%.2f", row_ours[r], row_ref[r]);
+  std::printf("\n");
+
+  // Per-bin sums over sensors against rfluxmtx (photometric, per unit radiance).
+  const RadianceMatrix dc = test::read_gzip_matrix(shared + "/refdata/results/b_dc_classic/office_dc_classic.mtx.gz");
+  double total_ref = 0;
+  std::vector<double> ours_bin(c.sources, 0), ref_bin(c.sources, 0);
+  for (std::size_t p = 0; p < c.sources; ++p) {
+    for (std::size_t s = 0; s < c.sensors; ++s) {
+      ours_bin[p] += rgb_to_photometric(c.total(s, p));
+      ref_bin[p] += rgb_to_photometric({dc.at(s, p, 0), dc.at(s, p, 1), dc.at(s, p, 2)});
+    }
+    total_ref += ref_bin[p];
+  }
+  double worst_bin = 0;
+  int compared = 0, worst_bin_at = -1;
+  for (std::size_t p = 0; p < c.sources; ++p) {
+    if (ref_bin[p] < 0.002 * total_ref) continue;  // non-negligible bins
+    ++compared;
+    const double rel = ours_bin[p] / ref_bin[p] - 1;
+    if (std::fabs(rel) > std::fabs(worst_bin)) { worst_bin = rel; worst_bin_at = int(p); }
+  }
+  std::printf("  per-bin sums over sensors vs rfluxmtx: %d bins above 0.2 %% of the total, largest "
+              "difference %+.2f %% (bin %d)\n", compared, 100 * worst_bin, worst_bin_at);
+  return 0;
+}

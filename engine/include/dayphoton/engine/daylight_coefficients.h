@@ -1,0 +1,94 @@
+// Daylight coefficients: C[s][p] = direct + caustic + global, the irradiance at sensor s per
+// unit radiance of source p (DESIGN.md sections 4-5; the matrix dctimestep multiplies by a
+// sky matrix).
+//
+//   direct  : shadow rays through the glazing (direct_component.h), the zero-event paths;
+//   caustic : photons whose paths had only specular events since the port;
+//   global  : photons with at least one diffuse event.
+// The tracer never stores zero-event photons and the shadow rays never follow a scattered
+// path, so each light path is counted once ("no double counting").
+//
+// Photon estimates at a sensor of a planar grid use the grid's receiver-plane photons
+// (photons crossing the plane); other sensors use the surface photons on the side their
+// normal faces (they must lie on a surface). Two estimators:
+//   - PerSource (default): for every source its own N nearest photons (one photon map per
+//     source), so each coefficient has N photons behind it and its own bandwidth;
+//   - Contribution: seeds/001 eq. 18, the N nearest photons of all sources, binned by source.
+// Boundary correction (planar grids): the kernel disc is clipped to the grid's outline (the
+// room), where photons can cross, and the estimate divides by the clipped area instead of
+// pi r^2 (exact for the uniform kernel; for the others the same area ratio is applied).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/engine/density_estimate.h"
+#include "dayphoton/engine/direct_component.h"
+#include "dayphoton/engine/distant_source.h"
+#include "dayphoton/engine/material.h"
+#include "dayphoton/engine/photon.h"
+#include "dayphoton/engine/photon_map.h"
+#include "dayphoton/engine/receiver_plane.h"
+#include "dayphoton/engine/scene.h"
+
+namespace dayphoton::engine {
+
+enum class PhotonEstimator { PerSource, Contribution };
+
+struct CoefficientOptions {
+  DensityEstimateOptions density;  ///< bandwidth (photons per estimate), max radius, kernel
+  PhotonEstimator estimator = PhotonEstimator::PerSource;
+  bool boundary_correction = true;
+  DirectOptions direct;
+};
+
+/// The three parts of C, each [sensor * sources + source], RGB W/m^2 per unit radiance.
+struct DaylightCoefficients {
+  std::size_t sensors = 0, sources = 0;
+  std::vector<Vec3> direct, caustic, global;
+
+  Vec3 total(std::size_t s, std::size_t p) const {
+    const std::size_t i = s * sources + p;
+    return direct[i] + caustic[i] + global[i];
+  }
+  /// rows = sensors, columns = sources, 3 components (RADIANCE matrix layout).
+  RadianceMatrix to_matrix() const;
+};
+
+/// The photons one grid's estimates use, arranged for lookups.
+class GridPhotons {
+ public:
+  /// Photons of a planar grid's receiver plane (`plane_photons`, all sources).
+  static GridPhotons for_plane(const ReceiverPlane& plane, std::vector<Photon> plane_photons,
+                               std::size_t source_count);
+  /// Surface photons (for sensors lying on surfaces).
+  static GridPhotons for_surfaces(std::vector<Photon> surface_photons, std::size_t source_count);
+
+  bool planar() const { return m_plane.has_value(); }
+  const ReceiverPlane* plane() const { return m_plane ? &*m_plane : nullptr; }
+  const PhotonMap& all() const { return m_all; }
+  const PhotonMap& of_source(std::size_t p) const { return m_by_source[p]; }
+  std::size_t source_count() const { return m_by_source.size(); }
+
+ private:
+  std::optional<ReceiverPlane> m_plane;
+  PhotonMap m_all;
+  std::vector<PhotonMap> m_by_source;
+};
+
+/// Photon part (caustic, global) of the coefficients at `sensors`; parallel over sensors,
+/// deterministic. `out` must be sized (sensors x sources) in caustic/global.
+void estimate_photon_coefficients(const GridPhotons& photons,
+                                  const std::vector<SensorPoint>& sensors,
+                                  const CoefficientOptions& options, DaylightCoefficients& out);
+
+/// Everything: direct by shadow rays plus the photon estimates.
+DaylightCoefficients daylight_coefficients(const Scene& scene,
+                                           const std::vector<Material>& materials,
+                                           const SourceSet& sources, const GridPhotons& photons,
+                                           const std::vector<SensorPoint>& sensors,
+                                           const CoefficientOptions& options);
+
+}  // namespace dayphoton::engine

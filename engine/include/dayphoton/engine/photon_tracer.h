@@ -1,0 +1,113 @@
+// Photon tracer: the forward pass of the contribution photon map (DESIGN.md section 5;
+// seeds/000 sections 3.1.1 and 4.1; seeds/001 sections 2-4).
+//
+// Every source (sky bin, sun disc) emits its own photons through the ports (PortEmitter).
+// Transport is analogue (seeds/000 section 3.1.1.2): the material's sample() picks the
+// event and direction, the RGB flux is multiplied by the sample weight and Russian roulette
+// with the FLUX-WEIGHTED survival probability P = mean(flux * weight) / mean(flux) keeps the
+// photon flux constant without biasing coloured light (digest section 2.1.4).
+//
+// Path classes and storage (digest section 2.1.5):
+//   - a photon that has not scattered since the port (StraightTransmission through glazing
+//     or openings does not count as scattering) is DIRECT: its hits and plane crossings are
+//     not stored, because the direct component comes from shadow rays
+//     (direct_component.h) that pass exactly the same straight transmissions;
+//   - after only specular events (delta or glossy reflection/refraction) it is CAUSTIC;
+//   - after at least one diffuse event it is GLOBAL.
+//   Photons are stored at every hit on a surface with a diffuse component and at every
+//   crossing of a receiver plane from its front side inside its outline. With
+//   store_direct, direct photons are stored too (flagged Direct), for diagnostics only.
+//
+// Photon counts (seeds/000 section 4.1.4, Alg. 4.1/4.2; seeds/001 section 4.2.1: an equal
+// number of stored photons per source): a pre-pass of k * target attempts (doubled until
+// every targeted class has enough photons to measure its yield, or is found absent;
+// attempts accumulate, nothing is discarded), then a main pass sized so that each class
+// reaches its target, storing class j with probability d_j (flux / d_j), then one top-up run
+// sized from the main pass's own yield. All photons of a source share the flux
+// bound_flux / (all attempts) (port_emission.h), times 1/d_j.
+//
+// Determinism: attempt i of source p uses Rng(seed, p, i, stream) for the emission,
+// scattering and roulette streams; attempts are traced in blocks in parallel (oneTBB) and
+// the stored photons concatenated in (source, attempt) order, so the result is identical
+// for any number of threads.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "dayphoton/core/vec3.h"
+#include "dayphoton/engine/distant_source.h"
+#include "dayphoton/engine/material.h"
+#include "dayphoton/engine/photon.h"
+#include "dayphoton/engine/random.h"
+#include "dayphoton/engine/receiver_plane.h"
+#include "dayphoton/engine/scene.h"
+
+namespace dayphoton::engine {
+
+struct TracingOptions {
+  /// Target number of stored GLOBAL photons per source (surfaces and planes together).
+  std::size_t photons_per_source = 20000;
+  /// Target number of stored CAUSTIC photons per source; 0 = no target of its own (caustic
+  /// photons are then stored with the global photons' probability).
+  std::size_t caustic_photons_per_source = 0;
+  std::uint64_t seed = 1;
+  double prepass_fraction = 0.25;        ///< k of Alg. 4.1
+  /// A source gives up (stores nothing) when its pre-pass reaches this many attempts
+  /// per targeted photon without storing any (e.g. a sun behind the building).
+  std::size_t max_prepass_attempts_per_target = 256;
+  bool store_direct = false;             ///< also store Direct photons (diagnostics)
+  std::optional<Bounds3> region_of_interest;  ///< store only photons inside this box
+  int max_events = 512;                  ///< safety cap on scattering events per path
+};
+
+/// What happened to one source's photons.
+struct SourceTally {
+  std::uint64_t prepass_attempts = 0;
+  std::uint64_t mainpass_attempts = 0;   ///< main pass and its top-up
+  std::uint64_t entered = 0;             ///< accepted, unoccluded emissions
+  std::uint64_t stored_global = 0, stored_caustic = 0, stored_direct = 0;
+  double bound_flux = 0;                 ///< PortEmitter::bound_flux
+  double flux_per_attempt = 0;           ///< bound_flux / all attempts
+  double storage_probability_global = 1, storage_probability_caustic = 1;
+};
+
+struct TracedPhotons {
+  std::vector<Photon> surface;              ///< stored on surfaces with a diffuse component
+  std::vector<std::vector<Photon>> planes;  ///< per receiver plane (argument order)
+  std::vector<SourceTally> tallies;         ///< per source
+};
+
+/// The forward pass for every source of `sources`. `materials[m]` models scene material m.
+TracedPhotons trace_photons(const Scene& scene, const std::vector<Material>& materials,
+                            const SourceSet& sources, const std::vector<ReceiverPlane>& planes,
+                            const TracingOptions& options);
+
+// ---- one path (exposed for tests with local sources, e.g. the furnace) -----------------
+
+/// Where a path's records go. Flux is relative (the caller scales it); `plane` is the
+/// receiver plane index for plane crossings, -1 for surface hits.
+class PhotonSink {
+ public:
+  virtual ~PhotonSink() = default;
+  virtual void record(int plane, const Photon& photon) = 0;
+};
+
+struct PathStart {
+  Vec3 origin;           ///< metres, already off any surface
+  Vec3 direction;        ///< propagation direction, unit
+  Vec3 flux{1, 1, 1};    ///< RGB, relative
+  std::uint32_t source = 0;
+  bool scattered = false;         ///< false: the path starts as Direct
+  bool diffuse_scattered = false; ///< true: the path is already Global
+};
+
+/// Trace one photon path, reporting stored records to `sink` (Direct records only if
+/// options.store_direct). `scattering` and `roulette` are the path's two streams.
+void trace_path(const Scene& scene, const std::vector<Material>& materials,
+                const std::vector<ReceiverPlane>& planes, const PathStart& start,
+                const TracingOptions& options, Rng& scattering, Rng& roulette, PhotonSink& sink);
+
+}  // namespace dayphoton::engine

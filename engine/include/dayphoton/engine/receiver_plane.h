@@ -1,0 +1,52 @@
+// ReceiverPlane: a horizontal virtual sensor plane (DESIGN.md section 5). Sensor grids float
+// in the room (a work plane at 0.8 m is not a surface), so the photon tracer records every
+// photon that crosses a grid's plane from its front side, inside the grid's outline, without
+// disturbing it; the density estimate of those crossings is the irradiance on the plane
+// (the flux crossing a unit area per unit time, so no cosine weighting is needed).
+//
+// The plane also answers the geometric question of the boundary-corrected estimate: what
+// area of a kernel disc lies inside the outline (photons cannot cross outside the room,
+// so dividing by the full pi r^2 near a wall would underestimate: the "boundary bias" of
+// seeds/000 section 5.1).
+#pragma once
+
+#include <vector>
+
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/core/vec3.h"
+
+namespace dayphoton::engine {
+
+/// A point of the outline in plane coordinates (x, y of the world; the plane is horizontal).
+struct PlanePoint {
+  double x = 0, y = 0;
+};
+
+class ReceiverPlane {
+ public:
+  /// The plane of a planar grid (SensorGrid::planar, normal +Z or -Z). Throws
+  /// std::invalid_argument for a non-planar grid or an outline with fewer than 3 points.
+  static ReceiverPlane from_grid(const SensorGrid& grid);
+  /// Horizontal plane at height z_m facing `up` (+Z) or down, with outline `outline`.
+  ReceiverPlane(double z_m, bool faces_up, std::vector<PlanePoint> outline);
+
+  double height_m() const { return m_z_m; }
+  Vec3 normal() const { return {0, 0, m_faces_up ? 1.0 : -1.0}; }
+
+  /// Ray parameter where origin + t d crosses the plane from the front (against the normal),
+  /// or a negative value if it does not (parallel, leaving, or behind the origin).
+  double front_crossing(const Vec3& origin, const Vec3& direction) const;
+  /// True if (x, y) is inside the outline (even-odd rule).
+  bool contains(double x, double y) const;
+  /// Area of the disc of radius r_m centred on (x, y) that lies inside the outline, m^2
+  /// (exact: a sum of signed circle-triangle intersections over the outline's edges).
+  double disc_area_inside_m2(double x, double y, double r_m) const;
+
+ private:
+  double m_z_m = 0;
+  bool m_faces_up = true;
+  std::vector<PlanePoint> m_outline;
+  double m_min_x = 0, m_max_x = 0, m_min_y = 0, m_max_y = 0;
+};
+
+}  // namespace dayphoton::engine

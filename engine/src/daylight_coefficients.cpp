@@ -1,0 +1,129 @@
+// Daylight coefficients: see daylight_coefficients.h.
+#include "dayphoton/engine/daylight_coefficients.h"
+
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "dayphoton/core/units.h"
+
+namespace dayphoton::engine {
+namespace {
+
+std::vector<PhotonMap> split_by_source(const std::vector<Photon>& photons, std::size_t sources) {
+  std::vector<std::vector<Photon>> parts(sources);
+  for (const Photon& p : photons)
+    if (p.source < sources) parts[p.source].push_back(p);
+  std::vector<PhotonMap> maps(sources);
+  tbb::parallel_for(std::size_t(0), sources,
+                    [&](std::size_t s) { maps[s] = PhotonMap(std::move(parts[s])); });
+  return maps;
+}
+
+// pi r^2 / (area of the kernel disc inside the outline): 1 away from walls.
+double boundary_factor(const ReceiverPlane* plane, const Vec3& at, double radius_m) {
+  if (!plane || radius_m <= 0) return 1.0;
+  const double inside = plane->disc_area_inside_m2(at.x, at.y, radius_m);
+  const double full = Pi * radius_m * radius_m;
+  return inside > 1e-12 * full ? full / inside : 1.0;
+}
+
+}  // namespace
+
+RadianceMatrix DaylightCoefficients::to_matrix() const {
+  RadianceMatrix m(sensors, sources, 3);
+  for (std::size_t s = 0; s < sensors; ++s)
+    for (std::size_t p = 0; p < sources; ++p) {
+      const Vec3 c = total(s, p);
+      m.at(s, p, 0) = static_cast<float>(c.x);
+      m.at(s, p, 1) = static_cast<float>(c.y);
+      m.at(s, p, 2) = static_cast<float>(c.z);
+    }
+  return m;
+}
+
+GridPhotons GridPhotons::for_plane(const ReceiverPlane& plane, std::vector<Photon> plane_photons,
+                                   std::size_t source_count) {
+  GridPhotons g;
+  g.m_plane = plane;
+  g.m_by_source = split_by_source(plane_photons, source_count);
+  g.m_all = PhotonMap(std::move(plane_photons));
+  return g;
+}
+
+GridPhotons GridPhotons::for_surfaces(std::vector<Photon> surface_photons,
+                                      std::size_t source_count) {
+  GridPhotons g;
+  g.m_by_source = split_by_source(surface_photons, source_count);
+  g.m_all = PhotonMap(std::move(surface_photons));
+  return g;
+}
+
+void estimate_photon_coefficients(const GridPhotons& photons,
+                                  const std::vector<SensorPoint>& sensors,
+                                  const CoefficientOptions& options, DaylightCoefficients& out) {
+  const std::size_t n_src = out.sources;
+  const ReceiverPlane* plane = photons.plane();
+  auto filter_for = [&](const SensorPoint& s, PathClass c) {
+    PhotonFilter f;
+    f.path_classes = path_class_bit(c);
+    if (!plane) {  // surface photons: only those that arrived on the sensor's side
+      f.check_normal = true;
+      f.normal = s.normal;
+    }
+    return f;
+  };
+  tbb::parallel_for(std::size_t(0), sensors.size(), [&](std::size_t s) {
+    const SensorPoint& sensor = sensors[s];
+    const Vec3 at = plane ? Vec3{sensor.position.x, sensor.position.y, plane->height_m()}
+                          : sensor.position;
+    if (options.estimator == PhotonEstimator::PerSource) {
+      for (std::size_t p = 0; p < n_src && p < photons.source_count(); ++p) {
+        const PhotonMap& map = photons.of_source(p);
+        if (map.empty()) continue;
+        // One lookup over both classes fixes the radius; each class is then summed within it.
+        PhotonFilter both = filter_for(sensor, PathClass::Global);
+        both.path_classes = IndirectPathClasses;
+        const DensityEstimate all = estimate_irradiance(map, at, both, options.density);
+        if (all.photon_count == 0) continue;
+        DensityEstimateOptions fixed = options.density;
+        fixed.bandwidth = all.photon_count;
+        fixed.max_radius_m = all.radius_m;
+        fixed.average_radius = false;
+        const double b = options.boundary_correction ? boundary_factor(plane, at, all.radius_m) : 1.0;
+        const DensityEstimate caustic =
+            estimate_irradiance(map, at, filter_for(sensor, PathClass::Caustic), fixed);
+        const DensityEstimate global =
+            estimate_irradiance(map, at, filter_for(sensor, PathClass::Global), fixed);
+        out.caustic[s * n_src + p] = caustic.irradiance * b;
+        out.global[s * n_src + p] = global.irradiance * b;
+      }
+    } else {
+      for (PathClass c : {PathClass::Caustic, PathClass::Global}) {
+        std::vector<Vec3> per_source(n_src, Vec3{0, 0, 0});
+        const DensityEstimate e =
+            estimate_contributions(photons.all(), at, filter_for(sensor, c), options.density, per_source);
+        const double b = options.boundary_correction ? boundary_factor(plane, at, e.radius_m) : 1.0;
+        std::vector<Vec3>& part = c == PathClass::Caustic ? out.caustic : out.global;
+        for (std::size_t p = 0; p < n_src; ++p) part[s * n_src + p] = per_source[p] * b;
+      }
+    }
+  });
+}
+
+DaylightCoefficients daylight_coefficients(const Scene& scene,
+                                           const std::vector<Material>& materials,
+                                           const SourceSet& sources, const GridPhotons& photons,
+                                           const std::vector<SensorPoint>& sensors,
+                                           const CoefficientOptions& options) {
+  DaylightCoefficients c;
+  c.sensors = sensors.size();
+  c.sources = sources.size();
+  c.caustic.assign(c.sensors * c.sources, Vec3{0, 0, 0});
+  c.global.assign(c.sensors * c.sources, Vec3{0, 0, 0});
+  c.direct = direct_coefficients(scene, materials, sources, sensors, options.direct);
+  estimate_photon_coefficients(photons, sensors, options, c);
+  return c;
+}
+
+}  // namespace dayphoton::engine

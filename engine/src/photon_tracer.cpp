@@ -1,0 +1,339 @@
+// Photon tracer: see photon_tracer.h for the method, its sources and the storage rules.
+#include "dayphoton/engine/photon_tracer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <tbb/parallel_for.h>
+
+#include "dayphoton/engine/port_emission.h"
+
+namespace dayphoton::engine {
+namespace {
+
+constexpr std::uint64_t AttemptsPerBlock = 1024;
+
+double channel_mean(const Vec3& v) { return (v.x + v.y + v.z) / 3.0; }
+
+bool inside(const Bounds3& b, const Vec3& p) {
+  return p.x >= b.lower.x && p.x <= b.upper.x && p.y >= b.lower.y && p.y <= b.upper.y &&
+         p.z >= b.lower.z && p.z <= b.upper.z;
+}
+
+Photon make_photon(const Vec3& position, const Vec3& flux, const Vec3& normal,
+                   std::uint32_t source, PathClass path_class) {
+  Photon ph;
+  ph.position = {float(position.x), float(position.y), float(position.z)};
+  ph.flux = {float(flux.x), float(flux.y), float(flux.z)};
+  ph.source = source;
+  ph.set_normal(normal);
+  ph.path_class = path_class;
+  return ph;
+}
+
+// Flux-weighted Russian roulette after multiplying by `weight` (digest section 2.1.4).
+// Returns false if the photon is absorbed; otherwise `flux` holds the survivor's flux.
+bool roulette(Vec3& flux, const Vec3& weight, Rng& rng) {
+  const double before = channel_mean(flux);
+  const Vec3 after = mul(flux, weight);
+  const double survive = before > 0 ? channel_mean(after) / before : 0.0;
+  const double u = rng.uniform();
+  if (!(survive > 0)) return false;
+  if (survive < 1) {
+    if (u >= survive) return false;
+    flux = after * (1.0 / survive);
+  } else {
+    flux = after;  // weight > 1 on average (possible for glossy lobes): no roulette needed
+  }
+  return true;
+}
+
+// Collects one block's records, applying the main pass's storage probabilities.
+struct BlockResult {
+  std::vector<Photon> surface;
+  std::vector<std::vector<Photon>> planes;
+  std::uint64_t entered = 0, global = 0, caustic = 0, direct = 0;
+};
+
+class BlockSink final : public PhotonSink {
+ public:
+  BlockSink(BlockResult& out, const TracingOptions& options, double d_global, double d_caustic)
+      : m_out(out), m_options(options), m_d_global(d_global), m_d_caustic(d_caustic) {}
+  void set_rng(Rng* storage) { m_storage = storage; }
+
+  void record(int plane, const Photon& photon) override {
+    if (m_options.region_of_interest && !inside(*m_options.region_of_interest, photon.position_m()))
+      return;
+    Photon stored = photon;
+    if (photon.path_class != PathClass::Direct) {
+      const double d = photon.path_class == PathClass::Global ? m_d_global : m_d_caustic;
+      if (d < 1) {
+        if (!(m_storage->uniform() < d)) return;
+        for (float& f : stored.flux) f = static_cast<float>(f / d);
+      }
+    }
+    (photon.path_class == PathClass::Global    ? m_out.global
+     : photon.path_class == PathClass::Caustic ? m_out.caustic
+                                               : m_out.direct)++;
+    if (plane < 0) {
+      m_out.surface.push_back(stored);
+    } else {
+      m_out.planes[static_cast<std::size_t>(plane)].push_back(stored);
+    }
+  }
+
+ private:
+  BlockResult& m_out;
+  const TracingOptions& m_options;
+  double m_d_global, m_d_caustic;
+  Rng* m_storage = nullptr;
+};
+
+// The port's own scattering event (seeds/000 section 4.1.3: photons leave the port "as if
+// they had passed through it"). Returns the path start, or nothing if the photon is
+// reflected back out or absorbed.
+std::optional<PathStart> pass_port(const Scene& scene, const std::vector<Material>& materials,
+                                   const PortEntry& entry, std::uint32_t source, Rng& scattering,
+                                   Rng& roulette_rng) {
+  const Port& port = scene.ports()[static_cast<std::size_t>(entry.port)];
+  const Material& material =
+      materials[static_cast<std::size_t>(scene.description().surfaces[port.surface].material)];
+  const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
+  const std::optional<ScatterSample> s = material.sample(entry.direction, port.normal, u0, u1, u2);
+  if (!s) return std::nullopt;
+  PathStart start;
+  start.flux = {1, 1, 1};
+  if (!roulette(start.flux, s->weight, roulette_rng)) return std::nullopt;
+  if (dot(s->direction, port.normal) <= 0) return std::nullopt;  // back out of the room
+  start.direction = s->direction;
+  start.origin = scene.offset_ray_origin(entry.position, port.normal, s->direction);
+  start.source = source;
+  start.scattered = s->type != ScatterType::StraightTransmission;
+  start.diffuse_scattered = is_diffuse(s->type);
+  return start;
+}
+
+}  // namespace
+
+void trace_path(const Scene& scene, const std::vector<Material>& materials,
+                const std::vector<ReceiverPlane>& planes, const PathStart& start,
+                const TracingOptions& options, Rng& scattering, Rng& roulette_rng,
+                PhotonSink& sink) {
+  Vec3 flux = start.flux;
+  bool scattered = start.scattered;
+  bool diffuse = start.diffuse_scattered;
+  Ray ray{start.origin, start.direction, 0.0, std::numeric_limits<double>::infinity()};
+  for (int event = 0; event <= options.max_events; ++event) {
+    const PathClass path_class = !scattered ? PathClass::Direct
+                                 : diffuse  ? PathClass::Global
+                                            : PathClass::Caustic;
+    const bool store = scattered || options.store_direct;
+    const std::optional<Hit> hit = scene.intersect(ray);
+    const double t_end = hit ? hit->t : std::numeric_limits<double>::infinity();
+    if (store) {
+      for (std::size_t g = 0; g < planes.size(); ++g) {
+        const double t = planes[g].front_crossing(ray.origin, ray.direction);
+        if (!(t >= ray.tmin && t < t_end)) continue;
+        const Vec3 p = ray.origin + ray.direction * t;
+        if (!planes[g].contains(p.x, p.y)) continue;
+        sink.record(static_cast<int>(g),
+                    make_photon({p.x, p.y, planes[g].height_m()}, flux, planes[g].normal(),
+                                start.source, path_class));
+      }
+    }
+    if (!hit) return;
+    const Material& material = materials[static_cast<std::size_t>(hit->material)];
+    if (!hit->front_face && material.type() == MaterialType::Dielectric) {
+      // The segment ran inside the dielectric: Beer-Lambert attenuation per metre.
+      const Vec3 tpm = material.interior_transmittance_per_m();
+      flux = mul(flux, {std::pow(tpm.x, hit->t), std::pow(tpm.y, hit->t), std::pow(tpm.z, hit->t)});
+    }
+    if (store && material.stores_photons()) {
+      const Vec3 side = hit->front_face ? hit->normal : hit->normal * -1.0;
+      sink.record(-1, make_photon(hit->position, flux, side, start.source, path_class));
+    }
+    const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
+    const std::optional<ScatterSample> s = material.sample(ray.direction, hit->normal, u0, u1, u2);
+    if (!s) return;
+    if (!roulette(flux, s->weight, roulette_rng)) return;
+    if (s->type != ScatterType::StraightTransmission) {
+      scattered = true;
+      diffuse = diffuse || is_diffuse(s->type);
+    }
+    ray = Ray{scene.offset_ray_origin(hit->position, hit->normal, s->direction), s->direction,
+              0.0, std::numeric_limits<double>::infinity()};
+  }
+}
+
+namespace {
+
+struct SourceResult {
+  std::vector<Photon> surface;
+  std::vector<std::vector<Photon>> planes;
+  SourceTally tally;
+};
+
+// Trace attempts [first, last) of `source`, in parallel blocks, appending to `result`.
+void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
+                    const std::vector<ReceiverPlane>& planes, const PortEmitter& emitter,
+                    std::uint32_t source, std::uint64_t first, std::uint64_t last,
+                    double d_global, double d_caustic, const TracingOptions& options,
+                    SourceResult& result) {
+  if (last <= first) return;
+  const std::uint64_t blocks = (last - first + AttemptsPerBlock - 1) / AttemptsPerBlock;
+  std::vector<BlockResult> block_results(blocks);
+  tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t b) {
+    BlockResult& out = block_results[b];
+    out.planes.resize(planes.size());
+    BlockSink sink(out, options, d_global, d_caustic);
+    const std::uint64_t begin = first + b * AttemptsPerBlock;
+    const std::uint64_t end = std::min(last, begin + AttemptsPerBlock);
+    for (std::uint64_t i = begin; i < end; ++i) {
+      Rng emission(options.seed, source, i, RandomStream::Emission);
+      const std::optional<PortEntry> entry = emitter.attempt(source, emission);
+      if (!entry) continue;
+      ++out.entered;
+      Rng scattering(options.seed, source, i, RandomStream::Scattering);
+      Rng roulette_rng(options.seed, source, i, RandomStream::Roulette);
+      const std::optional<PathStart> start =
+          pass_port(scene, materials, *entry, source, scattering, roulette_rng);
+      if (!start) continue;
+      Rng storage(options.seed, source, i, RandomStream::Storage);
+      sink.set_rng(&storage);
+      trace_path(scene, materials, planes, *start, options, scattering, roulette_rng, sink);
+    }
+  });
+  result.planes.resize(planes.size());
+  for (BlockResult& b : block_results) {
+    result.surface.insert(result.surface.end(), b.surface.begin(), b.surface.end());
+    for (std::size_t g = 0; g < planes.size(); ++g)
+      result.planes[g].insert(result.planes[g].end(), b.planes[g].begin(), b.planes[g].end());
+    result.tally.entered += b.entered;
+    result.tally.stored_global += b.global;
+    result.tally.stored_caustic += b.caustic;
+    result.tally.stored_direct += b.direct;
+  }
+}
+
+SourceResult trace_source(const Scene& scene, const std::vector<Material>& materials,
+                          const std::vector<ReceiverPlane>& planes, const PortEmitter& emitter,
+                          std::uint32_t source, const TracingOptions& options) {
+  SourceResult result;
+  result.planes.resize(planes.size());
+  SourceTally& tally = result.tally;
+  tally.bound_flux = emitter.bound_flux(source);
+  if (tally.bound_flux <= 0) return result;
+
+  const std::size_t target_g = options.photons_per_source;
+  const std::size_t target_c = options.caustic_photons_per_source;
+  std::size_t smallest = target_g;
+  if (target_c > 0) smallest = std::min(smallest, target_c);
+  const std::size_t largest = std::max(target_g, target_c);
+  if (largest == 0) return result;
+
+  // Pre-pass (Alg. 4.1), every photon stored. The thesis doubles it while a map is empty;
+  // here it doubles until every targeted class has enough photons for its yield to be
+  // known to ~10 % (min(100, k * target) stored), or, if a class stays empty while another
+  // has enough after 64 doublings' worth of attempts, that class is taken as absent (e.g.
+  // caustics in an all-diffuse room), or the attempts reach the give-up limit (a source the
+  // ports see but whose light is blocked).
+  const std::uint64_t initial = std::max<std::uint64_t>(
+      1, static_cast<std::uint64_t>(std::ceil(options.prepass_fraction * double(smallest))));
+  std::uint64_t prepass = initial;
+  std::uint64_t done = 0;
+  const std::uint64_t give_up =
+      static_cast<std::uint64_t>(options.max_prepass_attempts_per_target) * largest;
+  auto enough = [&](std::size_t target, std::uint64_t stored) {
+    return target == 0 ||
+           double(stored) >= std::min(100.0, std::ceil(options.prepass_fraction * double(target)));
+  };
+  for (;;) {
+    trace_attempts(scene, materials, planes, emitter, source, done, prepass, 1.0, 1.0, options,
+                   result);
+    done = prepass;
+    const bool g_ok = enough(target_g, tally.stored_global);
+    const bool c_ok = enough(target_c, tally.stored_caustic);
+    const bool g_found = target_g > 0 && tally.stored_global > 0 && g_ok;
+    const bool c_found = target_c > 0 && tally.stored_caustic > 0 && c_ok;
+    if (g_ok && c_ok) break;
+    if ((g_found || c_found) && prepass >= 64 * initial) break;
+    if (prepass >= give_up) break;
+    prepass *= 2;
+  }
+  tally.prepass_attempts = prepass;
+
+  // Main pass (Alg. 4.2, eqs. 4.8-4.10): r_j = n_j / N_j - 1 from the pre-pass yields.
+  auto shortfall = [](std::size_t target, std::uint64_t stored) {
+    if (target == 0 || stored == 0) return 0.0;
+    return std::max(double(target) / double(stored), 1.0) - 1.0;
+  };
+  const double r_g = shortfall(target_g, tally.stored_global);
+  const double r_c = shortfall(target_c, tally.stored_caustic);
+  const double r_max = std::max(r_g, r_c);
+  if (r_max > 0) {
+    tally.storage_probability_global = r_g / r_max;
+    tally.storage_probability_caustic = target_c > 0 ? r_c / r_max : r_g / r_max;
+    const std::uint64_t main = static_cast<std::uint64_t>(std::ceil(double(prepass) * r_max));
+    const std::uint64_t g0 = tally.stored_global, c0 = tally.stored_caustic;
+    trace_attempts(scene, materials, planes, emitter, source, prepass, prepass + main,
+                   tally.storage_probability_global, tally.storage_probability_caustic, options,
+                   result);
+    tally.mainpass_attempts = main;
+    // Top-up (not in the thesis): the pre-pass yield has the noise of a few hundred photons,
+    // so the main pass can fall short by several per cent; its own yield (thousands of
+    // photons) sizes one more run of attempts with the same storage probabilities. Every
+    // attempt still carries bound_flux / attempts, so the flux stays unbiased.
+    double extra = 0;
+    auto need = [&](std::size_t target, std::uint64_t stored, std::uint64_t before) {
+      const double yield = double(stored - before) / double(main);
+      if (target == 0 || stored >= target || yield <= 0) return 0.0;
+      return double(target - stored) / yield;
+    };
+    extra = std::max(need(target_g, tally.stored_global, g0), need(target_c, tally.stored_caustic, c0));
+    const std::uint64_t topup =
+        std::min<std::uint64_t>(main, static_cast<std::uint64_t>(std::ceil(extra)));
+    if (topup > 0) {
+      trace_attempts(scene, materials, planes, emitter, source, prepass + main,
+                     prepass + main + topup, tally.storage_probability_global,
+                     tally.storage_probability_caustic, options, result);
+      tally.mainpass_attempts += topup;
+    }
+  }
+
+  // Normalise (eqs. 4.11-4.12): every attempt carries bound_flux / attempts.
+  tally.flux_per_attempt =
+      tally.bound_flux / double(tally.prepass_attempts + tally.mainpass_attempts);
+  const float scale = static_cast<float>(tally.flux_per_attempt);
+  auto rescale = [scale](std::vector<Photon>& photons) {
+    for (Photon& p : photons)
+      for (float& f : p.flux) f *= scale;
+  };
+  rescale(result.surface);
+  for (auto& plane : result.planes) rescale(plane);
+  return result;
+}
+
+}  // namespace
+
+TracedPhotons trace_photons(const Scene& scene, const std::vector<Material>& materials,
+                            const SourceSet& sources, const std::vector<ReceiverPlane>& planes,
+                            const TracingOptions& options) {
+  const PortEmitter emitter(scene, sources);
+  std::vector<SourceResult> results(sources.size());
+  tbb::parallel_for(std::size_t(0), sources.size(), [&](std::size_t p) {
+    results[p] = trace_source(scene, materials, planes, emitter, static_cast<std::uint32_t>(p),
+                              options);
+  });
+  TracedPhotons out;
+  out.planes.resize(planes.size());
+  for (SourceResult& r : results) {
+    out.surface.insert(out.surface.end(), r.surface.begin(), r.surface.end());
+    for (std::size_t g = 0; g < planes.size(); ++g)
+      out.planes[g].insert(out.planes[g].end(), r.planes[g].begin(), r.planes[g].end());
+    out.tallies.push_back(r.tally);
+  }
+  return out;
+}
+
+}  // namespace dayphoton::engine
