@@ -13,8 +13,9 @@
 // axis of largest extent of the range's photons (Bentley's k-d tree [Ben75] as Jensen lays
 // it out, with the thesis's median split); [lo, mid) holds photons <= it and [mid+1, hi)
 // photons >= it on that axis. Ranges of at most LeafSize photons are leaves, scanned
-// linearly: cheaper than descending three more levels. One byte per photon holds the split
-// axis; the tree therefore costs 33 bytes per photon in all.
+// linearly: cheaper than descending four more levels. One byte per photon holds the split
+// axis (only the bytes of node photons are used; the simple indexing is worth the rest),
+// so the map costs 33 bytes per photon in all.
 //
 // Tie-breaking (digest section 2.4: "ties are resolved by cyclic comparison in each
 // dimension"): photons are ordered on the split axis a by (p[a], p[a+1], p[a+2], input
@@ -65,9 +66,9 @@ struct NeighbourPhoton {
 
 class PhotonMap {
  public:
-  /// Ranges of at most this many photons are leaves (bench/photon_map_bench.cpp: 8 was
-  /// the fastest of 1, 4, 8, 16, 32 for k = 50..1000; see docs/photon-map.md).
-  static constexpr std::size_t LeafSize = 8;
+  /// Ranges of at most this many photons are leaves. Of 4, 8, 16 and 32, 16 was the best
+  /// compromise over k = 50..1000, with and without a source filter (docs/photon-map.md).
+  static constexpr std::size_t LeafSize = 16;
   /// Photon indices are 32-bit.
   static constexpr std::size_t MaxPhotons = 0xFFFFFFFFu;
 
