@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
   const std::size_t bandwidth = argc > 2 ? std::stoul(argv[2]) : 50;
   const std::string estimator = argc > 3 ? argv[3] : "per_source";
   const int direct_samples = argc > 4 ? std::stoi(argv[4]) : 64;
+  const double ground_factor = argc > 5 ? std::stod(argv[5]) : 1.0;
   const std::string source_dir = DAYPHOTON_BENCH_SOURCE_DIR;
   const std::string shared = source_dir + "/../shared";
 
@@ -73,6 +74,8 @@ int main(int argc, char** argv) {
   engine::TracingOptions to;
   to.photons_per_source = photons;
   to.seed = 1;
+  to.source_photon_factor.assign(146, 1.0);
+  to.source_photon_factor[0] = ground_factor;
   t0 = Clock::now();
   const engine::TracedPhotons traced = engine::trace_photons(scene, materials, sources, {plane}, to);
   const double t_trace = seconds_since(t0);
@@ -102,7 +105,11 @@ int main(int argc, char** argv) {
   // CIE overcast sky of 10000 lux horizontal, ground 0.2 (gensky -c -B 55.866 -g 0.2).
   const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(10000));
   const Vec3 ground = sky::ground_radiance_rgb({0.2, 0.2, 0.2}, 10000, 0, {0, 0, -1});
-  const RadianceMatrix sv = sky::sky_vector(*overcast, basis, ground);
+  // RADIANCE's own vector of that sky (gensky + genskyvec, refdata a_daylight_factor): its
+  // skybright.cal blends sky and ground within ~10 deg of the horizon, which the CIE formula
+  // does not, so it is the vector to compare with RADIANCE. Ours is printed alongside.
+  const RadianceMatrix sv_ours = sky::sky_vector(*overcast, basis, ground);
+  const RadianceMatrix sv = RadianceMatrix::read_file(shared + "/refdata/results/a_daylight_factor/skyvec_overcast_m1.vec");
   const std::vector<double> ref = read_reference_df(shared + "/refdata/results/a_daylight_factor/df_office.csv");
   double sum2 = 0, worst = 0, mean_ours = 0, mean_ref = 0;
   std::size_t worst_at = 0;
@@ -122,8 +129,41 @@ int main(int argc, char** argv) {
     row_ours[s / 11] += df / 11;
     row_ref[s / 11] += ref[s] / 11;
   }
-  std::printf("office DF, %zu stored photons per bin target, bandwidth %zu, %s, %d direct samples/bin\n",
-              photons, bandwidth, estimator.c_str(), direct_samples);
+  // The back row, where indirect light dominates: total and direct part, ours / RADIANCE.
+  std::printf("back row (y = 7.5 m) DF total / direct part / RADIANCE:\n");
+  for (std::size_t s = c.sensors - 11; s < c.sensors; ++s) {
+    Vec3 e{0, 0, 0}, ed{0, 0, 0};
+    for (std::size_t p = 0; p < c.sources; ++p) {
+      const Vec3 l{sv.at(p, 0, 0), sv.at(p, 0, 1), sv.at(p, 0, 2)};
+      e = e + mul(c.total(s, p), l);
+      ed = ed + mul(c.direct[s * c.sources + p], l);
+    }
+    std::printf("  %.3f/%.3f/%.3f", rgb_to_photometric(e) / 100, rgb_to_photometric(ed) / 100, ref[s]);
+  }
+  std::printf("\n");
+  // Exact photon count in the back strip y in [7, 8] (no kernel): mean DF over the strip
+  // under the overcast sky, indirect only, against the mean of our indirect estimates there.
+  {
+    double strip = 0;
+    for (const engine::Photon& ph : traced.planes[0])
+      if (ph.position[1] >= 7.0)
+        strip += rgb_to_photometric(mul(ph.flux_rgb(), {sv.at(ph.source, 0, 0), sv.at(ph.source, 0, 1),
+                                                        sv.at(ph.source, 0, 2)}));
+    double est = 0;
+    int n = 0;
+    for (std::size_t s = 0; s < c.sensors; ++s) {
+      if (grid.points[s].position.y < 7.0) continue;
+      for (std::size_t p = 0; p < c.sources; ++p) {
+        const std::size_t i = s * c.sources + p;
+        est += rgb_to_photometric(mul(c.caustic[i] + c.global[i], {sv.at(p, 0, 0), sv.at(p, 0, 1), sv.at(p, 0, 2)}));
+      }
+      ++n;
+    }
+    std::printf("back strip y >= 7 m, indirect DF: photon flux / area %.4f %%, mean of estimates %.4f %%\n",
+                strip / 6.0 / 100, est / n / 100);
+  }
+  std::printf("office DF, %zu stored photons per bin target (ground x %g), bandwidth %zu, %s, %d direct samples/bin\n",
+              photons, ground_factor, bandwidth, estimator.c_str(), direct_samples);
   std::printf("  scene %.2f s, trace %.2f s (%.0f attempts/s, %.0f stored/s, %zu stored), maps %.2f s,"
               " direct %.2f s, photon estimates %.2f s\n",
               t_build, t_trace, attempts / t_trace, stored / t_trace, std::size_t(stored), t_maps,

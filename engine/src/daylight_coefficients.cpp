@@ -1,6 +1,7 @@
 // Daylight coefficients: see daylight_coefficients.h.
 #include "dayphoton/engine/daylight_coefficients.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <tbb/parallel_for.h>
@@ -42,11 +43,28 @@ RadianceMatrix DaylightCoefficients::to_matrix() const {
   return m;
 }
 
+std::size_t GridPhotons::bandwidth_of(std::size_t source, std::size_t bandwidth) const {
+  const std::size_t n = m_by_source[source].size();
+  if (m_typical_count == 0 || n <= m_typical_count) return bandwidth;
+  return static_cast<std::size_t>(
+      std::llround(double(bandwidth) * double(n) / double(m_typical_count)));
+}
+
+std::size_t GridPhotons::median_count(const std::vector<PhotonMap>& maps) {
+  std::vector<std::size_t> counts;
+  for (const PhotonMap& m : maps)
+    if (!m.empty()) counts.push_back(m.size());
+  if (counts.empty()) return 0;
+  std::nth_element(counts.begin(), counts.begin() + counts.size() / 2, counts.end());
+  return counts[counts.size() / 2];
+}
+
 GridPhotons GridPhotons::for_plane(const ReceiverPlane& plane, std::vector<Photon> plane_photons,
                                    std::size_t source_count) {
   GridPhotons g;
   g.m_plane = plane;
   g.m_by_source = split_by_source(plane_photons, source_count);
+  g.m_typical_count = median_count(g.m_by_source);
   g.m_all = PhotonMap(std::move(plane_photons));
   return g;
 }
@@ -55,6 +73,7 @@ GridPhotons GridPhotons::for_surfaces(std::vector<Photon> surface_photons,
                                       std::size_t source_count) {
   GridPhotons g;
   g.m_by_source = split_by_source(surface_photons, source_count);
+  g.m_typical_count = median_count(g.m_by_source);
   g.m_all = PhotonMap(std::move(surface_photons));
   return g;
 }
@@ -82,12 +101,19 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         const PhotonMap& map = photons.of_source(p);
         if (map.empty()) continue;
         // One lookup over both classes fixes the radius; each class is then summed within it.
+        // The bandwidth grows with the source's photon count (photons_per_bandwidth), so a
+        // source given more photons (the ground) gets a less noisy estimate, not a smaller
+        // kernel.
         PhotonFilter both = filter_for(sensor, PathClass::Global);
         both.path_classes = IndirectPathClasses;
-        const DensityEstimate all = estimate_irradiance(map, at, both, options.density);
+        DensityEstimateOptions scaled = options.density;
+        scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth);
+        const DensityEstimate all = estimate_irradiance(map, at, both, scaled);
         if (all.photon_count == 0) continue;
-        DensityEstimateOptions fixed = options.density;
-        fixed.bandwidth = all.photon_count;
+        // Same disc for each class: a bandwidth one above the count found makes every
+        // class lookup a "short" one, whose disc is exactly max_radius_m = all.radius_m.
+        DensityEstimateOptions fixed = scaled;
+        fixed.bandwidth = all.photon_count + 1;
         fixed.max_radius_m = all.radius_m;
         fixed.average_radius = false;
         const double b = options.boundary_correction ? boundary_factor(plane, at, all.radius_m) : 1.0;

@@ -95,14 +95,26 @@ struct Material::Model {
            t == MaterialType::Mirror || t == MaterialType::Translucent;
   }
 
-  Vec3 glass_response(double cos_i, bool transmitted) const {
-    Vec3 out;
-    for (int c = 0; c < 3; ++c) {
-      const ThinGlassResponse g =
-          thin_glass_response(cos_i, spec.refractive_index, glass_transmissivity[c]);
-      out[c] = transmitted ? g.transmittance : g.reflectance;
+  // Transmittance and reflectance per channel. Grey panes (the usual case) evaluate the
+  // series once instead of three times: this is on every photon's path through a port.
+  ThinGlassResponse glass_channel(double cos_i, int c) const {
+    return thin_glass_response(cos_i, spec.refractive_index, glass_transmissivity[c]);
+  }
+  void glass_response(double cos_i, Vec3& t, Vec3& r) const {
+    const ThinGlassResponse g0 = glass_channel(cos_i, 0);
+    t = {g0.transmittance, g0.transmittance, g0.transmittance};
+    r = {g0.reflectance, g0.reflectance, g0.reflectance};
+    for (int c = 1; c < 3; ++c) {
+      if (glass_transmissivity[c] == glass_transmissivity[0]) continue;
+      const ThinGlassResponse g = glass_channel(cos_i, c);
+      t[c] = g.transmittance;
+      r[c] = g.reflectance;
     }
-    return out;
+  }
+  Vec3 glass_response(double cos_i, bool transmitted) const {
+    Vec3 t, r;
+    glass_response(cos_i, t, r);
+    return transmitted ? t : r;
   }
 };
 
@@ -195,8 +207,8 @@ std::optional<ScatterSample> Material::sample(const Vec3& incoming, const Vec3& 
       return ScatterSample{incoming, Vec3{1, 1, 1}, ScatterType::StraightTransmission, true};
 
     case MaterialType::Glass: {
-      const Vec3 t = m.glass_response(cos_i, true);
-      const Vec3 r = m.glass_response(cos_i, false);
+      Vec3 t, r;
+      m.glass_response(cos_i, t, r);
       const double total = mean(t) + mean(r);
       if (!(total > 0)) return std::nullopt;
       const double p_reflect = mean(r) / total;
@@ -337,8 +349,11 @@ Vec3 Material::albedo(const Vec3& incoming, const Vec3& normal) const {
     case MaterialType::Opening:
     case MaterialType::Dielectric:
       return {1, 1, 1};  // R + (1 - R): the interface itself loses nothing
-    case MaterialType::Glass:
-      return m.glass_response(cos_i, true) + m.glass_response(cos_i, false);
+    case MaterialType::Glass: {
+      Vec3 t, r;
+      m.glass_response(cos_i, t, r);
+      return t + r;
+    }
     default:
       break;
   }

@@ -12,7 +12,8 @@
 // (photons crossing the plane); other sensors use the surface photons on the side their
 // normal faces (they must lie on a surface). Two estimators:
 //   - PerSource (default): for every source its own N nearest photons (one photon map per
-//     source), so each coefficient has N photons behind it and its own bandwidth;
+//     source), so each coefficient has N photons behind it and its own radius; N is scaled
+//     up for sources that were given more photons (GridPhotons::bandwidth_of);
 //   - Contribution: seeds/001 eq. 18, the N nearest photons of all sources, binned by source.
 // Boundary correction (planar grids): the kernel disc is clipped to the grid's outline (the
 // room), where photons can cross, and the estimate divides by the clipped area instead of
@@ -71,11 +72,18 @@ class GridPhotons {
   const PhotonMap& all() const { return m_all; }
   const PhotonMap& of_source(std::size_t p) const { return m_by_source[p]; }
   std::size_t source_count() const { return m_by_source.size(); }
+  /// PerSource bandwidth of `source`: `bandwidth` x (its photon count / the median count
+  /// over sources with photons), never less than `bandwidth`. Sources given more photons
+  /// (TracingOptions::source_photon_factor) thus get the same kernel radius as the others
+  /// and a proportionally less noisy estimate.
+  std::size_t bandwidth_of(std::size_t source, std::size_t bandwidth) const;
 
  private:
+  static std::size_t median_count(const std::vector<PhotonMap>& maps);
   std::optional<ReceiverPlane> m_plane;
   PhotonMap m_all;
   std::vector<PhotonMap> m_by_source;
+  std::size_t m_typical_count = 0;
 };
 
 /// Photon part (caustic, global) of the coefficients at `sensors`; parallel over sensors,
