@@ -7,7 +7,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include "dayphoton/engine/port_emission.h"
 
 namespace dayphoton::engine {
 namespace {
@@ -53,7 +52,7 @@ bool roulette(Vec3& flux, const Vec3& weight, Rng& rng) {
 struct BlockResult {
   std::vector<Photon> surface;
   std::vector<std::vector<Photon>> planes;
-  std::uint64_t entered = 0, global = 0, caustic = 0, direct = 0;
+  std::uint64_t entered = 0, global = 0, caustic = 0, direct = 0, rays = 0;
 };
 
 class BlockSink final : public PhotonSink {
@@ -119,7 +118,7 @@ std::optional<PathStart> pass_port(const Scene& scene, const std::vector<Materia
 void trace_path(const Scene& scene, const std::vector<Material>& materials,
                 const std::vector<ReceiverPlane>& planes, const PathStart& start,
                 const TracingOptions& options, Rng& scattering, Rng& roulette_rng,
-                PhotonSink& sink) {
+                PhotonSink& sink, std::uint64_t* rays) {
   Vec3 flux = start.flux;
   bool scattered = start.scattered;
   bool diffuse = start.diffuse_scattered;
@@ -130,6 +129,7 @@ void trace_path(const Scene& scene, const std::vector<Material>& materials,
                                             : PathClass::Caustic;
     const bool store = scattered || options.store_direct;
     const std::optional<Hit> hit = scene.intersect(ray);
+    if (rays) ++*rays;
     const double t_end = hit ? hit->t : std::numeric_limits<double>::infinity();
     if (store) {
       for (std::size_t g = 0; g < planes.size(); ++g) {
@@ -191,7 +191,7 @@ void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
     const std::uint64_t end = std::min(last, begin + AttemptsPerBlock);
     for (std::uint64_t i = begin; i < end; ++i) {
       Rng emission(options.seed, source, i, RandomStream::Emission);
-      const std::optional<PortEntry> entry = emitter.attempt(source, emission);
+      const std::optional<PortEntry> entry = emitter.attempt(source, emission, &out.rays);
       if (!entry) continue;
       ++out.entered;
       Rng scattering(options.seed, source, i, RandomStream::Scattering);
@@ -201,7 +201,8 @@ void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
       if (!start) continue;
       Rng storage(options.seed, source, i, RandomStream::Storage);
       sink.set_rng(&storage);
-      trace_path(scene, materials, planes, *start, options, scattering, roulette_rng, sink);
+      trace_path(scene, materials, planes, *start, options, scattering, roulette_rng, sink,
+                 &out.rays);
     }
   });
   result.planes.resize(planes.size());
@@ -213,6 +214,7 @@ void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
     result.tally.stored_global += b.global;
     result.tally.stored_caustic += b.caustic;
     result.tally.stored_direct += b.direct;
+    result.tally.rays += b.rays;
   }
 }
 
@@ -326,24 +328,44 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
 
 }  // namespace
 
+TracedPhotons trace_source_photons(const Scene& scene, const std::vector<Material>& materials,
+                                   const PortEmitter& emitter,
+                                   const std::vector<ReceiverPlane>& planes,
+                                   const TracingOptions& options, std::size_t source) {
+  SourceResult r = trace_source(scene, materials, planes, emitter,
+                                static_cast<std::uint32_t>(source), options);
+  TracedPhotons out;
+  out.surface = std::move(r.surface);
+  out.planes = std::move(r.planes);
+  out.planes.resize(planes.size());
+  out.tallies.push_back(r.tally);
+  return out;
+}
+
+TracedPhotons merge_traced_photons(std::vector<TracedPhotons>&& per_source) {
+  TracedPhotons out;
+  std::size_t plane_count = 0;
+  for (const TracedPhotons& r : per_source) plane_count = std::max(plane_count, r.planes.size());
+  out.planes.resize(plane_count);
+  for (TracedPhotons& r : per_source) {
+    out.surface.insert(out.surface.end(), r.surface.begin(), r.surface.end());
+    for (std::size_t g = 0; g < r.planes.size(); ++g)
+      out.planes[g].insert(out.planes[g].end(), r.planes[g].begin(), r.planes[g].end());
+    out.tallies.insert(out.tallies.end(), r.tallies.begin(), r.tallies.end());
+    r = TracedPhotons{};  // release as we go: the merged copy is the only one kept
+  }
+  return out;
+}
+
 TracedPhotons trace_photons(const Scene& scene, const std::vector<Material>& materials,
                             const SourceSet& sources, const std::vector<ReceiverPlane>& planes,
                             const TracingOptions& options) {
   const PortEmitter emitter(scene, sources);
-  std::vector<SourceResult> results(sources.size());
+  std::vector<TracedPhotons> results(sources.size());
   tbb::parallel_for(std::size_t(0), sources.size(), [&](std::size_t p) {
-    results[p] = trace_source(scene, materials, planes, emitter, static_cast<std::uint32_t>(p),
-                              options);
+    results[p] = trace_source_photons(scene, materials, emitter, planes, options, p);
   });
-  TracedPhotons out;
-  out.planes.resize(planes.size());
-  for (SourceResult& r : results) {
-    out.surface.insert(out.surface.end(), r.surface.begin(), r.surface.end());
-    for (std::size_t g = 0; g < planes.size(); ++g)
-      out.planes[g].insert(out.planes[g].end(), r.planes[g].begin(), r.planes[g].end());
-    out.tallies.push_back(r.tally);
-  }
-  return out;
+  return merge_traced_photons(std::move(results));
 }
 
 }  // namespace dayphoton::engine

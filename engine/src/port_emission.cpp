@@ -70,7 +70,8 @@ double PortEmitter::port_flux(std::size_t source, int n) const {
   return total;
 }
 
-std::optional<PortEntry> PortEmitter::attempt(std::size_t source, Rng& rng) const {
+std::optional<PortEntry> PortEmitter::attempt(std::size_t source, Rng& rng,
+                                              std::uint64_t* rays) const {
   const double total = m_bound_total[source];
   // Always draw the same five numbers so an attempt's randomness does not depend on the
   // outcome of earlier choices.
@@ -89,6 +90,7 @@ std::optional<PortEntry> PortEmitter::attempt(std::size_t source, Rng& rng) cons
   // Blocked toward the source? Start just outside the port.
   Ray shadow{m_scene->offset_ray_origin(ps.position, port.normal, d), d, 0.0,
              std::numeric_limits<double>::infinity()};
+  if (rays) ++*rays;
   if (m_scene->occluded(shadow)) return std::nullopt;
   return PortEntry{ps.position, d * -1.0, static_cast<int>(k)};
 }

@@ -41,6 +41,7 @@
 #include "dayphoton/engine/distant_source.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/photon.h"
+#include "dayphoton/engine/port_emission.h"
 #include "dayphoton/engine/random.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
@@ -78,6 +79,7 @@ struct SourceTally {
   std::uint64_t mainpass_attempts = 0;   ///< main pass and its top-up
   std::uint64_t entered = 0;             ///< accepted, unoccluded emissions
   std::uint64_t stored_global = 0, stored_caustic = 0, stored_direct = 0;
+  std::uint64_t rays = 0;                ///< rays cast: emission occlusion tests + path segments
   double bound_flux = 0;                 ///< PortEmitter::bound_flux
   double flux_per_attempt = 0;           ///< bound_flux / all attempts
   double storage_probability_global = 1, storage_probability_caustic = 1;
@@ -93,6 +95,17 @@ struct TracedPhotons {
 TracedPhotons trace_photons(const Scene& scene, const std::vector<Material>& materials,
                             const SourceSet& sources, const std::vector<ReceiverPlane>& planes,
                             const TracingOptions& options);
+
+/// The forward pass of one source (trace_photons runs it for every source in parallel):
+/// `tallies` has one entry. A pure function of (scene, source, options), so it can be cached
+/// per source and a run resumed source by source.
+TracedPhotons trace_source_photons(const Scene& scene, const std::vector<Material>& materials,
+                                   const PortEmitter& emitter,
+                                   const std::vector<ReceiverPlane>& planes,
+                                   const TracingOptions& options, std::size_t source);
+
+/// Concatenate per-source results in order (the layout trace_photons returns).
+TracedPhotons merge_traced_photons(std::vector<TracedPhotons>&& per_source);
 
 // ---- one path (exposed for tests with local sources, e.g. the furnace) -----------------
 
@@ -114,9 +127,11 @@ struct PathStart {
 };
 
 /// Trace one photon path, reporting stored records to `sink` (Direct records only if
-/// options.store_direct). `scattering` and `roulette` are the path's two streams.
+/// options.store_direct). `scattering` and `roulette` are the path's two streams; `rays`, if
+/// given, counts the rays cast.
 void trace_path(const Scene& scene, const std::vector<Material>& materials,
                 const std::vector<ReceiverPlane>& planes, const PathStart& start,
-                const TracingOptions& options, Rng& scattering, Rng& roulette, PhotonSink& sink);
+                const TracingOptions& options, Rng& scattering, Rng& roulette, PhotonSink& sink,
+                std::uint64_t* rays = nullptr);
 
 }  // namespace dayphoton::engine

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -49,8 +50,10 @@ class PortEmitter {
   double port_flux(std::size_t source, int n = 256) const;
 
   /// One emission attempt for `source` using `rng` (RandomStream::Emission). Nothing if the
-  /// attempt is rejected or its path toward the source is blocked.
-  std::optional<PortEntry> attempt(std::size_t source, Rng& rng) const;
+  /// attempt is rejected or its path toward the source is blocked. `rays`, if given, is
+  /// incremented by the number of rays cast (the occlusion test of accepted directions).
+  std::optional<PortEntry> attempt(std::size_t source, Rng& rng,
+                                   std::uint64_t* rays = nullptr) const;
 
  private:
   const Scene* m_scene;
