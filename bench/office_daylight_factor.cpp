@@ -5,7 +5,8 @@
 // per-bin sums over sensors with refdata's rfluxmtx matrix (b_dc_classic).
 //
 // Usage: office_daylight_factor [photons_per_bin=20000] [bandwidth=50]
-//                               [estimator=per_source|contribution] [direct_samples=64]
+//                               [estimator=per_source|contribution[+bc]] [direct_samples=64]
+//                               [ground_photon_factor=1]   (+bc: bias-compensating operator)
 // Prints time per stage, photons/s and the accuracy figures of issue 5's acceptance:
 // RMS of the per-sensor relative DF difference (goal <= 2 %) and the largest (goal <= 5 %).
 #include <chrono>
@@ -84,8 +85,9 @@ int main(int argc, char** argv) {
 
   engine::CoefficientOptions co;
   co.density.bandwidth = bandwidth;
-  co.estimator = estimator == "contribution" ? engine::PhotonEstimator::Contribution
-                                             : engine::PhotonEstimator::PerSource;
+  co.estimator = estimator.rfind("contribution", 0) == 0 ? engine::PhotonEstimator::Contribution
+                                                        : engine::PhotonEstimator::PerSource;
+  co.bias_compensation = estimator.find("+bc") != std::string::npos;  // e.g. per_source+bc
   co.direct.samples_per_source = direct_samples;
   t0 = Clock::now();
   const engine::GridPhotons gp = engine::GridPhotons::for_plane(plane, traced.planes[0], sources.size());

@@ -29,6 +29,18 @@ double boundary_factor(const ReceiverPlane* plane, const Vec3& at, double radius
   return inside > 1e-12 * full ? full / inside : 1.0;
 }
 
+BiasCompensationOptions bias_options(const CoefficientOptions& options,
+                                     const DensityEstimateOptions& density, std::size_t index) {
+  BiasCompensationOptions b;
+  b.n_min = density.bandwidth;
+  b.n_max = density.bandwidth * std::max<std::size_t>(1, options.bias_compensation_max_factor);
+  b.max_radius_m = density.max_radius_m;
+  b.kernel = density.kernel;
+  b.rng_seed = options.seed;
+  b.rng_index = index;
+  return b;
+}
+
 }  // namespace
 
 RadianceMatrix DaylightCoefficients::to_matrix() const {
@@ -108,7 +120,11 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         both.path_classes = IndirectPathClasses;
         DensityEstimateOptions scaled = options.density;
         scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth);
-        const DensityEstimate all = estimate_irradiance(map, at, both, scaled);
+        const DensityEstimate all =
+            options.bias_compensation
+                ? estimate_irradiance_bias_compensated(map, at, both,
+                                                       bias_options(options, scaled, s * n_src + p))
+                : estimate_irradiance(map, at, both, scaled);
         if (all.photon_count == 0) continue;
         // Same disc for each class: a bandwidth one above the count found makes every
         // class lookup a "short" one, whose disc is exactly max_radius_m = all.radius_m.
@@ -128,7 +144,13 @@ void estimate_photon_coefficients(const GridPhotons& photons,
       for (PathClass c : {PathClass::Caustic, PathClass::Global}) {
         std::vector<Vec3> per_source(n_src, Vec3{0, 0, 0});
         const DensityEstimate e =
-            estimate_contributions(photons.all(), at, filter_for(sensor, c), options.density, per_source);
+            options.bias_compensation
+                ? estimate_contributions_bias_compensated(
+                      photons.all(), at, filter_for(sensor, c),
+                      bias_options(options, options.density, s * 2 + (c == PathClass::Caustic ? 0 : 1)),
+                      per_source)
+                : estimate_contributions(photons.all(), at, filter_for(sensor, c), options.density,
+                                         per_source);
         const double b = options.boundary_correction ? boundary_factor(plane, at, e.radius_m) : 1.0;
         std::vector<Vec3>& part = c == PathClass::Caustic ? out.caustic : out.global;
         for (std::size_t p = 0; p < n_src; ++p) part[s * n_src + p] = per_source[p] * b;

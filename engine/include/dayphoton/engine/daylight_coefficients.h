@@ -42,6 +42,12 @@ struct CoefficientOptions {
   DensityEstimateOptions density;  ///< bandwidth (photons per estimate), max radius, kernel
   PhotonEstimator estimator = PhotonEstimator::PerSource;
   bool boundary_correction = true;
+  /// Bias-compensating operator (seeds/000 chapter 5, density_estimate.h) instead of the
+  /// fixed bandwidth: per source (PerSource) or on the total (Contribution), with
+  /// n_min = the bandwidth and n_max = bias_compensation_max_factor x n_min.
+  bool bias_compensation = false;
+  std::size_t bias_compensation_max_factor = 10;
+  std::uint64_t seed = 1;  ///< for the operator's random numbers
   DirectOptions direct;
 };
 
