@@ -5,6 +5,7 @@
 // horizontal illuminance of that sky (the nominal value the vector was scaled to).
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "dayphoton/core/radiance_matrix.h"
@@ -12,8 +13,9 @@
 namespace dayphoton::study {
 
 /// DF in percent per sensor. `coefficients`: sensors x bins x 3 (RADIANCE layout);
-/// `sky_vector`: bins x 1 x 3; `horizontal_illuminance_lux` > 0. Throws
-/// std::invalid_argument on a size mismatch.
+/// `sky_vector`: bins x 1 x 3 (one-component matrices are also accepted, weight 179);
+/// `horizontal_illuminance_lux` > 0. Throws std::invalid_argument on a size or component
+/// mismatch or a non-positive illuminance.
 std::vector<double> daylight_factor_percent(const RadianceMatrix& coefficients,
                                             const RadianceMatrix& sky_vector,
                                             double horizontal_illuminance_lux);
@@ -26,6 +28,8 @@ struct GridStatistics {
   /// an equal area on a regular grid).
   std::vector<std::pair<double, double>> area_at_or_above_percent;
 };
+/// Median of an even count is the mean of the two middle values. Throws
+/// std::invalid_argument for an empty or non-finite set.
 GridStatistics grid_statistics(const std::vector<double>& values,
                                const std::vector<double>& thresholds);
 

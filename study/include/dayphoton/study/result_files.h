@@ -10,18 +10,27 @@
 
 namespace dayphoton::study {
 
-/// sensors.csv: index,x,y,z,nx,ny,nz (metres, world coordinates).
+/// sensors.csv: index,x,y,z,nx,ny,nz (metres, world coordinates; micrometre resolution).
 void write_sensors_csv(const std::vector<SensorPoint>& sensors, const std::string& path);
-/// daylight_factor.csv: index,x,y,z,df_percent.
+/// Read a sensors.csv back (`dayphoton annual` takes the coordinates from it). Throws
+/// InputError located file:line:field on a wrong header, a non-number or an index out of
+/// sequence.
+std::vector<SensorPoint> read_sensors_csv(const std::string& path);
+/// daylight_factor.csv: index,x,y,z,df_percent (4 decimals).
 void write_daylight_factor_csv(const std::vector<SensorPoint>& sensors,
                                const std::vector<double>& df_percent, const std::string& path);
 /// metrics.csv: index,x,y,z then da<X>_percent, cda<X>_percent, damax_percent,
-/// udi_below100_percent, udi100_2000_percent, udi_above2000_percent,
-/// udi_supplementary100_<X>_percent, udi_autonomous<X>_3000_percent, udi_above3000_percent,
-/// mean_occupied_lux, and ase_hours if `ase_hours` is non-empty (X = the DA threshold).
+/// udi_below<L>_percent, udi<L>_<U1>_percent, udi_above<U1>_percent,
+/// udi_supplementary<L>_<X>_percent, udi_autonomous<X>_<U2>_percent, udi_above<U2>_percent,
+/// mean_occupied_lux, and ase_hours if `ase_hours` is non-empty. X = da_threshold_lux,
+/// L = udi_lower_lux, U1 = udi_upper_original_lux, U2 = udi_upper_revised_lux, written in
+/// their shortest form (defaults: 300, 100, 2000, 3000). Percentages with 3 decimals, lux 1.
+/// Throws std::invalid_argument if the counts of sensors, metrics and ASE hours differ.
 void write_metrics_csv(const std::vector<SensorPoint>& sensors,
                        const std::vector<metrics::SensorMetrics>& metrics,
                        const metrics::MetricSettings& settings, const std::vector<int>& ase_hours,
                        const std::string& path);
+/// The header of metrics.csv for these settings, in order.
+std::vector<std::string> metrics_csv_columns(const metrics::MetricSettings& settings, bool with_ase);
 
 }  // namespace dayphoton::study

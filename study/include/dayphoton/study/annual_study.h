@@ -1,0 +1,113 @@
+// AnnualStudy: from exported sky coefficients and an annual sky matrix to the annual
+// illuminance table, the per-sensor and grid metrics, and their files (issue 5 items 4-6).
+// Used by `dayphoton run` after the coefficients are estimated and by `dayphoton annual` on
+// coefficients exported by an earlier run; both go through compute_annual_study so their
+// results agree exactly for the same inputs.
+//
+// Conventions (docs/outputs.md, docs/metrics.md, DESIGN.md section 4):
+//  - coefficients: sensors x bins x RGB, irradiance (W/m^2) per unit bin radiance, RADIANCE
+//    row order (bin 0 = ground), i.e. what coefficients_sky.mtx and rfluxmtx hold;
+//  - sky matrix: bins x steps x RGB radiance W/(sr m^2), one column per weather record, either
+//    built from the EPW in the RADIANCE-compatible mode (gendaymtx -m MF: sun spread into the 4
+//    nearest patches, patch-centre Perez values, RADIANCE's sun formulas, sky colour, 11 C dew
+//    point) or read from a RADIANCE matrix file such as gendaymtx output;
+//  - time stamps from the EPW via weather::SiteClock: mid-hour, local standard time, no DST;
+//  - occupancy: daily hours [start, end) of the mid-hour stamp, default 08:00-18:00 (3650 h);
+//  - ASE only from a direct-sun-only, zero-bounce table (LM-83); EN 17037 over the daylight
+//    hours = the brightest half of the steps by the EPW's diffuse horizontal illuminance.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/metrics/annual_metrics.h"
+#include "dayphoton/metrics/illuminance_table.h"
+#include "dayphoton/metrics/occupancy.h"
+#include "dayphoton/sky/patch_basis.h"
+#include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/weather/epw_reader.h"
+
+namespace dayphoton::study {
+
+/// The sky side of an annual study: the matrix and what each of its columns stands for.
+struct AnnualSky {
+  RadianceMatrix matrix;                  ///< bins x steps x RGB radiance, W/(sr m^2)
+  std::vector<metrics::TimeStamp> steps;  ///< one per column
+  /// Per step, the quantity that ranks the EN 17037 daylight hours (diffuse horizontal
+  /// illuminance of the weather file, lux); empty: EN 17037 is not computed.
+  std::vector<double> daylight_hours_quantity;
+  std::string daylight_hours_source;  ///< what that quantity is, for the summary
+  std::string description;            ///< where the matrix came from, for the summary
+};
+
+/// Time stamps of the EPW records: month, day and mid-hour local standard time (SiteClock).
+std::vector<metrics::TimeStamp> time_stamps(const weather::EpwFile& epw);
+
+/// The EN 17037 ranking quantity of every record: the diffuse horizontal illuminance field
+/// (lux) when every record has it; otherwise the diffuse horizontal irradiance (W/m^2, which
+/// orders the hours nearly alike) when every record has that; otherwise empty. `source`
+/// receives which one was used.
+std::vector<double> daylight_hours_quantity(const weather::EpwFile& epw, std::string& source);
+
+/// The RADIANCE-compatible sky options: SkyMatrixOptions::gendaymtx_compatible() with the sun
+/// spread into patches (the mode in which sky coefficients alone give the annual result).
+sky::SkyMatrixOptions radiance_compatible_sky_options(double ground_reflectance = 0.2);
+
+/// Sky matrix built from the EPW with build_sky_matrix, stamped with the EPW's time steps.
+AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::PatchBasis& basis,
+                              const sky::SkyMatrixOptions& options);
+
+/// Sky matrix read from a RADIANCE matrix file (ascii/float/double; a name ending in ".gz"
+/// is decompressed through the system's gzip), stamped with the EPW's time steps. Throws
+/// InputError naming the matrix file if its column count differs from the EPW's records.
+AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weather::EpwFile& epw);
+
+/// Read a RADIANCE matrix file, decompressing "*.gz" with gzip. Errors name the file.
+RadianceMatrix read_matrix_file(const std::string& path);
+
+/// Settings of the metrics: thresholds and the occupancy window (local standard time).
+struct AnnualStudySettings {
+  metrics::MetricSettings metrics;
+  double occupancy_start_h = 8.0;
+  double occupancy_end_h = 18.0;
+};
+
+/// Everything computed for one grid.
+struct AnnualStudy {
+  metrics::IlluminanceTable illuminance;  ///< steps x sensors, lux; night steps 0
+  std::size_t occupied_hours = 0;
+  std::vector<metrics::SensorMetrics> sensors;
+  std::vector<int> ase_hours;  ///< per sensor; empty unless a direct-sun table was given
+  metrics::GridMetrics grid;   ///< ase_percent -1 and en17037 empty when not computed
+  std::string sky_description;
+  std::string daylight_hours_source;
+};
+
+/// Multiply and evaluate. `direct_sun` (optional): the direct-sun-only, zero-bounce
+/// illuminance table for ASE (same steps and sensors). Throws std::invalid_argument on
+/// shape mismatches (coefficient bins vs sky bins, steps, sensors).
+AnnualStudy compute_annual_study(const RadianceMatrix& coefficients, const AnnualSky& sky,
+                                 const AnnualStudySettings& settings,
+                                 const metrics::IlluminanceTable* direct_sun = nullptr);
+
+/// The grid metrics as a JSON object (text), for summary.json: sensor and occupied-hour
+/// counts, the settings, the means of every per-sensor metric, sDA, ASE (null if not
+/// computed) and the EN 17037 levels (null if not computed). Keys carry units.
+std::string grid_metrics_json(const AnnualStudy& study, const AnnualStudySettings& settings);
+
+/// Which files write_annual_outputs writes.
+struct AnnualOutputs {
+  bool illuminance = true;  ///< illuminance.csv and illuminance.bin
+  bool metrics = true;      ///< metrics.csv and grid_metrics.json
+};
+
+/// Write illuminance.csv, illuminance.bin, metrics.csv and grid_metrics.json into `folder`
+/// (created if missing), each atomically. `sensors` gives the coordinates of the rows.
+/// Returns the paths written, in that order.
+std::vector<std::string> write_annual_outputs(const AnnualStudy& study, const std::vector<SensorPoint>& sensors,
+                                              const AnnualStudySettings& settings, const std::string& folder,
+                                              const AnnualOutputs& outputs = {});
+
+}  // namespace dayphoton::study

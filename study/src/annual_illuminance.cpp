@@ -1,0 +1,254 @@
+// Annual illuminance E = C . S (DESIGN.md section 4, dctimestep's product followed by
+// rmtxop's photometric conversion, refdata c_annual README), and its CSV and binary files.
+//
+// Speed (165 sensors x 146 bins x 8760 steps): the photometric weights are folded into the
+// coefficients once, W[s][p c] = 179 w_c C[s][p][c], so every step is one dot product of
+// length bins x 3 per sensor. Night steps (all-zero sky columns, about half the year) are
+// skipped and stay 0. The day columns are processed in tiles of Tile steps: a tile of sky
+// columns is gathered into a contiguous, step-interleaved buffer, and each row of W is read
+// once per tile and multiplied into Tile independent accumulators, which the compiler
+// vectorises without reassociating any sum (each accumulator is a plain sequential sum over
+// p and c, so the result does not depend on the tiling or the thread count). oneTBB spreads
+// the tiles over the cores.
+#include "dayphoton/study/annual_illuminance.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <stdexcept>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "dayphoton/core/atomic_file.h"
+#include "dayphoton/core/units.h"
+
+namespace dayphoton::study {
+
+namespace {
+
+constexpr std::size_t Tile = 16;  ///< sky columns per tile (16 double accumulators)
+
+std::vector<double> photometric_weights(int components) {
+  if (components == 3)
+    return {RadianceWhiteEfficacy_lm_per_W * RgbLuminanceWeights.x,
+            RadianceWhiteEfficacy_lm_per_W * RgbLuminanceWeights.y,
+            RadianceWhiteEfficacy_lm_per_W * RgbLuminanceWeights.z};
+  if (components == 1) return {RadianceWhiteEfficacy_lm_per_W};
+  throw std::invalid_argument("annual illuminance: matrices must have 1 or 3 components, not " +
+                              std::to_string(components));
+}
+
+// --- little-endian encoding, independent of the host's byte order ---
+
+void put_u8(std::string& out, unsigned v) { out.push_back(static_cast<char>(v & 0xffu)); }
+void put_u16(std::string& out, std::uint16_t v) {
+  put_u8(out, v);
+  put_u8(out, v >> 8);
+}
+void put_u32(std::string& out, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) put_u8(out, (v >> (8 * i)) & 0xffu);
+}
+void put_f32(std::string& out, float v) {
+  std::uint32_t bits;
+  std::memcpy(&bits, &v, 4);
+  put_u32(out, bits);
+}
+
+std::uint32_t get_u32(const unsigned char* p) {
+  return std::uint32_t(p[0]) | std::uint32_t(p[1]) << 8 | std::uint32_t(p[2]) << 16 | std::uint32_t(p[3]) << 24;
+}
+float get_f32(const unsigned char* p) {
+  const std::uint32_t bits = get_u32(p);
+  float v;
+  std::memcpy(&v, &bits, 4);
+  return v;
+}
+
+constexpr char Magic[8] = {'D', 'P', 'I', 'L', 'L', 'U', 'M', '1'};
+constexpr std::size_t HeaderBytes = 8 + 4 + 4;
+constexpr std::size_t StampBytes = 1 + 1 + 2 + 4;
+
+[[noreturn]] void layout_error(const std::string& path, const std::string& what) {
+  throw std::runtime_error(path + ": not a valid illuminance.bin file: " + what);
+}
+
+/// Shortest text that reads back to the same double (hours: "0.5", "12.25").
+void append_shortest(std::string& out, double v) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+  out.append(buffer, result.ptr);
+}
+
+/// Lux with one decimal, from the value rounded to tenths (exact integer arithmetic, so the
+/// CSV is identical on every platform and fast for millions of values).
+void append_tenths(std::string& out, float v) {
+  const long long tenths = std::llround(static_cast<double>(v) * 10.0);
+  const unsigned long long magnitude = static_cast<unsigned long long>(tenths < 0 ? -tenths : tenths);
+  if (tenths < 0) out.push_back('-');
+  char buffer[24];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, magnitude / 10);
+  out.append(buffer, result.ptr);
+  out.push_back('.');
+  out.push_back(static_cast<char>('0' + magnitude % 10));
+}
+
+}  // namespace
+
+metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
+                                             const RadianceMatrix& sky_matrix,
+                                             const std::vector<metrics::TimeStamp>& steps) {
+  if (coefficients.columns() != sky_matrix.rows())
+    throw std::invalid_argument("annual illuminance: " + std::to_string(coefficients.columns()) +
+                                " coefficient bins but a sky matrix of " + std::to_string(sky_matrix.rows()) +
+                                " bins");
+  if (coefficients.components() != sky_matrix.components())
+    throw std::invalid_argument("annual illuminance: coefficients have " +
+                                std::to_string(coefficients.components()) + " components, the sky matrix " +
+                                std::to_string(sky_matrix.components()));
+  if (steps.size() != sky_matrix.columns())
+    throw std::invalid_argument("annual illuminance: " + std::to_string(steps.size()) +
+                                " time stamps for a sky matrix of " + std::to_string(sky_matrix.columns()) +
+                                " steps");
+  const std::vector<double> w = photometric_weights(coefficients.components());
+  const std::size_t n_sensors = coefficients.rows();
+  const std::size_t n_bins = coefficients.columns();
+  const std::size_t n_comp = static_cast<std::size_t>(coefficients.components());
+  const std::size_t k = n_bins * n_comp;  // length of one dot product
+  const std::size_t n_steps = sky_matrix.columns();
+
+  metrics::IlluminanceTable table(steps, n_sensors);
+  if (n_sensors == 0 || n_steps == 0) return table;
+
+  // W[s][p c] = 179 w_c C[s][p][c]; the coefficient matrix is already row-major (p, c).
+  std::vector<double> weighted(n_sensors * k);
+  for (std::size_t s = 0; s < n_sensors; ++s)
+    for (std::size_t i = 0; i < k; ++i)
+      weighted[s * k + i] = w[i % n_comp] * static_cast<double>(coefficients.data()[s * k + i]);
+
+  // Day steps: columns with any non-zero value. Row by row, so the matrix is read in order.
+  std::vector<char> lit(n_steps, 0);
+  const float* sky = sky_matrix.data().data();
+  for (std::size_t p = 0; p < n_bins; ++p)
+    for (std::size_t t = 0; t < n_steps; ++t) {
+      const float* v = sky + (p * n_steps + t) * n_comp;
+      for (std::size_t c = 0; c < n_comp; ++c) lit[t] |= v[c] != 0.0f;
+    }
+  std::vector<std::size_t> day;
+  for (std::size_t t = 0; t < n_steps; ++t)
+    if (lit[t]) day.push_back(t);
+  const std::size_t n_tiles = (day.size() + Tile - 1) / Tile;
+
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n_tiles, 4), [&](const tbb::blocked_range<std::size_t>& r) {
+    std::vector<double> columns(k * Tile);  // columns[i * Tile + j] = S[p][t_j][c], i = p c
+    for (std::size_t tile = r.begin(); tile != r.end(); ++tile) {
+      const std::size_t first = tile * Tile;
+      const std::size_t m = std::min(Tile, day.size() - first);
+      std::fill(columns.begin(), columns.end(), 0.0);
+      for (std::size_t j = 0; j < m; ++j) {
+        const std::size_t t = day[first + j];
+        for (std::size_t p = 0; p < n_bins; ++p)
+          for (std::size_t c = 0; c < n_comp; ++c)
+            columns[(p * n_comp + c) * Tile + j] = sky[(p * n_steps + t) * n_comp + c];
+      }
+      for (std::size_t s = 0; s < n_sensors; ++s) {
+        const double* row = weighted.data() + s * k;
+        double acc[Tile] = {};
+        for (std::size_t i = 0; i < k; ++i) {
+          const double wi = row[i];
+          const double* col = columns.data() + i * Tile;
+          for (std::size_t j = 0; j < Tile; ++j) acc[j] += wi * col[j];
+        }
+        for (std::size_t j = 0; j < m; ++j) table.lux(day[first + j], s) = static_cast<float>(acc[j]);
+      }
+    }
+  });
+  return table;
+}
+
+void write_illuminance_binary(const metrics::IlluminanceTable& table, const std::string& path) {
+  const std::size_t n_steps = table.step_count(), n_sensors = table.sensor_count();
+  if (n_steps > 0xffffffffu || n_sensors > 0xffffffffu)
+    throw std::invalid_argument(path + ": illuminance table too large for the binary layout");
+  std::string bytes;
+  bytes.reserve(HeaderBytes + n_steps * (StampBytes + 4 * n_sensors));
+  bytes.append(Magic, sizeof Magic);
+  put_u32(bytes, static_cast<std::uint32_t>(n_steps));
+  put_u32(bytes, static_cast<std::uint32_t>(n_sensors));
+  for (const metrics::TimeStamp& stamp : table.steps()) {
+    if (stamp.month < 1 || stamp.month > 12 || stamp.day < 1 || stamp.day > 31)
+      throw std::invalid_argument(path + ": time stamp with month " + std::to_string(stamp.month) + " day " +
+                                  std::to_string(stamp.day) + " cannot be written");
+    put_u8(bytes, static_cast<unsigned>(stamp.month));
+    put_u8(bytes, static_cast<unsigned>(stamp.day));
+    put_u16(bytes, 0);
+    put_f32(bytes, static_cast<float>(stamp.hour));
+  }
+  for (std::size_t t = 0; t < n_steps; ++t)
+    for (std::size_t s = 0; s < n_sensors; ++s) put_f32(bytes, table.lux(t, s));
+  write_file_atomically(path, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); },
+                        true);
+}
+
+metrics::IlluminanceTable read_illuminance_binary(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open illuminance file");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw std::runtime_error(path + ": read error");
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  if (bytes.size() < HeaderBytes) layout_error(path, "shorter than its 16-byte header");
+  if (std::memcmp(data, Magic, sizeof Magic) != 0) layout_error(path, "wrong magic (expected DPILLUM1)");
+  const std::uint64_t n_steps = get_u32(data + 8), n_sensors = get_u32(data + 12);
+  const std::uint64_t expected = HeaderBytes + n_steps * StampBytes + n_steps * n_sensors * 4;
+  if (bytes.size() != expected)
+    layout_error(path, std::to_string(n_steps) + " steps x " + std::to_string(n_sensors) + " sensors need " +
+                           std::to_string(expected) + " bytes, the file has " + std::to_string(bytes.size()));
+  std::vector<metrics::TimeStamp> steps(n_steps);
+  const unsigned char* p = data + HeaderBytes;
+  for (std::uint64_t t = 0; t < n_steps; ++t, p += StampBytes) {
+    const int month = p[0], day = p[1];
+    const unsigned reserved = unsigned(p[2]) | unsigned(p[3]) << 8;
+    const float hour = get_f32(p + 4);
+    if (month < 1 || month > 12 || day < 1 || day > 31 || reserved != 0 || !std::isfinite(hour) || hour < 0 ||
+        hour > 24)
+      layout_error(path, "time stamp " + std::to_string(t) + " is invalid");
+    steps[t] = metrics::TimeStamp{month, day, static_cast<double>(hour)};
+  }
+  metrics::IlluminanceTable table(std::move(steps), n_sensors);
+  for (std::uint64_t t = 0; t < n_steps; ++t)
+    for (std::uint64_t s = 0; s < n_sensors; ++s, p += 4) {
+      const float lux = get_f32(p);
+      if (!std::isfinite(lux))
+        layout_error(path, "illuminance of step " + std::to_string(t) + ", sensor " + std::to_string(s) +
+                               " is not finite");
+      table.lux(t, s) = lux;
+    }
+  return table;
+}
+
+void write_illuminance_csv(const metrics::IlluminanceTable& table, const std::string& path) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    std::string line = "month,day,hour";
+    for (std::size_t s = 0; s < table.sensor_count(); ++s) line += ",s" + std::to_string(s);
+    line += '\n';
+    out << line;
+    for (std::size_t t = 0; t < table.step_count(); ++t) {
+      const metrics::TimeStamp& stamp = table.steps()[t];
+      line = std::to_string(stamp.month) + ',' + std::to_string(stamp.day) + ',';
+      append_shortest(line, stamp.hour);
+      for (std::size_t s = 0; s < table.sensor_count(); ++s) {
+        line.push_back(',');
+        append_tenths(line, table.lux(t, s));
+      }
+      line.push_back('\n');
+      out.write(line.data(), static_cast<std::streamsize>(line.size()));
+    }
+  });
+}
+
+}  // namespace dayphoton::study

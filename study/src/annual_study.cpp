@@ -1,0 +1,239 @@
+// AnnualStudy: coefficients x sky matrix -> illuminance table -> metrics -> files. The
+// conventions are stated in annual_study.h and docs/outputs.md; the metric definitions are
+// docs/metrics.md (metrics/). This file only wires the pieces and checks that their shapes
+// agree, naming the file at fault where there is one.
+#include "dayphoton/study/annual_study.h"
+
+#include <cstdio>
+#include <iterator>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "dayphoton/core/atomic_file.h"
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/study/annual_illuminance.h"
+#include "dayphoton/study/result_files.h"
+#include "dayphoton/weather/site_clock.h"
+
+namespace dayphoton::study {
+
+namespace {
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string describe_options(const sky::SkyMatrixOptions& o, const sky::PatchBasis& basis) {
+  std::ostringstream d;
+  d << "Perez sky matrix, " << (basis.multiplication_factor() == 1 ? std::string("Tregenza")
+                                                                   : "Reinhart MF " + std::to_string(basis.multiplication_factor()))
+    << " basis (" << basis.bin_count() << " bins), "
+    << (o.patch_value == sky::PatchValue::Centre ? "patch-centre values" : "patch-mean values") << ", sun "
+    << (o.sun == sky::SunInMatrix::Spread ? "spread into 4 patches" : o.sun == sky::SunInMatrix::None ? "left out" : "only")
+    << ", " << (o.solar.algorithm == sky::SolarPositionAlgorithm::Spa ? "NREL SPA" : "RADIANCE") << " sun positions, "
+    << "ground reflectance " << format_number(o.ground_reflectance);
+  return d.str();
+}
+
+}  // namespace
+
+std::vector<metrics::TimeStamp> time_stamps(const weather::EpwFile& epw) {
+  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
+  std::vector<metrics::TimeStamp> stamps;
+  stamps.reserve(epw.records.size());
+  for (const weather::TimeStep& step : clock.steps(epw.records))
+    stamps.push_back(metrics::TimeStamp{step.month, step.day, step.hour_lst});
+  return stamps;
+}
+
+std::vector<double> daylight_hours_quantity(const weather::EpwFile& epw, std::string& source) {
+  std::vector<double> lux, w_m2;
+  for (const weather::WeatherRecord& r : epw.records) {
+    if (r.diffuse_horizontal_lux) lux.push_back(*r.diffuse_horizontal_lux);
+    if (r.diffuse_horizontal_w_m2) w_m2.push_back(*r.diffuse_horizontal_w_m2);
+  }
+  if (!epw.records.empty() && lux.size() == epw.records.size()) {
+    source = "diffuse horizontal illuminance of " + epw.source_name;
+    return lux;
+  }
+  if (!epw.records.empty() && w_m2.size() == epw.records.size()) {
+    source = "diffuse horizontal irradiance of " + epw.source_name + " (its illuminance field has missing values)";
+    return w_m2;
+  }
+  source = "none: " + epw.source_name + " lacks diffuse horizontal values";
+  return {};
+}
+
+sky::SkyMatrixOptions radiance_compatible_sky_options(double ground_reflectance) {
+  sky::SkyMatrixOptions o = sky::SkyMatrixOptions::gendaymtx_compatible();
+  o.sun = sky::SunInMatrix::Spread;
+  o.ground_reflectance = ground_reflectance;
+  return o;
+}
+
+AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::PatchBasis& basis,
+                              const sky::SkyMatrixOptions& options) {
+  AnnualSky result;
+  result.matrix = sky::build_sky_matrix(epw, sky::solar_site_of(epw), basis, options).matrix;
+  result.steps = time_stamps(epw);
+  result.daylight_hours_quantity = daylight_hours_quantity(epw, result.daylight_hours_source);
+  result.description = describe_options(options, basis) + ", from " + epw.source_name;
+  return result;
+}
+
+RadianceMatrix read_matrix_file(const std::string& path) {
+  if (!ends_with(path, ".gz")) return RadianceMatrix::read_file(path);
+  if (!std::filesystem::is_regular_file(path))
+    throw InputError(SourceLocation{path, 0, 0}, "cannot open matrix file");
+  FILE* pipe = popen(("gzip -dc " + shell_quote(path) + " 2>/dev/null").c_str(), "r");
+  if (!pipe) throw std::runtime_error(path + ": cannot run gzip to decompress it");
+  std::string text;
+  char buffer[1 << 16];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) text.append(buffer, n);
+  if (pclose(pipe) != 0) throw InputError(SourceLocation{path, 0, 0}, "gzip cannot decompress this file");
+  std::istringstream in(text);
+  return RadianceMatrix::read(in, path);
+}
+
+AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weather::EpwFile& epw) {
+  AnnualSky result;
+  result.matrix = read_matrix_file(matrix_path);
+  result.steps = time_stamps(epw);
+  if (result.matrix.columns() != result.steps.size())
+    throw InputError(SourceLocation{matrix_path, 0, 0},
+                     "the sky matrix has " + std::to_string(result.matrix.columns()) +
+                         " columns (time steps) but the weather file " + epw.source_name + " has " +
+                         std::to_string(result.steps.size()) + " records");
+  result.daylight_hours_quantity = daylight_hours_quantity(epw, result.daylight_hours_source);
+  result.description = "RADIANCE matrix " + matrix_path + " (" + std::to_string(result.matrix.rows()) +
+                       " bins), time steps of " + epw.source_name;
+  return result;
+}
+
+AnnualStudy compute_annual_study(const RadianceMatrix& coefficients, const AnnualSky& sky,
+                                 const AnnualStudySettings& settings, const metrics::IlluminanceTable* direct_sun) {
+  if (!(settings.occupancy_start_h >= 0 && settings.occupancy_start_h < settings.occupancy_end_h &&
+        settings.occupancy_end_h <= 24))
+    throw std::invalid_argument("occupancy window must satisfy 0 <= start < end <= 24 hours");
+  AnnualStudy study;
+  study.illuminance = annual_illuminance(coefficients, sky.matrix, sky.steps);
+  study.sky_description = sky.description;
+  const metrics::OccupancySchedule occupancy =
+      metrics::OccupancySchedule::daily_hours(sky.steps, settings.occupancy_start_h, settings.occupancy_end_h);
+  study.occupied_hours = occupancy.occupied_count();
+  study.sensors = metrics::compute_sensor_metrics(study.illuminance, occupancy, settings.metrics);
+  if (direct_sun) {
+    if (direct_sun->step_count() != sky.steps.size() || direct_sun->sensor_count() != coefficients.rows())
+      throw std::invalid_argument("the direct-sun table has " + std::to_string(direct_sun->step_count()) +
+                                  " steps x " + std::to_string(direct_sun->sensor_count()) +
+                                  " sensors, the study " + std::to_string(sky.steps.size()) + " x " +
+                                  std::to_string(coefficients.rows()));
+    study.ase_hours = metrics::ase_hours_per_sensor(*direct_sun, occupancy, settings.metrics);
+  }
+  study.grid = metrics::summarize_grid(study.sensors, settings.metrics, {},
+                                       direct_sun ? &study.ase_hours : nullptr);
+  if (!sky.daylight_hours_quantity.empty()) {
+    if (sky.daylight_hours_quantity.size() != sky.steps.size())
+      throw std::invalid_argument("daylight-hours quantity has " + std::to_string(sky.daylight_hours_quantity.size()) +
+                                  " values for " + std::to_string(sky.steps.size()) + " steps");
+    study.grid.en17037 = metrics::en17037_daylight_provision(
+        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity));
+    study.daylight_hours_source = sky.daylight_hours_source;
+  }
+  return study;
+}
+
+std::string grid_metrics_json(const AnnualStudy& study, const AnnualStudySettings& settings) {
+  using nlohmann::json;
+  const metrics::MetricSettings& m = settings.metrics;
+  json j;
+  j["sensors"] = study.sensors.size();
+  j["time_steps"] = study.illuminance.step_count();
+  j["occupied_hours"] = study.occupied_hours;
+  j["occupancy"] = {{"start_h", settings.occupancy_start_h},
+                    {"end_h", settings.occupancy_end_h},
+                    {"time", "local standard time, mid-hour stamps, every day"}};
+  j["thresholds"] = {{"da_lux", m.da_threshold_lux},
+                     {"udi_lower_lux", m.udi_lower_lux},
+                     {"udi_upper_original_lux", m.udi_upper_original_lux},
+                     {"udi_upper_revised_lux", m.udi_upper_revised_lux},
+                     {"sda_time_fraction", m.sda_time_fraction},
+                     {"ase_threshold_lux", m.ase_threshold_lux},
+                     {"ase_hours", m.ase_hours}};
+  // Means under the names of the metrics.csv columns (after index,x,y,z).
+  const std::vector<std::string> names = metrics_csv_columns(m, false);
+  const metrics::SensorMetrics& mean = study.grid.mean;
+  const double values[] = {mean.da_percent,
+                           mean.cda_percent,
+                           mean.da_max_percent,
+                           mean.udi_below_percent,
+                           mean.udi_original_percent,
+                           mean.udi_above_original_percent,
+                           mean.udi_supplementary_percent,
+                           mean.udi_autonomous_percent,
+                           mean.udi_above_revised_percent,
+                           mean.mean_occupied_lux};
+  json means = json::object();
+  for (std::size_t i = 0; i < std::size(values); ++i) means[names[4 + i]] = values[i];
+  j["mean"] = means;
+  std::size_t sda_sensors = 0;
+  for (const metrics::SensorMetrics& s : study.sensors) sda_sensors += s.da_percent >= 100.0 * m.sda_time_fraction;
+  j["sda_percent"] = study.grid.sda_percent;
+  j["sda_sensors"] = sda_sensors;
+  j["ase_percent"] = study.grid.ase_percent >= 0 ? json(study.grid.ase_percent) : json(nullptr);
+  if (study.grid.en17037.empty()) {
+    j["en17037"] = nullptr;
+  } else {
+    json levels = json::array();
+    for (std::size_t i = 0; i < study.grid.en17037.size(); ++i) {
+      const metrics::En17037Result& r = study.grid.en17037[i];
+      levels.push_back({{"level", r.level},
+                        {"target_lux", metrics::En17037Levels[i].target_lux},
+                        {"minimum_target_lux", metrics::En17037Levels[i].minimum_target_lux},
+                        {"target_area_percent", r.target_area_percent},
+                        {"minimum_target_area_percent", r.minimum_target_area_percent},
+                        {"passes", r.passes}});
+    }
+    j["en17037"] = {{"daylight_hours", study.illuminance.step_count() / 2},
+                    {"daylight_hours_source", study.daylight_hours_source},
+                    {"levels", levels}};
+  }
+  j["sky"] = study.sky_description;
+  return j.dump(2);
+}
+
+std::vector<std::string> write_annual_outputs(const AnnualStudy& study, const std::vector<SensorPoint>& sensors,
+                                              const AnnualStudySettings& settings, const std::string& folder,
+                                              const AnnualOutputs& outputs) {
+  if (sensors.size() != study.illuminance.sensor_count())
+    throw std::invalid_argument(folder + ": " + std::to_string(sensors.size()) + " sensor positions for " +
+                                std::to_string(study.illuminance.sensor_count()) + " sensors");
+  std::filesystem::create_directories(folder);
+  const std::filesystem::path dir(folder);
+  std::vector<std::string> written;
+  if (outputs.illuminance) {
+    written.push_back((dir / "illuminance.csv").string());
+    write_illuminance_csv(study.illuminance, written.back());
+    written.push_back((dir / "illuminance.bin").string());
+    write_illuminance_binary(study.illuminance, written.back());
+  }
+  if (outputs.metrics) {
+    written.push_back((dir / "metrics.csv").string());
+    write_metrics_csv(sensors, study.sensors, settings.metrics, study.ase_hours, written.back());
+    written.push_back((dir / "grid_metrics.json").string());
+    write_file_atomically(written.back(), grid_metrics_json(study, settings) + "\n");
+  }
+  return written;
+}
+
+}  // namespace dayphoton::study
