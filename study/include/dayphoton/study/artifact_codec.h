@@ -1,9 +1,26 @@
 // Binary encodings of the pipeline's artefacts for the ArtifactStore: the photons of one
 // source (resumable photon pass), daylight coefficients, and RADIANCE matrices (sky matrices).
-// Little-endian, fixed-width fields, a leading layout version; decoding checks sizes and
-// throws std::runtime_error on any mismatch (the store then treats the artefact as absent).
+// docs/cache.md describes where they are stored.
+//
+// Layout: a 4-byte tag naming the type ("PHOT", "DCOF", "RMTX"), a u32 layout version, then
+// the fields in declaration order; every integer and float little-endian and fixed-width
+// (sizes and counts u64, floats and doubles by bit pattern, so a round trip is bit-exact,
+// NaNs included), whatever the host. Decoding checks the tag, the version, every count
+// against the bytes that remain (before allocating anything) and that nothing is left over,
+// and throws std::runtime_error on any mismatch; the pipeline then treats the artefact as
+// absent and recomputes it.
+//
+//   photons:      u64 n, n photons; u64 planes, per plane u64 n + n photons; u64 sources,
+//                 per source the SourceTally (6 x u64, 4 x f64). A photon is 32 bytes:
+//                 3 x f32 position, 3 x f32 flux, u32 source, 3 x i8 normal, u8 path class
+//                 (checked to be a PathClass).
+//   coefficients: u64 sensors, u64 sources, then direct, caustic, global, each
+//                 sensors x sources Vec3 as 3 x f64.
+//   matrix:       u64 rows, u64 columns, u32 components (>= 1), u64 header lines, each
+//                 u64 length + bytes, then rows x columns x components f32.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "dayphoton/core/radiance_matrix.h"
@@ -12,9 +29,16 @@
 
 namespace dayphoton::study {
 
+/// Layout versions: bump one whenever its layout changes, so older artefacts are refused
+/// (and recomputed) instead of misread.
+inline constexpr std::uint32_t PhotonLayoutVersion = 1;
+inline constexpr std::uint32_t CoefficientLayoutVersion = 1;
+inline constexpr std::uint32_t MatrixLayoutVersion = 1;
+
 std::string encode_photons(const engine::TracedPhotons& photons);
 engine::TracedPhotons decode_photons(const std::string& bytes);
 
+/// Throws std::invalid_argument if direct, caustic or global is not sensors x sources long.
 std::string encode_coefficients(const engine::DaylightCoefficients& c);
 engine::DaylightCoefficients decode_coefficients(const std::string& bytes);
 

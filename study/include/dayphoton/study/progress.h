@@ -1,11 +1,20 @@
 // Progress: what `dayphoton run` tells the user while it works (issue 5 item 2).
 //
 // Steps are started by name with an amount of work in their own unit ("photons", "sensors",
-// "hours"); workers call advance() from any thread. On a terminal (isatty) a single line is
-// redrawn at most 10 times a second: a bar, the step name, done/total, the rate and the ETA.
-// When the output is not a terminal, plain lines are printed at most every `line_interval`
-// seconds and once at each step's end. Quiet prints nothing. finish() prints the table of
-// where the time went (step, work, seconds, rate, share of the total).
+// "hours"); workers call advance() from any thread. Three styles:
+//   - Terminal (stdout is a tty): one line redrawn with '\r' at most 10 times a second,
+//       [#######.............] photons  1040000/2920000 photons  231 k photons/s  ETA 8 s
+//     ending with "done in X s" and a newline when the step ends;
+//   - Lines (a log file, CI): plain lines at most every `line_interval_s` seconds,
+//       photons: 1040000/2920000 photons (35.6 %), 231 k photons/s, ETA 8 s
+//     and once at each step's end, "photons: done in 12.6 s (2920000 photons, 232 k photons/s)";
+//   - Quiet: nothing.
+// A step served from the cache prints "name: cached". print_summary() prints the table of
+// where the time went (step, work, unit, seconds, rate, share of the total) and a total line.
+//
+// Cost for workers: advance() is one relaxed atomic add and a clock read; only when a redraw
+// is due does it try_lock the mutex, and if another thread holds it, it skips the redraw,
+// so workers never wait on each other or on the output stream.
 #pragma once
 
 #include <atomic>
@@ -23,23 +32,31 @@ enum class ProgressStyle { Terminal, Lines, Quiet };
 
 class Progress {
  public:
-  /// `style` Terminal redraws one line on `out`; Lines prints plain lines.
+  /// Redraw interval of the Terminal style.
+  static constexpr double TerminalInterval_s = 0.1;
+
+  /// `style` Terminal redraws one line on `out`; Lines prints plain lines, at most one per
+  /// `line_interval_s` per step besides its end line.
   Progress(std::ostream& out, ProgressStyle style, double line_interval_s = 5.0);
+  /// Ends an open step (so a Terminal line is terminated by a newline).
   ~Progress();
 
   /// Terminal if `is_tty`, else Lines; Quiet if `quiet`.
   static ProgressStyle choose_style(bool is_tty, bool quiet);
 
-  /// Begin a step (ends the previous one if still open). Thread-safe.
+  /// Begin a step (ends the previous one if still open). `total` 0 = unknown (no bar, no
+  /// ETA). Thread-safe.
   void start(const std::string& name, std::uint64_t total, const std::string& unit);
   /// Add work done to the current step. Thread-safe, cheap (an atomic add; printing is
-  /// rate-limited).
+  /// rate-limited). Work added while no step is open is ignored by the next start().
   void advance(std::uint64_t amount = 1);
-  /// End the current step (records its time).
+  /// End the current step (records its time and the work done); no effect if none is open.
   void end();
-  /// A step that was served from the cache: recorded with zero work and marked "cached".
+  /// A step that was served from the cache: ends the current step, is recorded with zero
+  /// work and marked "cached".
   void cached(const std::string& name);
   /// Print a plain message line (not in Quiet), e.g. "photons: 12 of 146 sources cached".
+  /// On a terminal it replaces the status line, which is then redrawn below it.
   void note(const std::string& message);
 
   struct StepTime {
@@ -48,12 +65,19 @@ class Progress {
     double seconds = 0;
     bool cached = false;
   };
+  /// The steps ended so far, in order (read it when no other thread is using the Progress).
   const std::vector<StepTime>& steps() const { return m_steps; }
-  /// Print the table of step times (not in Quiet).
+  /// End the open step, if any, and print the table of step times (not in Quiet).
   void print_summary();
 
  private:
-  void draw(bool force);
+  using Clock = std::chrono::steady_clock;
+  void draw(bool force);  ///< with m_mutex held
+  void end_locked();      ///< with m_mutex held
+  std::string status_text(Clock::time_point now) const;
+  void put_terminal_line(const std::string& text);
+  double interval_s() const;
+
   std::ostream& m_out;
   ProgressStyle m_style;
   double m_line_interval_s;
@@ -63,7 +87,11 @@ class Progress {
   std::string m_name, m_unit;
   std::uint64_t m_total = 0;
   std::atomic<std::uint64_t> m_done{0};
-  std::chrono::steady_clock::time_point m_step_start, m_last_draw;
+  Clock::time_point m_step_start;
+  /// When the next redraw is due (Clock ticks), read by advance() without the lock.
+  std::atomic<Clock::rep> m_next_draw{0};
+  bool m_line_drawn = false;             ///< Terminal: a status line is on screen
+  std::size_t m_last_line_length = 0;    ///< Terminal: to blank out a longer previous line
 };
 
 }  // namespace dayphoton::study

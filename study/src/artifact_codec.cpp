@@ -1,0 +1,321 @@
+// Binary encodings of photons, daylight coefficients and RADIANCE matrices for the cache
+// (artifact_codec.h gives the layouts). The writer sizes its buffer exactly up front and
+// stores bytes by shifts, so the output is little-endian on any host; the reader checks
+// every length before it reads or allocates.
+#include "dayphoton/study/artifact_codec.h"
+
+#include <cstring>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace dayphoton::study {
+
+namespace {
+
+using engine::Photon;
+using engine::SourceTally;
+
+constexpr std::size_t PhotonBytes = 32;
+constexpr std::size_t TallyBytes = 6 * 8 + 4 * 8;
+constexpr std::size_t Vec3Bytes = 24;
+constexpr std::size_t PreambleBytes = 8;  // tag + version
+
+class Writer {
+ public:
+  explicit Writer(std::size_t size) : m_out(size, '\0') {}
+
+  void tag(const char (&t)[5], std::uint32_t version) {
+    std::memcpy(&m_out[m_at], t, 4);
+    m_at += 4;
+    u32(version);
+  }
+  void u8(std::uint8_t v) { m_out[m_at++] = static_cast<char>(v); }
+  void u32(std::uint32_t v) { le(v, 4); }
+  void u64(std::uint64_t v) { le(v, 8); }
+  void f32(float v) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &v, 4);
+    u32(bits);
+  }
+  void f64(double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, 8);
+    u64(bits);
+  }
+  void text(const std::string& s) {
+    u64(s.size());
+    std::memcpy(&m_out[m_at], s.data(), s.size());
+    m_at += s.size();
+  }
+  void vec3(const Vec3& v) {
+    f64(v.x);
+    f64(v.y);
+    f64(v.z);
+  }
+  void photon(const Photon& p) {
+    for (const float x : p.position) f32(x);
+    for (const float x : p.flux) f32(x);
+    u32(p.source);
+    for (const std::int8_t x : p.normal) u8(static_cast<std::uint8_t>(x));
+    u8(static_cast<std::uint8_t>(p.path_class));
+  }
+
+  std::string finish() {
+    if (m_at != m_out.size()) throw std::logic_error("artifact codec: encoded size mismatch");
+    return std::move(m_out);
+  }
+
+ private:
+  void le(std::uint64_t v, int n) {
+    for (int i = 0; i < n; ++i) m_out[m_at++] = static_cast<char>((v >> (8 * i)) & 0xff);
+  }
+  std::string m_out;
+  std::size_t m_at = 0;
+};
+
+class Reader {
+ public:
+  Reader(const std::string& bytes, const char* what)
+      : m_p(reinterpret_cast<const unsigned char*>(bytes.data())), m_n(bytes.size()), m_what(what) {}
+
+  void tag(const char (&t)[5], std::uint32_t version) {
+    need(4, "tag");
+    if (std::memcmp(m_p, t, 4) != 0) fail(std::string("not a ") + m_what + " (tag is not '" + t + "')");
+    m_at = 4;
+    const std::uint32_t found = u32("layout version");
+    if (found != version)
+      fail(std::string(m_what) + " layout version " + std::to_string(found) + ", this build reads " +
+           std::to_string(version));
+  }
+  std::uint8_t u8(const char* field) {
+    need(1, field);
+    return m_p[m_at++];
+  }
+  std::uint32_t u32(const char* field) { return static_cast<std::uint32_t>(le(4, field)); }
+  std::uint64_t u64(const char* field) { return le(8, field); }
+  float f32(const char* field) {
+    const std::uint32_t bits = u32(field);
+    float v;
+    std::memcpy(&v, &bits, 4);
+    return v;
+  }
+  double f64(const char* field) {
+    const std::uint64_t bits = u64(field);
+    double v;
+    std::memcpy(&v, &bits, 8);
+    return v;
+  }
+  /// A count of elements of at least `element_bytes` each, checked against what remains.
+  std::size_t count(std::size_t element_bytes, const char* field) {
+    const std::uint64_t n = u64(field);
+    if (n > (m_n - m_at) / element_bytes)
+      fail(std::string("truncated: ") + field + " says " + std::to_string(n) + " x " +
+           std::to_string(element_bytes) + " bytes, " + std::to_string(m_n - m_at) + " remain");
+    return static_cast<std::size_t>(n);
+  }
+  std::string text(const char* field) {
+    const std::size_t n = count(1, field);
+    std::string s(reinterpret_cast<const char*>(m_p + m_at), n);
+    m_at += n;
+    return s;
+  }
+  Vec3 vec3(const char* field) {
+    const double x = f64(field), y = f64(field), z = f64(field);
+    return {x, y, z};
+  }
+  Photon photon() {
+    Photon p;
+    for (float& x : p.position) x = f32("photon position");
+    for (float& x : p.flux) x = f32("photon flux");
+    p.source = u32("photon source");
+    for (std::int8_t& x : p.normal) x = static_cast<std::int8_t>(u8("photon normal"));
+    const std::uint8_t c = u8("photon path class");
+    if (c > static_cast<std::uint8_t>(engine::PathClass::Global))
+      fail("photon path class " + std::to_string(c) + " is not a path class");
+    p.path_class = static_cast<engine::PathClass>(c);
+    return p;
+  }
+  std::vector<Photon> photons(const char* field) {
+    std::vector<Photon> out(count(PhotonBytes, field));
+    for (Photon& p : out) p = photon();
+    return out;
+  }
+  void done() const {
+    if (m_at != m_n) fail(std::to_string(m_n - m_at) + " bytes left over after the " + m_what);
+  }
+
+  [[noreturn]] void fail(const std::string& why) const {
+    throw std::runtime_error(std::string("cannot decode ") + m_what + ": " + why);
+  }
+
+ private:
+  void need(std::size_t bytes, const char* field) const {
+    if (m_n - m_at < bytes)
+      fail(std::string("truncated at byte ") + std::to_string(m_at) + " (" + field + ")");
+  }
+  std::uint64_t le(int n, const char* field) {
+    need(static_cast<std::size_t>(n), field);
+    std::uint64_t v = 0;
+    for (int i = 0; i < n; ++i) v |= std::uint64_t(m_p[m_at + i]) << (8 * i);
+    m_at += static_cast<std::size_t>(n);
+    return v;
+  }
+  const unsigned char* m_p;
+  std::size_t m_n, m_at = 0;
+  const char* m_what;
+};
+
+}  // namespace
+
+// ---- photons ------------------------------------------------------------------------------
+
+std::string encode_photons(const engine::TracedPhotons& photons) {
+  std::size_t size = PreambleBytes + 8 + photons.surface.size() * PhotonBytes + 8;
+  for (const auto& plane : photons.planes) size += 8 + plane.size() * PhotonBytes;
+  size += 8 + photons.tallies.size() * TallyBytes;
+
+  Writer w(size);
+  w.tag("PHOT", PhotonLayoutVersion);
+  w.u64(photons.surface.size());
+  for (const Photon& p : photons.surface) w.photon(p);
+  w.u64(photons.planes.size());
+  for (const auto& plane : photons.planes) {
+    w.u64(plane.size());
+    for (const Photon& p : plane) w.photon(p);
+  }
+  w.u64(photons.tallies.size());
+  for (const SourceTally& t : photons.tallies) {
+    w.u64(t.prepass_attempts);
+    w.u64(t.mainpass_attempts);
+    w.u64(t.entered);
+    w.u64(t.stored_global);
+    w.u64(t.stored_caustic);
+    w.u64(t.stored_direct);
+    w.f64(t.bound_flux);
+    w.f64(t.flux_per_attempt);
+    w.f64(t.storage_probability_global);
+    w.f64(t.storage_probability_caustic);
+  }
+  return w.finish();
+}
+
+engine::TracedPhotons decode_photons(const std::string& bytes) {
+  Reader r(bytes, "photon artefact");
+  r.tag("PHOT", PhotonLayoutVersion);
+  engine::TracedPhotons out;
+  out.surface = r.photons("surface photon count");
+  // Each plane takes at least its 8-byte count.
+  out.planes.resize(r.count(8, "plane count"));
+  for (auto& plane : out.planes) plane = r.photons("plane photon count");
+  out.tallies.resize(r.count(TallyBytes, "source count"));
+  for (SourceTally& t : out.tallies) {
+    t.prepass_attempts = r.u64("prepass_attempts");
+    t.mainpass_attempts = r.u64("mainpass_attempts");
+    t.entered = r.u64("entered");
+    t.stored_global = r.u64("stored_global");
+    t.stored_caustic = r.u64("stored_caustic");
+    t.stored_direct = r.u64("stored_direct");
+    t.bound_flux = r.f64("bound_flux");
+    t.flux_per_attempt = r.f64("flux_per_attempt");
+    t.storage_probability_global = r.f64("storage_probability_global");
+    t.storage_probability_caustic = r.f64("storage_probability_caustic");
+  }
+  r.done();
+  return out;
+}
+
+// ---- daylight coefficients ------------------------------------------------------------------
+
+std::string encode_coefficients(const engine::DaylightCoefficients& c) {
+  const std::size_t n = c.sensors * c.sources;
+  if ((c.sources != 0 && n / c.sources != c.sensors) || c.direct.size() != n ||
+      c.caustic.size() != n || c.global.size() != n)
+    throw std::invalid_argument("daylight coefficients: direct/caustic/global must hold " +
+                                std::to_string(c.sensors) + " x " + std::to_string(c.sources) +
+                                " values (have " + std::to_string(c.direct.size()) + ", " +
+                                std::to_string(c.caustic.size()) + ", " +
+                                std::to_string(c.global.size()) + ")");
+  Writer w(PreambleBytes + 16 + 3 * n * Vec3Bytes);
+  w.tag("DCOF", CoefficientLayoutVersion);
+  w.u64(c.sensors);
+  w.u64(c.sources);
+  for (const auto* part : {&c.direct, &c.caustic, &c.global})
+    for (const Vec3& v : *part) w.vec3(v);
+  return w.finish();
+}
+
+engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
+  Reader r(bytes, "daylight coefficient artefact");
+  r.tag("DCOF", CoefficientLayoutVersion);
+  engine::DaylightCoefficients c;
+  const std::uint64_t sensors = r.u64("sensor count");
+  const std::uint64_t sources = r.u64("source count");
+  // The three arrays need 3 x 24 bytes per (sensor, source) pair: check without overflow.
+  const std::size_t remaining = bytes.size() - (PreambleBytes + 16);
+  const std::uint64_t max_pairs = remaining / (3 * Vec3Bytes);
+  if ((sensors != 0 && sources > max_pairs / sensors) || sensors * sources != max_pairs ||
+      remaining % (3 * Vec3Bytes) != 0)
+    r.fail("size mismatch: " + std::to_string(sensors) + " sensors x " + std::to_string(sources) +
+           " sources need " + std::to_string(3 * Vec3Bytes) + " bytes each, " +
+           std::to_string(remaining) + " bytes remain");
+  c.sensors = static_cast<std::size_t>(sensors);
+  c.sources = static_cast<std::size_t>(sources);
+  const std::size_t n = c.sensors * c.sources;
+  for (auto* part : {&c.direct, &c.caustic, &c.global}) {
+    part->resize(n);
+    for (Vec3& v : *part) v = r.vec3("coefficient");
+  }
+  r.done();
+  return c;
+}
+
+// ---- RADIANCE matrices --------------------------------------------------------------------
+
+std::string encode_matrix(const RadianceMatrix& m) {
+  if (m.components() < 1) throw std::invalid_argument("matrix with fewer than 1 component");
+  std::size_t size = PreambleBytes + 8 + 8 + 4 + 8 + m.data().size() * 4;
+  for (const std::string& line : m.header_lines()) size += 8 + line.size();
+  Writer w(size);
+  w.tag("RMTX", MatrixLayoutVersion);
+  w.u64(m.rows());
+  w.u64(m.columns());
+  w.u32(static_cast<std::uint32_t>(m.components()));
+  w.u64(m.header_lines().size());
+  for (const std::string& line : m.header_lines()) w.text(line);
+  for (const float v : m.data()) w.f32(v);
+  return w.finish();
+}
+
+RadianceMatrix decode_matrix(const std::string& bytes) {
+  Reader r(bytes, "matrix artefact");
+  r.tag("RMTX", MatrixLayoutVersion);
+  const std::uint64_t rows = r.u64("row count");
+  const std::uint64_t columns = r.u64("column count");
+  const std::uint32_t components = r.u32("component count");
+  if (components < 1 || components > 0x7fffffffu)
+    r.fail("component count " + std::to_string(components) + " out of range");
+  std::vector<std::string> header(r.count(8, "header line count"));
+  for (std::string& line : header) line = r.text("header line length");
+  // The data fills exactly what is left, 4 bytes per value: check without overflow.
+  const std::size_t remaining = bytes.size() - (PreambleBytes + 8 + 8 + 4 + 8);
+  std::size_t header_bytes = 0;
+  for (const std::string& line : header) header_bytes += 8 + line.size();
+  const std::uint64_t values = (remaining - header_bytes) / 4;
+  const bool fits = (remaining - header_bytes) % 4 == 0 &&
+                    (rows == 0 || columns <= values / rows) &&
+                    (rows * columns == 0 || components <= values / (rows * columns)) &&
+                    rows * columns * components == values;
+  if (!fits)
+    r.fail("size mismatch: " + std::to_string(rows) + " x " + std::to_string(columns) + " x " +
+           std::to_string(components) + " values, " + std::to_string(remaining - header_bytes) +
+           " bytes remain");
+  RadianceMatrix m(static_cast<std::size_t>(rows), static_cast<std::size_t>(columns),
+                   static_cast<int>(components));
+  m.header_lines() = std::move(header);
+  for (float& v : m.data()) v = r.f32("matrix value");
+  r.done();
+  return m;
+}
+
+}  // namespace dayphoton::study
