@@ -64,4 +64,16 @@ struct SkyOptions {
 };
 int run_sky(const SkyOptions& options, const std::string& command_line, std::ostream& out);
 
+struct AnnualOptions {
+  std::string coefficients_dir;  ///< grid folder of `dayphoton run` (coefficients_sky.mtx, sensors.csv)
+  std::string weather_path;      ///< EPW: time stamps, and the sky unless sky_matrix_path is given
+  std::string sky_matrix_path;   ///< RADIANCE matrix file (plain or .gz); empty: built from the EPW
+  std::string output_dir;        ///< empty: <coefficients_dir>/annual
+  std::string basis;             ///< empty: from the coefficients' column count
+  double ground_reflectance = 0.2;     ///< used if given, else the run's (summary.json), else 0.2
+  bool ground_reflectance_given = false;
+  bool quiet = false;
+};
+int run_annual(const AnnualOptions& options, std::ostream& out);
+
 }  // namespace dayphoton::app

@@ -63,6 +63,25 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"ascii", "float", "double"}));
   sky_cmd->add_option("-o,--output", sky.output_path, "Output matrix file (default: standard output)");
 
+  AnnualOptions annual;
+  auto* annual_cmd = cli.add_subcommand(
+      "annual", "Annual illuminance and metrics from the sky coefficients of an earlier run (no tracing)");
+  annual_cmd->add_option("--coefficients", annual.coefficients_dir,
+                         "Grid folder written by `dayphoton run` (coefficients_sky.mtx, sensors.csv)")
+      ->required();
+  annual_cmd->add_option("--weather", annual.weather_path, "Weather file (EPW): time stamps, and the sky")->required();
+  annual_cmd->add_option("--sky-matrix", annual.sky_matrix_path,
+                         "Read the sky matrix from this RADIANCE matrix file (e.g. gendaymtx output, plain or .gz) "
+                         "instead of building it from the weather file");
+  annual_cmd->add_option("-o,--output", annual.output_dir, "Output folder (default: <coefficients>/annual)");
+  annual_cmd->add_option("--basis", annual.basis,
+                         "tregenza or reinhart:N (default: from the coefficients' column count)");
+  annual_cmd->add_option("--ground-reflectance", annual.ground_reflectance,
+                         "Ground reflectance of the sky built from the weather file (default: the run's, from "
+                         "summary.json beside the grid folder, else 0.2)")
+      ->check(CLI::Range(0.0, 1.0));
+  annual_cmd->add_flag("-q,--quiet", annual.quiet, "Print errors only");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -86,6 +105,10 @@ int main(int argc, char** argv) {
       std::string command_line = "dayphoton";
       for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
       return run_sky(sky, command_line, std::cout);
+    }
+    if (annual_cmd->parsed()) {
+      annual.ground_reflectance_given = annual_cmd->count("--ground-reflectance") > 0;
+      return run_annual(annual, std::cout);
     }
   } catch (const dayphoton::InputError& e) {
     std::cerr << e.what();

@@ -183,6 +183,17 @@ TEST_F(RadianceReference, OwnGendaymtxCompatibleSkyGivesDa300WithinTwoPoints) {
   RecordProperty("worst_da300_difference_points", std::to_string(worst));
   RecordProperty("worst_udi_100_2000_difference_points", std::to_string(worst_udi));
   EXPECT_NEAR(study.grid.sda_percent, 100.0 * 138 / 165, 3.0);
+
+  // The same sky written as a RADIANCE float matrix and read back (the `dayphoton annual
+  // --sky-matrix` path) gives the identical table: the file format loses nothing.
+  const std::string path = (fs::temp_directory_path() / "dayphoton_annual_study_own_sky.mtx").string();
+  own.matrix.write_file(path, MatrixFormat::Float);
+  const AnnualSky from_file = annual_sky_from_matrix_file(path, *epw);
+  fs::remove(path);
+  const AnnualStudy again = compute_annual_study(*coefficients, from_file, AnnualStudySettings{});
+  for (std::size_t t = 0; t < 8760; ++t)
+    for (std::size_t s = 0; s < 165; ++s) ASSERT_EQ(again.illuminance.lux(t, s), study.illuminance.lux(t, s));
+  EXPECT_EQ(again.grid.sda_percent, study.grid.sda_percent);
 }
 
 TEST_F(RadianceReference, SkyMatrixFileMustMatchTheWeatherFile) {

@@ -1,0 +1,149 @@
+// `dayphoton annual --coefficients DIR --weather FILE.epw`: the annual illuminance tables and
+// metrics of a grid from the sky coefficients an earlier `dayphoton run` exported
+// (DIR/coefficients_sky.mtx, DIR/sensors.csv), without any tracing (issue 5 item 6). The sky
+// matrix is built from the EPW in the RADIANCE-compatible mode (gendaymtx -m MF, sun spread
+// into patches) or read from a RADIANCE matrix file (--sky-matrix, e.g. gendaymtx output,
+// plain or .gz); the EPW always gives the time stamps. See docs/outputs.md and docs/cli.md.
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <iomanip>
+#include <ostream>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/study/annual_study.h"
+#include "dayphoton/study/result_files.h"
+#include "dayphoton/weather/epw_reader.h"
+
+namespace dayphoton::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+sky::PatchBasis basis_from_option(const std::string& text) {
+  if (text == "tregenza") return sky::PatchBasis::tregenza();
+  const std::string prefix = "reinhart:";
+  if (text.rfind(prefix, 0) == 0) {
+    try {
+      std::size_t used = 0;
+      const int mf = std::stoi(text.substr(prefix.size()), &used);
+      if (used == text.size() - prefix.size() && mf >= 1 && mf <= 64) return sky::PatchBasis::reinhart(mf);
+    } catch (const std::exception&) {
+    }
+  }
+  throw UsageError("--basis must be 'tregenza' or 'reinhart:N' with N in 1..64, not '" + text + "'");
+}
+
+/// The basis whose bin count (144 MF^2 + 2) is the coefficient matrix's column count.
+sky::PatchBasis basis_of_columns(std::size_t columns, const std::string& coefficients_path) {
+  for (int mf = 1; mf <= 64; ++mf)
+    if (static_cast<std::size_t>(144 * mf * mf + 2) == columns) return sky::PatchBasis::reinhart(mf);
+  throw InputError(SourceLocation{coefficients_path, 0, 0},
+                   std::to_string(columns) + " columns match no sky basis (Tregenza 146, Reinhart MF n 144 n^2 + 2)");
+}
+
+/// The ground reflectance the run used, from the run's summary.json beside the grid folder
+/// (simulation.ground_reflectance), so that the rebuilt sky equals the run's; nullopt if
+/// there is no such file or key.
+std::optional<double> run_ground_reflectance(const std::string& grid_dir) {
+  fs::path dir = fs::absolute(grid_dir).lexically_normal();
+  if (!dir.has_filename()) dir = dir.parent_path();  // "grid/" -> "grid"
+  const fs::path summary = dir.parent_path() / "summary.json";
+  std::ifstream in(summary);
+  if (!in) return std::nullopt;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.contains("simulation") || !j["simulation"].is_object()) return std::nullopt;
+  const nlohmann::json& s = j["simulation"];
+  if (!s.contains("ground_reflectance") || !s["ground_reflectance"].is_number()) return std::nullopt;
+  const double rho = s["ground_reflectance"].get<double>();
+  if (!(rho >= 0 && rho <= 1)) return std::nullopt;
+  return rho;
+}
+
+std::string percent(double v) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << v << " %";
+  return s.str();
+}
+
+}  // namespace
+
+int run_annual(const AnnualOptions& o, std::ostream& out) {
+  if (!o.sky_matrix_path.empty() && o.ground_reflectance_given)
+    throw UsageError("--ground-reflectance applies to sky matrices built from the weather file, not to --sky-matrix");
+  if (!fs::is_directory(o.coefficients_dir))
+    throw InputError(SourceLocation{o.coefficients_dir, 0, 0},
+                     "not a folder; --coefficients takes a grid folder written by `dayphoton run`");
+  const std::string coefficients_path = (fs::path(o.coefficients_dir) / "coefficients_sky.mtx").string();
+  const std::string sensors_path = (fs::path(o.coefficients_dir) / "sensors.csv").string();
+  std::optional<sky::PatchBasis> requested_basis;
+  if (!o.basis.empty()) requested_basis = basis_from_option(o.basis);
+
+  const RadianceMatrix coefficients = RadianceMatrix::read_file(coefficients_path);
+  const std::vector<SensorPoint> sensors = study::read_sensors_csv(sensors_path);
+  if (sensors.size() != coefficients.rows())
+    throw InputError(SourceLocation{sensors_path, 0, 0},
+                     "has " + std::to_string(sensors.size()) + " sensors but " + coefficients_path + " has " +
+                         std::to_string(coefficients.rows()) + " rows");
+  if (coefficients.components() != 3)
+    throw InputError(SourceLocation{coefficients_path, 0, 0},
+                     "NCOMP=" + std::to_string(coefficients.components()) + ", expected 3 (RGB coefficients)");
+  const sky::PatchBasis basis = requested_basis ? *requested_basis : basis_of_columns(coefficients.columns(), coefficients_path);
+  if (static_cast<std::size_t>(basis.bin_count()) != coefficients.columns())
+    throw InputError(SourceLocation{coefficients_path, 0, 0},
+                     "has " + std::to_string(coefficients.columns()) + " columns but --basis " + o.basis + " has " +
+                         std::to_string(basis.bin_count()) + " bins");
+
+  const weather::EpwFile epw = weather::read_epw(o.weather_path);
+  study::AnnualSky sky;
+  if (o.sky_matrix_path.empty()) {
+    double rho = o.ground_reflectance;
+    if (!o.ground_reflectance_given)
+      if (const std::optional<double> from_run = run_ground_reflectance(o.coefficients_dir)) rho = *from_run;
+    sky = study::annual_sky_from_epw(epw, basis, study::radiance_compatible_sky_options(rho));
+  } else {
+    sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, epw);
+    if (sky.matrix.rows() != coefficients.columns() || sky.matrix.components() != coefficients.components())
+      throw InputError(SourceLocation{o.sky_matrix_path, 0, 0},
+                       "has " + std::to_string(sky.matrix.rows()) + " rows x " +
+                           std::to_string(sky.matrix.components()) + " components but " + coefficients_path +
+                           " has " + std::to_string(coefficients.columns()) + " bins x " +
+                           std::to_string(coefficients.components()));
+  }
+
+  const study::AnnualStudySettings settings;
+  const study::AnnualStudy result = study::compute_annual_study(coefficients, sky, settings);
+  const std::string output_dir =
+      o.output_dir.empty() ? (fs::path(o.coefficients_dir) / "annual").string() : o.output_dir;
+  const std::vector<std::string> written = study::write_annual_outputs(result, sensors, settings, output_dir);
+
+  if (!o.quiet) {
+    const metrics::GridMetrics& g = result.grid;
+    std::size_t sda_sensors = 0;
+    for (const metrics::SensorMetrics& m : result.sensors) sda_sensors += m.da_percent >= 50.0;
+    out << "dayphoton annual: " << sensors.size() << " sensors x " << result.illuminance.step_count()
+        << " steps, " << result.occupied_hours << " occupied hours (08:00-18:00 local standard time)\n"
+        << "  sky: " << result.sky_description << "\n"
+        << "  mean DA300 " << percent(g.mean.da_percent) << ", sDA300/50% " << percent(g.sda_percent) << " ("
+        << sda_sensors << " of " << sensors.size() << " sensors), mean UDI 100-2000 "
+        << percent(g.mean.udi_original_percent) << ", mean occupied illuminance " << std::fixed
+        << std::setprecision(0) << g.mean.mean_occupied_lux << " lux\n";
+    if (!g.en17037.empty()) {
+      out << "  EN 17037 daylight provision:";
+      for (std::size_t i = 0; i < g.en17037.size(); ++i)
+        out << (i ? ", " : " ") << g.en17037[i].level << (g.en17037[i].passes ? " passes" : " fails");
+      out << '\n';
+    }
+    out << "  ASE not computed (needs direct-sun coefficients; sky coefficients only here)\n";
+    for (const std::string& path : written) out << "  wrote " << path << '\n';
+    require_written(out, "the summary");
+  }
+  return ExitOk;
+}
+
+}  // namespace dayphoton::app
