@@ -1,10 +1,11 @@
 // load_project: stage 2 of project loading (STYLE.md A.3): located YAML tree -> typed Project.
 // Every section is read through a ParamReader against its schema (project_schema.cpp), so
 // unknown keys, missing keys, wrong types, ranges and enumerations are checked uniformly and
-// located. Names are checked for uniqueness per kind; material and room references are
-// resolved after everything is read, with "did you mean" hints. All errors are collected
-// (Diagnostics, cap 50) and thrown together as one InputError. The file format is described
-// in docs/project-format.md.
+// located. Names are checked for uniqueness per kind; material and room references (and
+// the materials a variant replaces) are resolved after everything is read, with "did you
+// mean" hints. Rules between keys (occupancy start < end, UDI band order) are checked here.
+// All errors are collected (Diagnostics, cap 50) and thrown together as one InputError. The
+// file format is described in docs/project-format.md.
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -89,6 +90,15 @@ class Loader {
       empty_map.location = root.location;
       read_outputs(empty_map);
     }
+    if (const YamlNode* n = r.take("metrics")) {
+      read_metrics(*n);
+    } else {
+      YamlNode empty_map;  // every key from its schema default
+      empty_map.kind = YamlNode::Kind::Map;
+      empty_map.location = root.location;
+      read_metrics(empty_map);
+    }
+    for_each_item(r, "variants", [&](const YamlNode& n) { read_variant(n); });
     r.finish();
 
     const Outputs& o = m_project.outputs;
@@ -202,55 +212,60 @@ class Loader {
     if (!expect_map(node, "materials", m_reporter)) return;
     for (const auto& entry : node.entries) {
       m_material_names.add(entry.key, entry.key_location, m_reporter);
-      if (!expect_map(entry.value, entry.key, m_reporter)) continue;
-      const YamlEntry* type_entry = entry.value.find("type");
-      if (!type_entry) {
-        m_reporter.error(entry.value.location,
-                         "missing required key 'type' in material '" + entry.key + "'");
-        continue;
-      }
-      // Validate the type itself (allowed values, hint) with any material section's entry.
-      std::string type;
-      {
-        ParamReader type_reader(entry.value, schema_section("lambertian material"), m_reporter);
-        if (!type_reader.read_choice("type", type)) continue;
-      }
       MaterialSpec m;
-      m.name = entry.key;
-      m.location = entry.key_location;
-      ParamReader r(entry.value, schema_section(type + " material"), m_reporter);
-      r.take("type");
-      if (type == "lambertian") {
-        m.type = MaterialType::Lambertian;
-        r.read_rgb("reflectance", m.reflectance);
-      } else if (type == "plastic" || type == "metal" || type == "translucent") {
-        m.type = type == "plastic" ? MaterialType::Lambertian
-                 : type == "metal" ? MaterialType::Metal
-                                   : MaterialType::Translucent;
-        r.read_rgb("reflectance", m.reflectance);
-        r.read_number("specularity", m.specularity);
-        r.read_number("roughness", m.roughness);
-        if (type == "translucent") {
-          r.read_number("transmissivity", m.transmissivity);
-          r.read_number("transmitted_specular", m.transmitted_specular);
-        }
-      } else if (type == "mirror") {
-        m.type = MaterialType::Mirror;
-        r.read_rgb("reflectance", m.reflectance);
-      } else if (type == "glass") {
-        m.type = MaterialType::Glass;
-        r.read_rgb("transmittance", m.transmittance);
-        r.read_number("refractive_index", m.refractive_index);
-      } else if (type == "dielectric") {
-        m.type = MaterialType::Dielectric;
-        r.read_number("refractive_index", m.refractive_index);
-        r.read_rgb("transmittance", m.transmittance);
-      } else if (type == "opening") {
-        m.type = MaterialType::Opening;
-      }
-      r.finish();
-      m_project.materials.push_back(std::move(m));
+      if (read_material(entry, m)) m_project.materials.push_back(std::move(m));
     }
+  }
+
+  /// One material definition `name: {type: ..., ...}` (top level or in a variant).
+  bool read_material(const YamlEntry& entry, MaterialSpec& m) {
+    if (!expect_map(entry.value, entry.key, m_reporter)) return false;
+    const YamlEntry* type_entry = entry.value.find("type");
+    if (!type_entry) {
+      m_reporter.error(entry.value.location,
+                       "missing required key 'type' in material '" + entry.key + "'");
+      return false;
+    }
+    // Validate the type itself (allowed values, hint) with any material section's entry.
+    std::string type;
+    {
+      ParamReader type_reader(entry.value, schema_section("lambertian material"), m_reporter);
+      if (!type_reader.read_choice("type", type)) return false;
+    }
+    m.name = entry.key;
+    m.location = entry.key_location;
+    ParamReader r(entry.value, schema_section(type + " material"), m_reporter);
+    r.take("type");
+    if (type == "lambertian") {
+      m.type = MaterialType::Lambertian;
+      r.read_rgb("reflectance", m.reflectance);
+    } else if (type == "plastic" || type == "metal" || type == "translucent") {
+      m.type = type == "plastic" ? MaterialType::Lambertian
+               : type == "metal" ? MaterialType::Metal
+                                 : MaterialType::Translucent;
+      r.read_rgb("reflectance", m.reflectance);
+      r.read_number("specularity", m.specularity);
+      r.read_number("roughness", m.roughness);
+      if (type == "translucent") {
+        r.read_number("transmissivity", m.transmissivity);
+        r.read_number("transmitted_specular", m.transmitted_specular);
+      }
+    } else if (type == "mirror") {
+      m.type = MaterialType::Mirror;
+      r.read_rgb("reflectance", m.reflectance);
+    } else if (type == "glass") {
+      m.type = MaterialType::Glass;
+      r.read_rgb("transmittance", m.transmittance);
+      r.read_number("refractive_index", m.refractive_index);
+    } else if (type == "dielectric") {
+      m.type = MaterialType::Dielectric;
+      r.read_number("refractive_index", m.refractive_index);
+      r.read_rgb("transmittance", m.transmittance);
+    } else if (type == "opening") {
+      m.type = MaterialType::Opening;
+    }
+    r.finish();
+    return true;
   }
 
   void use_material(const ParamReader& r, const std::string& key, const std::string& name) {
@@ -559,17 +574,111 @@ class Loader {
     r.finish();
   }
 
+  // ---- metrics settings -----------------------------------------------------------------
+  void read_metrics(const YamlNode& node) {
+    if (!expect_map(node, "metrics", m_reporter)) return;
+    MetricsSettings& m = m_project.metrics;
+    m.location = node.location;
+    ParamReader r(node, schema_section("metrics"), m_reporter);
+    std::vector<double> thresholds;
+    if (r.read_numbers("daylight_factor_thresholds", thresholds)) {
+      bool unique = true;
+      for (std::size_t i = 0; i < thresholds.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+          if (thresholds[i] == thresholds[j] && unique) {
+            // Only a file value can repeat (the default has one element), so items exist.
+            m_reporter.error(node.find("daylight_factor_thresholds")->value.items[i].location,
+                             "duplicate value " + format_number(thresholds[i]) +
+                                 " in 'daylight_factor_thresholds'");
+            unique = false;
+          }
+      if (unique) m.daylight_factor_thresholds_percent = thresholds;
+    }
+    const bool da = r.read_number("da_threshold", m.da_threshold_lux);
+    const bool start = r.read_number("occupancy_start", m.occupancy_start_h);
+    const bool end = r.read_number("occupancy_end", m.occupancy_end_h);
+    const bool low = r.read_number("udi_lower", m.udi_lower_lux);
+    const bool up1 = r.read_number("udi_upper_original", m.udi_upper_original_lux);
+    const bool up2 = r.read_number("udi_upper_revised", m.udi_upper_revised_lux);
+    r.read_number("sda_time_fraction", m.sda_time_fraction);
+    r.read_number("ase_threshold", m.ase_threshold_lux);
+    r.read_number("ase_hours", m.ase_hours);
+
+    // Relations between keys. Reported at the first of the keys written in the file (a
+    // default cannot be wrong on its own), so the caret points at what the user typed.
+    auto at = [&](const char* first, const char* second) {
+      return r.location_of(r.has(first) ? first : second);
+    };
+    auto value = [](double v) { return format_number(v); };
+    if (start && end && !(m.occupancy_end_h > m.occupancy_start_h))
+      m_reporter.error(at("occupancy_end", "occupancy_start"),
+                       "'occupancy_end' (" + value(m.occupancy_end_h) +
+                           ") must be after 'occupancy_start' (" + value(m.occupancy_start_h) + ")");
+    if (low && up1 && !(m.udi_upper_original_lux > m.udi_lower_lux))
+      m_reporter.error(at("udi_upper_original", "udi_lower"),
+                       "'udi_upper_original' (" + value(m.udi_upper_original_lux) +
+                           ") must be greater than 'udi_lower' (" + value(m.udi_lower_lux) + ")");
+    if (low && up2 && !(m.udi_upper_revised_lux > m.udi_lower_lux))
+      m_reporter.error(at("udi_upper_revised", "udi_lower"),
+                       "'udi_upper_revised' (" + value(m.udi_upper_revised_lux) +
+                           ") must be greater than 'udi_lower' (" + value(m.udi_lower_lux) + ")");
+    else if (da && low && up2 &&
+             (m.da_threshold_lux < m.udi_lower_lux || m.da_threshold_lux > m.udi_upper_revised_lux))
+      // The revised UDI splits [udi_lower, udi_upper_revised] at the DA threshold into
+      // supplementary and autonomous; outside that band the bins would not partition the hours.
+      m_reporter.error(r.has("da_threshold") ? r.location_of("da_threshold")
+                                             : at("udi_lower", "udi_upper_revised"),
+                       "'da_threshold' (" + value(m.da_threshold_lux) +
+                           ") must lie between 'udi_lower' (" + value(m.udi_lower_lux) +
+                           ") and 'udi_upper_revised' (" + value(m.udi_upper_revised_lux) +
+                           "): the revised UDI band is split there");
+    r.finish();
+  }
+
+  // ---- variants -------------------------------------------------------------------------
+  void read_variant(const YamlNode& node) {
+    VariantSpec v;
+    v.location = node.location;
+    ParamReader r(node, schema_section("variant"), m_reporter);
+    if (r.read_string("name", v.name)) {
+      if (!is_portable_folder_name(v.name))
+        m_reporter.error(r.location_of("name"),
+                         "variant name '" + v.name + "' is not a portable folder name (1 to 64 of "
+                         "A-Z a-z 0-9 _ - ., not starting with '.' or '-', not ending with '.', "
+                         "not a device name such as 'nul')");
+      m_variant_names.add(v.name, r.location_of("name"), m_reporter);
+    }
+    if (const YamlNode* mats = r.take("materials"); mats && expect_map(*mats, "materials", m_reporter)) {
+      if (mats->entries.empty())
+        m_reporter.error(mats->location, "variant '" + v.name + "' replaces no material (give at "
+                                         "least one material definition)");
+      for (const auto& entry : mats->entries) {
+        m_variant_material_uses.push_back({{entry.key, entry.key_location}, v.name});
+        MaterialSpec m;
+        if (read_material(entry, m)) v.materials.push_back(std::move(m));
+      }
+    }
+    r.finish();
+    m_project.variants.push_back(std::move(v));
+  }
+
   // ---- references -----------------------------------------------------------------------
   void check_references() {
     for (const auto& use : m_material_uses)
       if (!m_material_names.contains(use.name))
         unknown_name("material", use, m_material_names.names());
+    // A variant replaces materials; it cannot add new ones (nothing would use them).
+    for (const auto& use : m_variant_material_uses)
+      if (!m_material_names.contains(use.material.name))
+        unknown_name("material", use.material, m_material_names.names(),
+                     " in variant '" + use.variant + "'");
     for (const auto& use : m_room_uses)
       if (!m_room_names.contains(use.name)) unknown_name("room", use, m_room_names.names());
   }
 
-  void unknown_name(const std::string& kind, const NameUse& use, const std::vector<std::string>& known) {
-    std::string message = "unknown " + kind + " '" + use.name + "'";
+  void unknown_name(const std::string& kind, const NameUse& use, const std::vector<std::string>& known,
+                    const std::string& where = "") {
+    std::string message = "unknown " + kind + " '" + use.name + "'" + where;
     const std::string hint = closest_match(use.name, known);
     if (!hint.empty()) message += " (did you mean '" + hint + "'?)";
     m_reporter.error(use.location, message);
@@ -579,8 +688,13 @@ class Loader {
   Reporter& m_reporter;
   NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
       m_polygon_names{"polygon"}, m_box_names{"box"}, m_mesh_names{"mesh"},
-      m_sensor_names{"sensor set"};
+      m_sensor_names{"sensor set"}, m_variant_names{"variant"};
   std::vector<NameUse> m_material_uses, m_room_uses;
+  struct VariantMaterialUse {
+    NameUse material;
+    std::string variant;
+  };
+  std::vector<VariantMaterialUse> m_variant_material_uses;
 };
 
 }  // namespace

@@ -300,6 +300,31 @@ bool ParamReader::read_points(const std::string& key, std::vector<Vec3>& out) {
   return ok;
 }
 
+bool ParamReader::read_numbers(const std::string& key, std::vector<double>& out) {
+  YamlNode scratch;
+  const YamlNode* v = value_or_default(key, scratch);
+  if (!v) return false;
+  if (!v->is_sequence() || v->items.empty()) {
+    m_reporter.error(v->location, "expected a list of one or more numbers for '" + key + "', got " +
+                                      (v->is_sequence() ? std::string("an empty list") : v->describe()));
+    return false;
+  }
+  std::vector<double> values;
+  bool ok = true;
+  for (const auto& item : v->items) {
+    double x = 0;
+    if (!item.is_scalar() || !parse_double(item.scalar, x)) {
+      m_reporter.error(item.location, "expected a number in '" + key + "', got " + item.describe());
+      ok = false;
+    } else if (!check_range(param(key), item, x)) {
+      ok = false;
+    }
+    values.push_back(x);
+  }
+  if (ok) out = std::move(values);
+  return ok;
+}
+
 void ParamReader::finish() {
   for (const auto& e : m_node.entries) {
     if (m_read.count(e.key)) continue;

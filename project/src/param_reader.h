@@ -38,6 +38,8 @@ class ParamReader {
   bool read_vec3(const std::string& key, Vec3& out);
   bool read_rgb(const std::string& key, Vec3& out);
   bool read_points(const std::string& key, std::vector<Vec3>& out);
+  /// A non-empty list of numbers, each checked against the key's range.
+  bool read_numbers(const std::string& key, std::vector<double>& out);
 
   /// Report unread keys. Call once after all reads.
   void finish();

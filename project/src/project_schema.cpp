@@ -67,6 +67,8 @@ std::vector<SectionSchema> build_schema() {
       P("sensors", T::Section, "sensor grids and point sets").section("sensors"),
       P("simulation", T::Section, "photon and sky settings").section("simulation"),
       P("outputs", T::Section, "what to write and where").section("outputs"),
+      P("metrics", T::Section, "thresholds and occupancy of the results").section("metrics"),
+      P("variants", T::SectionList, "study variants: the project with some materials replaced").section("variant"),
   }});
   s.push_back({"site", "location of the site and orientation of the model", {
       P("name", T::String, "site name for reports").def(""),
@@ -209,6 +211,23 @@ std::vector<SectionSchema> build_schema() {
       P("report", T::Boolean, "report.html").def("true"),
       P("matrix_format", T::Choice, "encoding of .mtx files").choices({"ascii", "float"}).def("ascii"),
   }});
+  // Defaults as LM-83 and docs/metrics.md; they mirror metrics::MetricSettings.
+  s.push_back({"metrics", "thresholds and occupancy of the daylight-factor statistics and annual metrics", {
+      P("daylight_factor_thresholds", T::NumberList, "DF statistics report the area with DF >= each value (no duplicates)").unit("%").range(0, 100).above(0).def("[2]"),
+      P("da_threshold", T::Number, "illuminance threshold of DA, cDA and sDA; splits the revised UDI band").unit("lx").above(0).def("300"),
+      P("occupancy_start", T::Number, "occupied: records whose mid-hour time t has occupancy_start <= t < occupancy_end (local standard time, no DST, every day)").unit("h").range(0, 24).def("8"),
+      P("occupancy_end", T::Number, "end of the occupied hours, greater than occupancy_start").unit("h").range(0, 24).def("18"),
+      P("udi_lower", T::Number, "UDI: below this the illuminance fell short").unit("lx").above(0).def("100"),
+      P("udi_upper_original", T::Number, "UDI (Nabil & Mardaljevic 2005): above this it is exceeded").unit("lx").above(0).def("2000"),
+      P("udi_upper_revised", T::Number, "revised UDI (Mardaljevic): above this it is exceeded").unit("lx").above(0).def("3000"),
+      P("sda_time_fraction", T::Number, "sDA: fraction of occupied hours a sensor must reach da_threshold").range(0, 1).above(0).def("0.5"),
+      P("ase_threshold", T::Number, "ASE: direct-sun illuminance threshold").unit("lx").above(0).def("1000"),
+      P("ase_hours", T::Number, "ASE: a sensor fails with more occupied hours than this at or above ase_threshold").unit("h").range(0, 8784).def("250"),
+  }});
+  s.push_back({"variant", "a study variant: the whole project with the listed materials replaced", {
+      P("name", T::String, "unique variant name, also its output folder: letters, digits, _ - . (at most 64)").required(),
+      P("materials", T::NameMap, "name of a material in `materials` -> its full definition in this variant").required(),
+  }});
   return s;
 }
 
@@ -226,6 +245,7 @@ std::string param_type_name(ParamType type) {
     case ParamType::Rgb: return "number or [r, g, b]";
     case ParamType::Path: return "path";
     case ParamType::PointList: return "list of [x, y, z]";
+    case ParamType::NumberList: return "list of numbers";
     case ParamType::Section: return "map";
     case ParamType::SectionList: return "list";
     case ParamType::NameMap: return "map";

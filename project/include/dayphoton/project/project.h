@@ -176,6 +176,37 @@ struct Outputs {
   SourceLocation location;
 };
 
+/// Settings of the results (docs/project-format.md, section `metrics`). Plain numbers that
+/// mirror metrics::MetricSettings and the occupancy schedule of the metrics library (this
+/// library does not depend on it); defaults are those of LM-83 / the issue 5 conventions
+/// and equal the schema defaults (a test checks both agree).
+struct MetricsSettings {
+  /// Daylight factor: the grid statistics report the area (percent of sensors) with
+  /// DF >= each threshold, in the order written. Each in (0, 100], no duplicates.
+  std::vector<double> daylight_factor_thresholds_percent = {2.0};
+  double da_threshold_lux = 300;         ///< DA, cDA, sDA; also the revised-UDI split
+  /// Occupied hours: start_h <= mid-hour stamp < end_h in local standard time (no DST),
+  /// every day; 0 <= start_h < end_h <= 24.
+  double occupancy_start_h = 8;
+  double occupancy_end_h = 18;
+  double udi_lower_lux = 100;            ///< below: "fell short"
+  double udi_upper_original_lux = 2000;  ///< Nabil & Mardaljevic 2005
+  double udi_upper_revised_lux = 3000;   ///< Mardaljevic's revision
+  double sda_time_fraction = 0.5;        ///< sDA300/50%: fraction of occupied hours, (0, 1]
+  double ase_threshold_lux = 1000;       ///< ASE1000,250: direct-sun illuminance threshold
+  double ase_hours = 250;                ///< a sensor fails with more than this many hours
+  SourceLocation location;
+};
+
+/// A study variant: the whole project with some materials replaced (alternative glazing,
+/// blinds modelled as a translucent material, ...). Only replaces materials that exist in
+/// Project::materials; apply_variant() builds the variant's Project.
+struct VariantSpec {
+  std::string name;                    ///< unique, a portable folder name
+  std::vector<MaterialSpec> materials; ///< full definitions, each named after a base material
+  SourceLocation location;
+};
+
 struct Project {
   int format_version = 1; ///< `version` key of the file (only 1 exists)
   std::string path;       ///< the project file as given
@@ -187,6 +218,8 @@ struct Project {
   Sensors sensors;
   Simulation simulation;
   Outputs outputs;
+  MetricsSettings metrics;
+  std::vector<VariantSpec> variants;  ///< in file order; empty if the file has none
 };
 
 /// Parse and validate a project file. Throws InputError with every problem found (located,
@@ -195,6 +228,18 @@ Project load_project(const std::string& path);
 
 /// Same, from text already in memory (`path` is used in messages and to resolve relative paths).
 Project load_project_from_string(const std::string& text, const std::string& path);
+
+/// The project of one variant: `base` with every material of `variant` put in place of the
+/// base material of the same name (same position in `materials`, so material indices do not
+/// change); everything else, `variants` included, is equal to `base`. Throws
+/// std::invalid_argument if the variant names a material `base` does not have (the loader
+/// reports that as an input error, so this only happens with hand-made variants).
+Project apply_variant(const Project& base, const VariantSpec& variant);
+
+/// True if `name` can be used as a folder name on every common file system: 1 to 64
+/// characters from [A-Za-z0-9_.-], not starting with '.' or '-', not ending with '.', and
+/// not a Windows device name (con, nul, com1, ... with any extension).
+bool is_portable_folder_name(const std::string& name);
 
 /// Generate the scene: rooms with their windows cut out (windows become glazing ports),
 /// polygons, boxes, OBJ meshes, sensor grids and point files, all rotated by the site's
