@@ -29,7 +29,7 @@ std::string format_duration(double s) {
   return buf;
 }
 
-// Three significant digits with an SI prefix: "950", "23.4 k", "1.05 M".
+// Three significant digits with an SI prefix: "8.13", "950", "23.4 k", "1.05 M".
 std::string format_amount(double v) {
   char buf[64];
   const char* prefix = "";
@@ -38,8 +38,7 @@ std::string format_amount(double v) {
     v /= 1000;
     prefix = p;
   }
-  std::snprintf(buf, sizeof buf, v < 9.995 && *prefix ? "%.2f%s" : (v < 99.95 && *prefix ? "%.1f%s" : "%.0f%s"), v,
-                prefix);
+  std::snprintf(buf, sizeof buf, v < 9.995 ? "%.2f%s" : (v < 99.95 ? "%.1f%s" : "%.0f%s"), v, prefix);
   return buf;
 }
 
