@@ -1,24 +1,56 @@
-// `dayphoton run PROJECT.yaml...`: the full daylight study. Until the photon engine, the
-// sky matrices and the annual pipeline exist (issues 3-5), it validates the projects, prints
-// their summary, says plainly which steps are missing, writes nothing and exits non-zero.
+// `dayphoton run PROJECT.yaml...`: the daylight study of each project (study/study_runner.h),
+// with progress on the terminal (a redrawn bar) or plain lines when the output is not one,
+// and a table of where the time went. Several projects run one after the other, each into
+// its own output folder (or into --output/<project name> when --output is given for more
+// than one project).
+#include <unistd.h>
+
+#include <filesystem>
+#include <memory>
+#include <iostream>
 #include <ostream>
+
+#include <tbb/global_control.h>
 
 #include "commands.h"
 #include "dayphoton/project/project.h"
-#include "model_summary.h"
+#include "dayphoton/study/study_runner.h"
 
 namespace dayphoton::app {
 
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
-  for (const std::string& path : options.project_paths) {
-    const project::Project proj = project::load_project(path);
-    const ModelSummary summary = summarize_model(proj);
-    if (!options.quiet) print_model_summary(summary, out);
+  (void)err;
+  std::unique_ptr<tbb::global_control> threads;
+  if (options.threads > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    static_cast<std::size_t>(options.threads));
+  // Load every project first: a typo in the last one should not wait for the first to run.
+  std::vector<project::Project> projects;
+  for (const std::string& path : options.project_paths) projects.push_back(project::load_project(path));
+
+  const study::ProgressStyle style =
+      study::Progress::choose_style(&out == &std::cout && isatty(STDOUT_FILENO), options.quiet);
+  for (const project::Project& proj : projects) {
+    study::Progress progress(out, style);
+    study::RunSettings settings;
+    settings.force = options.force;
+    if (!options.output_dir.empty()) {
+      settings.output_dir =
+          projects.size() == 1
+              ? options.output_dir
+              : (std::filesystem::path(options.output_dir) /
+                 std::filesystem::path(proj.path).parent_path().filename()).string();
+    }
+    const study::RunReport report = study::run_study(proj, settings, progress);
+    progress.print_summary();
+    if (!options.quiet) {
+      out << "results: " << report.output_dir << "\n";
+      for (const study::GridReport& g : report.grids)
+        out << "  " << g.name << ": " << g.sensors << " sensors in " << g.folder << "\n";
+    }
   }
-  err << "dayphoton run: not implemented yet: photon tracing, daylight coefficients, annual\n"
-         "sky multiplication and metrics are still to be built. The projects above are valid;\n"
-         "no output was written.\n";
-  return ExitNotImplemented;
+  require_written(out, "standard output");
+  return ExitOk;
 }
 
 }  // namespace dayphoton::app

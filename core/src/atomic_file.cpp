@@ -16,7 +16,7 @@ std::string errno_text() { return std::strerror(errno); }
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
-                           bool binary) {
+                           bool binary, bool sync) {
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
   {
     std::ofstream out(tmp, binary ? std::ios::binary | std::ios::trunc : std::ios::trunc);
@@ -35,7 +35,7 @@ void write_file_atomically(const std::string& path, const std::function<void(std
     }
   }
   // fsync so the rename never exposes a file whose data is not yet on disk.
-  const int fd = ::open(tmp.c_str(), O_RDONLY);
+  const int fd = sync ? ::open(tmp.c_str(), O_RDONLY) : -1;
   if (fd >= 0) {
     ::fsync(fd);
     ::close(fd);

@@ -76,7 +76,7 @@ class BlockSink final : public PhotonSink {
      : photon.path_class == PathClass::Caustic ? m_out.caustic
                                                : m_out.direct)++;
     if (plane < 0) {
-      m_out.surface.push_back(stored);
+      if (m_options.keep_surface_photons) m_out.surface.push_back(stored);
     } else {
       m_out.planes[static_cast<std::size_t>(plane)].push_back(stored);
     }

@@ -42,10 +42,23 @@ check_case sky_bad_cie_type 2 sky --cie 19
 check_case sky_conflicting_options 2 sky projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw --cie overcast
 check_case sky_overcast_vector 0 sky --cie overcast --illuminance 10000
 
-# run is not implemented yet: it must say so, exit 3 and write nothing.
+# run on an invalid project: located errors, exit 1, nothing written.
 rm -rf "$scratch/results"
-check_case run_not_implemented 3 run projects/office/project.yaml --output "$scratch/results" --quiet
+check_case run_invalid_project 1 run tests/cli/cases/typos.yaml --output "$scratch/results" --quiet
 if [ -e "$scratch/results" ]; then echo "FAIL run wrote $scratch/results"; failed=$((failed + 1)); fi
+
+# annual: recomputes tables and metrics from exported coefficients (a synthetic 2-sensor grid).
+EPW=projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw
+check_case annual_missing_folder 1 annual --coefficients tests/cli/cases/does_not_exist --weather $EPW
+check_case annual_basis_mismatch 1 annual --coefficients tests/cli/cases/annual_grid --weather $EPW --basis reinhart:2
+check_case annual_bad_basis 2 annual --coefficients tests/cli/cases/annual_grid --weather $EPW --basis klems
+check_case annual_sky_matrix_not_a_matrix 1 annual --coefficients tests/cli/cases/annual_grid --weather $EPW --sky-matrix tests/cli/cases/annual_grid/sensors.csv
+"$bin" annual --coefficients tests/cli/cases/annual_grid --weather $EPW -o "$scratch/annual" --quiet
+if [ "$(wc -l <"$scratch/annual/illuminance.csv")" -eq 8761 ] && [ -s "$scratch/annual/illuminance.bin" ] && [ -s "$scratch/annual/grid_metrics.json" ]; then
+  echo "ok   annual_tables"; passed=$((passed + 1))
+else
+  echo "FAIL annual_tables"; failed=$((failed + 1))
+fi
 
 # sun: one row per record plus the header, written atomically to -o.
 "$bin" sun projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw -o "$scratch/sun.csv"

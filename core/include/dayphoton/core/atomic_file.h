@@ -9,10 +9,13 @@
 namespace dayphoton {
 
 /// Write `path` atomically: `write` fills a stream bound to "<path>.tmp.<pid>", which is
-/// flushed, fsync'ed and renamed to `path`. Throws std::runtime_error (naming the path) on
-/// any I/O failure, removing the temporary file.
+/// flushed, fsync'ed (unless `sync` is false) and renamed to `path`. Throws
+/// std::runtime_error (naming the path) on any I/O failure, removing the temporary file.
+/// Without the fsync the rename is still atomic for the process (a kill never leaves a
+/// partial file) but not across a power failure: for caches whose files carry their own
+/// checksum (study/artifact_store.h), where a sync per file would cost more than the work.
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,
-                           bool binary = false);
+                           bool binary = false, bool sync = true);
 
 /// Convenience overload for a complete string.
 void write_file_atomically(const std::string& path, const std::string& contents);

@@ -69,6 +69,10 @@ struct TracingOptions {
   /// (e.g. a sun behind the building, a bin just behind the port's plane).
   std::size_t max_prepass_attempts_per_target = 256;
   bool store_direct = false;             ///< also store Direct photons (diagnostics)
+  /// Keep the photons stored on surfaces. When every sensor grid is a receiver plane they
+  /// are not used: they are then still counted (the counts control is unchanged, so the
+  /// same settings give the same plane photons) but not kept, which saves ~70 % of memory.
+  bool keep_surface_photons = true;
   std::optional<Bounds3> region_of_interest;  ///< store only photons inside this box
   int max_events = 512;                  ///< safety cap on scattering events per path
 };

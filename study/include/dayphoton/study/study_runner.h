@@ -1,0 +1,52 @@
+// run_study: one project from file to results (issue 5; DESIGN.md sections 1, 2 and 6).
+//
+// Steps, each cached in <output>/.cache by the hash of its inputs (cache_keys.h) and each
+// written atomically, so an interrupted run resumes from what it had finished:
+//   1. scene      : project -> SceneDescription -> Embree scene, materials, sources
+//   2. photons    : the forward pass, ONE CACHED ARTEFACT PER SOURCE (a killed run loses at
+//                   most the sources in flight)
+//   3. coefficients per grid: direct (shadow rays) + caustic + global photon estimates
+//   4. daylight factor per grid: coefficients x CIE overcast sky vector (10 000 lux,
+//                   ground from the project's ground reflectance)
+//   5. sky matrix  : the weather file's hourly Perez skies (sun spread into patches as
+//                   gendaymtx does until sun bins exist: issue 6)
+//   6. annual      : coefficients x sky matrix -> illuminance, metrics
+//   7. files       : per grid folder and summary.json (result_files.h, docs/outputs.md)
+// The run log (<output>/run.log, and the progress output) states for every step whether it
+// was computed or taken from the cache, e.g. "photons: traced 0 of 146 sources (146 cached)".
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/project/project.h"
+#include "dayphoton/study/progress.h"
+
+namespace dayphoton::study {
+
+struct RunSettings {
+  std::string output_dir;  ///< empty: the project's outputs.folder
+  bool force = false;      ///< ignore the cache (recompute and overwrite)
+};
+
+struct GridReport {
+  std::string name;
+  std::size_t sensors = 0;
+  std::string folder;
+};
+
+struct RunReport {
+  std::string output_dir;
+  std::size_t sources = 0, sources_traced = 0, sources_cached = 0;
+  std::size_t grids_estimated = 0, grids_cached = 0;
+  bool sky_matrix_cached = false;
+  std::vector<GridReport> grids;
+  std::vector<std::string> notes;  ///< things the user should know (e.g. sun mode)
+};
+
+/// Run the study of `project`. Throws InputError for bad input (weather file), EngineError
+/// or std::runtime_error for failures; nothing is left half-written.
+RunReport run_study(const project::Project& project, const RunSettings& settings,
+                    Progress& progress);
+
+}  // namespace dayphoton::study

@@ -1,0 +1,402 @@
+// run_study: see study_runner.h for the steps, their cache and the run log.
+#include "dayphoton/study/study_runner.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <tbb/parallel_for.h>
+
+#include "dayphoton/core/atomic_file.h"
+#include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/core/units.h"
+#include "dayphoton/engine/daylight_coefficients.h"
+#include "dayphoton/engine/photon_tracer.h"
+#include "dayphoton/engine/port_emission.h"
+#include "dayphoton/engine/scene.h"
+#include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/sky/sky_model.h"
+#include "dayphoton/study/annual_illuminance.h"
+#include "dayphoton/study/annual_study.h"
+#include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/artifact_store.h"
+#include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/result_files.h"
+#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/site_clock.h"
+#include "dayphoton/metrics/annual_metrics.h"
+
+namespace dayphoton::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Photons per source relative to a sky bin for the ground bin 0: Neyman allocation for the
+/// CIE overcast sky (the ground brings ~20 % of the light through a vertical window, a
+/// Tregenza sky bin ~1 %); see engine::TracingOptions::source_photon_factor. Measured on the
+/// office: per-sensor DF RMS 2.95 % -> 1.56 % at +20 % photons (docs/photon-tracing.md).
+constexpr double GroundPhotonFactor = 16.0;
+
+/// DF sky: CIE overcast of this horizontal illuminance (the DF does not depend on it).
+constexpr double OvercastHorizontalLux = 10000.0;
+
+engine::TracingOptions tracing_options(const project::Simulation& sim, std::size_t sources) {
+  engine::TracingOptions o;
+  o.photons_per_source = static_cast<std::size_t>(sim.photons_per_bin);
+  o.seed = sim.seed;
+  o.source_photon_factor.assign(sources, 1.0);
+  if (sources > 0) o.source_photon_factor[0] = GroundPhotonFactor;
+  return o;
+}
+
+engine::CoefficientOptions coefficient_options(const project::Simulation& sim) {
+  engine::CoefficientOptions o;
+  o.density.bandwidth = static_cast<std::size_t>(sim.bandwidth);
+  o.direct.samples_per_source = sim.direct_samples_per_bin;
+  o.direct.seed = sim.seed;
+  return o;
+}
+
+sky::PatchBasis basis_of(const project::Simulation& sim) {
+  return sim.basis == project::SkyBasis::Tregenza ? sky::PatchBasis::tregenza()
+                                                  : sky::PatchBasis::reinhart(sim.reinhart_mf);
+}
+
+std::string join(const std::string& dir, const std::string& name) {
+  return (fs::path(dir) / name).string();
+}
+
+/// The run log: every line also goes to the progress output.
+class RunLog {
+ public:
+  explicit RunLog(Progress& progress) : m_progress(progress) {}
+  void line(const std::string& text) {
+    m_text += text + "\n";
+    m_progress.note(text);
+  }
+  const std::string& text() const { return m_text; }
+
+ private:
+  Progress& m_progress;
+  std::string m_text;
+};
+
+
+/// What every case (the base project and each variant) of one run shares.
+struct RunContext {
+  const RunSettings& settings;
+  Progress& progress;
+  RunLog& log;
+  RunReport& report;
+  const ArtifactStore& store;
+  std::optional<AnnualSky> sky;  ///< built or loaded once, on first use
+};
+
+metrics::MetricSettings metric_settings(const project::MetricsSettings& m) {
+  metrics::MetricSettings s;
+  s.da_threshold_lux = m.da_threshold_lux;
+  s.udi_lower_lux = m.udi_lower_lux;
+  s.udi_upper_original_lux = m.udi_upper_original_lux;
+  s.udi_upper_revised_lux = m.udi_upper_revised_lux;
+  s.sda_time_fraction = m.sda_time_fraction;
+  s.ase_threshold_lux = m.ase_threshold_lux;
+  s.ase_hours = m.ase_hours;
+  return s;
+}
+
+/// The annual sky of the project's weather file, from the cache when the file is unchanged.
+const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBasis& basis,
+                            RunContext& ctx) {
+  if (ctx.sky) return *ctx.sky;
+  const weather::EpwFile epw = weather::read_epw(project.weather.path);
+  const double rho_g = project.simulation.ground_reflectance;
+  ContentHash sky_hash;
+  sky_hash.text("sky matrix").integer(EngineCacheVersion).file(project.weather.path);
+  sky_hash.integer(basis.multiplication_factor()).number(rho_g).text("radiance-compatible, sun spread");
+  const std::string key = sky_hash.hex();
+  AnnualSky sky;
+  bool cached = false;
+  if (!ctx.settings.force) {
+    if (auto bytes = ctx.store.read("sky", key)) {
+      try {
+        sky.matrix = decode_matrix(*bytes);
+        cached = true;
+      } catch (const std::exception&) {
+        // damaged or an older layout: rebuilt below
+      }
+    }
+  }
+  if (cached) {
+    sky.steps = time_stamps(epw);
+    sky.daylight_hours_quantity = daylight_hours_quantity(epw, sky.daylight_hours_source);
+    sky.description = "Perez sky matrix (RADIANCE-compatible, sun spread into patches) from the cache";
+    ctx.report.sky_matrix_cached = true;
+    ctx.progress.cached("sky matrix");
+    ctx.log.line("sky matrix: cached");
+  } else {
+    ctx.progress.start("sky matrix", epw.records.size(), "hours");
+    sky = annual_sky_from_epw(epw, basis, radiance_compatible_sky_options(rho_g));
+    ctx.store.write("sky", key, encode_matrix(sky.matrix));
+    ctx.progress.advance(epw.records.size());
+    ctx.progress.end();
+    ctx.log.line("sky matrix: built from " + project.weather.path);
+  }
+  ctx.sky = std::move(sky);
+  return *ctx.sky;
+}
+
+/// One case: photons, coefficients, daylight factor, annual results, into `dir`/<grid>/.
+/// Returns the grids' part of summary.json. `label` prefixes log lines of variants.
+nlohmann::json run_case(const project::Project& project, const std::string& label,
+                        const std::string& dir, RunContext& ctx) {
+  const project::Simulation& sim = project.simulation;
+  Progress& progress = ctx.progress;
+  RunLog& log = ctx.log;
+  RunReport& report = ctx.report;
+  const std::string prefix = label.empty() ? "" : label + ": ";
+
+  // 1. Scene, materials, sources, receiver planes.
+  progress.start(prefix + "scene", 1, "model");
+  const SceneDescription description = project::build_scene_description(project);
+  const engine::Scene scene = engine::Scene::build(description);
+  std::vector<engine::Material> materials;
+  for (const MaterialSpec& m : description.materials)
+    materials.push_back(engine::Material::from_spec(m));
+  const sky::PatchBasis basis = basis_of(sim);
+  const engine::SourceSet sources = engine::SourceSet::sky_bins(basis);
+  std::vector<engine::ReceiverPlane> planes;
+  std::vector<int> plane_of_grid;
+  for (const SensorGrid& g : description.grids) {
+    if (g.planar) {
+      plane_of_grid.push_back(static_cast<int>(planes.size()));
+      planes.push_back(engine::ReceiverPlane::from_grid(g));
+    } else {
+      plane_of_grid.push_back(-1);
+    }
+  }
+  progress.advance(1);
+  progress.end();
+
+  // Keys: photons per source, coefficients per grid.
+  engine::TracingOptions tracing = tracing_options(sim, sources.size());
+  tracing.keep_surface_photons =
+      std::any_of(plane_of_grid.begin(), plane_of_grid.end(), [](int p) { return p < 0; });
+  const engine::CoefficientOptions estimating = coefficient_options(sim);
+  const ContentHash scene_hash = scene_key(description);
+  const ContentHash planes_hash = planes_key(description.grids);
+  std::vector<std::string> photon_keys(sources.size());
+  for (std::size_t p = 0; p < sources.size(); ++p)
+    photon_keys[p] = photon_source_key(scene_hash, planes_hash, basis, p, tracing);
+  std::vector<std::string> grid_keys;
+  std::vector<std::optional<engine::DaylightCoefficients>> coefficients(description.grids.size());
+  bool all_grids_cached = true;
+  for (std::size_t g = 0; g < description.grids.size(); ++g) {
+    grid_keys.push_back(coefficients_key(photon_keys, description.grids[g], estimating));
+    if (!ctx.settings.force) {
+      if (auto bytes = ctx.store.read("coefficients", grid_keys[g])) {
+        try {
+          coefficients[g] = decode_coefficients(*bytes);
+        } catch (const std::exception&) {
+          coefficients[g].reset();  // damaged: recompute
+        }
+      }
+    }
+    all_grids_cached = all_grids_cached && coefficients[g].has_value();
+  }
+
+  // 2. Photons (only if some grid needs estimating), one cached artefact per source.
+  report.sources += sources.size();
+  engine::TracedPhotons photons;
+  if (all_grids_cached) {
+    progress.cached(prefix + "photons");
+    report.sources_cached += sources.size();
+    log.line(prefix + "photons: traced 0 of " + std::to_string(sources.size()) +
+             " sources (not needed: every grid's coefficients are cached)");
+  } else {
+    progress.start(prefix + "photons", sources.size(), "sources");
+    const engine::PortEmitter emitter(scene, sources);
+    std::vector<engine::TracedPhotons> per_source(sources.size());
+    std::vector<char> traced(sources.size(), 0);
+    tbb::parallel_for(std::size_t(0), sources.size(), [&](std::size_t p) {
+      if (!ctx.settings.force) {
+        if (auto bytes = ctx.store.read("photons", photon_keys[p])) {
+          try {
+            per_source[p] = decode_photons(*bytes);
+            progress.advance(1);
+            return;
+          } catch (const std::exception&) {
+            // damaged: trace again
+          }
+        }
+      }
+      per_source[p] = engine::trace_source_photons(scene, materials, emitter, planes, tracing, p);
+      ctx.store.write("photons", photon_keys[p], encode_photons(per_source[p]));
+      traced[p] = 1;
+      progress.advance(1);
+    });
+    progress.end();
+    std::size_t n_traced = 0;
+    for (char t : traced) n_traced += t ? 1 : 0;
+    report.sources_traced += n_traced;
+    report.sources_cached += sources.size() - n_traced;
+    log.line(prefix + "photons: traced " + std::to_string(n_traced) + " of " +
+             std::to_string(sources.size()) + " sources (" +
+             std::to_string(sources.size() - n_traced) + " cached)");
+    photons = engine::merge_traced_photons(std::move(per_source));
+  }
+
+  // 3. Coefficients per grid.
+  for (std::size_t g = 0; g < description.grids.size(); ++g) {
+    const SensorGrid& grid = description.grids[g];
+    if (coefficients[g]) {
+      ++report.grids_cached;
+      progress.cached(prefix + "coefficients " + grid.name);
+      log.line(prefix + "coefficients " + grid.name + ": cached");
+      continue;
+    }
+    progress.start(prefix + "coefficients " + grid.name, grid.points.size(), "sensors");
+    const int plane = plane_of_grid[g];
+    const engine::GridPhotons grid_photons =
+        plane >= 0 ? engine::GridPhotons::for_plane(planes[static_cast<std::size_t>(plane)],
+                                                    photons.planes[static_cast<std::size_t>(plane)],
+                                                    sources.size())
+                   : engine::GridPhotons::for_surfaces(photons.surface, sources.size());
+    coefficients[g] = engine::daylight_coefficients(scene, materials, sources, grid_photons,
+                                                    grid.points, estimating);
+    ctx.store.write("coefficients", grid_keys[g], encode_coefficients(*coefficients[g]));
+    progress.advance(grid.points.size());
+    progress.end();
+    ++report.grids_estimated;
+    log.line(prefix + "coefficients " + grid.name + ": estimated at " +
+             std::to_string(grid.points.size()) + " sensors");
+  }
+  photons = engine::TracedPhotons{};  // no longer needed
+
+  // 4. Daylight factor and coefficient export per grid.
+  const auto overcast =
+      sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(OvercastHorizontalLux));
+  const double rho_g = sim.ground_reflectance;
+  const RadianceMatrix overcast_vector = sky::sky_vector(
+      *overcast, basis, sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, OvercastHorizontalLux, 0, {0, 0, -1}));
+  const MatrixFormat matrix_format = parse_matrix_format(project.outputs.matrix_format);
+  nlohmann::json grids_json = nlohmann::json::array();
+  std::vector<RadianceMatrix> coefficient_matrices;
+  std::vector<std::string> folders;
+  for (std::size_t g = 0; g < description.grids.size(); ++g) {
+    const SensorGrid& grid = description.grids[g];
+    const std::string folder = join(dir, grid.name);
+    fs::create_directories(folder);
+    folders.push_back(folder);
+    report.grids.push_back({label.empty() ? grid.name : label + "/" + grid.name, grid.points.size(), folder});
+    coefficient_matrices.push_back(coefficients[g]->to_matrix());
+    const RadianceMatrix& c = coefficient_matrices.back();
+    write_sensors_csv(grid.points, join(folder, "sensors.csv"));
+    nlohmann::json gj = {{"name", grid.name}, {"sensors", grid.points.size()}, {"folder", folder}};
+    if (project.outputs.coefficients) c.write_file(join(folder, "coefficients_sky.mtx"), matrix_format);
+    if (project.outputs.daylight_factor) {
+      const std::vector<double> df = daylight_factor_percent(c, overcast_vector, OvercastHorizontalLux);
+      write_daylight_factor_csv(grid.points, df, join(folder, "daylight_factor.csv"));
+      const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent);
+      nlohmann::json areas = nlohmann::json::array();
+      for (const auto& [threshold, area] : st.area_at_or_above_percent)
+        areas.push_back({{"threshold_percent", threshold}, {"area_percent", area}});
+      gj["daylight_factor_percent"] = {{"mean", st.mean}, {"median", st.median}, {"min", st.min},
+                                       {"max", st.max}, {"uniformity", st.uniformity},
+                                       {"area_at_or_above", areas}};
+    }
+    grids_json.push_back(gj);
+  }
+
+  // 5-6. Annual illuminance and metrics.
+  const bool annual = project.outputs.annual_illuminance || project.outputs.metrics;
+  if (annual && project.weather.path.empty()) {
+    log.line(prefix + "annual: the project has no weather file; annual outputs skipped");
+  } else if (annual) {
+    const AnnualSky& sky = annual_sky(project, basis, ctx);
+    AnnualStudySettings annual_settings;
+    annual_settings.metrics = metric_settings(project.metrics);
+    annual_settings.occupancy_start_h = project.metrics.occupancy_start_h;
+    annual_settings.occupancy_end_h = project.metrics.occupancy_end_h;
+    AnnualOutputs which;
+    which.illuminance = project.outputs.annual_illuminance;
+    which.metrics = project.outputs.metrics;
+    for (std::size_t g = 0; g < description.grids.size(); ++g) {
+      const SensorGrid& grid = description.grids[g];
+      progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
+      const AnnualStudy study = compute_annual_study(coefficient_matrices[g], sky, annual_settings);
+      write_annual_outputs(study, grid.points, annual_settings, folders[g], which);
+      progress.advance(sky.steps.size());
+      progress.end();
+      grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
+    }
+  }
+  return grids_json;
+}
+
+}  // namespace
+
+RunReport run_study(const project::Project& project, const RunSettings& settings,
+                    Progress& progress) {
+  RunReport report;
+  const project::Simulation& sim = project.simulation;
+  report.output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
+  fs::create_directories(report.output_dir);
+  const ArtifactStore store(join(report.output_dir, ".cache"));
+  RunLog log(progress);
+  log.line("project " + project.path + " -> " + report.output_dir);
+  if (sim.sun == project::SunMode::Bins)
+    report.notes.push_back(
+        "sun: sun bins are not built yet (issue 6); the sun is spread into the sky patches as "
+        "RADIANCE's gendaymtx does");
+  report.notes.push_back(
+      "sky: the annual sky uses the site of the weather file's header (as gendaymtx does)");
+  for (const std::string& n : report.notes) log.line(n);
+
+  RunContext ctx{settings, progress, log, report, store, std::nullopt};
+  // The project as written is the base case, in <output>/<grid>/; each variant is studied
+  // in addition, in <output>/variants/<variant>/<grid>/ (a folder no grid name can clash with).
+  nlohmann::json grids = run_case(project, "", report.output_dir, ctx);
+  nlohmann::json variants = nlohmann::json::array();
+  for (const project::VariantSpec& v : project.variants) {
+    const std::string dir = join(join(report.output_dir, "variants"), v.name);
+    nlohmann::json vj = {{"name", v.name}, {"folder", dir}};
+    vj["grids"] = run_case(project::apply_variant(project, v), v.name, dir, ctx);
+    variants.push_back(vj);
+  }
+
+  // 7. summary.json and the run log.
+  nlohmann::json summary = {
+      {"project", project.path},
+      {"output", report.output_dir},
+      {"site", {{"name", project.site.name}, {"latitude_deg", project.site.latitude_deg},
+                {"longitude_deg", project.site.longitude_deg}, {"time_zone_h", project.site.time_zone_h}}},
+      {"weather", project.weather.path},
+      {"simulation", {{"basis", sim.basis == project::SkyBasis::Tregenza ? "tregenza" : "reinhart"},
+                      {"reinhart_mf", sim.basis == project::SkyBasis::Tregenza ? 1 : sim.reinhart_mf},
+                      {"photons_per_bin", sim.photons_per_bin},
+                      {"ground_photon_factor", GroundPhotonFactor},
+                      {"bandwidth", sim.bandwidth},
+                      {"direct_samples_per_bin", sim.direct_samples_per_bin},
+                      {"seed", sim.seed},
+                      {"ground_reflectance", sim.ground_reflectance},
+                      {"sun", "spread into patches (gendaymtx style)"},
+                      {"annual_sky", "RADIANCE-compatible Perez sky matrix (gendaymtx conventions), sun spread into patches"}}},
+      {"cache", {{"sources", report.sources}, {"sources_traced", report.sources_traced},
+                 {"sources_cached", report.sources_cached},
+                 {"grids_estimated", report.grids_estimated}, {"grids_cached", report.grids_cached}}},
+      {"grids", grids},
+      {"variants", variants},
+      {"notes", report.notes}};
+  nlohmann::json timings = nlohmann::json::array();
+  for (const Progress::StepTime& s : progress.steps())
+    timings.push_back({{"step", s.name}, {"seconds", s.seconds}, {"work", s.work}, {"unit", s.unit},
+                       {"cached", s.cached}});
+  summary["timings"] = timings;
+  write_file_atomically(join(report.output_dir, "summary.json"), summary.dump(2) + "\n");
+  write_file_atomically(join(report.output_dir, "run.log"), log.text());
+  return report;
+}
+
+}  // namespace dayphoton::study
