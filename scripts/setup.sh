@@ -9,6 +9,7 @@ packages=(
   cmake make g++ pkg-config
   libembree-dev libgeographiclib-dev libopenexr-dev libyaml-cpp-dev nlohmann-json3-dev
   libtbb-dev libcli11-dev libgtest-dev
+  python3
 )
 
 missing=()
@@ -26,5 +27,6 @@ fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
 
-# The main job on the example project.
-./build/app/dayphoton check projects/office/project.yaml
+# The main job on the example project: the whole daylight study of the reference office
+# (results in projects/office/results/, see docs/outputs.md).
+./build/app/dayphoton run projects/office/project.yaml

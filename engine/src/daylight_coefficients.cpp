@@ -41,6 +41,53 @@ BiasCompensationOptions bias_options(const CoefficientOptions& options,
   return b;
 }
 
+/// Area moments about (x, y) of the disc of radius r clipped to the plane's outline:
+/// A = int dA, m = int (q - x) dA, M = int (q - x)(q - x)^T dA.
+struct DiscMoments {
+  double area = 0, mx = 0, my = 0, mxx = 0, mxy = 0, myy = 0;
+};
+
+DiscMoments clipped_disc_moments(const ReceiverPlane& plane, double x, double y, double r) {
+  constexpr int Radial = 32, Angular = 64;
+  DiscMoments m;
+  for (int i = 0; i < Radial; ++i) {
+    const double rho = r * (i + 0.5) / Radial;
+    const double weight = rho * (r / Radial) * (2 * Pi / Angular);  // rho drho dtheta
+    for (int j = 0; j < Angular; ++j) {
+      const double t = 2 * Pi * (j + 0.5) / Angular;
+      const double dx = rho * std::cos(t), dy = rho * std::sin(t);
+      if (!plane.contains(x + dx, y + dy)) continue;
+      m.area += weight;
+      m.mx += weight * dx;
+      m.my += weight * dy;
+      m.mxx += weight * dx * dx;
+      m.mxy += weight * dx * dy;
+      m.myy += weight * dy * dy;
+    }
+  }
+  return m;
+}
+
+/// Local-linear density at the disc's centre from the photon sums S0 = sum Phi and
+/// S1 = sum Phi (q - x) (per channel): the first unknown of the 3 x 3 moment system, by
+/// Cramer's rule. Falls back to S0 / A when the system is degenerate.
+Vec3 local_linear_density(const DiscMoments& m, const Vec3& s0, const Vec3& s1x, const Vec3& s1y) {
+  const double a11 = m.area, a12 = m.mx, a13 = m.my;
+  const double a22 = m.mxx, a23 = m.mxy, a33 = m.myy;
+  const double det = a11 * (a22 * a33 - a23 * a23) - a12 * (a12 * a33 - a23 * a13) +
+                     a13 * (a12 * a23 - a22 * a13);
+  const double scale = a11 * a22 * a33;
+  if (!(m.area > 0)) return {0, 0, 0};
+  if (!(std::fabs(det) > 1e-9 * std::fabs(scale))) return s0 * (1.0 / m.area);
+  // Replace the first column by the right-hand side.
+  auto solve = [&](double b1, double b2, double b3) {
+    const double d1 = b1 * (a22 * a33 - a23 * a23) - a12 * (b2 * a33 - a23 * b3) +
+                      a13 * (b2 * a23 - a22 * b3);
+    return d1 / det;
+  };
+  return {solve(s0.x, s1x.x, s1y.x), solve(s0.y, s1x.y, s1y.y), solve(s0.z, s1x.z, s1y.z)};
+}
+
 }  // namespace
 
 RadianceMatrix DaylightCoefficients::to_matrix() const {
@@ -120,6 +167,29 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         both.path_classes = IndirectPathClasses;
         DensityEstimateOptions scaled = options.density;
         scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth);
+        if (plane && options.local_linear && !options.bias_compensation &&
+            options.density.kernel == KernelType::Uniform) {
+          std::vector<NeighbourPhoton> found;
+          map.nearest(at, scaled.average_radius ? scaled.bandwidth + 1 : scaled.bandwidth,
+                      scaled.max_radius_m, both, found);
+          const KernelDisc disc =
+              kernel_disc(found, scaled.bandwidth, scaled.average_radius, scaled.max_radius_m);
+          if (disc.photon_count == 0) continue;
+          Vec3 s0[2], s1x[2], s1y[2];
+          for (int c = 0; c < 2; ++c) s0[c] = s1x[c] = s1y[c] = Vec3{0, 0, 0};
+          for (std::size_t j = 0; j < disc.photon_count; ++j) {
+            const Photon& ph = map.photons()[found[j].index];
+            const int c = ph.path_class == PathClass::Caustic ? 0 : 1;
+            const Vec3 flux = ph.flux_rgb();
+            s0[c] += flux;
+            s1x[c] += flux * (double(ph.position[0]) - at.x);
+            s1y[c] += flux * (double(ph.position[1]) - at.y);
+          }
+          const DiscMoments m = clipped_disc_moments(*plane, at.x, at.y, disc.radius_m);
+          out.caustic[s * n_src + p] = local_linear_density(m, s0[0], s1x[0], s1y[0]);
+          out.global[s * n_src + p] = local_linear_density(m, s0[1], s1x[1], s1y[1]);
+          continue;
+        }
         const DensityEstimate all =
             options.bias_compensation
                 ? estimate_irradiance_bias_compensated(map, at, both,

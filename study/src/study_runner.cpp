@@ -352,6 +352,9 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
         "RADIANCE's gendaymtx does");
   report.notes.push_back(
       "sky: the annual sky uses the site of the weather file's header (as gendaymtx does)");
+  if (project.outputs.images || project.outputs.report)
+    report.notes.push_back(
+        "outputs: images and report.html are not produced yet (issue 7); the tables are");
   for (const std::string& n : report.notes) log.line(n);
 
   RunContext ctx{settings, progress, log, report, store, std::nullopt};

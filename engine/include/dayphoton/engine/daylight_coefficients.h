@@ -18,6 +18,13 @@
 // Boundary correction (planar grids): the kernel disc is clipped to the grid's outline (the
 // room), where photons can cross, and the estimate divides by the clipped area instead of
 // pi r^2 (exact for the uniform kernel; for the others the same area ratio is applied).
+// Local-linear estimate (planar grids, the default): near a wall the clipped disc is
+// one-sided, so a plain average over it is biased by the illuminance gradient (at the back
+// of a side-lit room, toward the brighter window side). Fitting E(y) = a + b . (y - x) to the
+// photons by moments over the clipped disc R (sum Phi = a A + b . m1, sum Phi (y - x) =
+// a m1 + M2 b, with A, m1, M2 the area moments of R about x) gives a = E(x) free of that
+// first-order bias. Away from walls m1 = 0 and a is the plain average. The moments come from
+// a polar midpoint quadrature of R (32 x 64 nodes).
 #pragma once
 
 #include <cstddef>
@@ -42,6 +49,10 @@ struct CoefficientOptions {
   DensityEstimateOptions density;  ///< bandwidth (photons per estimate), max radius, kernel
   PhotonEstimator estimator = PhotonEstimator::PerSource;
   bool boundary_correction = true;
+  /// Planar grids, PerSource, uniform kernel: local-linear density estimate instead of the
+  /// clipped-disc average (see the header comment); removes the first-order bias of a
+  /// gradient across a disc that a wall cuts, so larger bandwidths stay unbiased.
+  bool local_linear = true;
   /// Bias-compensating operator (seeds/000 chapter 5, density_estimate.h) instead of the
   /// fixed bandwidth: per source (PerSource) or on the total (Contribution), with
   /// n_min = the bandwidth and n_max = bias_compensation_max_factor x n_min.
