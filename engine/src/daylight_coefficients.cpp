@@ -41,37 +41,10 @@ BiasCompensationOptions bias_options(const CoefficientOptions& options,
   return b;
 }
 
-/// Area moments about (x, y) of the disc of radius r clipped to the plane's outline:
-/// A = int dA, m = int (q - x) dA, M = int (q - x)(q - x)^T dA.
-struct DiscMoments {
-  double area = 0, mx = 0, my = 0, mxx = 0, mxy = 0, myy = 0;
-};
-
-DiscMoments clipped_disc_moments(const ReceiverPlane& plane, double x, double y, double r) {
-  constexpr int Radial = 32, Angular = 64;
-  DiscMoments m;
-  for (int i = 0; i < Radial; ++i) {
-    const double rho = r * (i + 0.5) / Radial;
-    const double weight = rho * (r / Radial) * (2 * Pi / Angular);  // rho drho dtheta
-    for (int j = 0; j < Angular; ++j) {
-      const double t = 2 * Pi * (j + 0.5) / Angular;
-      const double dx = rho * std::cos(t), dy = rho * std::sin(t);
-      if (!plane.contains(x + dx, y + dy)) continue;
-      m.area += weight;
-      m.mx += weight * dx;
-      m.my += weight * dy;
-      m.mxx += weight * dx * dx;
-      m.mxy += weight * dx * dy;
-      m.myy += weight * dy * dy;
-    }
-  }
-  return m;
-}
-
 /// Local-linear density at the disc's centre from the photon sums S0 = sum Phi and
 /// S1 = sum Phi (q - x) (per channel): the first unknown of the 3 x 3 moment system, by
 /// Cramer's rule. Falls back to S0 / A when the system is degenerate.
-Vec3 local_linear_density(const DiscMoments& m, const Vec3& s0, const Vec3& s1x, const Vec3& s1y) {
+Vec3 local_linear_density(const AreaMoments& m, const Vec3& s0, const Vec3& s1x, const Vec3& s1y) {
   const double a11 = m.area, a12 = m.mx, a13 = m.my;
   const double a22 = m.mxx, a23 = m.mxy, a33 = m.myy;
   const double det = a11 * (a22 * a33 - a23 * a23) - a12 * (a12 * a33 - a23 * a13) +
@@ -185,7 +158,7 @@ void estimate_photon_coefficients(const GridPhotons& photons,
             s1x[c] += flux * (double(ph.position[0]) - at.x);
             s1y[c] += flux * (double(ph.position[1]) - at.y);
           }
-          const DiscMoments m = clipped_disc_moments(*plane, at.x, at.y, disc.radius_m);
+          const AreaMoments m = plane->clipped_disc_moments(at.x, at.y, disc.radius_m);
           out.caustic[s * n_src + p] = local_linear_density(m, s0[0], s1x[0], s1y[0]);
           out.global[s * n_src + p] = local_linear_density(m, s0[1], s1x[1], s1y[1]);
           continue;

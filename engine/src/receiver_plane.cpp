@@ -2,11 +2,19 @@
 // edges of the signed area of (disc centred at the origin) intersected with the triangle
 // (origin, a, b): each edge is split where it crosses the circle; pieces inside contribute
 // their triangle area, pieces outside the circular sector they subtend.
+// clipped_disc_moments uses Green's theorem, int int f dA = closed integral over the boundary,
+// oriented counter-clockwise: A = 1/2 (x dy - y dx), int x = 1/2 x^2 dy, int y = -1/2 y^2 dx,
+// int x^2 = 1/3 x^3 dy, int y^2 = -1/3 y^3 dx, int xy = 1/2 x^2 y dy. On straight pieces the
+// integrands are cubic polynomials of the parameter (3-point Gauss-Legendre is exact); on arcs
+// they are integrated in closed form.
 #include "dayphoton/engine/receiver_plane.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
+
+#include "dayphoton/core/units.h"
 
 namespace dayphoton::engine {
 namespace {
@@ -36,7 +44,92 @@ double disc_triangle_area(PlanePoint a, PlanePoint b, double r) {
   return sector(a, p1) + 0.5 * cross2(p1, p2) + sector(p2, b);
 }
 
+// Green's-theorem contributions of the straight piece p -> q.
+void add_segment(AreaMoments& m, const PlanePoint& p, const PlanePoint& q) {
+  const double dx = q.x - p.x, dy = q.y - p.y;
+  m.area += 0.5 * (p.x * q.y - p.y * q.x);
+  static const double node[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)};
+  static const double weight[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+  for (int k = 0; k < 3; ++k) {
+    const double x = p.x + node[k] * dx, y = p.y + node[k] * dy, w = weight[k];
+    m.mx += w * 0.5 * x * x * dy;
+    m.my += w * -0.5 * y * y * dx;
+    m.mxx += w * x * x * x * dy / 3.0;
+    m.myy += w * -y * y * y * dx / 3.0;
+    m.mxy += w * 0.5 * x * x * y * dy;
+  }
+}
+
+// Contributions of the counter-clockwise arc of radius r from angle t0 to t1 (t1 > t0).
+void add_arc(AreaMoments& m, double r, double t0, double t1) {
+  auto cos3 = [](double t) { const double s = std::sin(t); return s - s * s * s / 3.0; };
+  auto sin3 = [](double t) { const double c = std::cos(t); return -c + c * c * c / 3.0; };
+  auto cos4 = [](double t) { return 3.0 * t / 8.0 + std::sin(2 * t) / 4.0 + std::sin(4 * t) / 32.0; };
+  auto sin4 = [](double t) { return 3.0 * t / 8.0 - std::sin(2 * t) / 4.0 + std::sin(4 * t) / 32.0; };
+  auto cos3sin = [](double t) { const double c = std::cos(t); return -c * c * c * c / 4.0; };
+  const double r2 = r * r, r3 = r2 * r, r4 = r2 * r2;
+  m.area += 0.5 * r2 * (t1 - t0);
+  m.mx += 0.5 * r3 * (cos3(t1) - cos3(t0));
+  m.my += 0.5 * r3 * (sin3(t1) - sin3(t0));
+  m.mxx += r4 / 3.0 * (cos4(t1) - cos4(t0));
+  m.myy += r4 / 3.0 * (sin4(t1) - sin4(t0));
+  m.mxy += 0.5 * r4 * (cos3sin(t1) - cos3sin(t0));
+}
+
 }  // namespace
+
+AreaMoments ReceiverPlane::clipped_disc_moments(double x, double y, double r_m) const {
+  AreaMoments m;
+  if (!(r_m > 0)) return m;
+  // The outline relative to the centre, counter-clockwise.
+  std::vector<PlanePoint> poly;
+  for (const PlanePoint& p : m_outline) poly.push_back({p.x - x, p.y - y});
+  double signed_area = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i)
+    signed_area += cross2(poly[i], poly[(i + 1) % poly.size()]);
+  if (signed_area < 0) std::reverse(poly.begin(), poly.end());
+  const double r2 = r_m * r_m;
+  std::vector<double> crossings;  // angles where the circle meets the outline
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const PlanePoint a = poly[i], b = poly[(i + 1) % poly.size()];
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double qa = dx * dx + dy * dy;
+    if (qa <= 0) continue;
+    const double qb = a.x * dx + a.y * dy, qc = a.x * a.x + a.y * a.y - r2;
+    std::vector<double> cuts = {0.0};
+    const double disc = qb * qb - qa * qc;
+    if (disc > 0) {
+      const double root = std::sqrt(disc);
+      for (double t : {(-qb - root) / qa, (-qb + root) / qa})
+        if (t > 0 && t < 1) {
+          cuts.push_back(t);
+          crossings.push_back(std::atan2(a.y + t * dy, a.x + t * dx));
+        }
+    }
+    cuts.push_back(1.0);
+    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+      const double tm = 0.5 * (cuts[k] + cuts[k + 1]);
+      const double mx = a.x + tm * dx, my = a.y + tm * dy;
+      if (mx * mx + my * my < r2)
+        add_segment(m, {a.x + cuts[k] * dx, a.y + cuts[k] * dy},
+                    {a.x + cuts[k + 1] * dx, a.y + cuts[k + 1] * dy});
+    }
+  }
+  if (crossings.empty()) {
+    // Whole disc inside the outline, or disjoint (or the outline inside the disc, whose
+    // edges were added above).
+    if (contains(x, y) && m.area == 0) add_arc(m, r_m, 0.0, 2 * Pi);
+    return m;
+  }
+  std::sort(crossings.begin(), crossings.end());
+  for (std::size_t k = 0; k < crossings.size(); ++k) {
+    const double t0 = crossings[k];
+    const double t1 = k + 1 < crossings.size() ? crossings[k + 1] : crossings[0] + 2 * Pi;
+    const double tm = 0.5 * (t0 + t1);
+    if (t1 > t0 && contains(x + r_m * std::cos(tm), y + r_m * std::sin(tm))) add_arc(m, r_m, t0, t1);
+  }
+  return m;
+}
 
 ReceiverPlane ReceiverPlane::from_grid(const SensorGrid& grid) {
   if (!grid.planar || std::fabs(std::fabs(grid.plane_normal.z) - 1) > 1e-12)

@@ -23,8 +23,8 @@
 // of a side-lit room, toward the brighter window side). Fitting E(y) = a + b . (y - x) to the
 // photons by moments over the clipped disc R (sum Phi = a A + b . m1, sum Phi (y - x) =
 // a m1 + M2 b, with A, m1, M2 the area moments of R about x) gives a = E(x) free of that
-// first-order bias. Away from walls m1 = 0 and a is the plain average. The moments come from
-// a polar midpoint quadrature of R (32 x 64 nodes).
+// first-order bias. Away from walls m1 = 0 and a is the plain average. The moments are exact
+// (ReceiverPlane::clipped_disc_moments).
 #pragma once
 
 #include <cstddef>

@@ -17,6 +17,12 @@
 
 namespace dayphoton::engine {
 
+/// Area moments of a region about a point (x, y): A = int dA, m = int (q - p) dA,
+/// M = int (q - p)(q - p)^T dA (m^2, m^3, m^4).
+struct AreaMoments {
+  double area = 0, mx = 0, my = 0, mxx = 0, mxy = 0, myy = 0;
+};
+
 /// A point of the outline in plane coordinates (x, y of the world; the plane is horizontal).
 struct PlanePoint {
   double x = 0, y = 0;
@@ -41,6 +47,10 @@ class ReceiverPlane {
   /// Area of the disc of radius r_m centred on (x, y) that lies inside the outline, m^2
   /// (exact: a sum of signed circle-triangle intersections over the outline's edges).
   double disc_area_inside_m2(double x, double y, double r_m) const;
+  /// Area moments about (x, y) of the disc of radius r_m centred there, clipped to the
+  /// outline: exact, by Green's theorem on the clipped boundary (outline pieces inside the
+  /// disc, circle arcs inside the outline).
+  AreaMoments clipped_disc_moments(double x, double y, double r_m) const;
 
  private:
   double m_z_m = 0;

@@ -1,0 +1,74 @@
+// ReceiverPlane geometry: front crossings, the outline test, and the exact area and moments
+// of a kernel disc clipped by the outline, against closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dayphoton/core/units.h"
+#include "dayphoton/engine/receiver_plane.h"
+
+namespace dayphoton::engine {
+namespace {
+
+const ReceiverPlane room(0.8, true, {{0, 0}, {4, 0}, {4, 3}, {0, 3}});
+
+TEST(ReceiverPlane, FrontCrossingOnlyFromAbove) {
+  EXPECT_NEAR(room.front_crossing({1, 1, 2}, {0, 0, -1}), 1.2, 1e-12);
+  EXPECT_LT(room.front_crossing({1, 1, 0}, {0, 0, 1}), 0);   // from below: the back side
+  EXPECT_LT(room.front_crossing({1, 1, 2}, {1, 0, 0}), 0);   // parallel
+  EXPECT_TRUE(room.contains(3.9, 2.9));
+  EXPECT_FALSE(room.contains(4.1, 1));
+}
+
+TEST(ReceiverPlane, WholeDiscMoments) {
+  const double r = 0.5;
+  const AreaMoments m = room.clipped_disc_moments(2, 1.5, r);
+  EXPECT_NEAR(m.area, Pi * r * r, 1e-12);
+  EXPECT_NEAR(m.mx, 0, 1e-12);
+  EXPECT_NEAR(m.my, 0, 1e-12);
+  EXPECT_NEAR(m.mxx, Pi * std::pow(r, 4) / 4, 1e-12);
+  EXPECT_NEAR(m.myy, Pi * std::pow(r, 4) / 4, 1e-12);
+  EXPECT_NEAR(m.mxy, 0, 1e-12);
+  EXPECT_NEAR(room.disc_area_inside_m2(2, 1.5, r), Pi * r * r, 1e-12);
+}
+
+TEST(ReceiverPlane, HalfAndQuarterDiscMoments) {
+  const double r = 0.5;
+  // Centre on the wall x = 0: the half disc x > 0, centroid 4r / (3 pi) from the wall.
+  const AreaMoments half = room.clipped_disc_moments(0, 1.5, r);
+  EXPECT_NEAR(half.area, Pi * r * r / 2, 1e-12);
+  EXPECT_NEAR(half.mx / half.area, 4 * r / (3 * Pi), 1e-12);
+  EXPECT_NEAR(half.my, 0, 1e-12);
+  EXPECT_NEAR(half.mxx, Pi * std::pow(r, 4) / 8, 1e-12);
+  EXPECT_NEAR(half.myy, Pi * std::pow(r, 4) / 8, 1e-12);
+  // Centre on the corner (4, 3): the quarter x < 4, y < 3; int xy = r^4 / 8.
+  const AreaMoments quarter = room.clipped_disc_moments(4, 3, r);
+  EXPECT_NEAR(quarter.area, Pi * r * r / 4, 1e-12);
+  EXPECT_NEAR(quarter.mx / quarter.area, -4 * r / (3 * Pi), 1e-12);
+  EXPECT_NEAR(quarter.my / quarter.area, -4 * r / (3 * Pi), 1e-12);
+  EXPECT_NEAR(quarter.mxy, std::pow(r, 4) / 8, 1e-12);
+  EXPECT_NEAR(room.disc_area_inside_m2(4, 3, r), quarter.area, 1e-12);
+}
+
+TEST(ReceiverPlane, OutlineInsideTheDiscAndAChordCut) {
+  // A 1 x 1 square entirely inside a disc of radius 2 about its centre: the square's moments.
+  const ReceiverPlane square(0, true, {{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  const AreaMoments s = square.clipped_disc_moments(0.5, 0.5, 2);
+  EXPECT_NEAR(s.area, 1, 1e-12);
+  EXPECT_NEAR(s.mx, 0, 1e-12);
+  EXPECT_NEAR(s.mxx, 1.0 / 12, 1e-12);
+  EXPECT_NEAR(s.mxy, 0, 1e-12);
+  // Disc of radius 0.5 centred 0.3 from the wall x = 0: area = disc minus the circular segment
+  // beyond the wall, r^2 acos(d / r) - d sqrt(r^2 - d^2) with d = 0.3.
+  const double r = 0.5, d = 0.3;
+  const double segment = r * r * std::acos(d / r) - d * std::sqrt(r * r - d * d);
+  const AreaMoments cut = room.clipped_disc_moments(d, 1.5, r);
+  EXPECT_NEAR(cut.area, Pi * r * r - segment, 1e-12);
+  EXPECT_NEAR(room.disc_area_inside_m2(d, 1.5, r), cut.area, 1e-12);
+  // First moment of the segment about the centre: -(2/3) (r^2 - d^2)^(3/2) on the x axis,
+  // so the clipped disc's is its negative.
+  EXPECT_NEAR(cut.mx, 2.0 / 3.0 * std::pow(r * r - d * d, 1.5), 1e-12);
+}
+
+}  // namespace
+}  // namespace dayphoton::engine
