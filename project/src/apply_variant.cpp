@@ -1,8 +1,9 @@
 // apply_variant: a study variant's Project from the base Project (issue 5 item 1: variants
-// such as alternative glazing or blinds states are first-class). A variant only swaps
-// material definitions; geometry, sensors and settings stay those of the base, so the
+// such as alternative glazing or blinds states are first-class). A variant swaps material
+// definitions and daylight-system definitions (e.g. a blind's slat angle, or `enabled:
+// false` for blinds raised); rooms, sensors and settings stay those of the base, so the
 // pipeline builds each variant's scene with the same build_scene_description() and can
-// reuse everything that does not depend on materials (sky matrices, sensor grids).
+// reuse everything that does not depend on them (sky matrices, sensor grids).
 // Also the folder-name rule for variant names, which become output folders.
 #include <cctype>
 #include <stdexcept>
@@ -24,6 +25,18 @@ Project apply_variant(const Project& base, const VariantSpec& variant) {
       }
     if (!found)
       throw std::invalid_argument("variant '" + variant.name + "' replaces material '" +
+                                  replacement.name + "', which the project does not define");
+  }
+  for (const SystemSpec& replacement : variant.systems) {
+    bool found = false;
+    for (SystemSpec& s : result.geometry.systems)
+      if (s.name == replacement.name) {
+        s = replacement;
+        found = true;
+        break;
+      }
+    if (!found)
+      throw std::invalid_argument("variant '" + variant.name + "' replaces system '" +
                                   replacement.name + "', which the project does not define");
   }
   return result;

@@ -4,6 +4,7 @@
 // every problem located into a Diagnostics and skip what they cannot build.
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,8 @@ class MaterialLookup {
   /// Index of `name`, or -1 after reporting an error naming `what` (e.g. "floor material of
   /// room 'office'").
   int resolve(const std::string& name, const SourceLocation& where, const std::string& what);
+  /// The definition of material `index` (a valid index from resolve()).
+  const MaterialSpec& spec(int index) const { return m_materials[static_cast<std::size_t>(index)]; }
 
  private:
   const std::vector<MaterialSpec>& m_materials;
@@ -31,10 +34,20 @@ class MaterialLookup {
 /// Report an error, quoting the source line when the location names a readable file.
 void report(Diagnostics& diag, const SourceLocation& where, const std::string& message);
 
+/// What daylight systems change in a room (system_generators.h).
+struct RoomCutouts {
+  /// Convex polygons in the ceiling plane (light-pipe openings), each containing the
+  /// centroid of its vertices; inside the ceiling and apart (the systems check).
+  std::vector<std::vector<Vec3>> ceiling_holes;
+  /// Windows inside an exterior system's port enclosure: glazing, but not ports.
+  std::set<std::string> windows_without_port;
+};
+
 /// Room box (normals into the room) with its windows cut out of the named walls; each
-/// window becomes a glazing Surface with port = true and its normal into the room.
-void generate_room(const RoomSpec& room, MaterialLookup& materials, Diagnostics& diag,
-                   std::vector<Surface>& out);
+/// window becomes a glazing Surface with port = true (unless `cutouts` says otherwise) and
+/// its normal into the room; the ceiling has the cutouts' openings.
+void generate_room(const RoomSpec& room, const RoomCutouts& cutouts, MaterialLookup& materials,
+                   Diagnostics& diag, std::vector<Surface>& out);
 
 /// Axis-aligned box rotated about +Z (counter-clockwise for positive rotation_deg) around
 /// its origin corner; six faces with outward normals.

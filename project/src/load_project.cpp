@@ -4,12 +4,17 @@
 // located. Names are checked for uniqueness per kind; material and room references (and
 // the materials a variant replaces) are resolved after everything is read, with "did you
 // mean" hints. Rules between keys (occupancy start < end, UDI band order) are checked here.
+// Daylight systems are read against their type's schema section; a variant's changes to a
+// system are merged into the base system's node and read again as a whole.
 // All errors are collected (Diagnostics, cap 50) and thrown together as one InputError. The
 // file format is described in docs/project-format.md.
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <set>
 #include <sstream>
+#include <tuple>
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
@@ -280,6 +285,9 @@ class Loader {
     for_each_item(r, "polygons", [&](const YamlNode& n) { read_polygon(n); });
     for_each_item(r, "boxes", [&](const YamlNode& n) { read_box(n); });
     for_each_item(r, "meshes", [&](const YamlNode& n) { read_mesh(n); });
+    for_each_item(r, "systems", [&](const YamlNode& n) {
+      if (auto sys = read_system(n, /*base=*/true)) m_project.geometry.systems.push_back(std::move(*sys));
+    });
     r.finish();
   }
 
@@ -403,6 +411,181 @@ class Loader {
     r.read_bool("port", m.port);
     r.finish();
     m_project.geometry.meshes.push_back(std::move(m));
+  }
+
+  // ---- daylight systems (docs/daylight-systems.md) --------------------------------------
+  /// One system `{type: ..., name: ..., ...}`. `base`: a system of geometry.systems (its name
+  /// is registered and its node kept for variants); otherwise a variant's merged definition.
+  std::optional<SystemSpec> read_system(const YamlNode& node, bool base) {
+    if (!node.find("type")) {
+      m_reporter.error(node.location, "missing required key 'type' in system");
+      return std::nullopt;
+    }
+    std::string type;
+    {
+      ParamReader type_reader(node, schema_section("system"), m_reporter);
+      if (!type_reader.read_choice("type", type)) return std::nullopt;
+    }
+    SystemSpec sys;
+    sys.location = node.location;
+    for (const auto& e : node.entries) sys.key_locations.push_back({e.key, e.value.location});
+    ParamReader r(node, schema_section(type + " system"), m_reporter);
+    r.take("type");
+    if (r.read_string("name", sys.name) && base) {
+      m_system_names.add(sys.name, r.location_of("name"), m_reporter);
+      m_system_nodes.emplace(sys.name, node);
+    }
+    r.read_bool("enabled", sys.enabled);
+    auto material = [&](const std::string& key, std::string& out) {
+      if (r.has(key) && r.read_string(key, out)) use_material(r, key, out);
+      else r.take(key);  // absent optional key (required ones report themselves)
+    };
+    auto required_material = [&](const std::string& key, std::string& out) {
+      if (r.read_string(key, out)) use_material(r, key, out);
+    };
+    auto optional_number = [&](const std::string& key, std::optional<double>& out) {
+      double v = 0;
+      if (r.has(key) && r.read_number(key, v)) out = v;
+      else r.take(key);
+    };
+    if (type == "light_pipe") {
+      LightPipeSpec p;
+      if (r.read_string("room", p.room)) m_room_uses.push_back({p.room, r.location_of("room")});
+      r.read_number("x", p.x_m);
+      r.read_number("y", p.y_m);
+      r.read_number("diameter", p.diameter_m);
+      r.read_number("length", p.length_m);
+      long long n = 0;
+      if (r.read_integer("sides", n)) p.sides = static_cast<int>(n);
+      std::string collector;
+      if (r.read_choice("collector", collector)) p.dome = collector == "dome";
+      if (r.read_integer("dome_rings", n)) p.dome_rings = static_cast<int>(n);
+      required_material("tube_material", p.tube_material);
+      required_material("diffuser_material", p.diffuser_material);
+      required_material("collector_material", p.collector_material);
+      sys.params = p;
+    } else {
+      read_mount(r, type, sys.mount);
+      if (type == "light_shelf") {
+        LightShelfSpec p;
+        r.read_number("height", p.height_m);
+        r.read_number("depth", p.depth_m);
+        r.read_number("tilt", p.tilt_deg);
+        r.read_number("thickness", p.thickness_m);
+        r.read_number("extension", p.extension_m);
+        required_material("material", p.material);
+        material("underside_material", p.underside_material);
+        if (!p.underside_material.empty() && p.thickness_m == 0)
+          m_reporter.error(r.location_of("underside_material"),
+                           "'underside_material' needs a slab: give 'thickness' > 0 (a thin shelf "
+                           "is one polygon whose two sides share 'material')");
+        sys.params = p;
+      } else if (type == "blinds") {
+        BlindsSpec p;
+        r.read_number("slat_width", p.slat_width_m);
+        r.read_number("spacing", p.spacing_m);
+        r.read_number("angle", p.angle_deg);
+        r.read_number("crown", p.crown_m);
+        long long n = 0;
+        if (r.read_integer("facets", n)) p.facets = static_cast<int>(n);
+        optional_number("offset", p.offset_m);
+        optional_number("bottom", p.bottom_m);
+        optional_number("top", p.top_m);
+        r.read_number("extension", p.extension_m);
+        required_material("material", p.material);
+        sys.params = p;
+      } else if (type == "prismatic_panel") {
+        PrismaticPanelSpec p;
+        r.read_number("apex_angle", p.apex_angle_deg);
+        r.read_number("pitch", p.pitch_m);
+        std::string apex;
+        if (r.read_choice("apex", apex)) p.apex_outward = apex == "outward";
+        r.read_number("backing", p.backing_m);
+        r.read_number("offset", p.offset_m);
+        optional_number("bottom", p.bottom_m);
+        optional_number("top", p.top_m);
+        required_material("material", p.material);
+        sys.params = p;
+      } else if (type == "lamella_panel") {
+        LamellaPanelSpec p;
+        r.read_number("thickness", p.thickness_m);
+        r.read_number("spacing", p.spacing_m);
+        r.read_number("lamella_angle", p.lamella_angle_deg);
+        r.read_number("gap", p.gap_m);
+        r.read_number("offset", p.offset_m);
+        optional_number("bottom", p.bottom_m);
+        optional_number("top", p.top_m);
+        required_material("material", p.material);
+        sys.params = p;
+      } else if (type == "cpc") {
+        CpcSpec p;
+        r.read_number("acceptance_angle", p.acceptance_angle_deg);
+        long long n = 0;
+        if (r.read_integer("count", n)) p.count = static_cast<int>(n);
+        std::string kind;
+        if (r.read_choice("kind", kind)) p.dielectric = kind == "dielectric";
+        if (r.read_integer("facets", n)) p.facets = static_cast<int>(n);
+        r.read_number("tilt", p.tilt_deg);
+        r.read_number("offset", p.offset_m);
+        optional_number("bottom", p.bottom_m);
+        optional_number("top", p.top_m);
+        required_material("material", p.material);
+        material("exit_material", p.exit_material);
+        if (p.dielectric && p.exit_material.empty() && !r.has("exit_material"))
+          m_reporter.error(node.location, "missing required key 'exit_material' in cpc system "
+                                          "(a dielectric CPC's exit aperture is coated)");
+        if (!p.dielectric && r.has("exit_material"))
+          m_reporter.error(r.location_of("exit_material"),
+                           "'exit_material' applies to kind: dielectric only (a reflective CPC's "
+                           "exit aperture is open)");
+        sys.params = p;
+      } else if (type == "overhang") {
+        OverhangSpec p;
+        optional_number("height", p.height_m);
+        r.read_number("depth", p.depth_m);
+        r.read_number("tilt", p.tilt_deg);
+        r.read_number("thickness", p.thickness_m);
+        r.read_number("extension", p.extension_m);
+        required_material("material", p.material);
+        sys.params = p;
+      } else if (type == "fins") {
+        FinsSpec p;
+        r.read_number("depth", p.depth_m);
+        std::string jambs;
+        if (r.read_choice("jambs", jambs)) {
+          p.left = jambs != "right";
+          p.right = jambs != "left";
+        }
+        r.read_number("offset", p.offset_m);
+        r.read_number("extension", p.extension_m);
+        r.read_number("angle", p.angle_deg);
+        r.read_number("thickness", p.thickness_m);
+        required_material("material", p.material);
+        sys.params = p;
+      }
+    }
+    r.finish();
+    return sys;
+  }
+
+  /// `window`, `side` and `port` of a window-mounted system. Overhangs and fins are always
+  /// outside (their schema has no `side`); `port` only means something outside.
+  void read_mount(ParamReader& r, const std::string& type, WindowMount& mount) {
+    if (r.read_string("window", mount.window)) m_window_uses.push_back({mount.window, r.location_of("window")});
+    const bool has_side = r.schema().find("side") != nullptr;
+    std::string side = "exterior";
+    if (has_side) r.read_choice("side", side);
+    mount.side = side == "interior" ? MountSide::Interior : MountSide::Exterior;
+    std::string port;
+    if (r.read_choice("port", port))
+      mount.port = port == "enclosure" ? PortMode::Enclosure : PortMode::Window;
+    if (mount.side == MountSide::Interior) {
+      if (r.has("port"))
+        m_reporter.error(r.location_of("port"), "'port' applies to exterior systems only (inside "
+                                                "the room the window is the photon port)");
+      mount.port = PortMode::Window;
+    }
+    (void)type;
   }
 
   // ---- sensors --------------------------------------------------------------------------
@@ -648,24 +831,78 @@ class Loader {
                          "not a device name such as 'nul')");
       m_variant_names.add(v.name, r.location_of("name"), m_reporter);
     }
+    const bool has_materials = r.has("materials"), has_systems = r.has("systems");
+    std::size_t changes = 0;
+    const YamlNode* empty_map = nullptr;
     if (const YamlNode* mats = r.take("materials"); mats && expect_map(*mats, "materials", m_reporter)) {
-      if (mats->entries.empty())
-        m_reporter.error(mats->location, "variant '" + v.name + "' replaces no material (give at "
-                                         "least one material definition)");
+      if (mats->entries.empty()) empty_map = mats;
+      changes += mats->entries.size();
       for (const auto& entry : mats->entries) {
         m_variant_material_uses.push_back({{entry.key, entry.key_location}, v.name});
         MaterialSpec m;
         if (read_material(entry, m)) v.materials.push_back(std::move(m));
       }
     }
+    if (const YamlNode* systems = r.take("systems"); systems && expect_map(*systems, "systems", m_reporter)) {
+      if (systems->entries.empty() && !empty_map) empty_map = systems;
+      changes += systems->entries.size();
+      for (const auto& entry : systems->entries) read_variant_system(entry, v);
+    }
+    if (!has_materials && !has_systems)
+      m_reporter.error(node.location, "missing required key 'materials' or 'systems' in variant");
+    else if (changes == 0 && empty_map)
+      m_reporter.error(empty_map->location, "variant '" + v.name + "' replaces nothing (give at "
+                                            "least one material or system)");
     r.finish();
     m_project.variants.push_back(std::move(v));
   }
 
+  /// `system_name: {key: value, ...}` of a variant: the base system's node with these keys
+  /// put in place (or added), read again as a whole, so every rule of the system applies and
+  /// errors point at the line that set the key (the variant's or the base's).
+  void read_variant_system(const YamlEntry& entry, VariantSpec& v) {
+    const auto base = m_system_nodes.find(entry.key);
+    if (base == m_system_nodes.end()) {
+      std::vector<std::string> known;
+      for (const auto& kv : m_system_nodes) known.push_back(kv.first);
+      unknown_name("system", {entry.key, entry.key_location}, known, " in variant '" + v.name + "'");
+      return;
+    }
+    if (!expect_map(entry.value, entry.key, m_reporter)) return;
+    if (entry.value.entries.empty()) {
+      m_reporter.error(entry.value.location, "variant '" + v.name + "' changes no key of system '" +
+                                                 entry.key + "'");
+      return;
+    }
+    YamlNode merged = base->second;
+    bool ok = true;
+    for (const auto& change : entry.value.entries) {
+      if (change.key == "type" || change.key == "name") {
+        m_reporter.error(change.key_location, "a variant cannot change '" + change.key +
+                                                  "' of system '" + entry.key +
+                                                  "' (define another system and disable this one)");
+        ok = false;
+        continue;
+      }
+      bool replaced = false;
+      for (auto& e : merged.entries)
+        if (e.key == change.key) {
+          e = change;
+          replaced = true;
+        }
+      if (!replaced) merged.entries.push_back(change);
+    }
+    if (!ok) return;
+    if (auto sys = read_system(merged, /*base=*/false)) v.systems.push_back(std::move(*sys));
+  }
+
   // ---- references -----------------------------------------------------------------------
   void check_references() {
+    // A variant's system is read again from the base's lines: report each place once.
+    std::set<std::tuple<std::string, std::string, int, int>> seen;
     for (const auto& use : m_material_uses)
-      if (!m_material_names.contains(use.name))
+      if (!m_material_names.contains(use.name) &&
+          seen.insert({use.name, use.location.file, use.location.line, use.location.column}).second)
         unknown_name("material", use, m_material_names.names());
     // A variant replaces materials; it cannot add new ones (nothing would use them).
     for (const auto& use : m_variant_material_uses)
@@ -673,7 +910,13 @@ class Loader {
         unknown_name("material", use.material, m_material_names.names(),
                      " in variant '" + use.variant + "'");
     for (const auto& use : m_room_uses)
-      if (!m_room_names.contains(use.name)) unknown_name("room", use, m_room_names.names());
+      if (!m_room_names.contains(use.name) &&
+          seen.insert({"room " + use.name, use.location.file, use.location.line, use.location.column}).second)
+        unknown_name("room", use, m_room_names.names());
+    for (const auto& use : m_window_uses)
+      if (!m_window_names.contains(use.name) &&
+          seen.insert({"window " + use.name, use.location.file, use.location.line, use.location.column}).second)
+        unknown_name("window", use, m_window_names.names());
   }
 
   void unknown_name(const std::string& kind, const NameUse& use, const std::vector<std::string>& known,
@@ -688,8 +931,9 @@ class Loader {
   Reporter& m_reporter;
   NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
       m_polygon_names{"polygon"}, m_box_names{"box"}, m_mesh_names{"mesh"},
-      m_sensor_names{"sensor set"}, m_variant_names{"variant"};
-  std::vector<NameUse> m_material_uses, m_room_uses;
+      m_sensor_names{"sensor set"}, m_variant_names{"variant"}, m_system_names{"system"};
+  std::vector<NameUse> m_material_uses, m_room_uses, m_window_uses;
+  std::map<std::string, YamlNode> m_system_nodes;  ///< base systems as written, for variants
   struct VariantMaterialUse {
     NameUse material;
     std::string variant;

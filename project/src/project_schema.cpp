@@ -56,6 +56,30 @@ ParamSchema roughness() {
       .range(0, 1).def("0");
 }
 
+const std::vector<std::string> SystemTypes = {"light_shelf", "blinds", "prismatic_panel",
+                                              "lamella_panel", "cpc", "light_pipe",
+                                              "overhang", "fins"};
+
+ParamSchema system_type() {
+  return P("type", T::Choice, "kind of daylight system").required().choices(SystemTypes);
+}
+ParamSchema system_name() { return P("name", T::String, "unique system name").required(); }
+ParamSchema system_enabled() {
+  return P("enabled", T::Boolean, "false: the system is left out (e.g. blinds raised, in a variant)").def("true");
+}
+ParamSchema system_window() {
+  return P("window", T::String, "window the system belongs to (its frame places the system)").required();
+}
+ParamSchema system_side() {
+  return P("side", T::Choice, "inside the room or outside the wall").choices({"interior", "exterior"}).def("interior");
+}
+ParamSchema system_port() {
+  return P("port", T::Choice, "exterior only: photons enter through an opening box around system and window, or through the window (exterior parts then only shade)").choices({"enclosure", "window"}).def("enclosure");
+}
+ParamSchema system_port_window() {
+  return P("port", T::Choice, "photons enter through the window (the system only shades it), or through an opening box around system and window").choices({"window", "enclosure"}).def("window");
+}
+
 std::vector<SectionSchema> build_schema() {
   std::vector<SectionSchema> s;
   s.push_back({"project", "the top level of a project file", {
@@ -121,6 +145,7 @@ std::vector<SectionSchema> build_schema() {
       P("polygons", T::SectionList, "planar polygons").section("polygon"),
       P("boxes", T::SectionList, "solid boxes (shading, furniture)").section("box"),
       P("meshes", T::SectionList, "Wavefront OBJ meshes").section("mesh"),
+      P("systems", T::SectionList, "daylight systems generated from a few parameters (docs/daylight-systems.md)").section("system"),
   }});
   s.push_back({"room", "a box-shaped room, surfaces facing inward", {
       P("name", T::String, "unique room name").required(),
@@ -169,6 +194,102 @@ std::vector<SectionSchema> build_schema() {
       P("scale", T::Number, "uniform scale applied first").above(0).def("1"),
       P("rotation", T::Number, "counter-clockwise rotation about +Z after scaling").unit("deg").range(-360, 360).def("0"),
       P("port", T::Boolean, "all faces are photon ports").def("false"),
+  }});
+  // Daylight systems (docs/daylight-systems.md). Heights are above the room floor; `offset`
+  // and `depth` are measured perpendicular to the wall; angles in degrees.
+  s.push_back({"system", "a daylight system: `type` selects the keys (sections `<type> system` below)", {
+      system_type(), system_name(), system_enabled(),
+  }});
+  s.push_back({"light_shelf system", "a light shelf along a window, inside or outside", {
+      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port(),
+      P("height", T::Number, "height of the shelf's wall edge above the floor").unit("m").at_least(0).required(),
+      P("depth", T::Number, "from the wall to the free edge, along the shelf").unit("m").above(0).required(),
+      P("tilt", T::Number, "rotation about the wall edge; > 0 raises the free edge").unit("deg").range(-60, 60).def("0"),
+      P("thickness", T::Number, "0: one two-sided polygon; > 0: a closed slab this thick").unit("m").at_least(0).def("0"),
+      P("extension", T::Number, "length beyond each window jamb").unit("m").at_least(0).def("0"),
+      P("material", T::String, "material of the top (of every face of a thin shelf)").required(),
+      P("underside_material", T::String, "slab only: material of the faces other than the top (default: material)"),
+  }});
+  s.push_back({"blinds system", "venetian blinds: horizontal slats in front of a window", {
+      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port(),
+      P("slat_width", T::Number, "chord of a slat, edge to edge").unit("m").above(0).required(),
+      P("spacing", T::Number, "vertical distance between slat axes").unit("m").above(0).required(),
+      P("angle", T::Number, "slat rotation: 0 horizontal, > 0 window-side edge down (closing toward the sky), 90 closed").unit("deg").range(-90, 90).def("0"),
+      P("crown", T::Number, "rise of a slat's middle above its chord (convex side up at angle 0)").unit("m").at_least(0).def("0"),
+      P("facets", T::Integer, "flat facets across a curved slat").range(1, 32).def("4"),
+      P("offset", T::Number, "from the wall plane to the slat axes (default: half the slat width + 0.02)").unit("m").above(0),
+      P("bottom", T::Number, "lowest height covered by slats (default: the window sill)").unit("m").at_least(0),
+      P("top", T::Number, "highest height covered by slats (default: the window head)").unit("m").at_least(0),
+      P("extension", T::Number, "slat length beyond each window jamb").unit("m").at_least(0).def("0"),
+      P("material", T::String, "slat material (both sides)").required(),
+  }});
+  s.push_back({"prismatic_panel system", "a panel of horizontal dielectric prisms parallel to a window", {
+      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port(),
+      P("apex_angle", T::Number, "apex angle of the isosceles prism cross-section").unit("deg").range(10, 170).def("90"),
+      P("pitch", T::Number, "prism base width = vertical period").unit("m").above(0).required(),
+      P("apex", T::Choice, "where the apexes point").choices({"inward", "outward"}).def("inward"),
+      P("backing", T::Number, "thickness of a plate joining the prism bases (0: separate prisms)").unit("m").at_least(0).def("0"),
+      P("offset", T::Number, "from the wall plane to the panel's nearest face").unit("m").at_least(0).def("0.01"),
+      P("bottom", T::Number, "lower edge of the panel (default: the window sill)").unit("m").at_least(0),
+      P("top", T::Number, "upper edge of the panel (default: the window head)").unit("m").at_least(0),
+      P("material", T::String, "a dielectric material").required(),
+  }});
+  s.push_back({"lamella_panel system", "a dielectric panel cut by inclined air lamellae (Y-glass, seeds/000 section 4.2.1)", {
+      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port(),
+      P("thickness", T::Number, "panel thickness, wall-normal").unit("m").above(0).required(),
+      P("spacing", T::Number, "vertical distance between lamellae").unit("m").above(0).required(),
+      P("lamella_angle", T::Number, "lamella inclination; > 0: the room-side edge lower").unit("deg").range(-45, 45).def("7"),
+      P("gap", T::Number, "air gap of a lamella, perpendicular to it").unit("m").above(0).def("0.0005"),
+      P("offset", T::Number, "from the wall plane to the panel's nearest face").unit("m").at_least(0).def("0.01"),
+      P("bottom", T::Number, "lower edge of the panel (default: the window sill)").unit("m").at_least(0),
+      P("top", T::Number, "upper edge of the panel (default: the window head)").unit("m").at_least(0),
+      P("material", T::String, "a dielectric material").required(),
+  }});
+  s.push_back({"cpc system", "compound parabolic concentrator troughs stacked over a window (seeds/000 section 4.2.2)", {
+      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port(),
+      P("acceptance_angle", T::Number, "acceptance half angle of each 2-D CPC").unit("deg").range(5, 60).required(),
+      P("count", T::Integer, "troughs stacked over the covered height").range(1, 1000).required(),
+      P("kind", T::Choice, "mirror walls (a conventional CPC) or solid dielectric troughs (sun shading)").choices({"reflective", "dielectric"}).def("reflective"),
+      P("facets", T::Integer, "straight facets per parabolic wall").range(2, 64).def("8"),
+      P("tilt", T::Number, "troughs' axes raised toward the sky by this angle").unit("deg").range(-60, 60).def("0"),
+      P("offset", T::Number, "from the wall plane to the nearest aperture").unit("m").at_least(0).def("0.01"),
+      P("bottom", T::Number, "lowest covered height (default: the window sill)").unit("m").at_least(0),
+      P("top", T::Number, "highest covered height (default: the window head)").unit("m").at_least(0),
+      P("material", T::String, "reflective: the wall material; dielectric: the dielectric").required(),
+      P("exit_material", T::String, "dielectric only (required there): opaque coating of the exit aperture"),
+  }});
+  s.push_back({"light_pipe system", "a vertical specular tube from a ceiling to a roof collector (seeds/000 section 4.2.3)", {
+      system_type(), system_name(), system_enabled(),
+      P("room", T::String, "room whose ceiling the pipe passes").required(),
+      P("x", T::Number, "x of the pipe axis (model coordinates)").unit("m").required(),
+      P("y", T::Number, "y of the pipe axis (model coordinates)").unit("m").required(),
+      P("diameter", T::Number, "diameter of the circle the tube's polygon is inscribed in").unit("m").above(0).required(),
+      P("length", T::Number, "tube length from the ceiling up to the collector").unit("m").above(0).required(),
+      P("sides", T::Integer, "facets of the tube (a regular polygon)").range(3, 64).def("16"),
+      P("collector", T::Choice, "hemispherical dome or flat aperture on top (a photon port)").choices({"dome", "flat"}).def("dome"),
+      P("dome_rings", T::Integer, "facet rings of the dome").range(1, 16).def("4"),
+      P("tube_material", T::String, "inside of the tube (mirror or metal)").required(),
+      P("diffuser_material", T::String, "fills the ceiling opening (translucent, glass or opening)").required(),
+      P("collector_material", T::String, "collector glazing (glass or opening)").required(),
+  }});
+  s.push_back({"overhang system", "a horizontal or tilted projection above a window", {
+      system_type(), system_name(), system_enabled(), system_window(), system_port_window(),
+      P("height", T::Number, "height of the overhang's wall edge above the floor (default: the window head)").unit("m").at_least(0),
+      P("depth", T::Number, "from the wall to the free edge, along the overhang").unit("m").above(0).required(),
+      P("tilt", T::Number, "rotation about the wall edge; > 0 raises the free edge").unit("deg").range(-60, 60).def("0"),
+      P("thickness", T::Number, "0: one two-sided polygon; > 0: a closed slab this thick").unit("m").at_least(0).def("0"),
+      P("extension", T::Number, "length beyond each window jamb").unit("m").at_least(0).def("0"),
+      P("material", T::String, "material of every face").required(),
+  }});
+  s.push_back({"fins system", "vertical projections beside a window", {
+      system_type(), system_name(), system_enabled(), system_window(), system_port_window(),
+      P("depth", T::Number, "from the wall to the free edge, along the fin").unit("m").above(0).required(),
+      P("jambs", T::Choice, "which jambs get a fin, as seen from outside").choices({"both", "left", "right"}).def("both"),
+      P("offset", T::Number, "from the jamb to the fin, away from the window").unit("m").at_least(0).def("0"),
+      P("extension", T::Number, "above the window head and below the sill").unit("m").at_least(0).def("0"),
+      P("angle", T::Number, "free edges turned toward the window's centre line").unit("deg").range(-80, 80).def("0"),
+      P("thickness", T::Number, "0: one two-sided polygon; > 0: a closed slab this thick").unit("m").at_least(0).def("0"),
+      P("material", T::String, "material of every face").required(),
   }});
   s.push_back({"sensors", "where illuminance is computed", {
       P("grids", T::SectionList, "regular grids on a horizontal plane").section("grid"),
@@ -224,9 +345,10 @@ std::vector<SectionSchema> build_schema() {
       P("ase_threshold", T::Number, "ASE: direct-sun illuminance threshold").unit("lx").above(0).def("1000"),
       P("ase_hours", T::Number, "ASE: a sensor fails with more occupied hours than this at or above ase_threshold").unit("h").range(0, 8784).def("250"),
   }});
-  s.push_back({"variant", "a study variant: the whole project with the listed materials replaced", {
+  s.push_back({"variant", "a study variant: the whole project with the listed materials and systems replaced", {
       P("name", T::String, "unique variant name, also its output folder: letters, digits, _ - . (at most 64)").required(),
-      P("materials", T::NameMap, "name of a material in `materials` -> its full definition in this variant").required(),
+      P("materials", T::NameMap, "name of a material in `materials` -> its full definition in this variant"),
+      P("systems", T::NameMap, "name of a system in `geometry.systems` -> the keys it changes in this variant (any but type and name)"),
   }});
   return s;
 }

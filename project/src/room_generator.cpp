@@ -14,13 +14,23 @@
 // and a sill and a head strip: 18 - 6 = 12 m^2 of wall. Each window becomes a glazing
 // Surface (port = true) in the wall plane with the same inward normal.
 //
-// Surface names: "<room>.floor", "<room>.ceiling", "<room>.wall_<dir>" (".1", ".2", ...
-// when split), "<room>.<window name>".
+// Daylight systems may change a room (RoomCutouts): light pipes cut convex openings into
+// the ceiling (ceiling_pieces below), and a window inside an exterior system's port
+// enclosure stays glazing but is no longer a port.
+//
+// Surface names: "<room>.floor", "<room>.ceiling" (".1", ".2", ... with openings),
+// "<room>.wall_<dir>" (".1", ".2", ... when split), "<room>.<window name>".
 #include "dayphoton/core/diagnostics.h"
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
+#include "dayphoton/core/units.h"
+
+#include "dayphoton/core/polygon.h"
 #include "geometry_generators.h"
+#include "window_frame.h"
 
 namespace dayphoton::project {
 
@@ -33,25 +43,6 @@ constexpr double SnapTolerance_m = 1e-6;
 struct Rect {
   double u0, u1, v0, v1;
 };
-
-/// A wall in model space: p(u, v) = origin + u * u_axis + v * (0,0,1), inward normal.
-struct WallFrame {
-  Vec3 origin;
-  Vec3 u_axis;
-  Vec3 inward;
-  double length_m;
-};
-
-WallFrame wall_frame(const RoomSpec& room, Wall wall) {
-  const Vec3 o = room.origin, s = room.size_m;
-  switch (wall) {
-    case Wall::South: return {o, {1, 0, 0}, {0, 1, 0}, s.x};
-    case Wall::North: return {o + Vec3{0, s.y, 0}, {1, 0, 0}, {0, -1, 0}, s.x};
-    case Wall::West: return {o, {0, 1, 0}, {1, 0, 0}, s.y};
-    case Wall::East: return {o + Vec3{s.x, 0, 0}, {0, 1, 0}, {-1, 0, 0}, s.y};
-  }
-  return {o, {1, 0, 0}, {0, 1, 0}, s.x};
-}
 
 /// Rectangle's corners wound counter-clockwise about the wall's inward normal.
 std::vector<Vec3> wall_rectangle(const WallFrame& f, const Rect& r) {
@@ -106,10 +97,94 @@ std::vector<Rect> wall_pieces(double length_m, double height_m, const std::vecto
 
 bool finite_positive(double x) { return std::isfinite(x) && x > 0; }
 
+/// `polygon` turned, if needed, so that its winding normal points along `normal`.
+std::vector<Vec3> facing(std::vector<Vec3> polygon, const Vec3& normal) {
+  if (dot(polygon_normal(polygon), normal) < 0) std::reverse(polygon.begin() + 1, polygon.end());
+  return polygon;
+}
+
+/// The ceiling rectangle [0, sx] x [0, sy] (room coordinates, at height z) minus convex
+/// holes (each containing its vertex centroid, as the light pipe's regular polygons do):
+/// the rectangle minus the holes' bounding boxes is split like a wall (wall_pieces), and
+/// the ring between each bounding box and its hole is cut into one piece per hole edge by
+/// the rays from the hole's centre through its vertices (each piece: hole edge, two ray
+/// segments and the box boundary between them, corners included). Every piece is planar
+/// and simple; pieces of zero area (a hole edge lying on its box) are dropped.
+std::vector<std::vector<Vec3>> ceiling_pieces(const Vec3& origin, double sx, double sy, double z,
+                                              const std::vector<std::vector<Vec3>>& holes) {
+  std::vector<Rect> boxes;
+  for (const auto& hole : holes) {
+    Rect b{hole[0].x - origin.x, hole[0].x - origin.x, hole[0].y - origin.y, hole[0].y - origin.y};
+    for (const Vec3& p : hole) {
+      b.u0 = std::min(b.u0, p.x - origin.x);
+      b.u1 = std::max(b.u1, p.x - origin.x);
+      b.v0 = std::min(b.v0, p.y - origin.y);
+      b.v1 = std::max(b.v1, p.y - origin.y);
+    }
+    boxes.push_back(b);
+  }
+  std::vector<std::vector<Vec3>> pieces;
+  const Vec3 down{0, 0, -1};
+  for (const Rect& r : wall_pieces(sx, sy, boxes))
+    pieces.push_back(facing({origin + Vec3{r.u0, r.v0, z}, origin + Vec3{r.u1, r.v0, z},
+                             origin + Vec3{r.u1, r.v1, z}, origin + Vec3{r.u0, r.v1, z}},
+                            down));
+  for (std::size_t h = 0; h < holes.size(); ++h) {
+    const std::vector<Vec3>& hole = holes[h];
+    const Rect& b = boxes[h];
+    Vec3 c{0, 0, 0};
+    for (const Vec3& p : hole) c = c + p;
+    c = c * (1.0 / double(hole.size()));
+    const double bx0 = origin.x + b.u0, bx1 = origin.x + b.u1, by0 = origin.y + b.v0,
+                 by1 = origin.y + b.v1;
+    // Where the ray from c through p leaves the box, and the box corners by angle.
+    auto exit_point = [&](const Vec3& p) {
+      const Vec3 d = p - c;
+      double t = std::numeric_limits<double>::infinity();
+      if (d.x > 0) t = std::min(t, (bx1 - c.x) / d.x);
+      if (d.x < 0) t = std::min(t, (bx0 - c.x) / d.x);
+      if (d.y > 0) t = std::min(t, (by1 - c.y) / d.y);
+      if (d.y < 0) t = std::min(t, (by0 - c.y) / d.y);
+      return Vec3{c.x + d.x * t, c.y + d.y * t, z};
+    };
+    const Vec3 corners[4] = {{bx1, by1, z}, {bx0, by1, z}, {bx0, by0, z}, {bx1, by0, z}};
+    auto angle = [&](const Vec3& p) { return std::atan2(p.y - c.y, p.x - c.x); };
+    // Vertices counter-clockwise seen from above.
+    std::vector<Vec3> ring = facing(hole, Vec3{0, 0, 1});
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Vec3& a = ring[i];
+      const Vec3& d = ring[(i + 1) % ring.size()];
+      const double a0 = angle(a);
+      double a1 = angle(d);
+      if (a1 <= a0) a1 += 2 * Pi;
+      std::vector<Vec3> piece{a, exit_point(a)};
+      std::vector<std::pair<double, Vec3>> between;
+      for (const Vec3& k : corners) {
+        double ak = angle(k);
+        while (ak <= a0) ak += 2 * Pi;
+        if (ak < a1) between.push_back({ak, k});
+      }
+      std::sort(between.begin(), between.end(),
+                [](const auto& x, const auto& y) { return x.first < y.first; });
+      for (const auto& k : between) piece.push_back(k.second);
+      piece.push_back(exit_point(d));
+      piece.push_back(d);
+      // Drop repeated points (a hole vertex on its box: the ray segment has zero length).
+      std::vector<Vec3> clean;
+      for (const Vec3& p : piece)
+        if (clean.empty() || length(p - clean.back()) > SnapTolerance_m) clean.push_back(p);
+      while (clean.size() > 1 && length(clean.front() - clean.back()) <= SnapTolerance_m) clean.pop_back();
+      if (clean.size() < 3 || polygon_area_m2(clean) < 1e-10) continue;
+      pieces.push_back(facing(clean, down));
+    }
+  }
+  return pieces;
+}
+
 }  // namespace
 
-void generate_room(const RoomSpec& room, MaterialLookup& materials, Diagnostics& diag,
-                   std::vector<Surface>& out) {
+void generate_room(const RoomSpec& room, const RoomCutouts& cutouts, MaterialLookup& materials,
+                   Diagnostics& diag, std::vector<Surface>& out) {
   const std::string what = "room '" + room.name + "'";
   if (!is_finite(room.origin)) {
     report(diag, room.location, what + ": origin is not finite");
@@ -128,9 +203,17 @@ void generate_room(const RoomSpec& room, MaterialLookup& materials, Diagnostics&
   // Floor (normal +z) and ceiling (normal -z), as in office.rad.
   out.push_back({room.name + ".floor", floor_mat,
                  {o, o + Vec3{s.x, 0, 0}, o + Vec3{s.x, s.y, 0}, o + Vec3{0, s.y, 0}}, false, room.location});
-  out.push_back({room.name + ".ceiling", ceiling_mat,
-                 {o + Vec3{0, 0, s.z}, o + Vec3{0, s.y, s.z}, o + Vec3{s.x, s.y, s.z}, o + Vec3{s.x, 0, s.z}},
-                 false, room.location});
+  if (cutouts.ceiling_holes.empty()) {
+    out.push_back({room.name + ".ceiling", ceiling_mat,
+                   {o + Vec3{0, 0, s.z}, o + Vec3{0, s.y, s.z}, o + Vec3{s.x, s.y, s.z}, o + Vec3{s.x, 0, s.z}},
+                   false, room.location});
+  } else {
+    // Openings of light pipes (validated by their generator: inside the ceiling, apart).
+    const auto pieces = ceiling_pieces(o, s.x, s.y, s.z, cutouts.ceiling_holes);
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+      out.push_back({room.name + ".ceiling." + std::to_string(i + 1), ceiling_mat, pieces[i], false,
+                     room.location});
+  }
 
   // Windows per wall, validated against the wall and each other.
   std::vector<Rect> holes[4];
@@ -192,7 +275,10 @@ void generate_room(const RoomSpec& room, MaterialLookup& materials, Diagnostics&
     holes[wall_index].push_back(r);
     placed[wall_index].push_back(&w);
     const int glass_mat = materials.resolve(w.material, w.location, wwhat);
-    out.push_back({room.name + "." + wname, glass_mat, wall_rectangle(frame, r), true, w.location});
+    // A window inside a daylight system's port enclosure is glazing, not a port (the
+    // enclosure's openings are the ports; docs/daylight-systems.md).
+    const bool port = cutouts.windows_without_port.count(w.name) == 0;
+    out.push_back({room.name + "." + wname, glass_mat, wall_rectangle(frame, r), port, w.location});
   }
 
   // Walls around their openings.

@@ -1,7 +1,9 @@
 // build_scene_description: Project -> SceneDescription (the geometry stage of project.h).
 //
-// Order: materials are copied; rooms (windows cut out, glazing as ports), free polygons,
-// boxes and OBJ meshes are generated in model coordinates and validated (finite vertices,
+// Order: materials are copied; daylight systems are generated (system_generators.h; an
+// `opening` material is appended for port enclosures), then rooms (windows cut out,
+// glazing as ports unless an enclosure took over, light-pipe openings in ceilings), free
+// polygons, boxes, OBJ meshes and the systems' surfaces, all in model coordinates and validated (finite vertices,
 // non-zero area, planarity within 1e-3 m x max(1, size) where size is the largest extent of
 // the polygon's bounding box, triangulable); sensor grids and point sets are generated;
 // finally every position and direction is rotated to world coordinates by the site's
@@ -18,6 +20,7 @@
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/project/north_rotation.h"
 #include "geometry_generators.h"
+#include "system_generators.h"
 
 namespace dayphoton::project {
 
@@ -128,11 +131,21 @@ SceneDescription build_scene_description(const Project& project) {
     detail::report(diag, project.site.location, "site north angle is not finite");
 
   const Geometry& g = project.geometry;
+  // Systems first: they decide what rooms look like (ceiling openings, windows that stop
+  // being ports inside an enclosure); their surfaces come after the meshes.
+  detail::SystemOutput systems;
+  detail::generate_systems(project, materials, scene.materials, diag, systems);
   std::vector<Surface> surfaces;
-  for (const RoomSpec& room : g.rooms) detail::generate_room(room, materials, diag, surfaces);
+  static const detail::RoomCutouts unchanged;
+  for (const RoomSpec& room : g.rooms) {
+    const auto cut = systems.rooms.find(room.name);
+    detail::generate_room(room, cut == systems.rooms.end() ? unchanged : cut->second, materials,
+                          diag, surfaces);
+  }
   for (const PolygonSpec& poly : g.polygons) generate_polygon(poly, materials, surfaces);
   for (const BoxSpec& box : g.boxes) detail::generate_box(box, materials, diag, surfaces);
   for (const MeshSpec& mesh : g.meshes) detail::generate_mesh(mesh, materials, diag, surfaces);
+  surfaces.insert(surfaces.end(), systems.surfaces.begin(), systems.surfaces.end());
   for (const Surface& s : surfaces) detail::validate_surface(s, diag);
   scene.surfaces = std::move(surfaces);
 

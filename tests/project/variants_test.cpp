@@ -233,17 +233,17 @@ std::vector<BadCase> variant_cases() {
       {"variant_replacing_nothing",
        "variants:\n"
        "  - {name: a, materials: {}}\n",
-       {"8:26: variant 'a' replaces no material (give at least one material definition)"}},
+       {"8:26: variant 'a' replaces nothing (give at least one material or system)"}},
       {"missing_name_and_missing_materials",
        "variants:\n"
        "  - {materials: {glazing: {type: glass, transmittance: 0.4}}}\n"
        "  - name: b\n",
        {"8:5: missing required key 'name' in variant",
-        "9:5: missing required key 'materials' in variant"}},
+        "9:5: missing required key 'materials' or 'systems' in variant"}},
       {"unknown_key_in_variant",
        "variants:\n"
        "  - {name: a, material: {glazing: {type: glass, transmittance: 0.4}}}\n",
-       {"8:5: missing required key 'materials' in variant",
+       {"8:5: missing required key 'materials' or 'systems' in variant",
         "8:15: unknown key 'material' in variant (did you mean 'materials'?)"}},
       {"bad_material_definitions_inside_a_variant",
        "variants:\n"
@@ -454,13 +454,13 @@ TEST(ProjectVariants, ApplyVariantOnHandMadeVariants) {
   expect_same_material(p.materials[0], glazing);
   expect_same_material(p.materials[1], walls);
   // No replacement: the base itself.
-  const Project same = apply_variant(base, VariantSpec{"none", {}, {}});
+  const Project same = apply_variant(base, VariantSpec{"none", {}, {}, {}});
   for (std::size_t i = 0; i < base.materials.size(); ++i)
     expect_same_material(same.materials[i], base.materials[i]);
   // A material the base does not have cannot be replaced.
   MaterialSpec stray;
   stray.name = "roof";
-  EXPECT_THROW(apply_variant(base, VariantSpec{"stray", {stray}, {}}), std::invalid_argument);
+  EXPECT_THROW(apply_variant(base, VariantSpec{"stray", {stray}, {}, {}}), std::invalid_argument);
 }
 
 TEST(ProjectVariants, OfficeVariantsExample) {

@@ -8,6 +8,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "dayphoton/core/scene_description.h"
@@ -116,11 +118,152 @@ struct MeshSpec {
   SourceLocation location;
 };
 
+// ---- daylight systems (docs/daylight-systems.md) -----------------------------------------
+// Each system is a generator: a few parameters that build_scene_description turns into
+// surfaces in model coordinates. Systems mounted on a window are placed in the window's
+// frame (u along the wall, to the right as seen from outside; v up, measured from the room
+// floor; w along the wall's outward normal, 0 in the wall plane, > 0 outside).
+
+/// Which side of the wall a window-mounted system is on.
+enum class MountSide { Interior, Exterior };
+
+/// Where photons enter for a window-mounted system (docs/daylight-systems.md, "Ports").
+/// Window: the window stays the photon port; exterior parts only shade it (the path from
+/// the port toward the source is tested; light they reflect is not modelled). Enclosure: an
+/// invisible box of `opening` ports encloses the exterior parts and the window, which is
+/// then no longer a port, so light reflected or refracted outside is traced.
+enum class PortMode { Window, Enclosure };
+
+struct WindowMount {
+  std::string window;                  ///< name of the window the system belongs to
+  MountSide side = MountSide::Interior;
+  PortMode port = PortMode::Window;    ///< resolved: interior systems always Window
+};
+
+/// Light shelf: a flat shelf (or a closed slab) along the wall at `height_m` above the floor,
+/// `depth_m` from the wall to its free edge, the free edge raised by `tilt_deg`.
+struct LightShelfSpec {
+  double height_m = 0;
+  double depth_m = 0;
+  double tilt_deg = 0;
+  double thickness_m = 0;     ///< 0: one two-sided polygon; > 0: a closed slab
+  double extension_m = 0;     ///< beyond each window jamb
+  std::string material;       ///< top face (and every face of a thin shelf)
+  std::string underside_material;  ///< slab faces other than the top; empty = material
+};
+
+/// Venetian blinds: horizontal slats of chord `slat_width_m`, `spacing_m` apart, rotated by
+/// `angle_deg` about their long axes, optionally curved (crown) as `facets` flat facets.
+struct BlindsSpec {
+  double slat_width_m = 0;
+  double spacing_m = 0;
+  double angle_deg = 0;       ///< 0 horizontal; > 0 the window-side edge down (see docs)
+  double crown_m = 0;         ///< rise of the slat's middle above its chord
+  int facets = 4;             ///< flat facets across a curved slat (1 if crown_m == 0)
+  std::optional<double> offset_m;  ///< glass to slat axes; default slat_width / 2 + 0.02
+  std::optional<double> bottom_m, top_m;  ///< covered heights; default the window's
+  double extension_m = 0;
+  std::string material;
+};
+
+/// Prismatic panel: horizontal dielectric prisms with isosceles cross-section (apex angle,
+/// base = pitch in the panel plane), stacked over the panel, optionally on a backing plate.
+struct PrismaticPanelSpec {
+  double apex_angle_deg = 90;
+  double pitch_m = 0;
+  bool apex_outward = false;  ///< apexes point outside (true) or into the room
+  double backing_m = 0;       ///< plate thickness behind the prisms; 0 = separate prisms
+  double offset_m = 0.01;     ///< glass to the panel
+  std::optional<double> bottom_m, top_m;
+  std::string material;       ///< a dielectric
+};
+
+/// Lamella panel (Y-glass, seeds/000 section 4.2.1): a dielectric panel cut by thin air
+/// lamellae inclined by `lamella_angle_deg` (inner edge lower), `spacing_m` apart.
+struct LamellaPanelSpec {
+  double thickness_m = 0;
+  double spacing_m = 0;
+  double lamella_angle_deg = 7;
+  double gap_m = 0.0005;      ///< air gap of a lamella
+  double offset_m = 0.01;
+  std::optional<double> bottom_m, top_m;
+  std::string material;       ///< a dielectric
+};
+
+/// Compound parabolic concentrators (seeds/000 section 4.2.2): `count` horizontal 2-D CPC
+/// troughs stacked over the panel, faceted parabolic walls extruded along the window.
+struct CpcSpec {
+  double acceptance_angle_deg = 0;  ///< half angle theta
+  int count = 1;
+  bool dielectric = false;    ///< solid dielectric troughs (sun shading) or mirror walls
+  int facets = 8;             ///< straight facets per parabolic wall
+  double tilt_deg = 0;        ///< troughs' axes raised toward the sky by this angle
+  double offset_m = 0.01;
+  std::optional<double> bottom_m, top_m;
+  std::string material;       ///< wall material (reflective) or the dielectric
+  std::string exit_material;  ///< dielectric: opaque coating of the exit aperture
+};
+
+/// Light pipe (seeds/000 section 4.2.3): a vertical specular tube of `sides` facets from a
+/// room's ceiling up `length_m`, a collector (dome or flat, a photon port) on top and a
+/// diffuser filling the hole it cuts in the ceiling.
+struct LightPipeSpec {
+  std::string room;
+  double x_m = 0, y_m = 0;    ///< axis, model coordinates
+  double diameter_m = 0;      ///< of the circle the tube's polygon is inscribed in
+  double length_m = 0;        ///< ceiling to collector
+  int sides = 16;
+  bool dome = true;           ///< hemispherical collector (else a flat one)
+  int dome_rings = 4;
+  std::string tube_material, diffuser_material, collector_material;
+};
+
+/// Overhang: a horizontal (or tilted) projection above a window.
+struct OverhangSpec {
+  std::optional<double> height_m;  ///< above the floor; default the window head
+  double depth_m = 0;
+  double tilt_deg = 0;
+  double thickness_m = 0;
+  double extension_m = 0;
+  std::string material;
+};
+
+/// Fins: vertical projections beside a window.
+struct FinsSpec {
+  double depth_m = 0;
+  bool left = true, right = true;  ///< as seen from outside
+  double offset_m = 0;        ///< from the jamb, away from the window
+  double extension_m = 0;     ///< above the head and below the sill
+  double angle_deg = 0;       ///< free edges turned toward the window's centre line
+  double thickness_m = 0;
+  std::string material;
+};
+
+using SystemParams = std::variant<LightShelfSpec, BlindsSpec, PrismaticPanelSpec,
+                                  LamellaPanelSpec, CpcSpec, LightPipeSpec, OverhangSpec,
+                                  FinsSpec>;
+
+struct SystemSpec {
+  std::string name;
+  bool enabled = true;        ///< false: the system is absent (e.g. blinds raised)
+  WindowMount mount;          ///< every type but light_pipe
+  SystemParams params;
+  SourceLocation location;
+  /// Where each key was written (for located geometry errors); see location_of().
+  std::vector<std::pair<std::string, SourceLocation>> key_locations;
+
+  /// The `type` value of the project file ("light_shelf", "blinds", ...).
+  const char* type_name() const;
+  /// Location of `key` as written, else of the system.
+  SourceLocation location_of(const std::string& key) const;
+};
+
 struct Geometry {
   std::vector<RoomSpec> rooms;
   std::vector<PolygonSpec> polygons;
   std::vector<BoxSpec> boxes;
   std::vector<MeshSpec> meshes;
+  std::vector<SystemSpec> systems;  ///< daylight systems, in file order
 };
 
 struct GridSpec {
@@ -198,12 +341,16 @@ struct MetricsSettings {
   SourceLocation location;
 };
 
-/// A study variant: the whole project with some materials replaced (alternative glazing,
-/// blinds modelled as a translucent material, ...). Only replaces materials that exist in
-/// Project::materials; apply_variant() builds the variant's Project.
+/// A study variant: the whole project with some materials and/or daylight systems replaced
+/// (alternative glazing, blinds modelled as a translucent material, blinds tilted or
+/// closed, ...). Only replaces materials and systems that exist in the base project;
+/// apply_variant() builds the variant's Project.
 struct VariantSpec {
   std::string name;                    ///< unique, a portable folder name
   std::vector<MaterialSpec> materials; ///< full definitions, each named after a base material
+  /// Full definitions, each named after a base system: the base system's keys with the
+  /// variant's `systems: {name: {key: value}}` overrides applied (docs/project-format.md).
+  std::vector<SystemSpec> systems;
   SourceLocation location;
 };
 
@@ -231,9 +378,10 @@ Project load_project_from_string(const std::string& text, const std::string& pat
 
 /// The project of one variant: `base` with every material of `variant` put in place of the
 /// base material of the same name (same position in `materials`, so material indices do not
-/// change); everything else, `variants` included, is equal to `base`. Throws
-/// std::invalid_argument if the variant names a material `base` does not have (the loader
-/// reports that as an input error, so this only happens with hand-made variants).
+/// change) and every system of `variant` in place of the base system of the same name;
+/// everything else, `variants` included, is equal to `base`. Throws std::invalid_argument
+/// if the variant names a material or system `base` does not have (the loader reports that
+/// as an input error, so this only happens with hand-made variants).
 Project apply_variant(const Project& base, const VariantSpec& variant);
 
 /// True if `name` can be used as a folder name on every common file system: 1 to 64
@@ -242,7 +390,9 @@ Project apply_variant(const Project& base, const VariantSpec& variant);
 bool is_portable_folder_name(const std::string& name);
 
 /// Generate the scene: rooms with their windows cut out (windows become glazing ports),
-/// polygons, boxes, OBJ meshes, sensor grids and point files, all rotated by the site's
+/// polygons, boxes, OBJ meshes, daylight systems (docs/daylight-systems.md; systems may cut
+/// the ceiling, add `opening` port enclosures and then make their window an ordinary
+/// surface), sensor grids and point files, all rotated by the site's
 /// rotation_to_true_north_deg about +Z. Validates the geometry (non-planar polygons,
 /// windows outside their wall or overlapping, unknown materials, degenerate faces, NaN/Inf)
 /// and throws InputError with located messages.
