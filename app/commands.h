@@ -76,4 +76,34 @@ struct AnnualOptions {
 };
 int run_annual(const AnnualOptions& options, std::ostream& out);
 
+struct ReportOptions {
+  std::string results_dir;   ///< output folder of `dayphoton run` (summary.json)
+  std::string output_path;   ///< empty: <results_dir>/report.html
+  bool no_images = false;    ///< only report.html (no grid EXR/PNG, no sky fisheyes)
+  std::string sky_hour = "6/21/12.5";  ///< M/D/H of sky_hour.exr
+  bool quiet = false;
+};
+int run_report(const ReportOptions& options, std::ostream& out);
+
+struct RenderOptions {
+  std::string project_path;
+  std::string view;            ///< "x,y,z" camera position (m)
+  std::string direction;       ///< "dx,dy,dz" view direction
+  std::string up = "0,0,1";    ///< "ux,uy,uz" up vector
+  double fov_deg = 60;         ///< horizontal field of view (perspective) or image circle (fisheye)
+  bool fisheye = false;
+  int width = 512, height = 384;
+  std::string sky = "overcast";  ///< overcast | uniform | cie:N | hour:M/D/H
+  double sun_altitude_deg = 45, sun_azimuth_deg = 180;  ///< for cie:N with a sun
+  double horizontal_illuminance_lux = 10000;            ///< for overcast, uniform, cie:N
+  int samples_per_pixel = 4;
+  int direct_samples = 16;
+  long long photons_per_bin = 0;  ///< 0: the project's photons_per_bin
+  int bandwidth = 200;
+  std::string output_path;     ///< .exr; the tone-mapped PNG is written beside it (.png)
+  int threads = 0;
+  bool quiet = false;
+};
+int run_render(const RenderOptions& options, std::ostream& out);
+
 }  // namespace dayphoton::app

@@ -82,6 +82,52 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 1.0));
   annual_cmd->add_flag("-q,--quiet", annual.quiet, "Print errors only");
 
+
+  ReportOptions report;
+  auto* report_cmd = cli.add_subcommand(
+      "report", "Write report.html and the result images of a finished run from its output folder");
+  report_cmd->add_option("results", report.results_dir, "Output folder of `dayphoton run` (with summary.json)")
+      ->required();
+  report_cmd->add_option("-o,--output", report.output_path, "Report file (default: RESULTS/report.html)");
+  report_cmd->add_flag("--no-images", report.no_images, "Only the report: no grid EXR/PNG files, no sky images");
+  report_cmd->add_option("--sky-hour", report.sky_hour,
+                         "M/D/H of the one-hour sky image, H in local standard time (default 6/21/12.5)");
+  report_cmd->add_flag("-q,--quiet", report.quiet, "Print errors only");
+
+  RenderOptions render;
+  auto* render_cmd = cli.add_subcommand(
+      "render", "Render a view of the model lit by a sky from photon maps (EXR radiance + tone-mapped PNG)");
+  render_cmd->add_option("project", render.project_path, "Project file (YAML)")->required();
+  render_cmd->add_option("--view", render.view, "Camera position x,y,z (m)")->required();
+  render_cmd->add_option("--direction", render.direction, "View direction dx,dy,dz")->required();
+  render_cmd->add_option("--up", render.up, "Up vector (default 0,0,1)");
+  render_cmd->add_option("--fov", render.fov_deg, "Horizontal field of view (deg), or the fisheye's image circle")
+      ->check(CLI::Range(1.0, 360.0));
+  render_cmd->add_flag("--fisheye", render.fisheye, "Angular (equidistant) fisheye instead of a perspective view");
+  render_cmd->add_option("--width", render.width, "Image width (pixels, default 512)")->check(CLI::Range(1, 16384));
+  render_cmd->add_option("--height", render.height, "Image height (pixels, default 384)")->check(CLI::Range(1, 16384));
+  render_cmd->add_option("--sky", render.sky,
+                         "overcast (default), uniform, cie:N (ISO 15469 type 1..15) or hour:M/D/H of the weather file");
+  render_cmd->add_option("--illuminance", render.horizontal_illuminance_lux,
+                         "overcast, uniform, cie:N: diffuse horizontal illuminance (lux, default 10000)")
+      ->check(CLI::PositiveNumber);
+  render_cmd->add_option("--sun-altitude", render.sun_altitude_deg, "cie:N: sun altitude (deg, default 45)");
+  render_cmd->add_option("--sun-azimuth", render.sun_azimuth_deg,
+                         "cie:N: sun azimuth (deg clockwise from north, default 180)");
+  render_cmd->add_option("--samples", render.samples_per_pixel, "Samples per pixel (default 4)")
+      ->check(CLI::Range(1, 4096));
+  render_cmd->add_option("--direct-samples", render.direct_samples,
+                         "Shadow rays toward the windows per surface point (default 16)")
+      ->check(CLI::Range(1, 4096));
+  render_cmd->add_option("--photons", render.photons_per_bin, "Stored photons per sky bin (default: the project's)")
+      ->check(CLI::NonNegativeNumber);
+  render_cmd->add_option("--bandwidth", render.bandwidth, "Photons per density estimate (default 200)")
+      ->check(CLI::Range(1, 100000));
+  render_cmd->add_option("-o,--output", render.output_path, "Output EXR (the PNG is written beside it)")->required();
+  render_cmd->add_option("-j,--threads", render.threads, "Worker threads (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  render_cmd->add_flag("-q,--quiet", render.quiet, "Print errors only");
+
   try {
     cli.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -110,6 +156,8 @@ int main(int argc, char** argv) {
       annual.ground_reflectance_given = annual_cmd->count("--ground-reflectance") > 0;
       return run_annual(annual, std::cout);
     }
+    if (report_cmd->parsed()) return run_report(report, std::cout);
+    if (render_cmd->parsed()) return run_render(render, std::cout);
   } catch (const dayphoton::InputError& e) {
     std::cerr << e.what();
     return ExitInputError;

@@ -1,0 +1,1111 @@
+// report.html from a results folder; see report_html.h for the sections and docs/report.md for
+// what each plot shows. Everything is drawn here as inline SVG (plots, legends, axes) or as a
+// PNG data: URI inside an SVG (the temporal map and the sky, one pixel per value).
+#include "dayphoton/study/report_html.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include <OpenEXRConfig.h>
+#include <nlohmann/json.hpp>
+#include <png.h>
+
+#include "dayphoton/core/atomic_file.h"
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/units.h"
+#include "dayphoton/project/project.h"
+#include "dayphoton/study/annual_illuminance.h"
+#include "dayphoton/study/colour_scale.h"
+#include "dayphoton/study/image_files.h"
+#include "dayphoton/study/result_files.h"
+#include "dayphoton/study/result_tables.h"
+
+#ifndef DAYPHOTON_VERSION
+#define DAYPHOTON_VERSION "unknown"
+#endif
+
+namespace dayphoton::study {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+std::string join(const std::string& dir, const std::string& name) { return (fs::path(dir) / name).string(); }
+
+std::string esc(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string num(double v, int decimals) {
+  if (!std::isfinite(v)) return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, v);
+  std::string s = buffer;
+  if (s.find_first_not_of("-0.") == std::string::npos && s[0] == '-') s.erase(0, 1);  // no "-0.0"
+  return s;
+}
+
+/// A tick label: integers plainly, otherwise up to 2 decimals without trailing zeros.
+std::string tick(double v) {
+  if (std::abs(v - std::round(v)) < 1e-9 * std::max(1.0, std::abs(v))) {
+    if (std::abs(v) >= 1000) {
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.0f", v);
+      std::string s = buffer, out;
+      const int n = static_cast<int>(s.size());
+      for (int i = 0; i < n; ++i) {
+        out += s[static_cast<std::size_t>(i)];
+        if ((n - 1 - i) % 3 == 0 && i != n - 1 && s[static_cast<std::size_t>(i)] != '-') out += "&#8201;";
+      }
+      return out;
+    }
+    return num(v, 0);
+  }
+  std::string s = num(v, 2);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+/// A threshold as it appears in metric names (metrics.csv columns): shortest form, "2000", "250.5".
+std::string key_number(double v) {
+  std::string s = num(v, 6);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+/// "100_2000" (a range in a column name) as "100&#8211;2000".
+std::string range_text(std::string s) {
+  for (std::size_t i = s.find('_'); i != std::string::npos; i = s.find('_')) s.replace(i, 1, "&#8211;");
+  return s;
+}
+
+/// Element ids: letters, digits, '-' and '_' only.
+std::string id_part(const std::string& s) {
+  std::string out;
+  for (char c : s) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
+  return out;
+}
+
+// ---- inputs -----------------------------------------------------------------------------
+
+/// Plan geometry of one grid in world coordinates: outline and window polygons.
+struct PlanGeometry {
+  std::vector<Vec3> outline;
+  std::vector<std::vector<Vec3>> windows;
+  std::string note;  ///< why something is missing
+};
+
+struct GridData {
+  std::string case_name;  ///< "" for the base case, else the variant
+  std::string name;
+  std::string folder;
+  std::string id;
+  json summary;  ///< the grid's object in summary.json
+  std::vector<SensorPoint> sensors;
+  std::optional<SensorTable> df, metrics;
+  std::optional<metrics::IlluminanceTable> illuminance;
+  std::vector<std::string> problems;
+  PlanGeometry plan;
+
+  std::string title() const { return case_name.empty() ? name : case_name + " / " + name; }
+  const json* annual() const {
+    auto it = summary.find("annual");
+    return it != summary.end() && it->is_object() ? &*it : nullptr;
+  }
+};
+
+/// The EPW LOCATION line as label/value pairs; empty if unreadable.
+std::vector<std::pair<std::string, std::string>> weather_station(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  if (!in || !std::getline(in, line)) return {};
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  std::vector<std::string> f;
+  std::stringstream ss(line);
+  for (std::string s; std::getline(ss, s, ',');) f.push_back(s);
+  if (f.size() < 10 || f[0] != "LOCATION") return {};
+  return {{"station", f[1] + (f[2].empty() || f[2] == "-" ? "" : ", " + f[2]) + ", " + f[3]},
+          {"data source", f[4]},
+          {"WMO station number", f[5]},
+          {"station latitude (deg, north +)", f[6]},
+          {"station longitude (deg, east +)", f[7]},
+          {"time zone (h from UTC)", f[8]},
+          {"elevation (m)", f[9]}};
+}
+
+/// Geometry of every grid of the project named in summary.json (by grid name), if it loads.
+std::map<std::string, PlanGeometry> project_geometry(const std::string& project_path, std::string& note) {
+  std::map<std::string, PlanGeometry> out;
+  if (project_path.empty() || !fs::exists(project_path)) {
+    note = "the project file " + (project_path.empty() ? std::string("(not named)") : project_path) +
+           " is not available: plans show the sensors' extent, without windows";
+    return out;
+  }
+  try {
+    const project::Project project = project::load_project(project_path);
+    const SceneDescription scene = project::build_scene_description(project);
+    std::vector<std::vector<Vec3>> windows;
+    for (const Surface& s : scene.surfaces)
+      if (s.port) windows.push_back(s.vertices);
+    for (const SensorGrid& g : scene.grids) out[g.name] = PlanGeometry{g.outline, windows, {}};
+    note = "room outline and windows from " + project_path + " as it is now";
+  } catch (const std::exception&) {
+    note = "the project file " + project_path +
+           " no longer loads: plans show the sensors' extent, without windows";
+    out.clear();
+  }
+  return out;
+}
+
+GridData load_grid(const std::string& case_name, const json& grid_json, const std::string& folder) {
+  GridData g;
+  g.case_name = case_name;
+  g.summary = grid_json;
+  g.name = grid_json.value("name", std::string("grid"));
+  g.folder = folder;
+  g.id = "grid-" + id_part(case_name.empty() ? g.name : case_name + "--" + g.name);
+  try {
+    g.sensors = read_sensors_csv(join(folder, "sensors.csv"));
+  } catch (const std::exception& e) {
+    g.problems.push_back(e.what());
+  }
+  auto table = [&](const std::string& file, std::optional<SensorTable>& out) {
+    const std::string path = join(folder, file);
+    if (!fs::exists(path)) return;
+    try {
+      out = read_sensor_table(path);
+      if (out->rows.size() != g.sensors.size()) {
+        g.problems.push_back(path + ": " + std::to_string(out->rows.size()) + " rows for " +
+                             std::to_string(g.sensors.size()) + " sensors");
+        out.reset();
+      }
+    } catch (const std::exception& e) {
+      g.problems.push_back(e.what());
+    }
+  };
+  table("daylight_factor.csv", g.df);
+  table("metrics.csv", g.metrics);
+  const std::string bin = join(folder, "illuminance.bin");
+  if (fs::exists(bin)) {
+    try {
+      g.illuminance = read_illuminance_binary(bin);
+    } catch (const std::exception& e) {
+      g.problems.push_back(e.what());
+    }
+  }
+  return g;
+}
+
+// ---- SVG pieces -------------------------------------------------------------------------
+
+/// Per-report state: the counter that keeps gradient ids unique within one page.
+struct PageIds {
+  int gradients = 0;
+};
+
+/// A vertical legend: gradient bar with ticks, the quantity and unit on top.
+std::string legend_svg(const ColourScale& scale, PageIds& page) {
+  const int id = ++page.gradients;
+  const double top = 28, height = 220, left = 8, bar = 18;
+  std::ostringstream s;
+  s << "<svg class=\"plot legend\" width=\"110\" height=\"" << (top + height + 20) << "\" role=\"img\" aria-label=\""
+    << esc(scale.quantity) << " legend\">";
+  s << "<defs><linearGradient id=\"lg" << id << "\" x1=\"0\" y1=\"1\" x2=\"0\" y2=\"0\">";
+  for (int i = 0; i <= 8; ++i)
+    s << "<stop offset=\"" << num(i / 8.0, 3) << "\" stop-color=\"" << hex_colour(viridis(i / 8.0)) << "\"/>";
+  s << "</linearGradient></defs>";
+  s << "<text x=\"" << left << "\" y=\"12\" class=\"lt\">" << esc(scale.unit) << "</text>";
+  s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << bar << "\" height=\"" << height
+    << "\" fill=\"url(#lg" << id << ")\" stroke=\"#444\" stroke-width=\"0.5\"/>";
+  const std::vector<double> ticks = scale.ticks();
+  for (std::size_t i = 0; i < ticks.size(); ++i) {
+    const double y = top + height * (1 - scale.position(ticks[i]));
+    std::string label = tick(ticks[i]);
+    if (i == 0 && scale.min > 0 && !scale.logarithmic) label = "&#8804;" + label;
+    if (i + 1 == ticks.size()) label = "&#8805;" + label;
+    if (i == 0 && scale.logarithmic) label = "&#8804;" + label;
+    s << "<line x1=\"" << left + bar << "\" x2=\"" << left + bar + 5 << "\" y1=\"" << num(y, 1) << "\" y2=\""
+      << num(y, 1) << "\" stroke=\"#444\"/>";
+    s << "<text x=\"" << left + bar + 8 << "\" y=\"" << num(y + 4, 1) << "\" class=\"lt\">" << label << "</text>";
+  }
+  s << "</svg>";
+  return s.str();
+}
+
+/// Plan frame: image axes of the lattice (columns along the axis closest to east, rows toward
+/// the south), or world x / -y for sensors not on a lattice.
+struct Frame {
+  Vec3 origin, u{1, 0, 0}, v{0, -1, 0};
+  double px_per_m = 40, margin = 34, min_u = 0, min_v = 0;
+  double x(const Vec3& p) const { return margin + (dot(p - origin, u) - min_u) * px_per_m; }
+  double y(const Vec3& p) const { return margin + (dot(p - origin, v) - min_v) * px_per_m; }
+};
+
+std::string polygon_points(const Frame& f, const std::vector<Vec3>& poly) {
+  std::ostringstream s;
+  for (const Vec3& p : poly) s << num(f.x(p), 1) << ',' << num(f.y(p), 1) << ' ';
+  return s.str();
+}
+
+/// A false-colour plan of per-sensor values with the room outline, windows, north arrow and a
+/// 1 m scale bar; value labels in the cells when they are large enough.
+std::string plan_svg(const GridData& g, const SensorLattice& lattice, const std::vector<double>& values,
+                     const ColourScale& scale, int decimals, const std::string& what) {
+  Frame f;
+  if (lattice.regular) {
+    f.origin = lattice.origin_m;
+    f.u = lattice.column_step_m / lattice.spacing_m;
+    f.v = lattice.row_step_m / lattice.spacing_m;
+  } else if (!g.sensors.empty()) {
+    f.origin = g.sensors[0].position;
+  }
+  // Extent over cells, outline and windows.
+  const double half = lattice.regular ? 0.5 * lattice.spacing_m : 0.1;
+  double lo_u = std::numeric_limits<double>::infinity(), hi_u = -lo_u, lo_v = lo_u, hi_v = -lo_u;
+  auto extend = [&](const Vec3& p, double pad) {
+    const double a = dot(p - f.origin, f.u), b = dot(p - f.origin, f.v);
+    lo_u = std::min(lo_u, a - pad);
+    hi_u = std::max(hi_u, a + pad);
+    lo_v = std::min(lo_v, b - pad);
+    hi_v = std::max(hi_v, b + pad);
+  };
+  for (const SensorPoint& s : g.sensors) extend(s.position, half);
+  for (const Vec3& p : g.plan.outline) extend(p, 0);
+  for (const auto& w : g.plan.windows)
+    for (const Vec3& p : w) extend(p, 0);
+  if (!std::isfinite(lo_u)) lo_u = hi_u = lo_v = hi_v = 0;
+  const double span_u = std::max(hi_u - lo_u, 0.5), span_v = std::max(hi_v - lo_v, 0.5);
+  f.px_per_m = std::min({460.0 / span_u, 460.0 / span_v, 90.0});
+  f.min_u = lo_u;
+  f.min_v = lo_v;
+  const double width = 2 * f.margin + span_u * f.px_per_m, height = 2 * f.margin + span_v * f.px_per_m + 10;
+
+  std::ostringstream s;
+  s << "<svg class=\"plot plan\" width=\"" << num(width, 0) << "\" height=\"" << num(height, 0) << "\" viewBox=\"0 0 "
+    << num(width, 0) << ' ' << num(height, 0) << "\" role=\"img\" aria-label=\"" << esc(what) << " plan of "
+    << esc(g.title()) << "\">";
+  if (g.plan.outline.size() >= 3)
+    s << "<polygon points=\"" << polygon_points(f, g.plan.outline)
+      << "\" fill=\"#f2f2f2\" stroke=\"#222\" stroke-width=\"2\"/>";
+  const double cell = lattice.regular ? lattice.spacing_m * f.px_per_m : 0;
+  const bool labels = lattice.regular && cell >= 26 && values.size() <= 800;
+  for (std::size_t i = 0; i < values.size() && i < g.sensors.size(); ++i) {
+    const auto c = scale.colour(values[i]);
+    const double cx = f.x(g.sensors[i].position), cy = f.y(g.sensors[i].position);
+    if (lattice.regular) {
+      s << "<rect x=\"" << num(cx - cell / 2, 1) << "\" y=\"" << num(cy - cell / 2, 1) << "\" width=\"" << num(cell, 1)
+        << "\" height=\"" << num(cell, 1) << "\" fill=\"" << hex_colour(c) << "\"><title>sensor " << i << ": "
+        << num(values[i], decimals) << ' ' << esc(scale.unit) << "</title></rect>";
+      if (labels)
+        s << "<text x=\"" << num(cx, 1) << "\" y=\"" << num(cy + 3.5, 1) << "\" class=\"cv\" fill=\""
+          << (scale.position(values[i]) > 0.62 ? "#000" : "#fff") << "\">" << num(values[i], decimals)
+          << "</text>";
+    } else {
+      s << "<circle cx=\"" << num(cx, 1) << "\" cy=\"" << num(cy, 1) << "\" r=\"5\" fill=\"" << hex_colour(c)
+        << "\" stroke=\"#333\" stroke-width=\"0.5\"><title>sensor " << i << ": " << num(values[i], decimals) << ' '
+        << esc(scale.unit) << "</title></circle>";
+    }
+  }
+  if (g.plan.outline.size() >= 3)
+    s << "<polygon points=\"" << polygon_points(f, g.plan.outline) << "\" fill=\"none\" stroke=\"#222\" stroke-width=\"2\"/>";
+  for (const auto& w : g.plan.windows)
+    s << "<polygon class=\"window\" points=\"" << polygon_points(f, w)
+      << "\" fill=\"#7fc8ff\" stroke=\"#1565c0\" stroke-width=\"5\" stroke-linejoin=\"round\"><title>window</title></polygon>";
+  // North arrow (the world +Y direction in the plan frame), if north lies in the plane.
+  const double nu = f.u.y, nv = f.v.y, nl = std::sqrt(nu * nu + nv * nv);
+  if (nl > 0.3) {
+    const double ax = width - 20, ay = 34, dx = nu / nl * 12, dy = nv / nl * 12;
+    s << "<line x1=\"" << num(ax - dx, 1) << "\" y1=\"" << num(ay - dy, 1) << "\" x2=\"" << num(ax + dx, 1)
+      << "\" y2=\"" << num(ay + dy, 1) << "\" stroke=\"#000\" stroke-width=\"2\" marker-end=\"url(#arrowhead)\"/>";
+    s << "<text x=\"" << num(ax + dx * 2.1, 1) << "\" y=\"" << num(ay + dy * 2.1 + 4, 1)
+      << "\" class=\"lt\" text-anchor=\"middle\">N</text>";
+  }
+  // 1 m scale bar.
+  const double sy = height - 12;
+  s << "<line x1=\"" << f.margin << "\" y1=\"" << num(sy, 1) << "\" x2=\"" << num(f.margin + f.px_per_m, 1) << "\" y2=\""
+    << num(sy, 1) << "\" stroke=\"#000\" stroke-width=\"2\"/><text x=\"" << num(f.margin + f.px_per_m + 6, 1)
+    << "\" y=\"" << num(sy + 4, 1) << "\" class=\"lt\">1 m</text>";
+  s << "</svg>";
+  return s.str();
+}
+
+/// A histogram of `values` over `edges` (the last bin open above), bars coloured by the scale.
+std::string histogram_svg(const std::vector<double>& values, const std::vector<double>& edges,
+                          const ColourScale& scale, const std::string& x_label, const std::string& what) {
+  const std::size_t bins = edges.size();  // bin i = [edges[i], edges[i+1]); last = [edges.back(), inf)
+  std::vector<double> counts(bins, 0);
+  for (double v : values) {
+    std::size_t b = 0;
+    while (b + 1 < bins && v >= edges[b + 1]) ++b;
+    counts[b] += 1;
+  }
+  const double n = std::max<double>(1, static_cast<double>(values.size()));
+  double peak = 0;
+  for (double& c : counts) {
+    c = 100 * c / n;
+    peak = std::max(peak, c);
+  }
+  const double ymax = std::max(10.0, std::ceil(peak / 10) * 10);
+  const double left = 46, top = 14, w = 380, h = 170, bw = w / static_cast<double>(bins);
+  std::ostringstream s;
+  s << "<svg class=\"plot histogram\" width=\"" << left + w + 16 << "\" height=\"" << top + h + 46
+    << "\" role=\"img\" aria-label=\"" << esc(what) << "\">";
+  for (int k = 0; k <= 5; ++k) {
+    const double v = ymax * k / 5, y = top + h - h * v / ymax;
+    s << "<line x1=\"" << left << "\" x2=\"" << left + w << "\" y1=\"" << num(y, 1) << "\" y2=\"" << num(y, 1)
+      << "\" stroke=\"#ddd\"/><text x=\"" << left - 5 << "\" y=\"" << num(y + 4, 1)
+      << "\" class=\"lt\" text-anchor=\"end\">" << tick(v) << "</text>";
+  }
+  for (std::size_t b = 0; b < bins; ++b) {
+    const double centre = b + 1 < bins ? 0.5 * (edges[b] + edges[b + 1]) : edges[b];
+    const double bh = h * counts[b] / ymax;
+    s << "<rect x=\"" << num(left + b * bw + 1, 1) << "\" y=\"" << num(top + h - bh, 1) << "\" width=\""
+      << num(bw - 2, 1) << "\" height=\"" << num(std::max(bh, 0.0), 1) << "\" fill=\""
+      << hex_colour(scale.colour(centre)) << "\"><title>" << tick(edges[b])
+      << (b + 1 < bins ? "&#8211;" + tick(edges[b + 1]) : std::string(" and above")) << ' ' << esc(scale.unit) << ": "
+      << num(counts[b], 1) << " % of sensors</title></rect>";
+  }
+  const std::size_t label_every = bins > 12 ? 2 : 1;
+  for (std::size_t b = 0; b < bins; b += label_every)
+    s << "<text x=\"" << num(left + b * bw, 1) << "\" y=\"" << top + h + 14 << "\" class=\"lt\" text-anchor=\"middle\">"
+      << tick(edges[b]) << "</text>";
+  s << "<line x1=\"" << left << "\" x2=\"" << left + w << "\" y1=\"" << top + h << "\" y2=\"" << top + h
+    << "\" stroke=\"#000\"/>";
+  s << "<text x=\"" << left + w / 2 << "\" y=\"" << top + h + 34 << "\" class=\"lt\" text-anchor=\"middle\">"
+    << esc(x_label) << "</text>";
+  s << "<text x=\"12\" y=\"" << top + h / 2 << "\" class=\"lt\" text-anchor=\"middle\" transform=\"rotate(-90 12 "
+    << top + h / 2 << ")\">sensors (%)</text>";
+  s << "</svg>";
+  return s.str();
+}
+
+/// Stacked bars of the grid's mean time shares in both UDI conventions.
+std::string udi_bars_svg(const json& mean, const json& thresholds) {
+  const double lo = thresholds.value("udi_lower_lux", 100.0), up1 = thresholds.value("udi_upper_original_lux", 2000.0),
+               x = thresholds.value("da_lux", 300.0), up2 = thresholds.value("udi_upper_revised_lux", 3000.0);
+  auto value = [&](const std::string& prefix) {
+    for (auto it = mean.begin(); it != mean.end(); ++it)
+      if (it.key().rfind(prefix, 0) == 0 && it->is_number()) return it->get<double>();
+    return 0.0;
+  };
+  auto starts_digit_after = [&](const std::string& prefix) {
+    for (auto it = mean.begin(); it != mean.end(); ++it)
+      if (it.key().rfind(prefix, 0) == 0 && it.key().size() > prefix.size() &&
+          std::isdigit(static_cast<unsigned char>(it.key()[prefix.size()])) && it->is_number())
+        return it->get<double>();
+    return 0.0;
+  };
+  struct Part {
+    std::string label;
+    double share;
+    const char* colour;
+  };
+  const std::vector<Part> original{{"fell short (&lt; " + tick(lo) + " lx)", value("udi_below"), "#9e9ac8"},
+                                   {"achieved (" + tick(lo) + "&#8211;" + tick(up1) + " lx)", starts_digit_after("udi"), "#41ab5d"},
+                                   {"exceeded (&gt; " + tick(up1) + " lx)", value("udi_above" + key_number(up1)), "#fd8d3c"}};
+  const std::vector<Part> revised{{"fell short (&lt; " + tick(lo) + " lx)", value("udi_below"), "#9e9ac8"},
+                                  {"supplementary (" + tick(lo) + "&#8211;" + tick(x) + " lx)", value("udi_supplementary"), "#c7e9c0"},
+                                  {"autonomous (" + tick(x) + "&#8211;" + tick(up2) + " lx)", value("udi_autonomous"), "#41ab5d"},
+                                  {"exceeded (&gt; " + tick(up2) + " lx)", value("udi_above" + key_number(up2)), "#fd8d3c"}};
+  const double left = 215, w = 420, bar = 26;
+  std::ostringstream s;
+  s << "<svg class=\"plot udi\" width=\"" << left + w + 20 << "\" height=\"250\" role=\"img\" "
+       "aria-label=\"UDI time shares, both conventions\">";
+  auto draw = [&](const std::vector<Part>& parts, double y, const std::string& title) {
+    s << "<text x=\"0\" y=\"" << y + 17 << "\" class=\"lt\">" << title << "</text>";
+    double at = left;
+    for (const Part& p : parts) {
+      const double pw = w * std::clamp(p.share, 0.0, 100.0) / 100;
+      s << "<rect x=\"" << num(at, 1) << "\" y=\"" << y << "\" width=\"" << num(pw, 1) << "\" height=\"" << bar
+        << "\" fill=\"" << p.colour << "\"><title>" << p.label << ": " << num(p.share, 1) << " %</title></rect>";
+      if (pw > 34)
+        s << "<text x=\"" << num(at + pw / 2, 1) << "\" y=\"" << y + 17 << "\" class=\"cv\" fill=\"#000\">"
+          << num(p.share, 1) << "</text>";
+      at += pw;
+    }
+  };
+  draw(original, 10, "original (Nabil &amp; Mardaljevic)");
+  draw(revised, 50, "revised (Mardaljevic)");
+  for (int k = 0; k <= 4; ++k)
+    s << "<text x=\"" << left + w * k / 4 << "\" y=\"96\" class=\"lt\" text-anchor=\"middle\">" << k * 25
+      << "</text>";
+  s << "<text x=\"" << left + w / 2 << "\" y=\"112\" class=\"lt\" text-anchor=\"middle\">share of occupied hours, grid mean (%)</text>";
+  // Key: one colour per kind of bin.
+  const std::vector<Part> key{{"fell short", 0, "#9e9ac8"},
+                              {"supplementary (revised)", 0, "#c7e9c0"},
+                              {"achieved (original) / autonomous (revised)", 0, "#41ab5d"},
+                              {"exceeded", 0, "#fd8d3c"}};
+  double ky = 130;
+  for (const Part& p : key) {
+    s << "<rect x=\"" << left << "\" y=\"" << ky << "\" width=\"14\" height=\"14\" fill=\"" << p.colour
+      << "\"/><text x=\"" << left + 20 << "\" y=\"" << ky + 11 << "\" class=\"lt\">" << p.label << "</text>";
+    ky += 22;
+  }
+  s << "</svg>";
+  return s.str();
+}
+
+/// Day of year x hour map of the grid's mean illuminance; occupancy window dashed.
+std::string temporal_svg(const metrics::IlluminanceTable& table, double occupancy_start_h, double occupancy_end_h,
+                         const ColourScale& scale) {
+  // Days in file order; one slot per clock hour (sub-hourly records are averaged).
+  std::vector<std::pair<int, int>> days;
+  std::vector<int> day_of_step(table.step_count());
+  for (std::size_t t = 0; t < table.step_count(); ++t) {
+    const auto& st = table.steps()[t];
+    if (days.empty() || days.back() != std::make_pair(st.month, st.day)) days.emplace_back(st.month, st.day);
+    day_of_step[t] = static_cast<int>(days.size()) - 1;
+  }
+  const int nd = std::max<int>(1, static_cast<int>(days.size()));
+  std::vector<double> sum(static_cast<std::size_t>(nd) * 24, 0.0), count(sum.size(), 0.0);
+  const std::size_t sensors = std::max<std::size_t>(1, table.sensor_count());
+  for (std::size_t t = 0; t < table.step_count(); ++t) {
+    double m = 0;
+    for (std::size_t s = 0; s < table.sensor_count(); ++s) m += table.lux(t, s);
+    m /= static_cast<double>(sensors);
+    const int slot = std::clamp(static_cast<int>(std::floor(table.steps()[t].hour)), 0, 23);
+    const std::size_t i = static_cast<std::size_t>(day_of_step[t]) * 24 + static_cast<std::size_t>(slot);
+    sum[i] += m;
+    count[i] += 1;
+  }
+  // Pixel (day, hour) with hour 0 at the bottom; below 1 lx (night) grey.
+  RgbaImage image(nd, 24, {255, 255, 255, 0});
+  for (int d = 0; d < nd; ++d)
+    for (int h = 0; h < 24; ++h) {
+      const std::size_t i = static_cast<std::size_t>(d) * 24 + static_cast<std::size_t>(h);
+      if (count[i] == 0) continue;
+      const double v = sum[i] / count[i];
+      const auto c = v < 1 ? std::array<std::uint8_t, 3>{60, 60, 60} : scale.colour(v);
+      image.at(d, 23 - h) = {c[0], c[1], c[2], 255};
+    }
+  const double left = 44, top = 10, w = 2 * nd, h = 24 * 9;
+  std::ostringstream s;
+  s << "<svg class=\"plot temporal\" width=\"" << left + w + 12 << "\" height=\"" << top + h + 40 << "\" viewBox=\"0 0 "
+    << left + w + 12 << ' ' << top + h + 40 << "\" role=\"img\" aria-label=\"temporal map of the mean illuminance\">";
+  s << "<image x=\"" << left << "\" y=\"" << top << "\" width=\"" << w << "\" height=\"" << h
+    << "\" preserveAspectRatio=\"none\" style=\"image-rendering:pixelated\" href=\"data:image/png;base64,"
+    << base64(encode_png(image)) << "\"/>";
+  s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << w << "\" height=\"" << h
+    << "\" fill=\"none\" stroke=\"#000\"/>";
+  for (double oh : {occupancy_start_h, occupancy_end_h}) {
+    const double y = top + h - h * oh / 24;
+    s << "<line x1=\"" << left << "\" x2=\"" << left + w << "\" y1=\"" << num(y, 1) << "\" y2=\"" << num(y, 1)
+      << "\" stroke=\"#fff\" stroke-dasharray=\"4 3\" stroke-width=\"1\"/>";
+  }
+  for (int hh = 0; hh <= 24; hh += 6) {
+    const double y = top + h - h * hh / 24.0;
+    s << "<text x=\"" << left - 6 << "\" y=\"" << num(y + 4, 1) << "\" class=\"lt\" text-anchor=\"end\">"
+      << (hh < 10 ? "0" : "") << hh << ":00</text>";
+  }
+  static const char* const months[] = {"Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec"};
+  for (int d = 0; d < static_cast<int>(days.size()); ++d)
+    if (days[static_cast<std::size_t>(d)].second == 1) {
+      const double x = left + 2 * d;
+      s << "<line x1=\"" << x << "\" x2=\"" << x << "\" y1=\"" << top + h << "\" y2=\"" << top + h + 5
+        << "\" stroke=\"#000\"/><text x=\"" << x + 3 << "\" y=\"" << top + h + 17 << "\" class=\"lt\">"
+        << months[(days[static_cast<std::size_t>(d)].first - 1) % 12] << "</text>";
+    }
+  s << "<text x=\"" << left + w / 2 << "\" y=\"" << top + h + 34 << "\" class=\"lt\" text-anchor=\"middle\">day of year; "
+       "hour of local standard time on the left; dashed: occupied hours</text>";
+  s << "</svg>";
+  return s.str();
+}
+
+/// The sky fisheye (sky_mean.exr or sky_hour.exr) as a false-colour luminance picture with the
+/// compass points (east left: the sky seen from below).
+std::string sky_svg(const FloatImage& sky, const ColourScale& scale, const std::string& what) {
+  const double size = 260, pad = 22;
+  std::ostringstream s;
+  s << "<svg class=\"plot sky\" width=\"" << size + 2 * pad << "\" height=\"" << size + 2 * pad
+    << "\" role=\"img\" aria-label=\"" << esc(what) << "\">";
+  s << "<image x=\"" << pad << "\" y=\"" << pad << "\" width=\"" << size << "\" height=\"" << size
+    << "\" href=\"data:image/png;base64," << base64(encode_png(luminance_false_colour(sky, scale))) << "\"/>";
+  s << "<circle cx=\"" << pad + size / 2 << "\" cy=\"" << pad + size / 2 << "\" r=\"" << size / 2
+    << "\" fill=\"none\" stroke=\"#000\"/>";
+  s << "<text x=\"" << pad + size / 2 << "\" y=\"15\" class=\"lt\" text-anchor=\"middle\">N</text>";
+  s << "<text x=\"" << pad + size / 2 << "\" y=\"" << size + 2 * pad - 5 << "\" class=\"lt\" text-anchor=\"middle\">S</text>";
+  s << "<text x=\"6\" y=\"" << pad + size / 2 + 4 << "\" class=\"lt\">E</text>";
+  s << "<text x=\"" << size + 2 * pad - 14 << "\" y=\"" << pad + size / 2 + 4 << "\" class=\"lt\">W</text>";
+  s << "</svg>";
+  return s.str();
+}
+
+// ---- sections ---------------------------------------------------------------------------
+
+/// Rows of (label, value), both already HTML (escape data with esc() before).
+std::string key_value_table(const std::vector<std::pair<std::string, std::string>>& rows) {
+  std::ostringstream s;
+  s << "<table class=\"kv\">";
+  for (const auto& [k, v] : rows) s << "<tr><th>" << k << "</th><td>" << v << "</td></tr>";
+  s << "</table>";
+  return s.str();
+}
+
+std::string json_scalar(const json& v) {
+  if (v.is_string()) return esc(v.get<std::string>());
+  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
+  if (v.is_number_integer() || v.is_number_unsigned()) return v.dump();
+  if (v.is_number()) {
+    std::string t = num(v.get<double>(), 4);
+    t.erase(t.find_last_not_of('0') + 1);
+    if (t.back() == '.') t.pop_back();
+    return t;
+  }
+  if (v.is_null()) return "-";
+  return esc(v.dump());
+}
+
+std::string badge(bool pass, const std::string& text) {
+  return std::string("<span class=\"badge ") + (pass ? "pass" : "fail") + "\">" + text + "</span>";
+}
+
+/// Label, description and unit of a grid-mean metric key (metrics.csv column names).
+std::pair<std::string, std::string> describe_metric(const std::string& key) {
+  auto after = [&](const std::string& prefix) {
+    std::string rest = key.substr(prefix.size());
+    const std::string suffix = "_percent";
+    if (rest.size() > suffix.size() && rest.compare(rest.size() - suffix.size(), suffix.size(), suffix) == 0)
+      rest.erase(rest.size() - suffix.size());
+    return range_text(rest);
+  };
+  if (key == "mean_occupied_lux") return {"mean illuminance, occupied hours", "lx"};
+  if (key.rfind("cda", 0) == 0) return {"continuous daylight autonomy cDA" + after("cda") + " (mean of min(1, E/" + after("cda") + " lx))", "%"};
+  if (key.rfind("damax", 0) == 0) return {"DAmax: share of occupied hours above 10 times the DA threshold", "%"};
+  if (key.rfind("da", 0) == 0) return {"daylight autonomy DA" + after("da") + ": E &#8805; " + after("da") + " lx", "%"};
+  if (key.rfind("udi_below", 0) == 0) return {"UDI fell short: E &lt; " + after("udi_below") + " lx", "%"};
+  if (key.rfind("udi_supplementary", 0) == 0) return {"revised UDI supplementary: " + after("udi_supplementary") + " lx", "%"};
+  if (key.rfind("udi_autonomous", 0) == 0) return {"revised UDI autonomous: " + after("udi_autonomous") + " lx", "%"};
+  if (key.rfind("udi_above", 0) == 0) return {"UDI exceeded: E &gt; " + after("udi_above") + " lx", "%"};
+  if (key.rfind("udi", 0) == 0) return {"UDI achieved (original): " + after("udi") + " lx", "%"};
+  if (key == "ase_hours") return {"hours with direct-sun illuminance above the ASE threshold", "h"};
+  return {esc(key), ""};
+}
+
+/// Values of a metrics.csv column chosen by name pattern; empty if absent.
+std::vector<double> metric_column(const GridData& g, bool (*match)(const std::string&), std::string& column) {
+  if (!g.metrics) return {};
+  for (const std::string& c : g.metrics->columns)
+    if (match(c)) {
+      column = c;
+      return g.metrics->values(c);
+    }
+  return {};
+}
+
+bool is_da_column(const std::string& c) {
+  return c.rfind("da", 0) == 0 && c.size() > 2 && std::isdigit(static_cast<unsigned char>(c[2])) &&
+         c.find("_percent") != std::string::npos;
+}
+bool is_udi_achieved_column(const std::string& c) {
+  return c.rfind("udi", 0) == 0 && c.size() > 3 && std::isdigit(static_cast<unsigned char>(c[3]));
+}
+bool is_udi_autonomous_column(const std::string& c) { return c.rfind("udi_autonomous", 0) == 0; }
+
+std::string plan_block(const GridData& g, const SensorLattice& lattice, const std::vector<double>& values,
+                       const ColourScale& scale, int decimals, const std::string& caption, PageIds& page) {
+  std::ostringstream s;
+  s << "<figure class=\"planfig\"><div class=\"row\">" << plan_svg(g, lattice, values, scale, decimals, caption)
+    << legend_svg(scale, page) << "</div><figcaption>" << caption << "</figcaption></figure>";
+  return s.str();
+}
+
+std::string grid_section(const GridData& g, PageIds& page) {
+  std::ostringstream s;
+  s << "<section class=\"grid\" id=\"" << g.id << "\"><h2>" << (g.case_name.empty() ? "Grid " : "Variant ")
+    << esc(g.title()) << "</h2>";
+  s << "<p class=\"meta\">" << g.sensors.size() << " sensors; folder <code>" << esc(g.folder) << "</code>";
+  if (!g.plan.note.empty()) s << "; " << esc(g.plan.note);
+  s << "</p>";
+  for (const std::string& p : g.problems) s << "<p class=\"problem\">could not read: " << esc(p) << "</p>";
+  const SensorLattice lattice = sensor_lattice(g.sensors);
+  const json* annual = g.annual();
+
+  // Daylight factor.
+  s << "<div class=\"part\" id=\"" << g.id << "-df\"><h3>Daylight factor (CIE overcast sky)</h3>";
+  if (g.df) {
+    const std::vector<double> df = g.df->values("df_percent");
+    s << plan_block(g, lattice, df, daylight_factor_scale(), 1,
+                    "Daylight factor per sensor (%), CIE standard overcast sky, ground included. Windows in blue.", page);
+    const json st = g.summary.value("daylight_factor_percent", json::object());
+    std::vector<std::pair<std::string, std::string>> rows{
+        {"mean", json_scalar(st.value("mean", json())) + " %"},
+        {"median", json_scalar(st.value("median", json())) + " %"},
+        {"minimum", json_scalar(st.value("min", json())) + " %"},
+        {"maximum", json_scalar(st.value("max", json())) + " %"},
+        {"uniformity (min / mean)", json_scalar(st.value("uniformity", json()))}};
+    for (const json& a : st.value("area_at_or_above", json::array()))
+      rows.emplace_back("area with DF &#8805; " + json_scalar(a.value("threshold_percent", json())) + " %",
+                        json_scalar(a.value("area_percent", json())) + " %");
+    s << key_value_table(rows);
+  } else {
+    s << "<p class=\"na\">daylight_factor.csv not found: the daylight factor was not computed.</p>";
+  }
+  s << "</div>";
+
+  // DA.
+  s << "<div class=\"part\" id=\"" << g.id << "-da\"><h3>Daylight autonomy</h3>";
+  std::string da_column;
+  const std::vector<double> da = metric_column(g, is_da_column, da_column);
+  if (!da.empty()) {
+    const std::string threshold = da_column.substr(2, da_column.find('_') - 2);
+    s << plan_block(g, lattice, da, percent_scale("DA" + threshold), 0,
+                    "DA" + threshold + ": share of occupied hours with illuminance &#8805; " + threshold + " lx (%).", page);
+  } else {
+    s << "<p class=\"na\">metrics.csv not found: no annual results.</p>";
+  }
+  s << "</div>";
+
+  // UDI.
+  s << "<div class=\"part\" id=\"" << g.id << "-udi\"><h3>Useful daylight illuminance</h3>";
+  std::string udi_column, autonomous_column;
+  const std::vector<double> udi = metric_column(g, is_udi_achieved_column, udi_column);
+  const std::vector<double> autonomous = metric_column(g, is_udi_autonomous_column, autonomous_column);
+  if (!udi.empty() && annual) {
+    s << "<div class=\"row\">"
+      << plan_block(g, lattice, udi, percent_scale("UDI achieved"), 0,
+                    "UDI achieved, original convention (" + range_text(udi_column.substr(3, udi_column.size() - 3 - 8)) +
+                        " lx): share of occupied hours (%).", page);
+    if (!autonomous.empty())
+      s << plan_block(g, lattice, autonomous, percent_scale("UDI autonomous"), 0,
+                      "UDI autonomous, revised convention (" + range_text(autonomous_column.substr(14, autonomous_column.size() - 14 - 8)) +
+                          " lx): share of occupied hours (%).", page);
+    s << "</div><figure>" << udi_bars_svg(annual->value("mean", json::object()), annual->value("thresholds", json::object()))
+      << "<figcaption>Grid means of the UDI bins in both conventions (each bar sums to 100 %).</figcaption></figure>";
+  } else {
+    s << "<p class=\"na\">no annual results.</p>";
+  }
+  s << "</div>";
+
+  // Compliance.
+  s << "<div class=\"part\" id=\"" << g.id << "-compliance\"><h3>sDA, ASE and EN 17037</h3>";
+  if (annual) {
+    const double sda = annual->value("sda_percent", 0.0);
+    const json thresholds = annual->value("thresholds", json::object());
+    const std::string da_lux = tick(thresholds.value("da_lux", 300.0));
+    const std::string frac = tick(100 * thresholds.value("sda_time_fraction", 0.5));
+    s << "<table class=\"grid-table\"><tr><th>criterion (IES LM-83-12)</th><th>value</th><th>requirement</th><th>result</th></tr>";
+    s << "<tr><td>sDA" << da_lux << "/" << frac << "%: share of sensors with DA" << da_lux << " &#8805; " << frac
+      << " %</td><td>" << num(sda, 1) << " % (" << annual->value("sda_sensors", 0) << " of "
+      << annual->value("sensors", 0) << ")</td><td>&#8805; 55 % nominally accepted</td><td>"
+      << badge(sda >= 55, sda >= 55 ? "pass" : "fail") << "</td></tr>";
+    s << "<tr><td></td><td></td><td>&#8805; 75 % preferred</td><td>" << badge(sda >= 75, sda >= 75 ? "pass" : "fail")
+      << "</td></tr>";
+    const json ase = annual->value("ase_percent", json());
+    s << "<tr><td>ASE" << tick(thresholds.value("ase_threshold_lux", 1000.0)) << ","
+      << tick(thresholds.value("ase_hours", 250.0)) << ": share of sensors with more than "
+      << tick(thresholds.value("ase_hours", 250.0)) << " occupied hours of direct sun &#8805; "
+      << tick(thresholds.value("ase_threshold_lux", 1000.0)) << " lx</td>";
+    if (ase.is_number()) {
+      const double a = ase.get<double>();
+      s << "<td>" << num(a, 1) << " %</td><td>&#8804; 10 %</td><td>" << badge(a <= 10, a <= 10 ? "pass" : "fail") << "</td>";
+    } else {
+      s << "<td colspan=\"3\" class=\"na\">not computed: ASE needs a direct-sun-only illuminance table (sun bins); "
+           "this run spread the sun into sky patches</td>";
+    }
+    s << "</tr></table>";
+    const json en = annual->value("en17037", json());
+    if (en.is_object()) {
+      s << "<table class=\"grid-table\"><tr><th>EN 17037 level</th><th>target (50 % of the area)</th><th>area reaching it</th>"
+           "<th>minimum target (95 % of the area)</th><th>area reaching it</th><th>result</th></tr>";
+      for (const json& level : en.value("levels", json::array())) {
+        const bool passes = level.value("passes", false);
+        s << "<tr><td>" << esc(level.value("level", std::string())) << "</td><td>" << tick(level.value("target_lux", 0.0))
+          << " lx</td><td>" << num(level.value("target_area_percent", 0.0), 1) << " %</td><td>"
+          << tick(level.value("minimum_target_lux", 0.0)) << " lx</td><td>"
+          << num(level.value("minimum_target_area_percent", 0.0), 1) << " %</td><td>"
+          << badge(passes, passes ? "pass" : "fail") << "</td></tr>";
+      }
+      s << "</table><p class=\"note\">EN 17037 daylight provision over " << en.value("daylight_hours", 0)
+        << " daylight hours (half the year, ranked by " << esc(en.value("daylight_hours_source", std::string()))
+        << "); a level passes when its target is met on &#8805; 50 % and its minimum target on &#8805; 95 % of the "
+           "area, each for &#8805; 50 % of the daylight hours.</p>";
+    } else {
+      s << "<p class=\"na\">EN 17037 not computed (the weather file lacks diffuse illuminance values).</p>";
+    }
+  } else {
+    s << "<p class=\"na\">no annual results.</p>";
+  }
+  s << "</div>";
+
+  // Temporal map.
+  s << "<div class=\"part\" id=\"" << g.id << "-temporal\"><h3>Temporal map of the mean illuminance</h3>";
+  if (g.illuminance && g.illuminance->step_count() > 0) {
+    const json occ = annual ? annual->value("occupancy", json::object()) : json::object();
+    const ColourScale scale = illuminance_scale();
+    s << "<figure><div class=\"row\">"
+      << temporal_svg(*g.illuminance, occ.value("start_h", 8.0), occ.value("end_h", 18.0), scale) << legend_svg(scale, page)
+      << "</div><figcaption>Mean illuminance over the grid's " << g.illuminance->sensor_count()
+      << " sensors for every hour of the weather year (lx, logarithmic; below 1 lx grey).</figcaption></figure>";
+  } else {
+    s << "<p class=\"na\">illuminance.bin not found: no annual illuminance.</p>";
+  }
+  s << "</div>";
+
+  // Histograms.
+  s << "<div class=\"part\" id=\"" << g.id << "-histograms\"><h3>Distributions over the sensors</h3><div class=\"row\">";
+  bool any = false;
+  if (g.df) {
+    std::vector<double> edges;
+    for (int i = 0; i <= 20; ++i) edges.push_back(0.5 * i);
+    s << "<figure>" << histogram_svg(g.df->values("df_percent"), edges, daylight_factor_scale(), "daylight factor (%)",
+                                     "daylight factor histogram")
+      << "<figcaption>Daylight factor: share of sensors per 0.5 % bin (last bin: 10 % and above).</figcaption></figure>";
+    any = true;
+  }
+  if (!da.empty()) {
+    std::vector<double> edges;
+    for (int i = 0; i < 10; ++i) edges.push_back(10.0 * i);
+    s << "<figure>" << histogram_svg(da, edges, percent_scale("DA"), "daylight autonomy (% of occupied hours)",
+                                     "daylight autonomy histogram")
+      << "<figcaption>Daylight autonomy: share of sensors per 10 % bin.</figcaption></figure>";
+    any = true;
+  }
+  if (!any) s << "<p class=\"na\">no per-sensor results.</p>";
+  s << "</div></div>";
+
+  // Metrics table.
+  s << "<div class=\"part\" id=\"" << g.id << "-metrics\"><h3>Grid metrics</h3>";
+  if (annual) {
+    s << "<table class=\"grid-table\"><tr><th>metric (grid mean over sensors)</th><th>value</th><th>unit</th></tr>";
+    const json mean = annual->value("mean", json::object());
+    const std::vector<std::string> order = g.metrics ? g.metrics->columns : std::vector<std::string>{};
+    for (const std::string& key : order) {
+      if (!mean.contains(key)) continue;
+      const auto [label, unit] = describe_metric(key);
+      s << "<tr><td>" << label << "</td><td class=\"n\">" << num(mean[key].get<double>(), key == "mean_occupied_lux" ? 0 : 1)
+        << "</td><td>" << unit << "</td></tr>";
+    }
+    s << "<tr><td>sDA (share of sensors)</td><td class=\"n\">" << num(annual->value("sda_percent", 0.0), 1)
+      << "</td><td>%</td></tr>";
+    const json ase = annual->value("ase_percent", json());
+    s << "<tr><td>ASE (share of sensors)</td><td class=\"n\">" << (ase.is_number() ? num(ase.get<double>(), 1) : "-")
+      << "</td><td>%</td></tr>";
+    s << "<tr><td>occupied hours</td><td class=\"n\">" << annual->value("occupied_hours", 0) << "</td><td>h</td></tr>";
+    s << "<tr><td>time steps</td><td class=\"n\">" << annual->value("time_steps", 0) << "</td><td></td></tr>";
+    s << "</table><p class=\"note\">Sky: " << esc(annual->value("sky", std::string())) << ".</p>";
+  } else {
+    s << "<p class=\"na\">no annual results.</p>";
+  }
+  s << "</div></section>";
+  return s.str();
+}
+
+const char* const Style = R"CSS(
+body{font-family:"DejaVu Sans",Helvetica,Arial,sans-serif;margin:24px auto;max-width:1180px;color:#111;line-height:1.35;padding:0 16px}
+h1{font-size:1.6em;margin-bottom:0.2em}h2{border-bottom:2px solid #333;margin-top:1.6em}h3{margin-bottom:0.3em}
+table{border-collapse:collapse;margin:0.5em 0}th,td{border:1px solid #bbb;padding:3px 8px;text-align:left;vertical-align:top}
+th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}table.kv th{width:18em}
+.row{display:flex;flex-wrap:wrap;gap:18px;align-items:flex-start}figure{margin:0.4em 0}figcaption{font-size:0.85em;color:#333;max-width:560px}
+.lt{font-size:11px;fill:#111}.cv{font-size:9px;text-anchor:middle}.badge{padding:1px 8px;border-radius:3px;font-weight:bold}
+.pass{background:#c7e9c0;color:#00441b}.fail{background:#fcbba1;color:#67000d}.na,.note{color:#444;font-size:0.9em}
+.problem{color:#a00}nav ul{columns:2}code{font-size:0.9em}.meta{color:#333}
+#report-check{font-size:0.8em;color:#555}
+@media print{body{max-width:none;margin:0;font-size:10pt}nav,#report-check{display:none}
+.part,figure,table{break-inside:avoid;page-break-inside:avoid}section.grid{break-before:page;page-break-before:always}
+*{-webkit-print-color-adjust:exact;print-color-adjust:exact}}
+)CSS";
+
+// The self-check: every listed section exists, every plot SVG has drawn content with a
+// non-empty bounding box, every embedded PNG decodes; the outcome goes into #report-check
+// (data-status "ok" or "failed") for the headless-browser test, and failures to the console.
+const char* const Script = R"JS(
+(function () {
+  var marker = document.getElementById('report-check');
+  var problems = [];
+  var ids = (document.body.getAttribute('data-sections') || '').split(' ').filter(function (s) { return s; });
+  ids.forEach(function (id) { if (!document.getElementById(id)) problems.push('missing section ' + id); });
+  var plots = document.querySelectorAll('svg.plot');
+  Array.prototype.forEach.call(plots, function (svg, i) {
+    var shapes = svg.querySelectorAll('rect,circle,polygon,line,path,image,text');
+    var box = svg.getBBox();
+    if (shapes.length === 0 || !(box.width > 0 && box.height > 0))
+      problems.push('empty plot ' + i + ' (' + (svg.getAttribute('aria-label') || '') + ')');
+  });
+  var images = document.querySelectorAll('svg image');
+  var decodes = Array.prototype.map.call(images, function (im, i) {
+    var img = new Image();
+    img.src = im.getAttribute('href');
+    return img.decode().then(function () {
+      if (!(img.naturalWidth > 0)) problems.push('image ' + i + ' is empty');
+    }, function () { problems.push('image ' + i + ' does not decode'); });
+  });
+  Promise.all(decodes).then(function () {
+    marker.setAttribute('data-plots', String(plots.length));
+    marker.setAttribute('data-images', String(images.length));
+    if (problems.length === 0) {
+      marker.setAttribute('data-status', 'ok');
+      marker.textContent = 'self-check: ' + ids.length + ' sections, ' + plots.length + ' plots, ' + images.length + ' images rendered';
+    } else {
+      marker.setAttribute('data-status', 'failed');
+      marker.textContent = 'self-check failed: ' + problems.join('; ');
+      console.error('report self-check failed: ' + problems.join('; '));
+    }
+  });
+})();
+)JS";
+
+std::string summary_section(const json& summary, const std::string& results_dir, const std::string& geometry_note) {
+  std::ostringstream s;
+  const json site = summary.value("site", json::object());
+  const json sim = summary.value("simulation", json::object());
+  s << "<section id=\"summary\"><h2>Project</h2>";
+  std::vector<std::pair<std::string, std::string>> project{
+      {"project file", "<code>" + esc(summary.value("project", std::string())) + "</code>"},
+      {"results folder", "<code>" + esc(results_dir) + "</code>"},
+      {"site", esc(site.value("name", std::string()))},
+      {"latitude (deg, north +)", json_scalar(site.value("latitude_deg", json()))},
+      {"longitude (deg, east +)", json_scalar(site.value("longitude_deg", json()))},
+      {"time zone (h from UTC, standard time)", json_scalar(site.value("time_zone_h", json()))}};
+  s << "<h3>Site</h3>" << key_value_table(project);
+  const std::string weather = summary.value("weather", std::string());
+  s << "<h3 id=\"weather\">Weather</h3>";
+  std::vector<std::pair<std::string, std::string>> w{{"weather file", "<code>" + esc(weather) + "</code>"}};
+  for (const auto& [k, v] : weather_station(weather)) w.emplace_back(k, esc(v));
+  if (w.size() == 1) w.emplace_back("station", "the weather file is not readable from here");
+  s << key_value_table(w);
+  s << "<h3>Simulation settings</h3>";
+  std::vector<std::pair<std::string, std::string>> settings;
+  for (auto it = sim.begin(); it != sim.end(); ++it) {
+    std::string key = it.key();
+    std::replace(key.begin(), key.end(), '_', ' ');
+    settings.emplace_back(esc(key), json_scalar(*it));
+  }
+  s << key_value_table(settings);
+  s << "<h3>Versions</h3>";
+  std::vector<std::pair<std::string, std::string>> versions{
+      {"report written by", std::string("dayphoton ") + DAYPHOTON_VERSION},
+      {"OpenEXR", OPENEXR_VERSION_STRING},
+      {"libpng", PNG_LIBPNG_VER_STRING}};
+  const json v = summary.value("versions", json::object());
+  for (auto it = v.begin(); it != v.end(); ++it) versions.emplace_back("run: " + esc(it.key()), json_scalar(*it));
+  s << key_value_table(versions);
+  s << "<h3 id=\"run-time\">Run time</h3><table class=\"grid-table\"><tr><th>step</th><th>work</th><th>seconds</th><th>source</th></tr>";
+  double total = 0;
+  for (const json& t : summary.value("timings", json::array())) {
+    const double sec = t.value("seconds", 0.0);
+    total += sec;
+    s << "<tr><td>" << esc(t.value("step", std::string())) << "</td><td class=\"n\">" << t.value("work", 0) << ' '
+      << esc(t.value("unit", std::string())) << "</td><td class=\"n\">" << num(sec, 2) << "</td><td>"
+      << (t.value("cached", false) ? "cache" : "computed") << "</td></tr>";
+  }
+  s << "<tr><th>total</th><td></td><td class=\"n\"><b>" << num(total, 2) << "</b></td><td></td></tr></table>";
+  const json cache = summary.value("cache", json::object());
+  if (!cache.empty())
+    s << "<p class=\"note\">Photon sources traced: " << cache.value("sources_traced", 0) << " of "
+      << cache.value("sources", 0) << " (" << cache.value("sources_cached", 0) << " from the cache); grids estimated: "
+      << cache.value("grids_estimated", 0) << ", from the cache: " << cache.value("grids_cached", 0) << ".</p>";
+  const json notes = summary.value("notes", json::array());
+  if (!notes.empty()) {
+    s << "<h3>Notes</h3><ul>";
+    for (const json& n : notes) s << "<li>" << json_scalar(n) << "</li>";
+    s << "</ul>";
+  }
+  if (!geometry_note.empty()) s << "<p class=\"note\">Plans: " << esc(geometry_note) << ".</p>";
+  s << "</section>";
+  return s.str();
+}
+
+std::string overview_section(const std::vector<GridData>& grids) {
+  std::ostringstream s;
+  s << "<section id=\"overview\"><h2>Overview</h2><table class=\"grid-table\"><tr><th>case</th><th>grid</th>"
+       "<th>sensors</th><th>mean DF (%)</th><th>area DF &#8805; 2 % (%)</th><th>mean DA (%)</th><th>sDA (%)</th>"
+       "<th>ASE (%)</th><th>EN 17037</th></tr>";
+  for (const GridData& g : grids) {
+    const json df = g.summary.value("daylight_factor_percent", json::object());
+    std::string area = "-";
+    for (const json& a : df.value("area_at_or_above", json::array()))
+      if (a.value("threshold_percent", 0.0) == 2.0) area = num(a.value("area_percent", 0.0), 1);
+    s << "<tr><td>" << (g.case_name.empty() ? "base" : esc(g.case_name)) << "</td><td><a href=\"#" << g.id << "\">"
+      << esc(g.name) << "</a></td><td class=\"n\">" << g.sensors.size() << "</td><td class=\"n\">"
+      << (df.contains("mean") ? num(df["mean"].get<double>(), 2) : "-") << "</td><td class=\"n\">" << area << "</td>";
+    const json* annual = g.annual();
+    if (annual) {
+      const json mean = annual->value("mean", json::object());
+      std::string da = "-";
+      for (auto it = mean.begin(); it != mean.end(); ++it)
+        if (is_da_column(it.key())) da = num(it->get<double>(), 1);
+      const json ase = annual->value("ase_percent", json());
+      std::string en = "-";
+      const json e = annual->value("en17037", json());
+      if (e.is_object()) {
+        en = "none";
+        for (const json& level : e.value("levels", json::array()))
+          if (level.value("passes", false)) en = level.value("level", std::string());
+      }
+      s << "<td class=\"n\">" << da << "</td><td class=\"n\">" << num(annual->value("sda_percent", 0.0), 1)
+        << "</td><td class=\"n\">" << (ase.is_number() ? num(ase.get<double>(), 1) : "-") << "</td><td>" << esc(en)
+        << "</td>";
+    } else {
+      s << "<td>-</td><td>-</td><td>-</td><td>-</td>";
+    }
+    s << "</tr>";
+  }
+  s << "</table><p class=\"note\">EN 17037: the highest level passed. ASE \"-\": not computed.</p></section>";
+  return s.str();
+}
+
+std::string sky_section(const std::string& results_dir, std::vector<std::string>& ids, PageIds& page) {
+  std::ostringstream s;
+  std::vector<std::pair<FloatImage, std::string>> skies;
+  for (const char* stem : {"sky_mean", "sky_hour"}) {
+    const std::string path = join(results_dir, std::string(stem) + ".exr");
+    if (!fs::exists(path)) continue;
+    try {
+      skies.emplace_back(read_exr(path), stem);
+    } catch (const std::exception&) {
+    }
+  }
+  if (skies.empty()) return {};
+  ids.push_back("sky");
+  s << "<section id=\"sky\"><h2>Sky</h2><div class=\"row\">";
+  for (const auto& [image, stem] : skies) {
+    double lo = std::numeric_limits<double>::infinity(), hi = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        if (image.at(3, x, y) <= 0) continue;
+        const double l = rgb_to_photometric({image.at(0, x, y), image.at(1, x, y), image.at(2, x, y)});
+        if (l > 0) {
+          lo = std::min(lo, l);
+          hi = std::max(hi, l);
+        }
+      }
+    ColourScale scale{1, 10, true, "luminance", "cd/m2"};
+    if (hi > 0) {
+      scale.min = std::pow(10.0, std::floor(std::log10(lo)));
+      scale.max = std::pow(10.0, std::ceil(std::log10(hi) + 1e-12));
+    }
+    auto it = image.string_attributes.find("dayphoton:time");
+    const std::string time = it != image.string_attributes.end() ? it->second : stem;
+    s << "<figure><div class=\"row\">" << sky_svg(image, scale, stem == "sky_mean" ? "annual mean sky" : "sky of one hour")
+      << legend_svg(scale, page) << "</div><figcaption>" << (stem == "sky_mean" ? "Annual mean sky" : "One hour")
+      << ": " << esc(time) << ". Luminance of the sky patches (cd/m&#178;, logarithmic), angular fisheye seen from "
+                              "below (east left); the sun is spread into its patches as in the annual sky matrix. "
+      << "File <code>" << stem << ".exr</code>.</figcaption></figure>";
+  }
+  s << "</div></section>";
+  return s.str();
+}
+
+json read_summary(const std::string& results_dir) {
+  const std::string path = join(results_dir, "summary.json");
+  std::ifstream in(path);
+  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open the run summary (is this a results folder of `dayphoton run`?)");
+  json summary = json::parse(in, nullptr, false);
+  if (summary.is_discarded() || !summary.is_object()) throw InputError(SourceLocation{path, 0, 0}, "not a JSON object");
+  return summary;
+}
+
+/// Folder of a grid: <results>/<grid> (base) or <results>/variants/<variant>/<grid>, as `run`
+/// writes them; the absolute folder recorded in summary.json only if that does not exist
+/// (a results folder that was moved keeps working).
+std::string grid_folder(const std::string& results_dir, const std::string& variant, const json& grid) {
+  const std::string name = grid.value("name", std::string());
+  const std::string relative =
+      variant.empty() ? join(results_dir, name) : join(join(join(results_dir, "variants"), variant), name);
+  if (fs::exists(relative)) return relative;
+  const std::string recorded = grid.value("folder", std::string());
+  return recorded.empty() ? relative : recorded;
+}
+
+}  // namespace
+
+std::string report_html(const std::string& results_dir) {
+  PageIds page;
+  const json summary = read_summary(results_dir);
+  std::string geometry_note;
+  const std::map<std::string, PlanGeometry> geometry = project_geometry(summary.value("project", std::string()), geometry_note);
+
+  std::vector<GridData> grids;
+  for (const json& g : summary.value("grids", json::array()))
+    grids.push_back(load_grid("", g, grid_folder(results_dir, "", g)));
+  for (const json& v : summary.value("variants", json::array()))
+    for (const json& g : v.value("grids", json::array()))
+      grids.push_back(load_grid(v.value("name", std::string("variant")), g,
+                                grid_folder(results_dir, v.value("name", std::string()), g)));
+  for (GridData& g : grids) {
+    auto it = geometry.find(g.name);
+    if (it != geometry.end()) g.plan = it->second;
+    else if (!geometry.empty()) g.plan.note = "grid not in the project file any more: no outline";
+  }
+
+  std::vector<std::string> ids{"summary", "overview"};
+  std::ostringstream body;
+  body << summary_section(summary, results_dir, geometry_note) << overview_section(grids);
+  for (const GridData& g : grids) {
+    body << grid_section(g, page);
+    ids.push_back(g.id);
+    for (const char* part : {"-df", "-da", "-udi", "-compliance", "-temporal", "-histograms", "-metrics"})
+      ids.push_back(g.id + part);
+  }
+  body << sky_section(results_dir, ids, page);
+
+  const std::string project_name = fs::path(summary.value("project", std::string("project"))).filename().string();
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
+          "<meta name=\"generator\" content=\"dayphoton " DAYPHOTON_VERSION "\">"
+       << "<title>dayphoton report: " << esc(summary.value("site", json::object()).value("name", project_name))
+       << "</title><style>" << Style << "</style></head>\n<body data-sections=\"";
+  for (std::size_t i = 0; i < ids.size(); ++i) html << (i ? " " : "") << ids[i];
+  html << "\"><svg width=\"0\" height=\"0\" style=\"position:absolute\" aria-hidden=\"true\"><defs>"
+          "<marker id=\"arrowhead\" viewBox=\"0 0 10 10\" refX=\"5\" refY=\"5\" markerWidth=\"6\" markerHeight=\"6\" "
+          "orient=\"auto-start-reverse\"><path d=\"M 0 0 L 10 5 L 0 10 z\"/></marker></defs></svg>\n";
+  html << "<header><h1>Daylight report: " << esc(summary.value("site", json::object()).value("name", std::string()))
+       << "</h1><p class=\"meta\">" << esc(project_name) << ", " << grids.size()
+       << " grid(s). Written by dayphoton " DAYPHOTON_VERSION " from the files in <code>" << esc(results_dir)
+       << "</code>.</p><p id=\"report-check\" data-status=\"pending\">self-check pending (needs JavaScript)</p></header>\n";
+  html << "<nav><h2>Contents</h2><ul><li><a href=\"#summary\">Project, weather, settings, run time</a></li>"
+          "<li><a href=\"#overview\">Overview</a></li>";
+  for (const GridData& g : grids) html << "<li><a href=\"#" << g.id << "\">" << esc(g.title()) << "</a></li>";
+  if (std::find(ids.begin(), ids.end(), "sky") != ids.end()) html << "<li><a href=\"#sky\">Sky</a></li>";
+  html << "</ul></nav>\n" << body.str() << "\n<script>" << Script << "</script>\n</body></html>\n";
+  return html.str();
+}
+
+std::string write_report(const std::string& results_dir, const std::string& output_path) {
+  const std::string path = output_path.empty() ? join(results_dir, "report.html") : output_path;
+  write_file_atomically(path, report_html(results_dir));
+  return path;
+}
+
+std::vector<std::string> write_images_and_report(const std::string& results_dir, const ViewOutputs& outputs) {
+  std::vector<std::string> written;
+  if (outputs.images) {
+    const json summary = read_summary(results_dir);
+    auto grid_images = [&](const std::string& variant, const json& g) {
+      const std::vector<std::string> w = write_grid_images(grid_folder(results_dir, variant, g));
+      written.insert(written.end(), w.begin(), w.end());
+    };
+    for (const json& g : summary.value("grids", json::array())) grid_images("", g);
+    for (const json& v : summary.value("variants", json::array()))
+      for (const json& g : v.value("grids", json::array())) grid_images(v.value("name", std::string()), g);
+    const std::vector<std::string> w = write_sky_images(results_dir, outputs.sky_hour);
+    written.insert(written.end(), w.begin(), w.end());
+  }
+  if (outputs.report) written.push_back(write_report(results_dir));
+  return written;
+}
+
+}  // namespace dayphoton::study
