@@ -319,8 +319,8 @@ RgbaImage tone_map(const FloatImage& rgb) {
   const double log_average = std::exp(log_sum / static_cast<double>(count));
   const double key = 0.18 / log_average;
   std::sort(luminances.begin(), luminances.end());
-  const std::size_t white_index =
-      std::min(luminances.size() - 1, static_cast<std::size_t>(std::floor(0.999 * static_cast<double>(luminances.size() - 1))));
+  // The brightest 0.1 % are let burn out (none in images of fewer than 1000 pixels).
+  const std::size_t white_index = luminances.size() - 1 - luminances.size() / 1000;
   const double white = std::max(1e-12, key * luminances[white_index]);
   for (int y = 0; y < rgb.height; ++y)
     for (int x = 0; x < rgb.width; ++x) {

@@ -78,5 +78,35 @@ else
   echo "FAIL sky_matrix"; failed=$((failed + 1))
 fi
 
+# report: report.html from a finished run's folder (a two-sensor results folder, no images so
+# nothing is written into the source tree); errors are located (exit 1) or usage (exit 2).
+check_case report_help 0 report --help
+check_case report_missing_folder 1 report tests/cli/cases/does_not_exist --no-images
+check_case report_bad_sky_hour 2 report tests/cli/cases/report_results --sky-hour 13/1/12
+"$bin" report tests/cli/cases/report_results --no-images -o "$scratch/report.html" --quiet
+if grep -q 'id="grid-grid-df"' "$scratch/report.html" && grep -q 'data-sections="summary overview grid-grid' "$scratch/report.html" &&
+   ! ls tests/cli/cases/report_results | grep -q -e report.html -e '\.exr$'; then
+  echo "ok   report_html"; passed=$((passed + 1))
+else
+  echo "FAIL report_html"; failed=$((failed + 1))
+fi
+
+# render: usage errors are found before any photon is traced; a tiny rendering of the office
+# writes a finite EXR and a PNG.
+check_case render_help 0 render --help
+check_case render_bad_view 2 render projects/office/project.yaml --view 1,2 --direction 0,1,0 -o "$scratch/v.exr"
+check_case render_bad_sky 2 render projects/office/project.yaml --view 3,4,1.2 --direction 0,1,0 --sky cloudy -o "$scratch/v.exr"
+check_case render_not_exr 2 render projects/office/project.yaml --view 3,4,1.2 --direction 0,1,0 -o out.png
+check_case render_parallel_up 2 render projects/office/project.yaml --view 3,4,1.2 --direction 0,0,1 -o "$scratch/v.exr"
+check_case render_missing_project 1 render tests/cli/cases/does_not_exist.yaml --view 3,4,1.2 --direction 0,1,0 -o "$scratch/v.exr"
+"$bin" render projects/office/project.yaml --view 3,7.5,1.4 --direction 0,-1,-0.2 --fov 70 --width 32 --height 24 \
+  --samples 1 --direct-samples 2 --photons 300 -o "$scratch/office.exr" --quiet
+if [ "$(head -c 4 "$scratch/office.exr" | od -An -tx1 | tr -d ' \n')" = "762f3101" ] &&
+   [ "$(head -c 8 "$scratch/office.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ]; then
+  echo "ok   render_office"; passed=$((passed + 1))
+else
+  echo "FAIL render_office"; failed=$((failed + 1))
+fi
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

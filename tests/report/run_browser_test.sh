@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# report.html in headless chromium (issue 7 acceptance): run the office study (cached after the
+# first time), write the report with `dayphoton report`, then with chromium
+#   --screenshot   keep BUILD/report_screenshot.png (a CI artefact; must not be blank)
+#   --dump-dom     the DOM after the page's scripts ran: the page's own self-check (an inline
+#                  script: every listed section present, every plot SVG with drawn content and a
+#                  non-empty bounding box, every embedded PNG decoded) must have written
+#                  data-status="ok" into #report-check, and every id of data-sections must exist
+# and no console message or uncaught error may appear in chromium's log (the report logs
+# nothing when it is well). Usage: DAYPHOTON=... run_browser_test.sh BUILD_DIR (from the
+# repository root). Exit 77 = skipped (chromium absent).
+set -u
+cd "$(dirname "$0")/../.."
+bin=${DAYPHOTON:?set DAYPHOTON to the dayphoton executable}
+build=${1:?usage: run_browser_test.sh BUILD_DIR}
+chromium=$(command -v chromium || command -v chromium-browser || true)
+if [ -z "$chromium" ]; then
+  echo "SKIP: chromium is not installed (Debian package 'chromium'; scripts/setup.sh installs it)"
+  exit 77
+fi
+fail() { echo "FAIL report_browser: $*"; exit 1; }
+
+results="$build/report_test_results"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$bin" run projects/office/project.yaml --output "$results" --quiet || fail "dayphoton run failed"
+"$bin" report "$results" --quiet || fail "dayphoton report failed"
+[ -s "$results/report.html" ] || fail "no report.html"
+
+flags=(--headless --no-sandbox --disable-gpu --hide-scrollbars --enable-logging=stderr --v=0
+       --virtual-time-budget=10000 --user-data-dir="$work/profile")
+url="file://$(cd "$results" && pwd)/report.html"
+screenshot="$build/report_screenshot.png"
+rm -f "$screenshot"
+timeout 180 "$chromium" "${flags[@]}" --window-size=1280,7000 --screenshot="$screenshot" "$url" \
+  >"$work/shot.out" 2>"$work/shot.log" || fail "chromium --screenshot failed: $(tail -3 "$work/shot.log")"
+timeout 180 "$chromium" "${flags[@]}" --dump-dom "$url" >"$work/dom.html" 2>"$work/dom.log" ||
+  fail "chromium --dump-dom failed: $(tail -3 "$work/dom.log")"
+
+# The screenshot: a PNG of the requested width, and not blank (a blank page compresses to a
+# few kB; the report's plots and text need far more).
+[ -s "$screenshot" ] || fail "no screenshot"
+[ "$(head -c 8 "$screenshot" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || fail "screenshot is not a PNG"
+size=$(wc -c <"$screenshot")
+[ "$size" -gt 100000 ] || fail "screenshot of $size bytes looks blank"
+
+# The self-check and the sections.
+grep -q 'id="report-check" data-status="ok"' "$work/dom.html" ||
+  fail "self-check did not pass: $(grep -o '<p id="report-check"[^<]*' "$work/dom.html")"
+sections=$(grep -o 'data-sections="[^"]*"' "$work/dom.html" | head -1 | sed 's/data-sections="//; s/"$//')
+[ -n "$sections" ] || fail "no data-sections list"
+count=0
+for id in $sections; do
+  grep -q "id=\"$id\"" "$work/dom.html" || fail "section $id missing from the DOM"
+  count=$((count + 1))
+done
+plots=$(grep -o 'data-plots="[0-9]*"' "$work/dom.html" | grep -o '[0-9]*')
+[ "${plots:-0}" -gt 0 ] || fail "no plots counted"
+
+# No console output and no uncaught error.
+if grep -E 'CONSOLE|Uncaught' "$work/shot.log" "$work/dom.log"; then fail "console messages (above)"; fi
+
+echo "ok   report_browser: $count sections, $plots plots rendered, no console messages; screenshot $screenshot ($size bytes)"
