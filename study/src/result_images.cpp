@@ -175,6 +175,10 @@ std::vector<GridQuantity> grid_quantities(const std::string& grid_dir) {
     };
     const std::string percent = "_percent";
     auto stem_of = [&](const std::string& c) { return c.substr(0, c.size() - percent.size()); };
+    auto dashed = [](std::string r) {
+      std::replace(r.begin(), r.end(), '_', '-');  // "100_2000" -> "100-2000"
+      return r;
+    };
     auto ends_percent = [&](const std::string& c) {
       return c.size() > percent.size() && c.compare(c.size() - percent.size(), percent.size(), percent) == 0;
     };
@@ -184,12 +188,12 @@ std::vector<GridQuantity> grid_quantities(const std::string& grid_dir) {
                        percent_scale("daylight autonomy")});
     for (const std::string& c : columns)
       if (c.rfind("udi", 0) == 0 && starts_digit(c, 3) && ends_percent(c))
-        out.push_back({stem_of(c), "metrics.csv", c, "useful daylight illuminance, achieved (" + stem_of(c).substr(3) + " lx)",
+        out.push_back({stem_of(c), "metrics.csv", c, "useful daylight illuminance, achieved (" + dashed(stem_of(c).substr(3)) + " lx)",
                        "%", percent_scale("UDI achieved")});
     for (const std::string& c : columns)
       if (c.rfind("udi_autonomous", 0) == 0 && ends_percent(c))
         out.push_back({stem_of(c), "metrics.csv", c, "useful daylight illuminance, autonomous (" +
-                       stem_of(c).substr(std::string("udi_autonomous").size()) + " lx)", "%",
+                       dashed(stem_of(c).substr(std::string("udi_autonomous").size())) + " lx)", "%",
                        percent_scale("UDI autonomous")});
     for (const std::string& c : columns)
       if (c == "mean_occupied_lux")
