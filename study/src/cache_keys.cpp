@@ -31,12 +31,10 @@ ContentHash planes_key(const std::vector<SensorGrid>& grids) {
   return h;
 }
 
-std::string photon_source_key(const ContentHash& scene, const ContentHash& planes,
-                              const sky::PatchBasis& basis, std::size_t source,
-                              const engine::TracingOptions& o) {
-  ContentHash h;
-  h.text("photons").hash(scene).hash(planes).integer(basis.multiplication_factor());
-  h.integer(static_cast<std::int64_t>(source));
+namespace {
+
+/// Every tracing option that changes a source's photons, for source `source`.
+void add_tracing_options(ContentHash& h, std::size_t source, const engine::TracingOptions& o) {
   h.integer(static_cast<std::int64_t>(o.photons_per_source));
   h.integer(static_cast<std::int64_t>(o.caustic_photons_per_source));
   h.number(source < o.source_photon_factor.size() ? o.source_photon_factor[source] : 1.0);
@@ -45,6 +43,33 @@ std::string photon_source_key(const ContentHash& scene, const ContentHash& plane
   h.integer(o.store_direct ? 1 : 0).integer(o.keep_surface_photons ? 1 : 0).integer(o.max_events);
   h.integer(o.region_of_interest ? 1 : 0);
   if (o.region_of_interest) h.vec3(o.region_of_interest->lower).vec3(o.region_of_interest->upper);
+}
+
+/// The grid's geometry and sensors.
+void add_grid(ContentHash& h, const SensorGrid& grid) {
+  h.integer(grid.planar ? 1 : 0).vec3(grid.plane_normal).number(grid.plane_height_m);
+  for (const Vec3& v : grid.outline) h.vec3(v);
+  h.integer(static_cast<std::int64_t>(grid.points.size()));
+  for (const SensorPoint& p : grid.points) h.vec3(p.position).vec3(p.normal);
+}
+
+/// The estimate and direct-sampling options.
+void add_estimate_options(ContentHash& h, const engine::CoefficientOptions& o) {
+  h.integer(static_cast<std::int64_t>(o.density.bandwidth)).number(o.density.max_radius_m);
+  h.integer(static_cast<int>(o.density.kernel)).integer(o.density.average_radius ? 1 : 0);
+  h.integer(static_cast<int>(o.estimator)).integer(o.boundary_correction ? 1 : 0);
+  h.integer(o.direct.samples_per_source).integer(static_cast<std::int64_t>(o.direct.seed));
+}
+
+}  // namespace
+
+std::string photon_source_key(const ContentHash& scene, const ContentHash& planes,
+                              const sky::PatchBasis& basis, std::size_t source,
+                              const engine::TracingOptions& o) {
+  ContentHash h;
+  h.text("photons").hash(scene).hash(planes).integer(basis.multiplication_factor());
+  h.integer(static_cast<std::int64_t>(source));
+  add_tracing_options(h, source, o);
   return h.hex();
 }
 
@@ -53,14 +78,53 @@ std::string coefficients_key(const std::vector<std::string>& photon_keys, const 
   ContentHash h;
   h.text("coefficients");
   for (const std::string& k : photon_keys) h.text(k);
-  h.integer(grid.planar ? 1 : 0).vec3(grid.plane_normal).number(grid.plane_height_m);
-  for (const Vec3& v : grid.outline) h.vec3(v);
-  h.integer(static_cast<std::int64_t>(grid.points.size()));
-  for (const SensorPoint& p : grid.points) h.vec3(p.position).vec3(p.normal);
-  h.integer(static_cast<std::int64_t>(o.density.bandwidth)).number(o.density.max_radius_m);
-  h.integer(static_cast<int>(o.density.kernel)).integer(o.density.average_radius ? 1 : 0);
-  h.integer(static_cast<int>(o.estimator)).integer(o.boundary_correction ? 1 : 0);
-  h.integer(o.direct.samples_per_source).integer(static_cast<std::int64_t>(o.direct.seed));
+  add_grid(h, grid);
+  add_estimate_options(h, o);
+  return h.hex();
+}
+
+std::string sky_matrix_key(const std::string& weather_path, const sky::PatchBasis& basis,
+                           double ground_reflectance, bool sun_excluded) {
+  ContentHash h;
+  h.text("sky matrix").integer(EngineCacheVersion).file(weather_path);
+  h.integer(basis.multiplication_factor()).number(ground_reflectance);
+  h.text(sun_excluded ? "radiance-compatible, sun excluded; suns" : "radiance-compatible, sun spread");
+  return h.hex();
+}
+
+std::string sun_photon_key(const ContentHash& scene, const ContentHash& planes, int mf, int patch,
+                           double half_angle_rad, const engine::TracingOptions& o) {
+  ContentHash h;
+  h.text("sun photons").hash(scene).hash(planes).integer(mf).integer(patch).number(half_angle_rad);
+  add_tracing_options(h, 0, o);
+  return h.hex();
+}
+
+std::string sun_coefficients_key(const std::vector<std::string>& sun_photon_keys,
+                                 double minimum_bound_fraction, const SensorGrid& grid,
+                                 const engine::CoefficientOptions& o) {
+  ContentHash h;
+  h.text("sun coefficients");
+  h.integer(static_cast<std::int64_t>(sun_photon_keys.size()));
+  for (const std::string& k : sun_photon_keys) h.text(k);
+  h.number(minimum_bound_fraction);
+  add_grid(h, grid);
+  add_estimate_options(h, o);
+  h.integer(o.local_linear ? 1 : 0).integer(o.bias_compensation ? 1 : 0);
+  h.integer(static_cast<std::int64_t>(o.bias_compensation_max_factor)).integer(static_cast<std::int64_t>(o.seed));
+  return h.hex();
+}
+
+std::string direct_sun_key(const ContentHash& scene, const SensorGrid& grid,
+                           const std::vector<std::size_t>& steps, const std::vector<Vec3>& directions,
+                           int samples, std::uint64_t seed) {
+  ContentHash h;
+  h.text("direct sun").hash(scene);
+  add_grid(h, grid);
+  h.integer(static_cast<std::int64_t>(steps.size()));
+  for (std::size_t i = 0; i < steps.size(); ++i)
+    h.integer(static_cast<std::int64_t>(steps[i])).vec3(directions.at(i));
+  h.integer(samples).integer(static_cast<std::int64_t>(seed));
   return h.hex();
 }
 

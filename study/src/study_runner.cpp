@@ -15,9 +15,11 @@
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/engine/sun_bins.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/study/annual_illuminance.h"
+#include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/artifact_store.h"
@@ -91,7 +93,8 @@ struct RunContext {
   RunLog& log;
   RunReport& report;
   const ArtifactStore& store;
-  std::optional<AnnualSky> sky;  ///< built or loaded once, on first use
+  std::optional<AnnualSky> sky;  ///< built or loaded once, on first use (sun spread)
+  std::optional<SkyAndSuns> sky_and_suns;  ///< the same for the sun-bins mode
 };
 
 metrics::MetricSettings metric_settings(const project::MetricsSettings& m) {
@@ -112,10 +115,7 @@ const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBas
   if (ctx.sky) return *ctx.sky;
   const weather::EpwFile epw = weather::read_epw(project.weather.path);
   const double rho_g = project.simulation.ground_reflectance;
-  ContentHash sky_hash;
-  sky_hash.text("sky matrix").integer(EngineCacheVersion).file(project.weather.path);
-  sky_hash.integer(basis.multiplication_factor()).number(rho_g).text("radiance-compatible, sun spread");
-  const std::string key = sky_hash.hex();
+  const std::string key = sky_matrix_key(project.weather.path, basis, rho_g, false);
   AnnualSky sky;
   bool cached = false;
   if (!ctx.settings.force) {
@@ -145,6 +145,219 @@ const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBas
   }
   ctx.sky = std::move(sky);
   return *ctx.sky;
+}
+
+/// The sun-bins mode's sky (without the sun) and suns, from the cache when the weather file
+/// is unchanged: the matrix under kind "sky" and the suns under kind "suns", same key.
+const SkyAndSuns& sky_and_suns(const project::Project& project, const sky::PatchBasis& basis,
+                               RunContext& ctx) {
+  if (ctx.sky_and_suns) return *ctx.sky_and_suns;
+  const weather::EpwFile epw = weather::read_epw(project.weather.path);
+  const double rho_g = project.simulation.ground_reflectance;
+  const std::string key = sky_matrix_key(project.weather.path, basis, rho_g, true);
+  SkyAndSuns result;
+  bool cached = false;
+  if (!ctx.settings.force) {
+    const auto matrix = ctx.store.read("sky", key);
+    const auto suns = ctx.store.read("suns", key);
+    if (matrix && suns) {
+      try {
+        result.sky.matrix = decode_matrix(*matrix);
+        result.suns = suns_from_matrix(decode_matrix(*suns));
+        cached = true;
+      } catch (const std::exception&) {
+        // damaged or an older layout: rebuilt below
+      }
+    }
+  }
+  if (cached) {
+    result.sky.steps = time_stamps(epw);
+    result.sky.daylight_hours_quantity = daylight_hours_quantity(epw, result.sky.daylight_hours_source);
+    result.sky.description =
+        "Perez sky matrix without the sun (gendaymtx -s conventions) from the cache; sun from sun bins "
+        "(indirect) and exact hourly shadow rays (direct)";
+    ctx.report.sky_matrix_cached = true;
+    ctx.progress.cached("sky matrix");
+    ctx.log.line("sky matrix: cached");
+  } else {
+    ctx.progress.start("sky matrix", epw.records.size(), "hours");
+    result = annual_sky_and_suns(epw, basis, sun_excluded_sky_options(rho_g));
+    ctx.store.write("sky", key, encode_matrix(result.sky.matrix));
+    ctx.store.write("suns", key, encode_matrix(suns_to_matrix(result.suns)));
+    ctx.progress.advance(epw.records.size());
+    ctx.progress.end();
+    ctx.log.line("sky matrix: built from " + project.weather.path + " (sun excluded; " +
+                 std::to_string(result.suns.size()) + " sun hours)");
+  }
+  ctx.sky_and_suns = std::move(result);
+  return *ctx.sky_and_suns;
+}
+
+/// The sun side of one grid in the sun-bins mode.
+struct GridSun {
+  RadianceMatrix bin_coefficients;  ///< sensors x sun bins x RGB, caustic + global
+  RadianceMatrix direct;            ///< sensors x suns x RGB, exact direct sun
+};
+
+engine::TracingOptions sun_tracing_options(const project::Simulation& sim, bool keep_surface_photons) {
+  engine::TracingOptions o;
+  o.photons_per_source = static_cast<std::size_t>(
+      std::max(1LL, std::llround(double(sim.photons_per_bin) * SunBinPhotonFraction)));
+  o.seed = sim.seed;
+  o.keep_surface_photons = keep_surface_photons;
+  return o;
+}
+
+/// Sun bins of one case: choose them for the year's suns, trace (one cached artefact per
+/// bin), estimate per grid, trace the exact direct sun per grid. Every step cached.
+std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix,
+                                  const SceneDescription& description, const engine::Scene& scene,
+                                  const std::vector<engine::Material>& materials,
+                                  const std::vector<engine::ReceiverPlane>& planes,
+                                  const std::vector<int>& plane_of_grid, const SkyAndSuns& ss,
+                                  const engine::SunBins& bins, RunContext& ctx) {
+  const project::Simulation& sim = project.simulation;
+  Progress& progress = ctx.progress;
+  RunLog& log = ctx.log;
+  RunReport& report = ctx.report;
+  const std::size_t n_grids = description.grids.size();
+  const bool keep_surface =
+      std::any_of(plane_of_grid.begin(), plane_of_grid.end(), [](int p) { return p < 0; });
+  const engine::TracingOptions tracing = sun_tracing_options(sim, keep_surface);
+  const engine::CoefficientOptions estimating = coefficient_options(sim);
+  const ContentHash scene_hash = scene_key(description);
+  const ContentHash planes_hash = planes_key(description.grids);
+
+  const engine::SourceSet sources = bins.sources(sky::SunHalfAngle_rad);
+  const std::vector<char> to_trace = sun_bins_to_trace(engine::PortEmitter(scene, sources), bins.size());
+  const std::size_t n_lit = static_cast<std::size_t>(std::count(to_trace.begin(), to_trace.end(), 1));
+  std::vector<std::string> keys(bins.size());
+  for (std::size_t i = 0; i < bins.size(); ++i)
+    keys[i] = sun_photon_key(scene_hash, planes_hash, bins.multiplication_factor(), bins.patch(i),
+                             sky::SunHalfAngle_rad, tracing);
+  log.line(prefix + "sun bins: " + std::to_string(bins.size()) + " on Reinhart MF " +
+           std::to_string(bins.multiplication_factor()) + " for " + std::to_string(ss.suns.size()) +
+           " sun hours; " + std::to_string(n_lit) + " send light through the ports, " +
+           std::to_string(tracing.photons_per_source) + " photons each");
+
+  std::vector<GridSun> result(n_grids);
+  std::vector<std::string> grid_keys(n_grids);
+  std::vector<char> have(n_grids, 0);
+  bool all_cached = true;
+  for (std::size_t g = 0; g < n_grids; ++g) {
+    grid_keys[g] = sun_coefficients_key(keys, SunBinMinimumBoundFraction, description.grids[g], estimating);
+    if (!ctx.settings.force) {
+      if (auto bytes = ctx.store.read("sun-coefficients", grid_keys[g])) {
+        try {
+          result[g].bin_coefficients = decode_matrix(*bytes);
+          have[g] = result[g].bin_coefficients.rows() == description.grids[g].points.size() &&
+                    result[g].bin_coefficients.columns() == bins.size();
+        } catch (const std::exception&) {
+          // damaged: recompute
+        }
+      }
+    }
+    all_cached = all_cached && have[g];
+  }
+
+  report.sun_bins += bins.size();
+  report.sun_bins_lit += n_lit;
+  engine::TracedPhotons photons;
+  if (all_cached) {
+    progress.cached(prefix + "sun photons");
+    log.line(prefix + "sun photons: traced 0 of " + std::to_string(n_lit) +
+             " sun bins (not needed: every grid's sun coefficients are cached)");
+  } else {
+    progress.start(prefix + "sun photons", n_lit, "sun bins");
+    std::vector<engine::TracedPhotons> per_bin(bins.size());
+    std::vector<char> traced(bins.size(), 0);
+    tbb::parallel_for(std::size_t(0), bins.size(), [&](std::size_t i) {
+      if (!to_trace[i]) {
+        per_bin[i].planes.resize(planes.size());
+        per_bin[i].tallies.resize(1);
+        return;
+      }
+      bool done = false;
+      if (!ctx.settings.force) {
+        if (auto bytes = ctx.store.read("sun-photons", keys[i])) {
+          try {
+            per_bin[i] = decode_photons(*bytes);
+            done = true;
+          } catch (const std::exception&) {
+            // damaged: trace again
+          }
+        }
+      }
+      if (!done) {
+        per_bin[i] = trace_sun_bin(scene, materials, bins, i, planes, tracing);
+        ctx.store.write("sun-photons", keys[i], encode_photons(per_bin[i]));
+        traced[i] = 1;
+      }
+      relabel_photons(per_bin[i], static_cast<std::uint32_t>(i));
+      progress.advance(1);
+    });
+    progress.end();
+    const std::size_t n_traced = static_cast<std::size_t>(std::count(traced.begin(), traced.end(), 1));
+    report.sun_bins_traced += n_traced;
+    log.line(prefix + "sun photons: traced " + std::to_string(n_traced) + " of " + std::to_string(n_lit) +
+             " sun bins (" + std::to_string(n_lit - n_traced) + " cached)");
+    photons = engine::merge_traced_photons(std::move(per_bin));
+  }
+
+  for (std::size_t g = 0; g < n_grids; ++g) {
+    const SensorGrid& grid = description.grids[g];
+    if (have[g]) {
+      progress.cached(prefix + "sun coefficients " + grid.name);
+      log.line(prefix + "sun coefficients " + grid.name + ": cached");
+    } else {
+      progress.start(prefix + "sun coefficients " + grid.name, grid.points.size(), "sensors");
+      const int plane = plane_of_grid[g];
+      const engine::GridPhotons grid_photons =
+          plane >= 0 ? engine::GridPhotons::for_plane(planes[static_cast<std::size_t>(plane)],
+                                                      photons.planes[static_cast<std::size_t>(plane)],
+                                                      bins.size())
+                     : engine::GridPhotons::for_surfaces(photons.surface, bins.size());
+      result[g].bin_coefficients = sun_bin_coefficients(grid_photons, grid.points, estimating);
+      ctx.store.write("sun-coefficients", grid_keys[g], encode_matrix(result[g].bin_coefficients));
+      progress.advance(grid.points.size());
+      progress.end();
+      log.line(prefix + "sun coefficients " + grid.name + ": estimated at " +
+               std::to_string(grid.points.size()) + " sensors");
+    }
+
+    // The exact direct sun of every hour.
+    std::vector<std::size_t> steps;
+    std::vector<Vec3> directions;
+    for (const sky::SunRecord& sun : ss.suns) {
+      steps.push_back(sun.step);
+      directions.push_back(sun.direction);
+    }
+    const std::string key = direct_sun_key(scene_hash, grid, steps, directions, SunDirectSamples, sim.seed);
+    bool cached = false;
+    if (!ctx.settings.force) {
+      if (auto bytes = ctx.store.read("sun-direct", key)) {
+        try {
+          result[g].direct = decode_matrix(*bytes);
+          cached = result[g].direct.rows() == grid.points.size() && result[g].direct.columns() == ss.suns.size();
+        } catch (const std::exception&) {
+          // damaged: recompute
+        }
+      }
+    }
+    if (cached) {
+      progress.cached(prefix + "direct sun " + grid.name);
+      log.line(prefix + "direct sun " + grid.name + ": cached");
+    } else {
+      progress.start(prefix + "direct sun " + grid.name, grid.points.size(), "sensors");
+      result[g].direct = direct_sun_coefficients(scene, materials, grid.points, ss.suns, SunDirectSamples, sim.seed);
+      ctx.store.write("sun-direct", key, encode_matrix(result[g].direct));
+      progress.advance(grid.points.size());
+      progress.end();
+      log.line(prefix + "direct sun " + grid.name + ": traced for " + std::to_string(ss.suns.size()) +
+               " sun hours at " + std::to_string(grid.points.size()) + " sensors");
+    }
+  }
+  return result;
 }
 
 /// One case: photons, coefficients, daylight factor, annual results, into `dir`/<grid>/.
@@ -311,17 +524,47 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
 
   // 5-6. Annual illuminance and metrics.
   const bool annual = project.outputs.annual_illuminance || project.outputs.metrics;
-  if (annual && project.weather.path.empty()) {
-    log.line(prefix + "annual: the project has no weather file; annual outputs skipped");
+  const bool sun_bins = sim.sun == project::SunMode::Bins;
+  AnnualStudySettings annual_settings;
+  annual_settings.metrics = metric_settings(project.metrics);
+  annual_settings.occupancy_start_h = project.metrics.occupancy_start_h;
+  annual_settings.occupancy_end_h = project.metrics.occupancy_end_h;
+  AnnualOutputs which;
+  which.illuminance = project.outputs.annual_illuminance;
+  which.metrics = project.outputs.metrics;
+  if ((annual || (sun_bins && project.outputs.coefficients)) && project.weather.path.empty()) {
+    log.line(prefix + "annual: the project has no weather file; annual outputs" +
+             (sun_bins ? std::string(" and sun coefficients") : std::string()) + " skipped");
+  } else if (sun_bins && (annual || project.outputs.coefficients)) {
+    // Sun bins: sky-only matrix + exact direct sun + interpolated indirect sun.
+    const SkyAndSuns& ss = sky_and_suns(project, basis, ctx);
+    std::vector<Vec3> directions;
+    for (const sky::SunRecord& sun : ss.suns) directions.push_back(sun.direction);
+    const engine::SunBins bins = engine::SunBins::for_suns(directions, sim.sun_mf);
+    const std::vector<GridSun> sun =
+        run_sun_bins(project, prefix, description, scene, materials, planes, plane_of_grid, ss, bins, ctx);
+    for (std::size_t g = 0; g < description.grids.size(); ++g) {
+      const SensorGrid& grid = description.grids[g];
+      if (project.outputs.coefficients) {
+        RadianceMatrix c = sun[g].bin_coefficients;
+        c.header_lines().push_back("dayphoton sun-bin coefficients: caustic + global irradiance per unit "
+                                   "disc radiance; columns = rows of sun_bins.csv");
+        c.write_file(join(folders[g], "coefficients_sun.mtx"), matrix_format);
+        write_sun_bins_csv(bins, ss.suns, join(folders[g], "sun_bins.csv"));
+      }
+      if (!annual) continue;
+      progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
+      const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps);
+      const metrics::IlluminanceTable indirect = indirect_sun_table(sun[g].bin_coefficients, bins, ss.suns, ss.sky.steps);
+      const AnnualStudy study =
+          compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, direct, indirect, annual_settings);
+      write_annual_outputs(study, grid.points, annual_settings, folders[g], which);
+      progress.advance(ss.sky.steps.size());
+      progress.end();
+      grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
+    }
   } else if (annual) {
     const AnnualSky& sky = annual_sky(project, basis, ctx);
-    AnnualStudySettings annual_settings;
-    annual_settings.metrics = metric_settings(project.metrics);
-    annual_settings.occupancy_start_h = project.metrics.occupancy_start_h;
-    annual_settings.occupancy_end_h = project.metrics.occupancy_end_h;
-    AnnualOutputs which;
-    which.illuminance = project.outputs.annual_illuminance;
-    which.metrics = project.outputs.metrics;
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
@@ -348,8 +591,13 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   log.line("project " + project.path + " -> " + report.output_dir);
   if (sim.sun == project::SunMode::Bins)
     report.notes.push_back(
-        "sun: sun bins are not built yet (issue 6); the sun is spread into the sky patches as "
-        "RADIANCE's gendaymtx does");
+        "sun: sun bins (Reinhart MF " + std::to_string(sim.sun_mf) +
+        " patch centres on the sun path, indirect light interpolated) and the direct sun traced "
+        "exactly every hour; the sky matrix excludes the sun; ASE from the direct sun");
+  else
+    report.notes.push_back(
+        "sun: spread into the 4 nearest sky patches as RADIANCE's gendaymtx does (RADIANCE-compatible "
+        "mode); no ASE");
   report.notes.push_back(
       "sky: the annual sky uses the site of the weather file's header (as gendaymtx does)");
   if (project.outputs.images || project.outputs.report)
@@ -357,7 +605,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
         "outputs: images and report.html are not produced yet (issue 7); the tables are");
   for (const std::string& n : report.notes) log.line(n);
 
-  RunContext ctx{settings, progress, log, report, store, std::nullopt};
+  RunContext ctx{settings, progress, log, report, store, std::nullopt, std::nullopt};
   // The project as written is the base case, in <output>/<grid>/; each variant is studied
   // in addition, in <output>/variants/<variant>/<grid>/ (a folder no grid name can clash with).
   nlohmann::json grids = run_case(project, "", report.output_dir, ctx);
@@ -384,11 +632,21 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                       {"direct_samples_per_bin", sim.direct_samples_per_bin},
                       {"seed", sim.seed},
                       {"ground_reflectance", sim.ground_reflectance},
-                      {"sun", "spread into patches (gendaymtx style)"},
-                      {"annual_sky", "RADIANCE-compatible Perez sky matrix (gendaymtx conventions), sun spread into patches"}}},
+                      {"sun", sim.sun == project::SunMode::Bins ? "bins" : "spread"},
+                      {"sun_mf", sim.sun_mf},
+                      {"sun_photons_per_bin", sun_tracing_options(sim, true).photons_per_source},
+                      {"sun_direct_samples", SunDirectSamples},
+                      {"annual_sky", sim.sun == project::SunMode::Bins
+                                         ? "RADIANCE-compatible Perez sky matrix (gendaymtx conventions) without "
+                                           "the sun; direct sun traced exactly every hour, indirect sun "
+                                           "interpolated from sun bins"
+                                         : "RADIANCE-compatible Perez sky matrix (gendaymtx conventions), sun "
+                                           "spread into patches"}}},
       {"cache", {{"sources", report.sources}, {"sources_traced", report.sources_traced},
                  {"sources_cached", report.sources_cached},
-                 {"grids_estimated", report.grids_estimated}, {"grids_cached", report.grids_cached}}},
+                 {"grids_estimated", report.grids_estimated}, {"grids_cached", report.grids_cached},
+                 {"sun_bins", report.sun_bins}, {"sun_bins_lit", report.sun_bins_lit},
+                 {"sun_bins_traced", report.sun_bins_traced}}},
       {"grids", grids},
       {"variants", variants},
       {"notes", report.notes}};

@@ -5,9 +5,21 @@
 //   coefficients of a grid : the photon-pass key of every source, the grid's sensors,
 //                         the estimate and direct-sampling options
 //   sky matrix          : the weather file's bytes (the site comes from its header), the
-//                         basis, the ground reflectance, the sky mode
+//                         basis, the ground reflectance, the sky mode (sun spread or
+//                         excluded); in the sun-bins mode the hourly suns are stored under
+//                         the same key
+// Sun bins (`sun: bins`, study/annual_sun.h):
+//   photons of a sun bin: the scene, the receiver planes, the bin's Reinhart MF and patch
+//                         (its direction), the disc's radius, the tracing options; NOT the
+//                         weather file, so another year's suns reuse every bin they share
+//   sun coefficients of a grid: the photon key of every sun bin, the selection rule, the
+//                         grid's sensors, the estimate options
+//   direct sun of a grid : the scene, the grid's sensors, each sun's step and direction (not
+//                         its radiance: the coefficients are per unit radiance), the number
+//                         of shadow rays and the seed
 // A changed sensor spacing therefore re-estimates without re-tracing (the plane is the same);
-// a changed weather file re-multiplies only; a changed material re-traces everything.
+// a changed weather file re-multiplies only (and re-traces the direct sun only if a sun
+// moved); a changed material re-traces everything.
 #pragma once
 
 #include <string>
@@ -32,5 +44,22 @@ std::string photon_source_key(const ContentHash& scene, const ContentHash& plane
                               const engine::TracingOptions& options);
 std::string coefficients_key(const std::vector<std::string>& photon_keys, const SensorGrid& grid,
                              const engine::CoefficientOptions& options);
+
+/// Sky matrix of a weather file: `sun_excluded` false = the RADIANCE-compatible matrix with the
+/// sun spread into patches, true = the same without the sun (and the suns beside it).
+std::string sky_matrix_key(const std::string& weather_path, const sky::PatchBasis& basis,
+                           double ground_reflectance, bool sun_excluded);
+/// Photons of one sun bin: patch `patch` of Reinhart MF `mf`, a disc of `half_angle_rad`.
+std::string sun_photon_key(const ContentHash& scene, const ContentHash& planes, int mf, int patch,
+                           double half_angle_rad, const engine::TracingOptions& options);
+/// Photon coefficients of a grid for the sun bins; `minimum_bound_fraction` is the rule that
+/// selects the bins traced (annual_sun.h).
+std::string sun_coefficients_key(const std::vector<std::string>& sun_photon_keys,
+                                 double minimum_bound_fraction, const SensorGrid& grid,
+                                 const engine::CoefficientOptions& options);
+/// Exact direct sun of a grid for these suns (steps and directions).
+std::string direct_sun_key(const ContentHash& scene, const SensorGrid& grid,
+                           const std::vector<std::size_t>& steps, const std::vector<Vec3>& directions,
+                           int samples, std::uint64_t seed);
 
 }  // namespace dayphoton::study

@@ -8,9 +8,16 @@
 //   3. coefficients per grid: direct (shadow rays) + caustic + global photon estimates
 //   4. daylight factor per grid: coefficients x CIE overcast sky vector (10 000 lux,
 //                   ground from the project's ground reflectance)
-//   5. sky matrix  : the weather file's hourly Perez skies (sun spread into patches as
-//                   gendaymtx does until sun bins exist: issue 6)
-//   6. annual      : coefficients x sky matrix -> illuminance, metrics
+//   5. sky matrix  : the weather file's hourly Perez skies, RADIANCE-compatible (gendaymtx
+//                   conventions); with `sun: spread` the sun is spread into the 4 nearest
+//                   patches, with `sun: bins` (the default) it is left out and listed hour
+//                   by hour instead
+//   5b. sun bins (`sun: bins`, study/annual_sun.h): the Reinhart MF sun_mf patch centres
+//                   on the year's sun path, each a sun disc with its own photons (one cached
+//                   artefact per bin); per grid their caustic + global coefficients and the
+//                   exact direct sun of every hour (shadow rays)
+//   6. annual      : sky coefficients x sky matrix (+ direct sun + interpolated indirect sun)
+//                   -> illuminance, metrics (ASE from the direct sun in the sun-bins mode)
 //   7. files       : per grid folder and summary.json (result_files.h, docs/outputs.md)
 // The run log (<output>/run.log, and the progress output) states for every step whether it
 // was computed or taken from the cache, e.g. "photons: traced 0 of 146 sources (146 cached)".
@@ -40,6 +47,9 @@ struct RunReport {
   std::size_t sources = 0, sources_traced = 0, sources_cached = 0;
   std::size_t grids_estimated = 0, grids_cached = 0;
   bool sky_matrix_cached = false;
+  std::size_t sun_bins = 0;         ///< sun bins of all cases (sun: bins)
+  std::size_t sun_bins_lit = 0;     ///< of which send light through the ports (traced or cached)
+  std::size_t sun_bins_traced = 0;  ///< of which were traced in this run
   std::vector<GridReport> grids;
   std::vector<std::string> notes;  ///< things the user should know (e.g. sun mode)
 };
