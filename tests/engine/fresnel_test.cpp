@@ -1,6 +1,6 @@
 // Fresnel reflectance (engine/src/fresnel.h) and the thin-glass pane series
 // (engine/src/thin_glass_fresnel.h) against the digest of seeds 002-004, section 4 checks
-// #3-#5, and RADIANCE's documented glass conversion (/work/shared/refdata/scenes/materials.rad:
+// #3-#5, and RADIANCE's documented glass conversion (../shared/refdata/scenes/materials.rad:
 // Tn = 0.60 -> tn = 0.654). These private helpers are included by path: they are the
 // building blocks of the public Material models and carry the published numbers.
 #include <gtest/gtest.h>
