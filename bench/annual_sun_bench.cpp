@@ -16,7 +16,8 @@
 // Also timed: sun-bin tracing, estimates, exact direct sun for all hours.
 //
 // Usage: annual_sun_bench [stride=1] [sun photon fraction=SunBinPhotonFraction]
-//                         [sun bandwidth=project bandwidth] [threads]
+//                         [sun bandwidth=study::sun_bin_bandwidth(project bandwidth)] [threads]
+//                         [reference photon factor=1]   (0 = the default)
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
@@ -228,7 +229,7 @@ void radiance_sun_hour(const engine::Scene& scene, const std::vector<engine::Mat
       sum2 += (a / b - 1) * (a / b - 1), bias += a / b - 1, ours += a, theirs += b, ++n;
     }
   };
-  Stat bins_out, exact_out, spread_out, bins_in, exact_in, spread_in;
+  Stat bins_out, exact_out, spread_out, bins_in, exact_in, spread_in, bins_back, exact_back, spread_back;
   for (std::size_t s = 0; s < sensors.size(); ++s) {
     double indirect = 0;
     for (int k = 0; k < st.count; ++k) indirect += st.weight[std::size_t(k)] * lux(bc, s, std::size_t(st.index[std::size_t(k)]));
@@ -240,6 +241,7 @@ void radiance_sun_hour(const engine::Scene& scene, const std::vector<engine::Mat
       e_spread += lux(sky_c, s, std::size_t(best[k])) * (1 / (1.002 - best_cos[k]) / wsum) * radiance * omega_sun /
                   basis.solid_angle_sr(best[k]);
     const bool outside = ys[s] >= 1.5;
+    if (ys[s] >= 6.0) bins_back.add(e_bins, ref[s]), exact_back.add(e_exact, ref[s]), spread_back.add(e_spread, ref[s]);
     (outside ? bins_out : bins_in).add(e_bins, ref[s]);
     (outside ? exact_out : exact_in).add(e_exact, ref[s]);
     (outside ? spread_out : spread_in).add(e_spread, ref[s]);
@@ -255,21 +257,94 @@ void radiance_sun_hour(const engine::Scene& scene, const std::vector<engine::Mat
   row("exact direct + sun-bin indirect", bins_out, bins_in);
   row("exact direct + exact indirect (10 x photons)", exact_out, exact_in);
   row("spread into 4 patches x sky coefficients", spread_out, spread_in);
+  std::printf("  back rows y >= 6 m (%d sensors), mean ratio to rtrace: sun bins %.3f, exact %.3f, spread %.3f\n",
+              bins_back.n, bins_back.ours / bins_back.theirs, exact_back.ours / exact_back.theirs,
+              spread_back.ours / spread_back.theirs);
+}
+
+/// Annual sun energy through the ports (lumens x hours): the exact suns (disc at the
+/// record's direction, tau(theta) cos(theta) per port) against the spread-sun mode's sun
+/// (the spread matrix minus the sky-only matrix, each patch's radiance times the patch
+/// integral of tau cos by a 16 x 16 midpoint rule), split into the hours with a sun record
+/// and the others (suns below the horizon that gendaymtx still spreads into patches).
+void window_sun_energy(const SceneDescription& description, const std::vector<engine::Material>& materials,
+                       const sky::PatchBasis& basis, const study::AnnualSky& spread, const study::SkyAndSuns& ss) {
+  Vec3 room_centre;
+  double n_vertices = 0;
+  for (const Surface& s : description.surfaces)
+    for (const Vec3& v : s.vertices) room_centre = room_centre + v, n_vertices += 1;
+  room_centre = room_centre / n_vertices;
+  struct Port {
+    Vec3 outward;
+    double area = 0;
+    int material = 0;
+  };
+  std::vector<Port> ports;
+  for (const Surface& s : description.surfaces) {
+    if (!s.port) continue;
+    Vec3 n, c;  // Newell's normal (2 x area), centroid of the vertices
+    for (std::size_t i = 0; i < s.vertices.size(); ++i) {
+      n = n + cross(s.vertices[i], s.vertices[(i + 1) % s.vertices.size()]);
+      c = c + s.vertices[i] / double(s.vertices.size());
+    }
+    Port p;
+    p.area = 0.5 * length(n);
+    p.outward = normalize(n);
+    if (dot(p.outward, c - room_centre) < 0) p.outward = p.outward * -1.0;
+    p.material = s.material;
+    ports.push_back(p);
+  }
+  auto tau_cos = [&](const Vec3& w) {  // w toward the sky; sum over ports of A tau cos
+    double sum = 0;
+    for (const Port& p : ports) {
+      const double c = dot(w, p.outward);
+      if (c > 0) sum += p.area * c * materials[std::size_t(p.material)].straight_transmittance(-w, p.outward).y;
+    }
+    return sum;
+  };
+  const double omega_sun = 2 * Pi * (1 - std::cos(sky::SunHalfAngle_rad));
+  double exact = 0;
+  std::vector<char> sunny(ss.sky.steps.size(), 0);
+  for (const sky::SunRecord& sun : ss.suns) {
+    exact += 179.0 * sun.disc_radiance * omega_sun * tau_cos(sun.direction);
+    sunny[sun.step] = 1;
+  }
+  std::vector<double> patch_integral(std::size_t(basis.bin_count()), 0.0);
+  constexpr int N = 16;
+  for (int p = 1; p < basis.bin_count(); ++p) {
+    for (int i = 0; i < N; ++i)
+      for (int j = 0; j < N; ++j) patch_integral[std::size_t(p)] += tau_cos(basis.sample_direction(p, (i + 0.5) / N, (j + 0.5) / N));
+    patch_integral[std::size_t(p)] *= basis.solid_angle_sr(p) / (N * N);
+  }
+  double with_record = 0, without = 0;
+  for (std::size_t t = 0; t < ss.sky.steps.size(); ++t) {
+    double e = 0;
+    for (int p = 1; p < basis.bin_count(); ++p)
+      e += 179.0 * (double(spread.matrix.at(std::size_t(p), t, 1)) - double(ss.sky.matrix.at(std::size_t(p), t, 1))) *
+           patch_integral[std::size_t(p)];
+    (sunny[t] ? with_record : without) += e;
+  }
+  std::printf("annual sun energy through the ports (Mlm h): exact suns %.2f; spread-sun mode %.2f (%+.2f %%), of "
+              "which %.2f in hours with a sun record (%+.2f %%) and %.3f in hours whose sun is below the horizon\n",
+              exact / 1e6, (with_record + without) / 1e6, 100 * ((with_record + without) / exact - 1), with_record / 1e6,
+              100 * (with_record / exact - 1), without / 1e6);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::size_t stride = argc > 1 ? std::stoul(argv[1]) : 1;
-  const double fraction = argc > 2 ? std::stod(argv[2]) : study::SunBinPhotonFraction;
+  const double fraction = argc > 2 && std::stod(argv[2]) > 0 ? std::stod(argv[2]) : study::SunBinPhotonFraction;
   std::unique_ptr<tbb::global_control> limit;
-  if (argc > 4)
+  if (argc > 4 && std::stoul(argv[4]) > 0)
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                   std::stoul(argv[4]));
   const project::Project proj =
       project::load_project(std::string(DAYPHOTON_BENCH_SOURCE_DIR) + "/projects/office/project.yaml");
   const project::Simulation& sim = proj.simulation;
-  const std::size_t sun_bandwidth = argc > 3 ? std::stoul(argv[3]) : std::size_t(sim.bandwidth);
+  const std::size_t sun_bandwidth =
+      argc > 3 && std::stoul(argv[3]) > 0 ? std::stoul(argv[3]) : study::sun_bin_bandwidth(std::size_t(sim.bandwidth));
+  const double ref_factor = argc > 5 ? std::stod(argv[5]) : 1.0;
 
   const SceneDescription description = project::build_scene_description(proj);
   const engine::Scene scene = engine::Scene::build(description);
@@ -300,11 +375,15 @@ int main(int argc, char** argv) {
   estimating.density.bandwidth = std::size_t(sim.bandwidth);
   estimating.direct.samples_per_source = sim.direct_samples_per_bin;
   estimating.direct.seed = sim.seed;
-  RadianceMatrix sky_c;
+  RadianceMatrix sky_c, sky_c_direct;
   {
     const engine::TracedPhotons traced = engine::trace_photons(scene, materials, sky_sources, {plane}, sky_tracing);
     const engine::GridPhotons gp = engine::GridPhotons::for_plane(plane, traced.planes[0], sky_sources.size());
-    sky_c = engine::daylight_coefficients(scene, materials, sky_sources, gp, sensors, estimating).to_matrix();
+    engine::DaylightCoefficients dc = engine::daylight_coefficients(scene, materials, sky_sources, gp, sensors, estimating);
+    sky_c = dc.to_matrix();
+    dc.caustic.assign(dc.caustic.size(), Vec3{});
+    dc.global.assign(dc.global.size(), Vec3{});
+    sky_c_direct = dc.to_matrix();  // the direct part alone
   }
   const double t_sky = seconds_since(t0);
   const metrics::IlluminanceTable sky_table = study::annual_illuminance(sky_c, ss.sky.matrix, ss.sky.steps);
@@ -349,10 +428,12 @@ int main(int argc, char** argv) {
   std::vector<sky::SunRecord> compared;
   for (std::size_t i = 0; i < suns.size(); i += stride) compared.push_back(suns[i]);
   t0 = Clock::now();
-  const RadianceMatrix ref_c = exact_sun_coefficients(scene, materials, plane, sensors, compared, sun_tracing,
+  engine::TracingOptions ref_tracing = sun_tracing;
+  ref_tracing.photons_per_source = static_cast<std::size_t>(double(ref_tracing.photons_per_source) * ref_factor);
+  const RadianceMatrix ref_c = exact_sun_coefficients(scene, materials, plane, sensors, compared, ref_tracing,
                                                       sun_estimating, minimum_bound, 1000);
   const double t_ref = seconds_since(t0);
-  const RadianceMatrix ref2_c = exact_sun_coefficients(scene, materials, plane, sensors, compared, sun_tracing,
+  const RadianceMatrix ref2_c = exact_sun_coefficients(scene, materials, plane, sensors, compared, ref_tracing,
                                                        sun_estimating, minimum_bound, 2000);
   const std::vector<double> ref = lux_of(ref_c, compared), ref2 = lux_of(ref2_c, compared);
 
@@ -407,11 +488,61 @@ int main(int argc, char** argv) {
               t_sky, t_bins_trace, t_bins_estimate, suns.size(), S, study::SunDirectSamples, t_direct, n, t_ref);
   std::printf("compared: %zu sun hours (every %zu-th), %zu occupied%s\n", n, stride, occupied_hours,
               stride == 1 ? " hours of the year (DA, UDI over the year)" : " (DA, UDI over these)");
+  // Indirect sun summed over the compared hours, per sensor row: sun bins / exact.
+  {
+    std::vector<double> ys;
+    for (const SensorPoint& p : sensors)
+      if (std::find(ys.begin(), ys.end(), p.position.y) == ys.end()) ys.push_back(p.position.y);
+    std::sort(ys.begin(), ys.end());
+    std::printf("indirect sun over the compared hours per row, sun bins / exact:");
+    for (double y : ys) {
+      double a = 0, b = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t s = 0; s < S; ++s)
+          if (sensors[s].position.y == y) a += interpolated[i * S + s], b += ref[i * S + s];
+      std::printf(" %.3f", a / b);
+    }
+    std::printf("\n");
+  }
   print("sun bins vs exact", compare(base, interpolated, ref, S, occupied, occupied_hours));
   print("nearest bin vs exact", compare(base, nearest, ref, S, occupied, occupied_hours));
   print("exact (seeds 2) vs exact: noise", compare(base, ref2, ref, S, occupied, occupied_hours));
   if (stride == 1)
     std::printf("  (add %.2f points of sunless occupied hours to the mean DA300 values above)\n", sunless_da_mean);
   radiance_sun_hour(scene, materials, plane, sensors, sky_c, basis, sim.sun_mf, sun_tracing, sun_estimating);
+  const study::AnnualSky spread =
+      study::annual_sky_from_epw(epw, basis, study::radiance_compatible_sky_options(sim.ground_reflectance));
+  window_sun_energy(description, materials, basis, spread, ss);
+  // The sun's part of the annual illuminance per sensor row, direct and indirect, in both
+  // modes: spread = sky coefficients (direct part / photon part) x (spread - sky-only
+  // matrix); bins = exact direct + interpolated indirect. Mean over the occupied hours.
+  {
+    RadianceMatrix sun_only = spread.matrix;
+    for (std::size_t i = 0; i < sun_only.data().size(); ++i) sun_only.data()[i] -= ss.sky.matrix.data()[i];
+    const metrics::IlluminanceTable spread_all = study::annual_illuminance(sky_c, sun_only, ss.sky.steps);
+    const metrics::IlluminanceTable spread_direct = study::annual_illuminance(sky_c_direct, sun_only, ss.sky.steps);
+    const metrics::OccupancySchedule occ = metrics::OccupancySchedule::daily_hours(
+        ss.sky.steps, proj.metrics.occupancy_start_h, proj.metrics.occupancy_end_h);
+    std::vector<double> ys;
+    for (const SensorPoint& p : sensors)
+      if (std::find(ys.begin(), ys.end(), p.position.y) == ys.end()) ys.push_back(p.position.y);
+    std::sort(ys.begin(), ys.end());
+    std::printf("sun part of the mean occupied illuminance per row (lux): direct spread / exact; indirect spread / sun bins\n");
+    for (double y : ys) {
+      double sd = 0, ed = 0, si = 0, bi = 0;
+      int count = 0;
+      for (std::size_t s = 0; s < S; ++s) {
+        if (sensors[s].position.y != y) continue;
+        ++count;
+        for (std::size_t t = 0; t < ss.sky.steps.size(); ++t) {
+          if (!occ.occupied(t)) continue;
+          sd += spread_direct.lux(t, s), ed += direct_table.lux(t, s);
+          si += double(spread_all.lux(t, s)) - spread_direct.lux(t, s), bi += indirect_table.lux(t, s);
+        }
+      }
+      const double k = 1.0 / (count * double(occ.occupied_count()));
+      std::printf("  y %.1f m: direct %.0f / %.0f, indirect %.1f / %.1f\n", y, sd * k, ed * k, si * k, bi * k);
+    }
+  }
   return 0;
 }

@@ -53,6 +53,11 @@ void check_suns(const std::vector<sky::SunRecord>& suns, std::size_t steps) {
 
 }  // namespace
 
+std::size_t sun_bin_bandwidth(std::size_t bandwidth) {
+  const auto scaled = static_cast<std::size_t>(std::llround(double(bandwidth) * SunBinBandwidthFraction));
+  return std::max(SunBinMinimumBandwidth, scaled);
+}
+
 std::vector<char> sun_bins_to_trace(const engine::PortEmitter& emitter, std::size_t bins) {
   double largest = 0;
   for (std::size_t i = 0; i < bins; ++i) largest = std::max(largest, emitter.bound_flux(i));

@@ -224,7 +224,8 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   const bool keep_surface =
       std::any_of(plane_of_grid.begin(), plane_of_grid.end(), [](int p) { return p < 0; });
   const engine::TracingOptions tracing = sun_tracing_options(sim, keep_surface);
-  const engine::CoefficientOptions estimating = coefficient_options(sim);
+  engine::CoefficientOptions estimating = coefficient_options(sim);
+  estimating.density.bandwidth = sun_bin_bandwidth(estimating.density.bandwidth);
   const ContentHash scene_hash = scene_key(description);
   const ContentHash planes_hash = planes_key(description.grids);
 
@@ -238,7 +239,8 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   log.line(prefix + "sun bins: " + std::to_string(bins.size()) + " on Reinhart MF " +
            std::to_string(bins.multiplication_factor()) + " for " + std::to_string(ss.suns.size()) +
            " sun hours; " + std::to_string(n_lit) + " send light through the ports, " +
-           std::to_string(tracing.photons_per_source) + " photons each");
+           std::to_string(tracing.photons_per_source) + " photons each, bandwidth " +
+           std::to_string(estimating.density.bandwidth));
 
   std::vector<GridSun> result(n_grids);
   std::vector<std::string> grid_keys(n_grids);
@@ -633,9 +635,6 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                       {"seed", sim.seed},
                       {"ground_reflectance", sim.ground_reflectance},
                       {"sun", sim.sun == project::SunMode::Bins ? "bins" : "spread"},
-                      {"sun_mf", sim.sun_mf},
-                      {"sun_photons_per_bin", sun_tracing_options(sim, true).photons_per_source},
-                      {"sun_direct_samples", SunDirectSamples},
                       {"annual_sky", sim.sun == project::SunMode::Bins
                                          ? "RADIANCE-compatible Perez sky matrix (gendaymtx conventions) without "
                                            "the sun; direct sun traced exactly every hour, indirect sun "
@@ -650,6 +649,12 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
       {"grids", grids},
       {"variants", variants},
       {"notes", report.notes}};
+  if (sim.sun == project::SunMode::Bins) {
+    summary["simulation"]["sun_mf"] = sim.sun_mf;
+    summary["simulation"]["sun_photons_per_bin"] = sun_tracing_options(sim, true).photons_per_source;
+    summary["simulation"]["sun_bandwidth"] = sun_bin_bandwidth(static_cast<std::size_t>(sim.bandwidth));
+    summary["simulation"]["sun_direct_samples"] = SunDirectSamples;
+  }
   nlohmann::json timings = nlohmann::json::array();
   for (const Progress::StepTime& s : progress.steps())
     timings.push_back({{"step", s.name}, {"seconds", s.seconds}, {"work", s.work}, {"unit", s.unit},
