@@ -17,7 +17,7 @@
 //
 // Usage: annual_sun_bench [stride=1] [sun photon fraction=SunBinPhotonFraction]
 //                         [sun bandwidth=study::sun_bin_bandwidth(project bandwidth)] [threads]
-//                         [reference photon factor=1]   (0 = the default)
+//                         [reference photon factor=1] [sun_mf=project's]   (0 = the default)
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
@@ -344,7 +344,8 @@ int main(int argc, char** argv) {
   const project::Simulation& sim = proj.simulation;
   const std::size_t sun_bandwidth =
       argc > 3 && std::stoul(argv[3]) > 0 ? std::stoul(argv[3]) : study::sun_bin_bandwidth(std::size_t(sim.bandwidth));
-  const double ref_factor = argc > 5 ? std::stod(argv[5]) : 1.0;
+  const double ref_factor = argc > 5 && std::stod(argv[5]) > 0 ? std::stod(argv[5]) : 1.0;
+  const int sun_mf = argc > 6 && std::stoi(argv[6]) > 0 ? std::stoi(argv[6]) : sim.sun_mf;
 
   const SceneDescription description = project::build_scene_description(proj);
   const engine::Scene scene = engine::Scene::build(description);
@@ -391,7 +392,7 @@ int main(int argc, char** argv) {
   // Sun bins: chosen, traced, estimated.
   std::vector<Vec3> directions;
   for (const sky::SunRecord& s : suns) directions.push_back(s.direction);
-  const engine::SunBins bins = engine::SunBins::for_suns(directions, sim.sun_mf);
+  const engine::SunBins bins = engine::SunBins::for_suns(directions, sun_mf);
   engine::TracingOptions sun_tracing;
   sun_tracing.photons_per_source =
       static_cast<std::size_t>(std::llround(double(sim.photons_per_bin) * fraction));
@@ -479,7 +480,7 @@ int main(int argc, char** argv) {
   double sunless_da_mean = 0;
   for (int d : da_sunless) sunless_da_mean += 100.0 * d / double(occupied_hours) / S;
 
-  std::printf("office, sun bins on Reinhart MF %d: %zu bins (%zu receive light) for %zu sun hours\n", sim.sun_mf,
+  std::printf("office, sun bins on Reinhart MF %d: %zu bins (%zu receive light) for %zu sun hours\n", sun_mf,
               bins.size(), traced_bins, suns.size());
   std::printf("  sun-bin photons %zu per bin (%.3f x %lld), sun bandwidth %zu; %zu plane photons stored\n",
               sun_tracing.photons_per_source, fraction, sim.photons_per_bin, sun_bandwidth, stored);
@@ -509,7 +510,7 @@ int main(int argc, char** argv) {
   print("exact (seeds 2) vs exact: noise", compare(base, ref2, ref, S, occupied, occupied_hours));
   if (stride == 1)
     std::printf("  (add %.2f points of sunless occupied hours to the mean DA300 values above)\n", sunless_da_mean);
-  radiance_sun_hour(scene, materials, plane, sensors, sky_c, basis, sim.sun_mf, sun_tracing, sun_estimating);
+  radiance_sun_hour(scene, materials, plane, sensors, sky_c, basis, sun_mf, sun_tracing, sun_estimating);
   const study::AnnualSky spread =
       study::annual_sky_from_epw(epw, basis, study::radiance_compatible_sky_options(sim.ground_reflectance));
   window_sun_energy(description, materials, basis, spread, ss);
