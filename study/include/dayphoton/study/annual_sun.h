@@ -93,7 +93,7 @@ engine::TracedPhotons trace_sun_bins(const engine::Scene& scene,
 /// bandwidth its kernel would be sqrt(10) times wider; in the office that bias reached +5 %
 /// in the middle of the room and -9 % at the back wall (a convex decay, which a local-linear
 /// fit over a one-sided disc underestimates). A quarter of the bandwidth keeps the kernel
-/// 1.6 times the sky's: bias within +-2.5 % of a reference with 10 times the photons, for
+/// 1.6 times the sky's: per-row bias -2.4 to +3.5 % against 10 times the photons, for
 /// 25 % more noise per hour, which the annual sums average out (docs/sun.md).
 constexpr double SunBinBandwidthFraction = 0.25;
 constexpr std::size_t SunBinMinimumBandwidth = 16;
