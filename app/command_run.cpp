@@ -34,6 +34,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     study::Progress progress(out, style);
     study::RunSettings settings;
     settings.force = options.force;
+    settings.version = DAYPHOTON_VERSION;
     if (!options.output_dir.empty()) {
       settings.output_dir =
           projects.size() == 1

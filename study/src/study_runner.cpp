@@ -25,6 +25,7 @@
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/report_html.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/weather/epw_reader.h"
 #include "dayphoton/weather/site_clock.h"
@@ -602,9 +603,6 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
         "mode); no ASE");
   report.notes.push_back(
       "sky: the annual sky uses the site of the weather file's header (as gendaymtx does)");
-  if (project.outputs.images || project.outputs.report)
-    report.notes.push_back(
-        "outputs: images and report.html are not produced yet (issue 7); the tables are");
   for (const std::string& n : report.notes) log.line(n);
 
   RunContext ctx{settings, progress, log, report, store, std::nullopt, std::nullopt};
@@ -622,6 +620,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   // 7. summary.json and the run log.
   nlohmann::json summary = {
       {"project", project.path},
+      {"versions", {{"dayphoton", settings.version}, {"compiler", __VERSION__}}},
       {"output", report.output_dir},
       {"site", {{"name", project.site.name}, {"latitude_deg", project.site.latitude_deg},
                 {"longitude_deg", project.site.longitude_deg}, {"time_zone_h", project.site.time_zone_h}}},
@@ -662,6 +661,14 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   summary["timings"] = timings;
   write_file_atomically(join(report.output_dir, "summary.json"), summary.dump(2) + "\n");
   write_file_atomically(join(report.output_dir, "run.log"), log.text());
+  // 8. Images and report.html, from the files just written (docs/report.md).
+  if (project.outputs.images || project.outputs.report) {
+    progress.start("images and report", 1, "report");
+    write_images_and_report(report.output_dir,
+                            ViewOutputs{project.outputs.images, project.outputs.report, {}});
+    progress.advance(1);
+    progress.end();
+  }
   return report;
 }
 

@@ -34,6 +34,7 @@ namespace dayphoton::study {
 struct RunSettings {
   std::string output_dir;  ///< empty: the project's outputs.folder
   bool force = false;      ///< ignore the cache (recompute and overwrite)
+  std::string version;     ///< dayphoton's version, recorded in summary.json
 };
 
 struct GridReport {
