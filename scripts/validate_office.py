@@ -15,7 +15,7 @@ Checks (issue 5 acceptance):
   - annual (sun spread into patches, coefficients only): DA300 per sensor within 2 points,
     sDA300/50% within 3 points, UDI bins within 2 points of office_annual_metrics_classic.csv;
   - `dayphoton annual` on the exported coefficients with the sky matrix written to a
-    RADIANCE file equals the in-process annual result to 1e-4 relative.
+    RADIANCE file equals the same computation with the sky built in-process to 1e-4 relative.
 """
 import argparse
 import csv
@@ -115,9 +115,14 @@ def main():
     bin_rel = {p: ours_bin[p] / ref_bin[p] - 1 for p in compared}
     worst_bin = max(bin_rel, key=lambda p: abs(bin_rel[p]))
 
-    # Annual: in-process (the run's metrics.csv) against RADIANCE's dctimestep result.
+    # Annual in the RADIANCE-compatible mode (sky coefficients only, the sun spread into
+    # patches as gendaymtx does): `dayphoton annual` on the run's exported coefficients, with
+    # the sky matrix rebuilt from the EPW, against RADIANCE's dctimestep result. (The run's own
+    # metrics.csv uses the default exact sun: docs/sun.md.)
+    compat_out = os.path.join(work, "annual_compat")
+    run([args.dayphoton, "annual", "--coefficients", grid, "--weather", EPW, "--output", compat_out, "--quiet"])
     ref_m = read_csv(os.path.join(REF, "c_annual", "office_annual_metrics_classic.csv"))
-    ours_m = read_csv(os.path.join(grid, "metrics.csv"))
+    ours_m = read_csv(os.path.join(compat_out, "metrics.csv"))
     def col(rows_, key):
         return [float(r[key]) for r in rows_]
     da_diff = [a - b for a, b in zip(col(ours_m, "da300_percent"), col(ref_m, "DA300_pct"))]
@@ -133,7 +138,7 @@ def main():
     annual_out = os.path.join(work, "annual")
     run([args.dayphoton, "annual", "--coefficients", grid, "--weather", EPW, "--sky-matrix", sky_file,
          "--output", annual_out])
-    a = open(os.path.join(grid, "illuminance.bin"), "rb").read()
+    a = open(os.path.join(compat_out, "illuminance.bin"), "rb").read()
     b = open(os.path.join(annual_out, "illuminance.bin"), "rb").read()
     worst_annual = 0.0
     if len(a) != len(b):
@@ -155,7 +160,7 @@ def main():
         ("DA300 per sensor, largest difference", f"{max(da_diff, key=abs):+.2f} points", "<= 2 points", max(abs(x) for x in da_diff) <= 2),
         ("sDA300/50%", f"{sda_ours:.1f} % vs {sda_ref:.1f} %", "<= 3 points", abs(sda_ours - sda_ref) <= 3),
     ] + [(f"{k} per sensor, largest difference", f"{v:.2f} points", "<= 2 points", v <= 2) for k, v in udi_diff.items()] + [
-        ("`dayphoton annual` with the sky matrix from a RADIANCE file vs in-process", f"{worst_annual:.2e} relative", "<= 1e-4", worst_annual <= 1e-4),
+        ("`dayphoton annual` with the sky matrix from a RADIANCE file vs rebuilt in-process", f"{worst_annual:.2e} relative", "<= 1e-4", worst_annual <= 1e-4),
     ]
     # Context for the annual comparison: the annual reference is RADIANCE's classic DC matrix
     # (result b) times its sky; at the back of the room that matrix is below RADIANCE's own
