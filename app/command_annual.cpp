@@ -25,20 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-sky::PatchBasis basis_from_option(const std::string& text) {
-  if (text == "tregenza") return sky::PatchBasis::tregenza();
-  const std::string prefix = "reinhart:";
-  if (text.rfind(prefix, 0) == 0) {
-    try {
-      std::size_t used = 0;
-      const int mf = std::stoi(text.substr(prefix.size()), &used);
-      if (used == text.size() - prefix.size() && mf >= 1 && mf <= 64) return sky::PatchBasis::reinhart(mf);
-    } catch (const std::exception&) {
-    }
-  }
-  throw UsageError("--basis must be 'tregenza' or 'reinhart:N' with N in 1..64, not '" + text + "'");
-}
-
 /// The basis whose bin count (144 MF^2 + 2) is the coefficient matrix's column count.
 sky::PatchBasis basis_of_columns(std::size_t columns, const std::string& coefficients_path) {
   for (int mf = 1; mf <= 64; ++mf)
@@ -82,7 +68,7 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
   const std::string coefficients_path = (fs::path(o.coefficients_dir) / "coefficients_sky.mtx").string();
   const std::string sensors_path = (fs::path(o.coefficients_dir) / "sensors.csv").string();
   std::optional<sky::PatchBasis> requested_basis;
-  if (!o.basis.empty()) requested_basis = basis_from_option(o.basis);
+  if (!o.basis.empty()) requested_basis = parse_basis_option(o.basis);
 
   const RadianceMatrix coefficients = RadianceMatrix::read_file(coefficients_path);
   const std::vector<SensorPoint> sensors = study::read_sensors_csv(sensors_path);

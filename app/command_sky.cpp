@@ -14,20 +14,6 @@ namespace dayphoton::app {
 
 namespace {
 
-sky::PatchBasis parse_basis(const std::string& text) {
-  if (text == "tregenza") return sky::PatchBasis::tregenza();
-  const std::string prefix = "reinhart:";
-  if (text.rfind(prefix, 0) == 0) {
-    try {
-      std::size_t used = 0;
-      const int mf = std::stoi(text.substr(prefix.size()), &used);
-      if (used == text.size() - prefix.size() && mf >= 1 && mf <= 64) return sky::PatchBasis::reinhart(mf);
-    } catch (const std::exception&) {
-    }
-  }
-  throw UsageError("--basis must be 'tregenza' or 'reinhart:N' with N in 1..64, not '" + text + "'");
-}
-
 std::unique_ptr<sky::SkyModel> make_cie_sky(const SkyOptions& o) {
   const sky::SkyScale scale = sky::SkyScale::horizontal_illuminance_lux(o.horizontal_illuminance_lux);
   if (o.cie == "uniform") return sky::make_uniform_sky(o.horizontal_illuminance_lux / Pi);
@@ -49,7 +35,7 @@ std::unique_ptr<sky::SkyModel> make_cie_sky(const SkyOptions& o) {
 }  // namespace
 
 int run_sky(const SkyOptions& o, const std::string& command_line, std::ostream& out) {
-  const sky::PatchBasis basis = parse_basis(o.basis);
+  const sky::PatchBasis basis = parse_basis_option(o.basis);
   const MatrixFormat format = parse_matrix_format(o.format);
   RadianceMatrix matrix;
 

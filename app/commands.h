@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "dayphoton/sky/patch_basis.h"
+
 namespace dayphoton::app {
 
 /// Process exit codes, documented in docs/cli.md.
@@ -26,6 +28,9 @@ class UsageError : public std::runtime_error {
 
 /// Flush `out` and throw if anything written to it was lost (full disk, closed pipe).
 void require_written(std::ostream& out, const std::string& what);
+
+/// The --basis option: "tregenza" or "reinhart:N" (N in 1..64); UsageError otherwise.
+sky::PatchBasis parse_basis_option(const std::string& text);
 
 struct CheckOptions {
   std::string project_path;
