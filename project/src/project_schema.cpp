@@ -74,7 +74,10 @@ ParamSchema system_side() {
   return P("side", T::Choice, "inside the room or outside the wall").choices({"interior", "exterior"}).def("interior");
 }
 ParamSchema system_port() {
-  return P("port", T::Choice, "exterior only: photons enter through an opening box around system and window, or through the window (exterior parts then only shade)").choices({"enclosure", "window"}).def("enclosure");
+  return P("port", T::Choice, "exterior only: photons enter through the window (exterior parts only shade it), or through an opening box around system and window (their reflections are traced)").choices({"window", "enclosure"}).def("window");
+}
+ParamSchema system_port_enclosure() {
+  return P("port", T::Choice, "exterior only: photons enter through an opening box around panel and window (a transmitting panel needs it), or through the window").choices({"enclosure", "window"}).def("enclosure");
 }
 ParamSchema system_port_window() {
   return P("port", T::Choice, "photons enter through the window (the system only shades it), or through an opening box around system and window").choices({"window", "enclosure"}).def("window");
@@ -224,7 +227,7 @@ std::vector<SectionSchema> build_schema() {
       P("material", T::String, "slat material (both sides)").required(),
   }});
   s.push_back({"prismatic_panel system", "a panel of horizontal dielectric prisms parallel to a window", {
-      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port(),
+      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port_enclosure(),
       P("apex_angle", T::Number, "apex angle of the isosceles prism cross-section").unit("deg").range(10, 170).def("90"),
       P("pitch", T::Number, "prism base width = vertical period").unit("m").above(0).required(),
       P("apex", T::Choice, "where the apexes point").choices({"inward", "outward"}).def("inward"),
@@ -235,7 +238,7 @@ std::vector<SectionSchema> build_schema() {
       P("material", T::String, "a dielectric material").required(),
   }});
   s.push_back({"lamella_panel system", "a dielectric panel cut by inclined air lamellae (Y-glass, seeds/000 section 4.2.1)", {
-      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port(),
+      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port_enclosure(),
       P("thickness", T::Number, "panel thickness, wall-normal").unit("m").above(0).required(),
       P("spacing", T::Number, "vertical distance between lamellae").unit("m").above(0).required(),
       P("lamella_angle", T::Number, "lamella inclination; > 0: the room-side edge lower").unit("deg").range(-45, 45).def("7"),

@@ -9,7 +9,7 @@
 //   normal  n = (sigma cos a, -s sigma sin a)   the face toward +sigma q (a shelf's top)
 //
 // A thin plate (thickness 0) is the one two-sided polygon A-B with A = (q0, 0) on the wall
-// line. A slab is the closed quadrilateral A, B, B - t n, D with A = (q0, s g) and D on the
+// line, its normal n (a shelf's polygon faces up). A slab is the closed quadrilateral A, B, B - t n, D with A = (q0, s g) and D on the
 // same wall-parallel line (w = s g) at q0 - sigma t / cos a, so its wall-side face is
 // parallel to the wall, g = WallStandoff_m from it (a face in the wall plane would
 // coincide with the wall or the glazing). A shelf's tilt raises its free edge for tilt > 0
@@ -28,12 +28,17 @@ struct Plate {
   double q0 = 0, sigma = 1, s = 1, angle_rad = 0, depth_m = 0, thickness_m = 0;
 };
 
+/// Normal of the plate's face toward +sigma q (a shelf's top), in (q, w).
+P2 plate_normal(const Plate& p) {
+  return {p.sigma * std::cos(p.angle_rad), -p.s * p.sigma * std::sin(p.angle_rad)};
+}
+
 /// The plate's profile in (q, w): 2 points (thin) or the 4 corners of the slab, the first
 /// edge being the face toward +sigma q.
 std::vector<P2> plate_profile(const Plate& p) {
   const P2 along{p.sigma * std::sin(p.angle_rad), p.s * std::cos(p.angle_rad)};
   if (p.thickness_m == 0) return {P2{p.q0, 0}, P2{p.q0, 0} + along * p.depth_m};
-  const P2 normal{p.sigma * std::cos(p.angle_rad), -p.s * p.sigma * std::sin(p.angle_rad)};
+  const P2 normal = plate_normal(p);
   const P2 a{p.q0, p.s * WallStandoff_m};
   const P2 b = a + along * p.depth_m;
   const P2 c = b - normal * p.thickness_m;
@@ -46,12 +51,15 @@ std::vector<P2> as_wv(std::vector<P2> qw) {
   for (P2& p : qw) p = {p.y, p.x};
   return qw;
 }
+P2 as_wv(P2 qw) { return {qw.y, qw.x}; }
 
-/// Build one plate: thin strip or slab (top face `top`, other faces `rest`).
+/// Build one plate: thin strip (its normal `top_normal`, in the plane's profile
+/// coordinates) or slab (top face `top`, other faces `rest`).
 void add_plate(const MountedBuild& b, const ProfilePlane& plane, const std::vector<P2>& profile,
-               double c0, double c1, int top, int rest, const std::string& name) {
+               P2 top_normal, double c0, double c1, int top, int rest, const std::string& name) {
   if (profile.size() == 2) {
     add_strip(plane, profile, c0, c1, top, name, b.spec.location, b.out);
+    b.out.back().vertices = facing(std::move(b.out.back().vertices), plane.direction(top_normal));
   } else {
     add_prism(plane, profile, c0, c1, {top, rest, rest, rest}, rest, name, b.spec.location, b.out);
   }
@@ -72,8 +80,8 @@ bool generate_light_shelf(const MountedBuild& b, const LightShelfSpec& p) {
                                                 : b.material("underside_material", p.underside_material);
   if (!check_materials(b, p.thickness_m, top, rest, "shelf")) return false;
   const Plate plate{p.height_m, 1.0, b.side_sign(), deg_to_rad(p.tilt_deg), p.depth_m, p.thickness_m};
-  add_plate(b, b.wv_plane(), as_wv(plate_profile(plate)), -p.extension_m,
-            b.frame.width_m + p.extension_m, top, rest, b.spec.name);
+  add_plate(b, b.wv_plane(), as_wv(plate_profile(plate)), as_wv(plate_normal(plate)),
+            -p.extension_m, b.frame.width_m + p.extension_m, top, rest, b.spec.name);
   return true;
 }
 
@@ -82,8 +90,8 @@ bool generate_overhang(const MountedBuild& b, const OverhangSpec& p) {
   if (!check_materials(b, p.thickness_m, mat, mat, "overhang")) return false;
   const double height = p.height_m ? *p.height_m : b.frame.head_m;
   const Plate plate{height, 1.0, 1.0, deg_to_rad(p.tilt_deg), p.depth_m, p.thickness_m};
-  add_plate(b, b.wv_plane(), as_wv(plate_profile(plate)), -p.extension_m,
-            b.frame.width_m + p.extension_m, mat, mat, b.spec.name);
+  add_plate(b, b.wv_plane(), as_wv(plate_profile(plate)), as_wv(plate_normal(plate)),
+            -p.extension_m, b.frame.width_m + p.extension_m, mat, mat, b.spec.name);
   return true;
 }
 
@@ -95,11 +103,13 @@ bool generate_fins(const MountedBuild& b, const FinsSpec& p) {
   if (p.left) {
     // Left jamb (seen from outside) at u = 0: the fin turns toward +u.
     const Plate plate{-p.offset_m, 1.0, 1.0, a, p.depth_m, p.thickness_m};
-    add_plate(b, b.uw_plane(), plate_profile(plate), v0, v1, mat, mat, b.spec.name + ".left");
+    add_plate(b, b.uw_plane(), plate_profile(plate), plate_normal(plate), v0, v1, mat, mat,
+              b.spec.name + ".left");
   }
   if (p.right) {
     const Plate plate{b.frame.width_m + p.offset_m, -1.0, 1.0, a, p.depth_m, p.thickness_m};
-    add_plate(b, b.uw_plane(), plate_profile(plate), v0, v1, mat, mat, b.spec.name + ".right");
+    add_plate(b, b.uw_plane(), plate_profile(plate), plate_normal(plate), v0, v1, mat, mat,
+              b.spec.name + ".right");
   }
   return true;
 }

@@ -228,6 +228,23 @@ void generate_systems(const Project& project, MaterialLookup& materials,
     if (!built || parts.empty()) continue;
     const LocalBox box = local_box(frame, parts);
     if (!check_placement(b, box)) continue;
+    if (sys.mount.side == MountSide::Exterior && sys.mount.port == PortMode::Window) {
+      // With the window as port every exterior surface is opaque to the sky (port emission
+      // and shadow rays stop at any surface outside the port): right for shading devices,
+      // wrong for a system that transmits light.
+      bool transmits = false;
+      for (const Surface& s : parts) {
+        const MaterialType t = materials.spec(s.material).type;
+        transmits = transmits || t == MaterialType::Dielectric || t == MaterialType::Glass ||
+                    t == MaterialType::Translucent || t == MaterialType::Opening;
+      }
+      if (transmits) {
+        b.error("port", "(exterior, port: window) transmits light, but outside its window's "
+                        "port every surface only shades: the window would be blocked; use "
+                        "port: enclosure");
+        continue;
+      }
+    }
     if (sys.mount.side == MountSide::Exterior && sys.mount.port == PortMode::Enclosure) {
       auto [it, fresh] = enclosures.emplace(sys.mount.window, Enclosure{frame, {}, &sys});
       if (fresh) {
