@@ -102,7 +102,7 @@ Choice choose_bandwidth(const PhotonMap& map, const std::vector<NeighbourPhoton>
                         const BiasCompensationOptions& options) {
   auto estimate = [&](std::size_t bandwidth) {
     Choice choice;
-    choice.disc = kernel_disc(neighbours, bandwidth, true, options.max_radius_m);
+    choice.disc = kernel_disc(neighbours, bandwidth, KernelRadius::Averaged, options.max_radius_m);
     return choice;
   };
   auto evaluate = [&](Choice& choice) {

@@ -143,10 +143,9 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         if (plane && options.local_linear && !options.bias_compensation &&
             options.density.kernel == KernelType::Uniform) {
           std::vector<NeighbourPhoton> found;
-          map.nearest(at, scaled.average_radius ? scaled.bandwidth + 1 : scaled.bandwidth,
-                      scaled.max_radius_m, both, found);
-          const KernelDisc disc =
-              kernel_disc(found, scaled.bandwidth, scaled.average_radius, scaled.max_radius_m);
+          map.nearest(at, neighbours_needed(scaled.bandwidth, scaled.radius), scaled.max_radius_m,
+                      both, found);
+          const KernelDisc disc = kernel_disc(found, scaled.bandwidth, scaled.radius, scaled.max_radius_m);
           if (disc.photon_count == 0) continue;
           Vec3 s0[2], s1x[2], s1y[2];
           for (int c = 0; c < 2; ++c) s0[c] = s1x[c] = s1y[c] = Vec3{0, 0, 0};
@@ -171,10 +170,15 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         if (all.photon_count == 0) continue;
         // Same disc for each class: a bandwidth one above the count found makes every
         // class lookup a "short" one, whose disc is exactly max_radius_m = all.radius_m.
+        // With the next-neighbour radius the (N+1)-th photon lies ON that disc's rim and the
+        // fixed-disc lookup (which includes its rim) would count it: shrink the disc by 1e-9
+        // relative (area 2e-9), which leaves it out and changes nothing else.
         DensityEstimateOptions fixed = scaled;
         fixed.bandwidth = all.photon_count + 1;
-        fixed.max_radius_m = all.radius_m;
-        fixed.average_radius = false;
+        fixed.max_radius_m = scaled.radius == KernelRadius::NextNeighbour && all.photon_count == scaled.bandwidth
+                                 ? all.radius_m * (1 - 1e-9)
+                                 : all.radius_m;
+        fixed.radius = KernelRadius::Plain;
         const double b = options.boundary_correction ? boundary_factor(plane, at, all.radius_m) : 1.0;
         const DensityEstimate caustic =
             estimate_irradiance(map, at, filter_for(sensor, PathClass::Caustic), fixed);

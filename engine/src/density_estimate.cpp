@@ -21,7 +21,7 @@ void check_options(const DensityEstimateOptions& options) {
 
 /// Photons to gather: the (N+1)-th defines the averaged radius.
 std::size_t lookup_count(const DensityEstimateOptions& options) {
-  return options.average_radius ? options.bandwidth + 1 : options.bandwidth;
+  return neighbours_needed(options.bandwidth, options.radius);
 }
 
 }  // namespace
@@ -63,9 +63,9 @@ Vec3 accumulate_disc(const PhotonMap& map, const std::vector<NeighbourPhoton>& s
 }
 
 KernelDisc kernel_disc(const std::vector<NeighbourPhoton>& sorted, std::size_t bandwidth,
-                       bool average_radius, double max_radius_m) {
+                       KernelRadius radius, double max_radius_m) {
   KernelDisc disc;
-  const std::size_t needed = average_radius ? bandwidth + 1 : bandwidth;
+  const std::size_t needed = neighbours_needed(bandwidth, radius);
   if (bandwidth == 0 || sorted.size() < needed) {
     // Short lookup: the radius-defining photon lies beyond the maximum search radius.
     disc.radius_m = max_radius_m;
@@ -73,8 +73,15 @@ KernelDisc kernel_disc(const std::vector<NeighbourPhoton>& sorted, std::size_t b
     return disc;
   }
   const double d_n = std::sqrt(sorted[bandwidth - 1].distance_squared_m2);
-  disc.radius_m = average_radius ? 0.5 * (d_n + std::sqrt(sorted[bandwidth].distance_squared_m2))
-                                 : d_n;
+  switch (radius) {
+    case KernelRadius::Plain: disc.radius_m = d_n; break;
+    case KernelRadius::Averaged:
+      disc.radius_m = 0.5 * (d_n + std::sqrt(sorted[bandwidth].distance_squared_m2));
+      break;
+    case KernelRadius::NextNeighbour:
+      disc.radius_m = std::sqrt(sorted[bandwidth].distance_squared_m2);
+      break;
+  }
   disc.photon_count = bandwidth;
   return disc;
 }
@@ -86,7 +93,7 @@ DensityEstimate estimate_irradiance(const PhotonMap& map, const Vec3& point,
   std::vector<NeighbourPhoton> neighbours;
   map.nearest(point, lookup_count(options), options.max_radius_m, filter, neighbours);
   const KernelDisc disc =
-      kernel_disc(neighbours, options.bandwidth, options.average_radius, options.max_radius_m);
+      kernel_disc(neighbours, options.bandwidth, options.radius, options.max_radius_m);
   DensityEstimate estimate;
   estimate.radius_m = disc.radius_m;
   estimate.photon_count = disc.photon_count;
@@ -104,7 +111,7 @@ DensityEstimate estimate_contributions(const PhotonMap& map, const Vec3& point,
   std::vector<NeighbourPhoton> neighbours;
   map.nearest(point, lookup_count(options), options.max_radius_m, any_source, neighbours);
   const KernelDisc disc =
-      kernel_disc(neighbours, options.bandwidth, options.average_radius, options.max_radius_m);
+      kernel_disc(neighbours, options.bandwidth, options.radius, options.max_radius_m);
   DensityEstimate estimate;
   estimate.radius_m = disc.radius_m;
   estimate.photon_count = disc.photon_count;

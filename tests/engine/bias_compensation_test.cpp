@@ -220,6 +220,7 @@ TEST(BiasCompensation, DegenerateRangesShortLookupsAndInvalidOptions) {
   options.n_min = options.n_max = 40;
   DensityEstimateOptions fixed;
   fixed.bandwidth = 40;
+  fixed.radius = KernelRadius::Averaged;
   for (KernelType kernel : {KernelType::Uniform, KernelType::Silverman}) {
     options.kernel = fixed.kernel = kernel;
     const DensityEstimate b = estimate_irradiance_bias_compensated(map, q, all_photons(), options);

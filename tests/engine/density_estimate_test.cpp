@@ -68,7 +68,10 @@ PhotonFilter all_photons() {
 
 // Digest T-5. For a Poisson density lambda, pi lambda d_N^2 ~ Gamma(N, 1), so the plain
 // estimate N Phi / (pi d_N^2) has mean lambda Phi N/(N-1): +2.0408 % at N = 50, per-trial
-// relative sigma N / ((N-1) sqrt(N-2)) = 14.7 %. With the averaged radius,
+// relative sigma N / ((N-1) sqrt(N-2)) = 14.7 %. With the next-neighbour radius d_{N+1} the
+// N photons inside are uniform in the disc given d_{N+1}, pi lambda d_{N+1}^2 ~ Gamma(N+1),
+// and the mean is exactly lambda Phi, relative sigma 1 / sqrt(N - 1) = 14.3 %. With the
+// averaged radius,
 // pi lambda d_{N+1}^2 = G + X (X ~ Exp(1) independent of G), and the mean
 // E[4N / (sqrt(G) + sqrt(G + X))^2] = 1.010049 at N = 50 (2-D Simpson quadrature over the
 // joint density, 4000 x 4000 panels; the digest's Monte Carlo gave +0.98 % +- 0.03 %).
@@ -84,16 +87,22 @@ TEST(DensityEstimate, NearestNeighbourRadiusBiasT5) {
   const Vec3 centre{0.3, -1.2, 0.8}, u{1, 0, 0}, v{0, 1, 0};
   DensityEstimateOptions plain;
   plain.bandwidth = N;
-  plain.average_radius = false;
+  plain.radius = KernelRadius::Plain;
   plain.max_radius_m = RGen;
   DensityEstimateOptions averaged = plain;
-  averaged.average_radius = true;
-  Stats plain_stats, averaged_stats, difference;
+  averaged.radius = KernelRadius::Averaged;
+  DensityEstimateOptions next = plain;
+  next.radius = KernelRadius::NextNeighbour;
+  Stats plain_stats, averaged_stats, next_stats, difference;
   for (int t = 0; t < Trials; ++t) {
     const PhotonMap map(poisson_disc(rng, centre, u, v, RGen,
                                      [](std::mt19937_64&) { return Vec3{1, 1, 1}; }));
     const DensityEstimate a = estimate_irradiance(map, centre, all_photons(), plain);
     const DensityEstimate b = estimate_irradiance(map, centre, all_photons(), averaged);
+    const DensityEstimate c = estimate_irradiance(map, centre, all_photons(), next);
+    ASSERT_EQ(c.photon_count, N);
+    ASSERT_GT(c.radius_m, b.radius_m);
+    next_stats.add(c.irradiance.y);
     ASSERT_EQ(a.photon_count, N);
     ASSERT_EQ(b.photon_count, N);
     ASSERT_LT(b.radius_m, RGen);
@@ -105,9 +114,12 @@ TEST(DensityEstimate, NearestNeighbourRadiusBiasT5) {
   EXPECT_NEAR(plain_stats.sigma(), 50.0 / (49.0 * std::sqrt(48.0)), 0.05 * plain_stats.sigma());
   EXPECT_NEAR(plain_stats.mean(), PlainMean, plain_stats.tolerance());
   EXPECT_NEAR(averaged_stats.mean(), AveragedMean, averaged_stats.tolerance());
+  EXPECT_NEAR(next_stats.mean(), 1.0, next_stats.tolerance());
+  EXPECT_NEAR(next_stats.sigma(), 1.0 / std::sqrt(49.0), 0.05 * next_stats.sigma());
   EXPECT_NEAR(difference.mean(), PlainMean - AveragedMean, difference.tolerance());
   RecordProperty("plain_bias_percent", std::to_string(100 * (plain_stats.mean() - 1)));
   RecordProperty("averaged_bias_percent", std::to_string(100 * (averaged_stats.mean() - 1)));
+  RecordProperty("next_neighbour_bias_percent", std::to_string(100 * (next_stats.mean() - 1)));
 }
 
 // A uniform density with random RGB fluxes (each channel uniform in [0, 2] x base, mean
@@ -156,12 +168,19 @@ TEST(DensityEstimate, RadiusRulesOnAKnownConfiguration) {
   DensityEstimateOptions options;
   options.bandwidth = 4;
   DensityEstimate e = estimate_irradiance(map, {0, 0, 0}, all_photons(), options);
+  EXPECT_EQ(e.photon_count, 4u);  // the default: next-neighbour radius d_5, 4 photons
+  EXPECT_DOUBLE_EQ(e.radius_m, 5.0);
+  EXPECT_DOUBLE_EQ(e.irradiance.x, 4.0 / (Pi * 25.0));
+  EXPECT_DOUBLE_EQ(e.irradiance.z, 12.0 / (Pi * 25.0));
+
+  options.radius = KernelRadius::Averaged;
+  e = estimate_irradiance(map, {0, 0, 0}, all_photons(), options);
   EXPECT_EQ(e.photon_count, 4u);
   EXPECT_DOUBLE_EQ(e.radius_m, 4.5);  // (d_4 + d_5) / 2
   EXPECT_DOUBLE_EQ(e.irradiance.x, 4.0 / (Pi * 4.5 * 4.5));
   EXPECT_DOUBLE_EQ(e.irradiance.z, 12.0 / (Pi * 4.5 * 4.5));
 
-  options.average_radius = false;
+  options.radius = KernelRadius::Plain;
   e = estimate_irradiance(map, {0, 0, 0}, all_photons(), options);
   EXPECT_DOUBLE_EQ(e.radius_m, 4.0);
   EXPECT_DOUBLE_EQ(e.irradiance.x, 4.0 / (Pi * 16.0));
@@ -173,7 +192,7 @@ TEST(DensityEstimate, RadiusRulesOnAKnownConfiguration) {
   EXPECT_EQ(e.photon_count, 3u);
   EXPECT_DOUBLE_EQ(e.radius_m, 3.5);
   EXPECT_DOUBLE_EQ(e.irradiance.x, 3.0 / (Pi * 3.5 * 3.5));
-  options.average_radius = true;
+  options.radius = KernelRadius::Averaged;
   options.max_radius_m = 4.8;  // exactly N = 4 inside: the (N+1)-th is beyond
   e = estimate_irradiance(map, {0, 0, 0}, all_photons(), options);
   EXPECT_EQ(e.photon_count, 4u);
@@ -245,7 +264,7 @@ TEST(DensityEstimate, ContributionsBinBySourceAndSumToIrradiance) {
           DensityEstimateOptions options;
           options.bandwidth = 60;
           options.kernel = kernel;
-          options.average_radius = average;
+          options.radius = average ? KernelRadius::NextNeighbour : KernelRadius::Plain;
           options.max_radius_m = max_radius;
           PhotonFilter one_source = all_photons();
           one_source.source = 4;  // ignored by the contribution estimate

@@ -2,15 +2,20 @@
 // section 4.1 eq. 18, the contribution estimate).
 //
 // Irradiance at x from the N nearest photons: E(x) = sum_j K(|x - x_j|, r) Phi_j, with K
-// normalised over the disc of radius r (kernel.h) and
-//   r = (d_N + d_{N+1}) / 2   averaged radius (Christensen, seeds/000 section 6.2, digest
-//                             section 2.3): the (N+1)-th photon is found but not used;
-//                             this halves the k-NN radius bias (+2.04 % -> +0.98 % at N=50),
-//   r = d_N                   plain radius (average_radius = false): bias +1/(N-1) on a
-//                             uniform density,
+// normalised over the disc of radius r (kernel.h) and (KernelRadius)
+//   r = d_{N+1}               NextNeighbour, the default: the (N+1)-th photon is found but
+//                             not used. Unbiased on a locally uniform density: given
+//                             d_{N+1}, the N inner photons are independent and uniform in the
+//                             disc, so E[sum K Phi] = N Phi / (pi r^2), and pi lambda d_{N+1}^2
+//                             is Gamma(N+1)-distributed with E[1 / G] = 1 / N; the mean is
+//                             lambda Phi exactly, the relative sigma 1 / sqrt(N - 1) (derived;
+//                             tests/engine/density_estimate_test.cpp T-5),
+//   r = (d_N + d_{N+1}) / 2   Averaged (Christensen, seeds/000 section 6.2, digest section
+//                             2.3): halves the plain bias (+2.04 % -> +1.00 % at N = 50),
+//   r = d_N                   Plain: bias +1/(N-1) on a uniform density,
 //   r = max_radius_m          "short lookup" (seeds/001 section 5): the photon(s) that
 //                             would define r lie beyond the maximum search radius, i.e.
-//                             fewer than N+1 (averaged) or N (plain) photons are within it.
+//                             fewer than N+1 (next, averaged) or N (plain) photons are within it.
 //                             Then ALL photons found count and the disc is the max-radius
 //                             disc: the fixed-radius estimate, which for a locally uniform
 //                             density is unbiased (Poisson count in a fixed disc). With no
@@ -33,11 +38,19 @@
 
 namespace dayphoton::engine {
 
+/// Which neighbour distance sets the kernel radius (header comment).
+enum class KernelRadius : std::uint8_t { Plain = 0, Averaged = 1, NextNeighbour = 2 };
+
+/// Neighbours a lookup must gather for `bandwidth` photons under `radius`.
+inline std::size_t neighbours_needed(std::size_t bandwidth, KernelRadius radius) {
+  return radius == KernelRadius::Plain ? bandwidth : bandwidth + 1;
+}
+
 struct DensityEstimateOptions {
   std::size_t bandwidth = 50;  ///< N, photons per estimate (>= 1)
   double max_radius_m = 1e30;  ///< maximum search radius (> 0)
   KernelType kernel = KernelType::Uniform;
-  bool average_radius = true;  ///< r = (d_N + d_{N+1}) / 2
+  KernelRadius radius = KernelRadius::NextNeighbour;
 };
 
 struct DensityEstimate {
@@ -47,14 +60,14 @@ struct DensityEstimate {
 };
 
 /// The disc an estimate uses, by the rules above, from a neighbour list sorted by distance
-/// (PhotonMap::nearest gathered with the same max radius and with k >= bandwidth + 1 if
-/// average_radius, else k >= bandwidth; a longer list is fine, only its head is used).
+/// (PhotonMap::nearest gathered with the same max radius and k >= neighbours_needed(); a
+/// longer list is fine, only its head is used).
 struct KernelDisc {
   double radius_m = 0;
   std::size_t photon_count = 0;  ///< the first photon_count neighbours are inside
 };
 KernelDisc kernel_disc(const std::vector<NeighbourPhoton>& sorted, std::size_t bandwidth,
-                       bool average_radius, double max_radius_m);
+                       KernelRadius radius, double max_radius_m);
 
 /// sum_j K(d_j, disc.radius_m) Phi_j over the disc's photons (the head of `sorted`). If
 /// `per_source` is given, each term is also added to (*per_source)[photon.source]; a source

@@ -95,7 +95,7 @@ struct RenderOptions {
   int samples_per_pixel = 4;  ///< camera samples per pixel (jittered), >= 1
   int direct_samples = 16;    ///< port shadow rays (and sun shadow rays) per diffuse hit, >= 1
   /// Photons per estimate and kernel (density_estimate.h); the photon map holds all sources.
-  DensityEstimateOptions density{200, 1e30, KernelType::Uniform, true};
+  DensityEstimateOptions density{200, 1e30, KernelType::Uniform, KernelRadius::NextNeighbour};
   int max_path_events = 16;   ///< delta/glossy events followed per camera sample
   std::uint64_t seed = 1;
 };
