@@ -46,21 +46,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::vector<double> read_reference_df(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);  // header
-  std::vector<double> df;
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string field;
-    for (int i = 0; i < 6 && std::getline(ss, field, ','); ++i) {
-    }
-    df.push_back(std::stod(field));  // DF_main_pct
-  }
-  return df;
-}
-
 // Cosine-weighted direction about `n` from two uniforms (Malley's method).
 Vec3 cosine_direction(const Vec3& n, double u1, double u2) {
   const double r = std::sqrt(u1), phi = 2 * kPi * u2;
@@ -151,7 +136,7 @@ int main(int argc, char** argv) {
                                  std::to_string(first_row) + "-" + std::to_string(last_row));
     out.write_file(write_path, MatrixFormat::Float);
   }
-  const std::vector<double> ref = read_reference_df(shared + "/refdata/results/a_daylight_factor/df_office.csv");
+  const std::vector<double> ref = test::read_reference_df(shared + "/refdata/results/a_daylight_factor/df_office.csv");
   const RadianceMatrix dc = test::read_gzip_matrix(shared + "/refdata/results/b_dc_classic/office_dc_classic.mtx.gz");
   const RadianceMatrix dc2 = test::read_gzip_matrix(shared + "/refdata/results/b_dc_classic/office_dc_classic_ad131k.mtx.gz");
   const RadianceMatrix ours = RadianceMatrix::read_file(ours_path);

@@ -34,20 +34,6 @@ double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-std::vector<double> read_reference_df(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);  // header
-  std::vector<double> df;
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string field;
-    for (int i = 0; i < 6 && std::getline(ss, field, ','); ++i) {
-    }
-    df.push_back(std::stod(field));  // DF_main_pct
-  }
-  return df;
-}
 
 }  // namespace
 
@@ -112,7 +98,7 @@ int main(int argc, char** argv) {
   // does not, so it is the vector to compare with RADIANCE. Ours is printed alongside.
   const RadianceMatrix sv_ours = sky::sky_vector(*overcast, basis, ground);
   const RadianceMatrix sv = RadianceMatrix::read_file(shared + "/refdata/results/a_daylight_factor/skyvec_overcast_m1.vec");
-  const std::vector<double> ref = read_reference_df(shared + "/refdata/results/a_daylight_factor/df_office.csv");
+  const std::vector<double> ref = test::read_reference_df(shared + "/refdata/results/a_daylight_factor/df_office.csv");
   double sum2 = 0, worst = 0, mean_ours = 0, mean_ref = 0;
   std::size_t worst_at = 0;
   std::vector<double> row_ours(15, 0), row_ref(15, 0);
