@@ -34,7 +34,6 @@ double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-
 }  // namespace
 
 int main(int argc, char** argv) {
