@@ -19,24 +19,13 @@
 #include <vector>
 
 #include "dayphoton/core/units.h"
+#include "estimate_statistics.h"
 
 namespace dayphoton::engine {
 namespace {
 
-struct Stats {
-  double sum = 0, sum2 = 0;
-  int n = 0;
-  void add(double x) { sum += x; sum2 += x * x; ++n; }
-  double mean() const { return sum / n; }
-  double sigma() const { return std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1))); }
-  double tolerance() const { return 4.0 * sigma() / std::sqrt(static_cast<double>(n)); }
-};
-
-PhotonFilter all_photons() {
-  PhotonFilter f;
-  f.path_classes = 0x7;
-  return f;
-}
+using test::all_photons;
+using test::Stats;
 
 Photon photon_at(double x, double y, const Vec3& flux) {
   Photon p;

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "dayphoton/core/units.h"
+#include "estimate_statistics.h"
 #include "dayphoton/engine/engine_error.h"
 
 namespace dayphoton::engine {
@@ -51,20 +52,8 @@ std::vector<Photon> poisson_disc(std::mt19937_64& rng, const Vec3& centre, const
   return photons;
 }
 
-struct Stats {
-  double sum = 0, sum2 = 0;
-  int n = 0;
-  void add(double x) { sum += x; sum2 += x * x; ++n; }
-  double mean() const { return sum / n; }
-  double sigma() const { return std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1))); }
-  double tolerance() const { return 4.0 * sigma() / std::sqrt(static_cast<double>(n)); }
-};
-
-PhotonFilter all_photons() {
-  PhotonFilter f;
-  f.path_classes = 0x7;
-  return f;
-}
+using test::all_photons;
+using test::Stats;
 
 // Digest T-5. For a Poisson density lambda, pi lambda d_N^2 ~ Gamma(N, 1), so the plain
 // estimate N Phi / (pi d_N^2) has mean lambda Phi N/(N-1): +2.0408 % at N = 50, per-trial
