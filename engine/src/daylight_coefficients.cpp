@@ -110,6 +110,68 @@ GridPhotons GridPhotons::for_surfaces(std::vector<Photon> surface_photons,
   return g;
 }
 
+namespace {
+
+struct ClassEstimates {
+  Vec3 caustic{0, 0, 0}, global{0, 0, 0};
+};
+
+/// Caustic and global estimates from the photons of `map` passing `filter`, within the disc
+/// of density.bandwidth of them (density_estimate.h): local-linear on a receiver plane with
+/// the uniform kernel, otherwise the kernel estimate times the boundary factor. `rng_index`
+/// seeds the bias-compensating operator.
+ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane, const Vec3& at,
+                                const PhotonFilter& filter, const DensityEstimateOptions& density,
+                                const CoefficientOptions& options, std::size_t rng_index) {
+  ClassEstimates out;
+  if (plane && options.local_linear && !options.bias_compensation && density.kernel == KernelType::Uniform) {
+    std::vector<NeighbourPhoton> found;
+    map.nearest(at, neighbours_needed(density.bandwidth, density.radius), density.max_radius_m, filter, found);
+    const KernelDisc disc = kernel_disc(found, density.bandwidth, density.radius, density.max_radius_m);
+    if (disc.photon_count == 0) return out;
+    Vec3 s0[2], s1x[2], s1y[2];
+    for (int c = 0; c < 2; ++c) s0[c] = s1x[c] = s1y[c] = Vec3{0, 0, 0};
+    for (std::size_t j = 0; j < disc.photon_count; ++j) {
+      const Photon& ph = map.photons()[found[j].index];
+      const int c = ph.path_class == PathClass::Caustic ? 0 : 1;
+      const Vec3 flux = ph.flux_rgb();
+      s0[c] += flux;
+      s1x[c] += flux * (double(ph.position[0]) - at.x);
+      s1y[c] += flux * (double(ph.position[1]) - at.y);
+    }
+    const AreaMoments m = plane->clipped_disc_moments(at.x, at.y, disc.radius_m);
+    out.caustic = local_linear_density(m, s0[0], s1x[0], s1y[0]);
+    out.global = local_linear_density(m, s0[1], s1x[1], s1y[1]);
+    return out;
+  }
+  const DensityEstimate all =
+      options.bias_compensation
+          ? estimate_irradiance_bias_compensated(map, at, filter, bias_options(options, density, rng_index))
+          : estimate_irradiance(map, at, filter, density);
+  if (all.photon_count == 0) return out;
+  // Same disc for each class: a bandwidth one above the count found makes every class
+  // lookup a "short" one, whose disc is exactly max_radius_m = all.radius_m. With the
+  // next-neighbour radius the (N+1)-th photon lies ON that disc's rim and the fixed-disc
+  // lookup (which includes its rim) would count it: shrink the disc by 1e-9 relative (area
+  // 2e-9), which leaves it out and changes nothing else.
+  DensityEstimateOptions fixed = density;
+  fixed.bandwidth = all.photon_count + 1;
+  fixed.max_radius_m = density.radius == KernelRadius::NextNeighbour && all.photon_count == density.bandwidth
+                           ? all.radius_m * (1 - 1e-9)
+                           : all.radius_m;
+  fixed.radius = KernelRadius::Plain;
+  const double b = options.boundary_correction ? boundary_factor(plane, at, all.radius_m) : 1.0;
+  for (PathClass c : {PathClass::Caustic, PathClass::Global}) {
+    PhotonFilter one = filter;
+    one.path_classes = static_cast<decltype(one.path_classes)>(filter.path_classes & path_class_bit(c));
+    if (one.path_classes == 0) continue;
+    (c == PathClass::Caustic ? out.caustic : out.global) = estimate_irradiance(map, at, one, fixed).irradiance * b;
+  }
+  return out;
+}
+
+}  // namespace
+
 void estimate_photon_coefficients(const GridPhotons& photons,
                                   const std::vector<SensorPoint>& sensors,
                                   const CoefficientOptions& options, DaylightCoefficients& out) {
@@ -132,72 +194,41 @@ void estimate_photon_coefficients(const GridPhotons& photons,
       for (std::size_t p = 0; p < n_src && p < photons.source_count(); ++p) {
         const PhotonMap& map = photons.of_source(p);
         if (map.empty()) continue;
-        // One lookup over both classes fixes the radius; each class is then summed within it.
-        // The bandwidth grows with the source's photon count (photons_per_bandwidth), so a
-        // source given more photons (the ground) gets a less noisy estimate, not a smaller
-        // kernel.
-        PhotonFilter both = filter_for(sensor, PathClass::Global);
-        both.path_classes = IndirectPathClasses;
+        // Without a caustic map, one lookup over both classes fixes the radius and each class
+        // is summed within it. The bandwidth grows with the source's photon count
+        // (photons_per_bandwidth), so a source given more photons (the ground) gets a less
+        // noisy estimate, not a smaller kernel.
+        const std::size_t i = s * n_src + p;
         DensityEstimateOptions scaled = options.density;
         scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth);
-        if (plane && options.local_linear && !options.bias_compensation &&
-            options.density.kernel == KernelType::Uniform) {
-          std::vector<NeighbourPhoton> found;
-          map.nearest(at, neighbours_needed(scaled.bandwidth, scaled.radius), scaled.max_radius_m,
-                      both, found);
-          const KernelDisc disc = kernel_disc(found, scaled.bandwidth, scaled.radius, scaled.max_radius_m);
-          if (disc.photon_count == 0) continue;
-          Vec3 s0[2], s1x[2], s1y[2];
-          for (int c = 0; c < 2; ++c) s0[c] = s1x[c] = s1y[c] = Vec3{0, 0, 0};
-          for (std::size_t j = 0; j < disc.photon_count; ++j) {
-            const Photon& ph = map.photons()[found[j].index];
-            const int c = ph.path_class == PathClass::Caustic ? 0 : 1;
-            const Vec3 flux = ph.flux_rgb();
-            s0[c] += flux;
-            s1x[c] += flux * (double(ph.position[0]) - at.x);
-            s1y[c] += flux * (double(ph.position[1]) - at.y);
-          }
-          const AreaMoments m = plane->clipped_disc_moments(at.x, at.y, disc.radius_m);
-          out.caustic[s * n_src + p] = local_linear_density(m, s0[0], s1x[0], s1y[0]);
-          out.global[s * n_src + p] = local_linear_density(m, s0[1], s1x[1], s1y[1]);
+        PhotonFilter both = filter_for(sensor, PathClass::Global);
+        both.path_classes = IndirectPathClasses;
+        if (options.caustic_bandwidth == 0) {
+          const ClassEstimates e = estimate_classes(map, plane, at, both, scaled, options, i);
+          out.caustic[i] = e.caustic;
+          out.global[i] = e.global;
           continue;
         }
-        const DensityEstimate all =
-            options.bias_compensation
-                ? estimate_irradiance_bias_compensated(map, at, both,
-                                                       bias_options(options, scaled, s * n_src + p))
-                : estimate_irradiance(map, at, both, scaled);
-        if (all.photon_count == 0) continue;
-        // Same disc for each class: a bandwidth one above the count found makes every
-        // class lookup a "short" one, whose disc is exactly max_radius_m = all.radius_m.
-        // With the next-neighbour radius the (N+1)-th photon lies ON that disc's rim and the
-        // fixed-disc lookup (which includes its rim) would count it: shrink the disc by 1e-9
-        // relative (area 2e-9), which leaves it out and changes nothing else.
-        DensityEstimateOptions fixed = scaled;
-        fixed.bandwidth = all.photon_count + 1;
-        fixed.max_radius_m = scaled.radius == KernelRadius::NextNeighbour && all.photon_count == scaled.bandwidth
-                                 ? all.radius_m * (1 - 1e-9)
-                                 : all.radius_m;
-        fixed.radius = KernelRadius::Plain;
-        const double b = options.boundary_correction ? boundary_factor(plane, at, all.radius_m) : 1.0;
-        const DensityEstimate caustic =
-            estimate_irradiance(map, at, filter_for(sensor, PathClass::Caustic), fixed);
-        const DensityEstimate global =
-            estimate_irradiance(map, at, filter_for(sensor, PathClass::Global), fixed);
-        out.caustic[s * n_src + p] = caustic.irradiance * b;
-        out.global[s * n_src + p] = global.irradiance * b;
+        DensityEstimateOptions caustic_scaled = options.density;
+        caustic_scaled.bandwidth = photons.bandwidth_of(p, options.caustic_bandwidth);
+        out.global[i] =
+            estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global), scaled, options, i).global;
+        out.caustic[i] = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic),
+                                          caustic_scaled, options, i + out.sensors * n_src)
+                             .caustic;
       }
     } else {
       for (PathClass c : {PathClass::Caustic, PathClass::Global}) {
+        DensityEstimateOptions density = options.density;
+        if (c == PathClass::Caustic && options.caustic_bandwidth > 0) density.bandwidth = options.caustic_bandwidth;
         std::vector<Vec3> per_source(n_src, Vec3{0, 0, 0});
         const DensityEstimate e =
             options.bias_compensation
                 ? estimate_contributions_bias_compensated(
                       photons.all(), at, filter_for(sensor, c),
-                      bias_options(options, options.density, s * 2 + (c == PathClass::Caustic ? 0 : 1)),
+                      bias_options(options, density, s * 2 + (c == PathClass::Caustic ? 0 : 1)),
                       per_source)
-                : estimate_contributions(photons.all(), at, filter_for(sensor, c), options.density,
-                                         per_source);
+                : estimate_contributions(photons.all(), at, filter_for(sensor, c), density, per_source);
         const double b = options.boundary_correction ? boundary_factor(plane, at, e.radius_m) : 1.0;
         std::vector<Vec3>& part = c == PathClass::Caustic ? out.caustic : out.global;
         for (std::size_t p = 0; p < n_src; ++p) part[s * n_src + p] = per_source[p] * b;

@@ -25,6 +25,12 @@
 // a m1 + M2 b, with A, m1, M2 the area moments of R about x) gives a = E(x) free of that
 // first-order bias. Away from walls m1 = 0 and a is the plain average. The moments are exact
 // (ReceiverPlane::clipped_disc_moments).
+// Caustic map (caustic_bandwidth > 0): caustic photons get a lookup of their own, among
+// caustic photons only, with their own bandwidth, as Jensen's separate caustic map
+// (seeds/000 section 3.1.3). A sharp caustic (a mirror shelf's reflection on the ceiling,
+// a prism's beam) is then resolved by the caustic photons' own spacing instead of a disc
+// that the (sparser) global photons set. Otherwise both classes share one disc, from one
+// lookup over both.
 #pragma once
 
 #include <cstddef>
@@ -47,6 +53,9 @@ enum class PhotonEstimator { PerSource, Contribution };
 
 struct CoefficientOptions {
   DensityEstimateOptions density;  ///< bandwidth (photons per estimate), max radius, kernel
+  /// Photons per caustic estimate, from caustic photons only (header comment); 0: caustic
+  /// and global photons share the disc of density.bandwidth photons of both classes.
+  std::size_t caustic_bandwidth = 0;
   PhotonEstimator estimator = PhotonEstimator::PerSource;
   bool boundary_correction = true;
   /// Planar grids, PerSource, uniform kernel: local-linear density estimate instead of the
