@@ -633,7 +633,10 @@ std::string plan_block(const GridData& g, const SensorLattice& lattice, const st
 
 std::string grid_section(const GridData& g, PageIds& page) {
   std::ostringstream s;
-  s << "<section class=\"grid\" id=\"" << g.id << "\"><h2>" << (g.case_name.empty() ? "Grid " : "Variant ")
+  // Variant names are portable folder names, so only the operated case starts with "operated (".
+  const bool operated = g.case_name.rfind("operated (", 0) == 0;
+  s << "<section class=\"grid\" id=\"" << g.id << "\"><h2>"
+    << (g.case_name.empty() ? "Grid " : operated ? "Operated shading " : "Variant ")
     << esc(g.title()) << "</h2>";
   s << "<p class=\"meta\">" << g.sensors.size() << " sensors; folder <code>" << esc(g.folder) << "</code>";
   if (!g.plan.note.empty()) s << "; " << esc(g.plan.note);
