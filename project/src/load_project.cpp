@@ -104,6 +104,7 @@ class Loader {
       read_metrics(empty_map);
     }
     for_each_item(r, "variants", [&](const YamlNode& n) { read_variant(n); });
+    if (const YamlNode* n = r.take("operation")) read_operation(*n);
     r.finish();
 
     const Outputs& o = m_project.outputs;
@@ -894,6 +895,50 @@ class Loader {
     }
     if (!ok) return;
     if (auto sys = read_system(merged, /*base=*/false)) v.systems.push_back(std::move(*sys));
+  }
+
+  // ---- operated shading -------------------------------------------------------------------
+  void read_operation(const YamlNode& node) {
+    if (!expect_map(node, "operation", m_reporter)) return;
+    OperationSpec op;
+    op.location = node.location;
+    ParamReader r(node, schema_section("operation"), m_reporter);
+    bool names = r.read_string("open", op.open.value);
+    op.open.location = r.location_of("open");
+    names = r.read_string("shaded", op.shaded.value) && names;
+    op.shaded.location = r.location_of("shaded");
+    r.read_number("direct_sun_threshold", op.direct_sun_threshold_lux);
+    r.read_number("sunlit_limit", op.sunlit_limit_percent);
+    r.finish();
+    if (!names) return;
+    // Case names: `base` or a variant (variants are read before this section).
+    std::vector<std::string> cases = m_variant_names.names();
+    cases.push_back(BaseCaseName);
+    bool known = true;
+    for (const auto* key : {"open", "shaded"}) {
+      const Located<std::string>& name = std::string(key) == "open" ? op.open : op.shaded;
+      if (name.value == BaseCaseName && m_variant_names.contains(BaseCaseName)) {
+        m_reporter.error(name.location, "'" + std::string(key) + "': 'base' is ambiguous: a variant is named "
+                                        "'base' too (rename the variant)");
+        known = false;
+      } else if (name.value != BaseCaseName && !m_variant_names.contains(name.value)) {
+        unknown_name("case", {name.value, name.location}, cases,
+                     " in operation." + std::string(key) + " (a variant name or 'base')");
+        known = false;
+      }
+    }
+    if (known && op.open.value == op.shaded.value)
+      m_reporter.error(op.shaded.location, "operation 'shaded' names the same case as 'open' ('" +
+                                               op.open.value + "'): nothing would be operated");
+    // The rule needs each hour's direct sun, which only the sun-bins mode traces.
+    if (m_project.simulation.sun == SunMode::Spread)
+      m_reporter.error(node.location, "operation needs the direct sun of every hour: set simulation.sun "
+                                      "to 'bins' (with 'spread' the sun is smeared into sky patches)");
+    const Outputs& o = m_project.outputs;
+    if (!o.annual_illuminance && !o.metrics)
+      m_reporter.error(node.location, "operation needs annual results: outputs.annual_illuminance or "
+                                      "outputs.metrics must be true");
+    m_project.operation = std::move(op);
   }
 
   // ---- references -----------------------------------------------------------------------

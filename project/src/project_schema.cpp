@@ -96,6 +96,7 @@ std::vector<SectionSchema> build_schema() {
       P("outputs", T::Section, "what to write and where").section("outputs"),
       P("metrics", T::Section, "thresholds and occupancy of the results").section("metrics"),
       P("variants", T::SectionList, "study variants: the project with some materials replaced").section("variant"),
+      P("operation", T::Section, "operated shading (LM-83 blinds rule): per hour the open or the shaded case").section("operation"),
   }});
   s.push_back({"site", "location of the site and orientation of the model", {
       P("name", T::String, "site name for reports").def(""),
@@ -352,6 +353,13 @@ std::vector<SectionSchema> build_schema() {
       P("name", T::String, "unique variant name, also its output folder: letters, digits, _ - . (at most 64)").required(),
       P("materials", T::NameMap, "name of a material in `materials` -> its full definition in this variant"),
       P("systems", T::NameMap, "name of a system in `geometry.systems` -> the keys it changes in this variant (any but type and name)"),
+  }});
+  // LM-83-12 section 2.2.6 and its definition of direct sun (docs/metrics.md).
+  s.push_back({"operation", "operated shading: per grid and hour, the shaded case when too many sensors see direct sun in the open case (IES LM-83 blinds rule; needs simulation.sun: bins)", {
+      P("open", T::String, "case of the open state: a variant name, or `base` for the project as written; its direct sun decides every hour and gives ASE").required(),
+      P("shaded", T::String, "case of the shaded state (a variant name or `base`), used in the hours the rule closes the shading").required(),
+      P("direct_sun_threshold", T::Number, "a sensor sees direct sun when its direct-sun-only, zero-bounce illuminance in the open case is >= this").unit("lx").above(0).def("1000"),
+      P("sunlit_limit", T::Number, "an hour is shaded when MORE than this share of the grid's sensors see direct sun").unit("%").range(0, 100).def("2"),
   }});
   return s;
 }

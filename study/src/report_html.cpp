@@ -633,7 +633,10 @@ std::string plan_block(const GridData& g, const SensorLattice& lattice, const st
 
 std::string grid_section(const GridData& g, PageIds& page) {
   std::ostringstream s;
-  s << "<section class=\"grid\" id=\"" << g.id << "\"><h2>" << (g.case_name.empty() ? "Grid " : "Variant ")
+  // Variant names are portable folder names, so only the operated case starts with "operated (".
+  const bool operated = g.case_name.rfind("operated (", 0) == 0;
+  s << "<section class=\"grid\" id=\"" << g.id << "\"><h2>"
+    << (g.case_name.empty() ? "Grid " : operated ? "Operated shading " : "Variant ")
     << esc(g.title()) << "</h2>";
   s << "<p class=\"meta\">" << g.sensors.size() << " sensors; folder <code>" << esc(g.folder) << "</code>";
   if (!g.plan.note.empty()) s << "; " << esc(g.plan.note);
@@ -1020,13 +1023,26 @@ json read_summary(const std::string& results_dir) {
 /// Folder of a grid: <results>/<grid> (base) or <results>/variants/<variant>/<grid>, as `run`
 /// writes them; the absolute folder recorded in summary.json only if that does not exist
 /// (a results folder that was moved keeps working).
-std::string grid_folder(const std::string& results_dir, const std::string& variant, const json& grid) {
-  const std::string name = grid.value("name", std::string());
-  const std::string relative =
-      variant.empty() ? join(results_dir, name) : join(join(join(results_dir, "variants"), variant), name);
+std::string grid_folder_in(const std::string& case_dir, const json& grid) {
+  const std::string relative = join(case_dir, grid.value("name", std::string()));
   if (fs::exists(relative)) return relative;
   const std::string recorded = grid.value("folder", std::string());
   return recorded.empty() ? relative : recorded;
+}
+
+std::string grid_folder(const std::string& results_dir, const std::string& variant, const json& grid) {
+  return grid_folder_in(variant.empty() ? results_dir : join(join(results_dir, "variants"), variant), grid);
+}
+
+/// The operated result (summary.json `operated`, written by `run` into <results>/operated/):
+/// its case label, e.g. "operated (raised/closed)", and its grids.
+std::string operated_case(const json& summary) {
+  const json op = summary.value("operated", json::object());
+  return "operated (" + op.value("open", std::string()) + "/" + op.value("shaded", std::string()) + ")";
+}
+json operated_grids(const json& summary) {
+  const json op = summary.value("operated", json::object());
+  return op.is_object() ? op.value("grids", json::array()) : json::array();
 }
 
 }  // namespace
@@ -1044,6 +1060,8 @@ std::string report_html(const std::string& results_dir) {
     for (const json& g : v.value("grids", json::array()))
       grids.push_back(load_grid(v.value("name", std::string("variant")), g,
                                 grid_folder(results_dir, v.value("name", std::string()), g)));
+  for (const json& g : operated_grids(summary))
+    grids.push_back(load_grid(operated_case(summary), g, grid_folder_in(join(results_dir, "operated"), g)));
   for (GridData& g : grids) {
     auto it = geometry.find(g.name);
     if (it != geometry.end()) g.plan = it->second;
@@ -1101,6 +1119,10 @@ std::vector<std::string> write_images_and_report(const std::string& results_dir,
     for (const json& g : summary.value("grids", json::array())) grid_images("", g);
     for (const json& v : summary.value("variants", json::array()))
       for (const json& g : v.value("grids", json::array())) grid_images(v.value("name", std::string()), g);
+    for (const json& g : operated_grids(summary)) {
+      const std::vector<std::string> w = write_grid_images(grid_folder_in(join(results_dir, "operated"), g));
+      written.insert(written.end(), w.begin(), w.end());
+    }
     const std::vector<std::string> w = write_sky_images(results_dir, outputs.sky_hour);
     written.insert(written.end(), w.begin(), w.end());
   }

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "dayphoton/core/atomic_file.h"
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/radiance_matrix.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/daylight_coefficients.h"
@@ -25,6 +26,7 @@
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/operated_shading.h"
 #include "dayphoton/study/report_html.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/weather/epw_reader.h"
@@ -363,10 +365,22 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   return result;
 }
 
+/// What the operated result takes from one case (sun: bins), per grid in the case's order.
+struct CaseTables {
+  struct Grid {
+    std::string name;
+    std::vector<SensorPoint> sensors;
+    metrics::IlluminanceTable illuminance;  ///< the annual illuminance
+    metrics::IlluminanceTable direct_sun;   ///< direct-sun-only, zero-bounce (ASE's table)
+  };
+  std::vector<Grid> grids;
+};
+
 /// One case: photons, coefficients, daylight factor, annual results, into `dir`/<grid>/.
-/// Returns the grids' part of summary.json. `label` prefixes log lines of variants.
+/// Returns the grids' part of summary.json. `label` prefixes log lines of variants. `keep`
+/// (optional) receives the annual tables of every grid for the operated result.
 nlohmann::json run_case(const project::Project& project, const std::string& label,
-                        const std::string& dir, RunContext& ctx) {
+                        const std::string& dir, RunContext& ctx, CaseTables* keep = nullptr) {
   const project::Simulation& sim = project.simulation;
   Progress& progress = ctx.progress;
   RunLog& log = ctx.log;
@@ -562,6 +576,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       const AnnualStudy study =
           compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, direct, indirect, annual_settings);
       write_annual_outputs(study, grid.points, annual_settings, folders[g], which);
+      if (keep) keep->grids.push_back({grid.name, grid.points, study.illuminance, direct});
       progress.advance(ss.sky.steps.size());
       progress.end();
       grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
@@ -579,6 +594,57 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     }
   }
   return grids_json;
+}
+
+/// The operated result (operated_shading.h) of every grid into `dir`/<grid>/: the files of an
+/// annual case (sensors, illuminance, metrics) plus shading_schedule.csv and operation.json.
+/// Returns summary.json's `operated` object.
+nlohmann::json run_operated(const project::Project& project, const project::OperationSpec& op,
+                            const CaseTables& open, const CaseTables& shaded, const std::string& dir,
+                            RunContext& ctx) {
+  const SkyAndSuns& ss = *ctx.sky_and_suns;  // both cases' annual step built it
+  AnnualStudySettings settings;
+  settings.metrics = metric_settings(project.metrics);
+  settings.occupancy_start_h = project.metrics.occupancy_start_h;
+  settings.occupancy_end_h = project.metrics.occupancy_end_h;
+  AnnualOutputs which;
+  which.illuminance = project.outputs.annual_illuminance;
+  which.metrics = project.outputs.metrics;
+  ShadingRule rule;
+  rule.direct_sun_threshold_lux = op.direct_sun_threshold_lux;
+  rule.sunlit_limit_percent = op.sunlit_limit_percent;
+  const std::string open_name = op.open.value, shaded_name = op.shaded.value;
+  nlohmann::json grids = nlohmann::json::array();
+  for (std::size_t g = 0; g < open.grids.size(); ++g) {
+    const CaseTables::Grid& o = open.grids[g];
+    const CaseTables::Grid& c = shaded.grids.at(g);  // the same grids: variants share the sensors
+    const std::string folder = join(dir, o.name);
+    ctx.progress.start("operated " + o.name, o.illuminance.step_count(), "hours");
+    const OperatedStudy operated = compute_operated_study(
+        o.illuminance, c.illuminance, o.direct_sun, rule, settings, ss.sky.daylight_hours_quantity,
+        ss.sky.daylight_hours_source,
+        "operated shading: per hour '" + shaded_name + "' when more than " + format_number(rule.sunlit_limit_percent) +
+            " % of the sensors see direct sun in '" + open_name + "', else '" + open_name + "'; " + ss.sky.description);
+    std::filesystem::create_directories(folder);
+    write_sensors_csv(o.sensors, join(folder, "sensors.csv"));
+    write_annual_outputs(operated.study, o.sensors, settings, folder, which);
+    write_shading_schedule_csv(operated, join(folder, "shading_schedule.csv"));
+    const std::string operation = operation_json(operated, rule, open_name, shaded_name);
+    write_file_atomically(join(folder, "operation.json"), operation + "\n");
+    ctx.progress.advance(o.illuminance.step_count());
+    ctx.progress.end();
+    ctx.log.line("operated " + o.name + ": '" + shaded_name + "' in " + std::to_string(operated.schedule.shaded_steps()) +
+                 " of " + std::to_string(operated.schedule.shaded.size()) + " hours (" +
+                 std::to_string(operated.shaded_occupied_hours) + " of " +
+                 std::to_string(operated.study.occupied_hours) + " occupied), '" + open_name + "' otherwise");
+    ctx.report.grids.push_back({"operated/" + o.name, o.sensors.size(), folder});
+    grids.push_back({{"name", o.name},
+                     {"sensors", o.sensors.size()},
+                     {"folder", folder},
+                     {"annual", nlohmann::json::parse(grid_metrics_json(operated.study, settings))},
+                     {"operation", nlohmann::json::parse(operation)}});
+  }
+  return {{"open", open_name}, {"shaded", shaded_name}, {"folder", dir}, {"grids", grids}};
 }
 
 }  // namespace
@@ -605,17 +671,35 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
       "sky: the annual sky uses the site of the weather file's header (as gendaymtx does)");
   for (const std::string& n : report.notes) log.line(n);
 
+  // Operated shading needs each hour's direct sun (the loader says so for project files).
+  const project::OperationSpec* op = project.operation ? &*project.operation : nullptr;
+  if (op && sim.sun != project::SunMode::Bins)
+    throw InputError(op->location, "operation needs the direct sun of every hour: set simulation.sun to 'bins'");
+  CaseTables open_tables, shaded_tables;
+  auto keep = [&](const std::string& name) -> CaseTables* {
+    if (!op) return nullptr;
+    if (name == op->open.value) return &open_tables;
+    if (name == op->shaded.value) return &shaded_tables;
+    return nullptr;
+  };
+
   RunContext ctx{settings, progress, log, report, store, std::nullopt, std::nullopt};
   // The project as written is the base case, in <output>/<grid>/; each variant is studied
   // in addition, in <output>/variants/<variant>/<grid>/ (a folder no grid name can clash with).
-  nlohmann::json grids = run_case(project, "", report.output_dir, ctx);
+  nlohmann::json grids = run_case(project, "", report.output_dir, ctx, keep(project::BaseCaseName));
   nlohmann::json variants = nlohmann::json::array();
   for (const project::VariantSpec& v : project.variants) {
     const std::string dir = join(join(report.output_dir, "variants"), v.name);
     nlohmann::json vj = {{"name", v.name}, {"folder", dir}};
-    vj["grids"] = run_case(project::apply_variant(project, v), v.name, dir, ctx);
+    vj["grids"] = run_case(project::apply_variant(project, v), v.name, dir, ctx, keep(v.name));
     variants.push_back(vj);
   }
+  // The operated result, in <output>/operated/<grid>/, from the two cases' tables.
+  nlohmann::json operated;
+  if (op && !open_tables.grids.empty() && open_tables.grids.size() == shaded_tables.grids.size())
+    operated = run_operated(project, *op, open_tables, shaded_tables, join(report.output_dir, "operated"), ctx);
+  else if (op)
+    log.line("operated: skipped (no annual results: the project has no weather file)");
 
   // 7. summary.json and the run log.
   nlohmann::json summary = {
@@ -648,6 +732,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
       {"grids", grids},
       {"variants", variants},
       {"notes", report.notes}};
+  if (!operated.is_null()) summary["operated"] = operated;
   if (sim.sun == project::SunMode::Bins) {
     summary["simulation"]["sun_mf"] = sim.sun_mf;
     summary["simulation"]["sun_photons_per_bin"] = sun_tracing_options(sim, true).photons_per_source;

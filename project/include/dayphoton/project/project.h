@@ -354,6 +354,21 @@ struct VariantSpec {
   SourceLocation location;
 };
 
+/// The name that `operation` uses for the project as written (the base case).
+constexpr const char* BaseCaseName = "base";
+
+/// Operated shading (IES LM-83-12 section 2.2.6; docs/metrics.md, "Operated shading"): per
+/// grid and hour, the `shaded` case's illuminance when more than `sunlit_limit_percent` of
+/// the grid's sensors see direct sun (direct-sun-only, zero-bounce illuminance of the `open`
+/// case >= `direct_sun_threshold_lux`), else the `open` case's. Needs `sun: bins`.
+struct OperationSpec {
+  Located<std::string> open;    ///< a variant's name, or BaseCaseName
+  Located<std::string> shaded;  ///< a variant's name, or BaseCaseName; not `open`
+  double direct_sun_threshold_lux = 1000;  ///< LM-83 "direct sun": 1000 lx or more
+  double sunlit_limit_percent = 2;         ///< LM-83: shade when MORE than 2 % of the points
+  SourceLocation location;
+};
+
 struct Project {
   int format_version = 1; ///< `version` key of the file (only 1 exists)
   std::string path;       ///< the project file as given
@@ -367,6 +382,7 @@ struct Project {
   Outputs outputs;
   MetricsSettings metrics;
   std::vector<VariantSpec> variants;  ///< in file order; empty if the file has none
+  std::optional<OperationSpec> operation;  ///< absent: no operated result
 };
 
 /// Parse and validate a project file. Throws InputError with every problem found (located,

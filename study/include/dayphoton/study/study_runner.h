@@ -18,6 +18,11 @@
 //                   exact direct sun of every hour (shadow rays)
 //   6. annual      : sky coefficients x sky matrix (+ direct sun + interpolated indirect sun)
 //                   -> illuminance, metrics (ASE from the direct sun in the sun-bins mode)
+//   6b. operated   : with a project `operation` (sun: bins), per grid and hour the shaded
+//                   case's illuminance when more than 2 % of the sensors see direct sun in
+//                   the open case (LM-83 blinds rule, operated_shading.h), into
+//                   <output>/operated/<grid>/; computed from the two cases' annual tables,
+//                   whose inputs come from the cache as above
 //   7. files       : per grid folder and summary.json (result_files.h, docs/outputs.md)
 // The run log (<output>/run.log, and the progress output) states for every step whether it
 // was computed or taken from the cache, e.g. "photons: traced 0 of 146 sources (146 cached)".
