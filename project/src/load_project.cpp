@@ -693,6 +693,8 @@ class Loader {
     if (r.read_choice("sun", sun)) s.sun = sun == "spread" ? SunMode::Spread : SunMode::Bins;
     if (r.read_integer("sun_mf", v)) s.sun_mf = static_cast<int>(v);
     if (r.read_integer("direct_samples_per_bin", v)) s.direct_samples_per_bin = static_cast<int>(v);
+    if (r.read_integer("caustic_photons_per_bin", v)) s.caustic_photons_per_bin = v;
+    if (r.read_integer("caustic_bandwidth", v)) s.caustic_bandwidth = static_cast<int>(v);
     r.finish();
   }
 

@@ -322,6 +322,8 @@ std::vector<SectionSchema> build_schema() {
       P("sun", T::Choice, "direct sun: fixed sun bins, or spread over sky patches").choices({"bins", "spread"}).def("bins"),
       P("sun_mf", T::Integer, "Reinhart subdivision whose patch centres are the sun bins").range(1, 12).def("6"),
       P("direct_samples_per_bin", T::Integer, "shadow rays per bin for the direct component").at_least(1).def("16"),
+      P("caustic_photons_per_bin", T::Integer, "stored caustic photons per sky/sun bin, a target of their own (0: stored like the global ones)").at_least(0).def("0"),
+      P("caustic_bandwidth", T::Integer, "photons per caustic estimate, among caustic photons only (0: caustic and global photons share one disc)").at_least(0).def("0"),
   }});
   s.push_back({"basis", "map form of simulation.basis", {
       P("reinhart", T::Integer, "Reinhart subdivision MF (1 = Tregenza, 145 patches; MF n: 144 n^2 + 1)").range(1, 12).required(),

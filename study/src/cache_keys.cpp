@@ -58,6 +58,7 @@ void add_estimate_options(ContentHash& h, const engine::CoefficientOptions& o) {
   h.integer(static_cast<std::int64_t>(o.density.bandwidth)).number(o.density.max_radius_m);
   h.integer(static_cast<int>(o.density.kernel)).integer(static_cast<int>(o.density.radius));
   h.integer(static_cast<int>(o.estimator)).integer(o.boundary_correction ? 1 : 0);
+  h.integer(static_cast<std::int64_t>(o.caustic_bandwidth));
   h.integer(o.direct.samples_per_source).integer(static_cast<std::int64_t>(o.direct.seed));
 }
 

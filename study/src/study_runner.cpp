@@ -50,6 +50,7 @@ constexpr double OvercastHorizontalLux = 10000.0;
 engine::TracingOptions tracing_options(const project::Simulation& sim, std::size_t sources) {
   engine::TracingOptions o;
   o.photons_per_source = static_cast<std::size_t>(sim.photons_per_bin);
+  o.caustic_photons_per_source = static_cast<std::size_t>(sim.caustic_photons_per_bin);
   o.seed = sim.seed;
   o.source_photon_factor.assign(sources, 1.0);
   if (sources > 0) o.source_photon_factor[0] = GroundPhotonFactor;
@@ -59,6 +60,7 @@ engine::TracingOptions tracing_options(const project::Simulation& sim, std::size
 engine::CoefficientOptions coefficient_options(const project::Simulation& sim) {
   engine::CoefficientOptions o;
   o.density.bandwidth = static_cast<std::size_t>(sim.bandwidth);
+  o.caustic_bandwidth = static_cast<std::size_t>(sim.caustic_bandwidth);
   o.direct.samples_per_source = sim.direct_samples_per_bin;
   o.direct.seed = sim.seed;
   return o;
@@ -206,6 +208,7 @@ engine::TracingOptions sun_tracing_options(const project::Simulation& sim, bool 
   engine::TracingOptions o;
   o.photons_per_source = static_cast<std::size_t>(
       std::max(1LL, std::llround(double(sim.photons_per_bin) * SunBinPhotonFraction)));
+  o.caustic_photons_per_source = static_cast<std::size_t>(sim.caustic_photons_per_bin);
   o.seed = sim.seed;
   o.keep_surface_photons = keep_surface_photons;
   return o;
@@ -715,6 +718,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                       {"ground_photon_factor", GroundPhotonFactor},
                       {"bandwidth", sim.bandwidth},
                       {"direct_samples_per_bin", sim.direct_samples_per_bin},
+                      {"caustic_photons_per_bin", sim.caustic_photons_per_bin},
+                      {"caustic_bandwidth", sim.caustic_bandwidth},
                       {"seed", sim.seed},
                       {"ground_reflectance", sim.ground_reflectance},
                       {"sun", sim.sun == project::SunMode::Bins ? "bins" : "spread"},

@@ -303,6 +303,12 @@ struct Simulation {
   SunMode sun = SunMode::Bins;
   int sun_mf = 6;                ///< Reinhart subdivision whose patch centres are sun bins
   int direct_samples_per_bin = 16;  ///< shadow rays per bin for the direct component
+  /// Stored caustic photons per bin (sky and sun bins alike), a target of their own; 0: caustic
+  /// photons are stored like global ones (engine::TracingOptions::caustic_photons_per_source).
+  long long caustic_photons_per_bin = 0;
+  /// Photons per caustic estimate, among caustic photons only (the caustic map); 0: caustic and
+  /// global photons share one disc (engine::CoefficientOptions::caustic_bandwidth).
+  int caustic_bandwidth = 0;
   SourceLocation location;
 };
 
