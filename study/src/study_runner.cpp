@@ -187,8 +187,12 @@ const SkyAndSuns& sky_and_suns(const project::Project& project, const sky::Patch
   } else {
     ctx.progress.start("sky matrix", epw.records.size(), "hours");
     result = annual_sky_and_suns(epw, basis, sun_excluded_sky_options(rho_g));
+    const RadianceMatrix suns = suns_to_matrix(result.suns);
+    // Use the suns as the cache stores them (single precision), so that a later run from the
+    // cache gives byte-identical results.
+    result.suns = suns_from_matrix(suns);
     ctx.store.write("sky", key, encode_matrix(result.sky.matrix));
-    ctx.store.write("suns", key, encode_matrix(suns_to_matrix(result.suns)));
+    ctx.store.write("suns", key, encode_matrix(suns));
     ctx.progress.advance(epw.records.size());
     ctx.progress.end();
     ctx.log.line("sky matrix: built from " + project.weather.path + " (sun excluded; " +

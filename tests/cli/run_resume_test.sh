@@ -2,7 +2,8 @@
 # `dayphoton run` cache and resume (issue 5 acceptance), checked from the run log:
 #  1. a run killed with SIGKILL in the middle of the photon pass, run again, finishes from
 #     what it cached and its results are byte-identical to an uninterrupted run;
-#  2. a second run with nothing changed traces nothing;
+#  2. a second run with nothing changed traces nothing, and its results, all from the cache,
+#     are byte-identical to the first;
 #  3. a changed sensor spacing re-estimates without re-tracing photons;
 #  4. a changed weather file re-multiplies only.
 # Usage: DAYPHOTON=path/to/dayphoton bash run_resume_test.sh  (from the repository root)
@@ -43,12 +44,19 @@ for f in workplane/daylight_factor.csv workplane/coefficients_sky.mtx workplane/
 done
 echo "ok   resumed results are byte-identical to an uninterrupted run"
 
-# 2. Nothing changed: no tracing, no estimating, sky matrix from the cache.
+# 2. Nothing changed: no tracing, no estimating, sky matrix from the cache; same bytes.
+outputs="workplane/daylight_factor.csv workplane/coefficients_sky.mtx workplane/coefficients_sun.mtx
+         workplane/illuminance.bin workplane/metrics.csv"
+mkdir -p "$scratch/first"
+for f in $outputs; do cp "$scratch/b/$f" "$scratch/first/$(basename "$f")"; done  # basenames are unique
 "$bin" run "$project" --output "$scratch/b" --quiet || fail "the repeated run failed"
+for f in $outputs; do
+  cmp -s "$scratch/b/$f" "$scratch/first/$(basename "$f")" || fail "$f differs between a fresh and a cached run"
+done
 grep -q "photons: traced 0 of 146" "$scratch/b/run.log" || fail "repeat: $(grep photons "$scratch/b/run.log")"
 grep -q "coefficients workplane: cached" "$scratch/b/run.log" || fail "repeat: coefficients not cached"
 grep -q "sky matrix: cached" "$scratch/b/run.log" || fail "repeat: sky matrix not cached"
-echo "ok   unchanged project: nothing traced, estimated or built"
+echo "ok   unchanged project: nothing traced, estimated or built; results byte-identical"
 
 # 3. A new sensor spacing: the plane is the same, so photons come from the cache.
 sed -i 's/spacing: 0.5/spacing: 0.25/' "$project"
