@@ -695,6 +695,15 @@ class Loader {
     if (r.read_integer("direct_samples_per_bin", v)) s.direct_samples_per_bin = static_cast<int>(v);
     if (r.read_integer("caustic_photons_per_bin", v)) s.caustic_photons_per_bin = v;
     if (r.read_integer("caustic_bandwidth", v)) s.caustic_bandwidth = static_cast<int>(v);
+    if (const YamlNode* roi = r.take("region_of_interest"); roi && expect_map(*roi, "region_of_interest", m_reporter)) {
+      Simulation::RegionOfInterest box;
+      box.location = roi->location;
+      ParamReader b(*roi, schema_section("region of interest"), m_reporter);
+      b.read_vec3("origin", box.origin_m);
+      b.read_vec3("size", box.size_m);
+      b.finish();
+      s.region_of_interest = box;
+    }
     r.finish();
   }
 

@@ -324,6 +324,11 @@ std::vector<SectionSchema> build_schema() {
       P("direct_samples_per_bin", T::Integer, "shadow rays per bin for the direct component").at_least(1).def("16"),
       P("caustic_photons_per_bin", T::Integer, "stored caustic photons per sky/sun bin, a target of their own (0: stored like the global ones)").at_least(0).def("0"),
       P("caustic_bandwidth", T::Integer, "photons per caustic estimate, among caustic photons only (0: caustic and global photons share one disc)").at_least(0).def("0"),
+      P("region_of_interest", T::Section, "store photons only inside this box; the photon targets count only those (every sensor must lie inside)").section("region of interest"),
+  }});
+  s.push_back({"region of interest", "a box, model coordinates, where photons are stored", {
+      P("origin", T::Vec3, "min corner").unit("m").required(),
+      P("size", T::Vec3, "x, y, z extents").unit("m").above(0).required(),
   }});
   s.push_back({"basis", "map form of simulation.basis", {
       P("reinhart", T::Integer, "Reinhart subdivision MF (1 = Tregenza, 145 patches; MF n: 144 n^2 + 1)").range(1, 12).required(),

@@ -165,6 +165,23 @@ SceneDescription build_scene_description(const Project& project) {
     if (detail::generate_points(spec, diag, grid)) scene.grids.push_back(std::move(grid));
   }
 
+  if (const auto& roi = project.simulation.region_of_interest) {
+    // Photons are stored only inside the box: a sensor outside it would get none.
+    const Vec3 lo = roi->origin_m, hi = roi->origin_m + roi->size_m;
+    constexpr double Tolerance_m = 1e-9;
+    for (const SensorGrid& grid : scene.grids)
+      for (std::size_t i = 0; i < grid.points.size(); ++i) {
+        const Vec3& p = grid.points[i].position;
+        bool inside = true;
+        for (int k = 0; k < 3; ++k) inside = inside && p[k] >= lo[k] - Tolerance_m && p[k] <= hi[k] + Tolerance_m;
+        if (inside) continue;
+        detail::report(diag, roi->location,
+                       "simulation.region_of_interest: sensor " + std::to_string(i) + " of '" + grid.name + "' at (" +
+                           format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) +
+                           ") m lies outside the box; no photon would be stored for its estimates");
+        break;  // one message per grid
+      }
+  }
   diag.throw_if_errors();
   rotate_scene(scene, north_deg);
   return scene;

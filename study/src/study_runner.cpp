@@ -17,6 +17,7 @@
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sun_bins.h"
+#include "dayphoton/project/north_rotation.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/study/annual_illuminance.h"
@@ -46,6 +47,25 @@ constexpr double GroundPhotonFactor = 16.0;
 
 /// DF sky: CIE overcast of this horizontal illuminance (the DF does not depend on it).
 constexpr double OvercastHorizontalLux = 10000.0;
+
+/// The project's region of interest in world coordinates: the axis-aligned box around the
+/// rotated model box (with a north rotation a little larger, which only stores more).
+std::optional<engine::Bounds3> region_of_interest(const project::Project& project) {
+  const auto& roi = project.simulation.region_of_interest;
+  if (!roi) return std::nullopt;
+  const double north = project.site.rotation_to_true_north_deg();
+  engine::Bounds3 b{project::model_to_world(roi->origin_m, north), project::model_to_world(roi->origin_m, north)};
+  for (int corner = 1; corner < 8; ++corner) {
+    const Vec3 c{roi->origin_m.x + ((corner & 1) ? roi->size_m.x : 0), roi->origin_m.y + ((corner & 2) ? roi->size_m.y : 0),
+                 roi->origin_m.z + ((corner & 4) ? roi->size_m.z : 0)};
+    const Vec3 w = project::model_to_world(c, north);
+    for (int k = 0; k < 3; ++k) {
+      b.lower[k] = std::min(b.lower[k], w[k]);
+      b.upper[k] = std::max(b.upper[k], w[k]);
+    }
+  }
+  return b;
+}
 
 engine::TracingOptions tracing_options(const project::Simulation& sim, std::size_t sources) {
   engine::TracingOptions o;
@@ -233,7 +253,8 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   const std::size_t n_grids = description.grids.size();
   const bool keep_surface =
       std::any_of(plane_of_grid.begin(), plane_of_grid.end(), [](int p) { return p < 0; });
-  const engine::TracingOptions tracing = sun_tracing_options(sim, keep_surface);
+  engine::TracingOptions tracing = sun_tracing_options(sim, keep_surface);
+  tracing.region_of_interest = region_of_interest(project);
   engine::CoefficientOptions estimating = coefficient_options(sim);
   estimating.density.bandwidth = sun_bin_bandwidth(estimating.density.bandwidth);
   const ContentHash scene_hash = scene_key(description);
@@ -418,6 +439,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
 
   // Keys: photons per source, coefficients per grid.
   engine::TracingOptions tracing = tracing_options(sim, sources.size());
+  tracing.region_of_interest = region_of_interest(project);
   tracing.keep_surface_photons =
       std::any_of(plane_of_grid.begin(), plane_of_grid.end(), [](int p) { return p < 0; });
   const engine::CoefficientOptions estimating = coefficient_options(sim);

@@ -406,6 +406,37 @@ TEST(ProjectLoader, SimulationBasisForms) {
             std::vector<std::string>{"5:32: 'reinhart' must be in [1, 12], got 13"});
 }
 
+TEST(ProjectLoader, SimulationRegionOfInterest) {
+  // Read as written (model coordinates); every sensor must lie inside it, else the one
+  // message per grid points at the key.
+  const std::string room =
+      "materials: {w: {type: lambertian, reflectance: 0.5}}\n"
+      "geometry: {rooms: [{name: r, size: [6, 8, 3], materials: {floor: w, ceiling: w, walls: w}}]}\n"
+      "sensors: {grids: [{name: g, room: r, height: 0.8, spacing: 1, inset: 0.5}]}\n";
+  const Project p = load_project_from_string(
+      Head + room + "simulation: {region_of_interest: {origin: [0, 4, 0], size: [6, 4, 3]}}\n", FakePath);
+  ASSERT_TRUE(p.simulation.region_of_interest.has_value());
+  EXPECT_EQ(p.simulation.region_of_interest->origin_m, Vec3(0, 4, 0));
+  EXPECT_EQ(p.simulation.region_of_interest->size_m, Vec3(6, 4, 3));
+  try {
+    (void)build_scene_description(p);
+    ADD_FAILURE() << "a grid reaching outside the region of interest was accepted";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.diagnostics().size(), 1u);
+    EXPECT_EQ(e.diagnostics()[0].location.line, 6);
+    EXPECT_EQ(e.diagnostics()[0].message,
+              "simulation.region_of_interest: sensor 0 of 'g' at (0.5, 0.5, 0.8) m lies outside the box; no photon "
+              "would be stored for its estimates");
+  }
+  const Project whole = load_project_from_string(
+      Head + room + "simulation: {region_of_interest: {origin: [0, 0, 0], size: [6, 8, 3]}}\n", FakePath);
+  EXPECT_EQ(build_scene_description(whole).grids.at(0).points.size(), 48u);
+  EXPECT_EQ(errors_of(Head + room + "simulation: {region_of_interest: {origin: [0, 0, 0], size: [6, 0, 3]}}\n"),
+            std::vector<std::string>{"6:64: 'size' must be > 0, got 0"});
+  EXPECT_EQ(errors_of(Head + room + "simulation: {region_of_interest: {origin: [0, 0, 0]}}\n"),
+            std::vector<std::string>{"6:34: missing required key 'size' in region of interest"});
+}
+
 TEST(ProjectLoader, MaterialsOfEveryType) {
   const Project p = load_project_from_string(
       Head +

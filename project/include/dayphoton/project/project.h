@@ -309,6 +309,14 @@ struct Simulation {
   /// Photons per caustic estimate, among caustic photons only (the caustic map); 0: caustic and
   /// global photons share one disc (engine::CoefficientOptions::caustic_bandwidth).
   int caustic_bandwidth = 0;
+  /// Photons are stored only inside this box (model coordinates), and the photon targets count
+  /// only those (engine::TracingOptions::region_of_interest). Every sensor must lie inside.
+  struct RegionOfInterest {
+    Vec3 origin_m;  ///< min corner
+    Vec3 size_m;
+    SourceLocation location;
+  };
+  std::optional<RegionOfInterest> region_of_interest;
   SourceLocation location;
 };
 
