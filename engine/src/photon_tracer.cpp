@@ -286,7 +286,14 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
   if (r_max > 0) {
     tally.storage_probability_global = r_g / r_max;
     tally.storage_probability_caustic = target_c > 0 ? r_c / r_max : r_g / r_max;
-    const std::uint64_t main = static_cast<std::uint64_t>(std::ceil(double(prepass) * r_max));
+    // The low-yield cap (photon_tracer.h): fixed before any of these attempts is traced.
+    const std::uint64_t cap =
+        options.max_mainpass_attempts_per_target == 0
+            ? std::numeric_limits<std::uint64_t>::max()
+            : static_cast<std::uint64_t>(options.max_mainpass_attempts_per_target) * largest;
+    const double planned = std::ceil(double(prepass) * r_max);
+    tally.capped = planned > double(cap);
+    const std::uint64_t main = tally.capped ? cap : static_cast<std::uint64_t>(planned);
     const std::uint64_t g0 = tally.stored_global, c0 = tally.stored_caustic;
     trace_attempts(scene, materials, planes, emitter, source, prepass, prepass + main,
                    tally.storage_probability_global, tally.storage_probability_caustic, options,
@@ -303,8 +310,11 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
       return double(target - stored) / yield;
     };
     extra = std::max(need(target_g, tally.stored_global, g0), need(target_c, tally.stored_caustic, c0));
-    const std::uint64_t topup =
-        std::min<std::uint64_t>(main, static_cast<std::uint64_t>(std::ceil(extra)));
+    std::uint64_t topup = std::min<std::uint64_t>(main, static_cast<std::uint64_t>(std::ceil(extra)));
+    if (topup > cap - main) {
+      topup = cap - main;
+      tally.capped = true;
+    }
     if (topup > 0) {
       trace_attempts(scene, materials, planes, emitter, source, prepass + main,
                      prepass + main + topup, tally.storage_probability_global,

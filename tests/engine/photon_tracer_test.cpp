@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <numeric>
 
 #include <tbb/global_control.h>
@@ -343,6 +345,152 @@ TEST(PhotonCounts, OneAndTwoThreadsGiveBitIdenticalPhotons) {
   EXPECT_EQ(0, std::memcmp(a.surface.data(), b.surface.data(), a.surface.size() * sizeof(Photon)));
   EXPECT_EQ(0, std::memcmp(a.planes[0].data(), b.planes[0].data(),
                            a.planes[0].size() * sizeof(Photon)));
+}
+
+// ---- low-yield cap ------------------------------------------------------------------------
+
+// window_room with a black screen 0.5 m outside the window, parallel to it, open only in a
+// `hole_m` square in front of the window's centre: the sun disc due south at 30 degrees
+// reaches the port only through the hole, so most attempts are shaded and the source stores
+// few photons per attempt (a port seen through a sliver).
+SceneDescription screened_window_room(double hole_m) {
+  SceneDescription d = window_room(MaterialType::Opening);
+  const int black = test::add_material(d, "screen", MaterialType::Lambertian, 0.0);
+  const double y = -0.5, x0 = 1.5 - hole_m / 2, x1 = 1.5 + hole_m / 2;
+  const double z0 = 1.4 - hole_m / 2, z1 = 1.4 + hole_m / 2;
+  test::add_surface(d, "screen_w", black, {{-1, y, -1}, {x0, y, -1}, {x0, y, 4}, {-1, y, 4}});
+  test::add_surface(d, "screen_e", black, {{x1, y, -1}, {4, y, -1}, {4, y, 4}, {x1, y, 4}});
+  test::add_surface(d, "screen_s", black, {{x0, y, -1}, {x1, y, -1}, {x1, y, z0}, {x0, y, z0}});
+  test::add_surface(d, "screen_n", black, {{x0, y, z1}, {x1, y, z1}, {x1, y, 4}, {x0, y, 4}});
+  return d;
+}
+
+SourceSet low_sun() {
+  SourceSet s;
+  s.add_sun_disc({0, -std::cos(30 * Pi / 180), std::sin(30 * Pi / 180)}, 0.00465);
+  return s;
+}
+
+double stored_flux(const TracedPhotons& t) {
+  return indirect_plane_flux(t.surface) + indirect_plane_flux(t.planes[0]);
+}
+
+std::uint64_t attempts_of(const SourceTally& t) { return t.prepass_attempts + t.mainpass_attempts; }
+
+TEST(PhotonCap, BoundsTheAttemptsOfALowYieldSource) {
+  // A 5 cm hole in front of a 2 x 1.2 m window: ~0.1 % of the port is lit, so the source
+  // stores ~1 photon per 1000 attempts and, uncapped, needs ~target / yield attempts.
+  const SceneDescription d = screened_window_room(0.05);
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models_of(d);
+  const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8)};
+  const SourceSet sources = low_sun();
+  const PortEmitter emitter(scene, sources);
+  TracingOptions capped;
+  capped.photons_per_source = 200;
+  ASSERT_EQ(capped.max_mainpass_attempts_per_target, 256u);  // the default caps
+  TracingOptions uncapped = capped;
+  uncapped.max_mainpass_attempts_per_target = 0;
+  const TracedPhotons a = trace_source_photons(scene, materials, emitter, planes, capped, 0);
+  const TracedPhotons b = trace_source_photons(scene, materials, emitter, planes, uncapped, 0);
+  const SourceTally& ta = a.tallies[0];
+  const SourceTally& tb = b.tallies[0];
+  EXPECT_TRUE(ta.capped);
+  EXPECT_FALSE(tb.capped);
+  EXPECT_LE(ta.mainpass_attempts, 256u * 200u);
+  EXPECT_GT(tb.mainpass_attempts, 2 * 256u * 200u) << "the configuration is not low-yield enough";
+  EXPECT_LT(ta.stored_global, 200u);
+  EXPECT_GT(ta.stored_global, 0u);
+  EXPECT_GE(double(tb.stored_global), 200.0 * (1 - 4 / std::sqrt(200.0)));
+  // Identical pre-passes (the cap acts after them).
+  EXPECT_EQ(ta.prepass_attempts, tb.prepass_attempts);
+  EXPECT_DOUBLE_EQ(ta.flux_per_attempt * double(attempts_of(ta)), ta.bound_flux);
+}
+
+TEST(PhotonCap, CappedSourceFluxIsUnbiased) {
+  // The capped main pass is a fixed number of i.i.d. attempts, each carrying
+  // bound_flux / attempts, so the expected stored flux is that of the uncapped run. Each
+  // run's stored flux is one sample; the standard error of a mean over independent seeds is
+  // the sample standard deviation / sqrt(runs). Tolerance: 4 combined standard errors.
+  // A 20 cm hole: yield ~1/60 per attempt; target 1000 needs ~60 000 attempts uncapped, the
+  // cap at 8 per target photon allows 8000 after the pre-pass (~6400-12 800).
+  const SceneDescription d = screened_window_room(0.2);
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models_of(d);
+  const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8)};
+  const SourceSet sources = low_sun();
+  const PortEmitter emitter(scene, sources);
+  TracingOptions o;
+  o.photons_per_source = 1000;
+  auto runs = [&](std::size_t cap, int count, std::uint64_t first_seed) {
+    std::vector<double> flux;
+    std::uint64_t capped = 0, stored = 0;
+    for (int k = 0; k < count; ++k) {
+      TracingOptions ok = o;
+      ok.max_mainpass_attempts_per_target = cap;
+      ok.seed = first_seed + std::uint64_t(k);
+      const TracedPhotons t = trace_source_photons(scene, materials, emitter, planes, ok, 0);
+      flux.push_back(stored_flux(t));
+      capped += t.tallies[0].capped ? 1 : 0;
+      stored += t.tallies[0].stored_global;
+    }
+    const double mean = std::accumulate(flux.begin(), flux.end(), 0.0) / double(count);
+    double var = 0;
+    for (double x : flux) var += (x - mean) * (x - mean);
+    var /= double(count - 1);
+    struct Stats { double mean, sd, se; std::uint64_t capped, stored; };
+    return Stats{mean, std::sqrt(var), std::sqrt(var / double(count)), capped, stored};
+  };
+  const auto cap = runs(8, 48, 1000);
+  const auto ref = runs(0, 12, 5000);
+  EXPECT_EQ(cap.capped, 48u);
+  EXPECT_EQ(ref.capped, 0u);
+  EXPECT_LT(cap.stored * 12 * 2, ref.stored * 48) << "the cap did not halve the photons per run";
+  EXPECT_NEAR(cap.mean, ref.mean, 4 * std::hypot(cap.se, ref.se))
+      << "capped " << cap.mean << " +- " << cap.se << ", uncapped " << ref.mean << " +- " << ref.se;
+  // Fewer photons, more variance per run (only for this source).
+  EXPECT_GT(cap.sd, ref.sd);
+  if (std::getenv("DAYPHOTON_TEST_VERBOSE"))  // numbers for docs/photon-tracing.md
+    std::cout << "capped: " << cap.mean << " +- " << cap.se << " (sd " << cap.sd << ", "
+              << cap.stored / 48 << " photons per run); uncapped: " << ref.mean << " +- " << ref.se
+              << " (sd " << ref.sd << ", " << ref.stored / 12 << " photons per run)\n";
+}
+
+TEST(PhotonCap, UncappedSourcesAreBitIdenticalToNoCap) {
+  // A cap of 2 attempts per target photon in the window room: sources of low yield (low
+  // sky bins, the ground through glazing) are capped, the others must not change at all.
+  const SceneDescription d = window_room(MaterialType::Glass);
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models_of(d);
+  const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8)};
+  const SourceSet sources = SourceSet::sky_bins(sky::PatchBasis::tregenza());
+  const PortEmitter emitter(scene, sources);
+  TracingOptions none;
+  none.photons_per_source = 300;
+  none.max_mainpass_attempts_per_target = 0;
+  TracingOptions tight = none;
+  tight.max_mainpass_attempts_per_target = 2;
+  std::size_t capped = 0, same = 0;
+  for (std::size_t p = 0; p < sources.size(); ++p) {
+    const TracedPhotons a = trace_source_photons(scene, materials, emitter, planes, tight, p);
+    if (a.tallies[0].capped) {
+      ++capped;
+      EXPECT_LE(a.tallies[0].mainpass_attempts, 2u * 300u) << "bin " << p;
+      continue;
+    }
+    ++same;
+    const TracedPhotons b = trace_source_photons(scene, materials, emitter, planes, none, p);
+    EXPECT_EQ(attempts_of(a.tallies[0]), attempts_of(b.tallies[0])) << "bin " << p;
+    EXPECT_FALSE(b.tallies[0].capped);
+    ASSERT_EQ(a.surface.size(), b.surface.size()) << "bin " << p;
+    ASSERT_EQ(a.planes[0].size(), b.planes[0].size()) << "bin " << p;
+    EXPECT_EQ(0, std::memcmp(a.surface.data(), b.surface.data(), a.surface.size() * sizeof(Photon)));
+    EXPECT_EQ(0, std::memcmp(a.planes[0].data(), b.planes[0].data(), a.planes[0].size() * sizeof(Photon)));
+  }
+  EXPECT_GT(capped, 0u);
+  EXPECT_GT(same, 0u);
+  if (std::getenv("DAYPHOTON_TEST_VERBOSE"))
+    std::cout << "cap 2: " << capped << " sources capped, " << same << " unchanged\n";
 }
 
 }  // namespace

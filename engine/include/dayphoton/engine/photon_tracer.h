@@ -26,6 +26,16 @@
 // sized from the main pass's own yield. All photons of a source share the flux
 // bound_flux / (all attempts) (port_emission.h), times 1/d_j.
 //
+// Low-yield cap (not in the thesis): the main pass and top-up together make at most
+// max_mainpass_attempts_per_target x (largest target) attempts. A source that stores fewer
+// than ~1 photon per that many attempts (a sky patch seen by a port through a sliver, or
+// passing straight through a port enclosure) then keeps fewer photons instead of running for
+// minutes. Each pass's attempt count is fixed before it is traced, so its attempts are
+// i.i.d. and bound_flux / attempts keeps their flux unbiased whatever the count; only the
+// variance grows, and only for sources that bring little light (docs/photon-tracing.md,
+// "Low-yield cap": a capped source's absolute noise is at most that of a source whose yield
+// is exactly at the cap).
+//
 // Determinism: attempt i of source p uses Rng(seed, p, i, stream) for the emission,
 // scattering and roulette streams; attempts are traced in blocks in parallel (oneTBB) and
 // the stored photons concatenated in (source, attempt) order, so the result is identical
@@ -68,6 +78,11 @@ struct TracingOptions {
   /// per targeted photon without storing enough, or 65536 attempts of which none entered
   /// (e.g. a sun behind the building, a bin just behind the port's plane).
   std::size_t max_prepass_attempts_per_target = 256;
+  /// The main pass and its top-up make at most this many attempts per targeted photon
+  /// (times the largest scaled target); 0 = no cap. Only sources storing fewer than about
+  /// one photon per this many attempts are affected: they keep fewer photons, their flux
+  /// stays unbiased (see above), and SourceTally::capped is set.
+  std::size_t max_mainpass_attempts_per_target = 256;
   bool store_direct = false;             ///< also store Direct photons (diagnostics)
   /// Keep the photons stored on surfaces. When every sensor grid is a receiver plane they
   /// are not used: they are then still counted (the counts control is unchanged, so the
@@ -87,6 +102,9 @@ struct SourceTally {
   double bound_flux = 0;                 ///< PortEmitter::bound_flux
   double flux_per_attempt = 0;           ///< bound_flux / all attempts
   double storage_probability_global = 1, storage_probability_caustic = 1;
+  /// The main pass (with its top-up) was cut to max_mainpass_attempts_per_target x target
+  /// attempts: the source stores fewer photons than its target.
+  bool capped = false;
 };
 
 struct TracedPhotons {
