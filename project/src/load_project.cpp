@@ -704,6 +704,7 @@ class Loader {
       b.finish();
       s.region_of_interest = box;
     }
+    if (r.read_integer("max_attempts_per_photon", v)) s.max_attempts_per_photon = v;
     r.finish();
   }
 

@@ -40,6 +40,7 @@ void add_tracing_options(ContentHash& h, std::size_t source, const engine::Traci
   h.number(source < o.source_photon_factor.size() ? o.source_photon_factor[source] : 1.0);
   h.integer(static_cast<std::int64_t>(o.seed)).number(o.prepass_fraction);
   h.integer(static_cast<std::int64_t>(o.max_prepass_attempts_per_target));
+  h.integer(static_cast<std::int64_t>(o.max_mainpass_attempts_per_target));
   h.integer(o.store_direct ? 1 : 0).integer(o.keep_surface_photons ? 1 : 0).integer(o.max_events);
   h.integer(o.region_of_interest ? 1 : 0);
   if (o.region_of_interest) h.vec3(o.region_of_interest->lower).vec3(o.region_of_interest->upper);

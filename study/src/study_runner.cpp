@@ -2,6 +2,7 @@
 #include "dayphoton/study/study_runner.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -72,6 +73,7 @@ engine::TracingOptions tracing_options(const project::Simulation& sim, std::size
   o.photons_per_source = static_cast<std::size_t>(sim.photons_per_bin);
   o.caustic_photons_per_source = static_cast<std::size_t>(sim.caustic_photons_per_bin);
   o.seed = sim.seed;
+  o.max_mainpass_attempts_per_target = static_cast<std::size_t>(sim.max_attempts_per_photon);
   o.source_photon_factor.assign(sources, 1.0);
   if (sources > 0) o.source_photon_factor[0] = GroundPhotonFactor;
   return o;
@@ -110,6 +112,30 @@ class RunLog {
   std::string m_text;
 };
 
+
+/// The run-log note on sources whose main pass hit the low-yield cap
+/// (engine::TracingOptions::max_mainpass_attempts_per_target), or "" if none did. `what`
+/// names the sources ("sources", "sun bins"); the stored share is of the global target.
+std::string capped_note(const engine::TracedPhotons& photons, const engine::TracingOptions& tracing,
+                        const std::string& what) {
+  std::size_t capped = 0;
+  double least = 1, most = 0;
+  for (std::size_t p = 0; p < photons.tallies.size(); ++p) {
+    const engine::SourceTally& t = photons.tallies[p];
+    if (!t.capped) continue;
+    ++capped;
+    const double factor = p < tracing.source_photon_factor.size() ? tracing.source_photon_factor[p] : 1.0;
+    const double share = double(t.stored_global) / (double(tracing.photons_per_source) * factor);
+    least = std::min(least, share);
+    most = std::max(most, share);
+  }
+  if (capped == 0) return "";
+  auto percent = [](double x) { return std::to_string(static_cast<long long>(std::lround(100 * x))); };
+  return std::to_string(capped) + " of " + std::to_string(photons.tallies.size()) + " " + what +
+         " capped at " + std::to_string(tracing.max_mainpass_attempts_per_target) +
+         " main-pass attempts per target photon (low yield: they stored " + percent(least) + "-" +
+         percent(most) + " % of their target; unbiased, noisier, and they bring little light)";
+}
 
 /// What every case (the base project and each variant) of one run shares.
 struct RunContext {
@@ -234,6 +260,7 @@ engine::TracingOptions sun_tracing_options(const project::Simulation& sim, bool 
       std::max(1LL, std::llround(double(sim.photons_per_bin) * SunBinPhotonFraction)));
   o.caustic_photons_per_source = static_cast<std::size_t>(sim.caustic_photons_per_bin);
   o.seed = sim.seed;
+  o.max_mainpass_attempts_per_target = static_cast<std::size_t>(sim.max_attempts_per_photon);
   o.keep_surface_photons = keep_surface_photons;
   return o;
 }
@@ -335,6 +362,9 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
     log.line(prefix + "sun photons: traced " + std::to_string(n_traced) + " of " + std::to_string(n_lit) +
              " sun bins (" + std::to_string(n_lit - n_traced) + " cached)");
     photons = engine::merge_traced_photons(std::move(per_bin));
+    const std::string note = capped_note(photons, tracing, "sun bins");
+    if (!note.empty()) log.line(prefix + "sun photons: " + note);
+    for (const engine::SourceTally& t : photons.tallies) report.sun_bins_capped += t.capped ? 1 : 0;
   }
 
   for (std::size_t g = 0; g < n_grids; ++g) {
@@ -504,6 +534,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
              std::to_string(sources.size()) + " sources (" +
              std::to_string(sources.size() - n_traced) + " cached)");
     photons = engine::merge_traced_photons(std::move(per_source));
+    const std::string note = capped_note(photons, tracing, "sources");
+    if (!note.empty()) log.line(prefix + "photons: " + note);
+    for (const engine::SourceTally& t : photons.tallies) report.sources_capped += t.capped ? 1 : 0;
   }
 
   // 3. Coefficients per grid.
@@ -760,6 +793,9 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                  {"grids_estimated", report.grids_estimated}, {"grids_cached", report.grids_cached},
                  {"sun_bins", report.sun_bins}, {"sun_bins_lit", report.sun_bins_lit},
                  {"sun_bins_traced", report.sun_bins_traced}}},
+      {"photon_cap", {{"max_attempts_per_photon", sim.max_attempts_per_photon},
+                      {"sources_capped", report.sources_capped},
+                      {"sun_bins_capped", report.sun_bins_capped}}},
       {"grids", grids},
       {"variants", variants},
       {"notes", report.notes}};

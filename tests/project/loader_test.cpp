@@ -372,6 +372,7 @@ TEST(ProjectLoader, DefaultsComeFromTheSchemaAndMatchTheStructs) {
   EXPECT_EQ(p.simulation.sun, s.sun);
   EXPECT_EQ(p.simulation.sun_mf, s.sun_mf);
   EXPECT_EQ(p.simulation.direct_samples_per_bin, s.direct_samples_per_bin);
+  EXPECT_EQ(p.simulation.max_attempts_per_photon, s.max_attempts_per_photon);
   EXPECT_EQ(p.outputs.folder, ProjectsDir + "/office/results");
   EXPECT_EQ(p.outputs.folder_as_written, "results");
   EXPECT_TRUE(p.outputs.daylight_factor && p.outputs.coefficients && p.outputs.images && p.outputs.report);

@@ -71,6 +71,7 @@ SourceTally tally(std::uint64_t k) {
   t.flux_per_attempt = std::nextafter(1.0 / 3.0, 1.0) * double(k + 1);
   t.storage_probability_global = k == 0 ? -0.0 : 0.123456789012345678;
   t.storage_probability_caustic = k == 1 ? std::numeric_limits<double>::denorm_min() : 1.0;
+  t.capped = k % 2 == 1;
   return t;
 }
 
@@ -93,6 +94,7 @@ void expect_same_photons(const std::vector<Photon>& a, const std::vector<Photon>
 void expect_same_tally(const SourceTally& a, const SourceTally& b) {
   EXPECT_EQ(a.prepass_attempts, b.prepass_attempts);
   EXPECT_EQ(a.mainpass_attempts, b.mainpass_attempts);
+  EXPECT_EQ(a.capped, b.capped);
   EXPECT_EQ(a.entered, b.entered);
   EXPECT_EQ(a.stored_global, b.stored_global);
   EXPECT_EQ(a.stored_caustic, b.stored_caustic);

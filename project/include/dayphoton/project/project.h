@@ -317,6 +317,9 @@ struct Simulation {
     SourceLocation location;
   };
   std::optional<RegionOfInterest> region_of_interest;
+  /// Low-yield cap: main-pass attempts per target photon of a source, 0 = none
+  /// (engine::TracingOptions::max_mainpass_attempts_per_target).
+  long long max_attempts_per_photon = 256;
   SourceLocation location;
 };
 

@@ -56,6 +56,10 @@ struct RunReport {
   std::size_t sun_bins = 0;         ///< sun bins of all cases (sun: bins)
   std::size_t sun_bins_lit = 0;     ///< of which send light through the ports (traced or cached)
   std::size_t sun_bins_traced = 0;  ///< of which were traced in this run
+  /// Sources (all cases) and sun bins whose main pass hit the low-yield cap
+  /// (engine::TracingOptions::max_mainpass_attempts_per_target), counted over the photons
+  /// traced or read from the cache in this run (none when every grid's coefficients were cached).
+  std::size_t sources_capped = 0, sun_bins_capped = 0;
   std::vector<GridReport> grids;
   std::vector<std::string> notes;  ///< things the user should know (e.g. sun mode)
 };
