@@ -43,7 +43,10 @@ BiasCompensationOptions bias_options(const CoefficientOptions& options,
 
 /// Local-linear density at the disc's centre from the photon sums S0 = sum Phi and
 /// S1 = sum Phi (q - x) (per channel): the first unknown of the 3 x 3 moment system, by
-/// Cramer's rule. Falls back to S0 / A when the system is degenerate.
+/// Cramer's rule. Falls back to S0 / A when the system is degenerate, and when the fitted
+/// plane is negative at the centre: a steep fitted gradient over a wide disc (few photons
+/// at the far side of a room, e.g. behind closed blinds) extrapolates below zero, and the
+/// negative values then add up over sources into negative hourly illuminance.
 Vec3 local_linear_density(const AreaMoments& m, const Vec3& s0, const Vec3& s1x, const Vec3& s1y) {
   const double a11 = m.area, a12 = m.mx, a13 = m.my;
   const double a22 = m.mxx, a23 = m.mxy, a33 = m.myy;
@@ -58,7 +61,9 @@ Vec3 local_linear_density(const AreaMoments& m, const Vec3& s0, const Vec3& s1x,
                       a13 * (b2 * a23 - a22 * b3);
     return d1 / det;
   };
-  return {solve(s0.x, s1x.x, s1y.x), solve(s0.y, s1x.y, s1y.y), solve(s0.z, s1x.z, s1y.z)};
+  const Vec3 fitted{solve(s0.x, s1x.x, s1y.x), solve(s0.y, s1x.y, s1y.y), solve(s0.z, s1x.z, s1y.z)};
+  if (fitted.x < 0 || fitted.y < 0 || fitted.z < 0) return s0 * (1.0 / m.area);
+  return fitted;
 }
 
 }  // namespace

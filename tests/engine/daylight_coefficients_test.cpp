@@ -337,5 +337,51 @@ TEST(DaylightCoefficients, LocalLinearEstimateRemovesTheWallGradientBias) {
   EXPECT_NEAR(disc.global[1].x / 3.0061, 1.0, 2e-3);
 }
 
+TEST(DaylightCoefficients, LocalLinearEstimateFallsBackToTheAverageWhenNegative) {
+  // Deterministic photons on a 1 cm lattice with E(y) = exp(-4 y) (light falling off steeply
+  // away from a window at y = 0). At the back wall (y = 3.95) a wide disc (40 000 photons,
+  // radius ~1.6 m, cut by the wall) sees a convex field: the fitted plane's slope is that of
+  // the brighter far side, and extrapolated to the sensor it is negative (the defect seen in
+  // projects/blinds, closed slats: -109 lux hours at the back row). The estimate must then be
+  // the clipped-disc average, which is positive.
+  const ReceiverPlane plane(0.8, true, {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  std::vector<Photon> photons;
+  const int n = 400;
+  const double h = 4.0 / n;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      Photon p;
+      const double x = (i + 0.5) * h, y = (j + 0.5) * h;
+      p.position = {float(x), float(y), 0.8f};
+      const float f = static_cast<float>(std::exp(-4 * y) * h * h);
+      p.flux = {f, f, f};
+      p.source = 0;
+      p.path_class = PathClass::Global;
+      p.set_normal({0, 0, 1});
+      photons.push_back(p);
+    }
+  const GridPhotons grid = GridPhotons::for_plane(plane, photons, 1);
+  const std::vector<SensorPoint> sensors = {{{2.0037, 3.9461, 0.8}, {0, 0, 1}}};
+  auto estimate = [&](bool local_linear) {
+    CoefficientOptions o;
+    o.density.bandwidth = 40000;
+    o.local_linear = local_linear;
+    DaylightCoefficients c;
+    c.sensors = 1;
+    c.sources = 1;
+    c.caustic.assign(1, Vec3{0, 0, 0});
+    c.global.assign(1, Vec3{0, 0, 0});
+    estimate_photon_coefficients(grid, sensors, o, c);
+    return c;
+  };
+  const DaylightCoefficients linear = estimate(true), disc = estimate(false);
+  // Without the fallback the fit gives -6.59e-6 here (the true E is exp(-15.8) = 1.4e-7).
+  // The two paths sum the same photons over the same clipped disc in a different order.
+  ASSERT_GT(disc.global[0].x, 0.0);
+  EXPECT_NEAR(linear.global[0].x / disc.global[0].x, 1.0, 1e-9);
+  EXPECT_NEAR(linear.global[0].y / disc.global[0].y, 1.0, 1e-9);
+  EXPECT_NEAR(linear.global[0].z / disc.global[0].z, 1.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace dayphoton::engine
