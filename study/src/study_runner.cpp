@@ -363,7 +363,10 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
              " sun bins (" + std::to_string(n_lit - n_traced) + " cached)");
     photons = engine::merge_traced_photons(std::move(per_bin));
     const std::string note = capped_note(photons, tracing, "sun bins");
-    if (!note.empty()) log.line(prefix + "sun photons: " + note);
+    if (!note.empty()) {
+      log.line(prefix + "sun photons: " + note);
+      report.notes.push_back(prefix + "sun photons: " + note);
+    }
     for (const engine::SourceTally& t : photons.tallies) report.sun_bins_capped += t.capped ? 1 : 0;
   }
 
@@ -535,7 +538,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
              std::to_string(sources.size() - n_traced) + " cached)");
     photons = engine::merge_traced_photons(std::move(per_source));
     const std::string note = capped_note(photons, tracing, "sources");
-    if (!note.empty()) log.line(prefix + "photons: " + note);
+    if (!note.empty()) {
+      log.line(prefix + "photons: " + note);
+      report.notes.push_back(prefix + "photons: " + note);
+    }
     for (const engine::SourceTally& t : photons.tallies) report.sources_capped += t.capped ? 1 : 0;
   }
 
@@ -779,6 +785,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                       {"direct_samples_per_bin", sim.direct_samples_per_bin},
                       {"caustic_photons_per_bin", sim.caustic_photons_per_bin},
                       {"caustic_bandwidth", sim.caustic_bandwidth},
+                      {"max_attempts_per_photon", sim.max_attempts_per_photon},
                       {"seed", sim.seed},
                       {"ground_reflectance", sim.ground_reflectance},
                       {"sun", sim.sun == project::SunMode::Bins ? "bins" : "spread"},
@@ -793,8 +800,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                  {"grids_estimated", report.grids_estimated}, {"grids_cached", report.grids_cached},
                  {"sun_bins", report.sun_bins}, {"sun_bins_lit", report.sun_bins_lit},
                  {"sun_bins_traced", report.sun_bins_traced}}},
-      {"photon_cap", {{"max_attempts_per_photon", sim.max_attempts_per_photon},
-                      {"sources_capped", report.sources_capped},
+      {"photon_cap", {{"sources_capped", report.sources_capped},
                       {"sun_bins_capped", report.sun_bins_capped}}},
       {"grids", grids},
       {"variants", variants},

@@ -1,0 +1,85 @@
+#!/bin/bash
+# Every example project runs (issue 6 acceptance: "every system has an example project that
+# runs in CI in under a minute at reduced photon counts"). For each projects/*/project.yaml,
+# `dayphoton run` into a fresh folder must succeed within MAX_SECONDS (default 60) and write
+# summary.json and, for the base case and every variant, each grid's daylight_factor.csv and
+# metrics.csv with finite, non-negative values (the index and x,y,z columns excepted). Prints
+# each project's wall time. The example projects keep their own photon counts small enough
+# for this (docs/daylight-systems.md, "Examples").
+# Usage: DAYPHOTON=path/to/dayphoton bash run_examples_test.sh [name ...]  (from the
+# repository root; names restrict the run to those projects).
+set -u
+bin=${DAYPHOTON:?set DAYPHOTON to the dayphoton executable}
+max_seconds=${MAX_SECONDS:-60}
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+
+if [ $# -gt 0 ]; then
+  projects=()
+  for name in "$@"; do projects+=("projects/$name/project.yaml"); done
+else
+  projects=(projects/*/project.yaml)
+fi
+
+# Checks one run's output folder: prints nothing and exits 0 when it is complete.
+check_outputs() {
+  python3 - "$1" <<'PY'
+import csv, json, math, os, sys
+out = sys.argv[1]
+problems = []
+with open(os.path.join(out, "summary.json")) as f:
+    summary = json.load(f)
+cases = [("base", summary["grids"])] + [(v["name"], v["grids"]) for v in summary["variants"]]
+for case, grids in cases:
+    if not grids:
+        problems.append(f"{case}: no grids")
+    for g in grids:
+        for name in ("daylight_factor.csv", "metrics.csv"):
+            path = os.path.join(g["folder"], name)
+            if not os.path.isfile(path):
+                problems.append(f"{case}/{g['name']}: no {name}")
+                continue
+            with open(path, newline="") as f:
+                rows = list(csv.reader(f))
+            header, body = rows[0], rows[1:]
+            if len(body) != g["sensors"]:
+                problems.append(f"{path}: {len(body)} rows for {g['sensors']} sensors")
+            values = [c for c, h in enumerate(header) if h not in ("index", "x", "y", "z")]
+            if not values:
+                problems.append(f"{path}: no value columns in {header}")
+            for r, row in enumerate(body, start=2):
+                for c in values:
+                    v = float(row[c])
+                    if not math.isfinite(v) or v < 0:
+                        problems.append(f"{path}:{r}: {header[c]} = {row[c]}")
+                        break
+for p in problems[:20]:
+    print("  " + p)
+sys.exit(1 if problems else 0)
+PY
+}
+
+failed=0
+for project in "${projects[@]}"; do
+  name=$(basename "$(dirname "$project")")
+  out="$scratch/$name"
+  start=$(date +%s%N)
+  "$bin" run "$project" --output "$out" --quiet >"$scratch/$name.log" 2>&1
+  status=$?
+  ms=$((($(date +%s%N) - start) / 1000000))
+  shown="$((ms / 1000)).$((ms % 1000 / 100))"
+  if [ $status -ne 0 ]; then
+    echo "FAIL $name: exit $status after $shown s"; tail -5 "$scratch/$name.log"; failed=$((failed + 1)); continue
+  fi
+  if ! problems=$(check_outputs "$out"); then
+    echo "FAIL $name: outputs ($shown s)"; echo "$problems"; failed=$((failed + 1)); continue
+  fi
+  if [ $ms -gt $((max_seconds * 1000)) ]; then
+    echo "FAIL $name: $shown s, more than $max_seconds s"; failed=$((failed + 1)); continue
+  fi
+  capped=$(grep -h "capped at" "$out/run.log" | sed 's/^/       /')
+  echo "ok   $name: $shown s"
+  [ -n "$capped" ] && echo "$capped"
+done
+[ $failed -eq 0 ] || { echo "$failed of ${#projects[@]} example projects failed"; exit 1; }
+echo "all ${#projects[@]} example projects ran"
