@@ -74,9 +74,10 @@ struct TracingOptions {
   std::vector<double> source_photon_factor;
   std::uint64_t seed = 1;
   double prepass_fraction = 0.25;        ///< k of Alg. 4.1
-  /// A source gives up (stores nothing) when its pre-pass reaches this many attempts
-  /// per targeted photon without storing enough, or 65536 attempts of which none entered
-  /// (e.g. a sun behind the building, a bin just behind the port's plane).
+  /// The pre-pass stops at this many attempts per targeted photon even if it has not stored
+  /// enough to measure the yield (the main pass is then sized from what it stored, and
+  /// capped; with nothing stored there is no main pass), or at 65536 attempts of which none
+  /// entered (e.g. a sun behind the building, a bin just behind the port's plane).
   std::size_t max_prepass_attempts_per_target = 256;
   /// The main pass and its top-up make at most this many attempts per targeted photon
   /// (times the largest scaled target); 0 = no cap. Only sources storing fewer than about
