@@ -133,8 +133,8 @@ std::string capped_note(const engine::TracedPhotons& photons, const engine::Trac
   auto percent = [](double x) { return std::to_string(static_cast<long long>(std::lround(100 * x))); };
   return std::to_string(capped) + " of " + std::to_string(photons.tallies.size()) + " " + what +
          " capped at " + std::to_string(tracing.max_mainpass_attempts_per_target) +
-         " main-pass attempts per target photon (low yield: they stored " + percent(least) + "-" +
-         percent(most) + " % of their target; unbiased, noisier, and they bring little light)";
+         " main-pass attempts per target photon (low yield): they stored " + percent(least) + "-" +
+         percent(most) + " % of their target; their flux stays unbiased, with more relative noise";
 }
 
 /// What every case (the base project and each variant) of one run shares.

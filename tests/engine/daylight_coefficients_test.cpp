@@ -376,11 +376,12 @@ TEST(DaylightCoefficients, LocalLinearEstimateFallsBackToTheAverageWhenNegative)
   };
   const DaylightCoefficients linear = estimate(true), disc = estimate(false);
   // Without the fallback the fit gives -6.59e-6 here (the true E is exp(-15.8) = 1.4e-7).
-  // The two paths sum the same photons over the same clipped disc in a different order.
+  // The two paths sum the same photons over the same clipped disc in a different order
+  // (measured: 2e-9 apart); 1e-6 still tells the average from any fitted value.
   ASSERT_GT(disc.global[0].x, 0.0);
-  EXPECT_NEAR(linear.global[0].x / disc.global[0].x, 1.0, 1e-9);
-  EXPECT_NEAR(linear.global[0].y / disc.global[0].y, 1.0, 1e-9);
-  EXPECT_NEAR(linear.global[0].z / disc.global[0].z, 1.0, 1e-9);
+  EXPECT_NEAR(linear.global[0].x / disc.global[0].x, 1.0, 1e-6);
+  EXPECT_NEAR(linear.global[0].y / disc.global[0].y, 1.0, 1e-6);
+  EXPECT_NEAR(linear.global[0].z / disc.global[0].z, 1.0, 1e-6);
 }
 
 }  // namespace
