@@ -43,10 +43,12 @@ BiasCompensationOptions bias_options(const CoefficientOptions& options,
 
 /// Local-linear density at the disc's centre from the photon sums S0 = sum Phi and
 /// S1 = sum Phi (q - x) (per channel): the first unknown of the 3 x 3 moment system, by
-/// Cramer's rule. Falls back to S0 / A when the system is degenerate, and when the fitted
-/// plane is negative at the centre: a steep fitted gradient over a wide disc (few photons
-/// at the far side of a room, e.g. behind closed blinds) extrapolates below zero, and the
-/// negative values then add up over sources into negative hourly illuminance.
+/// Cramer's rule. Falls back to S0 / A when the system is degenerate. A channel whose fitted
+/// plane is negative at the centre is set to 0: a steep fitted gradient over a wide disc (few
+/// photons at the far side of a room, e.g. behind closed blinds) extrapolates below zero,
+/// and the negative values added up over sources into negative hourly illuminance. There the
+/// true value is small against the disc's (which is why the fit went negative), so 0 is off
+/// by at most that small value, while the plain average S0 / A can be many times too high.
 Vec3 local_linear_density(const AreaMoments& m, const Vec3& s0, const Vec3& s1x, const Vec3& s1y) {
   const double a11 = m.area, a12 = m.mx, a13 = m.my;
   const double a22 = m.mxx, a23 = m.mxy, a33 = m.myy;
@@ -62,8 +64,7 @@ Vec3 local_linear_density(const AreaMoments& m, const Vec3& s0, const Vec3& s1x,
     return d1 / det;
   };
   const Vec3 fitted{solve(s0.x, s1x.x, s1y.x), solve(s0.y, s1x.y, s1y.y), solve(s0.z, s1x.z, s1y.z)};
-  if (fitted.x < 0 || fitted.y < 0 || fitted.z < 0) return s0 * (1.0 / m.area);
-  return fitted;
+  return {std::max(0.0, fitted.x), std::max(0.0, fitted.y), std::max(0.0, fitted.z)};
 }
 
 }  // namespace

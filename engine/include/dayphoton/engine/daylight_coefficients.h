@@ -25,8 +25,8 @@
 // a m1 + M2 b, with A, m1, M2 the area moments of R about x) gives a = E(x) free of that
 // first-order bias. Away from walls m1 = 0 and a is the plain average. The moments are exact
 // (ReceiverPlane::clipped_disc_moments). Where a is negative (a steep fitted gradient
-// extrapolated across a wide disc, with few photons) the plain average is used instead, so
-// no coefficient is negative.
+// extrapolated across a wide disc, with few photons) it is set to 0, so no coefficient is
+// negative.
 // Caustic map (caustic_bandwidth > 0): caustic photons get a lookup of their own, among
 // caustic photons only, with their own bandwidth, as Jensen's separate caustic map
 // (seeds/000 section 3.1.3). A sharp caustic (a mirror shelf's reflection on the ceiling,
