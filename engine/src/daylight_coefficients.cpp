@@ -88,6 +88,29 @@ std::size_t GridPhotons::bandwidth_of(std::size_t source, std::size_t bandwidth)
       std::llround(double(bandwidth) * double(n) / double(m_typical_count)));
 }
 
+std::size_t GridPhotons::bandwidth_of(std::size_t source, std::size_t bandwidth, PathClass path_class) const {
+  const int c = path_class == PathClass::Caustic ? 0 : 1;
+  const std::size_t n = m_class_counts[c][source], typical = m_typical_class_count[c];
+  if (typical == 0 || n <= typical) return bandwidth;
+  return static_cast<std::size_t>(std::llround(double(bandwidth) * double(n) / double(typical)));
+}
+
+void GridPhotons::count_classes() {
+  for (int c = 0; c < 2; ++c) {
+    m_class_counts[c].assign(m_by_source.size(), 0);
+    std::vector<std::size_t> nonzero;
+    for (std::size_t p = 0; p < m_by_source.size(); ++p) {
+      for (const Photon& ph : m_by_source[p].photons())
+        if ((ph.path_class == PathClass::Caustic) == (c == 0) && ph.path_class != PathClass::Direct)
+          ++m_class_counts[c][p];
+      if (m_class_counts[c][p] > 0) nonzero.push_back(m_class_counts[c][p]);
+    }
+    if (nonzero.empty()) continue;
+    std::nth_element(nonzero.begin(), nonzero.begin() + nonzero.size() / 2, nonzero.end());
+    m_typical_class_count[c] = nonzero[nonzero.size() / 2];
+  }
+}
+
 std::size_t GridPhotons::median_count(const std::vector<PhotonMap>& maps) {
   std::vector<std::size_t> counts;
   for (const PhotonMap& m : maps)
@@ -103,6 +126,7 @@ GridPhotons GridPhotons::for_plane(const ReceiverPlane& plane, std::vector<Photo
   g.m_plane = plane;
   g.m_by_source = split_by_source(plane_photons, source_count);
   g.m_typical_count = median_count(g.m_by_source);
+  g.count_classes();
   g.m_all = PhotonMap(std::move(plane_photons));
   return g;
 }
@@ -112,6 +136,7 @@ GridPhotons GridPhotons::for_surfaces(std::vector<Photon> surface_photons,
   GridPhotons g;
   g.m_by_source = split_by_source(surface_photons, source_count);
   g.m_typical_count = median_count(g.m_by_source);
+  g.count_classes();
   g.m_all = PhotonMap(std::move(surface_photons));
   return g;
 }
@@ -215,10 +240,11 @@ void estimate_photon_coefficients(const GridPhotons& photons,
           out.global[i] = e.global;
           continue;
         }
-        DensityEstimateOptions caustic_scaled = options.density;
-        caustic_scaled.bandwidth = photons.bandwidth_of(p, options.caustic_bandwidth);
+        DensityEstimateOptions global_scaled = options.density, caustic_scaled = options.density;
+        global_scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth, PathClass::Global);
+        caustic_scaled.bandwidth = photons.bandwidth_of(p, options.caustic_bandwidth, PathClass::Caustic);
         out.global[i] =
-            estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global), scaled, options, i).global;
+            estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global), global_scaled, options, i).global;
         out.caustic[i] = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic),
                                           caustic_scaled, options, i + out.sensors * n_src)
                              .caustic;

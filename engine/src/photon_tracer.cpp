@@ -67,10 +67,8 @@ class BlockSink final : public PhotonSink {
     Photon stored = photon;
     if (photon.path_class != PathClass::Direct) {
       const double d = photon.path_class == PathClass::Global ? m_d_global : m_d_caustic;
-      if (d < 1) {
-        if (!(m_storage->uniform() < d)) return;
-        for (float& f : stored.flux) f = static_cast<float>(f / d);
-      }
+      // Stored or not; the flux is set per class after the passes (stored_photon_flux).
+      if (d < 1 && !(m_storage->uniform() < d)) return;
     }
     (photon.path_class == PathClass::Global    ? m_out.global
      : photon.path_class == PathClass::Caustic ? m_out.caustic
@@ -323,13 +321,17 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
     }
   }
 
-  // Normalise (eqs. 4.11-4.12): every attempt carries bound_flux / attempts.
+  // Normalise (eqs. 4.11-4.12, per class: see the header comment).
   tally.flux_per_attempt =
       tally.bound_flux / double(tally.prepass_attempts + tally.mainpass_attempts);
-  const float scale = static_cast<float>(tally.flux_per_attempt);
-  auto rescale = [scale](std::vector<Photon>& photons) {
-    for (Photon& p : photons)
-      for (float& f : p.flux) f *= scale;
+  const float scale[3] = {static_cast<float>(tally.stored_photon_flux(PathClass::Direct)),
+                          static_cast<float>(tally.stored_photon_flux(PathClass::Caustic)),
+                          static_cast<float>(tally.stored_photon_flux(PathClass::Global))};
+  auto rescale = [&scale](std::vector<Photon>& photons) {
+    for (Photon& p : photons) {
+      const float s = scale[p.path_class == PathClass::Direct ? 0 : p.path_class == PathClass::Caustic ? 1 : 2];
+      for (float& f : p.flux) f *= s;
+    }
   };
   rescale(result.surface);
   for (auto& plane : result.planes) rescale(plane);

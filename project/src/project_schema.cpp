@@ -323,7 +323,7 @@ std::vector<SectionSchema> build_schema() {
       P("sun_mf", T::Integer, "Reinhart subdivision whose patch centres are the sun bins").range(1, 12).def("6"),
       P("direct_samples_per_bin", T::Integer, "shadow rays per bin for the direct component").at_least(1).def("16"),
       P("caustic_photons_per_bin", T::Integer, "stored caustic photons per sky/sun bin, a target of their own (0: stored like the global ones)").at_least(0).def("0"),
-      P("caustic_bandwidth", T::Integer, "photons per caustic estimate, among caustic photons only (0: caustic and global photons share one disc)").at_least(0).def("0"),
+      P("caustic_bandwidth", T::Integer, "photons per caustic estimate, among caustic photons only (0: `bandwidth` if caustic_photons_per_bin > 0, else caustic and global photons share one disc)").at_least(0).def("0"),
       P("region_of_interest", T::Section, "store photons only inside this box; the photon targets count only those (every sensor must lie inside)").section("region of interest"),
       P("max_attempts_per_photon", T::Integer, "low-yield cap: main-pass attempts per target photon of a bin (0 = no cap)").at_least(0).def("256"),
   }});

@@ -82,7 +82,10 @@ engine::TracingOptions tracing_options(const project::Simulation& sim, std::size
 engine::CoefficientOptions coefficient_options(const project::Simulation& sim) {
   engine::CoefficientOptions o;
   o.density.bandwidth = static_cast<std::size_t>(sim.bandwidth);
-  o.caustic_bandwidth = static_cast<std::size_t>(sim.caustic_bandwidth);
+  // Caustic photons with a target of their own are counted unlike the global ones, so they
+  // always get the caustic map (a shared disc would be sized by their count).
+  o.caustic_bandwidth = static_cast<std::size_t>(
+      sim.caustic_bandwidth > 0 ? sim.caustic_bandwidth : (sim.caustic_photons_per_bin > 0 ? sim.bandwidth : 0));
   o.direct.samples_per_source = sim.direct_samples_per_bin;
   o.direct.seed = sim.seed;
   return o;

@@ -105,6 +105,11 @@ class GridPhotons {
   /// (TracingOptions::source_photon_factor) thus get the same kernel radius as the others
   /// and a proportionally less noisy estimate.
   std::size_t bandwidth_of(std::size_t source, std::size_t bandwidth) const;
+  /// The same for the photons of one class (the caustic map and its global counterpart):
+  /// scaled by the source's count of that class against the median over sources that have
+  /// any. A caustic target of their own makes caustic counts unlike global ones, so the
+  /// total would give the global lookups of sun-lit sources needlessly wide discs.
+  std::size_t bandwidth_of(std::size_t source, std::size_t bandwidth, PathClass path_class) const;
 
  private:
   static std::size_t median_count(const std::vector<PhotonMap>& maps);
@@ -112,6 +117,9 @@ class GridPhotons {
   PhotonMap m_all;
   std::vector<PhotonMap> m_by_source;
   std::size_t m_typical_count = 0;
+  std::vector<std::size_t> m_class_counts[2];   ///< per source: caustic [0], global [1]
+  std::size_t m_typical_class_count[2] = {0, 0};
+  void count_classes();
 };
 
 /// Photon part (caustic, global) of the coefficients at `sensors`; parallel over sensors,

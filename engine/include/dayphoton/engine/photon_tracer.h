@@ -22,9 +22,13 @@
 // number of stored photons per source): a pre-pass of k * target attempts (doubled until
 // every targeted class has enough photons to measure its yield, or is found absent;
 // attempts accumulate, nothing is discarded), then a main pass sized so that each class
-// reaches its target, storing class j with probability d_j (flux / d_j), then one top-up run
-// sized from the main pass's own yield. All photons of a source share the flux
-// bound_flux / (all attempts) (port_emission.h), times 1/d_j.
+// reaches its target, storing class j with probability d_j, then one top-up run sized from
+// the main pass's own yield. Every attempt carries bound_flux / (all attempts)
+// (port_emission.h); a class stored in the P pre-pass attempts and with probability d_j in
+// the M main-pass ones has sampled P + M d_j attempts' worth of its light, so each of its
+// photons carries bound_flux / (P + M d_j) (SourceTally::stored_photon_flux). The thesis'
+// per-photon 1/d_j instead loses a class with d_j = 0 (already at its target after the
+// pre-pass: its main-pass light went missing, -88 % on a caustic-target test room).
 //
 // Low-yield cap (not in the thesis): the main pass and top-up together make at most
 // max_mainpass_attempts_per_target x (largest target) attempts. A source that stores fewer
@@ -106,6 +110,16 @@ struct SourceTally {
   /// The main pass (with its top-up) was cut to max_mainpass_attempts_per_target x target
   /// attempts: the source stores fewer photons than its target.
   bool capped = false;
+
+  /// Flux every stored photon of `path_class` carries (per unit source radiance):
+  /// bound_flux / (prepass + mainpass x d), d the class's main-pass storage probability (1
+  /// for Direct). Stored photons of a class sample P + M d attempts' worth of its light.
+  double stored_photon_flux(PathClass path_class) const {
+    const double d = path_class == PathClass::Global    ? storage_probability_global
+                     : path_class == PathClass::Caustic ? storage_probability_caustic
+                                                        : 1.0;
+    return bound_flux / (double(prepass_attempts) + double(mainpass_attempts) * d);
+  }
 };
 
 struct TracedPhotons {

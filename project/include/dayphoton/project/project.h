@@ -306,8 +306,9 @@ struct Simulation {
   /// Stored caustic photons per bin (sky and sun bins alike), a target of their own; 0: caustic
   /// photons are stored like global ones (engine::TracingOptions::caustic_photons_per_source).
   long long caustic_photons_per_bin = 0;
-  /// Photons per caustic estimate, among caustic photons only (the caustic map); 0: caustic and
-  /// global photons share one disc (engine::CoefficientOptions::caustic_bandwidth).
+  /// Photons per caustic estimate, among caustic photons only (the caustic map); 0: `bandwidth`
+  /// if caustic_photons_per_bin > 0, else caustic and global photons share one disc
+  /// (engine::CoefficientOptions::caustic_bandwidth).
   int caustic_bandwidth = 0;
   /// Photons are stored only inside this box (model coordinates), and the photon targets count
   /// only those (engine::TracingOptions::region_of_interest). Every sensor must lie inside.
