@@ -290,14 +290,10 @@ TEST(DaylightCoefficients, LinearInTheSkyAndIndependentOfThreads) {
 namespace dayphoton::engine {
 namespace {
 
-TEST(DaylightCoefficients, LocalLinearEstimateRemovesTheWallGradientBias) {
-  // Deterministic photons: one per 1 cm cell of a 4 x 4 m room, flux = E(y) x cell area with
-  // E(y) = 1 + y W/m^2 (a gradient across the room, as from a window). At 0.19 m from the wall
-  // y = 4 a 4000-photon disc (radius ~0.36 m) is cut by the wall: the clipped-disc average is
-  // E at the clipped disc's centroid, 1.5 % low here, while the local-linear fit is exact for
-  // a linear field up to the lattice's discretisation. Away from walls both are exact. The
-  // sensors sit off the lattice's symmetry points so that distance ties do not decide the
-  // disc.
+/// Deterministic photons on a 1 cm lattice over a 4 x 4 m receiver plane at z = 0.8, flux
+/// E(y) x cell area (one source, global).
+template <typename Field>
+GridPhotons lattice_photons(Field irradiance) {
   const ReceiverPlane plane(0.8, true, {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
   std::vector<Photon> photons;
   const int n = 400;
@@ -307,28 +303,42 @@ TEST(DaylightCoefficients, LocalLinearEstimateRemovesTheWallGradientBias) {
       Photon p;
       const double x = (i + 0.5) * h, y = (j + 0.5) * h;
       p.position = {float(x), float(y), 0.8f};
-      const float f = static_cast<float>((1 + y) * h * h);
+      const float f = static_cast<float>(irradiance(y) * h * h);
       p.flux = {f, f, f};
       p.source = 0;
       p.path_class = PathClass::Global;
       p.set_normal({0, 0, 1});
       photons.push_back(p);
     }
-  const GridPhotons grid = GridPhotons::for_plane(plane, photons, 1);
+  return GridPhotons::for_plane(plane, photons, 1);
+}
+
+DaylightCoefficients lattice_estimate(const GridPhotons& grid, const std::vector<SensorPoint>& sensors,
+                                      std::size_t bandwidth, bool local_linear) {
+  CoefficientOptions o;
+  o.density.bandwidth = bandwidth;
+  o.local_linear = local_linear;
+  DaylightCoefficients c;
+  c.sensors = sensors.size();
+  c.sources = 1;
+  c.caustic.assign(sensors.size(), Vec3{0, 0, 0});
+  c.global.assign(sensors.size(), Vec3{0, 0, 0});
+  estimate_photon_coefficients(grid, sensors, o, c);
+  return c;
+}
+
+TEST(DaylightCoefficients, LocalLinearEstimateRemovesTheWallGradientBias) {
+  // Deterministic photons: one per 1 cm cell of a 4 x 4 m room, flux = E(y) x cell area with
+  // E(y) = 1 + y W/m^2 (a gradient across the room, as from a window). At 0.19 m from the wall
+  // y = 4 a 4000-photon disc (radius ~0.36 m) is cut by the wall: the clipped-disc average is
+  // E at the clipped disc's centroid, 1.5 % low here, while the local-linear fit is exact for
+  // a linear field up to the lattice's discretisation. Away from walls both are exact. The
+  // sensors sit off the lattice's symmetry points so that distance ties do not decide the
+  // disc.
+  const GridPhotons grid = lattice_photons([](double y) { return 1 + y; });
   const std::vector<SensorPoint> sensors = {{{2.0037, 3.8061, 0.8}, {0, 0, 1}}, {{2.0037, 2.0061, 0.8}, {0, 0, 1}}};
-  auto estimate = [&](bool local_linear) {
-    CoefficientOptions o;
-    o.density.bandwidth = 4000;
-    o.local_linear = local_linear;
-    DaylightCoefficients c;
-    c.sensors = sensors.size();
-    c.sources = 1;
-    c.caustic.assign(2, Vec3{0, 0, 0});
-    c.global.assign(2, Vec3{0, 0, 0});
-    estimate_photon_coefficients(grid, sensors, o, c);
-    return c;
-  };
-  const DaylightCoefficients linear = estimate(true), disc = estimate(false);
+  const DaylightCoefficients linear = lattice_estimate(grid, sensors, 4000, true);
+  const DaylightCoefficients disc = lattice_estimate(grid, sensors, 4000, false);
   // Measured: near the wall local-linear 0.99997, clipped disc 0.98516; interior 1.00091
   // for both (the lattice's count error in a disc, which bounds the tolerance).
   EXPECT_NEAR(linear.global[0].x / 4.8061, 1.0, 2e-3);
@@ -345,37 +355,10 @@ TEST(DaylightCoefficients, LocalLinearEstimateIsNeverNegative) {
   // defect seen in projects/blinds with closed slats: -177 lux hours at the back row). The
   // true value is exp(-15.78) = 1.4e-7 and the clipped-disc average 6.59e-6, 47 times too
   // high; the estimate must be 0, off by no more than the true value.
-  const ReceiverPlane plane(0.8, true, {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
-  std::vector<Photon> photons;
-  const int n = 400;
-  const double h = 4.0 / n;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      Photon p;
-      const double x = (i + 0.5) * h, y = (j + 0.5) * h;
-      p.position = {float(x), float(y), 0.8f};
-      const float f = static_cast<float>(std::exp(-4 * y) * h * h);
-      p.flux = {f, f, f};
-      p.source = 0;
-      p.path_class = PathClass::Global;
-      p.set_normal({0, 0, 1});
-      photons.push_back(p);
-    }
-  const GridPhotons grid = GridPhotons::for_plane(plane, photons, 1);
+  const GridPhotons grid = lattice_photons([](double y) { return std::exp(-4 * y); });
   const std::vector<SensorPoint> sensors = {{{2.0037, 3.9461, 0.8}, {0, 0, 1}}};
-  auto estimate = [&](bool local_linear) {
-    CoefficientOptions o;
-    o.density.bandwidth = 40000;
-    o.local_linear = local_linear;
-    DaylightCoefficients c;
-    c.sensors = 1;
-    c.sources = 1;
-    c.caustic.assign(1, Vec3{0, 0, 0});
-    c.global.assign(1, Vec3{0, 0, 0});
-    estimate_photon_coefficients(grid, sensors, o, c);
-    return c;
-  };
-  const DaylightCoefficients linear = estimate(true), disc = estimate(false);
+  const DaylightCoefficients linear = lattice_estimate(grid, sensors, 40000, true);
+  const DaylightCoefficients disc = lattice_estimate(grid, sensors, 40000, false);
   EXPECT_GT(disc.global[0].x, 10 * std::exp(-4 * 3.9461));  // the average is far too high
   EXPECT_EQ(linear.global[0].x, 0.0);
   EXPECT_EQ(linear.global[0].y, 0.0);
