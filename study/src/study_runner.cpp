@@ -163,6 +163,22 @@ metrics::MetricSettings metric_settings(const project::MetricsSettings& m) {
   return s;
 }
 
+/// The project's metric settings and occupancy, for every annual result (cases and operated).
+AnnualStudySettings annual_settings_of(const project::Project& project) {
+  AnnualStudySettings settings;
+  settings.metrics = metric_settings(project.metrics);
+  settings.occupancy_start_h = project.metrics.occupancy_start_h;
+  settings.occupancy_end_h = project.metrics.occupancy_end_h;
+  return settings;
+}
+
+AnnualOutputs annual_outputs_of(const project::Project& project) {
+  AnnualOutputs which;
+  which.illuminance = project.outputs.annual_illuminance;
+  which.metrics = project.outputs.metrics;
+  return which;
+}
+
 /// The annual sky of the project's weather file, from the cache when the file is unchanged.
 const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBasis& basis,
                             RunContext& ctx) {
@@ -613,13 +629,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   // 5-6. Annual illuminance and metrics.
   const bool annual = project.outputs.annual_illuminance || project.outputs.metrics;
   const bool sun_bins = sim.sun == project::SunMode::Bins;
-  AnnualStudySettings annual_settings;
-  annual_settings.metrics = metric_settings(project.metrics);
-  annual_settings.occupancy_start_h = project.metrics.occupancy_start_h;
-  annual_settings.occupancy_end_h = project.metrics.occupancy_end_h;
-  AnnualOutputs which;
-  which.illuminance = project.outputs.annual_illuminance;
-  which.metrics = project.outputs.metrics;
+  const AnnualStudySettings annual_settings = annual_settings_of(project);
+  const AnnualOutputs which = annual_outputs_of(project);
   if ((annual || (sun_bins && project.outputs.coefficients)) && project.weather.path.empty()) {
     log.line(prefix + "annual: the project has no weather file; annual outputs" +
              (sun_bins ? std::string(" and sun coefficients") : std::string()) + " skipped");
@@ -674,13 +685,8 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
                             const CaseTables& open, const CaseTables& shaded, const std::string& dir,
                             RunContext& ctx) {
   const SkyAndSuns& ss = *ctx.sky_and_suns;  // both cases' annual step built it
-  AnnualStudySettings settings;
-  settings.metrics = metric_settings(project.metrics);
-  settings.occupancy_start_h = project.metrics.occupancy_start_h;
-  settings.occupancy_end_h = project.metrics.occupancy_end_h;
-  AnnualOutputs which;
-  which.illuminance = project.outputs.annual_illuminance;
-  which.metrics = project.outputs.metrics;
+  const AnnualStudySettings settings = annual_settings_of(project);
+  const AnnualOutputs which = annual_outputs_of(project);
   ShadingRule rule;
   rule.direct_sun_threshold_lux = op.direct_sun_threshold_lux;
   rule.sunlit_limit_percent = op.sunlit_limit_percent;
