@@ -324,14 +324,12 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
   // Normalise (eqs. 4.11-4.12, per class: see the header comment).
   tally.flux_per_attempt =
       tally.bound_flux / double(tally.prepass_attempts + tally.mainpass_attempts);
-  const float scale[3] = {static_cast<float>(tally.stored_photon_flux(PathClass::Direct)),
-                          static_cast<float>(tally.stored_photon_flux(PathClass::Caustic)),
-                          static_cast<float>(tally.stored_photon_flux(PathClass::Global))};
+  float scale[3];  // indexed by PathClass
+  for (PathClass c : {PathClass::Direct, PathClass::Caustic, PathClass::Global})
+    scale[static_cast<int>(c)] = static_cast<float>(tally.stored_photon_flux(c));
   auto rescale = [&scale](std::vector<Photon>& photons) {
-    for (Photon& p : photons) {
-      const float s = scale[p.path_class == PathClass::Direct ? 0 : p.path_class == PathClass::Caustic ? 1 : 2];
-      for (float& f : p.flux) f *= s;
-    }
+    for (Photon& p : photons)
+      for (float& f : p.flux) f *= scale[static_cast<int>(p.path_class)];
   };
   rescale(result.surface);
   for (auto& plane : result.planes) rescale(plane);
