@@ -227,7 +227,7 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         if (map.empty()) continue;
         // Without a caustic map, one lookup over both classes fixes the radius and each class
         // is summed within it. The bandwidth grows with the source's photon count
-        // (photons_per_bandwidth), so a source given more photons (the ground) gets a less
+        // (GridPhotons::bandwidth_of), so a source given more photons (the ground) gets a less
         // noisy estimate, not a smaller kernel.
         const std::size_t i = s * n_src + p;
         DensityEstimateOptions scaled = options.density;
