@@ -12,6 +12,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
+#include "located_errors.h"
 #include "dayphoton/project/project_schema.h"
 #include "dayphoton/project/site_geodesy.h"
 
@@ -30,18 +31,7 @@ const std::string Head =
 
 /// "line:col: message" for each kept diagnostic (file name left out for readability).
 std::vector<std::string> errors_of(const std::string& text) {
-  try {
-    load_project_from_string(text, FakePath);
-  } catch (const InputError& e) {
-    std::vector<std::string> out;
-    for (const auto& d : e.diagnostics()) {
-      EXPECT_EQ(d.location.file, FakePath);
-      out.push_back(std::to_string(d.location.line) + ":" + std::to_string(d.location.column) +
-                    ": " + d.message);
-    }
-    return out;
-  }
-  return {};
+  return test::located_errors([&] { load_project_from_string(text, FakePath); }, FakePath);
 }
 
 struct BadCase {

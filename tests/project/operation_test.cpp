@@ -13,6 +13,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/project/project_schema.h"
+#include "located_errors.h"
 
 namespace dayphoton::project {
 namespace {
@@ -36,15 +37,7 @@ const std::string Base =
     "    materials: {walls: {type: lambertian, reflectance: 0.3}}\n";
 
 std::vector<std::string> errors_of(const std::string& text) {
-  try {
-    load_project_from_string(text, FakePath);
-  } catch (const InputError& e) {
-    std::vector<std::string> out;
-    for (const auto& d : e.diagnostics())
-      out.push_back(std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + ": " + d.message);
-    return out;
-  }
-  return {};
+  return test::located_errors([&] { load_project_from_string(text, FakePath); });
 }
 
 using Errors = std::vector<std::string>;

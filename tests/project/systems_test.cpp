@@ -29,6 +29,7 @@
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/project/project.h"
+#include "located_errors.h"
 
 namespace dayphoton::project {
 namespace {
@@ -70,16 +71,7 @@ SceneDescription build(const std::string& systems, const std::string& tail = "")
 
 /// "line:col: message" for each diagnostic of loading and building, or nothing.
 std::vector<std::string> errors_of(const std::string& systems, const std::string& tail = "") {
-  try {
-    build(systems, tail);
-  } catch (const InputError& e) {
-    std::vector<std::string> out;
-    for (const auto& d : e.diagnostics())
-      out.push_back(std::to_string(d.location.line) + ":" + std::to_string(d.location.column) +
-                    ": " + d.message);
-    return out;
-  }
-  return {};
+  return test::located_errors([&] { build(systems, tail); });
 }
 
 std::vector<const Surface*> with_prefix(const SceneDescription& d, const std::string& prefix) {
@@ -310,13 +302,8 @@ TEST(Systems, AnEnclosureMustNotCoverAnotherWindow) {
       "  systems:\n"
       "    - {type: overhang, name: o, window: clerestory, depth: 1.5, height: 2.9, port: enclosure,\n"  // 20
       "       tilt: -60, material: walls}\n";
-  std::vector<std::string> got;
-  try {
-    build_scene_description(load_project_from_string(text, FakePath));
-  } catch (const InputError& e) {
-    for (const auto& d : e.diagnostics())
-      got.push_back(std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + ": " + d.message);
-  }
+  const std::vector<std::string> got =
+      test::located_errors([&] { build_scene_description(load_project_from_string(text, FakePath)); });
   EXPECT_EQ(got, std::vector<std::string>{
                      "20:7: overhang 'o': the port enclosure of window 'clerestory' (-0.01 m to 3.01 m "
                      "along the wall, heights 1.591 m to 2.91 m) covers window 'view', which would be a "
@@ -681,15 +668,10 @@ TEST(Systems, VariantsChangeASystemsGeometry) {
   };
   for (const auto& [tail, expected] : bad) {
     SCOPED_TRACE(tail);
-    std::vector<std::string> got;
-    try {
+    const std::vector<std::string> got = test::located_errors([&] {
       const Project q = load(systems, tail);
       for (const VariantSpec& v : q.variants) build_scene_description(apply_variant(q, v));
-    } catch (const InputError& e) {
-      for (const auto& diag : e.diagnostics())
-        got.push_back(std::to_string(diag.location.line) + ":" + std::to_string(diag.location.column) +
-                      ": " + diag.message);
-    }
+    });
     EXPECT_EQ(got, expected);
   }
 }

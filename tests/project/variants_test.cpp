@@ -20,6 +20,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
+#include "located_errors.h"
 
 namespace dayphoton::project {
 namespace {
@@ -43,16 +44,7 @@ const std::string NameRule =
 
 /// "line:col: message" for each diagnostic, or nothing if the text loads.
 std::vector<std::string> errors_of(const std::string& text) {
-  try {
-    load_project_from_string(text, FakePath);
-  } catch (const InputError& e) {
-    std::vector<std::string> out;
-    for (const auto& d : e.diagnostics())
-      out.push_back(std::to_string(d.location.line) + ":" + std::to_string(d.location.column) +
-                    ": " + d.message);
-    return out;
-  }
-  return {};
+  return test::located_errors([&] { load_project_from_string(text, FakePath); });
 }
 
 void expect_same_material(const MaterialSpec& a, const MaterialSpec& b) {
