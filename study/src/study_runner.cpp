@@ -68,12 +68,21 @@ std::optional<engine::Bounds3> region_of_interest(const project::Project& projec
   return b;
 }
 
-engine::TracingOptions tracing_options(const project::Simulation& sim, std::size_t sources) {
+/// What the sky and the sun passes share: seed, caustic target, low-yield cap, region of
+/// interest.
+engine::TracingOptions shared_tracing_options(const project::Project& project) {
+  const project::Simulation& sim = project.simulation;
   engine::TracingOptions o;
-  o.photons_per_source = static_cast<std::size_t>(sim.photons_per_bin);
   o.caustic_photons_per_source = static_cast<std::size_t>(sim.caustic_photons_per_bin);
   o.seed = sim.seed;
   o.max_mainpass_attempts_per_target = static_cast<std::size_t>(sim.max_attempts_per_photon);
+  o.region_of_interest = region_of_interest(project);
+  return o;
+}
+
+engine::TracingOptions tracing_options(const project::Project& project, std::size_t sources) {
+  engine::TracingOptions o = shared_tracing_options(project);
+  o.photons_per_source = static_cast<std::size_t>(project.simulation.photons_per_bin);
   o.source_photon_factor.assign(sources, 1.0);
   if (sources > 0) o.source_photon_factor[0] = GroundPhotonFactor;
   return o;
@@ -273,13 +282,10 @@ struct GridSun {
   RadianceMatrix direct;            ///< sensors x suns x RGB, exact direct sun
 };
 
-engine::TracingOptions sun_tracing_options(const project::Simulation& sim, bool keep_surface_photons) {
-  engine::TracingOptions o;
+engine::TracingOptions sun_tracing_options(const project::Project& project, bool keep_surface_photons) {
+  engine::TracingOptions o = shared_tracing_options(project);
   o.photons_per_source = static_cast<std::size_t>(
-      std::max(1LL, std::llround(double(sim.photons_per_bin) * SunBinPhotonFraction)));
-  o.caustic_photons_per_source = static_cast<std::size_t>(sim.caustic_photons_per_bin);
-  o.seed = sim.seed;
-  o.max_mainpass_attempts_per_target = static_cast<std::size_t>(sim.max_attempts_per_photon);
+      std::max(1LL, std::llround(double(project.simulation.photons_per_bin) * SunBinPhotonFraction)));
   o.keep_surface_photons = keep_surface_photons;
   return o;
 }
@@ -299,8 +305,7 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   const std::size_t n_grids = description.grids.size();
   const bool keep_surface =
       std::any_of(plane_of_grid.begin(), plane_of_grid.end(), [](int p) { return p < 0; });
-  engine::TracingOptions tracing = sun_tracing_options(sim, keep_surface);
-  tracing.region_of_interest = region_of_interest(project);
+  const engine::TracingOptions tracing = sun_tracing_options(project, keep_surface);
   engine::CoefficientOptions estimating = coefficient_options(sim);
   estimating.density.bandwidth = sun_bin_bandwidth(estimating.density.bandwidth);
   const ContentHash scene_hash = scene_key(description);
@@ -490,8 +495,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   progress.end();
 
   // Keys: photons per source, coefficients per grid.
-  engine::TracingOptions tracing = tracing_options(sim, sources.size());
-  tracing.region_of_interest = region_of_interest(project);
+  engine::TracingOptions tracing = tracing_options(project, sources.size());
   tracing.keep_surface_photons =
       std::any_of(plane_of_grid.begin(), plane_of_grid.end(), [](int p) { return p < 0; });
   const engine::CoefficientOptions estimating = coefficient_options(sim);
@@ -817,7 +821,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   if (!operated.is_null()) summary["operated"] = operated;
   if (sim.sun == project::SunMode::Bins) {
     summary["simulation"]["sun_mf"] = sim.sun_mf;
-    summary["simulation"]["sun_photons_per_bin"] = sun_tracing_options(sim, true).photons_per_source;
+    summary["simulation"]["sun_photons_per_bin"] = sun_tracing_options(project, true).photons_per_source;
     summary["simulation"]["sun_bandwidth"] = sun_bin_bandwidth(static_cast<std::size_t>(sim.bandwidth));
     summary["simulation"]["sun_direct_samples"] = SunDirectSamples;
   }
