@@ -34,8 +34,15 @@ screenshot="$build/report_screenshot.png"
 rm -f "$screenshot"
 timeout 180 "$chromium" "${flags[@]}" --window-size=1280,7000 --screenshot="$screenshot" "$url" \
   >"$work/shot.out" 2>"$work/shot.log" || fail "chromium --screenshot failed: $(tail -3 "$work/shot.log")"
-timeout 180 "$chromium" "${flags[@]}" --dump-dom "$url" >"$work/dom.html" 2>"$work/dom.log" ||
-  fail "chromium --dump-dom failed: $(tail -3 "$work/dom.log")"
+# Headless chromium under load now and then dumps the DOM before the page's scripts ran (the
+# self-check still reads "pending"): dump again, up to three times. A self-check that ran and
+# failed is not retried.
+for attempt in 1 2 3; do
+  timeout 180 "$chromium" "${flags[@]}" --dump-dom "$url" >"$work/dom.html" 2>"$work/dom.log" ||
+    fail "chromium --dump-dom failed: $(tail -3 "$work/dom.log")"
+  grep -q 'id="report-check" data-status="pending"' "$work/dom.html" || break
+  echo "note report_browser: DOM dumped before the scripts ran (attempt $attempt)"
+done
 
 # The screenshot: a PNG of the requested width, and not blank (a blank page compresses to a
 # few kB; the report's plots and text need far more).
