@@ -4,7 +4,9 @@
 #include "dayphoton/engine/direct_component.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -46,11 +48,13 @@ Vec3 checked_unit_normal(const SensorPoint& sensor) {
 }
 
 /// Stratified estimate of integral over source p of L(w) T(w) max(0, dot(w, n)) dw, with
-/// L = 1 when `radiance` is null. `origin` is the sensor already moved off its surface.
-Vec3 integrate_source(const Scene& scene, const std::vector<Material>& materials,
-                      const SourceSet& sources, std::size_t p, const Vec3& origin,
-                      const Vec3& normal, int k, std::uint64_t seed, std::uint64_t sensor_index,
-                      const std::function<Vec3(const Vec3&)>* radiance) {
+/// L = 1 when `radiance` is null, over the source's solid angle. `origin` is the sensor
+/// already moved off its surface.
+Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Material>& materials,
+                                     const SourceSet& sources, std::size_t p, const Vec3& origin,
+                                     const Vec3& normal, int k, std::uint64_t seed,
+                                     std::uint64_t sensor_index,
+                                     const std::function<Vec3(const Vec3&)>* radiance) {
   Rng rng(seed, p, sensor_index, RandomStream::Direct);
   Vec3 sum;
   for (int i = 0; i < k; ++i) {
@@ -70,31 +74,245 @@ Vec3 integrate_source(const Scene& scene, const std::vector<Material>& materials
   return sum * (sources[p].solid_angle_sr / (static_cast<double>(k) * k));
 }
 
+/// One side of a port cut by the sensor's horizontal plane (header comment): what port
+/// sampling draws its points from. A parallelogram with a horizontal edge pair (a vertical
+/// or sloped window) stays one, sampled by the aligned map; anything else is a fan of
+/// triangles, sampled by area with the square-root warp.
+struct PortPiece {
+  int port = -1;
+  bool below = false;  ///< the part below the sensor's height (directions toward the ground)
+  double area_m2 = 0;
+  std::optional<std::array<Vec3, 3>> parallelogram;  ///< corner, edge u, edge v
+  std::vector<std::array<Vec3, 3>> triangles;
+  std::vector<double> cumulative_m2;
+
+  Vec3 point(double u1, double u2) const {
+    if (parallelogram) return (*parallelogram)[0] + (*parallelogram)[1] * u1 + (*parallelogram)[2] * u2;
+    const double target = u1 * area_m2;
+    const std::size_t i = std::min<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(cumulative_m2.begin(), cumulative_m2.end(), target) - cumulative_m2.begin()),
+        triangles.size() - 1);
+    const double before = i == 0 ? 0.0 : cumulative_m2[i - 1];
+    const double w = std::clamp((target - before) / (cumulative_m2[i] - before), 0.0, 1.0);
+    const double r = std::sqrt(w), b0 = 1.0 - r, b1 = u2 * r;
+    const std::array<Vec3, 3>& t = triangles[i];
+    return t[0] * b0 + t[1] * b1 + t[2] * (1.0 - b0 - b1);
+  }
+};
+
+/// The part of triangle `t` with z below (or above) `z`, as a fan appended to `out`.
+void clip_triangle(const std::array<Vec3, 3>& t, double z, bool below, std::vector<std::array<Vec3, 3>>& out) {
+  std::vector<Vec3> poly;
+  auto inside = [&](const Vec3& p) { return below ? p.z < z : p.z >= z; };
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& a = t[static_cast<std::size_t>(i)];
+    const Vec3& b = t[static_cast<std::size_t>((i + 1) % 3)];
+    if (inside(a)) poly.push_back(a);
+    if (inside(a) != inside(b)) poly.push_back(a + (b - a) * ((z - a.z) / (b.z - a.z)));
+  }
+  for (std::size_t i = 1; i + 1 < poly.size(); ++i) out.push_back({poly[0], poly[i], poly[i + 1]});
+}
+
+/// The pieces of every port for a sensor at height z (empty pieces left out).
+std::vector<PortPiece> port_pieces(const PortSet& ports, double z) {
+  std::vector<PortPiece> pieces;
+  for (std::size_t j = 0; j < ports.size(); ++j) {
+    const Port& port = ports[j];
+    for (bool below : {true, false}) {
+      PortPiece piece;
+      piece.port = static_cast<int>(j);
+      piece.below = below;
+      if (port.parallelogram) {
+        std::array<Vec3, 3> g = *port.parallelogram;
+        if (std::fabs(g[2].z) <= 1e-12 * length(g[2]) && std::fabs(g[1].z) > 1e-12 * length(g[1])) std::swap(g[1], g[2]);
+        if (std::fabs(g[1].z) <= 1e-12 * length(g[1])) {
+          // Horizontal edge u: z varies along v only, z(v) = z0 + v e_v.z; keep v in [v0, v1].
+          const double z0 = g[0].z, dz = g[2].z;
+          double v0 = 0, v1 = 1;
+          if (dz != 0.0) {
+            const double cut = std::clamp((z - z0) / dz, 0.0, 1.0);
+            if ((dz > 0) == below) v1 = cut; else v0 = cut;
+          } else if ((z0 < z) != below) {
+            v1 = 0;  // the whole (horizontal) port lies on the other side
+          }
+          if (v1 > v0) {
+            piece.parallelogram = std::array<Vec3, 3>{g[0] + g[2] * v0, g[1], g[2] * (v1 - v0)};
+            piece.area_m2 = port.area_m2 * (v1 - v0);
+            pieces.push_back(std::move(piece));
+          }
+          continue;
+        }
+      }
+      for (const std::array<Vec3, 3>& t : port.triangles) clip_triangle(t, z, below, piece.triangles);
+      for (const std::array<Vec3, 3>& t : piece.triangles) {
+        piece.area_m2 += 0.5 * length(cross(t[1] - t[0], t[2] - t[0]));
+        piece.cumulative_m2.push_back(piece.area_m2);
+      }
+      if (piece.area_m2 > 1e-12 * port.area_m2) pieces.push_back(std::move(piece));
+    }
+  }
+  return pieces;
+}
+
+/// Distance t > 0 at which the ray origin + t w crosses port `port`, or 0 if it does not.
+double port_crossing(const Port& port, const Vec3& origin, const Vec3& w) {
+  for (const std::array<Vec3, 3>& tri : port.triangles) {
+    // Moller-Trumbore, double precision.
+    const Vec3 e1 = tri[1] - tri[0], e2 = tri[2] - tri[0];
+    const Vec3 pv = cross(w, e2);
+    const double det = dot(e1, pv);
+    if (det == 0.0) continue;
+    const double inv = 1.0 / det;
+    const Vec3 tv = origin - tri[0];
+    const double u = dot(tv, pv) * inv;
+    if (u < 0.0 || u > 1.0) continue;
+    const Vec3 qv = cross(tv, e1);
+    const double v = dot(w, qv) * inv;
+    if (v < 0.0 || u + v > 1.0) continue;
+    const double t = dot(e2, qv) * inv;
+    if (t > 0.0) return t;  // a planar polygon is crossed once
+  }
+  return 0.0;
+}
+
+/// Directions per unit solid angle that port sampling produces along `w` from `origin`:
+/// sum over the ports j the ray crosses (at t_j > 0) of n_per_piece t_j^2 / (A_piece
+/// |w . n_j|), the piece being the side of the sensor's height the crossing lies on.
+/// Port `skip` (or -1) is left out.
+double port_density(const PortSet& ports, const std::vector<PortPiece>& pieces, const Vec3& origin,
+                    const Vec3& w, double n_per_piece, int skip) {
+  double density = 0;
+  for (std::size_t j = 0; j < ports.size(); ++j) {
+    if (static_cast<int>(j) == skip) continue;
+    const double cos_port = std::fabs(dot(w, ports[j].normal));
+    if (!(cos_port > 0)) continue;
+    const double t = port_crossing(ports[j], origin, w);
+    if (!(t > 0)) continue;
+    const bool below = origin.z + t * w.z < origin.z;
+    for (const PortPiece& piece : pieces)
+      if (piece.port == static_cast<int>(j) && piece.below == below) {
+        density += n_per_piece * t * t / (piece.area_m2 * cos_port);
+        break;
+      }
+  }
+  return density;
+}
+
+/// One sensor's row, every source at once, by multiple importance sampling (header comment):
+/// k x k strata over each source's solid angle and kb x kb stratified points on every port
+/// piece, combined with the balance heuristic.
+void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& materials,
+                          const SourceSet& sources, const Vec3& origin, const Vec3& normal, int k,
+                          int kb, std::uint64_t seed, std::uint64_t sensor_index,
+                          const std::function<Vec3(const Vec3&)>* radiance, Vec3* row) {
+  const PortSet& ports = scene.ports();
+  const std::vector<PortPiece> pieces = port_pieces(ports, origin.z);
+  const double n_a = static_cast<double>(k) * k, n_b = static_cast<double>(kb) * kb;
+  auto value = [&](const Vec3& t, const Vec3& w, double cos_theta) {
+    return (radiance ? mul(t, (*radiance)(w)) : t) * cos_theta;
+  };
+  // Strategy A: each source's own solid angle (the same directions as without ports).
+  for (std::size_t p = 0; p < sources.size(); ++p) {
+    Rng rng(seed, p, sensor_index, RandomStream::Direct);
+    const double density_a = n_a / sources[p].solid_angle_sr;
+    const bool with_ports = sources[p].solid_angle_sr >= PortSampledMinimumSolidAngle_sr;
+    Vec3 sum;
+    for (int i = 0; i < k; ++i) {
+      for (int j = 0; j < k; ++j) {
+        const double u1 = std::min((i + rng.uniform()) / k, OneMinusEpsilon);
+        const double u2 = std::min((j + rng.uniform()) / k, OneMinusEpsilon);
+        const Vec3 w = sources.sample_direction(p, u1, u2);
+        const double cos_theta = dot(w, normal);
+        if (!(cos_theta > 0.0)) continue;
+        const Vec3 t = sky_transmittance(scene, materials, origin, w);
+        if (t.x == 0.0 && t.y == 0.0 && t.z == 0.0) continue;
+        sum += value(t, w, cos_theta) *
+               (1.0 / (density_a + (with_ports ? port_density(ports, pieces, origin, w, n_b, -1) : 0.0)));
+      }
+    }
+    row[p] += sum;
+  }
+  // Strategy B: points on every port piece, each direction credited to the source containing it.
+  for (std::size_t q = 0; q < pieces.size(); ++q) {
+    const PortPiece& piece = pieces[q];
+    const Port& port = ports[static_cast<std::size_t>(piece.port)];
+    Rng rng(seed, 2 * static_cast<std::uint64_t>(piece.port) + (piece.below ? 1 : 0), sensor_index,
+            RandomStream::DirectPort);
+    for (int i = 0; i < kb; ++i) {
+      for (int j = 0; j < kb; ++j) {
+        const double u1 = std::min((i + rng.uniform()) / kb, OneMinusEpsilon);
+        const double u2 = std::min((j + rng.uniform()) / kb, OneMinusEpsilon);
+        const Vec3 to = piece.point(u1, u2) - origin;
+        const double d2 = dot(to, to);
+        if (!(d2 > 0.0)) continue;
+        const Vec3 w = to / std::sqrt(d2);
+        const double cos_theta = dot(w, normal);
+        const double cos_port = std::fabs(dot(w, port.normal));
+        if (!(cos_theta > 0.0) || !(cos_port > 0.0)) continue;
+        const int p = sources.find(w);
+        if (p < 0 || sources[static_cast<std::size_t>(p)].solid_angle_sr < PortSampledMinimumSolidAngle_sr) continue;
+        const Vec3 t = sky_transmittance(scene, materials, origin, w);
+        if (t.x == 0.0 && t.y == 0.0 && t.z == 0.0) continue;
+        // This piece's own density analytically (its point lies on it by construction).
+        const double density = n_a / sources[static_cast<std::size_t>(p)].solid_angle_sr +
+                                n_b * d2 / (piece.area_m2 * cos_port) +
+                                port_density(ports, pieces, origin, w, n_b, piece.port);
+        row[static_cast<std::size_t>(p)] += value(t, w, cos_theta) * (1.0 / density);
+      }
+    }
+  }
+}
+
+/// One sensor's row: by multiple importance sampling when port sampling is on and the
+/// scene has ports, by each source's solid angle alone otherwise.
+void integrate_sensor(const Scene& scene, const std::vector<Material>& materials,
+                      const SourceSet& sources, const Vec3& origin, const Vec3& normal,
+                      const DirectOptions& options, std::uint64_t sensor_index,
+                      const std::function<Vec3(const Vec3&)>* radiance, Vec3* row) {
+  const int k = strata_per_axis(options.samples_per_source);
+  if (options.port_sampling && !scene.ports().empty()) {
+    integrate_sensor_mis(scene, materials, sources, origin, normal, k, PortStrataFactor * k, options.seed,
+                         sensor_index, radiance, row);
+    return;
+  }
+  for (std::size_t p = 0; p < sources.size(); ++p)
+    row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, options.seed,
+                                              sensor_index, radiance);
+}
+
 }  // namespace
 
-Vec3 sky_transmittance(const Scene& scene, const std::vector<Material>& materials,
-                       const Vec3& origin, const Vec3& direction) {
+SkyPath trace_to_sky(const Scene& scene, const std::vector<Material>& materials,
+                     const Vec3& origin, const Vec3& direction) {
   check_materials(scene, materials);
   // Light from the sky propagates toward the sensor, against the shadow ray.
   const Vec3 incoming = -direction;
-  Vec3 transmittance{1.0, 1.0, 1.0};
-  bool through_port = false;
+  SkyPath path;
+  path.transmittance = Vec3{1.0, 1.0, 1.0};
   Ray ray;
   ray.origin = origin;
   ray.direction = direction;
   for (int crossings = 0;; ++crossings) {
     const std::optional<Hit> hit = scene.intersect(ray);
-    if (!hit) return through_port ? transmittance : Vec3{};
+    if (!hit) {
+      if (path.port < 0) path.transmittance = Vec3{};
+      return path;
+    }
     // Outside the room nothing is transmitted or reflected toward the sensor: whatever
     // the ray meets after its port (an obstruction, another building) blocks the sky.
-    if (through_port || crossings >= MaxShadowRayCrossings) return Vec3{};
+    if (path.port >= 0 || crossings >= MaxShadowRayCrossings) return SkyPath{};
     const Material& material = materials[static_cast<std::size_t>(hit->material)];
-    transmittance = mul(transmittance, material.straight_transmittance(incoming, hit->normal));
-    if (!(transmittance.x > 0.0 || transmittance.y > 0.0 || transmittance.z > 0.0))
-      return Vec3{};
-    if (hit->port >= 0) through_port = true;
+    path.transmittance = mul(path.transmittance, material.straight_transmittance(incoming, hit->normal));
+    if (!(path.transmittance.x > 0.0 || path.transmittance.y > 0.0 || path.transmittance.z > 0.0))
+      return SkyPath{};
+    if (hit->port >= 0) path.port = hit->port;
     ray.origin = scene.offset_ray_origin(hit->position, hit->normal, direction);
   }
+}
+
+Vec3 sky_transmittance(const Scene& scene, const std::vector<Material>& materials,
+                       const Vec3& origin, const Vec3& direction) {
+  return trace_to_sky(scene, materials, origin, direction).transmittance;
 }
 
 std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Material>& materials,
@@ -102,7 +320,7 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
                                       const std::vector<SensorPoint>& sensors,
                                       const DirectOptions& options) {
   check_materials(scene, materials);
-  const int k = strata_per_axis(options.samples_per_source);
+  (void)strata_per_axis(options.samples_per_source);  // validates the count
   std::vector<Vec3> normals;
   normals.reserve(sensors.size());
   for (const SensorPoint& sensor : sensors) normals.push_back(checked_unit_normal(sensor));
@@ -116,10 +334,8 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
                       for (std::size_t s = range.begin(); s != range.end(); ++s) {
                         const Vec3 origin = sensors[s].position +
                                             normals[s] * scene.ray_epsilon_m();
-                        for (std::size_t p = 0; p < n_sources; ++p)
-                          result[s * n_sources + p] =
-                              integrate_source(scene, materials, sources, p, origin,
-                                               normals[s], k, options.seed, s, nullptr);
+                        integrate_sensor(scene, materials, sources, origin, normals[s], options, s,
+                                         nullptr, result.data() + s * n_sources);
                       }
                     });
   return result;
@@ -128,14 +344,19 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
 Vec3 direct_irradiance(const Scene& scene, const std::vector<Material>& materials,
                        const SourceSet& sources, const SensorPoint& sensor,
                        const std::function<Vec3(const Vec3&)>& radiance, int samples,
-                       std::uint64_t seed) {
+                       std::uint64_t seed, bool port_sampling) {
   check_materials(scene, materials);
-  const int k = strata_per_axis(samples);
+  DirectOptions options;
+  options.samples_per_source = samples;
+  options.seed = seed;
+  options.port_sampling = port_sampling;
+  (void)strata_per_axis(samples);  // validates the count
   const Vec3 normal = checked_unit_normal(sensor);
   const Vec3 origin = sensor.position + normal * scene.ray_epsilon_m();
+  std::vector<Vec3> row(sources.size());
+  integrate_sensor(scene, materials, sources, origin, normal, options, 0, &radiance, row.data());
   Vec3 sum;
-  for (std::size_t p = 0; p < sources.size(); ++p)
-    sum += integrate_source(scene, materials, sources, p, origin, normal, k, seed, 0, &radiance);
+  for (const Vec3& v : row) sum += v;
   return sum;
 }
 

@@ -91,4 +91,17 @@ bool SourceSet::contains(std::size_t i, const Vec3& direction) const {
   return 0.5 * dot(chord, chord) <= one_minus_cos(s.half_angle_rad);
 }
 
+int SourceSet::find(const Vec3& direction) const {
+  if (m_has_basis) {
+    // sky_bins puts bin i at index i; sun discs may follow.
+    const int bin = m_basis.find_bin(direction);
+    if (bin >= 0 && static_cast<std::size_t>(bin) < m_sources.size() &&
+        m_sources[static_cast<std::size_t>(bin)].kind == SourceKind::SkyBin && m_sources[static_cast<std::size_t>(bin)].bin == bin)
+      return bin;
+  }
+  for (std::size_t i = 0; i < m_sources.size(); ++i)
+    if (m_sources[i].kind == SourceKind::SunDisc && contains(i, direction)) return static_cast<int>(i);
+  return -1;
+}
+
 }  // namespace dayphoton::engine

@@ -33,6 +33,15 @@ int PortSet::add(int surface_index, const Surface& surface,
   if (!(port.area_m2 > 0))
     throw std::invalid_argument("port '" + surface.name + "' has zero area");
   port.centroid = weighted_centroid / port.area_m2;
+  // A parallelogram v0 + s (v1 - v0) + t (v3 - v0): v0 + v2 = v1 + v3 (to rounding).
+  const std::vector<Vec3>& v = surface.vertices;
+  if (v.size() == 4) {
+    const Vec3 gap = (v[0] + v[2]) - (v[1] + v[3]);
+    const double scale = std::max(length(v[1] - v[0]), length(v[3] - v[0]));
+    const double area_m2 = length(cross(v[1] - v[0], v[3] - v[0]));
+    if (length(gap) <= 1e-9 * scale && std::fabs(area_m2 - port.area_m2) <= 1e-9 * port.area_m2)
+      port.parallelogram = std::array<Vec3, 3>{v[0], v[1] - v[0], v[3] - v[0]};
+  }
   m_ports.push_back(std::move(port));
   return static_cast<int>(m_ports.size()) - 1;
 }
@@ -70,6 +79,17 @@ PortSample PortSet::sample(std::size_t port_index, double u1, double u2) const {
   const auto& t = port.triangles[i];
   PortSample out;
   out.position = t[0] * b0 + t[1] * b1 + t[2] * (1.0 - b0 - b1);
+  out.normal = port.normal;
+  out.pdf_per_m2 = 1.0 / port.area_m2;
+  return out;
+}
+
+PortSample PortSet::sample_aligned(std::size_t port_index, double u1, double u2) const {
+  if (port_index >= m_ports.size() || !m_ports[port_index].parallelogram) return sample(port_index, u1, u2);
+  const Port& port = m_ports[port_index];
+  const std::array<Vec3, 3>& g = *port.parallelogram;
+  PortSample out;
+  out.position = g[0] + g[1] * u1 + g[2] * u2;
   out.normal = port.normal;
   out.pdf_per_m2 = 1.0 / port.area_m2;
   return out;

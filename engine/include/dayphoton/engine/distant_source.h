@@ -64,6 +64,9 @@ class SourceSet {
   /// bin i (PatchBasis::find_bin, RADIANCE's rule), or its angle to the disc centre is at
   /// most the disc's radius. Throws std::out_of_range for a bad index.
   bool contains(std::size_t i, const Vec3& direction) const;
+  /// The first source that contains `direction` (non-zero, toward the sky), or -1: for the
+  /// bins of a basis, the bin PatchBasis::find_bin gives; otherwise a scan of the discs.
+  int find(const Vec3& direction) const;
 
  private:
   std::vector<DistantSource> m_sources;

@@ -24,6 +24,8 @@ enum class RandomStream : std::uint32_t {
   Direct = 4,       ///< stratified direct-component sampling at a sensor
   Estimate = 5,     ///< randomised estimators (bias compensation)
   Storage = 6,      ///< main-pass storage decisions (photon-count control)
+  Gather = 7,       ///< final-gather rays from a sensor
+  DirectPort = 8,   ///< port points of the direct component's port sampling
 };
 
 class Rng {
