@@ -8,7 +8,10 @@
 
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/engine/sensor_support.h"
 #include "dayphoton/weather/epw_reader.h"
 
 namespace dayphoton::app {
@@ -98,6 +101,10 @@ ModelSummary summarize_model(const project::Project& proj) {
     }
   }
   s.triangle_count = scene.triangle_count();
+  std::vector<engine::Material> models;
+  for (const MaterialSpec& m : s.scene.materials) models.push_back(engine::Material::from_spec(m));
+  Diagnostics diag;
+  const project::Simulation& sim = proj.simulation;
   for (const SensorGrid& grid : s.scene.grids) {
     GridInfo info;
     info.name = grid.name;
@@ -107,8 +114,41 @@ ModelSummary summarize_model(const project::Project& proj) {
     info.spacing_m = grid.spacing_m;
     info.planar = grid.planar;
     info.plane_height_m = grid.plane_height_m;
+    if (grid.planar) {
+      info.estimate = "receiver plane";
+    } else {
+      std::size_t free = 0, on_storing = 0, on_other = 0;
+      std::size_t first_bad = grid.points.size();
+      for (std::size_t i = 0; i < grid.points.size(); ++i) {
+        const engine::SensorSupport support = engine::sensor_support(scene, models, grid.points[i]);
+        (support == engine::SensorSupport::Free ? free
+         : support == engine::SensorSupport::OnStoringSurface ? on_storing : on_other)++;
+        if (support != engine::SensorSupport::OnStoringSurface && first_bad == grid.points.size()) first_bad = i;
+      }
+      if (sim.point_estimate == project::PointEstimate::Gather) {
+        info.estimate = "final gather (" + std::to_string(sim.gather_rays) + " rays; " + std::to_string(free) +
+                        " in mid air, " + std::to_string(on_storing + on_other) + " on surfaces)";
+      } else {
+        info.estimate = "surface photons";
+        if (first_bad < grid.points.size()) {
+          const SensorPoint& p = grid.points[first_bad];
+          diag.error(grid.location,
+                     "sensor set '" + grid.name + "': " + std::to_string(free + on_other) + " of " +
+                         std::to_string(grid.points.size()) +
+                         " sensors do not lie on a surface that stores photons (the first, sensor " +
+                         std::to_string(first_bad + 1) + " at (" + format_number(p.position.x) + ", " +
+                         format_number(p.position.y) + ", " + format_number(p.position.z) + "), is " +
+                         (free > 0 && engine::sensor_support(scene, models, p) == engine::SensorSupport::Free
+                              ? "in mid air"
+                              : "on a black, specular or transparent surface") +
+                         "); simulation.point_estimate: surface would give them no photon light: use "
+                         "point_estimate: gather");
+        }
+      }
+    }
     s.grids.push_back(info);
   }
+  diag.throw_if_errors();
   return s;
 }
 
@@ -149,7 +189,7 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
     if (g.columns > 0 && g.rows > 0)
       out << " (" << g.columns << " x " << g.rows << ", spacing " << fixed(g.spacing_m, 2) << " m)";
     if (g.planar) out << " on the plane at " << fixed(g.plane_height_m, 2) << " m";
-    out << '\n';
+    out << ", " << g.estimate << '\n';
   }
 }
 

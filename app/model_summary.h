@@ -34,6 +34,9 @@ struct GridInfo {
   double spacing_m = 0;
   bool planar = false;
   double plane_height_m = 0;
+  /// How the photon part is estimated: "receiver plane", "final gather" or "surface photons",
+  /// with its parameters, and how many sensors lie in mid air / on a surface (gather only).
+  std::string estimate;
 };
 
 struct ModelSummary {
@@ -48,7 +51,9 @@ struct ModelSummary {
   SceneDescription scene;
 };
 
-/// Validate everything the project refers to and gather the summary; throws InputError.
+/// Validate everything the project refers to and gather the summary; throws InputError
+/// (also for a surface estimate, simulation.point_estimate: surface, of a sensor that does not
+/// lie on a surface storing photons: it would silently read no photon light).
 ModelSummary summarize_model(const project::Project& proj);
 
 void print_model_summary(const ModelSummary& summary, std::ostream& out);

@@ -78,7 +78,7 @@ RadianceMatrix exact_sun_coefficients(const engine::Scene& scene, const std::vec
     });
     const engine::TracedPhotons traced = engine::merge_traced_photons(std::move(per_sun));
     const engine::GridPhotons gp = engine::GridPhotons::for_plane(plane, traced.planes[0], n);
-    const RadianceMatrix c = study::sun_bin_coefficients(gp, sensors, estimating);
+    const RadianceMatrix c = study::sun_bin_coefficients(scene, materials, discs, gp, sensors, estimating);
     for (std::size_t s = 0; s < sensors.size(); ++s)
       for (std::size_t i = 0; i < n; ++i)
         for (int k = 0; k < 3; ++k) out.at(s, first + i, k) = c.at(s, i, k);
@@ -192,7 +192,8 @@ void radiance_sun_hour(const engine::Scene& scene, const std::vector<engine::Mat
   const engine::SunBins bins = engine::SunBins::for_suns({d}, sun_mf);
   const engine::TracedPhotons bp = study::trace_sun_bins(scene, materials, bins, {plane}, tracing);
   const RadianceMatrix bc =
-      study::sun_bin_coefficients(engine::GridPhotons::for_plane(plane, bp.planes[0], bins.size()), sensors, estimating);
+      study::sun_bin_coefficients(scene, materials, bins.sources(sky::SunHalfAngle_rad),
+                                  engine::GridPhotons::for_plane(plane, bp.planes[0], bins.size()), sensors, estimating);
   const engine::SunStencil st = bins.weights(d);
   // (b) exact, 10 x photons.
   engine::SourceSet one;
@@ -202,7 +203,7 @@ void radiance_sun_hour(const engine::Scene& scene, const std::vector<engine::Mat
   many.seed = 77;
   const engine::TracedPhotons ep = engine::trace_photons(scene, materials, one, {plane}, many);
   const RadianceMatrix ec =
-      study::sun_bin_coefficients(engine::GridPhotons::for_plane(plane, ep.planes[0], 1), sensors, estimating);
+      study::sun_bin_coefficients(scene, materials, one, engine::GridPhotons::for_plane(plane, ep.planes[0], 1), sensors, estimating);
   // (c) spread: 4 nearest patch centres, weights 1/(1.002 - cos), E_n conserved.
   int best[4] = {-1, -1, -1, -1};
   double best_cos[4] = {-2, -2, -2, -2};
@@ -407,6 +408,7 @@ int main(int argc, char** argv) {
   for (const engine::SourceTally& t : bin_photons.tallies) traced_bins += t.stored_global + t.stored_caustic > 0;
   t0 = Clock::now();
   const RadianceMatrix bin_c = study::sun_bin_coefficients(
+      scene, materials, bins.sources(sky::SunHalfAngle_rad),
       engine::GridPhotons::for_plane(plane, bin_photons.planes[0], bins.size()), sensors, sun_estimating);
   const double t_bins_estimate = seconds_since(t0);
 

@@ -6,6 +6,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include <limits>
+#include <stdexcept>
+
 #include "dayphoton/core/units.h"
 
 namespace dayphoton::engine {
@@ -81,18 +84,33 @@ RadianceMatrix DaylightCoefficients::to_matrix() const {
   return m;
 }
 
+namespace {
+
+/// bandwidth x n / typical, at least min(bandwidth, MinimumSourceBandwidth) (the header's
+/// sparse-source rule); `bandwidth` when there is no typical count.
+std::size_t scaled_bandwidth(std::size_t bandwidth, std::size_t n, std::size_t typical) {
+  if (typical == 0 || n == typical) return bandwidth;
+  const std::size_t floor = std::min(bandwidth, MinimumSourceBandwidth);
+  const double scaled = std::round(double(bandwidth) * double(n) / double(typical));
+  return std::max(floor, static_cast<std::size_t>(scaled));
+}
+
+}  // namespace
+
 std::size_t GridPhotons::bandwidth_of(std::size_t source, std::size_t bandwidth) const {
-  const std::size_t n = m_by_source[source].size();
-  if (m_typical_count == 0 || n <= m_typical_count) return bandwidth;
-  return static_cast<std::size_t>(
-      std::llround(double(bandwidth) * double(n) / double(m_typical_count)));
+  return scaled_bandwidth(bandwidth, m_by_source[source].size(), m_typical_count);
 }
 
 std::size_t GridPhotons::bandwidth_of(std::size_t source, std::size_t bandwidth, PathClass path_class) const {
   const int c = path_class == PathClass::Caustic ? 0 : 1;
-  const std::size_t n = m_class_counts[c][source], typical = m_typical_class_count[c];
-  if (typical == 0 || n <= typical) return bandwidth;
-  return static_cast<std::size_t>(std::llround(double(bandwidth) * double(n) / double(typical)));
+  return scaled_bandwidth(bandwidth, m_class_counts[c][source], m_typical_class_count[c]);
+}
+
+double GridPhotons::max_radius_m(std::size_t bandwidth) const {
+  if (!m_plane || m_typical_count == 0) return std::numeric_limits<double>::infinity();
+  const double area_m2 = m_plane->outline_area_m2();
+  if (!(area_m2 > 0)) return std::numeric_limits<double>::infinity();
+  return MaxRadiusFactor * std::sqrt(double(bandwidth) * area_m2 / (Pi * double(m_typical_count)));
 }
 
 void GridPhotons::count_classes() {
@@ -124,6 +142,7 @@ GridPhotons GridPhotons::for_plane(const ReceiverPlane& plane, std::vector<Photo
                                    std::size_t source_count) {
   GridPhotons g;
   g.m_plane = plane;
+  g.m_source_count = source_count;
   g.m_by_source = split_by_source(plane_photons, source_count);
   g.m_typical_count = median_count(g.m_by_source);
   g.count_classes();
@@ -134,9 +153,21 @@ GridPhotons GridPhotons::for_plane(const ReceiverPlane& plane, std::vector<Photo
 GridPhotons GridPhotons::for_surfaces(std::vector<Photon> surface_photons,
                                       std::size_t source_count) {
   GridPhotons g;
+  g.m_source_count = source_count;
+  surface_photons.erase(std::remove_if(surface_photons.begin(), surface_photons.end(),
+                                       [](const Photon& p) { return p.path_class == PathClass::Direct; }),
+                        surface_photons.end());
   g.m_by_source = split_by_source(surface_photons, source_count);
   g.m_typical_count = median_count(g.m_by_source);
   g.count_classes();
+  g.m_all = PhotonMap(std::move(surface_photons));
+  return g;
+}
+
+GridPhotons GridPhotons::for_gather(std::vector<Photon> surface_photons, std::size_t source_count) {
+  GridPhotons g;
+  g.m_gather = true;
+  g.m_source_count = source_count;
   g.m_all = PhotonMap(std::move(surface_photons));
   return g;
 }
@@ -206,8 +237,12 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
 void estimate_photon_coefficients(const GridPhotons& photons,
                                   const std::vector<SensorPoint>& sensors,
                                   const CoefficientOptions& options, DaylightCoefficients& out) {
+  if (photons.gather())
+    throw std::invalid_argument("photon coefficients: gather photons need the scene (photon_coefficients)");
   const std::size_t n_src = out.sources;
   const ReceiverPlane* plane = photons.plane();
+  // The widest disc on a receiver plane (sparse sources, header comment); infinite elsewhere.
+  const double max_radius_m = std::min(options.density.max_radius_m, photons.max_radius_m(options.density.bandwidth));
   auto filter_for = [&](const SensorPoint& s, PathClass c) {
     PhotonFilter f;
     f.path_classes = path_class_bit(c);
@@ -232,6 +267,7 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         const std::size_t i = s * n_src + p;
         DensityEstimateOptions scaled = options.density;
         scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth);
+        scaled.max_radius_m = max_radius_m;
         PhotonFilter both = filter_for(sensor, PathClass::Global);
         both.path_classes = IndirectPathClasses;
         if (options.caustic_bandwidth == 0) {
@@ -241,6 +277,7 @@ void estimate_photon_coefficients(const GridPhotons& photons,
           continue;
         }
         DensityEstimateOptions global_scaled = options.density, caustic_scaled = options.density;
+        global_scaled.max_radius_m = caustic_scaled.max_radius_m = max_radius_m;
         global_scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth, PathClass::Global);
         caustic_scaled.bandwidth = photons.bandwidth_of(p, options.caustic_bandwidth, PathClass::Caustic);
         out.global[i] =
@@ -280,8 +317,22 @@ DaylightCoefficients daylight_coefficients(const Scene& scene,
   c.caustic.assign(c.sensors * c.sources, Vec3{0, 0, 0});
   c.global.assign(c.sensors * c.sources, Vec3{0, 0, 0});
   c.direct = direct_coefficients(scene, materials, sources, sensors, options.direct);
-  estimate_photon_coefficients(photons, sensors, options, c);
+  photon_coefficients(scene, materials, sources, photons, sensors, options, c);
   return c;
+}
+
+void photon_coefficients(const Scene& scene, const std::vector<Material>& materials,
+                         const SourceSet& sources, const GridPhotons& photons,
+                         const std::vector<SensorPoint>& sensors,
+                         const CoefficientOptions& options, DaylightCoefficients& out) {
+  if (!photons.gather()) {
+    estimate_photon_coefficients(photons, sensors, options, out);
+    return;
+  }
+  GatheredCoefficients g =
+      gather_photon_coefficients(scene, materials, sources, photons.all(), sensors, options.gather);
+  out.caustic = std::move(g.caustic);
+  out.global = std::move(g.global);
 }
 
 }  // namespace dayphoton::engine

@@ -392,4 +392,22 @@ Vec3 Material::interior_transmittance_per_m() const {
   return m.spec.type == MaterialType::Dielectric ? m.spec.transmittance : Vec3{1, 1, 1};
 }
 
+Vec3 diffuse_reflectance(const MaterialSpec& spec) {
+  switch (spec.type) {
+    case MaterialType::Lambertian:
+    case MaterialType::Metal:
+    case MaterialType::Translucent: {
+      const double t = spec.type == MaterialType::Translucent ? spec.transmissivity : 0.0;
+      return spec.reflectance * ((1.0 - spec.specularity) * (1.0 - t));
+    }
+    default:
+      return {0, 0, 0};
+  }
+}
+
+Vec3 diffuse_transmittance(const MaterialSpec& spec) {
+  if (spec.type != MaterialType::Translucent) return {0, 0, 0};
+  return spec.reflectance * ((1.0 - spec.specularity) * spec.transmissivity * (1.0 - spec.transmitted_specular));
+}
+
 }  // namespace dayphoton::engine

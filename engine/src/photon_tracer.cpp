@@ -12,6 +12,8 @@ namespace dayphoton::engine {
 namespace {
 
 constexpr std::uint64_t AttemptsPerBlock = 1024;
+/// Entries without a stored photon after which a pre-pass stops (see trace_source).
+constexpr std::uint64_t NothingStoredEntries = 65536;
 
 double channel_mean(const Vec3& v) { return (v.x + v.y + v.z) / 3.0; }
 
@@ -48,6 +50,11 @@ bool roulette(Vec3& flux, const Vec3& weight, Rng& rng) {
   return true;
 }
 
+/// Main-pass storage probability of each class (1 in the pre-pass).
+struct StorageProbabilities {
+  double global = 1, caustic = 1, direct = 1;
+};
+
 // Collects one block's records, applying the main pass's storage probabilities.
 struct BlockResult {
   std::vector<Photon> surface;
@@ -57,19 +64,19 @@ struct BlockResult {
 
 class BlockSink final : public PhotonSink {
  public:
-  BlockSink(BlockResult& out, const TracingOptions& options, double d_global, double d_caustic)
-      : m_out(out), m_options(options), m_d_global(d_global), m_d_caustic(d_caustic) {}
+  BlockSink(BlockResult& out, const TracingOptions& options, const StorageProbabilities& d)
+      : m_out(out), m_options(options), m_d(d) {}
   void set_rng(Rng* storage) { m_storage = storage; }
 
   void record(int plane, const Photon& photon) override {
     if (m_options.region_of_interest && !inside(*m_options.region_of_interest, photon.position_m()))
       return;
     Photon stored = photon;
-    if (photon.path_class != PathClass::Direct) {
-      const double d = photon.path_class == PathClass::Global ? m_d_global : m_d_caustic;
-      // Stored or not; the flux is set per class after the passes (stored_photon_flux).
-      if (d < 1 && !(m_storage->uniform() < d)) return;
-    }
+    const double d = photon.path_class == PathClass::Global    ? m_d.global
+                     : photon.path_class == PathClass::Caustic ? m_d.caustic
+                                                               : m_d.direct;
+    // Stored or not; the flux is set per class after the passes (stored_photon_flux).
+    if (d < 1 && !(m_storage->uniform() < d)) return;
     (photon.path_class == PathClass::Global    ? m_out.global
      : photon.path_class == PathClass::Caustic ? m_out.caustic
                                                : m_out.direct)++;
@@ -83,7 +90,7 @@ class BlockSink final : public PhotonSink {
  private:
   BlockResult& m_out;
   const TracingOptions& m_options;
-  double m_d_global, m_d_caustic;
+  StorageProbabilities m_d;
   Rng* m_storage = nullptr;
 };
 
@@ -147,7 +154,7 @@ void trace_path(const Scene& scene, const std::vector<Material>& materials,
       const Vec3 tpm = material.interior_transmittance_per_m();
       flux = mul(flux, {std::pow(tpm.x, hit->t), std::pow(tpm.y, hit->t), std::pow(tpm.z, hit->t)});
     }
-    if (store && material.stores_photons()) {
+    if ((store || options.store_direct_on_surfaces) && material.stores_photons()) {
       const Vec3 side = hit->front_face ? hit->normal : hit->normal * -1.0;
       sink.record(-1, make_photon(hit->position, flux, side, start.source, path_class));
     }
@@ -176,7 +183,7 @@ struct SourceResult {
 void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
                     const std::vector<ReceiverPlane>& planes, const PortEmitter& emitter,
                     std::uint32_t source, std::uint64_t first, std::uint64_t last,
-                    double d_global, double d_caustic, const TracingOptions& options,
+                    const StorageProbabilities& d, const TracingOptions& options,
                     SourceResult& result) {
   if (last <= first) return;
   const std::uint64_t blocks = (last - first + AttemptsPerBlock - 1) / AttemptsPerBlock;
@@ -184,7 +191,7 @@ void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
   tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t b) {
     BlockResult& out = block_results[b];
     out.planes.resize(planes.size());
-    BlockSink sink(out, options, d_global, d_caustic);
+    BlockSink sink(out, options, d);
     const std::uint64_t begin = first + b * AttemptsPerBlock;
     const std::uint64_t end = std::min(last, begin + AttemptsPerBlock);
     for (std::uint64_t i = begin; i < end; ++i) {
@@ -223,6 +230,10 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
   result.planes.resize(planes.size());
   SourceTally& tally = result.tally;
   tally.bound_flux = emitter.bound_flux(source);
+  if (!can_store_photons(scene, materials, planes)) {
+    tally.nothing_stores = true;  // no photon of any source could ever be stored
+    return result;
+  }
   if (tally.bound_flux <= 0) return result;
 
   const double factor =
@@ -232,6 +243,9 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
   };
   const std::size_t target_g = scaled(options.photons_per_source);
   const std::size_t target_c = scaled(options.caustic_photons_per_source);
+  // Direct photons on surfaces (for a final gather) get the global photons' target, so that
+  // their count stays bounded however few global photons a dark room stores.
+  const std::size_t target_d = options.store_direct_on_surfaces ? target_g : 0;
   std::size_t smallest = target_g;
   if (target_c > 0) smallest = std::min(smallest, target_c);
   const std::size_t largest = std::max(target_g, target_c);
@@ -249,21 +263,29 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
   std::uint64_t done = 0;
   const std::uint64_t give_up =
       static_cast<std::uint64_t>(options.max_prepass_attempts_per_target) * largest;
+
   auto enough = [&](std::size_t target, std::uint64_t stored) {
     return target == 0 ||
            double(stored) >= std::min(100.0, std::ceil(options.prepass_fraction * double(target)));
   };
   for (;;) {
-    trace_attempts(scene, materials, planes, emitter, source, done, prepass, 1.0, 1.0, options,
+    trace_attempts(scene, materials, planes, emitter, source, done, prepass, StorageProbabilities{}, options,
                    result);
     done = prepass;
     const bool g_ok = enough(target_g, tally.stored_global);
     const bool c_ok = enough(target_c, tally.stored_caustic);
+    const bool d_ok = enough(target_d, tally.stored_direct);
     const bool g_found = target_g > 0 && tally.stored_global > 0 && g_ok;
     const bool c_found = target_c > 0 && tally.stored_caustic > 0 && c_ok;
-    if (g_ok && c_ok) break;
-    if ((g_found || c_found) && prepass >= 64 * initial) break;
+    const bool d_found = target_d > 0 && tally.stored_direct > 0 && d_ok;
+    if (g_ok && c_ok && d_ok) break;
+    if ((g_found || c_found || d_found) && prepass >= 64 * initial) break;
     if (prepass >= give_up) break;
+    // Light enters but nothing is stored (every surface it reaches absorbs it before it
+    // scatters onto anything that stores, e.g. a black room): after 2^16 entries the stored
+    // fraction of the entering flux is below 5e-5 (95 % confidence: 3 / 65536); stop.
+    if (tally.entered >= NothingStoredEntries && tally.stored_global + tally.stored_caustic + tally.stored_direct == 0)
+      break;
     // Nothing entered at all: the ports do not see this source (its emission bound is a
     // little above zero for bins just behind a port's plane, see port_emission.cpp) or it
     // is blocked. After 2^16 attempts its flux is below 5e-5 of the bound (95 %
@@ -280,10 +302,14 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
   };
   const double r_g = shortfall(target_g, tally.stored_global);
   const double r_c = shortfall(target_c, tally.stored_caustic);
-  const double r_max = std::max(r_g, r_c);
+  const double r_d = shortfall(target_d, tally.stored_direct);
+  const double r_max = std::max({r_g, r_c, r_d});
   if (r_max > 0) {
     tally.storage_probability_global = r_g / r_max;
     tally.storage_probability_caustic = target_c > 0 ? r_c / r_max : r_g / r_max;
+    if (target_d > 0) tally.storage_probability_direct = r_d / r_max;
+    const StorageProbabilities d{tally.storage_probability_global, tally.storage_probability_caustic,
+                                 tally.storage_probability_direct};
     // The low-yield cap (photon_tracer.h): fixed before any of these attempts is traced.
     const std::uint64_t cap =
         options.max_mainpass_attempts_per_target == 0
@@ -292,9 +318,8 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
     const double planned = std::ceil(double(prepass) * r_max);
     tally.capped = planned > double(cap);
     const std::uint64_t main = tally.capped ? cap : static_cast<std::uint64_t>(planned);
-    const std::uint64_t g0 = tally.stored_global, c0 = tally.stored_caustic;
-    trace_attempts(scene, materials, planes, emitter, source, prepass, prepass + main,
-                   tally.storage_probability_global, tally.storage_probability_caustic, options,
+    const std::uint64_t g0 = tally.stored_global, c0 = tally.stored_caustic, d0 = tally.stored_direct;
+    trace_attempts(scene, materials, planes, emitter, source, prepass, prepass + main, d, options,
                    result);
     tally.mainpass_attempts = main;
     // Top-up (not in the thesis): the pre-pass yield has the noise of a few hundred photons,
@@ -307,7 +332,8 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
       if (target == 0 || stored >= target || yield <= 0) return 0.0;
       return double(target - stored) / yield;
     };
-    extra = std::max(need(target_g, tally.stored_global, g0), need(target_c, tally.stored_caustic, c0));
+    extra = std::max({need(target_g, tally.stored_global, g0), need(target_c, tally.stored_caustic, c0),
+                      need(target_d, tally.stored_direct, d0)});
     std::uint64_t topup = std::min<std::uint64_t>(main, static_cast<std::uint64_t>(std::ceil(extra)));
     if (topup > cap - main) {
       topup = cap - main;
@@ -315,8 +341,7 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
     }
     if (topup > 0) {
       trace_attempts(scene, materials, planes, emitter, source, prepass + main,
-                     prepass + main + topup, tally.storage_probability_global,
-                     tally.storage_probability_caustic, options, result);
+                     prepass + main + topup, d, options, result);
       tally.mainpass_attempts += topup;
     }
   }
@@ -337,6 +362,25 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
 }
 
 }  // namespace
+
+bool can_store_photons(const Scene& scene, const std::vector<Material>& materials,
+                       const std::vector<ReceiverPlane>& planes) {
+  const std::vector<Surface>& surfaces = scene.description().surfaces;
+  bool scatters = false;
+  for (const Surface& surface : surfaces) {
+    const Material& m = materials[static_cast<std::size_t>(surface.material)];
+    if (m.stores_photons()) return true;
+    if (!scatters && !planes.empty()) {
+      // Anything but a straight pass-through, at normal and at grazing incidence.
+      for (const Vec3& incoming : {Vec3{0, 0, -1}, normalize(Vec3{1, 0, -0.2})}) {
+        const Vec3 n{0, 0, 1};
+        const Vec3 rest = m.albedo(incoming, n) - m.straight_transmittance(incoming, n);
+        if (rest.x > 1e-12 || rest.y > 1e-12 || rest.z > 1e-12) scatters = true;
+      }
+    }
+  }
+  return scatters;
+}
 
 TracedPhotons trace_source_photons(const Scene& scene, const std::vector<Material>& materials,
                                    const PortEmitter& emitter,

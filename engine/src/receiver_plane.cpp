@@ -186,4 +186,14 @@ double ReceiverPlane::disc_area_inside_m2(double x, double y, double r_m) const 
   return std::fabs(area);  // the outline may wind either way
 }
 
+double ReceiverPlane::outline_area_m2() const {
+  double twice = 0;
+  for (std::size_t i = 0; i < m_outline.size(); ++i) {
+    const PlanePoint& a = m_outline[i];
+    const PlanePoint& b = m_outline[(i + 1) % m_outline.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return 0.5 * std::fabs(twice);
+}
+
 }  // namespace dayphoton::engine

@@ -73,23 +73,9 @@ std::optional<Vec3> Camera::ray_direction(double x, double y) const {
   return normalize(forward * std::cos(theta) + (right * c + true_up * s) * std::sin(theta));
 }
 
-Vec3 PhotonRenderer::diffuse_reflectance(const MaterialSpec& spec) {
-  switch (spec.type) {
-    case MaterialType::Lambertian:
-    case MaterialType::Metal:
-    case MaterialType::Translucent: {
-      const double t = spec.type == MaterialType::Translucent ? spec.transmissivity : 0.0;
-      return spec.reflectance * ((1.0 - spec.specularity) * (1.0 - t));
-    }
-    default:
-      return {0, 0, 0};
-  }
-}
+Vec3 PhotonRenderer::diffuse_reflectance(const MaterialSpec& spec) { return engine::diffuse_reflectance(spec); }
 
-Vec3 PhotonRenderer::diffuse_transmittance(const MaterialSpec& spec) {
-  if (spec.type != MaterialType::Translucent) return {0, 0, 0};
-  return spec.reflectance * ((1.0 - spec.specularity) * spec.transmissivity * (1.0 - spec.transmitted_specular));
-}
+Vec3 PhotonRenderer::diffuse_transmittance(const MaterialSpec& spec) { return engine::diffuse_transmittance(spec); }
 
 PhotonRenderer::PhotonRenderer(const Scene& scene, const std::vector<Material>& materials,
                                const std::vector<Photon>& surface_photons, RenderSky sky, RenderOptions options)

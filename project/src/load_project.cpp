@@ -705,6 +705,11 @@ class Loader {
       s.region_of_interest = box;
     }
     if (r.read_integer("max_attempts_per_photon", v)) s.max_attempts_per_photon = v;
+    std::string point_estimate;
+    if (r.read_choice("point_estimate", point_estimate))
+      s.point_estimate = point_estimate == "surface" ? PointEstimate::Surface : PointEstimate::Gather;
+    if (r.read_integer("gather_rays", v)) s.gather_rays = static_cast<int>(v);
+    if (r.read_integer("gather_bandwidth", v)) s.gather_bandwidth = static_cast<int>(v);
     r.finish();
   }
 

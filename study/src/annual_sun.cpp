@@ -210,7 +210,10 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
   return result;
 }
 
-RadianceMatrix sun_bin_coefficients(const engine::GridPhotons& photons,
+RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
+                                    const std::vector<engine::Material>& materials,
+                                    const engine::SourceSet& sources,
+                                    const engine::GridPhotons& photons,
                                     const std::vector<SensorPoint>& sensors,
                                     const engine::CoefficientOptions& options) {
   engine::DaylightCoefficients c;
@@ -219,7 +222,7 @@ RadianceMatrix sun_bin_coefficients(const engine::GridPhotons& photons,
   c.direct.assign(c.sensors * c.sources, Vec3{});
   c.caustic.assign(c.sensors * c.sources, Vec3{});
   c.global.assign(c.sensors * c.sources, Vec3{});
-  engine::estimate_photon_coefficients(photons, sensors, options, c);
+  engine::photon_coefficients(scene, materials, sources, photons, sensors, options, c);
   return c.to_matrix();
 }
 

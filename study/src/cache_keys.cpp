@@ -42,6 +42,7 @@ void add_tracing_options(ContentHash& h, std::size_t source, const engine::Traci
   h.integer(static_cast<std::int64_t>(o.max_prepass_attempts_per_target));
   h.integer(static_cast<std::int64_t>(o.max_mainpass_attempts_per_target));
   h.integer(o.store_direct ? 1 : 0).integer(o.keep_surface_photons ? 1 : 0).integer(o.max_events);
+  h.integer(o.store_direct_on_surfaces ? 1 : 0);
   h.integer(o.region_of_interest ? 1 : 0);
   if (o.region_of_interest) h.vec3(o.region_of_interest->lower).vec3(o.region_of_interest->upper);
 }
@@ -61,6 +62,8 @@ void add_estimate_options(ContentHash& h, const engine::CoefficientOptions& o) {
   h.integer(static_cast<int>(o.estimator)).integer(o.boundary_correction ? 1 : 0);
   h.integer(static_cast<std::int64_t>(o.caustic_bandwidth));
   h.integer(o.direct.samples_per_source).integer(static_cast<std::int64_t>(o.direct.seed));
+  h.integer(o.gather.rays_per_sensor).integer(static_cast<std::int64_t>(o.gather.bandwidth));
+  h.integer(o.gather.max_specular_events).integer(static_cast<std::int64_t>(o.gather.seed));
 }
 
 }  // namespace

@@ -97,7 +97,22 @@ engine::CoefficientOptions coefficient_options(const project::Simulation& sim) {
       sim.caustic_bandwidth > 0 ? sim.caustic_bandwidth : (sim.caustic_photons_per_bin > 0 ? sim.bandwidth : 0));
   o.direct.samples_per_source = sim.direct_samples_per_bin;
   o.direct.seed = sim.seed;
+  o.gather.rays_per_sensor = sim.gather_rays;
+  o.gather.bandwidth = static_cast<std::size_t>(sim.gather_bandwidth);
+  o.gather.seed = sim.seed;
   return o;
+}
+
+/// The photons grid `plane` (its receiver plane, or -1) is estimated from: its plane's
+/// crossings, or the surface photons for a final gather or a surface estimate.
+engine::GridPhotons grid_photons_for(int plane, const std::vector<engine::ReceiverPlane>& planes,
+                                     const engine::TracedPhotons& photons, std::size_t sources,
+                                     project::PointEstimate estimate) {
+  if (plane >= 0)
+    return engine::GridPhotons::for_plane(planes[static_cast<std::size_t>(plane)],
+                                          photons.planes[static_cast<std::size_t>(plane)], sources);
+  return estimate == project::PointEstimate::Gather ? engine::GridPhotons::for_gather(photons.surface, sources)
+                                                    : engine::GridPhotons::for_surfaces(photons.surface, sources);
 }
 
 sky::PatchBasis basis_of(const project::Simulation& sim) {
@@ -287,6 +302,8 @@ engine::TracingOptions sun_tracing_options(const project::Project& project, bool
   o.photons_per_source = static_cast<std::size_t>(
       std::max(1LL, std::llround(double(project.simulation.photons_per_bin) * SunBinPhotonFraction)));
   o.keep_surface_photons = keep_surface_photons;
+  o.store_direct_on_surfaces =
+      keep_surface_photons && project.simulation.point_estimate == project::PointEstimate::Gather;
   return o;
 }
 
@@ -401,13 +418,10 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
       log.line(prefix + "sun coefficients " + grid.name + ": cached");
     } else {
       progress.start(prefix + "sun coefficients " + grid.name, grid.points.size(), "sensors");
-      const int plane = plane_of_grid[g];
       const engine::GridPhotons grid_photons =
-          plane >= 0 ? engine::GridPhotons::for_plane(planes[static_cast<std::size_t>(plane)],
-                                                      photons.planes[static_cast<std::size_t>(plane)],
-                                                      bins.size())
-                     : engine::GridPhotons::for_surfaces(photons.surface, bins.size());
-      result[g].bin_coefficients = sun_bin_coefficients(grid_photons, grid.points, estimating);
+          grid_photons_for(plane_of_grid[g], planes, photons, bins.size(), sim.point_estimate);
+      result[g].bin_coefficients =
+          sun_bin_coefficients(scene, materials, sources, grid_photons, grid.points, estimating);
       ctx.store.write("sun-coefficients", grid_keys[g], encode_matrix(result[g].bin_coefficients));
       progress.advance(grid.points.size());
       progress.end();
@@ -498,6 +512,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   engine::TracingOptions tracing = tracing_options(project, sources.size());
   tracing.keep_surface_photons =
       std::any_of(plane_of_grid.begin(), plane_of_grid.end(), [](int p) { return p < 0; });
+  tracing.store_direct_on_surfaces =
+      tracing.keep_surface_photons && sim.point_estimate == project::PointEstimate::Gather;
   const engine::CoefficientOptions estimating = coefficient_options(sim);
   const ContentHash scene_hash = scene_key(description);
   const ContentHash planes_hash = planes_key(description.grids);
@@ -578,12 +594,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       continue;
     }
     progress.start(prefix + "coefficients " + grid.name, grid.points.size(), "sensors");
-    const int plane = plane_of_grid[g];
     const engine::GridPhotons grid_photons =
-        plane >= 0 ? engine::GridPhotons::for_plane(planes[static_cast<std::size_t>(plane)],
-                                                    photons.planes[static_cast<std::size_t>(plane)],
-                                                    sources.size())
-                   : engine::GridPhotons::for_surfaces(photons.surface, sources.size());
+        grid_photons_for(plane_of_grid[g], planes, photons, sources.size(), sim.point_estimate);
     coefficients[g] = engine::daylight_coefficients(scene, materials, sources, grid_photons,
                                                     grid.points, estimating);
     ctx.store.write("coefficients", grid_keys[g], encode_coefficients(*coefficients[g]));

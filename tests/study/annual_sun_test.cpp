@@ -356,12 +356,13 @@ TEST(SunBinTracing, InterpolatedIndirectSunMatchesTracingEachHoursSun) {
     o.seed = 100 + r;
     const engine::TracedPhotons bp = trace_sun_bins(scene, materials, bins, {plane}, o);
     const RadianceMatrix bc =
-        sun_bin_coefficients(engine::GridPhotons::for_plane(plane, bp.planes[0], bins.size()), grid.points, co);
+        sun_bin_coefficients(scene, materials, bins.sources(sky::SunHalfAngle_rad),
+                             engine::GridPhotons::for_plane(plane, bp.planes[0], bins.size()), grid.points, co);
     const metrics::IlluminanceTable table = indirect_sun_table(bc, bins, hours, steps);
     o.seed = 200 + r;
     const engine::TracedPhotons ep = engine::trace_photons(scene, materials, exact, {plane}, o);
     const RadianceMatrix ec =
-        sun_bin_coefficients(engine::GridPhotons::for_plane(plane, ep.planes[0], exact.size()), grid.points, co);
+        sun_bin_coefficients(scene, materials, exact, engine::GridPhotons::for_plane(plane, ep.planes[0], exact.size()), grid.points, co);
     for (std::size_t k = 0; k < hours.size(); ++k) {
       double a = 0, b = 0;
       for (std::size_t s = 0; s < grid.points.size(); ++s) {

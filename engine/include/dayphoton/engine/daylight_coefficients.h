@@ -9,8 +9,12 @@
 // path, so each light path is counted once ("no double counting").
 //
 // Photon estimates at a sensor of a planar grid use the grid's receiver-plane photons
-// (photons crossing the plane); other sensors use the surface photons on the side their
-// normal faces (they must lie on a surface). Two estimators:
+// (photons crossing the plane). Every other sensor (a point in mid air, a vertical or tilted
+// grid, a point on a black surface) gets a final gather from its own position and normal
+// (final_gather.h) over the surface photons of every class. The surface estimate (the
+// surface photons on the side the sensor's normal faces, for a sensor lying on a surface
+// that stores photons) remains available (GridPhotons::for_surfaces). Two estimators on
+// receiver planes and surfaces:
 //   - PerSource (default): for every source its own N nearest photons (one photon map per
 //     source), so each coefficient has N photons behind it and its own radius; N is scaled
 //     up for sources that were given more photons (GridPhotons::bandwidth_of);
@@ -27,6 +31,16 @@
 // (ReceiverPlane::clipped_disc_moments). Where a is negative (a steep fitted gradient
 // extrapolated across a wide disc, with few photons) it is set to 0, so no coefficient is
 // negative.
+// Sparse sources: a source with fewer photons than the median source (a low-yield source cut
+// by the photon cap, a sky patch seen through a sliver) would need a disc far wider than the
+// others' for the same N, and the plane fitted over it would smear its light over the room.
+// Its bandwidth is therefore scaled down with its count (bandwidth_of, never below
+// MinimumSourceBandwidth), which keeps its disc about as wide as the other sources'; and on
+// a receiver plane no disc is wider than MaxRadiusFactor times the radius that the median
+// source's photons, spread evenly over the plane's outline, would give for the bandwidth
+// (ReceiverPlane outline area): where a source has no photons that near, the estimate is the
+// fixed-radius one over what is there (zero where there is nothing), so light stays where
+// it falls.
 // Caustic map (caustic_bandwidth > 0): caustic photons get a lookup of their own, among
 // caustic photons only, with their own bandwidth, as Jensen's separate caustic map
 // (seeds/000 section 3.1.3). A sharp caustic (a mirror shelf's reflection on the ceiling,
@@ -43,6 +57,7 @@
 #include "dayphoton/engine/density_estimate.h"
 #include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/distant_source.h"
+#include "dayphoton/engine/final_gather.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/photon.h"
 #include "dayphoton/engine/photon_map.h"
@@ -52,6 +67,12 @@
 namespace dayphoton::engine {
 
 enum class PhotonEstimator { PerSource, Contribution };
+
+/// Per-source bandwidths are never scaled below this many photons (sparse sources, above).
+constexpr std::size_t MinimumSourceBandwidth = 8;
+/// On a receiver plane, kernel discs are at most this many times the median source's
+/// even-spread radius (sparse sources, above).
+constexpr double MaxRadiusFactor = 4.0;
 
 struct CoefficientOptions {
   DensityEstimateOptions density;  ///< bandwidth (photons per estimate), max radius, kernel
@@ -71,6 +92,7 @@ struct CoefficientOptions {
   std::size_t bias_compensation_max_factor = 10;
   std::uint64_t seed = 1;  ///< for the operator's random numbers
   DirectOptions direct;
+  GatherOptions gather;    ///< sensors estimated by final gather (GridPhotons::for_gather)
 };
 
 /// The three parts of C, each [sensor * sources + source], RGB W/m^2 per unit radiance.
@@ -92,28 +114,38 @@ class GridPhotons {
   /// Photons of a planar grid's receiver plane (`plane_photons`, all sources).
   static GridPhotons for_plane(const ReceiverPlane& plane, std::vector<Photon> plane_photons,
                                std::size_t source_count);
-  /// Surface photons (for sensors lying on surfaces).
+  /// Surface photons (for sensors lying on surfaces); Direct photons, if any, are dropped.
   static GridPhotons for_surfaces(std::vector<Photon> surface_photons, std::size_t source_count);
+  /// Surface photons of every class, Direct included, for a final gather (final_gather.h).
+  static GridPhotons for_gather(std::vector<Photon> surface_photons, std::size_t source_count);
 
   bool planar() const { return m_plane.has_value(); }
+  bool gather() const { return m_gather; }
   const ReceiverPlane* plane() const { return m_plane ? &*m_plane : nullptr; }
   const PhotonMap& all() const { return m_all; }
   const PhotonMap& of_source(std::size_t p) const { return m_by_source[p]; }
-  std::size_t source_count() const { return m_by_source.size(); }
+  std::size_t source_count() const { return m_source_count; }
   /// PerSource bandwidth of `source`: `bandwidth` x (its photon count / the median count
-  /// over sources with photons), never less than `bandwidth`. Sources given more photons
-  /// (TracingOptions::source_photon_factor) thus get the same kernel radius as the others
-  /// and a proportionally less noisy estimate.
+  /// over sources with photons), never less than min(bandwidth, MinimumSourceBandwidth).
+  /// Sources given more photons (TracingOptions::source_photon_factor) thus get the same
+  /// kernel radius as the others and a proportionally less noisy estimate, and sparse
+  /// sources a disc no wider than the others' (header comment).
   std::size_t bandwidth_of(std::size_t source, std::size_t bandwidth) const;
   /// The same for the photons of one class (the caustic map and its global counterpart):
   /// scaled by the source's count of that class against the median over sources that have
   /// any. A caustic target of their own makes caustic counts unlike global ones, so the
   /// total would give the global lookups of sun-lit sources needlessly wide discs.
   std::size_t bandwidth_of(std::size_t source, std::size_t bandwidth, PathClass path_class) const;
+  /// Receiver planes: the widest kernel disc for `bandwidth` photons of the median source,
+  /// MaxRadiusFactor x sqrt(bandwidth x outline area / (pi x median count)); infinity
+  /// elsewhere or without photons.
+  double max_radius_m(std::size_t bandwidth) const;
 
  private:
   static std::size_t median_count(const std::vector<PhotonMap>& maps);
   std::optional<ReceiverPlane> m_plane;
+  bool m_gather = false;
+  std::size_t m_source_count = 0;
   PhotonMap m_all;
   std::vector<PhotonMap> m_by_source;
   std::size_t m_typical_count = 0;
@@ -122,11 +154,19 @@ class GridPhotons {
   void count_classes();
 };
 
-/// Photon part (caustic, global) of the coefficients at `sensors`; parallel over sensors,
-/// deterministic. `out` must be sized (sensors x sources) in caustic/global.
+/// Photon part (caustic, global) of the coefficients at `sensors` from receiver-plane or
+/// surface photons; parallel over sensors, deterministic. `out` must be sized (sensors x
+/// sources) in caustic/global. Throws std::invalid_argument for gather photons (they need
+/// the scene: daylight_coefficients or photon_coefficients).
 void estimate_photon_coefficients(const GridPhotons& photons,
                                   const std::vector<SensorPoint>& sensors,
                                   const CoefficientOptions& options, DaylightCoefficients& out);
+
+/// The photon part for any kind of GridPhotons (a final gather for for_gather photons).
+void photon_coefficients(const Scene& scene, const std::vector<Material>& materials,
+                         const SourceSet& sources, const GridPhotons& photons,
+                         const std::vector<SensorPoint>& sensors,
+                         const CoefficientOptions& options, DaylightCoefficients& out);
 
 /// Everything: direct by shadow rays plus the photon estimates.
 DaylightCoefficients daylight_coefficients(const Scene& scene,

@@ -130,6 +130,14 @@ class Material {
   std::unique_ptr<Model> m_model;
 };
 
+/// The Lambertian part of a material's reflection (RADIANCE's diffuse reflectance: the
+/// reflectance less its specular and transmitted fractions), per channel; zero for models
+/// without one (mirror, glass, dielectric, opening).
+Vec3 diffuse_reflectance(const MaterialSpec& spec);
+/// The Lambertian part of a translucent material's transmission, per channel; zero for
+/// every other model.
+Vec3 diffuse_transmittance(const MaterialSpec& spec);
+
 /// RADIANCE glass transmissivity tn (per pass through the pane material) giving a normal
 /// transmittance `normal_transmittance` for refractive index 1.52: RADIANCE's documented
 /// conversion tn = (sqrt(0.8402528435 + 0.0072522239 Tn^2) - 0.9166530661) / 0.0036261119 / Tn.

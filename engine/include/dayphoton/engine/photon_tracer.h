@@ -89,6 +89,10 @@ struct TracingOptions {
   /// stays unbiased (see above), and SourceTally::capped is set.
   std::size_t max_mainpass_attempts_per_target = 256;
   bool store_direct = false;             ///< also store Direct photons (diagnostics)
+  /// Store Direct photons on surfaces (not on planes), with the global photons' target, for
+  /// a final gather (final_gather.h). Their main-pass storage probability follows the
+  /// photon-count control like the other classes' (SourceTally::storage_probability_direct).
+  bool store_direct_on_surfaces = false;
   /// Keep the photons stored on surfaces. When every sensor grid is a receiver plane they
   /// are not used: they are then still counted (the counts control is unchanged, so the
   /// same settings give the same plane photons) but not kept, which saves ~70 % of memory.
@@ -107,17 +111,21 @@ struct SourceTally {
   double bound_flux = 0;                 ///< PortEmitter::bound_flux
   double flux_per_attempt = 0;           ///< bound_flux / all attempts
   double storage_probability_global = 1, storage_probability_caustic = 1;
+  double storage_probability_direct = 1;  ///< < 1 only with store_direct_on_surfaces
+  /// Nothing in the scene can store a photon (no surface with a diffuse component, and no
+  /// receiver plane or nothing that scatters): the source was not traced.
+  bool nothing_stores = false;
   /// The main pass (with its top-up) was cut to max_mainpass_attempts_per_target x target
   /// attempts: the source stores fewer photons than its target.
   bool capped = false;
 
   /// Flux every stored photon of `path_class` carries (per unit source radiance):
-  /// bound_flux / (prepass + mainpass x d), d the class's main-pass storage probability (1
-  /// for Direct). Stored photons of a class sample P + M d attempts' worth of its light.
+  /// bound_flux / (prepass + mainpass x d), d the class's main-pass storage probability.
+  /// Stored photons of a class sample P + M d attempts' worth of its light.
   double stored_photon_flux(PathClass path_class) const {
     const double d = path_class == PathClass::Global    ? storage_probability_global
                      : path_class == PathClass::Caustic ? storage_probability_caustic
-                                                        : 1.0;
+                                                        : storage_probability_direct;
     return bound_flux / (double(prepass_attempts) + double(mainpass_attempts) * d);
   }
 };
@@ -127,6 +135,13 @@ struct TracedPhotons {
   std::vector<std::vector<Photon>> planes;  ///< per receiver plane (argument order)
   std::vector<SourceTally> tallies;         ///< per source
 };
+
+/// False if no photon could ever be stored: no surface material stores photons, and either
+/// there is no receiver plane or no material scatters light other than straight through (a
+/// black room with open or glazed ports). trace_source_photons then traces nothing and sets
+/// SourceTally::nothing_stores.
+bool can_store_photons(const Scene& scene, const std::vector<Material>& materials,
+                       const std::vector<ReceiverPlane>& planes);
 
 /// The forward pass for every source of `sources`. `materials[m]` models scene material m.
 TracedPhotons trace_photons(const Scene& scene, const std::vector<Material>& materials,

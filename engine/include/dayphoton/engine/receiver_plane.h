@@ -42,6 +42,8 @@ class ReceiverPlane {
   /// Ray parameter where origin + t d crosses the plane from the front (against the normal),
   /// or a negative value if it does not (parallel, leaving, or behind the origin).
   double front_crossing(const Vec3& origin, const Vec3& direction) const;
+  /// Area enclosed by the outline, m^2 (shoelace formula; absolute value).
+  double outline_area_m2() const;
   /// True if (x, y) is inside the outline (even-odd rule).
   bool contains(double x, double y) const;
   /// Area of the disc of radius r_m centred on (x, y) that lies inside the outline, m^2

@@ -292,6 +292,8 @@ struct Sensors {
 
 enum class SkyBasis { Tregenza, Reinhart };
 enum class SunMode { Bins, Spread };
+/// How sensors off a receiver plane are estimated (engine/final_gather.h).
+enum class PointEstimate { Gather, Surface };
 
 struct Simulation {
   SkyBasis basis = SkyBasis::Tregenza;
@@ -321,6 +323,11 @@ struct Simulation {
   /// Low-yield cap: main-pass attempts per target photon of a source, 0 = none
   /// (engine::TracingOptions::max_mainpass_attempts_per_target).
   long long max_attempts_per_photon = 256;
+  /// Sensors that are not on a receiver plane: a final gather from each (the default), or
+  /// the surface photons where the sensor lies (it must lie on a surface that stores them).
+  PointEstimate point_estimate = PointEstimate::Gather;
+  int gather_rays = 1024;        ///< final-gather rays per sensor (engine::GatherOptions)
+  int gather_bandwidth = 32;     ///< photons per lookup at a gather hit
   SourceLocation location;
 };
 

@@ -137,8 +137,12 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
 
 /// Photon part (caustic + global) of the sun-bin coefficients at `sensors`: sensors x bins x
 /// RGB, W/m^2 per unit disc radiance (what coefficients_sun.mtx holds). `photons` are the
-/// sun bins' photons, source i = bin i.
-RadianceMatrix sun_bin_coefficients(const engine::GridPhotons& photons,
+/// sun bins' photons, source i = bin i = sources[i] (the discs, for a final gather's
+/// specular paths; engine::photon_coefficients).
+RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
+                                    const std::vector<engine::Material>& materials,
+                                    const engine::SourceSet& sources,
+                                    const engine::GridPhotons& photons,
                                     const std::vector<SensorPoint>& sensors,
                                     const engine::CoefficientOptions& options);
 

@@ -35,7 +35,7 @@
 namespace dayphoton::study {
 
 /// Bumped whenever the engine's output for the same inputs changes (invalidates old caches).
-constexpr int EngineCacheVersion = 2;
+constexpr int EngineCacheVersion = 3;
 
 ContentHash scene_key(const SceneDescription& scene);
 ContentHash planes_key(const std::vector<SensorGrid>& grids);

@@ -1,0 +1,83 @@
+// Final gather: the photon part of the daylight coefficients at a sensor that is not on a
+// receiver plane (a RADIANCE .pts point in mid air, a vertical or tilted grid, a point on a
+// black surface), from the sensor's own position and normal.
+//
+// The irradiance of the light that reaches sensor x (unit normal n) after at least one
+// scattering event is
+//
+//   E(x) = integral over the hemisphere of n of L(x <- w) cos(w, n) dw
+//        ~ pi / N sum_i L(x <- w_i),   w_i cosine-weighted, N = k x k stratified
+//
+// (Pharr, Jakob & Humphreys, "Physically Based Rendering", 4th ed., section A.5.3, Malley's
+// method), the radiance along each gather ray being read off the photon maps where the ray
+// first meets a surface with a diffuse component (Jensen, "Realistic Image Synthesis Using
+// Photon Mapping", 2001, section 9.3.3, "final gathering"; RADIANCE's rcontrib does the same
+// with a contribution photon map: R. Schregle, "Development and Integration of the RADIANCE
+// Photon Map Extension", technical report, 2015, on contribution photon maps):
+//
+//   L(y -> x) = rho_d(y) / pi  E_photons(y, side facing x)
+//             + tau_d(y) / pi  E_photons(y, the other side)         (translucent),
+//
+// so each gather ray adds rho_d E_p(y) / N to the coefficient of every source p, E_p(y)
+// being the contribution estimate at y (density_estimate.h: the N_g nearest surface photons
+// of ALL sources passing the side filter, binned by source). The surface photons here must
+// include the DIRECT ones (TracingOptions::store_direct_on_surfaces): light that reached y
+// straight from the sky and is reflected once toward x is indirect at x. The lookups are
+// noisy one by one (a few photons per source), but the N gather rays average them: the
+// estimate's noise is that of the gather, and its bias the (small) kernel bias at y.
+//
+// Specular and glossy parts at a hit (mirrors, glass, metal, plastic's specular lobe) are
+// followed by sampling the material (Material::sample, reciprocal in the forms used here),
+// up to GatherOptions::max_specular_events; a path that leaves through a port after at least
+// one such event reaches the source containing its direction (SourceSet::find) with unit
+// radiance: that is the caustic part. Paths that leave without a specular event are the
+// zero-event light of the direct component (shadow rays, direct_component.h) and are NOT
+// counted here; a path that meets anything after its port is blocked, and one that leaves
+// without crossing a port carries nothing (the rule of direct_component.h), so every light
+// path is counted once. Where the photon pass stores no photons (a black room), the gather
+// adds only the specular paths, which is exactly the light there is.
+//
+// A sun disc (0.5 degrees) is reached by a specular gather path only with a probability of
+// the order of its solid angle: a point sensor inside a sun beam redirected by a mirror
+// gets that beam with high variance. Surfaces receive it through their caustic photons
+// (a sensor on a surface, or a receiver plane, resolves it).
+//
+// Determinism: gather ray i of sensor s uses Rng(seed, s, i, RandomStream::Gather); sensors
+// are independent, so the result is identical for any thread count.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/engine/distant_source.h"
+#include "dayphoton/engine/material.h"
+#include "dayphoton/engine/photon_map.h"
+#include "dayphoton/engine/scene.h"
+
+namespace dayphoton::engine {
+
+struct GatherOptions {
+  int rays_per_sensor = 1024;       ///< gather rays per sensor, >= 1; rounded up to a square
+  std::size_t bandwidth = 32;       ///< photons per lookup at a gather hit (all sources), >= 1
+  int max_specular_events = 16;     ///< specular/glossy events followed per gather ray
+  std::uint64_t seed = 1;
+};
+
+/// Caustic (specular paths to a source) and global (photon lookups) parts, each
+/// [sensor * sources + source], RGB W/m^2 per unit source radiance. `surface_photons` is the
+/// map of every stored surface photon of `sources` (Direct included). Parallel over sensors,
+/// deterministic. Throws std::invalid_argument for rays_per_sensor < 1, bandwidth 0, a
+/// sensor normal that is zero or not finite, or a photon whose source is not in `sources`.
+struct GatheredCoefficients {
+  std::vector<Vec3> caustic, global;
+};
+GatheredCoefficients gather_photon_coefficients(const Scene& scene,
+                                                const std::vector<Material>& materials,
+                                                const SourceSet& sources,
+                                                const PhotonMap& surface_photons,
+                                                const std::vector<SensorPoint>& sensors,
+                                                const GatherOptions& options);
+
+}  // namespace dayphoton::engine
