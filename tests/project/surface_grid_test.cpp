@@ -6,7 +6,9 @@
 // - a north-rotated room: world positions and normals by the rotation written out here;
 // - the window wall: lattice points in the window or within the inset of it are left out;
 // - rectangles: normal u x v (right-hand rule), parallelogram inset perpendicular to edges;
-// - every input error located at its key, through the YAML loader.
+// - every input error located at its key, through the YAML loader;
+// - the sensor files of the backward references (tests/data/reference/) are the example's
+//   wall grids.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "dayphoton/project/project.h"
+#include "dayphoton/project/pts_reader.h"
 #include "geometry_fixture.h"
 #include "located_errors.h"
 
@@ -282,6 +285,28 @@ TEST(SurfaceGrid, InputErrorsAreLocatedAtTheirKey) {
               "'office' (6 x 3 m)"});
   EXPECT_EQ(errors_of("    - {name: g, wall: {room: office, wall: north}, offset: -0.1}\n"),
             V{"9:60: 'offset' must be >= 0, got -0.1"});
+}
+
+// The backward-reference sensor files in tests/data/reference/ (README there) are the wall
+// grids of projects/wall_sensors: if the grids change, the references must be made again.
+TEST(SurfaceGrid, ReferenceSensorFilesAreTheExampleWallGrids) {
+  const std::string source = DAYPHOTON_SOURCE_DIR;
+  const SceneDescription scene =
+      build_scene_description(load_project(source + "/projects/wall_sensors/project.yaml"));
+  for (const std::string name : {"back_wall", "west_wall"}) {
+    const SensorGrid* grid = nullptr;
+    for (const SensorGrid& g : scene.grids)
+      if (g.name == name) grid = &g;
+    ASSERT_NE(grid, nullptr) << name;
+    Diagnostics diag;
+    const std::vector<SensorPoint> pts = read_pts(source + "/tests/data/reference/office_" + name + ".pts", diag);
+    ASSERT_FALSE(diag.has_errors()) << diag.format();
+    ASSERT_EQ(pts.size(), grid->points.size()) << name;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      EXPECT_LT(length(pts[i].position - grid->points[i].position), 1e-9) << name << " " << i;
+      EXPECT_LT(length(pts[i].normal - grid->points[i].normal), 1e-12) << name << " " << i;
+    }
+  }
 }
 
 }  // namespace
