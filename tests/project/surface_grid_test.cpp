@@ -8,7 +8,7 @@
 // - rectangles: normal u x v (right-hand rule), parallelogram inset perpendicular to edges;
 // - every input error located at its key, through the YAML loader;
 // - the sensor files of the backward references (tests/data/reference/) are the example's
-//   wall grids.
+//   wall grids, and its .pts point set is its work-plane grid.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -306,6 +306,26 @@ TEST(SurfaceGrid, ReferenceSensorFilesAreTheExampleWallGrids) {
       EXPECT_LT(length(pts[i].position - grid->points[i].position), 1e-9) << name << " " << i;
       EXPECT_LT(length(pts[i].normal - grid->points[i].normal), 1e-12) << name << " " << i;
     }
+  }
+}
+
+// The example's mid-air point set holds exactly the work-plane grid's 165 positions, in order.
+TEST(SurfaceGrid, ExamplePointSetIsTheWorkPlaneGrid) {
+  const SceneDescription scene = build_scene_description(
+      load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/wall_sensors/project.yaml"));
+  const SensorGrid *grid = nullptr, *points = nullptr;
+  for (const SensorGrid& g : scene.grids) {
+    if (g.name == "workplane") grid = &g;
+    if (g.name == "workplane_points") points = &g;
+  }
+  ASSERT_TRUE(grid && points);
+  EXPECT_TRUE(grid->planar);
+  EXPECT_FALSE(points->planar);
+  ASSERT_EQ(grid->points.size(), 165u);
+  ASSERT_EQ(points->points.size(), 165u);
+  for (std::size_t i = 0; i < 165; ++i) {
+    EXPECT_LT(length(points->points[i].position - grid->points[i].position), 1e-12) << i;
+    EXPECT_EQ(points->points[i].normal, Vec3(0, 0, 1)) << i;
   }
 }
 
