@@ -20,11 +20,27 @@
 // (0 14) and write_matrix, it writes its coefficients as a 165 x 146 RADIANCE matrix, which
 // `dayphoton annual --coefficients` turns into annual metrics like any exported matrix
 // (scripts/validate_office.py --backward FILE compares those with RADIANCE's).
+//
+// Any sensors: office_backward_reference --pts FILE [--paths N=200000] [--seed S=7]
+//                                        [--csv OUT] [--matrix OUT] [--project YAML]
+// reads the sensors (position and normal, any normal) from a RADIANCE .pts file in the
+// scene's world coordinates, traces `paths` paths from each (sensor k of the file uses the
+// random streams (seed, k, path)), and prints and, with --csv, writes per sensor its daylight
+// factor with the standard error of the mean, under two sky vectors: RADIANCE's overcast vector
+// (refdata, as above; columns left empty without ../shared) and dayphoton's own CIE overcast
+// vector with the project's ground reflectance (the sky of `dayphoton run`'s
+// daylight_factor.csv). --matrix writes the per-bin coefficients (sensors x 146, RGB, float).
+// The scene is projects/office/project.yaml unless --project names another project.
+// Paths start at the sensor moved off its surface by the scene's ray epsilon along its
+// normal (as the direct component's shadow rays), so sensors may lie on a surface.
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,12 +48,16 @@
 #include <tbb/parallel_for.h>
 
 #include "../tests/reference_data.h"
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/random.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/project/project.h"
+#include "dayphoton/project/pts_reader.h"
 #include "dayphoton/sky/patch_basis.h"
+#include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/sky/sky_model.h"
 
 using namespace dayphoton;
 using Clock = std::chrono::steady_clock;
@@ -45,6 +65,8 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+/// The DF skies are scaled to this horizontal illuminance (DF = E / 100 in percent).
+constexpr double HorizontalLux = 10000;
 
 // Cosine-weighted direction about `n` from two uniforms (Malley's method).
 Vec3 cosine_direction(const Vec3& n, double u1, double u2) {
@@ -55,16 +77,200 @@ Vec3 cosine_direction(const Vec3& n, double u1, double u2) {
   return normalize(t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + n * std::sqrt(1 - u1));
 }
 
+struct Tracer {
+  const engine::Scene& scene;
+  const std::vector<engine::Material>& materials;
+  const sky::PatchBasis& basis;
+};
+
+/// The backward estimate of one sensor: per-bin sums of pi x throughput (`coeff`, `bins`
+/// entries) and, per sky vector, the sums of the illuminance estimate and of its square.
+struct SensorSums {
+  std::vector<Vec3> coeff;
+  std::vector<double> sum, sum2;
+  std::uint64_t rays = 0;
+};
+
+/// `paths` paths from `sensor`; path i uses the stream (seed, stream_index, i). Each path
+/// scores pi x throughput x the escape bin's radiance under each of `skies` (RGB per bin).
+SensorSums trace_sensor(const Tracer& t, const SensorPoint& sensor, std::size_t paths, std::uint64_t seed,
+                        std::uint64_t stream_index, const std::vector<std::vector<Vec3>>& skies) {
+  const std::size_t bins = std::size_t(t.basis.bin_count());
+  SensorSums out;
+  out.coeff.assign(bins, Vec3{0, 0, 0});
+  out.sum.assign(skies.size(), 0);
+  out.sum2.assign(skies.size(), 0);
+  for (std::size_t i = 0; i < paths; ++i) {
+    engine::Rng rng(seed, stream_index, i, engine::RandomStream::Scattering);
+    Vec3 w{1, 1, 1};
+    const Vec3 d0 = cosine_direction(sensor.normal, rng.uniform(), rng.uniform());
+    engine::Ray ray{t.scene.offset_ray_origin(sensor.position, sensor.normal, d0), d0};
+    int escape_bin = -1;
+    for (int depth = 0; depth < 1000; ++depth) {
+      ++out.rays;
+      const std::optional<engine::Hit> hit = t.scene.intersect(ray);
+      if (!hit) {
+        escape_bin = t.basis.find_bin(ray.direction);
+        out.coeff[std::size_t(escape_bin)] = out.coeff[std::size_t(escape_bin)] + w * kPi;
+        break;
+      }
+      const auto s = t.materials[std::size_t(hit->material)].sample(ray.direction, hit->normal, rng.uniform(),
+                                                                    rng.uniform(), rng.uniform());
+      if (!s) break;
+      w = mul(w, s->weight);
+      if (depth >= 2) {  // roulette on the throughput: survive with q, divide by q
+        const double q = std::min(1.0, std::max(w.x, std::max(w.y, w.z)));
+        if (rng.uniform() >= q) break;
+        w = w * (1 / q);
+      }
+      ray = engine::Ray{t.scene.offset_ray_origin(hit->position, hit->normal, s->direction), s->direction};
+    }
+    for (std::size_t k = 0; k < skies.size(); ++k) {
+      const double x = escape_bin < 0 ? 0 : kPi * rgb_to_photometric(mul(w, skies[k][std::size_t(escape_bin)]));
+      out.sum[k] += x;
+      out.sum2[k] += x * x;
+    }
+  }
+  return out;
+}
+
+std::vector<Vec3> vector_rgb(const RadianceMatrix& m) {
+  std::vector<Vec3> v(m.rows());
+  for (std::size_t p = 0; p < m.rows(); ++p) v[p] = {m.at(p, 0, 0), m.at(p, 0, 1), m.at(p, 0, 2)};
+  return v;
+}
+
+/// Mean and standard error of the mean of a sensor's DF (percent) under sky k.
+std::pair<double, double> df_percent(const SensorSums& s, std::size_t k, std::size_t paths) {
+  const double n = double(paths), mean = s.sum[k] / n;
+  const double var = std::max(0.0, s.sum2[k] / n - mean * mean) / n;
+  const double to_percent = 100 / HorizontalLux;
+  return {mean * to_percent, std::sqrt(var) * to_percent};
+}
+
+std::string fixed(double v, int decimals) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(decimals) << v;
+  return s.str();
+}
+
+/// --pts mode (see the header comment). Returns the exit code.
+int run_pts(int argc, char** argv, const std::string& source_dir, const std::string& shared) {
+  std::string pts_path, csv_path, matrix_path, project_path = source_dir + "/projects/office/project.yaml";
+  std::size_t paths = 200000;
+  std::uint64_t seed = 7;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (a == "--pts" && has_value) pts_path = argv[++i];
+    else if (a == "--paths" && has_value) paths = std::stoul(argv[++i]);
+    else if (a == "--seed" && has_value) seed = std::stoull(argv[++i]);
+    else if (a == "--csv" && has_value) csv_path = argv[++i];
+    else if (a == "--matrix" && has_value) matrix_path = argv[++i];
+    else if (a == "--project" && has_value) project_path = argv[++i];
+    else {
+      std::fprintf(stderr, "office_backward_reference: unknown or incomplete option '%s'\n", a.c_str());
+      return 2;
+    }
+  }
+  if (pts_path.empty() || paths == 0) {
+    std::fprintf(stderr, "office_backward_reference: --pts FILE and --paths N > 0 are needed\n");
+    return 2;
+  }
+  Diagnostics diag;
+  const std::vector<SensorPoint> sensors = project::read_pts(pts_path, diag);
+  if (diag.has_errors() || sensors.empty()) {
+    std::fprintf(stderr, "%s", diag.has_errors() ? diag.format().c_str() : (pts_path + ": no sensors\n").c_str());
+    return 1;
+  }
+  const project::Project proj = project::load_project(project_path);
+  const SceneDescription description = project::build_scene_description(proj);
+  const engine::Scene scene = engine::Scene::build(description);
+  std::vector<engine::Material> materials;
+  for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
+  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  const std::size_t bins = std::size_t(basis.bin_count());
+
+  // Sky 0: dayphoton's CIE overcast vector with the project's ground (as `dayphoton run`'s
+  // daylight factor); sky 1: RADIANCE's (gensky -c -B 55.866 -g 0.2 | genskyvec -m 1), if present.
+  const double rho = proj.simulation.ground_reflectance;
+  const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(HorizontalLux));
+  std::vector<std::vector<Vec3>> skies{vector_rgb(
+      sky::sky_vector(*overcast, basis, sky::ground_radiance_rgb({rho, rho, rho}, HorizontalLux, 0, {0, 0, -1})))};
+  const std::string radiance_vector = shared + "/refdata/results/a_daylight_factor/skyvec_overcast_m1.vec";
+  const bool have_radiance = std::ifstream(radiance_vector).good();
+  if (have_radiance) skies.push_back(vector_rgb(RadianceMatrix::read_file(radiance_vector)));
+
+  const Tracer tracer{scene, materials, basis};
+  std::vector<SensorSums> sums(sensors.size());
+  const auto t0 = Clock::now();
+  tbb::parallel_for(std::size_t(0), sensors.size(), [&](std::size_t k) {
+    sums[k] = trace_sensor(tracer, sensors[k], paths, seed, k, skies);
+  });
+  const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  std::uint64_t rays = 0;
+  for (const SensorSums& s : sums) rays += s.rays;
+
+  std::printf("backward reference: %s, %zu sensors from %s, %zu paths per sensor, seed %llu, %.1f s, %.3g rays/s\n",
+              project_path.c_str(), sensors.size(), pts_path.c_str(), paths, static_cast<unsigned long long>(seed),
+              seconds, double(rays) / seconds);
+  std::printf("index      x       y       z      nx      ny      nz   DF cie %%  (+-se)     DF radiance %% (+-se)\n");
+  double worst_relative_se = 0, sum_relative_se2 = 0;
+  std::ostringstream csv;
+  csv << "index,x,y,z,nx,ny,nz,df_cie_percent,df_cie_se_percent,df_radiance_percent,df_radiance_se_percent\n";
+  csv << std::setprecision(17);
+  for (std::size_t k = 0; k < sensors.size(); ++k) {
+    const SensorPoint& sp = sensors[k];
+    const auto [cie, cie_se] = df_percent(sums[k], 0, paths);
+    std::optional<std::pair<double, double>> rad;
+    if (have_radiance) rad = df_percent(sums[k], 1, paths);
+    const double relative = cie > 0 ? cie_se / cie : 0;
+    worst_relative_se = std::max(worst_relative_se, relative);
+    sum_relative_se2 += relative * relative;
+    std::printf("%5zu %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f  %8.4f (+-%.4f)   %s\n", k, sp.position.x, sp.position.y,
+                sp.position.z, sp.normal.x, sp.normal.y, sp.normal.z, cie, cie_se,
+                rad ? (fixed(rad->first, 4) + " (+-" + fixed(rad->second, 4) + ")").c_str() : "-");
+    csv << k << ',' << sp.position.x << ',' << sp.position.y << ',' << sp.position.z << ',' << sp.normal.x << ','
+        << sp.normal.y << ',' << sp.normal.z << ',' << std::setprecision(6) << cie << ',' << cie_se << ',';
+    if (rad) csv << rad->first << ',' << rad->second;
+    else csv << ',';
+    csv << std::setprecision(17) << '\n';
+  }
+  std::printf("relative standard error of the DF (cie): RMS over sensors %.3f %%, largest %.3f %%\n",
+              100 * std::sqrt(sum_relative_se2 / double(sensors.size())), 100 * worst_relative_se);
+  if (!csv_path.empty()) {
+    std::ofstream out(csv_path, std::ios::binary);
+    out << csv.str();
+    if (!out) {
+      std::fprintf(stderr, "office_backward_reference: cannot write %s\n", csv_path.c_str());
+      return 1;
+    }
+  }
+  if (!matrix_path.empty()) {
+    RadianceMatrix out(sensors.size(), bins, 3);
+    for (std::size_t k = 0; k < sensors.size(); ++k)
+      for (std::size_t p = 0; p < bins; ++p)
+        for (int c = 0; c < 3; ++c) out.at(k, p, c) = float(sums[k].coeff[p][c] / double(paths));
+    out.header_lines().push_back("office_backward_reference --pts " + pts_path + " --paths " + std::to_string(paths) +
+                                 " --seed " + std::to_string(seed));
+    out.write_file(matrix_path, MatrixFormat::Float);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  const std::string source_dir = DAYPHOTON_BENCH_SOURCE_DIR;
+  const std::string shared = source_dir + "/../shared";
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--pts") return run_pts(argc, argv, source_dir, shared);
+
   const std::size_t paths = argc > 1 ? std::stoul(argv[1]) : 200000;
   const int first_row = argc > 2 ? std::stoi(argv[2]) : 13;
   const int last_row = argc > 3 ? std::stoi(argv[3]) : 14;
-  const std::string source_dir = DAYPHOTON_BENCH_SOURCE_DIR;
   const std::string ours_path =
       argc > 4 ? argv[4] : source_dir + "/projects/office/results/workplane/coefficients_sky.mtx";
-  const std::string shared = source_dir + "/../shared";
   const std::string write_path = argc > 5 ? argv[5] : "";
 
   const project::Project proj = project::load_project(source_dir + "/projects/office/project.yaml");
@@ -83,48 +289,21 @@ int main(int argc, char** argv) {
 
   // RADIANCE's overcast sky vector (gensky -c -B 55.866 -g 0.2 | genskyvec -m 1), photometric.
   const RadianceMatrix sv = RadianceMatrix::read_file(shared + "/refdata/results/a_daylight_factor/skyvec_overcast_m1.vec");
-  std::vector<Vec3> sky_rgb(bins);
-  for (std::size_t p = 0; p < bins; ++p) sky_rgb[p] = {sv.at(p, 0, 0), sv.at(p, 0, 1), sv.at(p, 0, 2)};
+  const std::vector<Vec3> sky_rgb = vector_rgb(sv);
 
   // Per sensor: per-bin sums of pi x throughput, and the DF estimate's first two moments.
-  std::vector<Vec3> coeff(sensors.size() * bins, Vec3{0, 0, 0});
-  std::vector<double> df_sum(sensors.size(), 0), df_sum2(sensors.size(), 0);
-  std::atomic<std::uint64_t> rays{0};
+  const Tracer tracer{scene, materials, basis};
+  std::vector<SensorSums> sums(sensors.size());
   const auto t0 = Clock::now();
   tbb::parallel_for(std::size_t(0), sensors.size(), [&](std::size_t k) {
-    const SensorPoint& sp = grid.points[sensors[k]];
-    std::uint64_t local_rays = 0;
-    for (std::size_t i = 0; i < paths; ++i) {
-      engine::Rng rng(7, sensors[k], i, engine::RandomStream::Scattering);
-      Vec3 w{1, 1, 1};
-      engine::Ray ray{sp.position, cosine_direction(sp.normal, rng.uniform(), rng.uniform())};
-      double x = 0;
-      for (int depth = 0; depth < 1000; ++depth) {
-        ++local_rays;
-        const std::optional<engine::Hit> hit = scene.intersect(ray);
-        if (!hit) {
-          const int bin = basis.find_bin(ray.direction);
-          coeff[k * bins + std::size_t(bin)] = coeff[k * bins + std::size_t(bin)] + w * kPi;
-          x = kPi * rgb_to_photometric(mul(w, sky_rgb[std::size_t(bin)]));
-          break;
-        }
-        const auto s = materials[std::size_t(hit->material)].sample(ray.direction, hit->normal, rng.uniform(),
-                                                                    rng.uniform(), rng.uniform());
-        if (!s) break;
-        w = mul(w, s->weight);
-        if (depth >= 2) {  // roulette on the throughput: survive with q, divide by q
-          const double q = std::min(1.0, std::max(w.x, std::max(w.y, w.z)));
-          if (rng.uniform() >= q) break;
-          w = w * (1 / q);
-        }
-        ray = engine::Ray{scene.offset_ray_origin(hit->position, hit->normal, s->direction), s->direction};
-      }
-      df_sum[k] += x;
-      df_sum2[k] += x * x;
-    }
-    rays += local_rays;
+    sums[k] = trace_sensor(tracer, grid.points[sensors[k]], paths, 7, sensors[k], {sky_rgb});
   });
   const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  std::uint64_t rays = 0;
+  for (const SensorSums& s : sums) rays += s.rays;
+  std::vector<Vec3> coeff(sensors.size() * bins);
+  for (std::size_t k = 0; k < sensors.size(); ++k)
+    for (std::size_t p = 0; p < bins; ++p) coeff[k * bins + p] = sums[k].coeff[p];
 
   if (!write_path.empty()) {
     RadianceMatrix out(grid.points.size(), bins, 3);
@@ -155,8 +334,8 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < sensors.size(); ++k) {
       if (sensors[k] / columns != std::size_t(r)) continue;
       const std::size_t s = sensors[k];
-      const double mean = df_sum[k] / double(paths);
-      const double v = (df_sum2[k] / double(paths) - mean * mean) / double(paths);
+      const double mean = sums[k].sum[0] / double(paths);
+      const double v = (sums[k].sum2[0] / double(paths) - mean * mean) / double(paths);
       bw += mean / 100;  // lux -> DF %
       var += v / 1e4;
       o += matrix_df(ours, s, 0, bins);

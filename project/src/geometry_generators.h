@@ -62,10 +62,24 @@ void generate_mesh(const MeshSpec& mesh, MaterialLookup& materials, Diagnostics&
 /// 1e-3 m x max(1, size), simple enough to triangulate.
 void validate_surface(const Surface& surface, Diagnostics& diag);
 
-/// Sensor grid over a room's floor rectangle or a polygon (model coordinates). Returns
-/// false (after reporting) when the spec is invalid or yields no point.
+/// Sensor grid over a room's floor rectangle, a polygon, a room surface or a rectangle
+/// (model coordinates). Returns false (after reporting) when the spec is invalid or yields
+/// no point.
 bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
                    SensorGrid& out);
+
+/// The wall and rectangle grids of generate_grid (surface_grid.cpp).
+bool generate_surface_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
+                           SensorGrid& out);
+
+/// Number of lattice points over `span_m` at `spacing_m` (0 if the span is negative) and,
+/// in `first_m`, the first point's distance from the span's start, so that the lattice is
+/// centred in the span (sensor_grid.cpp).
+int centred_lattice(double span_m, double spacing_m, double& first_m);
+
+/// The room named `name`, or nullptr after reporting "<what>: unknown room" with a hint.
+const RoomSpec* find_grid_room(const std::string& name, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
+                               const SourceLocation& where, const std::string& what);
 
 /// Sensor points given inline and/or in a .pts file.
 bool generate_points(const PointsSpec& spec, Diagnostics& diag, SensorGrid& out);

@@ -602,24 +602,45 @@ class Loader {
     GridSpec g;
     g.location = node.location;
     ParamReader r(node, schema_section("grid"), m_reporter);
+    for (const auto& e : node.entries) g.key_locations.push_back({e.key, e.value.location});
     if (r.read_string("name", g.name)) m_sensor_names.add(g.name, r.location_of("name"), m_reporter);
-    const bool has_room = r.has("room"), has_polygon = r.has("polygon");
-    if (has_room && r.read_string("room", g.room)) m_room_uses.push_back({g.room, r.location_of("room")});
+    // What the grid covers: exactly one of these keys.
+    static const char* const outlines[] = {"room", "polygon", "wall", "rectangle"};
+    std::vector<std::string> given;
+    for (const char* key : outlines)
+      if (r.has(key)) given.push_back(key);
+    if (r.has("room") && r.read_string("room", g.room)) m_room_uses.push_back({g.room, r.location_of("room")});
     else r.take("room");
-    if (has_polygon) {
+    if (r.has("polygon")) {
       if (r.read_points("polygon", g.polygon) && g.polygon.size() < 3)
         m_reporter.error(r.location_of("polygon"), "'polygon' needs at least 3 points, got " +
                                                        std::to_string(g.polygon.size()));
     } else {
       r.take("polygon");
     }
-    if (has_room && has_polygon)
-      m_reporter.error(r.location_of("polygon"), "grid takes 'room' or 'polygon', not both");
-    else if (!has_room && !has_polygon)
-      m_reporter.error(node.location, "grid needs 'room' or 'polygon'");
+    if (const YamlNode* wall = r.take("wall"); wall && expect_map(*wall, "wall", m_reporter)) read_grid_wall(*wall, g);
+    if (const YamlNode* rect = r.take("rectangle"); rect && expect_map(*rect, "rectangle", m_reporter))
+      read_grid_rectangle(*rect, g);
+    if (given.size() > 1)
+      m_reporter.error(r.location_of(given[1]), "grid takes one of 'room', 'polygon', 'wall' and 'rectangle', got '" +
+                                                    given[0] + "' and '" + given[1] + "'");
+    else if (given.empty())
+      m_reporter.error(node.location, "grid needs one of 'room', 'polygon', 'wall' and 'rectangle'");
+    // Keys that only apply to one kind of grid: an error rather than silence (STYLE.md A.5).
+    const bool surface_grid = r.has("wall") || r.has("rectangle");
+    const std::string facing = r.has("wall") ? "a wall grid's sensors face into the room"
+                                             : "a rectangle grid's sensors face u x v";
+    for (const char* key : {"height", "normal"})
+      if (surface_grid && r.has(key))
+        m_reporter.error(r.location_of(key), "'" + std::string(key) + "' applies to room and polygon grids only (" +
+                                                 facing + "; 'offset' moves them off the surface)");
+    if (!surface_grid && r.has("offset"))
+      m_reporter.error(r.location_of("offset"), "'offset' applies to wall and rectangle grids only (room and polygon "
+                                                "grids are placed by 'height')");
     r.read_number("height", g.height_m);
     r.read_number("spacing", g.spacing_m);
     r.read_number("inset", g.inset_m);
+    r.read_number("offset", g.offset_m);
     Vec3 normal;
     if (r.read_vec3("normal", normal)) {
       if (length(normal) > 0) g.normal = normalize(normal);
@@ -627,6 +648,31 @@ class Loader {
     }
     r.finish();
     m_project.sensors.grids.push_back(std::move(g));
+  }
+
+  void read_grid_wall(const YamlNode& node, GridSpec& g) {
+    ParamReader r(node, schema_section("grid wall"), m_reporter);
+    for (const auto& e : node.entries) g.key_locations.push_back({"wall." + e.key, e.value.location});
+    GridSpec::WallReference wall;
+    const bool have_room = r.read_string("room", wall.room);
+    if (have_room) m_room_uses.push_back({wall.room, r.location_of("room")});
+    std::string surface;
+    const bool have_surface = r.read_choice("wall", surface);
+    r.finish();
+    if (!have_room || !have_surface) return;
+    for (RoomSurface s : {RoomSurface::South, RoomSurface::North, RoomSurface::East, RoomSurface::West,
+                          RoomSurface::Floor, RoomSurface::Ceiling})
+      if (surface == room_surface_name(s)) wall.surface = s;
+    g.wall = wall;
+  }
+
+  void read_grid_rectangle(const YamlNode& node, GridSpec& g) {
+    ParamReader r(node, schema_section("grid rectangle"), m_reporter);
+    for (const auto& e : node.entries) g.key_locations.push_back({"rectangle." + e.key, e.value.location});
+    GridSpec::Rectangle rect;
+    const bool ok = r.read_vec3("origin", rect.origin) & r.read_vec3("u", rect.u) & r.read_vec3("v", rect.v);
+    r.finish();
+    if (ok) g.rectangle = rect;  // zero or parallel edges: generate_grid reports them at 'u'/'v'
   }
 
   void read_points(const YamlNode& node) {
@@ -1004,6 +1050,24 @@ class Loader {
 };
 
 }  // namespace
+
+const char* room_surface_name(RoomSurface surface) {
+  switch (surface) {
+    case RoomSurface::South: return "south";
+    case RoomSurface::North: return "north";
+    case RoomSurface::East: return "east";
+    case RoomSurface::West: return "west";
+    case RoomSurface::Floor: return "floor";
+    case RoomSurface::Ceiling: return "ceiling";
+  }
+  return "north";
+}
+
+SourceLocation GridSpec::location_of(const std::string& key) const {
+  for (const auto& kv : key_locations)
+    if (kv.first == key) return kv.second;
+  return location;
+}
 
 const char* wall_name(Wall wall) {
   switch (wall) {

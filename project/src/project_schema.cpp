@@ -296,17 +296,30 @@ std::vector<SectionSchema> build_schema() {
       P("material", T::String, "material of every face").required(),
   }});
   s.push_back({"sensors", "where illuminance is computed", {
-      P("grids", T::SectionList, "regular grids on a horizontal plane").section("grid"),
+      P("grids", T::SectionList, "regular grids on a room floor, a polygon, a room wall or any rectangle").section("grid"),
       P("points", T::SectionList, "explicit sensor points").section("points"),
   }});
-  s.push_back({"grid", "a regular sensor grid over a room floor or a polygon (give one of them)", {
+  // Wall and rectangle grids: frames and order in project/src/sensor_grid.cpp.
+  s.push_back({"grid", "a regular sensor grid over a room floor, a polygon, a room wall or a rectangle (give exactly one of them)", {
       P("name", T::String, "unique sensor-set name (also the output folder)").required(),
       P("room", T::String, "room whose floor the grid covers"),
       P("polygon", T::PointList, "outline [x, y, z] (z ignored)").unit("m"),
-      P("height", T::Number, "sensor plane: above the room floor for room grids, absolute z for polygon grids").unit("m").def("0.8"),
+      P("wall", T::Section, "a wall, the floor or the ceiling of a room; sensors face into the room").section("grid wall"),
+      P("rectangle", T::Section, "the parallelogram origin + s u + t v (s, t in [0, 1]); sensors face u x v (right-hand rule)").section("grid rectangle"),
+      P("height", T::Number, "room and polygon grids: the sensor plane, above the room floor for room grids, absolute z for polygon grids").unit("m").def("0.8"),
       P("spacing", T::Number, "distance between sensors").unit("m").above(0).def("0.5"),
       P("inset", T::Number, "distance kept from the outline").unit("m").at_least(0).def("0.5"),
-      P("normal", T::Vec3, "direction the sensors face").def("[0, 0, 1]"),
+      P("offset", T::Number, "wall and rectangle grids: distance of the sensors from the surface along their normal (0: on it)").unit("m").at_least(0).def("0"),
+      P("normal", T::Vec3, "room and polygon grids: direction the sensors face").def("[0, 0, 1]"),
+  }});
+  s.push_back({"grid wall", "a room surface covered by a grid", {
+      P("room", T::String, "name of a room in geometry.rooms").required(),
+      P("wall", T::Choice, "which surface: a wall (by the side of the room it is on), the floor or the ceiling").choices({"south", "north", "east", "west", "floor", "ceiling"}).required(),
+  }});
+  s.push_back({"grid rectangle", "a parallelogram in model coordinates covered by a grid", {
+      P("origin", T::Vec3, "the corner s = t = 0").unit("m").required(),
+      P("u", T::Vec3, "first edge vector: the lattice's inner (column) direction").unit("m").required(),
+      P("v", T::Vec3, "second edge vector: the lattice's outer (row) direction; not parallel to u").unit("m").required(),
   }});
   s.push_back({"points", "explicit sensors (give `points` or `file`)", {
       P("name", T::String, "unique sensor-set name (also the output folder)").required(),

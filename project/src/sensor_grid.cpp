@@ -18,6 +18,8 @@
 // up or down; the outline is the floor rectangle (room grids) or the polygon at the grid's
 // height.
 //
+// Wall and rectangle grids: surface_grid.cpp (never receiver planes).
+//
 // Point sets: inline points followed by the points of a .pts file (pts_reader.h), normals
 // normalised.
 #include "dayphoton/core/diagnostics.h"
@@ -35,15 +37,6 @@ namespace {
 
 constexpr double CountEpsilon = 1e-9;
 
-/// Number of lattice points over `span_m` and the first point's offset (centred).
-int lattice(double span_m, double spacing_m, double& first_m) {
-  if (span_m < -CountEpsilon * std::max(1.0, spacing_m)) return 0;
-  span_m = std::max(0.0, span_m);
-  const int n = static_cast<int>(std::floor(span_m / spacing_m + CountEpsilon)) + 1;
-  first_m = 0.5 * (span_m - (n - 1) * spacing_m);
-  return n;
-}
-
 void set_plane(SensorGrid& out, const Vec3& normal, double height_m) {
   out.planar = std::fabs(normal.z) > 1 - 1e-12;
   out.plane_normal = out.planar ? Vec3{0, 0, normal.z > 0 ? 1.0 : -1.0} : normal;
@@ -52,29 +45,54 @@ void set_plane(SensorGrid& out, const Vec3& normal, double height_m) {
 
 }  // namespace
 
+int centred_lattice(double span_m, double spacing_m, double& first_m) {
+  if (span_m < -CountEpsilon * std::max(1.0, spacing_m)) return 0;
+  span_m = std::max(0.0, span_m);
+  const int n = static_cast<int>(std::floor(span_m / spacing_m + CountEpsilon)) + 1;
+  first_m = 0.5 * (span_m - (n - 1) * spacing_m);
+  return n;
+}
+
+const RoomSpec* find_grid_room(const std::string& name, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
+                               const SourceLocation& where, const std::string& what) {
+  std::vector<std::string> names;
+  for (const RoomSpec& r : rooms) {
+    if (r.name == name) return &r;
+    names.push_back(r.name);
+  }
+  std::string message = what + ": unknown room '" + name + "'";
+  const std::string hint = closest_match(name, names);
+  if (!hint.empty()) message += " (did you mean '" + hint + "'?)";
+  report(diag, where, message);
+  return nullptr;
+}
+
 bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
                    SensorGrid& out) {
   const std::string what = "grid '" + spec.name + "'";
+  const int outlines = int(!spec.room.empty()) + int(!spec.polygon.empty()) + int(spec.wall.has_value()) +
+                       int(spec.rectangle.has_value());
+  if (outlines != 1) {
+    report(diag, spec.location, what + ": give exactly one of room, polygon, wall and rectangle");
+    return false;
+  }
+  if (spec.wall || spec.rectangle) return generate_surface_grid(spec, rooms, diag, out);
   bool ok = true;
   if (!std::isfinite(spec.spacing_m) || spec.spacing_m <= 0) {
-    report(diag, spec.location, what + ": spacing must be positive");
+    report(diag, spec.location_of("spacing"), what + ": spacing must be positive");
     ok = false;
   }
   if (!std::isfinite(spec.inset_m) || spec.inset_m < 0) {
-    report(diag, spec.location, what + ": inset must be >= 0");
+    report(diag, spec.location_of("inset"), what + ": inset must be >= 0");
     ok = false;
   }
   if (!std::isfinite(spec.height_m)) {
-    report(diag, spec.location, what + ": height is not finite");
+    report(diag, spec.location_of("height"), what + ": height is not finite");
     ok = false;
   }
   const double normal_length = length(spec.normal);
   if (!is_finite(spec.normal) || !(normal_length > 1e-12)) {
-    report(diag, spec.location, what + ": sensor normal must be a non-zero vector");
-    ok = false;
-  }
-  if (spec.room.empty() == spec.polygon.empty()) {
-    report(diag, spec.location, what + ": give either a room or a polygon");
+    report(diag, spec.location_of("normal"), what + ": sensor normal must be a non-zero vector");
     ok = false;
   }
   if (!ok) return false;
@@ -86,24 +104,13 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Dia
   out.spacing_m = spec.spacing_m;
 
   if (!spec.room.empty()) {
-    const RoomSpec* room = nullptr;
-    std::vector<std::string> names;
-    for (const RoomSpec& r : rooms) {
-      names.push_back(r.name);
-      if (r.name == spec.room) room = &r;
-    }
-    if (!room) {
-      std::string message = what + ": unknown room '" + spec.room + "'";
-      const std::string hint = closest_match(spec.room, names);
-      if (!hint.empty()) message += " (did you mean '" + hint + "'?)";
-      report(diag, spec.location, message);
-      return false;
-    }
+    const RoomSpec* room = find_grid_room(spec.room, rooms, diag, spec.location_of("room"), what);
+    if (!room) return false;
     if (!is_finite(room->origin) || !is_finite(room->size_m)) return false;  // reported by the room
     const double z = room->origin.z + spec.height_m;
     double x_first = 0, y_first = 0;
-    const int nx = lattice(room->size_m.x - 2 * spec.inset_m, spec.spacing_m, x_first);
-    const int ny = lattice(room->size_m.y - 2 * spec.inset_m, spec.spacing_m, y_first);
+    const int nx = centred_lattice(room->size_m.x - 2 * spec.inset_m, spec.spacing_m, x_first);
+    const int ny = centred_lattice(room->size_m.y - 2 * spec.inset_m, spec.spacing_m, y_first);
     if (nx <= 0 || ny <= 0) {
       report(diag, spec.location,
              what + " has no points: the inset (" + format_number(spec.inset_m) + " m) leaves nothing of room '" +
@@ -151,8 +158,8 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Dia
     hi.y = std::max(hi.y, p.y);
   }
   double x_first = 0, y_first = 0;
-  const int nx = lattice(hi.x - lo.x - 2 * spec.inset_m, spec.spacing_m, x_first);
-  const int ny = lattice(hi.y - lo.y - 2 * spec.inset_m, spec.spacing_m, y_first);
+  const int nx = centred_lattice(hi.x - lo.x - 2 * spec.inset_m, spec.spacing_m, x_first);
+  const int ny = centred_lattice(hi.y - lo.y - 2 * spec.inset_m, spec.spacing_m, y_first);
   const double boundary_tolerance_m = 1e-9 * std::max(1.0, std::max(hi.x - lo.x, hi.y - lo.y));
   for (int iy = 0; iy < ny; ++iy)
     for (int ix = 0; ix < nx; ++ix) {

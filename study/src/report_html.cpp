@@ -19,6 +19,7 @@
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/polygon.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/annual_illuminance.h"
@@ -155,6 +156,29 @@ std::vector<std::pair<std::string, std::string>> weather_station(const std::stri
           {"elevation (m)", f[9]}};
 }
 
+/// Ports farther than this from a wall or rectangle grid's plane are not drawn on its
+/// elevation: the windows in the wall a grid covers are at its offset, which is small.
+constexpr double ElevationWindowDistance_m = 0.5;
+
+/// The windows drawn on a grid's picture, which is drawn in the plane of its sensors: all
+/// of them for a plan (a horizontal grid, or a point set without an outline); for an
+/// elevation (a wall or rectangle grid) only those parallel to it and within
+/// ElevationWindowDistance_m, since any other port would be projected onto the elevation as
+/// if it were in that wall.
+std::vector<std::vector<Vec3>> windows_on_plan(const SensorGrid& grid, const std::vector<std::vector<Vec3>>& windows) {
+  const Vec3 n = grid.plane_normal;
+  const bool plan = grid.planar || grid.outline.size() < 3 || std::fabs(n.z) > 1 - 1e-9;
+  if (plan) return windows;
+  std::vector<std::vector<Vec3>> kept;
+  for (const auto& w : windows) {
+    if (w.size() < 3 || std::fabs(dot(polygon_normal(w), n)) < 1 - 1e-6) continue;
+    bool near = true;
+    for (const Vec3& p : w) near = near && std::fabs(dot(p - grid.outline[0], n)) <= ElevationWindowDistance_m;
+    if (near) kept.push_back(w);
+  }
+  return kept;
+}
+
 /// Geometry of every grid of the project named in summary.json (by grid name), if it loads.
 std::map<std::string, PlanGeometry> project_geometry(const std::string& project_path, std::string& note) {
   std::map<std::string, PlanGeometry> out;
@@ -169,7 +193,7 @@ std::map<std::string, PlanGeometry> project_geometry(const std::string& project_
     std::vector<std::vector<Vec3>> windows;
     for (const Surface& s : scene.surfaces)
       if (s.port) windows.push_back(s.vertices);
-    for (const SensorGrid& g : scene.grids) out[g.name] = PlanGeometry{g.outline, windows, {}};
+    for (const SensorGrid& g : scene.grids) out[g.name] = PlanGeometry{g.outline, windows_on_plan(g, windows), {}};
     note = "room outline and windows from " + project_path + " as it is now";
   } catch (const std::exception&) {
     note = "the project file " + project_path +

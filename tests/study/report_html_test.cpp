@@ -205,6 +205,40 @@ TEST(ReportHtml, WritesImagesForEveryGridAndVariant) {
   EXPECT_TRUE(fs::exists(dir + "/report.html"));
 }
 
+// A wall grid's plan is an elevation in the wall's plane: the south window of the office
+// must not be drawn on the back (north) wall's picture, while the work plane's plan shows it.
+TEST(ReportHtml, ElevationsShowOnlyTheWindowsOfTheirWall) {
+  const std::string dir = temp_dir("elevation");
+  const std::string project = std::string(DAYPHOTON_SOURCE_DIR) + "/projects/wall_sensors/project.yaml";
+  std::vector<SensorPoint> wall, plane;
+  for (int iv = 0; iv < 5; ++iv)
+    for (int iu = 0; iu < 11; ++iu) wall.push_back({{0.5 + 0.5 * iu, 8, 0.5 + 0.5 * iv}, {0, -1, 0}});
+  for (int iy = 0; iy < 15; ++iy)
+    for (int ix = 0; ix < 11; ++ix) plane.push_back({{0.5 + 0.5 * ix, 0.5 + 0.5 * iy, 0.8}, {0, 0, 1}});
+  for (const auto& [name, sensors] : {std::pair{std::string("back_wall"), wall}, std::pair{std::string("workplane"), plane}}) {
+    fs::create_directories(dir + "/" + name);
+    write_sensors_csv(sensors, dir + "/" + name + "/sensors.csv");
+    write_daylight_factor_csv(sensors, std::vector<double>(sensors.size(), 1.0), dir + "/" + name + "/daylight_factor.csv");
+  }
+  auto grid = [](const std::string& name, std::size_t n) {
+    return R"({"name": ")" + name + R"(", "sensors": )" + std::to_string(n) +
+           R"(, "daylight_factor_percent": {"mean": 1, "median": 1, "min": 1, "max": 1, "uniformity": 1,
+              "area_at_or_above": [{"threshold_percent": 2.0, "area_percent": 0}]}})";
+  };
+  std::ofstream(dir + "/summary.json") << R"({"project": ")" << project << R"(", "output": ")" << dir << R"(",
+    "site": {"name": "office", "latitude_deg": 37.72, "longitude_deg": -122.22, "time_zone_h": -8.0},
+    "simulation": {"basis": "tregenza", "photons_per_bin": 1000, "seed": 1},
+    "grids": [)" << grid("back_wall", wall.size()) << ", " << grid("workplane", plane.size()) << R"(],
+    "variants": []})";
+  const std::string html = report_html(dir);
+  const std::size_t wall_at = html.find("id=\"grid-back_wall\""), plane_at = html.find("id=\"grid-workplane\"");
+  ASSERT_NE(wall_at, std::string::npos);
+  ASSERT_NE(plane_at, std::string::npos);
+  ASSERT_LT(wall_at, plane_at);
+  EXPECT_EQ(count(html.substr(wall_at, plane_at - wall_at), "class=\"window\""), 0u);
+  EXPECT_GE(count(html.substr(plane_at), "class=\"window\""), 1u);
+}
+
 TEST(ReportHtml, AFolderWithoutSummaryIsAnInputError) {
   const std::string dir = temp_dir("empty");
   try {

@@ -69,12 +69,20 @@ struct SensorPoint {
 struct SensorGrid {
   std::string name;
   std::vector<SensorPoint> points;
-  bool planar = false;       ///< all points on one plane with one normal
-  Vec3 plane_normal{0, 0, 1};
-  double plane_height_m = 0;     ///< for planar grids: signed distance of the plane along plane_normal
-  std::vector<Vec3> outline;     ///< for planar grids: the polygon the grid covers
+  /// A receiver plane: a horizontal room or polygon grid (all points on one plane, facing
+  /// straight up or down). Wall and rectangle grids are not, even when horizontal.
+  bool planar = false;
+  Vec3 plane_normal{0, 0, 1};    ///< generated grids: the sensors' normal
+  /// Generated grids: signed distance of the sensors' plane along plane_normal (0 for
+  /// non-planar room/polygon grids).
+  double plane_height_m = 0;
+  /// Generated grids: the polygon the grid covers, in the sensors' plane (room floor, polygon,
+  /// or the 4 corners of a wall or rectangle moved by the grid's offset).
+  std::vector<Vec3> outline;
   double spacing_m = 0;          ///< for generated grids
-  int columns = 0, rows = 0;     ///< for rectangular generated grids (row-major, rows outer)
+  /// For generated grids that are a full lattice (row-major, rows outer): room grids and wall
+  /// and rectangle grids with no point left out; 0 otherwise.
+  int columns = 0, rows = 0;
   SourceLocation location;
 };
 

@@ -266,15 +266,45 @@ struct Geometry {
   std::vector<SystemSpec> systems;  ///< daylight systems, in file order
 };
 
+/// A surface of a room generator that a sensor grid can cover: one of its four walls
+/// (named as Wall), its floor or its ceiling.
+enum class RoomSurface { South, North, East, West, Floor, Ceiling };
+const char* room_surface_name(RoomSurface surface);
+
+/// A regular sensor grid (docs/project-format.md, `sensors.grids`). Exactly one of `room`,
+/// `polygon`, `wall` and `rectangle` says what it covers:
+///   - room: the room's floor rectangle, sensors at height_m above the floor facing `normal`;
+///   - polygon: the outline seen from above, sensors at z = height_m facing `normal`;
+///   - wall: the rectangle of a room's wall, floor or ceiling, sensors facing into the room
+///     offset_m in front of the surface (the frames are listed in sensor_grid.cpp);
+///   - rectangle: the parallelogram origin + s u + t v (s, t in [0, 1]), sensors facing
+///     normalize(u x v) (right-hand rule), offset_m along that normal.
 struct GridSpec {
   std::string name;
-  std::string room;                 ///< room name, or empty if `polygon` is given
+  std::string room;                 ///< room name, or empty if another outline is given
   std::vector<Vec3> polygon;        ///< outline (z ignored, height from height_m)
-  double height_m = 0.8;
+  struct WallReference {
+    std::string room;
+    RoomSurface surface = RoomSurface::North;
+  };
+  std::optional<WallReference> wall;
+  struct Rectangle {
+    Vec3 origin{0, 0, 0};  ///< metres, model coordinates
+    Vec3 u{0, 0, 0}, v{0, 0, 0};  ///< edge vectors, metres; the lattice runs along u (inner) and v
+  };
+  std::optional<Rectangle> rectangle;
+  double height_m = 0.8;            ///< room and polygon grids
   double spacing_m = 0.5;
   double inset_m = 0.5;
-  Vec3 normal{0, 0, 1};
+  double offset_m = 0;              ///< wall and rectangle grids: in front of the surface
+  Vec3 normal{0, 0, 1};             ///< room and polygon grids
   SourceLocation location;
+  /// Where each key was written ("wall.room", "rectangle.u", ...), for located errors found
+  /// when the grid is generated; see location_of().
+  std::vector<std::pair<std::string, SourceLocation>> key_locations;
+
+  /// Location of `key` as written, else of the grid.
+  SourceLocation location_of(const std::string& key) const;
 };
 
 struct PointsSpec {

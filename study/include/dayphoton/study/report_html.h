@@ -23,7 +23,8 @@
 //   sky        fisheyes of the annual mean sky and of one hour, if sky_mean.exr / sky_hour.exr
 //              exist (write_sky_images)
 // The room outline and the windows come from the project file named in summary.json when it
-// still loads (the grid's outline; ports drawn in the plan's frame); otherwise the plan shows
+// still loads (the grid's outline; ports drawn in the plan's frame: all of them on the plan of a
+// horizontal grid, only those in its wall on the elevation of a wall or rectangle grid); otherwise the plan shows
 // the sensors' extent and says so. Colour scales: colour_scale.h. Print: @media print rules
 // keep each plot on one page, print colours exactly and hide the navigation.
 #pragma once
