@@ -175,12 +175,32 @@ double port_crossing(const Port& port, const Vec3& origin, const Vec3& w) {
   return 0.0;
 }
 
+/// The port pieces on one side of the sensor's height, sampled together: a piece is chosen
+/// by area (the first stratified number, rescaled into it, which keeps its strata aligned),
+/// so the points are uniform over the side's total area whatever the number of ports.
+struct PortSide {
+  std::vector<const PortPiece*> pieces;
+  std::vector<double> cumulative_m2;
+  double area_m2 = 0;
+
+  /// A point uniform by area over the side, and the piece it lies on.
+  const PortPiece& choose(double& u1) const {
+    const double target = u1 * area_m2;
+    const std::size_t i = std::min<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(cumulative_m2.begin(), cumulative_m2.end(), target) - cumulative_m2.begin()),
+        pieces.size() - 1);
+    const double before = i == 0 ? 0.0 : cumulative_m2[i - 1];
+    u1 = std::clamp((target - before) / (cumulative_m2[i] - before), 0.0, OneMinusEpsilon);
+    return *pieces[i];
+  }
+};
+
 /// Directions per unit solid angle that port sampling produces along `w` from `origin`:
-/// sum over the ports j the ray crosses (at t_j > 0) of n_per_piece t_j^2 / (A_piece
-/// |w . n_j|), the piece being the side of the sensor's height the crossing lies on.
-/// Port `skip` (or -1) is left out.
-double port_density(const PortSet& ports, const std::vector<PortPiece>& pieces, const Vec3& origin,
-                    const Vec3& w, double n_per_piece, int skip) {
+/// sum over the ports j the ray crosses (at t_j > 0) of n_side t_j^2 / (A_side |w . n_j|),
+/// the side being that of the sensor's height the crossing lies on. Port `skip` (or -1) is
+/// left out.
+double port_density(const PortSet& ports, const PortSide sides[2], const Vec3& origin, const Vec3& w,
+                    double n_per_side, int skip) {
   double density = 0;
   for (std::size_t j = 0; j < ports.size(); ++j) {
     if (static_cast<int>(j) == skip) continue;
@@ -188,12 +208,8 @@ double port_density(const PortSet& ports, const std::vector<PortPiece>& pieces, 
     if (!(cos_port > 0)) continue;
     const double t = port_crossing(ports[j], origin, w);
     if (!(t > 0)) continue;
-    const bool below = origin.z + t * w.z < origin.z;
-    for (const PortPiece& piece : pieces)
-      if (piece.port == static_cast<int>(j) && piece.below == below) {
-        density += n_per_piece * t * t / (piece.area_m2 * cos_port);
-        break;
-      }
+    const PortSide& side = sides[w.z < 0 ? 0 : 1];
+    if (side.area_m2 > 0) density += n_per_side * t * t / (side.area_m2 * cos_port);
   }
   return density;
 }
@@ -207,6 +223,13 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
                           const std::function<Vec3(const Vec3&)>* radiance, Vec3* row) {
   const PortSet& ports = scene.ports();
   const std::vector<PortPiece> pieces = port_pieces(ports, origin.z);
+  PortSide sides[2];  // [0] below the sensor's height, [1] above
+  for (const PortPiece& piece : pieces) {
+    PortSide& side = sides[piece.below ? 0 : 1];
+    side.pieces.push_back(&piece);
+    side.area_m2 += piece.area_m2;
+    side.cumulative_m2.push_back(side.area_m2);
+  }
   const double n_a = static_cast<double>(k) * k, n_b = static_cast<double>(kb) * kb;
   auto value = [&](const Vec3& t, const Vec3& w, double cos_theta) {
     return (radiance ? mul(t, (*radiance)(w)) : t) * cos_theta;
@@ -227,21 +250,23 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
         const Vec3 t = sky_transmittance(scene, materials, origin, w);
         if (t.x == 0.0 && t.y == 0.0 && t.z == 0.0) continue;
         sum += value(t, w, cos_theta) *
-               (1.0 / (density_a + (with_ports ? port_density(ports, pieces, origin, w, n_b, -1) : 0.0)));
+               (1.0 / (density_a + (with_ports ? port_density(ports, sides, origin, w, n_b, -1) : 0.0)));
       }
     }
     row[p] += sum;
   }
-  // Strategy B: points on every port piece, each direction credited to the source containing it.
-  for (std::size_t q = 0; q < pieces.size(); ++q) {
-    const PortPiece& piece = pieces[q];
-    const Port& port = ports[static_cast<std::size_t>(piece.port)];
-    Rng rng(seed, 2 * static_cast<std::uint64_t>(piece.port) + (piece.below ? 1 : 0), sensor_index,
-            RandomStream::DirectPort);
+  // Strategy B: points uniform over each side's port pieces, each direction credited to the
+  // source containing it.
+  for (int side_index = 0; side_index < 2; ++side_index) {
+    const PortSide& side = sides[side_index];
+    if (side.pieces.empty()) continue;
+    Rng rng(seed, static_cast<std::uint64_t>(side_index), sensor_index, RandomStream::DirectPort);
     for (int i = 0; i < kb; ++i) {
       for (int j = 0; j < kb; ++j) {
-        const double u1 = std::min((i + rng.uniform()) / kb, OneMinusEpsilon);
+        double u1 = std::min((i + rng.uniform()) / kb, OneMinusEpsilon);
         const double u2 = std::min((j + rng.uniform()) / kb, OneMinusEpsilon);
+        const PortPiece& piece = side.choose(u1);
+        const Port& port = ports[static_cast<std::size_t>(piece.port)];
         const Vec3 to = piece.point(u1, u2) - origin;
         const double d2 = dot(to, to);
         if (!(d2 > 0.0)) continue;
@@ -253,10 +278,10 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
         if (p < 0 || sources[static_cast<std::size_t>(p)].solid_angle_sr < PortSampledMinimumSolidAngle_sr) continue;
         const Vec3 t = sky_transmittance(scene, materials, origin, w);
         if (t.x == 0.0 && t.y == 0.0 && t.z == 0.0) continue;
-        // This piece's own density analytically (its point lies on it by construction).
+        // This port's own density analytically (the point lies on it by construction).
         const double density = n_a / sources[static_cast<std::size_t>(p)].solid_angle_sr +
-                                n_b * d2 / (piece.area_m2 * cos_port) +
-                                port_density(ports, pieces, origin, w, n_b, piece.port);
+                               n_b * d2 / (side.area_m2 * cos_port) +
+                               port_density(ports, sides, origin, w, n_b, piece.port);
         row[static_cast<std::size_t>(p)] += value(t, w, cos_theta) * (1.0 / density);
       }
     }

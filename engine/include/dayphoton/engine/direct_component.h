@@ -32,30 +32,33 @@
 // (2 pi sr) at 64 samples has strata of ~0.1 sr, and ceiling points of a black room came out
 // from -100 % to +150 % of its closed-form component; a window seen from the back of a room
 // (0.09 sr at 8 m) falls into two or three sky patches and gets ~35 of their samples (+-10 %).
-// So every sensor also samples the ports: for every port j, kb x kb stratified points y
-// uniform by area (PortSet::sample, kb = PortStrataFactor x k), whose direction w = (y - x)
-// / |y - x| has the density n_b |y - x|^2 / (A_j |w . n_j|) per steradian (the change of
+// So every sensor also samples the ports: kb x kb stratified points y uniform by area over
+// the ports (kb = PortStrataFactor x k, for each side of the sensor's height, below), whose
+// direction w = (y - x) / |y - x| has the density n_b |y - x|^2 / (A |w . n_j|) per steradian
+// (A the side's total port area; the change of
 // variables d omega = |w . n_j| dA / d^2: Pharr, Jakob & Humphreys, "Physically Based
 // Rendering", 4th ed., section 4.2.3), and is credited to the source containing it
 // (SourceSet::find). The two strategies are combined by the balance heuristic (Veach &
 // Guibas, "Optimally Combining Sampling Techniques for Monte Carlo Rendering", SIGGRAPH 1995;
 // Veach's thesis, section 9.2): every sample of either strategy contributes
 //
-//   T(w) max(0, w . n_s) / (n_a / Omega_p + sum_j n_b t_j^2 / (A_j |w . n_j|)),
+//   T(w) max(0, w . n_s) / (n_a / Omega_p + sum_j n_b t_j^2 / (A |w . n_j|)),
 //
 // the sum running over every port the ray from x along w crosses (t_j its distance), which is
 // unbiased for every source (each strategy's density is positive wherever the other's is
 // zero only where T = 0: a direction that crosses no port carries no light). The port points
 // dominate where the opening is small against the source (the ground, a distant window), the
-// source strata where it is large (a sky patch seen through a wide window nearby). Each port
-// is sampled in two pieces, the parts below and above the sensor's height, so the horizon
+// source strata where it is large (a sky patch seen through a wide window nearby). The ports
+// are sampled in two sides, their parts below and above the sensor's height (each side's
+// points spread over its pieces by area, so the cost does not grow with the number of
+// ports: a light pipe's dome has dozens of facets), so the horizon
 // (the ground bin's boundary) never cuts a stratum (a horizontal cut through a window's
 // strata gave +-3 % at 1024 points); a parallelogram with horizontal edges (a vertical or
 // sloped window) keeps edge-aligned strata (PortSet::sample_aligned), any other polygon is
 // clipped into a fan of triangles. Sources below PortSampledMinimumSolidAngle_sr take no
 // port samples (for them the two densities are not mixed). With
 // port_sampling off, or in a scene without ports, the estimator is the plain one above.
-// Rays per sensor: k^2 x sources + (PortStrataFactor k)^2 x ports; 64 x samples per port.
+// Rays per sensor: k^2 x sources + (PortStrataFactor k)^2 per side with ports (64 x samples).
 
 // Shadow rays start at the sensor moved ray_epsilon_m() along its normal (only directions
 // with dot(w, n_s) > 0 are traced), so a sensor lying on a surface does not see that
@@ -77,8 +80,8 @@ namespace dayphoton::engine {
 
 /// Surfaces a shadow ray may pass before it counts as blocked (see the header comment).
 constexpr int MaxShadowRayCrossings = 1000;
-/// Port points per axis of each port piece, per stratum of a source (header comment): each
-/// side of a port (below and above the sensor's height) gets 64 x samples_per_source points.
+/// Port points per axis of each side, per stratum of a source (header comment): the ports'
+/// parts below and above the sensor's height each get 64 x samples_per_source points.
 constexpr int PortStrataFactor = 8;
 /// Sources smaller than this (sun discs: 6.8e-5 sr; Reinhart patches above MF 6) are sampled
 /// over their own solid angle only: port points would hit them a few times per sensor, each
