@@ -17,7 +17,7 @@ using engine::Photon;
 using engine::SourceTally;
 
 constexpr std::size_t PhotonBytes = 32;
-constexpr std::size_t TallyBytes = 6 * 8 + 4 * 8 + 8;
+constexpr std::size_t TallyBytes = 6 * 8 + 5 * 8 + 8 + 8;
 constexpr std::size_t Vec3Bytes = 24;
 constexpr std::size_t PreambleBytes = 8;  // tag + version
 
@@ -196,7 +196,9 @@ std::string encode_photons(const engine::TracedPhotons& photons) {
     w.f64(t.flux_per_attempt);
     w.f64(t.storage_probability_global);
     w.f64(t.storage_probability_caustic);
+    w.f64(t.storage_probability_direct);
     w.u64(t.capped ? 1 : 0);
+    w.u64(t.nothing_stores ? 1 : 0);
   }
   return w.finish();
 }
@@ -221,9 +223,13 @@ engine::TracedPhotons decode_photons(const std::string& bytes) {
     t.flux_per_attempt = r.f64("flux_per_attempt");
     t.storage_probability_global = r.f64("storage_probability_global");
     t.storage_probability_caustic = r.f64("storage_probability_caustic");
+    t.storage_probability_direct = r.f64("storage_probability_direct");
     const std::uint64_t capped = r.u64("capped");
     if (capped > 1) r.fail("capped flag " + std::to_string(capped) + " is not 0 or 1");
     t.capped = capped == 1;
+    const std::uint64_t nothing = r.u64("nothing_stores");
+    if (nothing > 1) r.fail("nothing_stores flag " + std::to_string(nothing) + " is not 0 or 1");
+    t.nothing_stores = nothing == 1;
   }
   r.done();
   return out;

@@ -164,6 +164,26 @@ std::string capped_note(const engine::TracedPhotons& photons, const engine::Trac
          percent(most) + " % of their target; their flux stays unbiased, with more relative noise";
 }
 
+/// Sources whose photon pass stored nothing (engine::trace_source_photons): none traced when
+/// nothing in the scene can store a photon, or stopped after the pre-pass's entries showed
+/// that none is stored. "" when every source stored photons or was not lit.
+std::string nothing_stored_note(const engine::TracedPhotons& photons, const std::string& what) {
+  std::size_t skipped = 0, stopped = 0;
+  for (const engine::SourceTally& t : photons.tallies) {
+    if (t.nothing_stores) ++skipped;
+    else if (t.entered > 0 && t.stored_global + t.stored_caustic + t.stored_direct == 0) ++stopped;
+  }
+  if (skipped > 0)
+    return "not traced: nothing in the scene can store a photon (no surface has a diffuse component, and no sensor "
+           "plane can receive scattered light); the photon part of every " + what.substr(0, what.size() - 1) +
+           " is zero and the results are its direct component alone";
+  if (stopped > 0)
+    return std::to_string(stopped) + " of " + std::to_string(photons.tallies.size()) + " " + what +
+           " stored no photon: their light is absorbed before it reaches anything that stores photons (the pass "
+           "stopped after 65536 entering photons)";
+  return "";
+}
+
 /// What every case (the base project and each variant) of one run shares.
 struct RunContext {
   const RunSettings& settings;
@@ -403,8 +423,8 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
     log.line(prefix + "sun photons: traced " + std::to_string(n_traced) + " of " + std::to_string(n_lit) +
              " sun bins (" + std::to_string(n_lit - n_traced) + " cached)");
     photons = engine::merge_traced_photons(std::move(per_bin));
-    const std::string note = capped_note(photons, tracing, "sun bins");
-    if (!note.empty()) {
+    for (const std::string& note : {capped_note(photons, tracing, "sun bins"), nothing_stored_note(photons, "sun bins")}) {
+      if (note.empty()) continue;
       log.line(prefix + "sun photons: " + note);
       report.notes.push_back(prefix + "sun photons: " + note);
     }
@@ -576,8 +596,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
              std::to_string(sources.size()) + " sources (" +
              std::to_string(sources.size() - n_traced) + " cached)");
     photons = engine::merge_traced_photons(std::move(per_source));
-    const std::string note = capped_note(photons, tracing, "sources");
-    if (!note.empty()) {
+    for (const std::string& note : {capped_note(photons, tracing, "sources"), nothing_stored_note(photons, "sources")}) {
+      if (note.empty()) continue;
       log.line(prefix + "photons: " + note);
       report.notes.push_back(prefix + "photons: " + note);
     }

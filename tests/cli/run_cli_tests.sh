@@ -32,6 +32,8 @@ check_case() {
 check_case version 0 --version
 check_case help 0 --help
 check_case check_office 0 check projects/office/project.yaml
+check_case check_black_room 0 check tests/cli/cases/black_room.yaml
+check_case check_black_room_surface 1 check tests/cli/cases/black_room_surface.yaml
 check_case check_typos 1 check tests/cli/cases/typos.yaml
 check_case check_window_too_big 1 check tests/cli/cases/window_too_big.yaml
 check_case check_yaml_syntax 1 check tests/cli/cases/syntax.yaml

@@ -246,7 +246,10 @@ TEST(ArtifactCodec, InvalidPathClassThrows) {
 TEST(ArtifactCodec, InvalidCappedFlagThrows) {
   std::string b = encode_photons(sample_photons(0, {}, 1));
   ASSERT_NO_THROW(decode_photons(b));
-  b[b.size() - 8] = 2;  // the capped flag, the last field of the last tally
+  b[b.size() - 16] = 2;  // the capped flag, the second-last field of the last tally
+  EXPECT_THROW(decode_photons(b), std::runtime_error);
+  b[b.size() - 16] = 0;
+  b[b.size() - 8] = 2;  // the nothing_stores flag, the last field
   EXPECT_THROW(decode_photons(b), std::runtime_error);
 }
 

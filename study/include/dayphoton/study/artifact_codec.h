@@ -11,7 +11,7 @@
 // absent and recomputes it.
 //
 //   photons:      u64 n, n photons; u64 planes, per plane u64 n + n photons; u64 sources,
-//                 per source the SourceTally (6 x u64, 4 x f64, u64 capped 0/1). A photon is 32 bytes:
+//                 per source the SourceTally (6 x u64, 5 x f64, u64 capped 0/1, u64 nothing_stores 0/1). A photon is 32 bytes:
 //                 3 x f32 position, 3 x f32 flux, u32 source, 3 x i8 normal, u8 path class
 //                 (checked to be a PathClass).
 //   coefficients: u64 sensors, u64 sources, then direct, caustic, global, each
@@ -31,7 +31,7 @@ namespace dayphoton::study {
 
 /// Layout versions: bump one whenever its layout changes, so older artefacts are refused
 /// (and recomputed) instead of misread.
-inline constexpr std::uint32_t PhotonLayoutVersion = 2;  // 2: SourceTally::capped
+inline constexpr std::uint32_t PhotonLayoutVersion = 3;  // 2: SourceTally::capped; 3: storage_probability_direct, nothing_stores
 inline constexpr std::uint32_t CoefficientLayoutVersion = 1;
 inline constexpr std::uint32_t MatrixLayoutVersion = 1;
 
