@@ -6,8 +6,17 @@
 // located diagnostic instead of an exception.
 //
 // SourceText keeps the raw lines so each diagnostic can print the offending line and a caret.
+//
+// Limits, so that a small hostile file cannot take the loader's time or memory:
+// - the text must be UTF-8 without control characters other than tab, line feed and carriage
+//   return (YAML 1.2 section 5.1, "c-printable"; we accept UTF-8 only);
+// - one document per file: a second one (after `---`) is an error, not silently ignored;
+// - at most MaxYamlNodes nodes after aliases are expanded (an alias is copied into the tree,
+//   so nested aliases grow it exponentially: the "billion laughs" document);
+// - at most MaxYamlDepth levels of nesting.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -16,12 +25,21 @@
 
 namespace dayphoton::project {
 
+/// Policy: the largest tree a project file may expand to, counting every node (map, list,
+/// scalar) after aliases are copied. A project written out in full (a 25 000-vertex polygon,
+/// 10 000 inline sensor points) stays well below it; the tree costs about 200 bytes a node.
+constexpr std::size_t MaxYamlNodes = 1'000'000;
+/// Policy: deeper nesting than this is never a project file (and would exhaust the stack).
+constexpr int MaxYamlDepth = 64;
+
 /// The text of an input file split into lines, for carets under errors.
 class SourceText {
  public:
   SourceText(const std::string& file, const std::string& text);
   const std::string& file() const { return m_file; }
-  /// Line `line` (1-based) without its newline; "" if out of range.
+  /// Line `line` (1-based) without its newline, as printed under a diagnostic: control
+  /// characters and bytes that are not UTF-8 become '?' (one per byte, so carets line up),
+  /// so an error never sends raw escape sequences to the terminal. "" if out of range.
   std::string line(int line) const;
 
  private:
@@ -72,8 +90,10 @@ struct YamlEntry {
   YamlNode value;
 };
 
-/// Parse `text` (the content of reporter.source()) into a located tree. On a YAML syntax error, reports it (located) and returns
-/// a Null node. Duplicate map keys are reported; the first occurrence is kept.
+/// Parse `text` (the content of reporter.source()) into a located tree. On a YAML syntax
+/// error, text that is not UTF-8, a second document or a tree over the limits above, reports it
+/// (located) and returns a Null node. Duplicate map keys are reported; the first occurrence is
+/// kept.
 YamlNode parse_yaml_document(const std::string& text, Reporter& reporter);
 
 }  // namespace dayphoton::project

@@ -267,6 +267,22 @@ TEST(ProjectLoader, GarbageNeverCrashes) {
   }
 }
 
+TEST(ProjectLoader, SourceLinesUnderErrorsNeverCarryControlBytes) {
+  // A name with an escape sequence written raw is reported at its byte; the line printed
+  // under the message shows '?' for it, so no escape sequence reaches the terminal.
+  try {
+    load_project_from_string(Head + "materials: {}\ngeometry: {}\nsimulation: {seed: \x1B[2J}\n", "p.yaml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "p.yaml:5:20: error: character U+001B is not allowed in YAML (a control character; YAML "
+              "1.2, section 5.1)\n"
+              "    simulation: {seed: ?[2J}\n"
+              "                       ^\n"
+              "1 error generated.\n");
+  }
+}
+
 TEST(SiteGeodesy, DmsStringsAndDecimalDegrees) {
   EXPECT_NEAR(parse_latlon_deg("41d58'48\"N", AngleKind::Latitude), 41.98, 1e-12);
   EXPECT_NEAR(parse_latlon_deg("87d54'W", AngleKind::Longitude), -87.9, 1e-12);
