@@ -47,6 +47,45 @@ rm -rf "$scratch/results"
 check_case run_invalid_project 1 run tests/cli/cases/typos.yaml --output "$scratch/results" --quiet
 if [ -e "$scratch/results" ]; then echo "FAIL run wrote $scratch/results"; failed=$((failed + 1)); fi
 
+# Every bad project file of tests/data/bad/ (README.md there): check exits 1 and prints the
+# first expected message located as file:line:col (the full lists: tests/project/bad_inputs_test.cpp).
+bad_failed=$failed
+for f in tests/data/bad/*.yaml; do
+  expect=$(grep -a -m1 '^# expect: ' "$f" | sed 's/^# expect: //')
+  where=${expect%%: *}
+  wanted="$f:$where: error: ${expect#*: }"
+  "$bin" check "$f" >"$scratch/bad.out" 2>&1
+  code=$?
+  if [ -n "$expect" ] && [ "$code" -eq 1 ] && grep -qxF -- "$wanted" "$scratch/bad.out"; then
+    passed=$((passed + 1))
+  else
+    echo "FAIL check $f: exit $code, expected 1 and the line: $wanted"; cat -v "$scratch/bad.out"; failed=$((failed + 1))
+  fi
+done
+if [ "$failed" -eq "$bad_failed" ]; then echo "ok   check on each of tests/data/bad/*.yaml"; fi
+
+# run refuses a grid name that leaves the output folder: exit 1, nothing written anywhere.
+mkdir -p "$scratch/escape/project"
+cp tests/data/bad/grid_name_parent.yaml "$scratch/escape/project/project.yaml"
+"$bin" run "$scratch/escape/project/project.yaml" --quiet >"$scratch/escape.out" 2>&1
+code=$?
+if [ "$code" -eq 1 ] && [ "$(find "$scratch/escape" -mindepth 1 | wc -l)" -eq 2 ]; then
+  echo "ok   run_grid_name_escape"; passed=$((passed + 1))
+else
+  echo "FAIL run_grid_name_escape: exit $code"; find "$scratch/escape"; failed=$((failed + 1))
+fi
+
+# Several projects with --output write to --output/<folder name>: two folders of one name
+# (here: the same folder twice) would share it; exit 2 before anything runs.
+"$bin" run projects/office/project.yaml ./projects/office/project.yaml --output "$scratch/two" --quiet \
+  >"$scratch/two.out" 2>&1
+code=$?
+if [ "$code" -eq 2 ] && grep -q "would both write to" "$scratch/two.out" && [ ! -e "$scratch/two" ]; then
+  echo "ok   run_two_projects_one_folder"; passed=$((passed + 1))
+else
+  echo "FAIL run_two_projects_one_folder: exit $code"; cat "$scratch/two.out"; failed=$((failed + 1))
+fi
+
 # annual: recomputes tables and metrics from exported coefficients (a synthetic 2-sensor grid).
 EPW=projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw
 check_case annual_missing_folder 1 annual --coefficients tests/cli/cases/does_not_exist --weather $EPW

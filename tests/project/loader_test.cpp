@@ -267,6 +267,28 @@ TEST(ProjectLoader, GarbageNeverCrashes) {
   }
 }
 
+TEST(ProjectLoader, OutputFolderOutsideTheProjectNeedsTheOptInOrAnOverride) {
+  // tests/data/bad/outputs_folder_*.yaml show the error; here the two ways to allow it.
+  const std::string rest = "materials: {}\ngeometry: {}\n";
+  const std::string outside =
+      "site: {latitude: 37.72, longitude: -122.22, time_zone: -8}\n"
+      "outputs: {annual_illuminance: false, metrics: false, folder: ../elsewhere";
+  EXPECT_EQ(errors_of(outside + "}\n" + rest),
+            std::vector<std::string>{
+                "2:62: outputs.folder '../elsewhere' lies outside the project's folder ('..' leads out "
+                "of it): set 'folder_outside_project: true' in outputs to write there, or give run --output"});
+  const Project opted = load_project_from_string(outside + ", folder_outside_project: true}\n" + rest, FakePath);
+  EXPECT_TRUE(opted.outputs.folder_outside_project);
+  EXPECT_EQ(opted.outputs.folder, ProjectsDir + "/elsewhere");
+  LoadOptions run_output;
+  run_output.output_folder_overridden = true;  // `run --output`: outputs.folder is not used
+  EXPECT_NO_THROW(load_project_from_string(outside + "}\n" + rest, FakePath, run_output));
+  // Inside the project's folder, '..' that stays inside is fine.
+  EXPECT_NO_THROW(load_project_from_string(
+      "site: {latitude: 37.72, longitude: -122.22, time_zone: -8}\n"
+      "outputs: {folder: a/../results, annual_illuminance: false, metrics: false}\n" + rest, FakePath));
+}
+
 TEST(ProjectLoader, SourceLinesUnderErrorsNeverCarryControlBytes) {
   // A name with an escape sequence written raw is reported at its byte; the line printed
   // under the message shows '?' for it, so no escape sequence reaches the terminal.
