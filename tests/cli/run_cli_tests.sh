@@ -86,6 +86,19 @@ else
   echo "FAIL run_two_projects_one_folder: exit $code"; cat "$scratch/two.out"; failed=$((failed + 1))
 fi
 
+# A cache that cannot be written (its folder is a file: ENOTDIR, even as root) fails every
+# photon artefact's write while other sources are still being traced: a clean error and
+# exit 4, never a signal (the cancelled photon passes used to segfault: exit 139).
+mkdir -p "$scratch/nocache" && : >"$scratch/nocache/.cache"
+"$bin" run projects/office/project.yaml --output "$scratch/nocache" --threads 4 --quiet >"$scratch/nocache.out" 2>&1
+code=$?
+if [ "$code" -eq 4 ] &&
+   grep -qxF "dayphoton: error: cannot create the cache folder $scratch/nocache/.cache: Not a directory" "$scratch/nocache.out"; then
+  echo "ok   run_cache_not_writable"; passed=$((passed + 1))
+else
+  echo "FAIL run_cache_not_writable: exit $code"; cat "$scratch/nocache.out"; failed=$((failed + 1))
+fi
+
 # annual: recomputes tables and metrics from exported coefficients (a synthetic 2-sensor grid).
 EPW=projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw
 check_case annual_missing_folder 1 annual --coefficients tests/cli/cases/does_not_exist --weather $EPW
