@@ -13,7 +13,6 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <tuple>
 
 #include "dayphoton/core/diagnostics.h"
@@ -1092,10 +1091,12 @@ Project load_project_from_string(const std::string& text, const std::string& pat
 Project load_project(const std::string& path, const LoadOptions& options) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open project file");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // One byte more than the limit is enough for the loader to say the file is too large.
+  std::string text(MaxYamlBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (in.bad()) throw InputError(SourceLocation{path, 0, 0}, "cannot read project file");
-  return load_project_from_string(text.str(), path, options);
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return load_project_from_string(text, path, options);
 }
 
 }  // namespace dayphoton::project

@@ -141,9 +141,10 @@ class Converter {
     out.location = to_location(node.Mark(), m_reporter.source().file(), fallback);
     if (m_stopped) return out;
     if (++m_nodes > MaxYamlNodes) {
-      m_reporter.error(out.location, "the YAML document expands to more than " +
+      m_reporter.error(out.location, "the YAML document has more than " +
                                          std::to_string(MaxYamlNodes) +
-                                         " nodes (aliases nested in aliases?)");
+                                         " nodes, counting each alias as a copy of its anchor's node "
+                                         "(aliases nested in aliases?)");
       m_stopped = true;
       return out;
     }
@@ -230,6 +231,12 @@ YamlNode parse_yaml_document(const std::string& text, Reporter& reporter) {
   const SourceLocation start{reporter.source().file(), 1, 1};
   YamlNode null;  // what an empty file or a reported error gives
   null.location = start;
+  if (text.size() > MaxYamlBytes) {
+    reporter.error(start, "the file is larger than " + std::to_string(MaxYamlBytes) +
+                              " bytes (2 MiB), the limit of a project file: put large geometry in "
+                              "OBJ files and sensors in .pts files");
+    return null;
+  }
   if (!check_text(text, reporter)) return null;
   std::vector<YAML::Node> documents;
   try {

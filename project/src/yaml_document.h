@@ -11,6 +11,8 @@
 // - the text must be UTF-8 without control characters other than tab, line feed and carriage
 //   return (YAML 1.2 section 5.1, "c-printable"; we accept UTF-8 only);
 // - one document per file: a second one (after `---`) is an error, not silently ignored;
+// - at most MaxYamlBytes of text (yaml-cpp's own node graph costs ~350 bytes a node, and
+//   "1,1,1,..." is a node every 2 bytes);
 // - at most MaxYamlNodes nodes after aliases are expanded (an alias is copied into the tree,
 //   so nested aliases grow it exponentially: the "billion laughs" document);
 // - at most MaxYamlDepth levels of nesting.
@@ -25,9 +27,15 @@
 
 namespace dayphoton::project {
 
+/// Policy: the largest project file, in bytes. A 25 000-vertex polygon written inline takes
+/// ~0.6 MiB; larger geometry belongs in OBJ files and sensors in .pts files. With the node
+/// limit below, loading the largest file stays under ~0.6 GB (measured: 1.1 GB for 4 MiB
+/// of "1,1,1,...").
+constexpr std::size_t MaxYamlBytes = 2u << 20;
 /// Policy: the largest tree a project file may expand to, counting every node (map, list,
-/// scalar) after aliases are copied. A project written out in full (a 25 000-vertex polygon,
-/// 10 000 inline sensor points) stays well below it; the tree costs about 200 bytes a node.
+/// scalar) after aliases are copied. A project written out in full (a 25 000-vertex polygon:
+/// 100 000 nodes; 10 000 inline sensor points: 70 000) stays well below it; the tree costs
+/// about 270 bytes a node (1 000 000 nodes: 0.27 GB, measured).
 constexpr std::size_t MaxYamlNodes = 1'000'000;
 /// Policy: deeper nesting than this is never a project file (and would exhaust the stack).
 constexpr int MaxYamlDepth = 64;

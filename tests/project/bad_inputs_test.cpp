@@ -57,6 +57,22 @@ TEST(BadInputs, EachFileFailsWithItsLocatedMessages) {
   }
 }
 
+TEST(BadInputs, FilesOverTwoMebibytesAreRefusedBeforeParsing) {
+  // yaml-cpp's node graph costs ~350 bytes a node: 4 MiB of "1,1,1,..." took 1.1 GB.
+  std::string text = "site: {latitude: 37.72, longitude: -122.22, time_zone: -8}\nextra: [1";
+  while (text.size() < (2u << 20)) text += ",1";
+  text += "]\n";
+  const std::vector<std::string> expected = {
+      "1:1: the file is larger than 2097152 bytes (2 MiB), the limit of a project file: put large "
+      "geometry in OBJ files and sensors in .pts files"};
+  EXPECT_EQ(test::located_errors([&] { load_project_from_string(text, "big.yaml"); }), expected);
+  // The same from a file, of which load_project reads no more than the limit and one byte.
+  const std::string path = (fs::temp_directory_path() / "dayphoton_big_project.yaml").string();
+  std::ofstream(path, std::ios::binary) << text << std::string(1u << 20, '#');
+  EXPECT_EQ(test::located_errors([&] { load_project(path); }), expected);
+  fs::remove(path);
+}
+
 TEST(BadInputs, ManyKeysInOneMapLoadInLinearTime) {
   // A map of n keys used to cost O(n^2) key comparisons (each key searched among those before
   // it): 100 000 keys took 46 s. Hashed, 200 000 keys take well under a second; the bound
