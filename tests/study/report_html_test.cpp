@@ -205,6 +205,32 @@ TEST(ReportHtml, WritesImagesForEveryGridAndVariant) {
   EXPECT_TRUE(fs::exists(dir + "/report.html"));
 }
 
+TEST(ReportHtml, NamesFromTheSummaryCannotLeadOutOfTheResultsFolder) {
+  // A hand-edited summary.json names a grid folder outside the results folder: by a name
+  // with '..', or by its recorded absolute "folder" (the name's own folder being absent).
+  // The report used to write its images there.
+  const std::string outside = temp_dir("outside");
+  write_grid(outside + "/grid", false);
+  // By name: an input error.
+  std::string dir = temp_dir("escape");
+  std::ofstream(dir + "/summary.json") << R"({"grids": [{"name": "../dayphoton_report_html_test_outside/grid"}]})";
+  EXPECT_THROW(write_images_and_report(dir), InputError);
+  EXPECT_FALSE(fs::exists(outside + "/grid/daylight_factor.exr"));
+  // By the recorded folder: ignored, the grid's own folder (absent) is what counts.
+  dir = temp_dir("escape_recorded");
+  std::ofstream(dir + "/summary.json") << R"({"grids": [{"name": "gone", "folder": ")" << outside << R"(/grid"}]})";
+  write_images_and_report(dir);
+  EXPECT_FALSE(fs::exists(outside + "/grid/daylight_factor.exr"));
+  dir = temp_dir("escape_variant");
+  std::ofstream(dir + "/summary.json") << R"({"variants": [{"name": "..", "grids": [{"name": "grid"}]}]})";
+  try {
+    write_images_and_report(dir);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.diagnostics().at(0).message, "variant name '..' is not a portable folder name: it starts with '.'");
+  }
+}
+
 TEST(ReportHtml, AFolderWithoutSummaryIsAnInputError) {
   const std::string dir = temp_dir("empty");
   try {
