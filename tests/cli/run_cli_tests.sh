@@ -100,6 +100,19 @@ else
   echo "FAIL run_cache_not_writable: exit $code"; cat "$scratch/nocache.out"; failed=$((failed + 1))
 fi
 
+# A project in a folder whose name is not UTF-8 (Latin-1 'cafe' with an acute accent): the run
+# completes and its JSON files are UTF-8 (the bad byte replaced), instead of exit 4 from the
+# JSON writer at the very end.
+latin1="$scratch/$(printf 'caf\351')"
+mkdir -p "$latin1" && cp tests/cli/cases/daylight_factor_only.yaml "$latin1/project.yaml"
+"$bin" run "$latin1/project.yaml" --quiet >"$scratch/latin1.out" 2>&1
+code=$?
+if [ "$code" -eq 0 ] && iconv -f UTF-8 -t UTF-8 "$latin1/results/summary.json" >/dev/null 2>&1; then
+  echo "ok   run_folder_name_not_utf8"; passed=$((passed + 1))
+else
+  echo "FAIL run_folder_name_not_utf8: exit $code"; cat "$scratch/latin1.out"; failed=$((failed + 1))
+fi
+
 # annual: recomputes tables and metrics from exported coefficients (a synthetic 2-sensor grid).
 EPW=projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw
 check_case annual_missing_folder 1 annual --coefficients tests/cli/cases/does_not_exist --weather $EPW
