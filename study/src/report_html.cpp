@@ -165,7 +165,10 @@ std::map<std::string, PlanGeometry> project_geometry(const std::string& project_
     return out;
   }
   try {
-    const project::Project project = project::load_project(project_path);
+    // Only the geometry is read: where the project's results would go does not matter.
+    project::LoadOptions geometry_only;
+    geometry_only.output_folder_overridden = true;
+    const project::Project project = project::load_project(project_path, geometry_only);
     const SceneDescription scene = project::build_scene_description(project);
     std::vector<std::vector<Vec3>> windows;
     for (const Surface& s : scene.surfaces)

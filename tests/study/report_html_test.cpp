@@ -231,6 +231,24 @@ TEST(ReportHtml, NamesFromTheSummaryCannotLeadOutOfTheResultsFolder) {
   }
 }
 
+TEST(ReportHtml, PlansComeFromAProjectWhoseOutputFolderLiesElsewhere) {
+  // A project run with --output may name an outputs.folder outside its own folder; the
+  // report reads only its geometry, so it must still load.
+  const std::string dir = temp_dir("elsewhere");
+  std::ofstream(dir + "/project.yaml")
+      << "site: {latitude: 51.5, longitude: -0.12, time_zone: 0}\n"
+         "outputs: {annual_illuminance: false, metrics: false, folder: /elsewhere}\n"
+         "materials: {walls: {type: lambertian, reflectance: 0.5}}\n"
+         "geometry:\n"
+         "  rooms: [{name: office, size: [4, 3, 3], materials: {floor: walls, ceiling: walls, walls: walls}}]\n"
+         "sensors: {grids: [{name: north_wing, room: office, height: 0.8, spacing: 1}]}\n";
+  write_grid(dir + "/north_wing", false);
+  std::ofstream(dir + "/summary.json") << R"({"project": ")" << dir << R"(/project.yaml", "grids": [{"name": "north_wing"}]})";
+  const std::string html = report_html(dir);
+  EXPECT_NE(html.find("as it is now"), std::string::npos);
+  EXPECT_EQ(html.find("no longer loads"), std::string::npos);
+}
+
 TEST(ReportHtml, AFolderWithoutSummaryIsAnInputError) {
   const std::string dir = temp_dir("empty");
   try {
