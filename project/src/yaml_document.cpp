@@ -103,7 +103,22 @@ std::string SourceText::line(int line) const {
 }
 
 void Reporter::error(const SourceLocation& loc, std::string message) {
-  m_diagnostics.error(loc, std::move(message), m_source.line(loc.line));
+  // Messages quote names and values from the file, which YAML escapes can fill with any
+  // character: control characters (C0, DEL, C1) are shown as \xNN, never sent as they are.
+  std::string shown;
+  for (std::size_t i = 0; i < message.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(message[i]);
+    const bool c1 = byte == 0xC2 && i + 1 < message.size() &&
+                    static_cast<unsigned char>(message[i + 1]) >= 0x80 &&
+                    static_cast<unsigned char>(message[i + 1]) <= 0x9F;
+    if (byte < 0x20 || byte == 0x7F || c1) {
+      const unsigned value = c1 ? static_cast<unsigned char>(message[++i]) : byte;
+      shown += "\\x" + hex(value, 2);
+    } else {
+      shown += message[i];
+    }
+  }
+  m_diagnostics.error(loc, std::move(shown), m_source.line(loc.line));
 }
 
 const YamlEntry* YamlNode::find(const std::string& key) const {

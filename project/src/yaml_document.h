@@ -60,6 +60,8 @@ class Reporter {
  public:
   Reporter(Diagnostics& diagnostics, const SourceText& source)
       : m_diagnostics(diagnostics), m_source(source) {}
+  /// Report an error; control characters in `message` (from names quoted in it) are shown
+  /// as \xNN.
   void error(const SourceLocation& loc, std::string message);
   bool at_cap() const { return m_diagnostics.at_cap(); }
   bool has_errors() const { return m_diagnostics.has_errors(); }

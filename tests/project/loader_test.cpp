@@ -289,6 +289,16 @@ TEST(ProjectLoader, OutputFolderOutsideTheProjectNeedsTheOptInOrAnOverride) {
       "outputs: {folder: a/../results, annual_illuminance: false, metrics: false}\n" + rest, FakePath));
 }
 
+TEST(ProjectLoader, MessagesShowControlCharactersOfNamesEscaped) {
+  // A reference written with YAML escapes (ESC, a C1 CSI, a line break) is quoted in the
+  // message with each control character as \xNN.
+  EXPECT_EQ(errors_of(Head + "materials: {w: {type: lambertian, reflectance: 0.5}}\n"
+                             "geometry:\n"
+                             "  rooms:\n"
+                             "    - {name: office, size: [6, 8, 3], materials: {floor: w, ceiling: w, walls: \"\\e[2J\\u009B\\n\"}}\n"),
+            std::vector<std::string>{"6:80: unknown material '\\x1B[2J\\x9B\\x0A'"});
+}
+
 TEST(ProjectLoader, SourceLinesUnderErrorsNeverCarryControlBytes) {
   // A name with an escape sequence written raw is reported at its byte; the line printed
   // under the message shows '?' for it, so no escape sequence reaches the terminal.
