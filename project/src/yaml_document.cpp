@@ -86,7 +86,8 @@ SourceText::SourceText(const std::string& file, const std::string& text) : m_fil
     for (std::size_t i = 0; i < line.size();) {
       char32_t c = 0;
       const std::size_t n = utf8_sequence(line, i, c);
-      if (n == 0 || (c != '\t' && !printable(c))) {
+      // NEL (U+0085) is printable YAML but a C1 control to a terminal.
+      if (n == 0 || (c != '\t' && !printable(c)) || c == 0x85) {
         for (std::size_t k = 0; k < std::max<std::size_t>(n, 1); ++k) line[i + k] = '?';
         i += std::max<std::size_t>(n, 1);
       } else {

@@ -313,6 +313,17 @@ TEST(ProjectLoader, SourceLinesUnderErrorsNeverCarryControlBytes) {
               "                       ^\n"
               "1 error generated.\n");
   }
+  // NEL (U+0085, bytes C2 85) is allowed in YAML text but is a C1 control to a terminal.
+  try {
+    load_project_from_string(Head + "materials: {}\ngeometry: {}\ncolour: \"a\xC2\x85" "b\"\n", "p.yaml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "p.yaml:5:1: error: unknown key 'colour' in project\n"
+              "    colour: \"a??b\"\n"
+              "    ^\n"
+              "1 error generated.\n");
+  }
 }
 
 TEST(SiteGeodesy, DmsStringsAndDecimalDegrees) {
