@@ -1,9 +1,11 @@
 // load_project: stage 2 of project loading (STYLE.md A.3): located YAML tree -> typed Project.
 // Every section is read through a ParamReader against its schema (project_schema.cpp), so
 // unknown keys, missing keys, wrong types, ranges and enumerations are checked uniformly and
-// located. Names are checked for uniqueness per kind; material and room references (and
-// the materials a variant replaces) are resolved after everything is read, with "did you
-// mean" hints. Rules between keys (occupancy start < end, UDI band order) are checked here.
+// located. Names are checked for uniqueness per kind, and names that become folders (grids,
+// point sets, variants) against the one rule of path_name.h; outputs.folder must lie inside
+// the project's folder unless allowed (LoadOptions, folder_outside_project). Material and
+// room references (and the materials a variant replaces) are resolved after everything is
+// read, with "did you mean" hints. Rules between keys (occupancy start < end, UDI band order) are checked here.
 // Daylight systems are read against their type's schema section; a variant's changes to a
 // system are merged into the base system's node and read again as a whole.
 // All errors are collected (Diagnostics, cap 50) and thrown together as one InputError. The
