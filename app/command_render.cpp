@@ -73,7 +73,8 @@ int run_render(const RenderOptions& options, std::ostream& out) {
   png_path.replace_extension(".png");
 
   // Model, sky (checked before the long photon pass), photons.
-  const project::Project project = project::load_project(options.project_path);
+  const project::Project project = project::load_project(
+      options.project_path, {/*output_folder_overridden=*/true});  // writes -o, not outputs.folder
   const SceneDescription description = project::build_scene_description(project);
   const engine::Scene scene = engine::Scene::build(description);
   std::vector<engine::Material> materials;

@@ -9,14 +9,50 @@
 #include <memory>
 #include <iostream>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/study_runner.h"
 
 namespace dayphoton::app {
+namespace {
+
+/// The output folder of each project: --output itself for one project; for several,
+/// --output/<name of the project file's folder>, a name that must pass the path-name rule and
+/// differ from the others' (else two projects would write into one folder). Empty strings
+/// without --output (each project's outputs.folder).
+std::vector<std::string> output_folders(const RunOptions& options) {
+  namespace fs = std::filesystem;
+  const std::size_t n = options.project_paths.size();
+  if (options.output_dir.empty()) return std::vector<std::string>(n);
+  if (n == 1) return {options.output_dir};
+  std::vector<std::string> folders, folds;
+  for (const std::string& path : options.project_paths) {
+    const std::string name = fs::absolute(path).lexically_normal().parent_path().filename().string();
+    const std::string problem = project::path_name_problem(name);
+    if (!problem.empty())
+      throw UsageError("with --output and several projects, each writes to --output/<name of its folder>, but the "
+                       "folder of '" + path + "' is named '" + project::printable_name(name) +
+                       "', which is not a portable folder name: " + problem + " (" + project::PathNameRule +
+                       "); run that project on its own");
+    const std::string fold = project::path_name_fold(name);
+    for (std::size_t i = 0; i < folds.size(); ++i)
+      if (folds[i] == fold)
+        throw UsageError("with --output and several projects, each writes to --output/<name of its folder>: '" +
+                         options.project_paths[i] + "' and '" + path + "' would both write to " +
+                         (fs::path(options.output_dir) / name).string() + "; run them one at a time");
+    folds.push_back(fold);
+    folders.push_back((fs::path(options.output_dir) / name).string());
+  }
+  return folders;
+}
+
+}  // namespace
 
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   (void)err;
@@ -25,23 +61,22 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                     static_cast<std::size_t>(options.threads));
   // Load every project first: a typo in the last one should not wait for the first to run.
+  // With --output, outputs.folder is not used and may lie anywhere.
+  const std::vector<std::string> folders = output_folders(options);
+  project::LoadOptions load;
+  load.output_folder_overridden = !options.output_dir.empty();
   std::vector<project::Project> projects;
-  for (const std::string& path : options.project_paths) projects.push_back(project::load_project(path));
+  for (const std::string& path : options.project_paths) projects.push_back(project::load_project(path, load));
 
   const study::ProgressStyle style =
       study::Progress::choose_style(&out == &std::cout && isatty(STDOUT_FILENO), options.quiet);
-  for (const project::Project& proj : projects) {
+  for (std::size_t i = 0; i < projects.size(); ++i) {
+    const project::Project& proj = projects[i];
     study::Progress progress(out, style);
     study::RunSettings settings;
     settings.force = options.force;
     settings.version = DAYPHOTON_VERSION;
-    if (!options.output_dir.empty()) {
-      settings.output_dir =
-          projects.size() == 1
-              ? options.output_dir
-              : (std::filesystem::path(options.output_dir) /
-                 std::filesystem::path(proj.path).parent_path().filename()).string();
-    }
+    settings.output_dir = folders[i];
     const study::RunReport report = study::run_study(proj, settings, progress);
     progress.print_summary();
     if (!options.quiet) {

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include <tbb/parallel_for.h>
 
@@ -60,6 +62,7 @@ struct BlockResult {
   std::vector<Photon> surface;
   std::vector<std::vector<Photon>> planes;
   std::uint64_t entered = 0, global = 0, caustic = 0, direct = 0, rays = 0;
+  bool complete = false;  ///< every attempt of the block was traced
 };
 
 class BlockSink final : public PhotonSink {
@@ -180,6 +183,11 @@ struct SourceResult {
 };
 
 // Trace attempts [first, last) of `source`, in parallel blocks, appending to `result`.
+// Throws if a block did not run: when this pass runs inside an enclosing parallel loop (one
+// task per source) and another iteration of that loop throws, TBB cancels the whole task
+// group, so this nested loop returns early without having run every block (oneTBB developer
+// guide, "Cancellation and Nested Parallelism"). The enclosing loop then rethrows the first
+// exception; this one only stops a partial pass from being merged.
 void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
                     const std::vector<ReceiverPlane>& planes, const PortEmitter& emitter,
                     std::uint32_t source, std::uint64_t first, std::uint64_t last,
@@ -209,7 +217,12 @@ void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
       trace_path(scene, materials, planes, *start, options, scattering, roulette_rng, sink,
                  &out.rays);
     }
+    out.complete = true;
   });
+  for (const BlockResult& b : block_results)
+    if (!b.complete)
+      throw std::runtime_error("photon tracing was cancelled before every block of source " +
+                               std::to_string(source) + " ran");
   result.planes.resize(planes.size());
   for (BlockResult& b : block_results) {
     result.surface.insert(result.surface.end(), b.surface.begin(), b.surface.end());

@@ -1,9 +1,11 @@
 // load_project: stage 2 of project loading (STYLE.md A.3): located YAML tree -> typed Project.
 // Every section is read through a ParamReader against its schema (project_schema.cpp), so
 // unknown keys, missing keys, wrong types, ranges and enumerations are checked uniformly and
-// located. Names are checked for uniqueness per kind; material and room references (and
-// the materials a variant replaces) are resolved after everything is read, with "did you
-// mean" hints. Rules between keys (occupancy start < end, UDI band order) are checked here.
+// located. Names are checked for uniqueness per kind, and names that become folders (grids,
+// point sets, variants) against the one rule of path_name.h; outputs.folder must lie inside
+// the project's folder unless allowed (LoadOptions, folder_outside_project). Material and
+// room references (and the materials a variant replaces) are resolved after everything is
+// read, with "did you mean" hints. Rules between keys (occupancy start < end, UDI band order) are checked here.
 // Daylight systems are read against their type's schema section; a variant's changes to a
 // system are merged into the base system's node and read again as a whole.
 // All errors are collected (Diagnostics, cap 50) and thrown together as one InputError. The
@@ -13,10 +15,10 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <tuple>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/project/project_schema.h"
 #include "dayphoton/project/site_geodesy.h"
@@ -56,9 +58,46 @@ class NameSet {
   std::map<std::string, SourceLocation> m_first;
 };
 
+/// Names that become folders (path_name.h): the rule, names reserved by the output layout,
+/// and names that differ only in case (one folder on case-insensitive file systems).
+class FolderNames {
+ public:
+  FolderNames(std::vector<std::string> reserved, std::string reserved_why)
+      : m_reserved(std::move(reserved)), m_reserved_why(std::move(reserved_why)) {}
+  /// `kind`: "grid", "variant", ... as the message names it.
+  void add(const std::string& kind, const std::string& name, const SourceLocation& loc,
+           Reporter& reporter) {
+    const std::string shown =
+        "'" + printable_name(name.substr(0, MaxPathNameLength)) +
+        (name.size() > MaxPathNameLength ? "...'" : "'");
+    if (const std::string problem = path_name_problem(name); !problem.empty()) {
+      reporter.error(loc, kind + " name " + shown + " is not a portable folder name: " + problem +
+                              " (" + PathNameRule + ")");
+      return;
+    }
+    const std::string fold = path_name_fold(name);
+    for (const std::string& reserved : m_reserved)
+      if (fold == path_name_fold(reserved)) {
+        reporter.error(loc, kind + " name " + shown + " is reserved: " + m_reserved_why);
+        return;
+      }
+    const auto [it, inserted] = m_first.emplace(fold, NameUse{name, loc});
+    if (!inserted && it->second.name != name)
+      reporter.error(loc, kind + " name " + shown + " differs from '" + it->second.name +
+                              "' (line " + std::to_string(it->second.location.line) +
+                              ") only in case: on Windows and macOS both are one folder");
+  }
+
+ private:
+  std::vector<std::string> m_reserved;
+  std::string m_reserved_why;
+  std::map<std::string, NameUse> m_first;  ///< by path_name_fold
+};
+
 class Loader {
  public:
-  Loader(Project& project, Reporter& reporter) : m_project(project), m_reporter(reporter) {}
+  Loader(Project& project, Reporter& reporter, const LoadOptions& options)
+      : m_project(project), m_reporter(reporter), m_options(options) {}
 
   void load(const YamlNode& root) {
     if (root.is_null()) {
@@ -603,7 +642,10 @@ class Loader {
     g.location = node.location;
     ParamReader r(node, schema_section("grid"), m_reporter);
     for (const auto& e : node.entries) g.key_locations.push_back({e.key, e.value.location});
-    if (r.read_string("name", g.name)) m_sensor_names.add(g.name, r.location_of("name"), m_reporter);
+    if (r.read_string("name", g.name)) {
+      m_sensor_folders.add("grid", g.name, r.location_of("name"), m_reporter);
+      m_sensor_names.add(g.name, r.location_of("name"), m_reporter);
+    }
     // What the grid covers: exactly one of these keys.
     static const char* const outlines[] = {"room", "polygon", "wall", "rectangle"};
     std::vector<std::string> given;
@@ -679,7 +721,10 @@ class Loader {
     PointsSpec p;
     p.location = node.location;
     ParamReader r(node, schema_section("points"), m_reporter);
-    if (r.read_string("name", p.name)) m_sensor_names.add(p.name, r.location_of("name"), m_reporter);
+    if (r.read_string("name", p.name)) {
+      m_sensor_folders.add("point set", p.name, r.location_of("name"), m_reporter);
+      m_sensor_names.add(p.name, r.location_of("name"), m_reporter);
+    }
     const bool has_points = r.has("points"), has_file = r.has("file");
     if (const YamlNode* list = r.take("points"); list && has_points) read_point_list(*list, p.points);
     if (has_file) {
@@ -818,7 +863,26 @@ class Loader {
     r.read_bool("images", o.images);
     r.read_bool("report", o.report);
     r.read_choice("matrix_format", o.matrix_format);
+    r.read_bool("folder_outside_project", o.folder_outside_project);
+    if (!m_options.output_folder_overridden && !o.folder_outside_project) {
+      const std::string outside = outside_project(o.folder_as_written);
+      if (!outside.empty())
+        m_reporter.error(r.location_of("folder"),
+                         "outputs.folder '" + printable_name(o.folder_as_written) + "' lies outside the project's folder (" +
+                             outside + "): set 'folder_outside_project: true' in outputs to write there, "
+                             "or give run --output");
+    }
     r.finish();
+  }
+
+  /// Why a folder as written lies outside the project's folder ("an absolute path", "'..'
+  /// leads out of it"), or "" if it lies inside. Lexical: a symbolic link inside is the user's own.
+  static std::string outside_project(const std::string& written) {
+    const fs::path p(written);
+    if (p.has_root_directory() || p.has_root_name()) return "an absolute path";
+    const fs::path normal = p.lexically_normal();
+    if (!normal.empty() && *normal.begin() == "..") return "'..' leads out of it";
+    return {};
   }
 
   // ---- metrics settings -----------------------------------------------------------------
@@ -888,11 +952,7 @@ class Loader {
     v.location = node.location;
     ParamReader r(node, schema_section("variant"), m_reporter);
     if (r.read_string("name", v.name)) {
-      if (!is_portable_folder_name(v.name))
-        m_reporter.error(r.location_of("name"),
-                         "variant name '" + v.name + "' is not a portable folder name (1 to 64 of "
-                         "A-Z a-z 0-9 _ - ., not starting with '.' or '-', not ending with '.', "
-                         "not a device name such as 'nul')");
+      m_variant_folders.add("variant", v.name, r.location_of("name"), m_reporter);
       m_variant_names.add(v.name, r.location_of("name"), m_reporter);
     }
     const bool has_materials = r.has("materials"), has_systems = r.has("systems");
@@ -1037,9 +1097,15 @@ class Loader {
 
   Project& m_project;
   Reporter& m_reporter;
+  const LoadOptions& m_options;
   NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
       m_polygon_names{"polygon"}, m_box_names{"box"}, m_mesh_names{"mesh"},
       m_sensor_names{"sensor set"}, m_variant_names{"variant"}, m_system_names{"system"};
+  // Sensor sets are folders beside `variants/` and `operated/` (docs/outputs.md); variants
+  // are folders inside `variants/`.
+  FolderNames m_sensor_folders{{"variants", "operated"},
+                               "the output folder holds the folders 'variants' and 'operated'"};
+  FolderNames m_variant_folders{{}, ""};
   std::vector<NameUse> m_material_uses, m_room_uses, m_window_uses;
   std::map<std::string, YamlNode> m_system_nodes;  ///< base systems as written, for variants
   struct VariantMaterialUse {
@@ -1079,7 +1145,8 @@ const char* wall_name(Wall wall) {
   return "south";
 }
 
-Project load_project_from_string(const std::string& text, const std::string& path) {
+Project load_project_from_string(const std::string& text, const std::string& path,
+                                 const LoadOptions& options) {
   Project project;
   project.path = path;
   project.directory = fs::path(path).parent_path().string();
@@ -1087,18 +1154,20 @@ Project load_project_from_string(const std::string& text, const std::string& pat
   const SourceText source(path, text);
   Reporter reporter(diagnostics, source);
   const YamlNode root = parse_yaml_document(text, reporter);
-  Loader(project, reporter).load(root);  // a syntax error leaves a Null root: nothing more to say
+  Loader(project, reporter, options).load(root);  // a syntax error leaves a Null root: nothing more to say
   diagnostics.throw_if_errors();
   return project;
 }
 
-Project load_project(const std::string& path) {
+Project load_project(const std::string& path, const LoadOptions& options) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open project file");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // One byte more than the limit is enough for the loader to say the file is too large.
+  std::string text(MaxYamlBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (in.bad()) throw InputError(SourceLocation{path, 0, 0}, "cannot read project file");
-  return load_project_from_string(text.str(), path);
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  return load_project_from_string(text, path, options);
 }
 
 }  // namespace dayphoton::project

@@ -301,7 +301,7 @@ std::vector<SectionSchema> build_schema() {
   }});
   // Wall and rectangle grids: frames and order in project/src/sensor_grid.cpp.
   s.push_back({"grid", "a regular sensor grid over a room floor, a polygon, a room wall or a rectangle (give exactly one of them)", {
-      P("name", T::String, "unique sensor-set name (also the output folder)").required(),
+      P("name", T::String, "unique sensor-set name, also its output folder: a path name (see Names that become folders), not `variants` or `operated`").required(),
       P("room", T::String, "room whose floor the grid covers"),
       P("polygon", T::PointList, "outline [x, y, z] (z ignored)").unit("m"),
       P("wall", T::Section, "a wall, the floor or the ceiling of a room; sensors face into the room").section("grid wall"),
@@ -322,7 +322,7 @@ std::vector<SectionSchema> build_schema() {
       P("v", T::Vec3, "second edge vector: the lattice's outer (row) direction; not parallel to u").unit("m").required(),
   }});
   s.push_back({"points", "explicit sensors (give `points` or `file`)", {
-      P("name", T::String, "unique sensor-set name (also the output folder)").required(),
+      P("name", T::String, "unique sensor-set name, also its output folder: a path name (see Names that become folders), not `variants` or `operated`").required(),
       P("points", T::Special, "[[x, y, z, nx, ny, nz], ...] in metres"),
       P("file", T::Path, "RADIANCE .pts file (x y z nx ny nz per line), must exist"),
   }});
@@ -351,7 +351,8 @@ std::vector<SectionSchema> build_schema() {
       P("reinhart", T::Integer, "Reinhart subdivision MF (1 = Tregenza, 145 patches; MF n: 144 n^2 + 1)").range(1, 12).required(),
   }});
   s.push_back({"outputs", "what is written, and where", {
-      P("folder", T::Path, "output folder, relative to the project file").def("results"),
+      P("folder", T::Path, "output folder, relative to the project file; outside the project's folder (absolute, or leaving it with ..) only with folder_outside_project or `run --output`").def("results"),
+      P("folder_outside_project", T::Boolean, "allow `folder` outside the project's folder").def("false"),
       P("daylight_factor", T::Boolean, "CIE overcast daylight factors").def("true"),
       P("annual_illuminance", T::Boolean, "hourly illuminance for the weather year").def("true"),
       P("metrics", T::Boolean, "annual metrics (DA, UDI, sDA, ASE, ...)").def("true"),
@@ -374,7 +375,7 @@ std::vector<SectionSchema> build_schema() {
       P("ase_hours", T::Number, "ASE: a sensor fails with more occupied hours than this at or above ase_threshold").unit("h").range(0, 8784).def("250"),
   }});
   s.push_back({"variant", "a study variant: the whole project with the listed materials and systems replaced", {
-      P("name", T::String, "unique variant name, also its output folder: letters, digits, _ - . (at most 64)").required(),
+      P("name", T::String, "unique variant name, also its output folder: a path name (see Names that become folders)").required(),
       P("materials", T::NameMap, "name of a material in `materials` -> its full definition in this variant"),
       P("systems", T::NameMap, "name of a system in `geometry.systems` -> the keys it changes in this variant (any but type and name)"),
   }});

@@ -295,13 +295,17 @@ void generate_systems(const Project& project, MaterialLookup& materials,
     if (!ok) continue;
     built.push_back({&e, {lo, hi}});
     const int mat = enclosure_material(scene_materials);
+    // Plain references for the lambda: C++17 does not let a lambda capture structured
+    // bindings (clang rejects it; C++20 allows it, P1091R3).
+    const std::string& enclosed_window = window_name;
+    const SourceLocation& system_location = e.first->location;
     auto face = [&](const char* name, std::vector<Vec3> v, const Vec3& inward) {
       Surface s;
-      s.name = window_name + ".enclosure." + name;
+      s.name = enclosed_window + ".enclosure." + name;
       s.material = mat;
       s.vertices = facing(std::move(v), inward);
       s.port = true;
-      s.location = e.first->location;
+      s.location = system_location;
       out.surfaces.push_back(std::move(s));
     };
     face("front", {f.at(u0, v0, w1), f.at(u1, v0, w1), f.at(u1, v1, w1), f.at(u0, v1, w1)}, f.e_w * -1.0);

@@ -17,6 +17,7 @@
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/weather/site_clock.h"
+#include "json_text.h"
 
 namespace dayphoton::study {
 
@@ -209,7 +210,7 @@ std::string grid_metrics_json(const AnnualStudy& study, const AnnualStudySetting
                     {"levels", levels}};
   }
   j["sky"] = study.sky_description;
-  return j.dump(2);
+  return json_text(j);
 }
 
 std::vector<std::string> write_annual_outputs(const AnnualStudy& study, const std::vector<SensorPoint>& sensors,

@@ -9,6 +9,7 @@
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/metrics/annual_metrics.h"
 #include "dayphoton/metrics/occupancy.h"
+#include "json_text.h"
 
 namespace dayphoton::study {
 
@@ -146,7 +147,7 @@ std::string operation_json(const OperatedStudy& operated, const ShadingRule& rul
                       {"shaded_hours", operated.schedule.shaded_steps()},
                       {"occupied_hours", operated.study.occupied_hours},
                       {"shaded_occupied_hours", operated.shaded_occupied_hours}};
-  return j.dump(2);
+  return json_text(j);
 }
 
 }  // namespace dayphoton::study

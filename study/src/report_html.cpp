@@ -21,6 +21,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/colour_scale.h"
@@ -188,7 +189,10 @@ std::map<std::string, PlanGeometry> project_geometry(const std::string& project_
     return out;
   }
   try {
-    const project::Project project = project::load_project(project_path);
+    // Only the geometry is read: where the project's results would go does not matter.
+    project::LoadOptions geometry_only;
+    geometry_only.output_folder_overridden = true;
+    const project::Project project = project::load_project(project_path, geometry_only);
     const SceneDescription scene = project::build_scene_description(project);
     std::vector<std::vector<Vec3>> windows;
     for (const Surface& s : scene.surfaces)
@@ -1044,18 +1048,29 @@ json read_summary(const std::string& results_dir) {
   return summary;
 }
 
-/// Folder of a grid: <results>/<grid> (base) or <results>/variants/<variant>/<grid>, as `run`
-/// writes them; the absolute folder recorded in summary.json only if that does not exist
-/// (a results folder that was moved keeps working).
-std::string grid_folder_in(const std::string& case_dir, const json& grid) {
-  const std::string relative = join(case_dir, grid.value("name", std::string()));
-  if (fs::exists(relative)) return relative;
-  const std::string recorded = grid.value("folder", std::string());
-  return recorded.empty() ? relative : recorded;
+/// A grid or variant name read back from summary.json, as a folder name: it must pass the
+/// rule `run` applied to it (project/path_name.h), so that a hand-edited summary cannot make
+/// the report read or write outside the results folder.
+std::string folder_name(const std::string& results_dir, const std::string& kind, const std::string& name) {
+  const std::string problem = project::path_name_problem(name);
+  if (!problem.empty())
+    throw InputError(SourceLocation{join(results_dir, "summary.json"), 0, 0},
+                     kind + " name '" + project::printable_name(name) + "' is not a portable folder name: " + problem);
+  return name;
+}
+
+/// Folder of a grid: <case_dir>/<grid>, case_dir being <results> (base), <results>/variants/
+/// <variant> or <results>/operated, as `run` writes them. The absolute folder also recorded in
+/// summary.json is not used: the report stays inside the results folder (moved or not).
+std::string grid_folder_in(const std::string& results_dir, const std::string& case_dir, const json& grid) {
+  return join(case_dir, folder_name(results_dir, "grid", grid.value("name", std::string())));
 }
 
 std::string grid_folder(const std::string& results_dir, const std::string& variant, const json& grid) {
-  return grid_folder_in(variant.empty() ? results_dir : join(join(results_dir, "variants"), variant), grid);
+  return grid_folder_in(results_dir,
+                        variant.empty() ? results_dir
+                                        : join(join(results_dir, "variants"), folder_name(results_dir, "variant", variant)),
+                        grid);
 }
 
 /// The operated result (summary.json `operated`, written by `run` into <results>/operated/):
@@ -1085,7 +1100,7 @@ std::string report_html(const std::string& results_dir) {
       grids.push_back(load_grid(v.value("name", std::string("variant")), g,
                                 grid_folder(results_dir, v.value("name", std::string()), g)));
   for (const json& g : operated_grids(summary))
-    grids.push_back(load_grid(operated_case(summary), g, grid_folder_in(join(results_dir, "operated"), g)));
+    grids.push_back(load_grid(operated_case(summary), g, grid_folder_in(results_dir, join(results_dir, "operated"), g)));
   for (GridData& g : grids) {
     auto it = geometry.find(g.name);
     if (it != geometry.end()) g.plan = it->second;
@@ -1144,7 +1159,7 @@ std::vector<std::string> write_images_and_report(const std::string& results_dir,
     for (const json& v : summary.value("variants", json::array()))
       for (const json& g : v.value("grids", json::array())) grid_images(v.value("name", std::string()), g);
     for (const json& g : operated_grids(summary)) {
-      const std::vector<std::string> w = write_grid_images(grid_folder_in(join(results_dir, "operated"), g));
+      const std::vector<std::string> w = write_grid_images(grid_folder_in(results_dir, join(results_dir, "operated"), g));
       written.insert(written.end(), w.begin(), w.end());
     }
     const std::vector<std::string> w = write_sky_images(results_dir, outputs.sky_hour);

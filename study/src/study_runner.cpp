@@ -34,6 +34,7 @@
 #include "dayphoton/weather/epw_reader.h"
 #include "dayphoton/weather/site_clock.h"
 #include "dayphoton/metrics/annual_metrics.h"
+#include "json_text.h"
 
 namespace dayphoton::study {
 namespace {
@@ -862,7 +863,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     timings.push_back({{"step", s.name}, {"seconds", s.seconds}, {"work", s.work}, {"unit", s.unit},
                        {"cached", s.cached}});
   summary["timings"] = timings;
-  write_file_atomically(join(report.output_dir, "summary.json"), summary.dump(2) + "\n");
+  write_file_atomically(join(report.output_dir, "summary.json"), json_text(summary) + "\n");
   write_file_atomically(join(report.output_dir, "run.log"), log.text());
   // 8. Images and report.html, from the files just written (docs/report.md).
   if (project.outputs.images || project.outputs.report) {

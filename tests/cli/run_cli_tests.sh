@@ -37,6 +37,7 @@ check_case check_black_room_surface 1 check tests/cli/cases/black_room_surface.y
 check_case check_typos 1 check tests/cli/cases/typos.yaml
 check_case check_window_too_big 1 check tests/cli/cases/window_too_big.yaml
 check_case check_yaml_syntax 1 check tests/cli/cases/syntax.yaml
+check_case check_daylight_factor_only 0 check tests/cli/cases/daylight_factor_only.yaml
 check_case check_missing_file 1 check tests/cli/cases/does_not_exist.yaml
 check_case usage_no_subcommand 2
 check_case sun_bad_epw 1 sun tests/cli/cases/truncated.epw
@@ -48,6 +49,71 @@ check_case sky_overcast_vector 0 sky --cie overcast --illuminance 10000
 rm -rf "$scratch/results"
 check_case run_invalid_project 1 run tests/cli/cases/typos.yaml --output "$scratch/results" --quiet
 if [ -e "$scratch/results" ]; then echo "FAIL run wrote $scratch/results"; failed=$((failed + 1)); fi
+
+# Every bad project file of tests/data/bad/ (README.md there): check exits 1 and prints the
+# first expected message located as file:line:col (the full lists: tests/project/bad_inputs_test.cpp).
+bad_failed=$failed
+for f in tests/data/bad/*.yaml; do
+  expect=$(grep -a -m1 '^# expect: ' "$f" | sed 's/^# expect: //')
+  where=${expect%%: *}
+  wanted="$f:$where: error: ${expect#*: }"
+  "$bin" check "$f" >"$scratch/bad.out" 2>&1
+  code=$?
+  if [ -n "$expect" ] && [ "$code" -eq 1 ] && grep -qxF -- "$wanted" "$scratch/bad.out"; then
+    passed=$((passed + 1))
+  else
+    echo "FAIL check $f: exit $code, expected 1 and the line: $wanted"; cat -v "$scratch/bad.out"; failed=$((failed + 1))
+  fi
+done
+if [ "$failed" -eq "$bad_failed" ]; then echo "ok   check on each of tests/data/bad/*.yaml"; fi
+
+# run refuses a grid name that leaves the output folder: exit 1, nothing written anywhere.
+mkdir -p "$scratch/escape/project"
+cp tests/data/bad/grid_name_parent.yaml "$scratch/escape/project/project.yaml"
+"$bin" run "$scratch/escape/project/project.yaml" --quiet >"$scratch/escape.out" 2>&1
+code=$?
+if [ "$code" -eq 1 ] && [ "$(find "$scratch/escape" -mindepth 1 | wc -l)" -eq 2 ]; then
+  echo "ok   run_grid_name_escape"; passed=$((passed + 1))
+else
+  echo "FAIL run_grid_name_escape: exit $code"; find "$scratch/escape"; failed=$((failed + 1))
+fi
+
+# Several projects with --output write to --output/<folder name>: two folders of one name
+# (here: the same folder twice) would share it; exit 2 before anything runs.
+"$bin" run projects/office/project.yaml ./projects/office/project.yaml --output "$scratch/two" --quiet \
+  >"$scratch/two.out" 2>&1
+code=$?
+if [ "$code" -eq 2 ] && grep -q "would both write to" "$scratch/two.out" && [ ! -e "$scratch/two" ]; then
+  echo "ok   run_two_projects_one_folder"; passed=$((passed + 1))
+else
+  echo "FAIL run_two_projects_one_folder: exit $code"; cat "$scratch/two.out"; failed=$((failed + 1))
+fi
+
+# A cache that cannot be written (its folder is a file: ENOTDIR, even as root) fails every
+# photon artefact's write while other sources are still being traced: a clean error and
+# exit 4, never a signal (the cancelled photon passes used to segfault: exit 139).
+mkdir -p "$scratch/nocache" && : >"$scratch/nocache/.cache"
+"$bin" run projects/office/project.yaml --output "$scratch/nocache" --threads 4 --quiet >"$scratch/nocache.out" 2>&1
+code=$?
+if [ "$code" -eq 4 ] &&
+   grep -qxF "dayphoton: error: cannot create the cache folder $scratch/nocache/.cache: Not a directory" "$scratch/nocache.out"; then
+  echo "ok   run_cache_not_writable"; passed=$((passed + 1))
+else
+  echo "FAIL run_cache_not_writable: exit $code"; cat "$scratch/nocache.out"; failed=$((failed + 1))
+fi
+
+# A project in a folder whose name is not UTF-8 (Latin-1 'cafe' with an acute accent): the run
+# completes and its JSON files are UTF-8 (the bad byte replaced), instead of exit 4 from the
+# JSON writer at the very end.
+latin1="$scratch/$(printf 'caf\351')"
+mkdir -p "$latin1" && cp tests/cli/cases/daylight_factor_only.yaml "$latin1/project.yaml"
+"$bin" run "$latin1/project.yaml" --quiet >"$scratch/latin1.out" 2>&1
+code=$?
+if [ "$code" -eq 0 ] && iconv -f UTF-8 -t UTF-8 "$latin1/results/summary.json" >/dev/null 2>&1; then
+  echo "ok   run_folder_name_not_utf8"; passed=$((passed + 1))
+else
+  echo "FAIL run_folder_name_not_utf8: exit $code"; cat "$scratch/latin1.out"; failed=$((failed + 1))
+fi
 
 # annual: recomputes tables and metrics from exported coefficients (a synthetic 2-sensor grid).
 EPW=projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw

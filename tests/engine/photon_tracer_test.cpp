@@ -6,10 +6,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <iostream>
 #include <numeric>
 
 #include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/density_estimate.h"
@@ -345,6 +348,69 @@ TEST(PhotonCounts, OneAndTwoThreadsGiveBitIdenticalPhotons) {
   EXPECT_EQ(0, std::memcmp(a.surface.data(), b.surface.data(), a.surface.size() * sizeof(Photon)));
   EXPECT_EQ(0, std::memcmp(a.planes[0].data(), b.planes[0].data(),
                            a.planes[0].size() * sizeof(Photon)));
+}
+
+// ---- cancellation ------------------------------------------------------------------------
+
+// When one iteration of an enclosing parallel loop throws (the run's cache write on a full
+// disk, bad_alloc), TBB cancels its task group: the photon pass running in another iteration
+// sees its own nested parallel loop return early, with blocks that never ran. The pass must
+// then throw, never merge those blocks (it used to read their empty plane lists: a segfault).
+// Cancelling the enclosing group from inside the iteration is exactly what TBB does when a
+// sibling throws, without depending on timing.
+TEST(PhotonCancellation, CancelledEnclosingLoopMakesThePassThrowInsteadOfMergingMissingBlocks) {
+  const SceneDescription d = window_room(MaterialType::Glass);
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models_of(d);
+  const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8)};
+  SourceSet sources;
+  sources.add_sun_disc({0, -std::cos(40 * Pi / 180), std::sin(40 * Pi / 180)}, 0.00465);
+  const PortEmitter emitter(scene, sources);
+  TracingOptions o;
+  o.photons_per_source = 5000;
+  tbb::task_group_context enclosing;
+  std::exception_ptr error;
+  bool returned = false;
+  tbb::parallel_for(0, 1, [&](int) {
+    enclosing.cancel_group_execution();
+    try {
+      trace_source_photons(scene, materials, emitter, planes, o, 0);
+      returned = true;
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }, enclosing);
+  EXPECT_FALSE(returned) << "a cancelled pass returned photons as if it were complete";
+  ASSERT_TRUE(error);
+  try {
+    std::rethrow_exception(error);
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cancelled"), std::string::npos) << e.what();
+  }
+}
+
+// The same through the public entry point, as the study uses it: every source's iteration
+// traces and then throws (each cache write fails). The first exception reaches the caller,
+// whatever the other sources' passes were doing when the loop was cancelled.
+TEST(PhotonCancellation, ThrowAfterEachSourceReachesTheCallerUnchanged) {
+  const SceneDescription d = window_room(MaterialType::Glass);
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models_of(d);
+  const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8)};
+  const SourceSet sources = SourceSet::sky_bins(sky::PatchBasis::tregenza());
+  const PortEmitter emitter(scene, sources);
+  TracingOptions o;
+  o.photons_per_source = 20000;  // tens of blocks per source: cancellation finds passes mid-way
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 4);
+  try {
+    tbb::parallel_for(std::size_t(0), sources.size(), [&](std::size_t p) {
+      trace_source_photons(scene, materials, emitter, planes, o, p);
+      throw std::runtime_error("cannot write the cache: no space left on device");
+    });
+    FAIL() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "cannot write the cache: no space left on device");
+  }
 }
 
 // ---- low-yield cap ------------------------------------------------------------------------

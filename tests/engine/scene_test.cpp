@@ -270,7 +270,8 @@ TEST(Scene, ClosedBoxIsWatertight) {
     const Vec3 size{1, 1, 1};
     const Scene scene = Scene::build(box_room(size, rotation_rad, offset));
     const double c = std::cos(rotation_rad), s = std::sin(rotation_rad);
-    auto to_world = [&](const Vec3& v) { return Vec3{c * v.x - s * v.y, s * v.x + c * v.y, v.z} + offset; };
+    const Vec3 shift = offset;  // a lambda cannot capture a structured binding in C++17 (clang)
+    auto to_world = [&](const Vec3& v) { return Vec3{c * v.x - s * v.y, s * v.x + c * v.y, v.z} + shift; };
     std::vector<Vec3> corners;
     for (int k = 0; k < 8; ++k) corners.push_back(to_world({double(k & 1), double((k >> 1) & 1), double((k >> 2) & 1)}));
     expect_watertight(scene, corners, edges, {0, 0, 0}, size, to_world, 99);

@@ -267,6 +267,65 @@ TEST(ProjectLoader, GarbageNeverCrashes) {
   }
 }
 
+TEST(ProjectLoader, OutputFolderOutsideTheProjectNeedsTheOptInOrAnOverride) {
+  // tests/data/bad/outputs_folder_*.yaml show the error; here the two ways to allow it.
+  const std::string rest = "materials: {}\ngeometry: {}\n";
+  const std::string outside =
+      "site: {latitude: 37.72, longitude: -122.22, time_zone: -8}\n"
+      "outputs: {annual_illuminance: false, metrics: false, folder: ../elsewhere";
+  EXPECT_EQ(errors_of(outside + "}\n" + rest),
+            std::vector<std::string>{
+                "2:62: outputs.folder '../elsewhere' lies outside the project's folder ('..' leads out "
+                "of it): set 'folder_outside_project: true' in outputs to write there, or give run --output"});
+  const Project opted = load_project_from_string(outside + ", folder_outside_project: true}\n" + rest, FakePath);
+  EXPECT_TRUE(opted.outputs.folder_outside_project);
+  EXPECT_EQ(opted.outputs.folder, ProjectsDir + "/elsewhere");
+  LoadOptions run_output;
+  run_output.output_folder_overridden = true;  // `run --output`: outputs.folder is not used
+  EXPECT_NO_THROW(load_project_from_string(outside + "}\n" + rest, FakePath, run_output));
+  // Inside the project's folder, '..' that stays inside is fine.
+  EXPECT_NO_THROW(load_project_from_string(
+      "site: {latitude: 37.72, longitude: -122.22, time_zone: -8}\n"
+      "outputs: {folder: a/../results, annual_illuminance: false, metrics: false}\n" + rest, FakePath));
+}
+
+TEST(ProjectLoader, MessagesShowControlCharactersOfNamesEscaped) {
+  // A reference written with YAML escapes (ESC, a C1 CSI, a line break) is quoted in the
+  // message with each control character as \xNN.
+  EXPECT_EQ(errors_of(Head + "materials: {w: {type: lambertian, reflectance: 0.5}}\n"
+                             "geometry:\n"
+                             "  rooms:\n"
+                             "    - {name: office, size: [6, 8, 3], materials: {floor: w, ceiling: w, walls: \"\\e[2J\\u009B\\n\"}}\n"),
+            std::vector<std::string>{"6:80: unknown material '\\x1B[2J\\x9B\\x0A'"});
+}
+
+TEST(ProjectLoader, SourceLinesUnderErrorsNeverCarryControlBytes) {
+  // A name with an escape sequence written raw is reported at its byte; the line printed
+  // under the message shows '?' for it, so no escape sequence reaches the terminal.
+  try {
+    load_project_from_string(Head + "materials: {}\ngeometry: {}\nsimulation: {seed: \x1B[2J}\n", "p.yaml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "p.yaml:5:20: error: character U+001B is not allowed in YAML (a control character; YAML "
+              "1.2, section 5.1)\n"
+              "    simulation: {seed: ?[2J}\n"
+              "                       ^\n"
+              "1 error generated.\n");
+  }
+  // NEL (U+0085, bytes C2 85) is allowed in YAML text but is a C1 control to a terminal.
+  try {
+    load_project_from_string(Head + "materials: {}\ngeometry: {}\ncolour: \"a\xC2\x85" "b\"\n", "p.yaml");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "p.yaml:5:1: error: unknown key 'colour' in project\n"
+              "    colour: \"a??b\"\n"
+              "    ^\n"
+              "1 error generated.\n");
+  }
+}
+
 TEST(SiteGeodesy, DmsStringsAndDecimalDegrees) {
   EXPECT_NEAR(parse_latlon_deg("41d58'48\"N", AngleKind::Latitude), 41.98, 1e-12);
   EXPECT_NEAR(parse_latlon_deg("87d54'W", AngleKind::Longitude), -87.9, 1e-12);

@@ -668,8 +668,9 @@ TEST(Systems, VariantsChangeASystemsGeometry) {
   };
   for (const auto& [tail, expected] : bad) {
     SCOPED_TRACE(tail);
+    const std::string& variant_text = tail;  // a lambda cannot capture a structured binding in C++17 (clang)
     const std::vector<std::string> got = test::located_errors([&] {
-      const Project q = load(systems, tail);
+      const Project q = load(systems, variant_text);
       for (const VariantSpec& v : q.variants) build_scene_description(apply_variant(q, v));
     });
     EXPECT_EQ(got, expected);

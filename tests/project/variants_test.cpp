@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
 #include "located_errors.h"
 
@@ -38,9 +39,12 @@ const std::string Base =
     "  walls: {type: lambertian, reflectance: 0.5}\n"
     "geometry: {}\n";
 
-const std::string NameRule =
-    " is not a portable folder name (1 to 64 of A-Z a-z 0-9 _ - ., not starting with '.' or "
-    "'-', not ending with '.', not a device name such as 'nul')";
+/// " is not a portable folder name: <problem> (<the rule>)".
+std::string name_rule(const std::string& problem) {
+  return " is not a portable folder name: " + problem +
+         " (1 to 64 of A-Z a-z 0-9 _ - ., not starting with '.' or '-', not ending with '.', not a "
+         "device name such as 'nul')";
+}
 
 /// "line:col: message" for each diagnostic, or nothing if the text loads.
 std::vector<std::string> errors_of(const std::string& text) {
@@ -214,14 +218,14 @@ std::vector<BadCase> variant_cases() {
        "  - {name: com1.txt, materials: {walls: {type: lambertian, reflectance: 0.3}}}\n"
        "  - {name: " + std::string(65, 'v') + ", materials: {walls: {type: lambertian, reflectance: 0.3}}}\n"
        "  - {name: " + std::string(64, 'v') + ", materials: {walls: {type: lambertian, reflectance: 0.3}}}\n",
-       {"8:12: variant name 'low e'" + NameRule,
-        "9:12: variant name '../up'" + NameRule,
-        "10:12: variant name '.hidden'" + NameRule,
-        "11:12: variant name '-x'" + NameRule,
-        "12:12: variant name 'x.'" + NameRule,
-        "13:12: variant name 'Nul'" + NameRule,
-        "14:12: variant name 'com1.txt'" + NameRule,
-        "15:12: variant name '" + std::string(65, 'v') + "'" + NameRule}},
+       {"8:12: variant name 'low e'" + name_rule("' ' is not allowed"),
+        "9:12: variant name '../up'" + name_rule("'/' is not allowed"),
+        "10:12: variant name '.hidden'" + name_rule("it starts with '.'"),
+        "11:12: variant name '-x'" + name_rule("it starts with '-'"),
+        "12:12: variant name 'x.'" + name_rule("it ends with '.'"),
+        "13:12: variant name 'Nul'" + name_rule("'Nul' is a device name"),
+        "14:12: variant name 'com1.txt'" + name_rule("'com1' is a device name"),
+        "15:12: variant name '" + std::string(64, 'v') + "...'" + name_rule("it has 65 characters (at most 64)")}},
       {"variant_replacing_nothing",
        "variants:\n"
        "  - {name: a, materials: {}}\n",

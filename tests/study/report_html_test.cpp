@@ -239,6 +239,50 @@ TEST(ReportHtml, ElevationsShowOnlyTheWindowsOfTheirWall) {
   EXPECT_GE(count(html.substr(plane_at), "class=\"window\""), 1u);
 }
 
+TEST(ReportHtml, NamesFromTheSummaryCannotLeadOutOfTheResultsFolder) {
+  // A hand-edited summary.json names a grid folder outside the results folder: by a name
+  // with '..', or by its recorded absolute "folder" (the name's own folder being absent).
+  // The report used to write its images there.
+  const std::string outside = temp_dir("outside");
+  write_grid(outside + "/grid", false);
+  // By name: an input error.
+  std::string dir = temp_dir("escape");
+  std::ofstream(dir + "/summary.json") << R"({"grids": [{"name": "../dayphoton_report_html_test_outside/grid"}]})";
+  EXPECT_THROW(write_images_and_report(dir), InputError);
+  EXPECT_FALSE(fs::exists(outside + "/grid/daylight_factor.exr"));
+  // By the recorded folder: ignored, the grid's own folder (absent) is what counts.
+  dir = temp_dir("escape_recorded");
+  std::ofstream(dir + "/summary.json") << R"({"grids": [{"name": "gone", "folder": ")" << outside << R"(/grid"}]})";
+  write_images_and_report(dir);
+  EXPECT_FALSE(fs::exists(outside + "/grid/daylight_factor.exr"));
+  dir = temp_dir("escape_variant");
+  std::ofstream(dir + "/summary.json") << R"({"variants": [{"name": "..", "grids": [{"name": "grid"}]}]})";
+  try {
+    write_images_and_report(dir);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.diagnostics().at(0).message, "variant name '..' is not a portable folder name: it starts with '.'");
+  }
+}
+
+TEST(ReportHtml, PlansComeFromAProjectWhoseOutputFolderLiesElsewhere) {
+  // A project run with --output may name an outputs.folder outside its own folder; the
+  // report reads only its geometry, so it must still load.
+  const std::string dir = temp_dir("elsewhere");
+  std::ofstream(dir + "/project.yaml")
+      << "site: {latitude: 51.5, longitude: -0.12, time_zone: 0}\n"
+         "outputs: {annual_illuminance: false, metrics: false, folder: /elsewhere}\n"
+         "materials: {walls: {type: lambertian, reflectance: 0.5}}\n"
+         "geometry:\n"
+         "  rooms: [{name: office, size: [4, 3, 3], materials: {floor: walls, ceiling: walls, walls: walls}}]\n"
+         "sensors: {grids: [{name: north_wing, room: office, height: 0.8, spacing: 1}]}\n";
+  write_grid(dir + "/north_wing", false);
+  std::ofstream(dir + "/summary.json") << R"({"project": ")" << dir << R"(/project.yaml", "grids": [{"name": "north_wing"}]})";
+  const std::string html = report_html(dir);
+  EXPECT_NE(html.find("as it is now"), std::string::npos);
+  EXPECT_EQ(html.find("no longer loads"), std::string::npos);
+}
+
 TEST(ReportHtml, AFolderWithoutSummaryIsAnInputError) {
   const std::string dir = temp_dir("empty");
   try {

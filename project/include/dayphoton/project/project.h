@@ -364,6 +364,8 @@ struct Simulation {
 struct Outputs {
   std::string folder;            ///< resolved; default "results" beside the project file
   std::string folder_as_written;
+  /// `folder_outside_project`: the user allows `folder` outside the project's folder.
+  bool folder_outside_project = false;
   bool daylight_factor = true;
   bool annual_illuminance = true;
   bool metrics = true;
@@ -440,12 +442,21 @@ struct Project {
   std::optional<OperationSpec> operation;  ///< absent: no operated result
 };
 
+/// How the caller will use the project it loads.
+struct LoadOptions {
+  /// The results go elsewhere (`run --output`, `render -o`): outputs.folder is not used, so
+  /// it need not lie inside the project folder. Otherwise a folder outside it (absolute, or
+  /// leaving it with ..) is an error unless outputs.folder_outside_project is true.
+  bool output_folder_overridden = false;
+};
+
 /// Parse and validate a project file. Throws InputError with every problem found (located,
 /// up to a cap); throws nothing else for bad input.
-Project load_project(const std::string& path);
+Project load_project(const std::string& path, const LoadOptions& options = {});
 
 /// Same, from text already in memory (`path` is used in messages and to resolve relative paths).
-Project load_project_from_string(const std::string& text, const std::string& path);
+Project load_project_from_string(const std::string& text, const std::string& path,
+                                 const LoadOptions& options = {});
 
 /// The project of one variant: `base` with every material of `variant` put in place of the
 /// base material of the same name (same position in `materials`, so material indices do not
@@ -454,11 +465,6 @@ Project load_project_from_string(const std::string& text, const std::string& pat
 /// if the variant names a material or system `base` does not have (the loader reports that
 /// as an input error, so this only happens with hand-made variants).
 Project apply_variant(const Project& base, const VariantSpec& variant);
-
-/// True if `name` can be used as a folder name on every common file system: 1 to 64
-/// characters from [A-Za-z0-9_.-], not starting with '.' or '-', not ending with '.', and
-/// not a Windows device name (con, nul, com1, ... with any extension).
-bool is_portable_folder_name(const std::string& name);
 
 /// Generate the scene: rooms with their windows cut out (windows become glazing ports),
 /// polygons, boxes, OBJ meshes, daylight systems (docs/daylight-systems.md; systems may cut
