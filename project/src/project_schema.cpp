@@ -340,7 +340,7 @@ std::vector<SectionSchema> build_schema() {
       P("region_of_interest", T::Section, "store photons only inside this box; the photon targets count only those (every sensor must lie inside)").section("region of interest"),
       P("max_attempts_per_photon", T::Integer, "low-yield cap: main-pass attempts per target photon of a bin (0 = no cap)").at_least(0).def("256"),
       P("point_estimate", T::Choice, "sensors off a receiver plane (points, vertical and tilted grids): a final gather from each sensor, or the surface photons at a sensor lying on a surface").choices({"gather", "surface"}).def("gather"),
-      P("gather_rays", T::Integer, "final-gather rays per sensor (rounded up to a square)").range(1, 1048576).def("1024"),
+      P("gather_rays", T::Integer, "final-gather rays per sensor (rounded up to a square)").range(1, 65536).def("1024"),
       P("gather_bandwidth", T::Integer, "photons per lookup where a gather ray lands (all sources together)").range(1, 10000).def("32"),
   }});
   s.push_back({"region of interest", "a box, model coordinates, where photons are stored", {
