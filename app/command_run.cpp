@@ -35,6 +35,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     study::RunSettings settings;
     settings.force = options.force;
     settings.version = DAYPHOTON_VERSION;
+    settings.command = "dayphoton run " + proj.path;
     if (!options.output_dir.empty()) {
       settings.output_dir =
           projects.size() == 1
