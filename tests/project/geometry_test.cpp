@@ -107,8 +107,8 @@ std::map<std::string, std::vector<Vec3>> read_rad_polygons(const std::string& pa
 }
 
 TEST(Geometry, OfficeMatchesRadianceReferenceScene) {
-  const std::string path = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/scenes/office.rad";
-  if (!std::ifstream(path)) GTEST_SKIP() << "reference scene not found: " << path;
+  const std::string path = std::string(DAYPHOTON_TEST_DATA_DIR) + "/radiance/office.rad";
+  ASSERT_TRUE(std::ifstream(path)) << "reference scene not found: " << path;
   const auto ref = read_rad_polygons(path);
   ASSERT_EQ(ref.count("window"), 1u);
   const SceneDescription scene = build_scene_description(office_project());

@@ -45,8 +45,8 @@ TEST(SensorGrid, OfficeWorkPlaneMatchesReferenceOrder) {
       EXPECT_EQ(s.normal, Vec3(0, 0, 1));
     }
 
-  const std::string ref = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/sensors/grid_0p8m.pts";
-  if (!std::ifstream(ref)) GTEST_SKIP() << "reference sensors not found: " << ref;
+  const std::string ref = std::string(DAYPHOTON_TEST_DATA_DIR) + "/radiance/grid_0p8m.pts";
+  ASSERT_TRUE(std::ifstream(ref)) << "reference sensors not found: " << ref;
   Diagnostics diag;
   const std::vector<SensorPoint> expected = read_pts(ref, diag);
   ASSERT_FALSE(diag.has_errors()) << diag.format();
