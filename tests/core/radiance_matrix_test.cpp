@@ -1,5 +1,5 @@
 // RADIANCE matrix format: round trips in every format, foreign byte order, located errors,
-// and reading RADIANCE's own gendaymtx output from ../shared/refdata.
+// and reading RADIANCE's own gendaymtx output from tests/data/radiance.
 #include "dayphoton/core/radiance_matrix.h"
 
 #include <gtest/gtest.h>

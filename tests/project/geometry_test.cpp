@@ -1,5 +1,5 @@
 // Geometry stage (build_scene_description) on Project structs built in C++:
-// - the reference office (../shared/refdata/scenes/office.rad) gives floor 48 m^2 (normal +z),
+// - the reference office (tests/data/radiance/office.rad) gives floor 48 m^2 (normal +z),
 //   ceiling 48 m^2 (normal -z), 2 (6 x 3) + 2 (8 x 3) - 6 = 78 m^2 of wall, a 6 m^2 glazing
 //   port with normal +y (into the room), and the window/floor/ceiling polygons of office.rad;
 // - triangulations keep every surface's normal and area;

@@ -1,5 +1,5 @@
 // Sensor grids and point files:
-// - the office work-plane grid equals ../shared/refdata/sensors/grid_0p8m.pts (165 points,
+// - the office work-plane grid equals tests/data/radiance/grid_0p8m.pts (165 points,
 //   11 x 15, y rows outer, x inner, first (0.5, 0.5, 0.8), last (5.5, 7.5, 0.8));
 // - floating error never drops the last row (0.7 / 0.1 = 6.999999999999999);
 // - lattices are centred when the span is not a multiple of the spacing;

@@ -1,4 +1,4 @@
-// EPW reader: the real files in ../shared/weather read cleanly, and a table of corrupted
+// EPW reader: the real files (projects/office, tests/data/weather) read cleanly, and a table of corrupted
 // texts each gives its exact located message (file:line:field) or the documented handling
 // (docs/weather.md). A seeded fuzz loop checks that no corruption crashes the reader.
 #include "dayphoton/weather/epw_reader.h"
