@@ -77,11 +77,14 @@ OutputFolderBusy::OutputFolderBusy(const std::string& folder, const LockOwner& o
                          (std::filesystem::path(folder) / OutputLock::FileName).string() + ")"),
       m_owner(owner) {}
 
-OutputLock::OutputLock(std::string path, int fd, std::optional<LockOwner> taken_over)
-    : m_path(std::move(path)), m_fd(fd), m_taken_over(std::move(taken_over)) {}
+OutputLock::OutputLock(std::string path, int fd, LockOwner owner, std::optional<LockOwner> taken_over)
+    : m_path(std::move(path)), m_fd(fd), m_owner(std::move(owner)), m_taken_over(std::move(taken_over)) {}
 
 OutputLock::OutputLock(OutputLock&& other) noexcept
-    : m_path(std::move(other.m_path)), m_fd(other.m_fd), m_taken_over(std::move(other.m_taken_over)) {
+    : m_path(std::move(other.m_path)),
+      m_fd(other.m_fd),
+      m_owner(std::move(other.m_owner)),
+      m_taken_over(std::move(other.m_taken_over)) {
   other.m_fd = -1;
 }
 
@@ -116,9 +119,10 @@ OutputLock OutputLock::acquire(const std::string& dir, const std::string& comman
       continue;
     }
     std::optional<LockOwner> previous = parse_owner(read_all(fd));
+    const LockOwner self{static_cast<long>(::getpid()), host_name(), utc_now(), command};
     std::ostringstream text;
-    text << "pid " << ::getpid() << "\nhost " << host_name() << "\nstarted " << utc_now() << "\ncommand " << command
-         << "\n";
+    text << "pid " << self.pid << "\nhost " << self.host << "\nstarted " << self.started_utc << "\ncommand "
+         << self.command << "\n";
     const std::string s = text.str();
     if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, s.data(), s.size(), 0) != static_cast<ssize_t>(s.size())) {
       const int error = errno;
@@ -127,7 +131,7 @@ OutputLock OutputLock::acquire(const std::string& dir, const std::string& comman
       errno = error;
       fail("write", path);
     }
-    return OutputLock(path, fd, std::move(previous));
+    return OutputLock(path, fd, self, std::move(previous));
   }
   throw std::runtime_error("cannot take the lock file " + path + ": it keeps being replaced");
 }

@@ -7,11 +7,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <fstream>
 #include <sstream>
-
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 #include <tbb/parallel_for.h>
@@ -112,15 +109,6 @@ engine::CoefficientOptions coefficient_options(const project::Simulation& sim) {
 sky::PatchBasis basis_of(const project::Simulation& sim) {
   return sim.basis == project::SkyBasis::Tregenza ? sky::PatchBasis::tregenza()
                                                   : sky::PatchBasis::reinhart(sim.reinhart_mf);
-}
-
-std::string utc_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return text;
 }
 
 std::string join(const std::string& dir, const std::string& name) {
@@ -773,7 +761,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   // writers, and the outputs of the previous run, which this one replaces (output_manifest.h).
   const OutputLock lock = OutputLock::acquire(report.output_dir, settings.command);
   const std::size_t temporaries = remove_dead_temporaries(report.output_dir);
-  const std::string this_run = "pid " + std::to_string(::getpid()) + ", started " + utc_now();
+  const std::string this_run = lock.owner().describe();
   OutputManifest outputs = OutputManifest::begin(report.output_dir, this_run);
   const ArtifactStore store(join(report.output_dir, ".cache"));
   RunLog log(progress, join(report.output_dir, "run.log"));

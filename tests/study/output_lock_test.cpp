@@ -35,6 +35,8 @@ TEST(OutputLock, RecordsTheHolderAndRemovesTheFileOnRelease) {
   {
     const OutputLock lock = OutputLock::acquire(dir.string(), "dayphoton run p.yaml");
     EXPECT_FALSE(lock.taken_over());
+    EXPECT_EQ(lock.owner().pid, ::getpid());
+    EXPECT_EQ(lock.owner().command, "dayphoton run p.yaml");
     const std::string text = slurp(dir / OutputLock::FileName);
     EXPECT_NE(text.find("pid " + std::to_string(::getpid()) + "\n"), std::string::npos) << text;
     EXPECT_NE(text.find("started 20"), std::string::npos) << text;

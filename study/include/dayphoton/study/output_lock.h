@@ -48,14 +48,17 @@ class OutputLock {
   OutputLock(const OutputLock&) = delete;
   ~OutputLock();  ///< removes the lock file and releases the lock
 
+  /// This process as recorded in the lock file.
+  const LockOwner& owner() const { return m_owner; }
   /// The owner recorded in a lock file this run took over (its process had ended), if any.
   const std::optional<LockOwner>& taken_over() const { return m_taken_over; }
   const std::string& path() const { return m_path; }
 
  private:
-  OutputLock(std::string path, int fd, std::optional<LockOwner> taken_over);
+  OutputLock(std::string path, int fd, LockOwner owner, std::optional<LockOwner> taken_over);
   std::string m_path;
   int m_fd = -1;
+  LockOwner m_owner;
   std::optional<LockOwner> m_taken_over;
 };
 
