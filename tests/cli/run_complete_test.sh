@@ -11,77 +11,17 @@
 #  4. a fully cached re-run writes byte-identical results (the run's history is in run.log);
 #  5. a second run into a folder that a running run holds fails with exit 5, naming the
 #     holder's pid and start time; after the holder is killed, the next run takes the lock over
-#     and says so in run.log;
-#  6. (root only, else reported as skipped) a full disk (a small tmpfs) during a re-run: a
-#     clean error (exit 4, "No space left on device", no signal), the folder marked incomplete;
-#     with space again the run resumes from the cache and completes.
+#     and says so in run.log.
+# The full disk is run_disk_full_test.sh (root only).
 # Usage: DAYPHOTON=path/to/dayphoton bash run_complete_test.sh  (from the repository root)
 set -u
 bin=${DAYPHOTON:?set DAYPHOTON to the dayphoton executable}
 scratch=$(mktemp -d)
-mounted=""
-cleanup() {
-  [ -n "$mounted" ] && umount "$mounted" 2>/dev/null
-  rm -rf "$scratch"
-}
-trap cleanup EXIT
+trap 'rm -rf "$scratch"' EXIT
 fail() { echo "FAIL $*"; exit 1; }
+. "$(dirname "$0")/output_folder_checks.sh"
 
-# The office at small photon counts, sun spread (no sun bins): a run of a few seconds.
-mkdir -p "$scratch/office"
-cp projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw "$scratch/office/"
-sed -e 's/photons_per_bin: .*/photons_per_bin: 4000/' -e 's/images: true/images: false/' \
-    -e 's/sun: bins/sun: spread/' projects/office/project.yaml >"$scratch/office/first.yaml"
-# The changed inputs: other photons (a new photon pass) and no annual illuminance table.
-sed -e 's/photons_per_bin: .*/photons_per_bin: 6000/' -e 's/annual_illuminance: true/annual_illuminance: false/' \
-    "$scratch/office/first.yaml" >"$scratch/office/second.yaml"
 out="$scratch/out"
-
-# Prints the problems of a folder that claims to be complete; exit 0 if there are none.
-check_complete() {
-  python3 - "$1" <<'PY'
-import hashlib, json, os, sys
-out = sys.argv[1]
-problems = []
-if os.path.exists(os.path.join(out, "INCOMPLETE")): problems.append("INCOMPLETE present")
-if os.path.exists(os.path.join(out, ".dayphoton.lock")): problems.append("lock file left behind")
-summary = json.load(open(os.path.join(out, "summary.json")))
-listed = set()
-for f in summary["files"]:
-    listed.add(f["path"])
-    data = open(os.path.join(out, f["path"]), "rb").read()
-    if len(data) != f["bytes"] or hashlib.sha256(data).hexdigest() != f["sha256"]:
-        problems.append(f"{f['path']}: size or hash differs from summary.json")
-for root, dirs, files in os.walk(out):
-    dirs[:] = [d for d in dirs if d != ".cache"]
-    for name in files:
-        rel = os.path.relpath(os.path.join(root, name), out)
-        if rel not in listed and rel not in ("summary.json", "run.log"):
-            problems.append(f"{rel}: not in summary.json's files")
-for p in problems[:20]: print("  " + p)
-sys.exit(1 if problems else 0)
-PY
-}
-
-# Prints the problems of an interrupted folder: it must be marked incomplete and hold no
-# output older than the reference file $2 (the moment the interrupted run started).
-check_incomplete() {
-  python3 - "$1" "$2" <<'PY'
-import os, sys
-out, ref = sys.argv[1], os.path.getmtime(sys.argv[2])
-problems = []
-if os.path.exists(os.path.join(out, "summary.json")): problems.append("summary.json present")
-if not os.path.exists(os.path.join(out, "INCOMPLETE")): problems.append("no INCOMPLETE marker")
-for root, dirs, files in os.walk(out):
-    dirs[:] = [d for d in dirs if d != ".cache"]
-    for name in files:
-        path = os.path.join(root, name)
-        if os.path.getmtime(path) < ref:
-            problems.append(f"{os.path.relpath(path, out)}: left by the earlier run")
-for p in problems[:20]: print("  " + p)
-sys.exit(1 if problems else 0)
-PY
-}
 
 # Starts `run second.yaml` and kills it with SIGKILL once the file test "$1" succeeds.
 kill_when() {
@@ -153,36 +93,4 @@ grep -q "took over the lock of a run that no longer exists: pid $holder" "$out/r
   fail "run.log does not mention the stale lock: $(head -5 "$out/run.log")"
 problems=$(check_complete "$out") || fail "after taking over the lock: $problems"
 echo "ok   stale lock of a killed run taken over, with a note in run.log"
-
-# 6. A full disk, on a tmpfs (needs root; skipped otherwise).
-if [ "$(id -u)" != 0 ] || ! mkdir -p "$scratch/tmpfs" || ! mount -t tmpfs -o size=64m tmpfs "$scratch/tmpfs" 2>/dev/null; then
-  echo "skip full disk: needs root and a tmpfs mount"
-  echo "run_complete: all passed (full-disk case skipped)"
-  exit 0
-fi
-mounted="$scratch/tmpfs"
-disk="$mounted/out"
-"$bin" run "$scratch/office/first.yaml" --output "$disk" --quiet || fail "the run on the tmpfs failed"
-# A new sensor spacing: photons come from the cache, coefficients and every output are new.
-# Fill the disk but ~100 KB, less than the new coefficients artefact (~870 KB).
-sed 's/spacing: 0.5/spacing: 0.4/' "$scratch/office/first.yaml" >"$scratch/office/spacing.yaml"
-dd if=/dev/zero of="$mounted/filler" bs=64k 2>/dev/null
-rm -f "$mounted/filler"; dd if=/dev/zero of="$mounted/filler" bs=1k count=$(( $(df -k --output=avail "$mounted" | tail -1) - 100 )) 2>/dev/null
-"$bin" run "$scratch/office/spacing.yaml" --output "$disk" --quiet 2>"$scratch/full.err"
-status=$?
-[ $status -eq 4 ] || fail "on a full disk: exit $status (expected 4): $(cat "$scratch/full.err")"
-grep -q "No space left on device" "$scratch/full.err" || fail "on a full disk: $(cat "$scratch/full.err")"
-[ -e "$disk/summary.json" ] && fail "on a full disk: summary.json present"
-[ -e "$disk/INCOMPLETE" ] || fail "on a full disk: no INCOMPLETE marker"
-[ -e "$disk/.dayphoton.lock" ] && fail "on a full disk: the lock file was left behind"
-echo "ok   full disk: exit 4, $(head -1 "$scratch/full.err" | cut -c1-150)"
-rm -f "$mounted/filler"
-"$bin" run "$scratch/office/spacing.yaml" --output "$disk" --quiet || fail "the run after freeing space failed"
-grep -q "photons: traced 0 of 146 sources" "$disk/run.log" || fail "resumed: $(grep photons "$disk/run.log")"
-problems=$(check_complete "$disk") || fail "after the full disk: $problems"
-"$bin" run "$scratch/office/spacing.yaml" --output "$scratch/reference" --quiet || fail "the reference run failed"
-for f in workplane/daylight_factor.csv workplane/coefficients_sky.mtx workplane/metrics.csv; do
-  cmp -s "$disk/$f" "$scratch/reference/$f" || fail "$f differs between the resumed run and a fresh one"
-done
-echo "ok   with space again: resumed from the cache (photons not traced), complete, same results as a fresh run"
 echo "run_complete: all passed"
