@@ -76,6 +76,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     study::RunSettings settings;
     settings.force = options.force;
     settings.version = DAYPHOTON_VERSION;
+    settings.command = "dayphoton run " + proj.path;
     settings.output_dir = folders[i];
     const study::RunReport report = study::run_study(proj, settings, progress);
     progress.print_summary();

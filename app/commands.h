@@ -18,6 +18,7 @@ enum ExitCode : int {
   ExitUsageError = 2,      ///< bad command line
   ExitNotImplemented = 3,  ///< the requested step does not exist yet (said plainly, nothing written)
   ExitInternalError = 4,   ///< a bug or an I/O failure
+  ExitOutputBusy = 5,      ///< `run`: another running dayphoton holds the output folder's lock
 };
 
 /// A command line that parses but makes no sense (bad --basis, conflicting options): exit 2.

@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/study/output_lock.h"
 
 #ifndef DAYPHOTON_VERSION
 #define DAYPHOTON_VERSION "unknown"
@@ -158,6 +159,9 @@ int main(int argc, char** argv) {
     }
     if (report_cmd->parsed()) return run_report(report, std::cout);
     if (render_cmd->parsed()) return run_render(render, std::cout);
+  } catch (const dayphoton::study::OutputFolderBusy& e) {
+    std::cerr << "dayphoton: error: " << e.what() << '\n';
+    return ExitOutputBusy;
   } catch (const dayphoton::InputError& e) {
     std::cerr << e.what();
     return ExitInputError;

@@ -1,5 +1,5 @@
 // Office daylight factor against RADIANCE: traces the reference office (projects/office, the
-// room of ../shared/refdata) with the engine alone, multiplies the coefficients by the CIE
+// room of tests/data/radiance) with the engine alone, multiplies the coefficients by the CIE
 // overcast sky vector (ground reflectance 0.2, as gensky -g 0.2) and compares each sensor
 // with refdata's rtrace result (a_daylight_factor/df_office.csv, DF_main_pct), then the
 // per-bin sums over sensors with refdata's rfluxmtx matrix (b_dc_classic).
@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
   const int direct_samples = argc > 4 ? std::stoi(argv[4]) : 64;
   const double ground_factor = argc > 5 ? std::stod(argv[5]) : 1.0;
   const std::string source_dir = DAYPHOTON_BENCH_SOURCE_DIR;
-  const std::string shared = source_dir + "/../shared";
+  const std::string radiance = source_dir + "/tests/data/radiance";  // RADIANCE results, README.md there
 
   const project::Project proj = project::load_project(source_dir + "/projects/office/project.yaml");
   const SceneDescription description = project::build_scene_description(proj);
@@ -96,8 +96,8 @@ int main(int argc, char** argv) {
   // skybright.cal blends sky and ground within ~10 deg of the horizon, which the CIE formula
   // does not, so it is the vector to compare with RADIANCE. Ours is printed alongside.
   const RadianceMatrix sv_ours = sky::sky_vector(*overcast, basis, ground);
-  const RadianceMatrix sv = RadianceMatrix::read_file(shared + "/refdata/results/a_daylight_factor/skyvec_overcast_m1.vec");
-  const std::vector<double> ref = test::read_reference_df(shared + "/refdata/results/a_daylight_factor/df_office.csv");
+  const RadianceMatrix sv = RadianceMatrix::read_file(radiance + "/skyvec_overcast_m1.vec");
+  const std::vector<double> ref = test::read_reference_df(radiance + "/df_office.csv");
   double sum2 = 0, worst = 0, mean_ours = 0, mean_ref = 0;
   std::size_t worst_at = 0;
   std::vector<double> row_ours(15, 0), row_ref(15, 0);
@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
   std::printf("\n");
 
   // Per-bin sums over sensors against rfluxmtx (photometric, per unit radiance).
-  const RadianceMatrix dc = test::read_gzip_matrix(shared + "/refdata/results/b_dc_classic/office_dc_classic.mtx.gz");
+  const RadianceMatrix dc = test::read_gzip_matrix(radiance + "/office_dc_classic.mtx.gz");
   double total_ref = 0;
   std::vector<double> ours_bin(c.sources, 0), ref_bin(c.sources, 0);
   for (std::size_t p = 0; p < c.sources; ++p) {

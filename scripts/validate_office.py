@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Validate dayphoton on the reference office against RADIANCE (../shared/refdata).
+"""Validate dayphoton on the reference office against RADIANCE (tests/data/radiance).
 
 Runs `dayphoton run projects/office/project.yaml` and `dayphoton annual`, compares with the
 RADIANCE results of refdata and writes the side-by-side tables into docs/validation.md
@@ -29,7 +29,7 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-REF = os.path.join(ROOT, "..", "shared", "refdata", "results")
+REF = os.path.join(ROOT, "tests", "data", "radiance")  # RADIANCE 5.4a results, README.md there
 EPW = os.path.join(ROOT, "projects", "office", "USA_CA_Oakland.Intl.AP.724930_TMY3.epw")
 W = (0.265, 0.670, 0.065)
 
@@ -93,8 +93,8 @@ def main():
     rows, cols, _, c = read_matrix(os.path.join(grid, "coefficients_sky.mtx"))
 
     # Daylight factor with RADIANCE's own overcast sky vector (gensky -c -B 55.866 -g 0.2 | genskyvec).
-    _, _, _, sv = read_matrix(os.path.join(REF, "a_daylight_factor", "skyvec_overcast_m1.vec"))
-    ref_df = [float(r["DF_main_pct"]) for r in read_csv(os.path.join(REF, "a_daylight_factor", "df_office.csv"))]
+    _, _, _, sv = read_matrix(os.path.join(REF, "skyvec_overcast_m1.vec"))
+    ref_df = [float(r["DF_main_pct"]) for r in read_csv(os.path.join(REF, "df_office.csv"))]
     ours_df = []
     for s in range(rows):
         e = 0.0
@@ -111,7 +111,7 @@ def main():
     own_rms = math.sqrt(sum(x * x for x in own_rel) / len(own_rel))
 
     # Per-bin sums over sensors against rfluxmtx.
-    _, _, _, dc = read_matrix(os.path.join(REF, "b_dc_classic", "office_dc_classic.mtx.gz"))
+    _, _, _, dc = read_matrix(os.path.join(REF, "office_dc_classic.mtx.gz"))
     ours_bin = [sum(photometric(c, (s * cols + p) * 3) for s in range(rows)) for p in range(cols)]
     ref_bin = [sum(photometric(dc, (s * cols + p) * 3) for s in range(rows)) for p in range(cols)]
     total = sum(ref_bin)
@@ -125,7 +125,7 @@ def main():
     # metrics.csv uses the default exact sun: docs/sun.md.)
     compat_out = os.path.join(work, "annual_compat")
     run([args.dayphoton, "annual", "--coefficients", grid, "--weather", EPW, "--output", compat_out, "--quiet"])
-    ref_m = read_csv(os.path.join(REF, "c_annual", "office_annual_metrics_classic.csv"))
+    ref_m = read_csv(os.path.join(REF, "office_annual_metrics_classic.csv"))
     ours_m = read_csv(os.path.join(compat_out, "metrics.csv"))
     def col(rows_, key):
         return [float(r[key]) for r in rows_]
@@ -169,7 +169,7 @@ def main():
     # Context for the annual comparison: the annual reference is RADIANCE's classic DC matrix
     # (result b) times its sky; at the back of the room that matrix is below RADIANCE's own
     # rtrace (result a), which our coefficients follow.
-    df_rows = read_csv(os.path.join(REF, "a_daylight_factor", "df_office.csv"))
+    df_rows = read_csv(os.path.join(REF, "df_office.csv"))
     back = range(13 * 11, 15 * 11)
     dc_vs_rtrace = sum(float(df_rows[i]["DF_dc_classic_pct"]) for i in back) / sum(ref_df[i] for i in back)
     check_vs_rtrace = sum(float(df_rows[i]["DF_check_pct"]) for i in back) / sum(ref_df[i] for i in back)

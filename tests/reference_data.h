@@ -1,6 +1,5 @@
-// Test support: reading the RADIANCE reference results in ../shared/refdata, some of which
-// are gzip-compressed (decompressed with the system's gzip, so no zlib dependency).
-// Tests skip themselves when ../shared is absent (a user's clone), see each caller.
+// Test support: reading the RADIANCE reference results in tests/data/radiance (README.md
+// there), some of which are gzip-compressed (decompressed with the system's gzip).
 #pragma once
 
 #include <cstdio>
@@ -13,6 +12,12 @@
 #include "dayphoton/core/radiance_matrix.h"
 
 namespace dayphoton::test {
+
+/// Our gendaymtx-compatible sky matrices agree with gendaymtx's within this relative
+/// difference on every element above 1 % of its hour's maximum (gendaymtx prints 3
+/// significant digits, up to 0.5 % rounding): asserted by tests/sky/sky_matrix_test.cpp, and
+/// the base of the DA300 bound in tests/study/annual_study_test.cpp.
+constexpr double GendaymtxElementTolerance = 0.01;
 
 /// The whole decompressed text of a .gz file; throws if gzip cannot read it.
 inline std::string read_gzip_text(const std::string& path) {

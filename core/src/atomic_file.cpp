@@ -1,13 +1,16 @@
 #include "dayphoton/core/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <vector>
 
 namespace dayphoton {
 
@@ -49,6 +52,32 @@ void write_file_atomically(const std::string& path, const std::function<void(std
 
 void write_file_atomically(const std::string& path, const std::string& contents) {
   write_file_atomically(path, [&](std::ostream& out) { out << contents; });
+}
+
+long temporary_file_owner(const std::string& file_name) {
+  static const std::string marker = ".tmp.";
+  const std::size_t at = file_name.rfind(marker);
+  if (at == std::string::npos || at == 0) return 0;
+  const std::string digits = file_name.substr(at + marker.size());
+  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return 0;
+  return std::stol(digits);
+}
+
+std::size_t remove_dead_temporaries(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return 0;
+  std::vector<fs::path> dead;
+  for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end;
+       !ec && it != end; it.increment(ec)) {
+    if (!it->is_regular_file(ec)) continue;
+    const long pid = temporary_file_owner(it->path().filename().string());
+    // kill(pid, 0) probes without signalling: ESRCH means no such process (POSIX.1-2017, kill()).
+    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) dead.push_back(it->path());
+  }
+  std::size_t removed = 0;
+  for (const fs::path& p : dead) removed += fs::remove(p, ec) ? 1 : 0;
+  return removed;
 }
 
 }  // namespace dayphoton

@@ -118,6 +118,11 @@ sky::SkyMatrixOptions sun_excluded_sky_options(double ground_reflectance) {
   return o;
 }
 
+std::string sky_and_suns_description(const weather::EpwFile& epw, const sky::PatchBasis& basis) {
+  return "Perez sky matrix without the sun (gendaymtx -s conventions, MF " + std::to_string(basis.multiplication_factor()) +
+         ") from " + epw.source_name + "; sun from sun bins (indirect) and exact hourly shadow rays (direct)";
+}
+
 SkyAndSuns annual_sky_and_suns(const weather::EpwFile& epw, const sky::PatchBasis& basis,
                                sky::SkyMatrixOptions options) {
   options.sun = sky::SunInMatrix::None;
@@ -126,9 +131,7 @@ SkyAndSuns annual_sky_and_suns(const weather::EpwFile& epw, const sky::PatchBasi
   result.sky.matrix = std::move(built.matrix);
   result.sky.steps = time_stamps(epw);
   result.sky.daylight_hours_quantity = daylight_hours_quantity(epw, result.sky.daylight_hours_source);
-  result.sky.description = "Perez sky matrix without the sun (gendaymtx -s conventions, MF " +
-                           std::to_string(basis.multiplication_factor()) + ") from " + epw.source_name +
-                           "; sun from sun bins (indirect) and exact hourly shadow rays (direct)";
+  result.sky.description = sky_and_suns_description(epw, basis);
   result.suns = suns_from_matrix(suns_to_matrix(built.suns));  // the cache's float rounding
   return result;
 }

@@ -932,7 +932,13 @@ std::string summary_section(const json& summary, const std::string& results_dir,
   const json v = summary.value("versions", json::object());
   for (auto it = v.begin(); it != v.end(); ++it) versions.emplace_back("run: " + esc(it.key()), json_scalar(*it));
   s << key_value_table(versions);
-  s << "<h3 id=\"run-time\">Run time</h3><table class=\"grid-table\"><tr><th>step</th><th>work</th><th>seconds</th><th>source</th></tr>";
+  s << "<h3 id=\"run-time\">Run time</h3>";
+  if (!summary.contains("timings")) {
+    // Since results are identical whether computed or cached, the run's history is in its log.
+    s << "<p class=\"note\">What this run computed, what came from the cache, and the time of each step: "
+         "<code>run.log</code> in the results folder.</p>";
+  } else {
+  s << "<table class=\"grid-table\"><tr><th>step</th><th>work</th><th>seconds</th><th>source</th></tr>";
   double total = 0;
   for (const json& t : summary.value("timings", json::array())) {
     const double sec = t.value("seconds", 0.0);
@@ -947,6 +953,7 @@ std::string summary_section(const json& summary, const std::string& results_dir,
     s << "<p class=\"note\">Photon sources traced: " << cache.value("sources_traced", 0) << " of "
       << cache.value("sources", 0) << " (" << cache.value("sources_cached", 0) << " from the cache); grids estimated: "
       << cache.value("grids_estimated", 0) << ", from the cache: " << cache.value("grids_cached", 0) << ".</p>";
+  }
   const json notes = summary.value("notes", json::array());
   if (!notes.empty()) {
     s << "<h3>Notes</h3><ul>";
@@ -1048,6 +1055,15 @@ json read_summary(const std::string& results_dir) {
   return summary;
 }
 
+json parse_summary(const std::string& results_dir, const std::string& text) {
+  json summary = json::parse(text, nullptr, false);
+  if (summary.is_discarded() || !summary.is_object())
+    throw InputError(SourceLocation{join(results_dir, "summary.json"), 0, 0}, "not a JSON object");
+  return summary;
+}
+
+std::string report_html_of(const std::string& results_dir, const json& summary);
+
 /// A grid or variant name read back from summary.json, as a folder name: it must pass the
 /// rule `run` applied to it (project/path_name.h), so that a hand-edited summary cannot make
 /// the report read or write outside the results folder.
@@ -1087,8 +1103,17 @@ json operated_grids(const json& summary) {
 }  // namespace
 
 std::string report_html(const std::string& results_dir) {
+  return report_html_of(results_dir, read_summary(results_dir));
+}
+
+std::string report_html(const std::string& results_dir, const std::string& summary_json) {
+  return report_html_of(results_dir, parse_summary(results_dir, summary_json));
+}
+
+namespace {
+
+std::string report_html_of(const std::string& results_dir, const json& summary) {
   PageIds page;
-  const json summary = read_summary(results_dir);
   std::string geometry_note;
   const std::map<std::string, PlanGeometry> geometry = project_geometry(summary.value("project", std::string()), geometry_note);
 
@@ -1141,6 +1166,8 @@ std::string report_html(const std::string& results_dir) {
   return html.str();
 }
 
+}  // namespace
+
 std::string write_report(const std::string& results_dir, const std::string& output_path) {
   const std::string path = output_path.empty() ? join(results_dir, "report.html") : output_path;
   write_file_atomically(path, report_html(results_dir));
@@ -1148,9 +1175,18 @@ std::string write_report(const std::string& results_dir, const std::string& outp
 }
 
 std::vector<std::string> write_images_and_report(const std::string& results_dir, const ViewOutputs& outputs) {
+  std::ifstream in(join(results_dir, "summary.json"), std::ios::binary);
+  if (!in) read_summary(results_dir);  // throws the located error
+  std::ostringstream text;
+  text << in.rdbuf();
+  return write_images_and_report(results_dir, outputs, text.str());
+}
+
+std::vector<std::string> write_images_and_report(const std::string& results_dir, const ViewOutputs& outputs,
+                                                 const std::string& summary_json) {
   std::vector<std::string> written;
+  const json summary = parse_summary(results_dir, summary_json);
   if (outputs.images) {
-    const json summary = read_summary(results_dir);
     auto grid_images = [&](const std::string& variant, const json& g) {
       const std::vector<std::string> w = write_grid_images(grid_folder(results_dir, variant, g));
       written.insert(written.end(), w.begin(), w.end());
@@ -1162,10 +1198,15 @@ std::vector<std::string> write_images_and_report(const std::string& results_dir,
       const std::vector<std::string> w = write_grid_images(grid_folder_in(results_dir, join(results_dir, "operated"), g));
       written.insert(written.end(), w.begin(), w.end());
     }
-    const std::vector<std::string> w = write_sky_images(results_dir, outputs.sky_hour);
+    const std::vector<std::string> w = write_sky_images(results_dir, outputs.sky_hour, summary.value("weather", std::string()),
+                                                        summary.value("simulation", json::object()).dump());
     written.insert(written.end(), w.begin(), w.end());
   }
-  if (outputs.report) written.push_back(write_report(results_dir));
+  if (outputs.report) {
+    const std::string path = join(results_dir, "report.html");
+    write_file_atomically(path, report_html_of(results_dir, summary));
+    written.push_back(path);
+  }
   return written;
 }
 

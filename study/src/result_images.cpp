@@ -389,9 +389,15 @@ std::vector<std::string> write_sky_images(const std::string& results_dir, const 
   const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
   if (summary.is_discarded() || !summary.is_object())
     throw InputError(SourceLocation{summary_path, 0, 0}, "not a JSON object");
-  const std::string weather = summary.value("weather", std::string());
+  return write_sky_images(results_dir, hour, summary.value("weather", std::string()),
+                          summary.value("simulation", nlohmann::json::object()).dump(), size);
+}
+
+std::vector<std::string> write_sky_images(const std::string& results_dir, const YearHour& hour,
+                                          const std::string& weather, const std::string& simulation_json, int size) {
   if (weather.empty() || !fs::exists(weather)) return {};
-  const nlohmann::json sim = summary.value("simulation", nlohmann::json::object());
+  nlohmann::json sim = nlohmann::json::parse(simulation_json, nullptr, false);
+  if (!sim.is_object()) sim = nlohmann::json::object();
   const double rho = sim.value("ground_reflectance", 0.2);
   const sky::PatchBasis basis = sim.value("basis", std::string("tregenza")) == "reinhart"
                                     ? sky::PatchBasis::reinhart(sim.value("reinhart_mf", 1))

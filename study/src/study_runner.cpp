@@ -4,6 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -29,6 +33,8 @@
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/operated_shading.h"
+#include "dayphoton/study/output_lock.h"
+#include "dayphoton/study/output_manifest.h"
 #include "dayphoton/study/report_html.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/weather/epw_reader.h"
@@ -125,19 +131,33 @@ std::string join(const std::string& dir, const std::string& name) {
   return (fs::path(dir) / name).string();
 }
 
-/// The run log: every line also goes to the progress output.
+/// The run log (<output>/run.log): every line also goes to the progress output, and to the
+/// file at once, so an interrupted run's log says how far it got. The run's history (what was
+/// computed or came from the cache, step times) is here, not in the results, so that a
+/// repeated run writes byte-identical results.
 class RunLog {
  public:
-  explicit RunLog(Progress& progress) : m_progress(progress) {}
-  void line(const std::string& text) {
-    m_text += text + "\n";
-    m_progress.note(text);
+  RunLog(Progress& progress, const std::string& path)
+      : m_progress(progress), m_path(path), m_file(path, std::ios::trunc | std::ios::binary) {
+    if (!m_file) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
   }
-  const std::string& text() const { return m_text; }
+  void line(const std::string& text) {
+    m_progress.note(text);
+    m_file << text << "\n";
+    m_file.flush();
+    if (!m_file) throw std::runtime_error("cannot write " + m_path + ": " + std::strerror(errno));
+  }
+  /// A line for the file only (not shown as progress).
+  void quiet_line(const std::string& text) {
+    m_file << text << "\n";
+    m_file.flush();
+    if (!m_file) throw std::runtime_error("cannot write " + m_path + ": " + std::strerror(errno));
+  }
 
  private:
   Progress& m_progress;
-  std::string m_text;
+  std::string m_path;
+  std::ofstream m_file;
 };
 
 
@@ -192,6 +212,7 @@ struct RunContext {
   RunLog& log;
   RunReport& report;
   const ArtifactStore& store;
+  OutputManifest& outputs;  ///< every output file written, for summary.json `files`
   std::optional<AnnualSky> sky;  ///< built or loaded once, on first use (sun spread)
   std::optional<SkyAndSuns> sky_and_suns;  ///< the same for the sun-bins mode
 };
@@ -246,7 +267,7 @@ const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBas
   if (cached) {
     sky.steps = time_stamps(epw);
     sky.daylight_hours_quantity = daylight_hours_quantity(epw, sky.daylight_hours_source);
-    sky.description = "Perez sky matrix (RADIANCE-compatible, sun spread into patches) from the cache";
+    sky.description = annual_sky_description(epw, basis, radiance_compatible_sky_options(rho_g));
     ctx.report.sky_matrix_cached = true;
     ctx.progress.cached("sky matrix");
     ctx.log.line("sky matrix: cached");
@@ -288,9 +309,7 @@ const SkyAndSuns& sky_and_suns(const project::Project& project, const sky::Patch
   if (cached) {
     result.sky.steps = time_stamps(epw);
     result.sky.daylight_hours_quantity = daylight_hours_quantity(epw, result.sky.daylight_hours_source);
-    result.sky.description =
-        "Perez sky matrix without the sun (gendaymtx -s conventions) from the cache; sun from sun bins "
-        "(indirect) and exact hourly shadow rays (direct)";
+    result.sky.description = sky_and_suns_description(epw, basis);
     ctx.report.sky_matrix_cached = true;
     ctx.progress.cached("sky matrix");
     ctx.log.line("sky matrix: cached");
@@ -424,11 +443,8 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
     log.line(prefix + "sun photons: traced " + std::to_string(n_traced) + " of " + std::to_string(n_lit) +
              " sun bins (" + std::to_string(n_lit - n_traced) + " cached)");
     photons = engine::merge_traced_photons(std::move(per_bin));
-    for (const std::string& note : {capped_note(photons, tracing, "sun bins"), nothing_stored_note(photons, "sun bins")}) {
-      if (note.empty()) continue;
-      log.line(prefix + "sun photons: " + note);
-      report.notes.push_back(prefix + "sun photons: " + note);
-    }
+    for (const std::string& note : {capped_note(photons, tracing, "sun bins"), nothing_stored_note(photons, "sun bins")})
+      if (!note.empty()) log.line(prefix + "sun photons: " + note);
     for (const engine::SourceTally& t : photons.tallies) report.sun_bins_capped += t.capped ? 1 : 0;
   }
 
@@ -597,11 +613,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
              std::to_string(sources.size()) + " sources (" +
              std::to_string(sources.size() - n_traced) + " cached)");
     photons = engine::merge_traced_photons(std::move(per_source));
-    for (const std::string& note : {capped_note(photons, tracing, "sources"), nothing_stored_note(photons, "sources")}) {
-      if (note.empty()) continue;
-      log.line(prefix + "photons: " + note);
-      report.notes.push_back(prefix + "photons: " + note);
-    }
+    for (const std::string& note : {capped_note(photons, tracing, "sources"), nothing_stored_note(photons, "sources")})
+      if (!note.empty()) log.line(prefix + "photons: " + note);
     for (const engine::SourceTally& t : photons.tallies) report.sources_capped += t.capped ? 1 : 0;
   }
 
@@ -647,11 +660,16 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     coefficient_matrices.push_back(coefficients[g]->to_matrix());
     const RadianceMatrix& c = coefficient_matrices.back();
     write_sensors_csv(grid.points, join(folder, "sensors.csv"));
+    ctx.outputs.record(join(folder, "sensors.csv"));
     nlohmann::json gj = {{"name", grid.name}, {"sensors", grid.points.size()}, {"folder", folder}};
-    if (project.outputs.coefficients) c.write_file(join(folder, "coefficients_sky.mtx"), matrix_format);
+    if (project.outputs.coefficients) {
+      c.write_file(join(folder, "coefficients_sky.mtx"), matrix_format);
+      ctx.outputs.record(join(folder, "coefficients_sky.mtx"));
+    }
     if (project.outputs.daylight_factor) {
       const std::vector<double> df = daylight_factor_percent(c, overcast_vector, OvercastHorizontalLux);
       write_daylight_factor_csv(grid.points, df, join(folder, "daylight_factor.csv"));
+      ctx.outputs.record(join(folder, "daylight_factor.csv"));
       const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent);
       nlohmann::json areas = nlohmann::json::array();
       for (const auto& [threshold, area] : st.area_at_or_above_percent)
@@ -687,6 +705,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
                                    "disc radiance; columns = rows of sun_bins.csv");
         c.write_file(join(folders[g], "coefficients_sun.mtx"), matrix_format);
         write_sun_bins_csv(bins, ss.suns, join(folders[g], "sun_bins.csv"));
+        ctx.outputs.record({join(folders[g], "coefficients_sun.mtx"), join(folders[g], "sun_bins.csv")});
       }
       if (!annual) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
@@ -694,7 +713,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       const metrics::IlluminanceTable indirect = indirect_sun_table(sun[g].bin_coefficients, bins, ss.suns, ss.sky.steps);
       const AnnualStudy study =
           compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, direct, indirect, annual_settings);
-      write_annual_outputs(study, grid.points, annual_settings, folders[g], which);
+      ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       if (keep) keep->grids.push_back({grid.name, grid.points, study.illuminance, direct});
       progress.advance(ss.sky.steps.size());
       progress.end();
@@ -706,7 +725,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
       const AnnualStudy study = compute_annual_study(coefficient_matrices[g], sky, annual_settings);
-      write_annual_outputs(study, grid.points, annual_settings, folders[g], which);
+      ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       progress.advance(sky.steps.size());
       progress.end();
       grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
@@ -741,10 +760,12 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
             " % of the sensors see direct sun in '" + open_name + "', else '" + open_name + "'; " + ss.sky.description);
     std::filesystem::create_directories(folder);
     write_sensors_csv(o.sensors, join(folder, "sensors.csv"));
-    write_annual_outputs(operated.study, o.sensors, settings, folder, which);
+    ctx.outputs.record(join(folder, "sensors.csv"));
+    ctx.outputs.record(write_annual_outputs(operated.study, o.sensors, settings, folder, which));
     write_shading_schedule_csv(operated, join(folder, "shading_schedule.csv"));
     const std::string operation = operation_json(operated, rule, open_name, shaded_name);
     write_file_atomically(join(folder, "operation.json"), operation + "\n");
+    ctx.outputs.record({join(folder, "shading_schedule.csv"), join(folder, "operation.json")});
     ctx.progress.advance(o.illuminance.step_count());
     ctx.progress.end();
     ctx.log.line("operated " + o.name + ": '" + shaded_name + "' in " + std::to_string(operated.schedule.shaded_steps()) +
@@ -769,9 +790,22 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   const project::Simulation& sim = project.simulation;
   report.output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
   fs::create_directories(report.output_dir);
+  // One run per folder (output_lock.h); then what earlier runs left: temporaries of killed
+  // writers, and the outputs of the previous run, which this one replaces (output_manifest.h).
+  const OutputLock lock = OutputLock::acquire(report.output_dir, settings.command);
+  const std::size_t temporaries = remove_dead_temporaries(report.output_dir);
+  const std::string this_run = lock.owner().describe();
+  OutputManifest outputs = OutputManifest::begin(report.output_dir, this_run);
   const ArtifactStore store(join(report.output_dir, ".cache"));
-  RunLog log(progress);
+  RunLog log(progress, join(report.output_dir, "run.log"));
   log.line("project " + project.path + " -> " + report.output_dir);
+  log.quiet_line("run: " + this_run);
+  if (lock.taken_over())
+    log.line("took over the lock of a run that no longer exists: " + lock.taken_over()->describe());
+  if (temporaries > 0)
+    log.line("removed " + std::to_string(temporaries) + " temporary file(s) of interrupted writes");
+  if (outputs.stale_removed() > 0)
+    log.line("removed " + std::to_string(outputs.stale_removed()) + " output file(s) of the previous run");
   if (sim.sun == project::SunMode::Bins)
     report.notes.push_back(
         "sun: sun bins (Reinhart MF " + std::to_string(sim.sun_mf) +
@@ -797,7 +831,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     return nullptr;
   };
 
-  RunContext ctx{settings, progress, log, report, store, std::nullopt, std::nullopt};
+  RunContext ctx{settings, progress, log, report, store, outputs, std::nullopt, std::nullopt};
   // The project as written is the base case, in <output>/<grid>/; each variant is studied
   // in addition, in <output>/variants/<variant>/<grid>/ (a folder no grid name can clash with).
   nlohmann::json grids = run_case(project, "", report.output_dir, ctx, keep(project::BaseCaseName));
@@ -841,13 +875,6 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                                            "interpolated from sun bins"
                                          : "RADIANCE-compatible Perez sky matrix (gendaymtx conventions), sun "
                                            "spread into patches"}}},
-      {"cache", {{"sources", report.sources}, {"sources_traced", report.sources_traced},
-                 {"sources_cached", report.sources_cached},
-                 {"grids_estimated", report.grids_estimated}, {"grids_cached", report.grids_cached},
-                 {"sun_bins", report.sun_bins}, {"sun_bins_lit", report.sun_bins_lit},
-                 {"sun_bins_traced", report.sun_bins_traced}}},
-      {"photon_cap", {{"sources_capped", report.sources_capped},
-                      {"sun_bins_capped", report.sun_bins_capped}}},
       {"grids", grids},
       {"variants", variants},
       {"notes", report.notes}};
@@ -858,21 +885,39 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     summary["simulation"]["sun_bandwidth"] = sun_bin_bandwidth(static_cast<std::size_t>(sim.bandwidth));
     summary["simulation"]["sun_direct_samples"] = SunDirectSamples;
   }
-  nlohmann::json timings = nlohmann::json::array();
-  for (const Progress::StepTime& s : progress.steps())
-    timings.push_back({{"step", s.name}, {"seconds", s.seconds}, {"work", s.work}, {"unit", s.unit},
-                       {"cached", s.cached}});
-  summary["timings"] = timings;
-  write_file_atomically(join(report.output_dir, "summary.json"), json_text(summary) + "\n");
-  write_file_atomically(join(report.output_dir, "run.log"), log.text());
-  // 8. Images and report.html, from the files just written (docs/report.md).
+  // 7b. The run's history goes to the log only (a repeated run must write the same results).
+  log.quiet_line("cache: traced " + std::to_string(report.sources_traced) + " of " + std::to_string(report.sources) +
+                 " sources (" + std::to_string(report.sources_cached) + " cached); estimated " +
+                 std::to_string(report.grids_estimated) + " grid(s), " + std::to_string(report.grids_cached) +
+                 " cached; sun bins " + std::to_string(report.sun_bins) + ", lit " + std::to_string(report.sun_bins_lit) +
+                 ", traced " + std::to_string(report.sun_bins_traced));
+  log.quiet_line("photon cap: " + std::to_string(report.sources_capped) + " source(s), " +
+                 std::to_string(report.sun_bins_capped) + " sun bin(s) capped (of those traced or read in this run)");
+  // 8. Images and report.html from the files just written and the summary (docs/report.md).
+  const std::string summary_text = json_text(summary) + "\n";
   if (project.outputs.images || project.outputs.report) {
     progress.start("images and report", 1, "report");
-    write_images_and_report(report.output_dir,
-                            ViewOutputs{project.outputs.images, project.outputs.report, {}});
+    outputs.record(write_images_and_report(report.output_dir,
+                                           ViewOutputs{project.outputs.images, project.outputs.report, {}},
+                                           summary_text));
     progress.advance(1);
     progress.end();
   }
+  for (const Progress::StepTime& st : progress.steps()) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.2f s", st.seconds);
+    log.quiet_line("time: " + st.name + ": " +
+                   (st.cached ? std::string("cached") : std::string(seconds) + " (" + std::to_string(st.work) + " " + st.unit + ")"));
+  }
+  // 9. summary.json last, with the size and hash of every output: the folder is complete.
+  nlohmann::json files = nlohmann::json::array();
+  for (const ManifestEntry& e : outputs.entries())
+    files.push_back({{"path", e.path}, {"bytes", e.bytes}, {"sha256", e.sha256}});
+  summary["files"] = files;
+  write_file_atomically(join(report.output_dir, OutputManifest::SummaryName), json_text(summary) + "\n");
+  outputs.finish();
+  log.quiet_line("complete: " + std::string(OutputManifest::SummaryName) + " lists " + std::to_string(files.size()) +
+                 " output files");
   return report;
 }
 

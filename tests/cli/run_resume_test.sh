@@ -3,7 +3,7 @@
 #  1. a run killed with SIGKILL in the middle of the photon pass, run again, finishes from
 #     what it cached and its results are byte-identical to an uninterrupted run;
 #  2. a second run with nothing changed traces nothing, and its results, all from the cache,
-#     are byte-identical to the first;
+#     are byte-identical to the first (summary.json and grid_metrics.json included);
 #  3. a changed sensor spacing re-estimates without re-tracing photons;
 #  4. a changed weather file re-multiplies only.
 # Usage: DAYPHOTON=path/to/dayphoton bash run_resume_test.sh  (from the repository root)
@@ -47,8 +47,10 @@ done
 echo "ok   resumed results are byte-identical to an uninterrupted run"
 
 # 2. Nothing changed: no tracing, no estimating, sky matrix from the cache; same bytes.
+# summary.json and grid_metrics.json included: the run's history (cache counts, timings, "from
+# the cache") is in run.log only.
 outputs="workplane/daylight_factor.csv workplane/coefficients_sky.mtx workplane/coefficients_sun.mtx
-         workplane/illuminance.bin workplane/metrics.csv"
+         workplane/illuminance.bin workplane/metrics.csv workplane/grid_metrics.json summary.json"
 mkdir -p "$scratch/first"
 for f in $outputs; do cp "$scratch/b/$f" "$scratch/first/$(basename "$f")"; done  # basenames are unique
 "$bin" run "$project" --output "$scratch/b" --quiet || fail "the repeated run failed"

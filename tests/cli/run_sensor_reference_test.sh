@@ -6,7 +6,8 @@
 #     (tests/data/reference/office_*_backward.csv, column df_cie_percent: the same CIE sky),
 #     per-sensor relative RMS <= 3 %;
 #   - the work-plane grid and the mid-air points, via their coefficients x RADIANCE's overcast
-#     sky vector, with RADIANCE's rtrace DF (df_office.csv), per-sensor relative RMS <= 2 %.
+#     sky vector, with RADIANCE's rtrace DF (tests/data/radiance/df_office.csv), per-sensor
+#     relative RMS <= 2 %.
 # The bounds are the acceptance goals of the estimator. Measured on 2 cores: 0.71 % and
 # 0.81 % for the walls (of which the references' own standard errors are 0.53 % and 0.55 %
 # RMS), 1.14 % for the grid and 1.29 % for the points; seed-to-seed scatter of these RMS
@@ -62,8 +63,9 @@ for grid, reference in (("back_wall", "office_back_wall_backward.csv"), ("west_w
     assert len(ours) == len(theirs), grid
     check(f"{grid} vs backward reference", [o / t - 1 for o, t in zip(ours, theirs)], 0.03)
 
-_, _, _, sky = read_matrix(ref + "skyvec_overcast_m1.vec")
-rtrace = [float(r["DF_main_pct"]) for r in csv.DictReader(open(ref + "df_office.csv"))]
+radiance = root + "/tests/data/radiance/"
+_, _, _, sky = read_matrix(radiance + "skyvec_overcast_m1.vec")
+rtrace = [float(r["DF_main_pct"]) for r in csv.DictReader(open(radiance + "df_office.csv"))]
 for grid in ("workplane", "workplane_points"):
     rows, cols, comp, c = read_matrix(f"{out}/{grid}/coefficients_sky.mtx")
     assert rows == len(rtrace) and comp == 3, grid

@@ -11,6 +11,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 namespace dayphoton {
 namespace {
 
@@ -81,6 +84,43 @@ TEST(AtomicFile, MissingFolderGivesErrorNamingPath) {
     EXPECT_NE(std::string(e.what()).find("no_such_folder"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(target));
+  fs::remove_all(dir);
+}
+
+/// The id of a process that has exited (forked, reaped): no process has it, until reused.
+pid_t dead_pid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+TEST(AtomicFile, TemporaryFileOwnerParsesOnlyTheTemporaryPattern) {
+  EXPECT_EQ(temporary_file_owner("summary.json.tmp.1234"), 1234);
+  EXPECT_EQ(temporary_file_owner("photons-ab.bin.tmp.7"), 7);
+  EXPECT_EQ(temporary_file_owner("summary.json"), 0);
+  EXPECT_EQ(temporary_file_owner("a.tmp."), 0);
+  EXPECT_EQ(temporary_file_owner("a.tmp.12x"), 0);
+  EXPECT_EQ(temporary_file_owner(".tmp.12"), 0);
+  EXPECT_EQ(temporary_file_owner("a.tmp.12345678901"), 0);  // not a pid
+}
+
+TEST(AtomicFile, RemovesTemporariesOfDeadProcessesOnly) {
+  const fs::path dir = fresh_dir("atomic_file_test_dead");
+  fs::create_directories(dir / ".cache");
+  const pid_t dead = dead_pid();
+  const std::string own = std::to_string(::getpid());
+  std::ofstream(dir / ("summary.json.tmp." + std::to_string(dead))) << "partial";
+  std::ofstream(dir / ".cache" / ("photons-0.bin.tmp." + std::to_string(dead))) << "partial";
+  std::ofstream(dir / ("daylight_factor.csv.tmp." + own)) << "being written";
+  std::ofstream(dir / "summary.json") << "{}";
+  EXPECT_EQ(remove_dead_temporaries(dir.string()), 2u);
+  EXPECT_FALSE(fs::exists(dir / ("summary.json.tmp." + std::to_string(dead))));
+  EXPECT_FALSE(fs::exists(dir / ".cache" / ("photons-0.bin.tmp." + std::to_string(dead))));
+  EXPECT_TRUE(fs::exists(dir / ("daylight_factor.csv.tmp." + own)));
+  EXPECT_TRUE(fs::exists(dir / "summary.json"));
+  EXPECT_EQ(remove_dead_temporaries((dir / "absent").string()), 0u);
   fs::remove_all(dir);
 }
 

@@ -1,5 +1,5 @@
 // RADIANCE matrix format: round trips in every format, foreign byte order, located errors,
-// and reading RADIANCE's own gendaymtx output from ../shared/refdata.
+// and reading RADIANCE's own gendaymtx output from tests/data/radiance.
 #include "dayphoton/core/radiance_matrix.h"
 
 #include <gtest/gtest.h>
@@ -91,8 +91,8 @@ TEST(RadianceMatrix, BadInputGivesLocatedErrors) {
 }
 
 TEST(RadianceMatrix, ReadsGendaymtxOutput) {
-  const std::string path = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/results/c_annual/oakland_sky_m1.mtx.gz";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << "reference data not found: " << path;
+  const std::string path = std::string(DAYPHOTON_TEST_DATA_DIR) + "/radiance/oakland_sky_m1.mtx.gz";
+  ASSERT_TRUE(std::filesystem::exists(path)) << "reference data not found: " << path;
   const RadianceMatrix m = test::read_gzip_matrix(path);
   EXPECT_EQ(m.rows(), 146u);
   EXPECT_EQ(m.columns(), 8760u);

@@ -1,5 +1,5 @@
 // Annual metrics: closed-form cases at every threshold boundary, and the RADIANCE reference
-// (../shared/refdata/results/c_annual): our metrics of its annual illuminance table must equal
+// (tests/data/radiance): our metrics of its annual illuminance table must equal
 // the published per-sensor metrics.
 #include "dayphoton/metrics/annual_metrics.h"
 
@@ -144,9 +144,9 @@ TEST(AnnualMetrics, En17037LevelsOnAClosedFormTable) {
 }
 
 TEST(AnnualMetrics, ReproducesTheRadianceReferenceMetrics) {
-  const std::string dir = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/results/c_annual";
+  const std::string dir = std::string(DAYPHOTON_TEST_DATA_DIR) + "/radiance";
   const std::string gz = dir + "/office_annual_illuminance_classic.csv.gz";
-  if (!std::filesystem::exists(gz)) GTEST_SKIP() << "reference data not found: " << gz;
+  ASSERT_TRUE(std::filesystem::exists(gz)) << "reference data not found: " << gz;
   const auto csv = std::filesystem::temp_directory_path() / "dayphoton_metrics_ref_illuminance.csv";
   ASSERT_EQ(std::system(("gzip -dc '" + gz + "' > '" + csv.string() + "'").c_str()), 0);
   const IlluminanceTable table = read_illuminance_csv(csv.string());

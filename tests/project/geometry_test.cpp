@@ -1,5 +1,5 @@
 // Geometry stage (build_scene_description) on Project structs built in C++:
-// - the reference office (../shared/refdata/scenes/office.rad) gives floor 48 m^2 (normal +z),
+// - the reference office (tests/data/radiance/office.rad) gives floor 48 m^2 (normal +z),
 //   ceiling 48 m^2 (normal -z), 2 (6 x 3) + 2 (8 x 3) - 6 = 78 m^2 of wall, a 6 m^2 glazing
 //   port with normal +y (into the room), and the window/floor/ceiling polygons of office.rad;
 // - triangulations keep every surface's normal and area;
@@ -107,8 +107,8 @@ std::map<std::string, std::vector<Vec3>> read_rad_polygons(const std::string& pa
 }
 
 TEST(Geometry, OfficeMatchesRadianceReferenceScene) {
-  const std::string path = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/scenes/office.rad";
-  if (!std::ifstream(path)) GTEST_SKIP() << "reference scene not found: " << path;
+  const std::string path = std::string(DAYPHOTON_TEST_DATA_DIR) + "/radiance/office.rad";
+  ASSERT_TRUE(std::ifstream(path)) << "reference scene not found: " << path;
   const auto ref = read_rad_polygons(path);
   ASSERT_EQ(ref.count("window"), 1u);
   const SceneDescription scene = build_scene_description(office_project());

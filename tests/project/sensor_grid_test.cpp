@@ -1,5 +1,5 @@
 // Sensor grids and point files:
-// - the office work-plane grid equals ../shared/refdata/sensors/grid_0p8m.pts (165 points,
+// - the office work-plane grid equals tests/data/radiance/grid_0p8m.pts (165 points,
 //   11 x 15, y rows outer, x inner, first (0.5, 0.5, 0.8), last (5.5, 7.5, 0.8));
 // - floating error never drops the last row (0.7 / 0.1 = 6.999999999999999);
 // - lattices are centred when the span is not a multiple of the spacing;
@@ -45,8 +45,8 @@ TEST(SensorGrid, OfficeWorkPlaneMatchesReferenceOrder) {
       EXPECT_EQ(s.normal, Vec3(0, 0, 1));
     }
 
-  const std::string ref = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/sensors/grid_0p8m.pts";
-  if (!std::ifstream(ref)) GTEST_SKIP() << "reference sensors not found: " << ref;
+  const std::string ref = std::string(DAYPHOTON_TEST_DATA_DIR) + "/radiance/grid_0p8m.pts";
+  ASSERT_TRUE(std::ifstream(ref)) << "reference sensors not found: " << ref;
   Diagnostics diag;
   const std::vector<SensorPoint> expected = read_pts(ref, diag);
   ASSERT_FALSE(diag.has_errors()) << diag.format();

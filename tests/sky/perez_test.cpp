@@ -219,9 +219,8 @@ std::vector<EpwRecord> read_epw(const std::string& path, double& latitude, doubl
 }
 
 TEST(PerezSky, NormalisationOverTheOaklandYear) {
-  const std::string path =
-      std::string(DAYPHOTON_SHARED_DIR) + "/weather/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
-  if (!std::ifstream(path)) GTEST_SKIP() << "missing " << path;
+  const std::string path = std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
+  ASSERT_TRUE(std::ifstream(path)) << "missing " << path;
   double lat = 0, lon_east = 0, tz = 0;
   const std::vector<EpwRecord> records = read_epw(path, lat, lon_east, tz);
   ASSERT_EQ(records.size(), 8760u);

@@ -2,7 +2,7 @@
 // refdata b_dc_classic (rfluxmtx) times the gendaymtx -m 1 Oakland sky matrix of refdata
 // c_annual must reproduce RADIANCE's annual illuminance table and metrics (the
 // RADIANCE-compatible path of issue 5); our own gendaymtx-compatible sky matrix built from the
-// EPW must give DA300 within 2 points per sensor. Plus the files, the JSON fragment, ASE and
+// EPW must give DA300 within a bound derived from the sky matrix tolerance. Plus the files, the JSON fragment, ASE and
 // EN 17037 wiring, and the errors on mismatched inputs.
 #include "dayphoton/study/annual_study.h"
 
@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,7 @@
 
 #include "../reference_data.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/metrics/occupancy.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/weather/epw_reader.h"
 
@@ -30,7 +32,7 @@ namespace {
 
 const std::string EpwPath =
     std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
-const std::string RefDir = std::string(DAYPHOTON_SHARED_DIR) + "/refdata/results";
+const std::string RefDir = std::string(DAYPHOTON_TEST_DATA_DIR) + "/radiance";
 
 struct ReferenceSensor {
   double da300, udi_below, udi_100_2000, udi_above, mean_lux;
@@ -56,8 +58,8 @@ std::vector<ReferenceSensor> read_reference_metrics(const std::string& path) {
 class RadianceReference : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    const std::string dc = RefDir + "/b_dc_classic/office_dc_classic.mtx.gz";
-    const std::string sky = RefDir + "/c_annual/oakland_sky_m1.mtx.gz";
+    const std::string dc = RefDir + "/office_dc_classic.mtx.gz";
+    const std::string sky = RefDir + "/oakland_sky_m1.mtx.gz";
     if (!fs::exists(dc) || !fs::exists(sky)) return;
     epw = std::make_unique<weather::EpwFile>(weather::read_epw(EpwPath));
     coefficients = std::make_unique<RadianceMatrix>(test::read_gzip_matrix(dc));
@@ -65,7 +67,7 @@ class RadianceReference : public ::testing::Test {
     radiance_sky->matrix = test::read_gzip_matrix(sky);
     radiance_sky->steps = time_stamps(*epw);
     radiance_sky->daylight_hours_quantity = daylight_hours_quantity(*epw, radiance_sky->daylight_hours_source);
-    reference = read_reference_metrics(RefDir + "/c_annual/office_annual_metrics_classic.csv");
+    reference = read_reference_metrics(RefDir + "/office_annual_metrics_classic.csv");
   }
   static void TearDownTestSuite() {
     epw.reset();
@@ -73,7 +75,7 @@ class RadianceReference : public ::testing::Test {
     radiance_sky.reset();
   }
   void SetUp() override {
-    if (!coefficients) GTEST_SKIP() << "reference data not found under " << RefDir;
+    ASSERT_TRUE(coefficients) << "reference data not found under " << RefDir;
   }
   static std::unique_ptr<weather::EpwFile> epw;
   static std::unique_ptr<RadianceMatrix> coefficients;
@@ -115,7 +117,7 @@ TEST_F(RadianceReference, ReproducesRadianceIlluminanceAndMetrics) {
   // 6 significant digits (5e-6 relative) and dctimestep's float sums of 146 x 3 positive terms
   // are good to ~438 x 6e-8 = 2.6e-5 relative in the worst case; 4e-5 relative bounds both.
   const std::string csv = (fs::temp_directory_path() / "dayphoton_annual_study_ref_illuminance.csv").string();
-  ASSERT_EQ(std::system(("gzip -dc '" + RefDir + "/c_annual/office_annual_illuminance_classic.csv.gz' > '" + csv + "'").c_str()), 0);
+  ASSERT_EQ(std::system(("gzip -dc '" + RefDir + "/office_annual_illuminance_classic.csv.gz' > '" + csv + "'").c_str()), 0);
   const metrics::IlluminanceTable ref = metrics::read_illuminance_csv(csv);
   fs::remove(csv);
   ASSERT_EQ(ref.step_count(), 8760u);
@@ -169,20 +171,56 @@ TEST_F(RadianceReference, ReproducesRadianceIlluminanceAndMetrics) {
   ASSERT_EQ(study.grid.en17037.size(), 3u);
 }
 
-TEST_F(RadianceReference, OwnGendaymtxCompatibleSkyGivesDa300WithinTwoPoints) {
+// The bound of each sensor is derived from the sky matrix's tolerance, not chosen: the
+// gendaymtx-compatibility test (tests/sky/sky_matrix_test.cpp) holds our sky within
+// GendaymtxElementTolerance (1 %) of gendaymtx's, element by element. With non-negative
+// coefficients, skies that agree within a factor 1 +- d give illuminances that agree within
+// 1 +- d, so an occupied hour can change sides of a threshold X only if RADIANCE's illuminance
+// lies in [X / (1 + d), X / (1 - d)). A sensor's DA300 (UDI 100-2000) can therefore differ by
+// at most the share of occupied hours in that band around 300 lux (100 and 2000 lux), and
+// sDA300/50% by the share of sensors whose DA300 is within its bound of 50 %. (The
+// compatibility test checks the elements above 1 % of their hour's maximum; the bound assumes
+// the 1 % for all.) Measured: worst DA300 difference 0.084 points, UDI 0.09.
+TEST_F(RadianceReference, OwnGendaymtxCompatibleSkyGivesDa300WithinTheSkyToleranceBound) {
   const AnnualSky own = annual_sky_from_epw(*epw, sky::PatchBasis::tregenza(), radiance_compatible_sky_options(0.2));
   ASSERT_EQ(own.matrix.rows(), 146u);
   ASSERT_EQ(own.matrix.columns(), 8760u);
-  const AnnualStudy study = compute_annual_study(*coefficients, own, AnnualStudySettings{});
-  double worst = 0, worst_udi = 0;
+  const AnnualStudySettings settings;
+  const AnnualStudy study = compute_annual_study(*coefficients, own, settings);
+  const AnnualStudy radiance = compute_annual_study(*coefficients, *radiance_sky, settings);
+  const metrics::OccupancySchedule occupied = metrics::OccupancySchedule::daily_hours(
+      radiance.illuminance.steps(), settings.occupancy_start_h, settings.occupancy_end_h);
+  const double d = test::GendaymtxElementTolerance;
+  // Percent of occupied hours whose RADIANCE illuminance could cross `threshold_lux`.
+  auto band_percent = [&](std::size_t s, double threshold_lux) {
+    std::size_t n = 0;
+    for (std::size_t t = 0; t < radiance.illuminance.step_count(); ++t) {
+      const double e = radiance.illuminance.lux(t, s);
+      n += occupied.occupied(t) && e >= threshold_lux / (1 + d) && e < threshold_lux / (1 - d) ? 1 : 0;
+    }
+    return 100.0 * static_cast<double>(n) / static_cast<double>(radiance.occupied_hours);
+  };
+  double worst = 0, worst_udi = 0, worst_bound = 0, sda_bound = 0;
+  std::vector<double> bounds;
   for (std::size_t s = 0; s < 165; ++s) {
-    worst = std::max(worst, std::abs(study.sensors[s].da_percent - reference[s].da300));
-    worst_udi = std::max(worst_udi, std::abs(study.sensors[s].udi_original_percent - reference[s].udi_100_2000));
-    EXPECT_NEAR(study.sensors[s].da_percent, reference[s].da300, 2.0) << "sensor " << s;
+    const double da_bound = band_percent(s, 300) + 1e-9, udi_bound = band_percent(s, 100) + band_percent(s, 2000) + 1e-9;
+    // Against RADIANCE's table computed here (equal to office_annual_metrics_classic.csv to its
+    // printing, ReproducesRadianceIlluminanceAndMetrics), so that printing adds nothing.
+    const metrics::SensorMetrics& r = radiance.sensors[s];
+    worst = std::max(worst, std::abs(study.sensors[s].da_percent - r.da_percent));
+    worst_udi = std::max(worst_udi, std::abs(study.sensors[s].udi_original_percent - r.udi_original_percent));
+    worst_bound = std::max(worst_bound, da_bound);
+    bounds.push_back(da_bound);
+    EXPECT_NEAR(study.sensors[s].da_percent, r.da_percent, da_bound) << "sensor " << s;
+    EXPECT_NEAR(study.sensors[s].udi_original_percent, r.udi_original_percent, udi_bound) << "sensor " << s;
+    if (std::abs(r.da_percent - 50) <= da_bound) sda_bound += 100.0 / 165;
   }
+  std::sort(bounds.begin(), bounds.end());
+  std::printf("[ own sky ] DA300 worst %.3f points (derived bounds: median %.3f, largest %.3f), UDI 100-2000 worst "
+              "%.3f; sDA bound %.2f points\n", worst, bounds[bounds.size() / 2], worst_bound, worst_udi, sda_bound);
   RecordProperty("worst_da300_difference_points", std::to_string(worst));
   RecordProperty("worst_udi_100_2000_difference_points", std::to_string(worst_udi));
-  EXPECT_NEAR(study.grid.sda_percent, 100.0 * 138 / 165, 3.0);
+  EXPECT_NEAR(study.grid.sda_percent, radiance.grid.sda_percent, sda_bound + 1e-9);
 
   // The same sky written as a RADIANCE float matrix and read back (the `dayphoton annual
   // --sky-matrix` path) gives the identical table: the file format loses nothing.
@@ -209,7 +247,7 @@ TEST_F(RadianceReference, SkyMatrixFileMustMatchTheWeatherFile) {
   }
   fs::remove(path);
   // A gzip-compressed matrix reads like the plain one.
-  const AnnualSky from_gz = annual_sky_from_matrix_file(RefDir + "/c_annual/oakland_sky_m1.mtx.gz", *epw);
+  const AnnualSky from_gz = annual_sky_from_matrix_file(RefDir + "/oakland_sky_m1.mtx.gz", *epw);
   EXPECT_EQ(from_gz.matrix.data(), radiance_sky->matrix.data());
   EXPECT_THROW(read_matrix_file(path + ".gz"), InputError);  // missing file
 }

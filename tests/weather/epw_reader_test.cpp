@@ -1,4 +1,4 @@
-// EPW reader: the real files in ../shared/weather read cleanly, and a table of corrupted
+// EPW reader: the real files (projects/office, tests/data/weather) read cleanly, and a table of corrupted
 // texts each gives its exact located message (file:line:field) or the documented handling
 // (docs/weather.md). A seeded fuzz loop checks that no corruption crashes the reader.
 #include "dayphoton/weather/epw_reader.h"
@@ -18,15 +18,16 @@ namespace {
 using test::error_lines;
 using test::SyntheticEpw;
 
-std::string shared_epw(const char* name) { return std::string(DAYPHOTON_SHARED_DIR) + "/weather/" + name; }
+const std::string OaklandEpw = std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
+const std::string MannheimEpw = std::string(DAYPHOTON_TEST_DATA_DIR) + "/weather/DEU_Mannheim.epw";
 
 bool exists(const std::string& path) { return std::ifstream(path).good(); }
 
 // ---- real files -------------------------------------------------------------------------
 
 TEST(EpwReader, OaklandReadsCleanly) {
-  const std::string path = shared_epw("USA_CA_Oakland.Intl.AP.724930_TMY3.epw");
-  if (!exists(path)) GTEST_SKIP() << "missing " << path << " (needs ../shared)";
+  const std::string path = OaklandEpw;
+  ASSERT_TRUE(exists(path)) << "missing " << path;
   const EpwFile epw = read_epw(path);
   EXPECT_TRUE(epw.warnings.empty());
   ASSERT_EQ(epw.records.size(), 8760u);
@@ -81,8 +82,8 @@ TEST(EpwReader, OaklandReadsCleanly) {
 }
 
 TEST(EpwReader, MannheimReadsCleanly) {
-  const std::string path = shared_epw("DEU_Mannheim.epw");
-  if (!exists(path)) GTEST_SKIP() << "missing " << path << " (needs ../shared)";
+  const std::string path = MannheimEpw;
+  ASSERT_TRUE(exists(path)) << "missing " << path;
   const EpwFile epw = read_epw(path);
   EXPECT_TRUE(epw.warnings.empty());
   ASSERT_EQ(epw.records.size(), 8760u);

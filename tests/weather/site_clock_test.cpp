@@ -104,9 +104,8 @@ TEST(SiteClock, ForEpwChoosesCalendarAndYear) {
 }
 
 TEST(SiteClock, TmyFileWithMixedYearsUsesTheReferenceYear) {
-  const std::string path =
-      std::string(DAYPHOTON_SHARED_DIR) + "/weather/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
-  if (!std::ifstream(path)) GTEST_SKIP() << "missing " << path << " (needs ../shared)";
+  const std::string path = std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
+  ASSERT_TRUE(std::ifstream(path)) << "missing " << path;
   const EpwFile epw = read_epw(path);
   const SiteClock clock = SiteClock::for_epw(epw);
   EXPECT_EQ(clock.year(), 2021);

@@ -27,11 +27,10 @@ std::vector<std::string> lines_of(std::istream& in) {
 }
 
 TEST(Wea, OaklandEpwConvertsToTheRadianceReferenceWea) {
-  const std::string shared = DAYPHOTON_SHARED_DIR;
-  const std::string epw_path = shared + "/weather/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
-  const std::string wea_path = shared + "/refdata/results/c_annual/oakland.wea";
+  const std::string epw_path = std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
+  const std::string wea_path = std::string(DAYPHOTON_TEST_DATA_DIR) + "/radiance/oakland.wea";
   std::ifstream ref(wea_path);
-  if (!std::ifstream(epw_path) || !ref) GTEST_SKIP() << "needs ../shared (EPW and refdata)";
+  ASSERT_TRUE(std::ifstream(epw_path) && ref) << "missing " << epw_path << " or " << wea_path;
 
   const WeaFile wea = epw_to_wea(read_epw(epw_path));
   std::ostringstream out;

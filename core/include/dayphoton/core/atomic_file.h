@@ -2,6 +2,7 @@
 // renamed over the target, so a crash or kill never leaves a partial output behind.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -19,5 +20,15 @@ void write_file_atomically(const std::string& path, const std::function<void(std
 
 /// Convenience overload for a complete string.
 void write_file_atomically(const std::string& path, const std::string& contents);
+
+/// The writer's process id if `file_name` is a temporary of write_file_atomically
+/// ("<name>.tmp.<pid>"), else 0.
+long temporary_file_owner(const std::string& file_name);
+
+/// Delete every temporary of write_file_atomically under `dir` (recursively, symbolic links
+/// not followed) whose writing process no longer exists: what a kill or a crash during a
+/// write leaves behind. Temporaries of running processes are kept. Returns how many were
+/// deleted; a folder that does not exist has none.
+std::size_t remove_dead_temporaries(const std::string& dir);
 
 }  // namespace dayphoton

@@ -55,6 +55,11 @@ std::vector<double> daylight_hours_quantity(const weather::EpwFile& epw, std::st
 /// spread into patches (the mode in which sky coefficients alone give the annual result).
 sky::SkyMatrixOptions radiance_compatible_sky_options(double ground_reflectance = 0.2);
 
+/// AnnualSky::description of annual_sky_from_epw (the same text whether the matrix is built
+/// or read from the cache, so a cached run writes the same files).
+std::string annual_sky_description(const weather::EpwFile& epw, const sky::PatchBasis& basis,
+                                   const sky::SkyMatrixOptions& options);
+
 /// Sky matrix built from the EPW with build_sky_matrix, stamped with the EPW's time steps.
 AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::PatchBasis& basis,
                               const sky::SkyMatrixOptions& options);

@@ -111,6 +111,9 @@ struct SkyAndSuns {
 /// of the matrix, as gendaymtx -s: the sky of the sun-bins mode.
 sky::SkyMatrixOptions sun_excluded_sky_options(double ground_reflectance = 0.2);
 
+/// SkyAndSuns::sky.description of annual_sky_and_suns (the same whether built or cached).
+std::string sky_and_suns_description(const weather::EpwFile& epw, const sky::PatchBasis& basis);
+
 /// Sky-only matrix and suns of a weather file (build_sky_matrix with options.sun = None is
 /// enforced). The suns are rounded through float exactly as suns_to_matrix stores them, so a
 /// run that reads them back from the cache computes the same numbers.

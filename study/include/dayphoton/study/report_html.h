@@ -41,6 +41,10 @@ namespace dayphoton::study {
 /// could not be read, and the rest of the report is still written.
 std::string report_html(const std::string& results_dir);
 
+/// The same from `summary_json`, the text of the run's summary (what `run` writes as
+/// summary.json after the report, as its last file) instead of the folder's summary.json.
+std::string report_html(const std::string& results_dir, const std::string& summary_json);
+
 /// Write report_html() atomically to `output_path` (default <results_dir>/report.html);
 /// returns the path.
 std::string write_report(const std::string& results_dir, const std::string& output_path = {});
@@ -56,5 +60,10 @@ struct ViewOutputs {
 /// every grid of summary.json (base case and variants), the sky images, then report.html.
 /// Returns the paths written. This is the one call `dayphoton run` makes after summary.json.
 std::vector<std::string> write_images_and_report(const std::string& results_dir, const ViewOutputs& outputs = {});
+
+/// The same from `summary_json` (see report_html above): what `dayphoton run` calls before it
+/// writes summary.json.
+std::vector<std::string> write_images_and_report(const std::string& results_dir, const ViewOutputs& outputs,
+                                                 const std::string& summary_json);
 
 }  // namespace dayphoton::study

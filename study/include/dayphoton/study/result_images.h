@@ -109,4 +109,10 @@ YearHour parse_year_hour(const std::string& text);
 /// weather file. InputError if the hour is not in the weather file.
 std::vector<std::string> write_sky_images(const std::string& results_dir, const YearHour& hour, int size = 256);
 
+/// The same with the weather file and summary.json's `simulation` object (JSON text) given,
+/// for a run that writes summary.json after its images.
+std::vector<std::string> write_sky_images(const std::string& results_dir, const YearHour& hour,
+                                          const std::string& weather, const std::string& simulation_json,
+                                          int size = 256);
+
 }  // namespace dayphoton::study

@@ -23,7 +23,11 @@
 //                   the open case (LM-83 blinds rule, operated_shading.h), into
 //                   <output>/operated/<grid>/; computed from the two cases' annual tables,
 //                   whose inputs come from the cache as above
-//   7. files       : per grid folder and summary.json (result_files.h, docs/outputs.md)
+//   7. files       : per grid folder, images and report.html, then summary.json last, with
+//                   the size and SHA-256 of every output (result_files.h, docs/outputs.md)
+// Before step 1 the run takes the output folder's lock (output_lock.h; OutputFolderBusy when
+// another run holds it), deletes temporaries of killed writers and the previous run's outputs,
+// and marks the folder INCOMPLETE until summary.json is written (output_manifest.h).
 // The run log (<output>/run.log, and the progress output) states for every step whether it
 // was computed or taken from the cache, e.g. "photons: traced 0 of 146 sources (146 cached)".
 #pragma once
@@ -40,6 +44,7 @@ struct RunSettings {
   std::string output_dir;  ///< empty: the project's outputs.folder
   bool force = false;      ///< ignore the cache (recompute and overwrite)
   std::string version;     ///< dayphoton's version, recorded in summary.json
+  std::string command;     ///< the command line, recorded in the output folder's lock file
 };
 
 struct GridReport {
@@ -64,8 +69,9 @@ struct RunReport {
   std::vector<std::string> notes;  ///< things the user should know (e.g. sun mode)
 };
 
-/// Run the study of `project`. Throws InputError for bad input (weather file), EngineError
-/// or std::runtime_error for failures; nothing is left half-written.
+/// Run the study of `project`. Throws InputError for bad input (weather file), OutputFolderBusy
+/// when another run holds the output folder, EngineError or std::runtime_error for failures;
+/// nothing is left half-written, and an interrupted run leaves the folder marked INCOMPLETE.
 RunReport run_study(const project::Project& project, const RunSettings& settings,
                     Progress& progress);
 
