@@ -85,9 +85,7 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
                      "has " + std::to_string(coefficients.columns()) + " columns but --basis " + o.basis + " has " +
                          std::to_string(basis.bin_count()) + " bins");
 
-  // A missing weather file is bad input (exit 1), like a missing matrix or sensor file.
-  if (!fs::is_regular_file(o.weather_path))
-    throw InputError(SourceLocation{o.weather_path, 0, 0}, "cannot open weather file");
+  // A missing weather file (or a FIFO) is bad input (exit 1): read_epw says so, located.
   const weather::EpwFile epw = weather::read_epw(o.weather_path);
   study::AnnualSky sky;
   if (o.sky_matrix_path.empty()) {

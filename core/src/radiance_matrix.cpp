@@ -10,6 +10,7 @@
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/input_file.h"
 
 namespace dayphoton {
 
@@ -197,8 +198,7 @@ RadianceMatrix RadianceMatrix::read(std::istream& in, const std::string& display
 }
 
 RadianceMatrix RadianceMatrix::read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open matrix file");
+  std::ifstream in = open_input_file(path, "matrix file");
   return read(in, path);
 }
 

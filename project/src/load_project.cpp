@@ -17,6 +17,7 @@
 #include <tuple>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/input_file.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/project/project_schema.h"
 #include "dayphoton/project/site_geodesy.h"
@@ -127,9 +128,13 @@ class Loader {
   bool existing_file(const std::string& what, const std::string& written,
                      const SourceLocation& loc, std::string& resolved) {
     resolved = resolve(written);
-    std::error_code ec;
-    if (!fs::is_regular_file(resolved, ec)) {
+    const std::string problem = input_file_problem(resolved);
+    if (problem == "not found") {
       m_reporter.error(loc, what + " '" + written + "' not found (looked for '" + resolved + "')");
+      return false;
+    }
+    if (!problem.empty()) {
+      m_reporter.error(loc, what + " '" + written + "' " + problem);
       return false;
     }
     return true;
@@ -1024,8 +1029,7 @@ Project load_project_from_string(const std::string& text, const std::string& pat
 }
 
 Project load_project(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open project file");
+  std::ifstream in = open_input_file(path, "project file");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(SourceLocation{path, 0, 0}, "cannot read project file");

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "dayphoton/core/input_file.h"
 #include "text_tokens.h"
 
 namespace dayphoton::project {
@@ -229,13 +230,18 @@ class ObjParser {
 }  // namespace
 
 ObjMesh read_obj(const std::string& path, Diagnostics& diag, const SourceLocation& referenced_from) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const std::string why = std::strerror(errno);
+  // A FIFO or a device would block or stream forever: refuse anything but a regular file.
+  std::string why = input_file_problem(path);
+  std::ifstream in;
+  if (why.empty()) {
+    in.open(path, std::ios::binary);
+    if (!in) why = std::string("cannot be opened: ") + std::strerror(errno);
+  }
+  if (!why.empty()) {
     if (referenced_from.known())
-      diag.error(referenced_from, "cannot open OBJ file '" + path + "': " + why);
+      diag.error(referenced_from, "OBJ file '" + path + "' " + why);
     else
-      diag.error({path, 0, 0}, "cannot open OBJ file: " + why);
+      diag.error({path, 0, 0}, "OBJ file " + why);
     return {};
   }
   ObjParser parser(path, diag);

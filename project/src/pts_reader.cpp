@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "dayphoton/core/input_file.h"
 #include "text_tokens.h"
 
 namespace dayphoton::project {
@@ -60,13 +61,18 @@ std::vector<SensorPoint> parse_pts(std::istream& in, const std::string& path, Di
 
 std::vector<SensorPoint> read_pts(const std::string& path, Diagnostics& diag,
                                   const SourceLocation& referenced_from) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const std::string why = std::strerror(errno);
+  // A FIFO or a device would block or stream forever: refuse anything but a regular file.
+  std::string why = input_file_problem(path);
+  std::ifstream in;
+  if (why.empty()) {
+    in.open(path, std::ios::binary);
+    if (!in) why = std::string("cannot be opened: ") + std::strerror(errno);
+  }
+  if (!why.empty()) {
     if (referenced_from.known())
-      diag.error(referenced_from, "cannot open sensor file '" + path + "': " + why);
+      diag.error(referenced_from, "sensor file '" + path + "' " + why);
     else
-      diag.error({path, 0, 0}, "cannot open sensor file: " + why);
+      diag.error({path, 0, 0}, "sensor file " + why);
     return {};
   }
   return parse_pts(in, path, diag);

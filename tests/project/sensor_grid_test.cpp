@@ -210,7 +210,8 @@ TEST(PtsReader, PointSetsThroughTheSceneBuilder) {
 
   // A missing file is reported at the project entry that names it.
   p.sensors.points[0].file = file.path() + ".missing";
-  EXPECT_NE(build_error(p).find("office.yaml:50:5: error: cannot open sensor file"), std::string::npos);
+  EXPECT_NE(build_error(p).find("office.yaml:50:5: error: sensor file '" + file.path() + ".missing' not found"),
+            std::string::npos);
   // Zero inline direction.
   p.sensors.points[0].file.clear();
   p.sensors.points[0].points[0].normal = {0, 0, 0};
