@@ -70,7 +70,12 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
   std::optional<sky::PatchBasis> requested_basis;
   if (!o.basis.empty()) requested_basis = parse_basis_option(o.basis);
 
-  const RadianceMatrix coefficients = RadianceMatrix::read_file(coefficients_path);
+  // Sky radiances and daylight coefficients are never negative: in binary data a negative
+  // value is the usual sign of the wrong byte order.
+  MatrixReadOptions read_options;
+  read_options.non_negative = true;
+  read_options.max_values = o.max_matrix_values;
+  const RadianceMatrix coefficients = RadianceMatrix::read_file(coefficients_path, read_options);
   const std::vector<SensorPoint> sensors = study::read_sensors_csv(sensors_path);
   if (sensors.size() != coefficients.rows())
     throw InputError(SourceLocation{sensors_path, 0, 0},
@@ -92,9 +97,13 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
     double rho = o.ground_reflectance;
     if (!o.ground_reflectance_given)
       if (const std::optional<double> from_run = run_ground_reflectance(o.coefficients_dir)) rho = *from_run;
+    require_matrix_within_limit("the sky matrix (" + std::to_string(basis.bin_count()) +
+                                    " bins, one column per record of " + o.weather_path + ")",
+                                static_cast<std::uint64_t>(basis.bin_count()), epw.records.size(), 3,
+                                o.max_matrix_values);
     sky = study::annual_sky_from_epw(epw, basis, study::radiance_compatible_sky_options(rho));
   } else {
-    sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, epw);
+    sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, epw, read_options, o.max_decompressed_bytes);
     if (sky.matrix.rows() != coefficients.columns() || sky.matrix.components() != coefficients.components())
       throw InputError(SourceLocation{o.sky_matrix_path, 0, 0},
                        "has " + std::to_string(sky.matrix.rows()) + " rows x " +
@@ -103,6 +112,8 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
                            std::to_string(coefficients.components()));
   }
 
+  require_matrix_within_limit("the illuminance table (" + std::to_string(sensors.size()) + " sensors, one row per record)",
+                              sensors.size(), sky.steps.size(), 1, o.max_matrix_values);
   const study::AnnualStudySettings settings;
   const study::AnnualStudy result = study::compute_annual_study(coefficients, sky, settings);
   const std::string output_dir =

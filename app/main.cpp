@@ -62,6 +62,9 @@ int main(int argc, char** argv) {
   sky_cmd->add_option("--format", sky.format, "ascii (default), float or double")
       ->check(CLI::IsMember({"ascii", "float", "double"}));
   sky_cmd->add_option("-o,--output", sky.output_path, "Output matrix file (default: standard output)");
+  sky_cmd->add_option("--max-matrix-values", sky.max_matrix_values,
+                      "Most values (bins x records x 3) of the sky matrix (default " +
+                          std::to_string(sky.max_matrix_values) + ", 1 GiB of floats)");
 
   AnnualOptions annual;
   auto* annual_cmd = cli.add_subcommand(
@@ -81,6 +84,12 @@ int main(int argc, char** argv) {
                          "summary.json beside the grid folder, else 0.2)")
       ->check(CLI::Range(0.0, 1.0));
   annual_cmd->add_flag("-q,--quiet", annual.quiet, "Print errors only");
+  annual_cmd->add_option("--max-matrix-values", annual.max_matrix_values,
+                         "Most values of each matrix read or built and of the illuminance table (default " +
+                             std::to_string(annual.max_matrix_values) + ", 1 GiB of floats)");
+  annual_cmd->add_option("--max-decompressed-bytes", annual.max_decompressed_bytes,
+                         "Most bytes a .gz sky matrix may decompress to (default " +
+                             std::to_string(annual.max_decompressed_bytes) + ")");
 
 
   ReportOptions report;
