@@ -63,11 +63,13 @@ void generate_mesh(const MeshSpec& mesh, MaterialLookup& materials, Diagnostics&
 void validate_surface(const Surface& surface, Diagnostics& diag);
 
 /// Sensor grid over a room's floor rectangle or a polygon (model coordinates). Returns
-/// false (after reporting) when the spec is invalid or yields no point.
-bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
-                   SensorGrid& out);
+/// false (after reporting) when the spec is invalid, yields no point, or would yield more
+/// than `max_points` (limits.sensors_per_grid; reported at `spacing` before any point is
+/// made).
+bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, std::uint64_t max_points,
+                   Diagnostics& diag, SensorGrid& out);
 
-/// Sensor points given inline and/or in a .pts file.
-bool generate_points(const PointsSpec& spec, Diagnostics& diag, SensorGrid& out);
+/// Sensor points given inline and/or in a .pts file, at most `max_points` of them.
+bool generate_points(const PointsSpec& spec, std::uint64_t max_points, Diagnostics& diag, SensorGrid& out);
 
 }  // namespace dayphoton::project::detail

@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "dayphoton/core/resource_limits.h"
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/core/source_location.h"
 #include "dayphoton/core/vec3.h"
@@ -275,6 +276,7 @@ struct GridSpec {
   double inset_m = 0.5;
   Vec3 normal{0, 0, 1};
   SourceLocation location;
+  SourceLocation spacing_location;  ///< of `spacing` if written, else of the grid
 };
 
 struct PointsSpec {
@@ -322,6 +324,7 @@ struct Simulation {
   /// (engine::TracingOptions::max_mainpass_attempts_per_target).
   long long max_attempts_per_photon = 256;
   SourceLocation location;
+  SourceLocation photons_per_bin_location;  ///< of `photons_per_bin` if written, else of the section
 };
 
 struct Outputs {
@@ -401,6 +404,9 @@ struct Project {
   MetricsSettings metrics;
   std::vector<VariantSpec> variants;  ///< in file order; empty if the file has none
   std::optional<OperationSpec> operation;  ///< absent: no operated result
+  /// `limits`: the largest study this project may make (sensors, photons), each checked
+  /// before anything of that size is allocated; defaults in core/resource_limits.h.
+  ResourceLimits limits;
 };
 
 /// Parse and validate a project file. Throws InputError with every problem found (located,
