@@ -29,7 +29,7 @@ const CLI::Validator FiniteNumber(
       if (!std::isfinite(v)) return "expected a finite number, not '" + text + "'";
       return {};
     },
-    "NUMBER");
+    "");
 
 /// A whole number in [lo, hi], with a short message (CLI11's NonNegativeNumber printed its
 /// 300-digit upper bound). `what` names the quantity ("threads").
@@ -46,7 +46,8 @@ CLI::Validator whole_number(long long lo, long long hi, const std::string& what)
           return "expected a whole number of " + what + ", " + range + ", not '" + text + "'";
         return {};
       },
-      "INT");
+      hi == std::numeric_limits<long long>::max() ? "INT >= " + std::to_string(lo)
+                                                  : "INT in [" + std::to_string(lo) + " - " + std::to_string(hi) + "]");
 }
 
 constexpr long long Unbounded = std::numeric_limits<long long>::max();
@@ -105,7 +106,7 @@ int main(int argc, char** argv) {
       ->check(FiniteNumber);
   sky_cmd->add_option("--illuminance", sky.horizontal_illuminance_lux,
                       "CIE skies: diffuse horizontal illuminance (lux, default 10000)")
-      ->check(FiniteNumber & CLI::PositiveNumber);
+      ->check(FiniteNumber)->check(CLI::PositiveNumber);
   sky_cmd->add_option("--basis", sky.basis, "tregenza (default) or reinhart:N");
   sky_cmd->add_option("--sun", sky.sun, "spread (into 4 patches, default), none (sky only), only (sun only)")
       ->check(CLI::IsMember({"spread", "none", "only"}));
@@ -114,7 +115,7 @@ int main(int argc, char** argv) {
                       "sky colour, 11 C dew point)")
       ->check(CLI::IsMember({"spa", "radiance"}));
   sky_cmd->add_option("--ground-reflectance", sky.ground_reflectance, "Ground reflectance (default 0.2)")
-      ->check(FiniteNumber & CLI::Range(0.0, 1.0));
+      ->check(FiniteNumber)->check(CLI::Range(0.0, 1.0));
   sky_cmd->add_option("--format", sky.format, "ascii (default), float or double")
       ->check(CLI::IsMember({"ascii", "float", "double"}));
   sky_cmd->add_option("-o,--output", sky.output_path, "Output matrix file (default: standard output)");
@@ -139,7 +140,7 @@ int main(int argc, char** argv) {
   annual_cmd->add_option("--ground-reflectance", annual.ground_reflectance,
                          "Ground reflectance of the sky built from the weather file (default: the run's, from "
                          "summary.json beside the grid folder, else 0.2)")
-      ->check(FiniteNumber & CLI::Range(0.0, 1.0));
+      ->check(FiniteNumber)->check(CLI::Range(0.0, 1.0));
   annual_cmd->add_flag("-q,--quiet", annual.quiet, "Print errors only");
   annual_cmd->add_option("--max-matrix-values", annual.max_matrix_values,
                          "Most values of each matrix read or built and of the illuminance table (default " +
@@ -170,7 +171,7 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--direction", render.direction, "View direction dx,dy,dz")->required();
   render_cmd->add_option("--up", render.up, "Up vector (default 0,0,1)");
   render_cmd->add_option("--fov", render.fov_deg, "Horizontal field of view (deg), or the fisheye's image circle")
-      ->check(FiniteNumber & CLI::Range(1.0, 360.0));
+      ->check(FiniteNumber)->check(CLI::Range(1.0, 360.0));
   render_cmd->add_flag("--fisheye", render.fisheye, "Angular (equidistant) fisheye instead of a perspective view");
   render_cmd->add_option("--width", render.width, "Image width (pixels, default 512)")->check(CLI::Range(1, 16384));
   render_cmd->add_option("--height", render.height, "Image height (pixels, default 384)")->check(CLI::Range(1, 16384));
@@ -178,7 +179,7 @@ int main(int argc, char** argv) {
                          "overcast (default), uniform, cie:N (ISO 15469 type 1..15) or hour:M/D/H of the weather file");
   render_cmd->add_option("--illuminance", render.horizontal_illuminance_lux,
                          "overcast, uniform, cie:N: diffuse horizontal illuminance (lux, default 10000)")
-      ->check(FiniteNumber & CLI::PositiveNumber);
+      ->check(FiniteNumber)->check(CLI::PositiveNumber);
   render_cmd->add_option("--sun-altitude", render.sun_altitude_deg, "cie:N: sun altitude (deg, default 45)")
       ->check(FiniteNumber);
   render_cmd->add_option("--sun-azimuth", render.sun_azimuth_deg,
