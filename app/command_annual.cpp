@@ -15,6 +15,7 @@
 
 #include "commands.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/input_file.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/weather/epw_reader.h"
@@ -40,6 +41,7 @@ std::optional<double> run_ground_reflectance(const std::string& grid_dir) {
   fs::path dir = fs::absolute(grid_dir).lexically_normal();
   if (!dir.has_filename()) dir = dir.parent_path();  // "grid/" -> "grid"
   const fs::path summary = dir.parent_path() / "summary.json";
+  if (!input_file_problem(summary.string()).empty()) return std::nullopt;  // absent, or a FIFO: not waited on
   std::ifstream in(summary);
   if (!in) return std::nullopt;
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);

@@ -7,8 +7,9 @@
 #
 # The folder's `cases` file has one case per line, `NAME ARGS...` (blank lines and # comments
 # skipped). In ARGS, $DATA is the folder, $EPW the office weather file and $SCRATCH a fresh
-# temporary folder holding a named pipe `fifo` and a grid folder `fifo_grid` whose
-# coefficients_sky.mtx is a named pipe. The expected output is NAME.expected in the folder:
+# temporary folder holding a named pipe `fifo`, a grid folder `fifo_grid` whose
+# coefficients_sky.mtx is a named pipe and a results folder `fifo_results` whose
+# summary.json is one. The expected output is NAME.expected in the folder:
 # the output with the scratch path written as $SCRATCH, then "exit N". Every case must finish
 # within 30 s (a hang is a failure). UPDATE=1 rewrites the expected files (review the diff).
 set -u
@@ -21,6 +22,8 @@ mkfifo "$scratch/fifo"
 mkdir "$scratch/fifo_grid"
 mkfifo "$scratch/fifo_grid/coefficients_sky.mtx"
 printf 'index,x,y,z,nx,ny,nz\n0,1,1,0.8,0,0,1\n' >"$scratch/fifo_grid/sensors.csv"
+mkdir "$scratch/fifo_results"
+mkfifo "$scratch/fifo_results/summary.json"
 export DATA=$dir EPW=projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw SCRATCH=$scratch
 passed=0
 failed=0
