@@ -15,6 +15,7 @@
 
 #include "commands.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/input_file.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/weather/epw_reader.h"
@@ -40,6 +41,7 @@ std::optional<double> run_ground_reflectance(const std::string& grid_dir) {
   fs::path dir = fs::absolute(grid_dir).lexically_normal();
   if (!dir.has_filename()) dir = dir.parent_path();  // "grid/" -> "grid"
   const fs::path summary = dir.parent_path() / "summary.json";
+  if (!input_file_problem(summary.string()).empty()) return std::nullopt;  // absent, or a FIFO: not waited on
   std::ifstream in(summary);
   if (!in) return std::nullopt;
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
@@ -70,7 +72,12 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
   std::optional<sky::PatchBasis> requested_basis;
   if (!o.basis.empty()) requested_basis = parse_basis_option(o.basis);
 
-  const RadianceMatrix coefficients = RadianceMatrix::read_file(coefficients_path);
+  // Sky radiances and daylight coefficients are never negative: in binary data a negative
+  // value is the usual sign of the wrong byte order.
+  MatrixReadOptions read_options;
+  read_options.non_negative = true;
+  read_options.max_values = o.max_matrix_values;
+  const RadianceMatrix coefficients = RadianceMatrix::read_file(coefficients_path, read_options);
   const std::vector<SensorPoint> sensors = study::read_sensors_csv(sensors_path);
   if (sensors.size() != coefficients.rows())
     throw InputError(SourceLocation{sensors_path, 0, 0},
@@ -85,18 +92,20 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
                      "has " + std::to_string(coefficients.columns()) + " columns but --basis " + o.basis + " has " +
                          std::to_string(basis.bin_count()) + " bins");
 
-  // A missing weather file is bad input (exit 1), like a missing matrix or sensor file.
-  if (!fs::is_regular_file(o.weather_path))
-    throw InputError(SourceLocation{o.weather_path, 0, 0}, "cannot open weather file");
+  // A missing weather file (or a FIFO) is bad input (exit 1): read_epw says so, located.
   const weather::EpwFile epw = weather::read_epw(o.weather_path);
   study::AnnualSky sky;
   if (o.sky_matrix_path.empty()) {
     double rho = o.ground_reflectance;
     if (!o.ground_reflectance_given)
       if (const std::optional<double> from_run = run_ground_reflectance(o.coefficients_dir)) rho = *from_run;
+    require_matrix_within_limit("the sky matrix (" + std::to_string(basis.bin_count()) +
+                                    " bins, one column per record of " + o.weather_path + ")",
+                                static_cast<std::uint64_t>(basis.bin_count()), epw.records.size(), 3,
+                                o.max_matrix_values);
     sky = study::annual_sky_from_epw(epw, basis, study::radiance_compatible_sky_options(rho));
   } else {
-    sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, epw);
+    sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, epw, read_options, o.max_decompressed_bytes);
     if (sky.matrix.rows() != coefficients.columns() || sky.matrix.components() != coefficients.components())
       throw InputError(SourceLocation{o.sky_matrix_path, 0, 0},
                        "has " + std::to_string(sky.matrix.rows()) + " rows x " +
@@ -105,6 +114,8 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
                            std::to_string(coefficients.components()));
   }
 
+  require_matrix_within_limit("the illuminance table (" + std::to_string(sensors.size()) + " sensors, one row per record)",
+                              sensors.size(), sky.steps.size(), 1, o.max_matrix_values);
   const study::AnnualStudySettings settings;
   const study::AnnualStudy result = study::compute_annual_study(coefficients, sky, settings);
   const std::string output_dir =

@@ -13,6 +13,7 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/distant_source.h"
 #include "dayphoton/engine/photon_tracer.h"
@@ -92,6 +93,15 @@ int run_render(const RenderOptions& options, std::ostream& out) {
     sky = study::make_render_sky(sky_settings, project, basis);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());
+  }
+  if (options.photons_per_bin > 0) {
+    // The project's own photons_per_bin was checked by the loader; --photons is checked here,
+    // before anything is traced, against the same limit.
+    const double photons = double(options.photons_per_bin) * double(basis.bin_count());
+    if (photons > double(project.limits.photons))
+      throw UsageError("--photons " + std::to_string(options.photons_per_bin) + " would store " +
+                       format_number(photons) + " photons (" + std::to_string(basis.bin_count()) + " sky bins), " +
+                       over_limit_text(project.limits.photons, "limits.photons in the project"));
   }
   engine::SourceSet sources = engine::SourceSet::sky_bins(basis);
   engine::TracingOptions tracing;

@@ -56,6 +56,10 @@ int run_sky(const SkyOptions& o, const std::string& command_line, std::ostream& 
   } else {
     if (o.weather_path.empty()) throw UsageError("give a weather file or --cie TYPE");
     const weather::EpwFile epw = weather::read_epw(o.weather_path);
+    require_matrix_within_limit("the sky matrix (--basis " + o.basis + ": " + std::to_string(basis.bin_count()) +
+                                    " bins, one column per record of " + o.weather_path + ")",
+                                static_cast<std::uint64_t>(basis.bin_count()), epw.records.size(), 3,
+                                o.max_matrix_values);
     sky::SkyMatrixOptions options;
     if (o.solar_position == "radiance") options = sky::SkyMatrixOptions::gendaymtx_compatible();
     if (o.sun == "spread") options.sun = sky::SunInMatrix::Spread;

@@ -2,11 +2,13 @@
 // only wire the libraries together (all modelling lives in core/ weather/ sky/ project/ engine/).
 #pragma once
 
+#include <cstdint>
 #include <iosfwd>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "dayphoton/core/resource_limits.h"
 #include "dayphoton/sky/patch_basis.h"
 
 namespace dayphoton::app {
@@ -32,6 +34,11 @@ void require_written(std::ostream& out, const std::string& what);
 
 /// The --basis option: "tregenza" or "reinhart:N" (N in 1..64); UsageError otherwise.
 sky::PatchBasis parse_basis_option(const std::string& text);
+
+/// UsageError if a matrix of bins x steps x components values (`what`, e.g. "the sky
+/// matrix") would exceed --max-matrix-values; checked before the matrix is built.
+void require_matrix_within_limit(const std::string& what, std::uint64_t bins, std::uint64_t steps, int components,
+                                 std::uint64_t max_values);
 
 struct CheckOptions {
   std::string project_path;
@@ -67,6 +74,7 @@ struct SkyOptions {
   double ground_reflectance = 0.2;
   std::string format = "ascii";
   std::string output_path;
+  std::uint64_t max_matrix_values = ResourceLimits{}.matrix_values;
 };
 int run_sky(const SkyOptions& options, const std::string& command_line, std::ostream& out);
 
@@ -79,6 +87,8 @@ struct AnnualOptions {
   double ground_reflectance = 0.2;     ///< used if given, else the run's (summary.json), else 0.2
   bool ground_reflectance_given = false;
   bool quiet = false;
+  std::uint64_t max_matrix_values = ResourceLimits{}.matrix_values;            ///< each matrix and the table
+  std::uint64_t max_decompressed_bytes = ResourceLimits{}.decompressed_bytes;  ///< a .gz sky matrix
 };
 int run_annual(const AnnualOptions& options, std::ostream& out);
 

@@ -2,15 +2,60 @@
 // Errors in input files are printed located (file:line:col) and give exit code 1.
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
+#include <limits>
 
 #include "commands.h"
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/study/output_lock.h"
+#include "dayphoton/core/terminal_text.h"
 
 #ifndef DAYPHOTON_VERSION
 #define DAYPHOTON_VERSION "unknown"
 #endif
+
+namespace {
+
+/// A finite number. CLI11's Range and PositiveNumber let NaN through (every comparison with
+/// NaN is false), which then failed deep inside a command with exit 4 or, worse, printed a
+/// sky of NaN; "inf" is no value either.
+const CLI::Validator FiniteNumber(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0') return "expected a number, not '" + text + "'";
+      if (!std::isfinite(v)) return "expected a finite number, not '" + text + "'";
+      return {};
+    },
+    "");
+
+/// A whole number in [lo, hi], with a short message (CLI11's NonNegativeNumber printed its
+/// 300-digit upper bound). `what` names the quantity ("threads").
+CLI::Validator whole_number(long long lo, long long hi, const std::string& what) {
+  const std::string range = hi == std::numeric_limits<long long>::max()
+                                ? std::to_string(lo) + " or more"
+                                : "from " + std::to_string(lo) + " to " + std::to_string(hi);
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        char* end = nullptr;
+        errno = 0;
+        const long long v = std::strtoll(text.c_str(), &end, 10);
+        if (end == text.c_str() || *end != '\0' || errno == ERANGE || v < lo || v > hi)
+          return "expected a whole number of " + what + ", " + range + ", not '" + text + "'";
+        return {};
+      },
+      hi == std::numeric_limits<long long>::max() ? "INT >= " + std::to_string(lo)
+                                                  : "INT in [" + std::to_string(lo) + " - " + std::to_string(hi) + "]");
+}
+
+constexpr long long Unbounded = std::numeric_limits<long long>::max();
+// More worker threads than this is a typo, not a machine.
+constexpr long long MaxThreads = 4096;
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace dayphoton::app;
@@ -18,6 +63,17 @@ int main(int argc, char** argv) {
   cli.name("dayphoton");
   cli.set_version_flag("--version", std::string("dayphoton ") + DAYPHOTON_VERSION);
   cli.require_subcommand(1);
+  // Command-line text echoed in an error is printed with its control characters escaped.
+  cli.failure_message([](const CLI::App* app, const CLI::Error& e) {
+    const std::string text = CLI::FailureMessage::simple(app, e);
+    std::string shown;
+    for (std::size_t start = 0, end; start < text.size(); start = end + 1) {
+      end = text.find('\n', start);
+      if (end == std::string::npos) end = text.size();
+      shown += dayphoton::printable_text(std::string_view(text).substr(start, end - start)) + "\n";
+    }
+    return shown;
+  });
 
   CheckOptions check;
   auto* check_cmd = cli.add_subcommand("check", "Validate a project file and print a summary of the model");
@@ -28,7 +84,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("projects", run.project_paths, "Project files (YAML)")->required();
   run_cmd->add_option("-o,--output", run.output_dir, "Output folder (default: results/ beside the project)");
   run_cmd->add_option("-j,--threads", run.threads, "Worker threads (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, MaxThreads, "threads (0: all cores)"));
   run_cmd->add_flag("--force", run.force, "Recompute every step even if cached");
   run_cmd->add_flag("-q,--quiet", run.quiet, "Print errors only");
 
@@ -46,11 +102,12 @@ int main(int argc, char** argv) {
       "sky", "Annual sky matrix of a weather file, or the sky vector of a CIE sky (RADIANCE matrix format)");
   sky_cmd->add_option("weather", sky.weather_path, "Weather file (EPW)");
   sky_cmd->add_option("--cie", sky.cie, "CIE sky instead of a weather file: 1..15 (ISO 15469), overcast, uniform");
-  sky_cmd->add_option("--altitude", sky.sun_altitude_deg, "CIE general skies: sun altitude (deg)");
-  sky_cmd->add_option("--azimuth", sky.sun_azimuth_deg, "CIE general skies: sun azimuth (deg, clockwise from north)");
+  sky_cmd->add_option("--altitude", sky.sun_altitude_deg, "CIE general skies: sun altitude (deg)")->check(FiniteNumber);
+  sky_cmd->add_option("--azimuth", sky.sun_azimuth_deg, "CIE general skies: sun azimuth (deg, clockwise from north)")
+      ->check(FiniteNumber);
   sky_cmd->add_option("--illuminance", sky.horizontal_illuminance_lux,
                       "CIE skies: diffuse horizontal illuminance (lux, default 10000)")
-      ->check(CLI::PositiveNumber);
+      ->check(FiniteNumber)->check(CLI::PositiveNumber);
   sky_cmd->add_option("--basis", sky.basis, "tregenza (default) or reinhart:N");
   sky_cmd->add_option("--sun", sky.sun, "spread (into 4 patches, default), none (sky only), only (sun only)")
       ->check(CLI::IsMember({"spread", "none", "only"}));
@@ -59,10 +116,14 @@ int main(int argc, char** argv) {
                       "sky colour, 11 C dew point)")
       ->check(CLI::IsMember({"spa", "radiance"}));
   sky_cmd->add_option("--ground-reflectance", sky.ground_reflectance, "Ground reflectance (default 0.2)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(FiniteNumber)->check(CLI::Range(0.0, 1.0));
   sky_cmd->add_option("--format", sky.format, "ascii (default), float or double")
       ->check(CLI::IsMember({"ascii", "float", "double"}));
   sky_cmd->add_option("-o,--output", sky.output_path, "Output matrix file (default: standard output)");
+  sky_cmd->add_option("--max-matrix-values", sky.max_matrix_values,
+                      "Most values (bins x records x 3) of the sky matrix (default " +
+                          std::to_string(sky.max_matrix_values) + ", 1 GiB of floats)")
+      ->check(whole_number(1, Unbounded, "values"));
 
   AnnualOptions annual;
   auto* annual_cmd = cli.add_subcommand(
@@ -80,8 +141,16 @@ int main(int argc, char** argv) {
   annual_cmd->add_option("--ground-reflectance", annual.ground_reflectance,
                          "Ground reflectance of the sky built from the weather file (default: the run's, from "
                          "summary.json beside the grid folder, else 0.2)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(FiniteNumber)->check(CLI::Range(0.0, 1.0));
   annual_cmd->add_flag("-q,--quiet", annual.quiet, "Print errors only");
+  annual_cmd->add_option("--max-matrix-values", annual.max_matrix_values,
+                         "Most values of each matrix read or built and of the illuminance table (default " +
+                             std::to_string(annual.max_matrix_values) + ", 1 GiB of floats)")
+      ->check(whole_number(1, Unbounded, "values"));
+  annual_cmd->add_option("--max-decompressed-bytes", annual.max_decompressed_bytes,
+                         "Most bytes a .gz sky matrix may decompress to (default " +
+                             std::to_string(annual.max_decompressed_bytes) + ")")
+      ->check(whole_number(1, Unbounded, "bytes"));
 
 
   ReportOptions report;
@@ -103,7 +172,7 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--direction", render.direction, "View direction dx,dy,dz")->required();
   render_cmd->add_option("--up", render.up, "Up vector (default 0,0,1)");
   render_cmd->add_option("--fov", render.fov_deg, "Horizontal field of view (deg), or the fisheye's image circle")
-      ->check(CLI::Range(1.0, 360.0));
+      ->check(FiniteNumber)->check(CLI::Range(1.0, 360.0));
   render_cmd->add_flag("--fisheye", render.fisheye, "Angular (equidistant) fisheye instead of a perspective view");
   render_cmd->add_option("--width", render.width, "Image width (pixels, default 512)")->check(CLI::Range(1, 16384));
   render_cmd->add_option("--height", render.height, "Image height (pixels, default 384)")->check(CLI::Range(1, 16384));
@@ -111,22 +180,24 @@ int main(int argc, char** argv) {
                          "overcast (default), uniform, cie:N (ISO 15469 type 1..15) or hour:M/D/H of the weather file");
   render_cmd->add_option("--illuminance", render.horizontal_illuminance_lux,
                          "overcast, uniform, cie:N: diffuse horizontal illuminance (lux, default 10000)")
-      ->check(CLI::PositiveNumber);
-  render_cmd->add_option("--sun-altitude", render.sun_altitude_deg, "cie:N: sun altitude (deg, default 45)");
+      ->check(FiniteNumber)->check(CLI::PositiveNumber);
+  render_cmd->add_option("--sun-altitude", render.sun_altitude_deg, "cie:N: sun altitude (deg, default 45)")
+      ->check(FiniteNumber);
   render_cmd->add_option("--sun-azimuth", render.sun_azimuth_deg,
-                         "cie:N: sun azimuth (deg clockwise from north, default 180)");
+                         "cie:N: sun azimuth (deg clockwise from north, default 180)")
+      ->check(FiniteNumber);
   render_cmd->add_option("--samples", render.samples_per_pixel, "Samples per pixel (default 4)")
       ->check(CLI::Range(1, 4096));
   render_cmd->add_option("--direct-samples", render.direct_samples,
                          "Shadow rays toward the windows per surface point (default 16)")
       ->check(CLI::Range(1, 4096));
   render_cmd->add_option("--photons", render.photons_per_bin, "Stored photons per sky bin (default: the project's)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, Unbounded, "photons"));
   render_cmd->add_option("--bandwidth", render.bandwidth, "Photons per density estimate (default 200)")
       ->check(CLI::Range(1, 100000));
   render_cmd->add_option("-o,--output", render.output_path, "Output EXR (the PNG is written beside it)")->required();
   render_cmd->add_option("-j,--threads", render.threads, "Worker threads (default: all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(whole_number(0, MaxThreads, "threads (0: all cores)"));
   render_cmd->add_flag("-q,--quiet", render.quiet, "Print errors only");
 
   try {
@@ -166,10 +237,10 @@ int main(int argc, char** argv) {
     std::cerr << e.what();
     return ExitInputError;
   } catch (const UsageError& e) {
-    std::cerr << "dayphoton: error: " << e.what() << '\n';
+    std::cerr << "dayphoton: error: " << dayphoton::printable_text(e.what()) << '\n';
     return ExitUsageError;
   } catch (const std::exception& e) {
-    std::cerr << "dayphoton: error: " << e.what() << '\n';
+    std::cerr << "dayphoton: error: " << dayphoton::printable_text(e.what()) << '\n';
     return ExitInternalError;
   }
   return ExitUsageError;

@@ -43,8 +43,8 @@ std::string utc_offset_text(double hours) {
 }
 
 std::vector<std::string> describe_weather(const project::Project& proj) {
-  // A daylight-factor study needs no weather file (the loader checks when one is needed).
-  if (proj.weather.path.empty()) return {"none (daylight factor only)"};
+  // A daylight-factor study needs no weather file (load_project checks when one is needed).
+  if (proj.weather.path.empty()) return {"none (daylight factors only)"};
   const weather::EpwFile epw = weather::read_epw(proj.weather.path);
   const weather::EpwLocation& loc = epw.header.location;
   std::vector<std::string> lines;

@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(
   cmake make g++ pkg-config
   libembree-dev libgeographiclib-dev libopenexr-dev libyaml-cpp-dev nlohmann-json3-dev
-  libtbb-dev libcli11-dev libgtest-dev libpng-dev
+  libtbb-dev libcli11-dev libgtest-dev libpng-dev zlib1g-dev
   python3
   chromium  # headless browser of the report test (tests/report/)
 )

@@ -1,15 +1,17 @@
 // Test support: reading the RADIANCE reference results in tests/data/radiance (README.md
-// there), some of which are gzip-compressed (decompressed with the system's gzip).
+// there), some of which are gzip-compressed (decompressed by zlib through dayphoton's
+// GzipInput).
 #pragma once
 
-#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "dayphoton/core/gzip_input.h"
 #include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/core/resource_limits.h"
 
 namespace dayphoton::test {
 
@@ -19,21 +21,9 @@ namespace dayphoton::test {
 /// the base of the DA300 bound in tests/study/annual_study_test.cpp.
 constexpr double GendaymtxElementTolerance = 0.01;
 
-/// The whole decompressed text of a .gz file; throws if gzip cannot read it.
-inline std::string read_gzip_text(const std::string& path) {
-  FILE* pipe = popen(("gzip -dc '" + path + "'").c_str(), "r");
-  if (!pipe) throw std::runtime_error("cannot run gzip on " + path);
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) text.append(buffer, n);
-  if (pclose(pipe) != 0) throw std::runtime_error("gzip failed on " + path);
-  return text;
-}
-
 /// A gzip-compressed RADIANCE matrix (e.g. gendaymtx output).
 inline RadianceMatrix read_gzip_matrix(const std::string& path) {
-  std::istringstream in(read_gzip_text(path));
+  GzipInput in(path, ResourceLimits{}.decompressed_bytes, "reference file", "the test");
   return RadianceMatrix::read(in, path);
 }
 

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "dayphoton/core/terminal_text.h"
+
 namespace dayphoton {
 
 std::string SourceLocation::to_string() const {
@@ -28,17 +30,26 @@ const char* severity_name(Severity s) {
 }
 }  // namespace
 
+// The echoed line of the input is cut after this many bytes: a wrongly named binary or
+// minified file has lines of megabytes.
+constexpr std::size_t MaxEchoBytes = 200;
+
 std::string Diagnostic::format() const {
+  // Everything taken from inputs (file name, message, line) is printed with its control
+  // characters escaped (terminal_text.h).
   std::ostringstream s;
-  if (!location.file.empty()) s << location.to_string() << ": ";
-  s << severity_name(severity) << ": " << message << '\n';
+  if (!location.file.empty()) s << printable_text(location.to_string()) << ": ";
+  s << severity_name(severity) << ": " << printable_text(message) << '\n';
   if (!source_line.empty()) {
-    s << "    " << source_line << '\n';
-    if (location.column > 0) {
-      // Keep tabs so the caret lines up under the offending column.
+    const bool cut = source_line.size() > MaxEchoBytes;
+    const std::string_view shown = std::string_view(source_line).substr(0, MaxEchoBytes);
+    s << "    " << printable_text(shown) << (cut ? "..." : "") << '\n';
+    if (location.column > 0 && static_cast<std::size_t>(location.column) <= shown.size() + 1) {
+      // Keep tabs so the caret lines up under the offending column; an escaped character
+      // is as wide as its escape, a UTF-8 character one column.
       std::string pad;
-      for (int i = 0; i + 1 < location.column && i < static_cast<int>(source_line.size()); ++i)
-        pad += source_line[i] == '\t' ? '\t' : ' ';
+      for (const char c : printable_text(shown.substr(0, static_cast<std::size_t>(location.column - 1))))
+        if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) pad += c == '\t' ? '\t' : ' ';
       s << "    " << pad << "^\n";
     }
   }

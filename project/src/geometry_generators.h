@@ -63,25 +63,31 @@ void generate_mesh(const MeshSpec& mesh, MaterialLookup& materials, Diagnostics&
 void validate_surface(const Surface& surface, Diagnostics& diag);
 
 /// Sensor grid over a room's floor rectangle, a polygon, a room surface or a rectangle
-/// (model coordinates). Returns false (after reporting) when the spec is invalid or yields
-/// no point.
-bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
-                   SensorGrid& out);
+/// (model coordinates). Returns false (after reporting) when the spec is invalid, yields no
+/// point, or would yield more than `max_points` (limits.sensors_per_grid; reported at
+/// `spacing` before any point is made).
+bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, std::uint64_t max_points,
+                   Diagnostics& diag, SensorGrid& out);
 
-/// The wall and rectangle grids of generate_grid (surface_grid.cpp).
-bool generate_surface_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
-                           SensorGrid& out);
+/// The wall and rectangle grids of generate_grid (surface_grid.cpp), with the same limit.
+bool generate_surface_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, std::uint64_t max_points,
+                           Diagnostics& diag, SensorGrid& out);
 
 /// Number of lattice points over `span_m` at `spacing_m` (0 if the span is negative) and,
 /// in `first_m`, the first point's distance from the span's start, so that the lattice is
-/// centred in the span (sensor_grid.cpp).
-int centred_lattice(double span_m, double spacing_m, double& first_m);
+/// centred in the span (sensor_grid.cpp). A double: a tiny spacing over a huge span gives more
+/// points than any integer type holds, so callers check it against their limit before
+/// converting it.
+double lattice(double span_m, double spacing_m, double& first_m);
+
+/// "<what> would have N sensors, more than limits.sensors_per_grid (...)".
+std::string limit_message(const std::string& what, double count, std::uint64_t max_points);
 
 /// The room named `name`, or nullptr after reporting "<what>: unknown room" with a hint.
 const RoomSpec* find_grid_room(const std::string& name, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
                                const SourceLocation& where, const std::string& what);
 
-/// Sensor points given inline and/or in a .pts file.
-bool generate_points(const PointsSpec& spec, Diagnostics& diag, SensorGrid& out);
+/// Sensor points given inline and/or in a .pts file, at most `max_points` of them.
+bool generate_points(const PointsSpec& spec, std::uint64_t max_points, Diagnostics& diag, SensorGrid& out);
 
 }  // namespace dayphoton::project::detail

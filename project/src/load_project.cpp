@@ -19,6 +19,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/path_name.h"
+#include "dayphoton/core/input_file.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/project/project_schema.h"
 #include "dayphoton/project/site_geodesy.h"
@@ -144,7 +145,9 @@ class Loader {
     }
     for_each_item(r, "variants", [&](const YamlNode& n) { read_variant(n); });
     if (const YamlNode* n = r.take("operation")) read_operation(*n);
+    if (const YamlNode* n = r.take("limits")) read_limits(*n);
     r.finish();
+    check_photon_limit();
 
     const Outputs& o = m_project.outputs;
     if (m_project.weather.path.empty() && !weather && (o.annual_illuminance || o.metrics))
@@ -166,9 +169,13 @@ class Loader {
   bool existing_file(const std::string& what, const std::string& written,
                      const SourceLocation& loc, std::string& resolved) {
     resolved = resolve(written);
-    std::error_code ec;
-    if (!fs::is_regular_file(resolved, ec)) {
+    const std::string problem = input_file_problem(resolved);
+    if (problem == "not found") {
       m_reporter.error(loc, what + " '" + written + "' not found (looked for '" + resolved + "')");
+      return false;
+    }
+    if (!problem.empty()) {
+      m_reporter.error(loc, what + " '" + written + "' " + problem);
       return false;
     }
     return true;
@@ -681,6 +688,7 @@ class Loader {
                                                 "grids are placed by 'height')");
     r.read_number("height", g.height_m);
     r.read_number("spacing", g.spacing_m);
+    g.spacing_location = r.location_of("spacing");
     r.read_number("inset", g.inset_m);
     r.read_number("offset", g.offset_m);
     Vec3 normal;
@@ -776,6 +784,7 @@ class Loader {
     ParamReader r(node, schema_section("simulation"), m_reporter);
     read_basis(r);
     long long v = 0;
+    s.photons_per_bin_location = r.location_of("photons_per_bin");
     if (r.read_integer("photons_per_bin", v)) s.photons_per_bin = v;
     if (r.read_integer("bandwidth", v)) s.bandwidth = static_cast<int>(v);
     if (r.read_integer("seed", v)) s.seed = static_cast<unsigned long long>(v);
@@ -848,6 +857,36 @@ class Loader {
     if (!text.empty() && !hint.empty())
       message += " (did you mean '" + std::string(hint == "reinhart" ? "reinhart:N" : hint) + "'?)";
     m_reporter.error(node->location, message);
+  }
+
+  // ---- limits ---------------------------------------------------------------------------
+  void read_limits(const YamlNode& node) {
+    if (!expect_map(node, "limits", m_reporter)) return;
+    ResourceLimits& l = m_project.limits;
+    ParamReader r(node, schema_section("limits"), m_reporter);
+    long long v = 0;
+    if (r.read_integer("sensors_per_grid", v)) l.sensors_per_grid = static_cast<std::uint64_t>(v);
+    if (r.read_integer("sensors", v)) l.sensors = static_cast<std::uint64_t>(v);
+    if (r.read_integer("photons", v)) l.photons = static_cast<std::uint64_t>(v);
+    r.finish();
+  }
+
+  /// The photons one tracing pass stores, (photons_per_bin + caustic_photons_per_bin) x sky
+  /// bins, against limits.photons; reported at photons_per_bin before anything is traced.
+  void check_photon_limit() {
+    const Simulation& s = m_project.simulation;
+    // Bins of the sky basis, ground included: Tregenza 145 patches + 1; Reinhart MF n
+    // 144 n^2 + 1 patches + 1 (Reinhart, "Tregenza's and Reinhart's sky subdivisions";
+    // RADIANCE's reinhartb.cal).
+    const double bins = s.basis == SkyBasis::Tregenza ? 146.0 : 144.0 * s.reinhart_mf * s.reinhart_mf + 2.0;
+    const double per_bin = double(s.photons_per_bin) + double(s.caustic_photons_per_bin);
+    const double photons = per_bin * bins;
+    const std::uint64_t limit = m_project.limits.photons;
+    if (photons <= double(limit)) return;
+    m_reporter.error(s.photons_per_bin_location,
+                     "one tracing pass would store " + format_number(photons) + " photons (" +
+                         format_number(per_bin) + " per bin x " + format_number(bins) + " sky bins), " +
+                         over_limit_text(limit, "limits.photons") + "; 32 bytes each");
   }
 
   void read_outputs(const YamlNode& node) {
@@ -1160,8 +1199,7 @@ Project load_project_from_string(const std::string& text, const std::string& pat
 }
 
 Project load_project(const std::string& path, const LoadOptions& options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open project file");
+  std::ifstream in = open_input_file(path, "project file");
   // One byte more than the limit is enough for the loader to say the file is too large.
   std::string text(MaxYamlBytes + 1, '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));

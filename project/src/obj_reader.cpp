@@ -11,6 +11,7 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "dayphoton/core/input_file.h"
 #include "text_tokens.h"
 
 namespace dayphoton::project {
@@ -48,9 +49,18 @@ class ObjParser {
   void parse(std::istream& in) {
     std::string line;
     int line_no = 0;
+    const std::size_t errors_before = m_diag.error_count();
+    bool any_valid = false;
     while (std::getline(in, line)) {
       ++line_no;
+      if (!any_valid && m_diag.error_count() - errors_before >= detail::MaxErrorsBeforeValidLine) {
+        m_diag.error({m_path, line_no, 0}, "stopping after " + std::to_string(detail::MaxErrorsBeforeValidLine) +
+                                               " errors and no valid line: is this an OBJ file?");
+        break;
+      }
+      const std::size_t errors_at_line = m_diag.error_count();
       parse_line(line, line_no);
+      any_valid = any_valid || (m_diag.error_count() == errors_at_line && !detail::tokenize(line).empty());
       if (m_diag.at_cap()) break;  // enough to show; do not churn through a broken file
     }
   }
@@ -93,7 +103,7 @@ class ObjParser {
       error(line, line_no, tokens[0].column,
             "free-form geometry ('" + keyword + "') is not supported; export the mesh as polygons");
     } else {
-      error(line, line_no, tokens[0].column, "unknown OBJ statement '" + keyword + "'");
+      error(line, line_no, tokens[0].column, "unknown OBJ statement '" + detail::quoted_token(keyword) + "'");
     }
   }
 
@@ -105,10 +115,10 @@ class ObjParser {
       double value = 0;
       const NumberStatus status = detail::parse_number(tokens[i].text, value);
       if (status == NumberStatus::NotANumber) {
-        error(line, line_no, tokens[i].column, "expected a number, found '" + tokens[i].text + "'");
+        error(line, line_no, tokens[i].column, "expected a number, found '" + detail::quoted_token(tokens[i].text) + "'");
         ok = false;
       } else if (status == NumberStatus::NotFinite) {
-        error(line, line_no, tokens[i].column, "vertex coordinate is not finite ('" + tokens[i].text + "')");
+        error(line, line_no, tokens[i].column, "vertex coordinate is not finite ('" + detail::quoted_token(tokens[i].text) + "')");
         ok = false;
       } else if (i <= 3) {
         p[static_cast<int>(i - 1)] = value;
@@ -131,7 +141,7 @@ class ObjParser {
     for (std::size_t i = 1; i < tokens.size(); ++i) {
       double value = 0;
       if (detail::parse_number(tokens[i].text, value) != NumberStatus::Ok)
-        error(line, line_no, tokens[i].column, "expected a finite number, found '" + tokens[i].text + "'");
+        error(line, line_no, tokens[i].column, "expected a finite number, found '" + detail::quoted_token(tokens[i].text) + "'");
     }
     const std::size_t n = tokens.size() - 1;
     if ((is_normal && n != 3) || (!is_normal && (n < 1 || n > 3)))
@@ -147,7 +157,7 @@ class ObjParser {
                      const std::string& line, int line_no, int column, std::size_t& index) {
     long long value = 0;
     if (!detail::parse_integer(text, value)) {
-      error(line, line_no, column, std::string("expected a ") + what + " index, found '" + text + "'");
+      error(line, line_no, column, std::string("expected a ") + what + " index, found '" + detail::quoted_token(text) + "'");
       return false;
     }
     const long long n = static_cast<long long>(count);
@@ -186,7 +196,7 @@ class ObjParser {
         start = slash + 1;
       }
       if (parts.size() > 3) {
-        error(line, line_no, tok.column, "face vertex '" + tok.text + "' has more than v/vt/vn");
+        error(line, line_no, tok.column, "face vertex '" + detail::quoted_token(tok.text) + "' has more than v/vt/vn");
         ok = false;
         continue;
       }
@@ -229,13 +239,18 @@ class ObjParser {
 }  // namespace
 
 ObjMesh read_obj(const std::string& path, Diagnostics& diag, const SourceLocation& referenced_from) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const std::string why = std::strerror(errno);
+  // A FIFO or a device would block or stream forever: refuse anything but a regular file.
+  std::string why = input_file_problem(path);
+  std::ifstream in;
+  if (why.empty()) {
+    in.open(path, std::ios::binary);
+    if (!in) why = std::string("cannot be opened: ") + std::strerror(errno);
+  }
+  if (!why.empty()) {
     if (referenced_from.known())
-      diag.error(referenced_from, "cannot open OBJ file '" + path + "': " + why);
+      diag.error(referenced_from, "OBJ file '" + path + "' " + why);
     else
-      diag.error({path, 0, 0}, "cannot open OBJ file: " + why);
+      diag.error({path, 0, 0}, "OBJ file " + why);
     return {};
   }
   ObjParser parser(path, diag);

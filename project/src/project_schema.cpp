@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/resource_limits.h"
 
 namespace dayphoton::project {
 
@@ -97,6 +98,7 @@ std::vector<SectionSchema> build_schema() {
       P("metrics", T::Section, "thresholds and occupancy of the results").section("metrics"),
       P("variants", T::SectionList, "study variants: the project with some materials replaced").section("variant"),
       P("operation", T::Section, "operated shading (LM-83 blinds rule): per hour the open or the shaded case").section("operation"),
+      P("limits", T::Section, "the largest study the project may make; raise a limit for a study that needs more").section("limits"),
   }});
   s.push_back({"site", "location of the site and orientation of the model", {
       P("name", T::String, "site name for reports").def(""),
@@ -349,6 +351,12 @@ std::vector<SectionSchema> build_schema() {
   }});
   s.push_back({"basis", "map form of simulation.basis", {
       P("reinhart", T::Integer, "Reinhart subdivision MF (1 = Tregenza, 145 patches; MF n: 144 n^2 + 1)").range(1, 12).required(),
+  }});
+  const ResourceLimits limits;  // the defaults, declared once in core/resource_limits.h
+  s.push_back({"limits", "resource limits, checked before anything of that size is allocated: a typo such as `spacing: 0.000001` gives an error, not gigabytes of memory", {
+      P("sensors_per_grid", T::Integer, "sensors in one grid or point set (an annual table holds 35 KB per sensor)").at_least(1).def(std::to_string(limits.sensors_per_grid)),
+      P("sensors", T::Integer, "sensors of all grids and point sets together").at_least(1).def(std::to_string(limits.sensors)),
+      P("photons", T::Integer, "photons stored by one tracing pass, (photons_per_bin + caustic_photons_per_bin) x sky bins (146 Tregenza, 144 n^2 + 2 Reinhart MF n); 32 bytes each").at_least(1).def(std::to_string(limits.photons)),
   }});
   s.push_back({"outputs", "what is written, and where", {
       P("folder", T::Path, "output folder, relative to the project file; outside the project's folder (absolute, or leaving it with ..) only with folder_outside_project or `run --output`").def("results"),

@@ -7,18 +7,27 @@
 #include <fstream>
 #include <sstream>
 
+#include "dayphoton/core/input_file.h"
 #include "text_tokens.h"
 
 namespace dayphoton::project {
 
 namespace {
 
-std::vector<SensorPoint> parse_pts(std::istream& in, const std::string& path, Diagnostics& diag) {
+std::vector<SensorPoint> parse_pts(std::istream& in, const std::string& path, Diagnostics& diag,
+                                   std::uint64_t max_points, const std::string& limit_raised_by) {
   std::vector<SensorPoint> points;
   std::string line;
   int line_no = 0;
+  const std::size_t errors_before = diag.error_count();
+  std::size_t valid_lines = 0;
   while (std::getline(in, line) && !diag.at_cap()) {
     ++line_no;
+    if (valid_lines == 0 && diag.error_count() - errors_before >= detail::MaxErrorsBeforeValidLine) {
+      diag.error({path, line_no, 0}, "stopping after " + std::to_string(detail::MaxErrorsBeforeValidLine) +
+                                         " errors and no valid line: is this a sensor file (x y z nx ny nz per line)?");
+      break;
+    }
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::vector<detail::Token> tokens = detail::tokenize(line);
     if (tokens.empty()) continue;
@@ -29,8 +38,8 @@ std::vector<SensorPoint> parse_pts(std::istream& in, const std::string& path, Di
       if (status != detail::NumberStatus::Ok) {
         diag.error({path, line_no, tokens[i].column},
                    status == detail::NumberStatus::NotFinite
-                       ? "value is not finite ('" + tokens[i].text + "')"
-                       : "expected a number, found '" + tokens[i].text + "'",
+                       ? "value is not finite ('" + detail::quoted_token(tokens[i].text) + "')"
+                       : "expected a number, found '" + detail::quoted_token(tokens[i].text) + "'",
                    line);
         ok = false;
       }
@@ -51,7 +60,12 @@ std::vector<SensorPoint> parse_pts(std::istream& in, const std::string& path, Di
       diag.error({path, line_no, tokens[3].column}, "sensor direction is zero", line);
       continue;
     }
+    if (points.size() == max_points) {
+      diag.error({path, line_no, 1}, "this file holds " + over_limit_text(max_points, limit_raised_by, "sensors"));
+      break;
+    }
     points.push_back({position, direction / len});
+    ++valid_lines;
   }
   return points;
 }
@@ -59,23 +73,28 @@ std::vector<SensorPoint> parse_pts(std::istream& in, const std::string& path, Di
 }  // namespace
 
 std::vector<SensorPoint> read_pts(const std::string& path, Diagnostics& diag,
-                                  const SourceLocation& referenced_from) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const std::string why = std::strerror(errno);
+                                  const SourceLocation& referenced_from, std::uint64_t max_points) {
+  // A FIFO or a device would block or stream forever: refuse anything but a regular file.
+  std::string why = input_file_problem(path);
+  std::ifstream in;
+  if (why.empty()) {
+    in.open(path, std::ios::binary);
+    if (!in) why = std::string("cannot be opened: ") + std::strerror(errno);
+  }
+  if (!why.empty()) {
     if (referenced_from.known())
-      diag.error(referenced_from, "cannot open sensor file '" + path + "': " + why);
+      diag.error(referenced_from, "sensor file '" + path + "' " + why);
     else
-      diag.error({path, 0, 0}, "cannot open sensor file: " + why);
+      diag.error({path, 0, 0}, "sensor file " + why);
     return {};
   }
-  return parse_pts(in, path, diag);
+  return parse_pts(in, path, diag, max_points, "limits.sensors_per_grid");
 }
 
 std::vector<SensorPoint> read_pts_from_string(const std::string& text, const std::string& path,
                                               Diagnostics& diag) {
   std::istringstream in(text);
-  return parse_pts(in, path, diag);
+  return parse_pts(in, path, diag, ResourceLimits{}.sensors_per_grid, "limits.sensors_per_grid");
 }
 
 }  // namespace dayphoton::project

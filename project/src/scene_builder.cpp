@@ -154,15 +154,28 @@ SceneDescription build_scene_description(const Project& project) {
     if (!sensor_names.insert(name).second)
       detail::report(diag, where, "sensor set name '" + name + "' is used twice (names must be unique: each gets its own output folder)");
   };
+  // All sensor sets together: at most limits.sensors, reported at the set that passes it.
+  std::uint64_t sensor_count = 0;
+  bool over_total = false;
+  auto add_sensors = [&](SensorGrid&& grid) {
+    sensor_count += grid.points.size();
+    if (sensor_count > project.limits.sensors && !over_total) {
+      over_total = true;
+      detail::report(diag, grid.location,
+                     "sensor set '" + grid.name + "' brings the project to " + std::to_string(sensor_count) +
+                         " sensors, " + over_limit_text(project.limits.sensors, "limits.sensors"));
+    }
+    if (!over_total) scene.grids.push_back(std::move(grid));
+  };
   for (const GridSpec& spec : project.sensors.grids) {
     check_name(spec.name, spec.location);
     SensorGrid grid;
-    if (detail::generate_grid(spec, g.rooms, diag, grid)) scene.grids.push_back(std::move(grid));
+    if (detail::generate_grid(spec, g.rooms, project.limits.sensors_per_grid, diag, grid)) add_sensors(std::move(grid));
   }
   for (const PointsSpec& spec : project.sensors.points) {
     check_name(spec.name, spec.location);
     SensorGrid grid;
-    if (detail::generate_points(spec, diag, grid)) scene.grids.push_back(std::move(grid));
+    if (detail::generate_points(spec, project.limits.sensors_per_grid, diag, grid)) add_sensors(std::move(grid));
   }
 
   if (const auto& roi = project.simulation.region_of_interest) {

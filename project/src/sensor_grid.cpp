@@ -22,6 +22,11 @@
 //
 // Point sets: inline points followed by the points of a .pts file (pts_reader.h), normals
 // normalised.
+//
+// Limits (core/resource_limits.h): a grid or point set holds at most limits.sensors_per_grid
+// sensors. The count is computed in floating point from the spans and the spacing and
+// checked before any point is made (a spacing of 1e-6 m, or a room of 1e6 m, gives a count
+// no integer holds); the error is placed at `spacing`.
 #include "dayphoton/core/diagnostics.h"
 #include <algorithm>
 #include <cmath>
@@ -37,6 +42,11 @@ namespace {
 
 constexpr double CountEpsilon = 1e-9;
 
+// A polygon grid tests every point of the lattice over the polygon's bounding box against
+// the outline: that lattice may hold at most this many times limits.sensors_per_grid points
+// (a thin diagonal strip has a huge box and few points inside).
+constexpr double PolygonLatticeFactor = 100;
+
 void set_plane(SensorGrid& out, const Vec3& normal, double height_m) {
   out.planar = std::fabs(normal.z) > 1 - 1e-12;
   out.plane_normal = out.planar ? Vec3{0, 0, normal.z > 0 ? 1.0 : -1.0} : normal;
@@ -45,12 +55,21 @@ void set_plane(SensorGrid& out, const Vec3& normal, double height_m) {
 
 }  // namespace
 
-int centred_lattice(double span_m, double spacing_m, double& first_m) {
+/// Number of lattice points over `span_m` (0 if the span is negative beyond rounding), and
+/// the first point's offset (centred). A double: a tiny spacing over a huge span gives more
+/// points than any integer type holds (5e300), so it is checked against the limit before
+/// it is converted.
+double lattice(double span_m, double spacing_m, double& first_m) {
   if (span_m < -CountEpsilon * std::max(1.0, spacing_m)) return 0;
   span_m = std::max(0.0, span_m);
-  const int n = static_cast<int>(std::floor(span_m / spacing_m + CountEpsilon)) + 1;
+  const double n = std::floor(span_m / spacing_m + CountEpsilon) + 1;
   first_m = 0.5 * (span_m - (n - 1) * spacing_m);
   return n;
+}
+
+std::string limit_message(const std::string& what, double count, std::uint64_t max_points) {
+  return what + " would have " + format_number(count) + " sensors, " +
+         over_limit_text(max_points, "limits.sensors_per_grid");
 }
 
 const RoomSpec* find_grid_room(const std::string& name, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
@@ -67,8 +86,8 @@ const RoomSpec* find_grid_room(const std::string& name, const std::vector<RoomSp
   return nullptr;
 }
 
-bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
-                   SensorGrid& out) {
+bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, std::uint64_t max_points,
+                   Diagnostics& diag, SensorGrid& out) {
   const std::string what = "grid '" + spec.name + "'";
   const int outlines = int(!spec.room.empty()) + int(!spec.polygon.empty()) + int(spec.wall.has_value()) +
                        int(spec.rectangle.has_value());
@@ -76,7 +95,8 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Dia
     report(diag, spec.location, what + ": give exactly one of room, polygon, wall and rectangle");
     return false;
   }
-  if (spec.wall || spec.rectangle) return generate_surface_grid(spec, rooms, diag, out);
+  if (spec.wall || spec.rectangle) return generate_surface_grid(spec, rooms, max_points, diag, out);
+  const SourceLocation& at_spacing = spec.spacing_location.known() ? spec.spacing_location : spec.location;
   bool ok = true;
   if (!std::isfinite(spec.spacing_m) || spec.spacing_m <= 0) {
     report(diag, spec.location_of("spacing"), what + ": spacing must be positive");
@@ -109,8 +129,16 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Dia
     if (!is_finite(room->origin) || !is_finite(room->size_m)) return false;  // reported by the room
     const double z = room->origin.z + spec.height_m;
     double x_first = 0, y_first = 0;
-    const int nx = centred_lattice(room->size_m.x - 2 * spec.inset_m, spec.spacing_m, x_first);
-    const int ny = centred_lattice(room->size_m.y - 2 * spec.inset_m, spec.spacing_m, y_first);
+    const double nx = lattice(room->size_m.x - 2 * spec.inset_m, spec.spacing_m, x_first);
+    const double ny = lattice(room->size_m.y - 2 * spec.inset_m, spec.spacing_m, y_first);
+    if (!(nx * ny <= static_cast<double>(max_points))) {
+      report(diag, at_spacing,
+             limit_message(what + " (" + format_number(nx) + " x " + format_number(ny) + " at spacing " +
+                               format_number(spec.spacing_m) + " m over room '" + room->name + "', " +
+                               format_number(room->size_m.x) + " x " + format_number(room->size_m.y) + " m)",
+                           nx * ny, max_points));
+      return false;
+    }
     if (nx <= 0 || ny <= 0) {
       report(diag, spec.location,
              what + " has no points: the inset (" + format_number(spec.inset_m) + " m) leaves nothing of room '" +
@@ -119,11 +147,13 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Dia
     }
     const double x0 = room->origin.x + spec.inset_m + x_first;
     const double y0 = room->origin.y + spec.inset_m + y_first;
-    for (int iy = 0; iy < ny; ++iy)
-      for (int ix = 0; ix < nx; ++ix)
-        out.points.push_back({{x0 + ix * spec.spacing_m, y0 + iy * spec.spacing_m, z}, normal});
-    out.columns = nx;
-    out.rows = ny;
+    const std::size_t columns = static_cast<std::size_t>(nx), rows = static_cast<std::size_t>(ny);
+    out.points.reserve(columns * rows);
+    for (std::size_t iy = 0; iy < rows; ++iy)
+      for (std::size_t ix = 0; ix < columns; ++ix)
+        out.points.push_back({{x0 + double(ix) * spec.spacing_m, y0 + double(iy) * spec.spacing_m, z}, normal});
+    out.columns = static_cast<int>(columns);
+    out.rows = static_cast<int>(rows);
     const Vec3 o{room->origin.x, room->origin.y, z};
     out.outline = {o, o + Vec3{room->size_m.x, 0, 0}, o + Vec3{room->size_m.x, room->size_m.y, 0},
                    o + Vec3{0, room->size_m.y, 0}};
@@ -158,17 +188,39 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Dia
     hi.y = std::max(hi.y, p.y);
   }
   double x_first = 0, y_first = 0;
-  const int nx = centred_lattice(hi.x - lo.x - 2 * spec.inset_m, spec.spacing_m, x_first);
-  const int ny = centred_lattice(hi.y - lo.y - 2 * spec.inset_m, spec.spacing_m, y_first);
+  const double nx = lattice(hi.x - lo.x - 2 * spec.inset_m, spec.spacing_m, x_first);
+  const double ny = lattice(hi.y - lo.y - 2 * spec.inset_m, spec.spacing_m, y_first);
+  // Before the lattice is walked: the points the polygon's area holds, and the lattice itself.
+  const double about = polygon_area_m2(outline) / (spec.spacing_m * spec.spacing_m);
+  if (!(about <= static_cast<double>(max_points))) {
+    report(diag, at_spacing,
+           limit_message(what + " (a polygon of " + format_number(polygon_area_m2(outline)) + " m2 at spacing " +
+                             format_number(spec.spacing_m) + " m)",
+                         about, max_points));
+    return false;
+  }
+  if (!(nx * ny <= PolygonLatticeFactor * static_cast<double>(max_points))) {
+    report(diag, at_spacing,
+           what + ": the lattice over the polygon's bounding box would have " + format_number(nx * ny) +
+               " points to test, more than " + format_number(PolygonLatticeFactor) +
+               " x limits.sensors_per_grid (" + std::to_string(max_points) +
+               "); use a larger spacing, or raise limits.sensors_per_grid if you mean it");
+    return false;
+  }
   const double boundary_tolerance_m = 1e-9 * std::max(1.0, std::max(hi.x - lo.x, hi.y - lo.y));
-  for (int iy = 0; iy < ny; ++iy)
-    for (int ix = 0; ix < nx; ++ix) {
-      const Vec3 p{lo.x + spec.inset_m + x_first + ix * spec.spacing_m,
-                   lo.y + spec.inset_m + y_first + iy * spec.spacing_m, spec.height_m};
+  const std::size_t columns = static_cast<std::size_t>(nx), rows = static_cast<std::size_t>(ny);
+  for (std::size_t iy = 0; iy < rows; ++iy)
+    for (std::size_t ix = 0; ix < columns; ++ix) {
+      const Vec3 p{lo.x + spec.inset_m + x_first + double(ix) * spec.spacing_m,
+                   lo.y + spec.inset_m + y_first + double(iy) * spec.spacing_m, spec.height_m};
       const double d = distance_to_polygon_boundary_m(outline, p);
       const bool on_boundary = d <= boundary_tolerance_m;
       if (d < spec.inset_m - boundary_tolerance_m) continue;
       if (!on_boundary && !polygon_contains(outline, p)) continue;
+      if (out.points.size() == max_points) {
+        report(diag, at_spacing, limit_message(what, double(max_points) + 1, max_points) + " (or more)");
+        return false;
+      }
       out.points.push_back({p, normal});
     }
   if (out.points.empty()) {
@@ -182,12 +234,16 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Dia
   return true;
 }
 
-bool generate_points(const PointsSpec& spec, Diagnostics& diag, SensorGrid& out) {
+bool generate_points(const PointsSpec& spec, std::uint64_t max_points, Diagnostics& diag, SensorGrid& out) {
   const std::string what = "sensor points '" + spec.name + "'";
   out = SensorGrid{};
   out.name = spec.name;
   out.location = spec.location;
   bool ok = true;
+  if (spec.points.size() > max_points) {
+    report(diag, spec.location, limit_message(what, double(spec.points.size()), max_points));
+    return false;
+  }
   for (std::size_t i = 0; i < spec.points.size(); ++i) {
     const SensorPoint& p = spec.points[i];
     const double len = length(p.normal);
@@ -202,7 +258,8 @@ bool generate_points(const PointsSpec& spec, Diagnostics& diag, SensorGrid& out)
   const std::string path = spec.file.empty() ? spec.file_as_written : spec.file;
   if (!path.empty()) {
     const std::size_t errors_before = diag.error_count();
-    std::vector<SensorPoint> from_file = read_pts(path, diag, spec.location);
+    const std::uint64_t room_left = max_points > out.points.size() ? max_points - out.points.size() : 0;
+    std::vector<SensorPoint> from_file = read_pts(path, diag, spec.location, room_left);
     if (diag.error_count() != errors_before) ok = false;
     out.points.insert(out.points.end(), from_file.begin(), from_file.end());
   }

@@ -74,8 +74,8 @@ double distance_to_window_m(const RoomSpec& room, const WindowSpec& window, cons
 
 }  // namespace
 
-bool generate_surface_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
-                           SensorGrid& out) {
+bool generate_surface_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, std::uint64_t max_points,
+                           Diagnostics& diag, SensorGrid& out) {
   const std::string what = "grid '" + spec.name + "'";
   bool ok = true;
   if (!std::isfinite(spec.spacing_m) || spec.spacing_m <= 0) {
@@ -138,8 +138,16 @@ bool generate_surface_grid(const GridSpec& spec, const std::vector<RoomSpec>& ro
   const double sine = length(cross(eu, ev));
   const double inset_along_m = spec.inset_m / sine;  // inset perpendicular to the edges
   double u_first = 0, v_first = 0;
-  const int nu = centred_lattice(lu - 2 * inset_along_m, spec.spacing_m, u_first);
-  const int nv = centred_lattice(lv - 2 * inset_along_m, spec.spacing_m, v_first);
+  const double nu_count = lattice(lu - 2 * inset_along_m, spec.spacing_m, u_first);
+  const double nv_count = lattice(lv - 2 * inset_along_m, spec.spacing_m, v_first);
+  if (!(nu_count * nv_count <= static_cast<double>(max_points))) {
+    report(diag, spec.spacing_location.known() ? spec.spacing_location : spec.location,
+           limit_message(what + " (" + format_number(nu_count) + " x " + format_number(nv_count) + " at spacing " +
+                             format_number(spec.spacing_m) + " m over " + surface_text + ")",
+                         nu_count * nv_count, max_points));
+    return false;
+  }
+  const int nu = static_cast<int>(nu_count), nv = static_cast<int>(nv_count);
   if (nu <= 0 || nv <= 0) {
     report(diag, spec.location_of("inset"),
            what + " has no points: the inset (" + format_number(spec.inset_m) + " m) leaves nothing of " +

@@ -11,6 +11,20 @@
 
 namespace dayphoton::project::detail {
 
+/// A text input file (OBJ, .pts) whose first this many lines with content are all errors is
+/// not that kind of file (/etc/passwd named as a .pts): its reader stops there, so that the
+/// messages echo no more than this many of its lines. (A file with valid lines is read on,
+/// up to the diagnostics' cap, so that every mistake in a real file is shown.)
+constexpr std::size_t MaxErrorsBeforeValidLine = 5;
+
+/// Longest token quoted in a message ("found 'root:x:0:0:...'").
+constexpr std::size_t MaxQuotedChars = 40;
+
+/// `text` for a message: at most MaxQuotedChars characters, "..." marking a cut.
+inline std::string quoted_token(const std::string& text) {
+  return text.size() <= MaxQuotedChars ? text : text.substr(0, MaxQuotedChars) + "...";
+}
+
 struct Token {
   std::string text;
   int column = 0;  ///< 1-based

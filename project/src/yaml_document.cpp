@@ -131,7 +131,12 @@ const YamlEntry* YamlNode::find(const std::string& key) const {
 std::string YamlNode::describe() const {
   switch (kind) {
     case Kind::Null: return "nothing";
-    case Kind::Scalar: return "'" + scalar + "'";
+    case Kind::Scalar: {
+      // A whole wrongly named file can parse as one scalar: quote its start only.
+      constexpr std::size_t MaxQuoted = 60;
+      if (scalar.size() <= MaxQuoted) return "'" + scalar + "'";
+      return "'" + scalar.substr(0, MaxQuoted) + "...' (" + std::to_string(scalar.size()) + " characters)";
+    }
     case Kind::Sequence: return "a list";
     case Kind::Map: return "a map";
   }

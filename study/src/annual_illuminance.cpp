@@ -86,9 +86,20 @@ void append_shortest(std::string& out, double v) {
 }
 
 /// Lux with one decimal, from the value rounded to tenths (exact integer arithmetic, so the
-/// CSV is identical on every platform and fast for millions of values).
-void append_tenths(std::string& out, float v) {
-  const long long tenths = std::llround(static_cast<double>(v) * 10.0);
+/// CSV is identical on every platform and fast for millions of values). A value whose tenths
+/// do not fit the integer arithmetic exactly (|v| >= 2^53 / 10) is printed by to_chars with
+/// one decimal (such a float is a whole number). False, and nothing appended, if `v` is not
+/// finite: llround(NaN) is undefined behaviour, and a NaN must never print as a number.
+bool append_tenths(std::string& out, float v) {
+  if (!std::isfinite(v)) return false;
+  const double scaled = static_cast<double>(v) * 10.0;
+  if (std::fabs(scaled) >= 9007199254740992.0) {  // 2^53
+    char buffer[64];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, static_cast<double>(v), std::chars_format::fixed, 1);
+    out.append(buffer, result.ptr);
+    return true;
+  }
+  const long long tenths = std::llround(scaled);
   const unsigned long long magnitude = static_cast<unsigned long long>(tenths < 0 ? -tenths : tenths);
   if (tenths < 0) out.push_back('-');
   char buffer[24];
@@ -96,6 +107,7 @@ void append_tenths(std::string& out, float v) {
   out.append(buffer, result.ptr);
   out.push_back('.');
   out.push_back(static_cast<char>('0' + magnitude % 10));
+  return true;
 }
 
 }  // namespace
@@ -168,6 +180,12 @@ metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
       }
     }
   });
+  // Finite inputs can still overflow a float (coefficients of 1e30 under a sky of 1e10).
+  for (std::size_t t = 0; t < n_steps; ++t)
+    for (std::size_t s = 0; s < n_sensors; ++s)
+      if (!std::isfinite(table.lux(t, s)))
+        throw std::range_error("annual illuminance: sensor " + std::to_string(s) + " at step " + std::to_string(t) +
+                               " is not a finite number (the coefficients times the sky matrix overflow a float)");
   return table;
 }
 
@@ -243,7 +261,9 @@ void write_illuminance_csv(const metrics::IlluminanceTable& table, const std::st
       append_shortest(line, stamp.hour);
       for (std::size_t s = 0; s < table.sensor_count(); ++s) {
         line.push_back(',');
-        append_tenths(line, table.lux(t, s));
+        if (!append_tenths(line, table.lux(t, s)))
+          throw std::invalid_argument(path + ": the illuminance of sensor " + std::to_string(s) + " at step " +
+                                      std::to_string(t) + " is not a finite number");
       }
       line.push_back('\n');
       out.write(line.data(), static_cast<std::streamsize>(line.size()));

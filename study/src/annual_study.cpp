@@ -14,6 +14,7 @@
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/gzip_input.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/weather/site_clock.h"
@@ -22,16 +23,6 @@
 namespace dayphoton::study {
 
 namespace {
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 std::string describe_options(const sky::SkyMatrixOptions& o, const sky::PatchBasis& basis) {
   std::ostringstream d;
@@ -96,24 +87,19 @@ AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::PatchBasis
   return result;
 }
 
-RadianceMatrix read_matrix_file(const std::string& path) {
-  if (!ends_with(path, ".gz")) return RadianceMatrix::read_file(path);
-  if (!std::filesystem::is_regular_file(path))
-    throw InputError(SourceLocation{path, 0, 0}, "cannot open matrix file");
-  FILE* pipe = popen(("gzip -dc " + shell_quote(path) + " 2>/dev/null").c_str(), "r");
-  if (!pipe) throw std::runtime_error(path + ": cannot run gzip to decompress it");
-  std::string text;
-  char buffer[1 << 16];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) text.append(buffer, n);
-  if (pclose(pipe) != 0) throw InputError(SourceLocation{path, 0, 0}, "gzip cannot decompress this file");
-  std::istringstream in(text);
-  return RadianceMatrix::read(in, path);
+RadianceMatrix read_matrix_file(const std::string& path, const MatrixReadOptions& options,
+                                std::uint64_t max_decompressed_bytes) {
+  if (!has_gzip_extension(path)) return RadianceMatrix::read_file(path, options);
+  // Decompressed as it is parsed: the parser's size checks stop a bad header early, and the
+  // decompressed-size limit stops a stream of padding.
+  GzipInput in(path, max_decompressed_bytes, "matrix file", "--max-decompressed-bytes");
+  return RadianceMatrix::read(in, path, options);
 }
 
-AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weather::EpwFile& epw) {
+AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weather::EpwFile& epw,
+                                      const MatrixReadOptions& options, std::uint64_t max_decompressed_bytes) {
   AnnualSky result;
-  result.matrix = read_matrix_file(matrix_path);
+  result.matrix = read_matrix_file(matrix_path, options, max_decompressed_bytes);
   result.steps = time_stamps(epw);
   if (result.matrix.columns() != result.steps.size())
     throw InputError(SourceLocation{matrix_path, 0, 0},

@@ -20,6 +20,7 @@
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/polygon.h"
+#include "dayphoton/core/input_file.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
@@ -1048,8 +1049,9 @@ std::string sky_section(const std::string& results_dir, std::vector<std::string>
 
 json read_summary(const std::string& results_dir) {
   const std::string path = join(results_dir, "summary.json");
-  std::ifstream in(path);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open the run summary (is this a results folder of `dayphoton run`?)");
+  if (input_file_problem(path) == "not found")
+    throw InputError(SourceLocation{path, 0, 0}, "cannot open the run summary (is this a results folder of `dayphoton run`?)");
+  std::ifstream in = open_input_file(path, "run summary");  // a FIFO or a device is refused, not waited on
   json summary = json::parse(in, nullptr, false);
   if (summary.is_discarded() || !summary.is_object()) throw InputError(SourceLocation{path, 0, 0}, "not a JSON object");
   return summary;

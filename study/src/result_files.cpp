@@ -13,6 +13,7 @@
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/input_file.h"
 
 namespace dayphoton::study {
 
@@ -65,8 +66,7 @@ void write_sensors_csv(const std::vector<SensorPoint>& sensors, const std::strin
 }
 
 std::vector<SensorPoint> read_sensors_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open sensor file");
+  std::ifstream in = open_input_file(path, "sensor file");
   const std::string expected_header = "index,x,y,z,nx,ny,nz";
   std::string line;
   if (!std::getline(in, line)) throw InputError(SourceLocation{path, 1, 0}, "empty file, expected the header '" + expected_header + "'");

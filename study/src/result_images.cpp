@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/input_file.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/result_files.h"
@@ -384,8 +385,7 @@ ColourScale luminance_scale_for(const FloatImage& rgb) {
 
 std::vector<std::string> write_sky_images(const std::string& results_dir, const YearHour& hour, int size) {
   const std::string summary_path = join(results_dir, "summary.json");
-  std::ifstream in(summary_path);
-  if (!in) throw InputError(SourceLocation{summary_path, 0, 0}, "cannot open the run summary");
+  std::ifstream in = open_input_file(summary_path, "run summary");
   const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
   if (summary.is_discarded() || !summary.is_object())
     throw InputError(SourceLocation{summary_path, 0, 0}, "not a JSON object");

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/input_file.h"
 
 namespace dayphoton::study {
 
@@ -42,8 +43,7 @@ std::vector<std::string> split(const std::string& line) {
 }  // namespace
 
 SensorTable read_sensor_table(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(SourceLocation{path, 0, 0}, "cannot open result table");
+  std::ifstream in = open_input_file(path, "result table");
   SensorTable table;
   table.path = path;
   std::string line;

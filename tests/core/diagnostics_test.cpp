@@ -2,6 +2,7 @@
 // "did you mean" threshold, the compiler-style format with its caret, the error cap, and
 // InputError carrying the located list.
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/terminal_text.h"
 
 #include <gtest/gtest.h>
 
@@ -50,6 +51,28 @@ TEST(Diagnostics, FormatPrintsLocationLineAndCaret) {
   EXPECT_EQ(n.format(), "w.epw:9: error: bad field\n    1,2,3\n");
   Diagnostic f{Severity::Error, {"w.epw", 0, 0}, "cannot open", ""};
   EXPECT_EQ(f.format(), "w.epw: error: cannot open\n");
+}
+
+TEST(Diagnostics, InputTextCannotDriveTheTerminal) {
+  // An escape sequence in a file name and in the echoed line, a bell and a C1 CSI in the
+  // message: printed as escapes, the caret still under the offending column.
+  Diagnostic d;
+  d.location = {"\x1b]0;pwned\x07.pts", 2, 8};
+  d.message = "expected a number, found '\x1b[2J\xc2\x9b'";
+  d.source_line = "1 2 \x1b[31m x";
+  EXPECT_EQ(d.format(),
+            "\\e]0;pwned\\x07.pts:2:8: error: expected a number, found '\\e[2J\\xc2\\x9b'\n"
+            "    1 2 \\e[31m x\n"
+            "            ^\n");
+  // Valid UTF-8 is kept; a stray byte is escaped.
+  EXPECT_EQ(printable_text("Zürich \xff"), "Zürich \\xff");
+  EXPECT_EQ(printable_text("tab\tkept\nnewline"), "tab\tkept\\nnewline");
+  // A very long line is cut; the caret is left out when its column is cut off.
+  Diagnostic longline;
+  longline.location = {"a.pts", 1, 300};
+  longline.message = "bad";
+  longline.source_line = std::string(1000, 'x');
+  EXPECT_EQ(longline.format(), "a.pts:1:300: error: bad\n    " + std::string(200, 'x') + "...\n");
 }
 
 TEST(Diagnostics, CollectsUpToCapAndThrowsInputError) {

@@ -450,7 +450,7 @@ TEST(ProjectLoader, SimulationBasisForms) {
     return std::make_pair(p.simulation.basis, p.simulation.reinhart_mf);
   };
   EXPECT_EQ(basis("tregenza"), std::make_pair(SkyBasis::Tregenza, 1));
-  EXPECT_EQ(basis("\"reinhart:4\""), std::make_pair(SkyBasis::Reinhart, 4));
+  EXPECT_EQ(basis("\"reinhart:4\", photons_per_bin: 10000"), std::make_pair(SkyBasis::Reinhart, 4));  // within limits.photons
   EXPECT_EQ(basis("{reinhart: 2}"), std::make_pair(SkyBasis::Reinhart, 2));
   EXPECT_EQ(errors_of(Head + "materials: {}\ngeometry: {}\nsimulation: {basis: {reinhart: 13}}\n"),
             std::vector<std::string>{"5:32: 'reinhart' must be in [1, 12], got 13"});
@@ -637,6 +637,46 @@ TEST(ProjectSchema, DocsDescribeEveryKey) {
         EXPECT_TRUE(p.default_value.empty()) << section.name << "." << p.name;
       }
     }
+}
+
+}  // namespace
+}  // namespace dayphoton::project
+
+namespace dayphoton::project {
+namespace {
+
+TEST(ProjectLimits, DefaultsAndRaisedValues) {
+  const Project p = load_project_from_string(Head + "materials: {}\ngeometry: {}\n", FakePath);
+  const ResourceLimits defaults;
+  EXPECT_EQ(p.limits.sensors_per_grid, defaults.sensors_per_grid);
+  EXPECT_EQ(p.limits.sensors, defaults.sensors);
+  EXPECT_EQ(p.limits.photons, defaults.photons);
+  const Project q = load_project_from_string(
+      Head + "materials: {}\ngeometry: {}\nlimits: {sensors_per_grid: 50000, sensors: 60000, photons: 100000000}\n",
+      FakePath);
+  EXPECT_EQ(q.limits.sensors_per_grid, 50000u);
+  EXPECT_EQ(q.limits.sensors, 60000u);
+  EXPECT_EQ(q.limits.photons, 100000000u);
+  EXPECT_EQ(errors_of(Head + "materials: {}\ngeometry: {}\nlimits: {sensors_per_grid: 0, photon: 5}\n"),
+            (std::vector<std::string>{"5:28: 'sensors_per_grid' must be >= 1, got 0",
+                                      "5:31: unknown key 'photon' in limits (did you mean 'photons'?)"}));
+}
+
+TEST(ProjectLimits, PhotonsArecheckedAtPhotonsPerBin) {
+  // photons_per_bin: 1e12 made `run` allocate until bad_alloc; now an error at the key.
+  EXPECT_EQ(errors_of(Head + "materials: {}\ngeometry: {}\nsimulation:\n  photons_per_bin: 1000000000000\n"),
+            (std::vector<std::string>{"6:20: one tracing pass would store 1.46e+14 photons (1e+12 per bin x 146 sky "
+                                      "bins), more than the limit of 33554432 (raise it with limits.photons if you "
+                                      "mean it); 32 bytes each"}));
+  // Caustic photons count too, and the basis's bins: Reinhart MF 4 has 2306.
+  EXPECT_EQ(errors_of(Head + "materials: {}\ngeometry: {}\nsimulation:\n  basis: reinhart:4\n"
+                             "  photons_per_bin: 10000\n  caustic_photons_per_bin: 5000\n"),
+            (std::vector<std::string>{"7:20: one tracing pass would store 3.459e+07 photons (15000 per bin x 2306 "
+                                      "sky bins), more than the limit of 33554432 (raise it with limits.photons if "
+                                      "you mean it); 32 bytes each"}));
+  EXPECT_TRUE(errors_of(Head + "materials: {}\ngeometry: {}\nsimulation:\n  basis: reinhart:4\n"
+                               "  photons_per_bin: 10000\n  caustic_photons_per_bin: 5000\nlimits: {photons: 40000000}\n")
+                  .empty());
 }
 
 }  // namespace

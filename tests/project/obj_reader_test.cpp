@@ -154,7 +154,7 @@ TEST(ObjReader, MeshThroughSceneBuilder) {
   // Missing file: reported at the mesh entry.
   p.geometry.meshes[0].material_map = {{"white", "white_paint"}, {"steel", "grey"}};
   p.geometry.meshes[0].path = obj.path() + ".missing";
-  EXPECT_NE(build_error(p).find("p.yaml:12:5: error: cannot open OBJ file"), std::string::npos);
+  EXPECT_NE(build_error(p).find("p.yaml:12:5: error: OBJ file '" + obj.path() + ".missing' not found"), std::string::npos);
   // Bad scale.
   p.geometry.meshes[0].path = obj.path();
   p.geometry.meshes[0].scale = -1;

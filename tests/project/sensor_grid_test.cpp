@@ -210,11 +210,114 @@ TEST(PtsReader, PointSetsThroughTheSceneBuilder) {
 
   // A missing file is reported at the project entry that names it.
   p.sensors.points[0].file = file.path() + ".missing";
-  EXPECT_NE(build_error(p).find("office.yaml:50:5: error: cannot open sensor file"), std::string::npos);
+  EXPECT_NE(build_error(p).find("office.yaml:50:5: error: sensor file '" + file.path() + ".missing' not found"),
+            std::string::npos);
   // Zero inline direction.
   p.sensors.points[0].file.clear();
   p.sensors.points[0].points[0].normal = {0, 0, 0};
   EXPECT_NE(build_error(p).find("point 1 needs a finite position and a non-zero direction"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace dayphoton::project
+
+namespace dayphoton::project {
+namespace {
+
+using testing::build_error;
+using testing::office_project;
+
+TEST(SensorGridLimits, CountIsCheckedBeforeAnyPointIsMade) {
+  // spacing 1e-6 m in the 6 x 8 m office: 5e6 x 7e6 sensors; 1e-300 m: a count no integer
+  // type holds (the old code converted it to int, undefined behaviour). Both located at
+  // `spacing`, at once.
+  Project p = office_project();
+  p.sensors.grids[0].spacing_location = {"office.yaml", 33, 16};
+  p.sensors.grids[0].spacing_m = 1e-6;
+  EXPECT_EQ(build_error(p),
+            "office.yaml:33:16: error: grid 'workplane' (5e+06 x 7e+06 at spacing 1e-06 m over room 'office', 6 x 8 m) "
+            "would have 3.5e+13 sensors, more than the limit of 20000 (raise it with limits.sensors_per_grid if you "
+            "mean it)\n1 error generated.\n");
+  p.sensors.grids[0].spacing_m = 1e-300;
+  EXPECT_NE(build_error(p).find("(5e+300 x 7e+300 at spacing 1e-300 m over room 'office', 6 x 8 m) would have inf sensors"), std::string::npos) << build_error(p);
+  // A room of 1e6 m at the default spacing.
+  p = office_project();
+  p.geometry.rooms[0].size_m = {1e6, 1e6, 3};
+  EXPECT_NE(build_error(p).find("office.yaml:30:5: error: grid 'workplane' (2e+06 x 2e+06 at spacing 0.5 m"),
+            std::string::npos)
+      << build_error(p);
+}
+
+TEST(SensorGridLimits, RaisedLimitAdmitsTheGrid) {
+  Project p = office_project();
+  p.sensors.grids[0].spacing_m = 0.03;  // 167 x 234 = 39078 sensors
+  EXPECT_NE(build_error(p).find("would have 39078 sensors"), std::string::npos) << build_error(p);
+  p.limits.sensors_per_grid = 39078;
+  const SceneDescription scene = build_scene_description(p);
+  EXPECT_EQ(scene.grids.at(0).points.size(), 39078u);
+}
+
+TEST(SensorGridLimits, PolygonGridsAndPointSetsAreLimited) {
+  Project p = office_project();
+  GridSpec& g = p.sensors.grids[0];
+  g.room.clear();
+  g.polygon = {{1, 1, 0}, {4, 1, 0}, {4, 2.1, 0}, {1, 2.1, 0}};
+  g.inset_m = 0;
+  g.spacing_m = 0.1;  // 31 x 12 = 372 points
+  EXPECT_EQ(build_scene_description(p).grids.at(0).points.size(), 372u);
+  p.limits.sensors_per_grid = 371;  // the area estimate (330) passes; the points made do not
+  EXPECT_NE(build_error(p).find("grid 'workplane' would have 372 sensors, more than the limit of 371"), std::string::npos)
+      << build_error(p);
+  p.limits.sensors_per_grid = 300;  // the area estimate already fails
+  EXPECT_NE(build_error(p).find("grid 'workplane' (a polygon of 3.3 m2 at spacing 0.1 m) would have 330 sensors"),
+            std::string::npos)
+      << build_error(p);
+
+  // A point set: inline points and the lines of its .pts file.
+  p = office_project();
+  p.limits.sensors_per_grid = 2;
+  testing::TempFile file("sensor_grid_limits.pts", "1 1 1 0 0 1\n2 2 1 0 0 1\n3 3 1 0 0 1\n");
+  PointsSpec spec;
+  spec.name = "desks";
+  spec.file = file.path();
+  spec.location = {"office.yaml", 50, 5};
+  p.sensors.grids.clear();
+  p.sensors.points.push_back(spec);
+  EXPECT_NE(build_error(p).find(file.path() + ":3:1: error: this file holds more than the limit of 2 sensors"),
+            std::string::npos)
+      << build_error(p);
+}
+
+TEST(SensorGridLimits, TotalOverAllSetsIsLimited) {
+  Project p = office_project();
+  p.sensors.grids.push_back(p.sensors.grids[0]);
+  p.sensors.grids[1].name = "second";
+  p.sensors.grids[1].location = {"office.yaml", 36, 5};
+  p.limits.sensors = 300;  // 2 x 165
+  EXPECT_EQ(build_error(p),
+            "office.yaml:36:5: error: sensor set 'second' brings the project to 330 sensors, more than the limit of "
+            "300 (raise it with limits.sensors if you mean it)\n1 error generated.\n");
+  p.limits.sensors = 330;
+  EXPECT_EQ(build_scene_description(p).grids.size(), 2u);
+}
+
+TEST(PtsReader, AWronglyNamedFileIsNotEchoedLineByLine) {
+  std::string passwd_like;
+  for (int i = 0; i < 60; ++i) passwd_like += "user" + std::to_string(i) + ":x:1000:1000::/home/user:/bin/bash\n";
+  Diagnostics diag;
+  read_pts_from_string(passwd_like, "passwd.pts", diag);
+  // Two errors per line (not a number; 1 value, not 6) for three lines, then why it stopped:
+  // 3 of the 60 lines echoed, not 25 (the diagnostics' cap of 50).
+  ASSERT_EQ(diag.entries().size(), 7u) << diag.format();
+  EXPECT_EQ(diag.entries()[5].location.line, 3);
+  EXPECT_EQ(diag.entries()[6].location.line, 4);
+  EXPECT_EQ(diag.entries()[6].message,
+            "stopping after 5 errors and no valid line: is this a sensor file (x y z nx ny nz per line)?");
+  EXPECT_EQ(diag.entries()[0].message, "expected a number, found 'user0:x:1000:1000::/home/user:/bin/bash'");
+  // A long token is cut in the message.
+  Diagnostics long_token;
+  read_pts_from_string(std::string(100, 'a') + " 1 2 0 0 1\n", "long.pts", long_token);
+  EXPECT_EQ(long_token.entries().at(0).message, "expected a number, found '" + std::string(40, 'a') + "...'");
 }
 
 }  // namespace

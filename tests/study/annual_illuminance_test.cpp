@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -229,4 +230,42 @@ TEST(IlluminanceCsv, HeaderRowsAndOneDecimal) {
   ASSERT_EQ(back.step_count(), 2u);
   EXPECT_EQ(back.steps()[1].month, 7);
   EXPECT_FLOAT_EQ(back.lux(1, 0), 123.4f);
+}
+
+TEST(IlluminanceCsv, NonFiniteValuesAreRefusedAndHugeOnesPrintExactly) {
+  // NaN used to go through llround (undefined behaviour) and print as a number ("-0.8").
+  const std::string path = temp_path("nonfinite.csv");
+  for (const float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                          -std::numeric_limits<float>::infinity()}) {
+    metrics::IlluminanceTable table({{1, 1, 0.5}, {1, 1, 1.5}}, 2);
+    table.lux(1, 1) = bad;
+    try {
+      write_illuminance_csv(table, path);
+      FAIL() << "wrote " << bad;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()), path + ": the illuminance of sensor 1 at step 1 is not a finite number");
+    }
+    EXPECT_FALSE(fs::exists(path));  // nothing written
+  }
+  // Beyond the integer arithmetic's exact range (2^53 tenths) the value is printed in full.
+  metrics::IlluminanceTable table({{1, 1, 0.5}}, 3);
+  table.lux(0, 0) = 1e20f;
+  table.lux(0, 1) = -3e38f;
+  table.lux(0, 2) = 9e14f;  // just below: the integer path
+  write_illuminance_csv(table, path);
+  std::ifstream in(path);
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  EXPECT_EQ(row, "1,1,0.5,100000002004087734272.0,-300000000549775575777803994281145270272.0,899999995002880.0");
+  fs::remove(path);
+}
+
+TEST(AnnualIlluminance, OverflowingProductsAreAnErrorNotInfinity) {
+  RadianceMatrix coefficients(1, 1, 3), sky(1, 1, 3);
+  for (int c = 0; c < 3; ++c) {
+    coefficients.at(0, 0, c) = 1e30f;
+    sky.at(0, 0, c) = 1e30f;
+  }
+  EXPECT_THROW(annual_illuminance(coefficients, sky, {{1, 1, 12.5}}), std::range_error);
 }

@@ -22,6 +22,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "dayphoton/core/input_file.h"
 #include "text_fields.h"
 
 namespace dayphoton::weather {
@@ -510,8 +511,7 @@ EpwFile read_epw(std::istream& in, const std::string& display_name, std::size_t 
 }
 
 EpwFile read_epw(const std::string& path, std::size_t max_errors) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open weather file");
+  std::ifstream in = open_input_file(path, "weather file");
   return read_epw(in, path, max_errors);
 }
 

@@ -17,6 +17,7 @@
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/input_file.h"
 #include "text_fields.h"
 
 namespace dayphoton::weather {
@@ -213,8 +214,7 @@ WeaFile read_wea(std::istream& in, const std::string& display_name, std::size_t 
 }
 
 WeaFile read_wea(const std::string& path, std::size_t max_errors) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open weather file");
+  std::ifstream in = open_input_file(path, "weather file");
   return read_wea(in, path, max_errors);
 }
 

@@ -18,13 +18,30 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "dayphoton/core/resource_limits.h"
 
 namespace dayphoton {
 
 enum class MatrixFormat { Ascii, Float, Double };
+
+/// What RadianceMatrix::read accepts beyond the format itself.
+struct MatrixReadOptions {
+  /// Most values NROWS x NCOLS x NCOMP (ResourceLimits::matrix_values).
+  std::uint64_t max_values = ResourceLimits{}.matrix_values;
+  /// How the user raises max_values, for the message ("--max-matrix-values").
+  std::string max_values_raised_by = "--max-matrix-values";
+  /// Bytes the stream holds from its first byte, if known (a regular file's size).
+  std::optional<std::uint64_t> stream_bytes;
+  /// Negative values are errors (sky radiances and daylight coefficients never are negative;
+  /// in binary data they are the usual sign of the wrong byte order).
+  bool non_negative = false;
+};
 
 class RadianceMatrix {
  public:
@@ -54,10 +71,23 @@ class RadianceMatrix {
   /// Atomic write to a file.
   void write_file(const std::string& path, MatrixFormat format) const;
 
-  /// Read any of ascii/float/double, either byte order. Errors throw InputError located at
-  /// the header line or the element index ("file:line" for ascii data).
-  static RadianceMatrix read(std::istream& in, const std::string& display_name);
-  static RadianceMatrix read_file(const std::string& path);
+  /// Read any of ascii/float/double, either byte order. Every problem throws InputError
+  /// located in the file: the header line; "file:line:column" and the element (row, column,
+  /// component, counted from 0) for ascii data; the byte offset and the element for binary
+  /// data. Rejected: values that are not numbers, NaN, infinities, values beyond the range
+  /// of a float (|v| > 3.4e38), binary values that can only come from the wrong byte order
+  /// (subnormal, or negative when options.non_negative), fewer or more values than
+  /// NROWS x NCOLS x NCOMP, and more values than options.max_values. When the stream's size
+  /// is known (options.stream_bytes; read_file sets it) the header's size is checked
+  /// against it before anything is allocated; otherwise memory grows with the data present.
+  static RadianceMatrix read(std::istream& in, const std::string& display_name,
+                             const MatrixReadOptions& options);
+  static RadianceMatrix read(std::istream& in, const std::string& display_name) {
+    return read(in, display_name, MatrixReadOptions{});
+  }
+  /// read() on a regular file (a FIFO or device is refused; input_file.h), its size known.
+  static RadianceMatrix read_file(const std::string& path, const MatrixReadOptions& options);
+  static RadianceMatrix read_file(const std::string& path) { return read_file(path, MatrixReadOptions{}); }
 
  private:
   std::size_t m_rows = 0, m_columns = 0;

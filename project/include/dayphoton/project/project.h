@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "dayphoton/core/resource_limits.h"
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/core/source_location.h"
 #include "dayphoton/core/vec3.h"
@@ -299,6 +300,8 @@ struct GridSpec {
   double offset_m = 0;              ///< wall and rectangle grids: in front of the surface
   Vec3 normal{0, 0, 1};             ///< room and polygon grids
   SourceLocation location;
+  SourceLocation spacing_location;  ///< of `spacing` if written, else of the grid
+
   /// Where each key was written ("wall.room", "rectangle.u", ...), for located errors found
   /// when the grid is generated; see location_of().
   std::vector<std::pair<std::string, SourceLocation>> key_locations;
@@ -359,6 +362,7 @@ struct Simulation {
   int gather_rays = 1024;        ///< final-gather rays per sensor (engine::GatherOptions)
   int gather_bandwidth = 32;     ///< photons per lookup at a gather hit
   SourceLocation location;
+  SourceLocation photons_per_bin_location;  ///< of `photons_per_bin` if written, else of the section
 };
 
 struct Outputs {
@@ -440,6 +444,9 @@ struct Project {
   MetricsSettings metrics;
   std::vector<VariantSpec> variants;  ///< in file order; empty if the file has none
   std::optional<OperationSpec> operation;  ///< absent: no operated result
+  /// `limits`: the largest study this project may make (sensors, photons), each checked
+  /// before anything of that size is allocated; defaults in core/resource_limits.h.
+  ResourceLimits limits;
 };
 
 /// How the caller will use the project it loads.

@@ -64,13 +64,18 @@ std::string annual_sky_description(const weather::EpwFile& epw, const sky::Patch
 AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::PatchBasis& basis,
                               const sky::SkyMatrixOptions& options);
 
-/// Sky matrix read from a RADIANCE matrix file (ascii/float/double; a name ending in ".gz"
-/// is decompressed through the system's gzip), stamped with the EPW's time steps. Throws
-/// InputError naming the matrix file if its column count differs from the EPW's records.
-AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weather::EpwFile& epw);
+/// Sky matrix read from a RADIANCE matrix file (read_matrix_file), stamped with the EPW's
+/// time steps. Throws InputError naming the matrix file if its column count differs from the
+/// EPW's records.
+AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weather::EpwFile& epw,
+                                      const MatrixReadOptions& options = {},
+                                      std::uint64_t max_decompressed_bytes = ResourceLimits{}.decompressed_bytes);
 
-/// Read a RADIANCE matrix file, decompressing "*.gz" with gzip. Errors name the file.
-RadianceMatrix read_matrix_file(const std::string& path);
+/// Read a RADIANCE matrix file (ascii/float/double) with RadianceMatrix::read's checks; a
+/// name ending in ".gz" is decompressed by zlib as it is parsed, at most
+/// max_decompressed_bytes (GzipInput). Errors are InputError naming the file.
+RadianceMatrix read_matrix_file(const std::string& path, const MatrixReadOptions& options = {},
+                                std::uint64_t max_decompressed_bytes = ResourceLimits{}.decompressed_bytes);
 
 /// Settings of the metrics: thresholds and the occupancy window (local standard time).
 struct AnnualStudySettings {
