@@ -1177,8 +1177,9 @@ std::string write_report(const std::string& results_dir, const std::string& outp
 }
 
 std::vector<std::string> write_images_and_report(const std::string& results_dir, const ViewOutputs& outputs) {
-  std::ifstream in(join(results_dir, "summary.json"), std::ios::binary);
-  if (!in) read_summary(results_dir);  // throws the located error
+  const std::string path = join(results_dir, "summary.json");
+  if (input_file_problem(path) == "not found") read_summary(results_dir);  // throws the located error
+  std::ifstream in = open_input_file(path, "run summary");  // a FIFO or a device is refused, not waited on
   std::ostringstream text;
   text << in.rdbuf();
   return write_images_and_report(results_dir, outputs, text.str());

@@ -157,7 +157,7 @@ TEST(ArtifactCodec, PhotonLayoutIsLittleEndianAsDocumented) {
   // tag, version, u64 count, 32-byte photon, u64 plane count, u64 source count.
   ASSERT_EQ(b.size(), 4u + 4 + 8 + 32 + 8 + 8);
   EXPECT_EQ(b.substr(0, 4), "PHOT");
-  EXPECT_EQ(b.substr(4, 4), std::string("\x02\x00\x00\x00", 4));  // layout 2
+  EXPECT_EQ(b.substr(4, 4), std::string("\x03\x00\x00\x00", 4));  // layout 3
   EXPECT_EQ(b.substr(8, 8), std::string("\x01\x00\x00\x00\x00\x00\x00\x00", 8));
   EXPECT_EQ(b.substr(16, 4), std::string("\x00\x00\x80\x3f", 4));  // 1.0f = 0x3f800000
   EXPECT_EQ(b.substr(20, 4), std::string("\x00\x00\x00\xc0", 4));  // -2.0f = 0xc0000000
@@ -231,7 +231,7 @@ TEST(ArtifactCodec, LayoutVersionAndTagAreChecked) {
     decode_photons(photons);
     FAIL() << "expected runtime_error";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("version 3"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("version 4"), std::string::npos) << e.what();
   }
   EXPECT_THROW(decode_coefficients(coefficients), std::runtime_error);
   EXPECT_THROW(decode_matrix(matrix), std::runtime_error);
