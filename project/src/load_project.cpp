@@ -805,6 +805,9 @@ class Loader {
       s.region_of_interest = box;
     }
     if (r.read_integer("max_attempts_per_photon", v)) s.max_attempts_per_photon = v;
+    std::string estimator;
+    if (r.read_choice("estimator", estimator))
+      s.estimator = estimator == "contribution" ? Estimator::Contribution : Estimator::PerSource;
     std::string point_estimate;
     if (r.read_choice("point_estimate", point_estimate))
       s.point_estimate = point_estimate == "surface" ? PointEstimate::Surface : PointEstimate::Gather;

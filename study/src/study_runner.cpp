@@ -104,6 +104,8 @@ engine::CoefficientOptions coefficient_options(const project::Simulation& sim) {
       sim.caustic_bandwidth > 0 ? sim.caustic_bandwidth : (sim.caustic_photons_per_bin > 0 ? sim.bandwidth : 0));
   o.direct.samples_per_source = sim.direct_samples_per_bin;
   o.direct.seed = sim.seed;
+  o.estimator = sim.estimator == project::Estimator::Contribution ? engine::PhotonEstimator::Contribution
+                                                                  : engine::PhotonEstimator::PerSource;
   o.gather.rays_per_sensor = sim.gather_rays;
   o.gather.bandwidth = static_cast<std::size_t>(sim.gather_bandwidth);
   o.gather.seed = sim.seed;

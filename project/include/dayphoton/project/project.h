@@ -325,6 +325,8 @@ struct Sensors {
 
 enum class SkyBasis { Tregenza, Reinhart };
 enum class SunMode { Bins, Spread };
+/// The density estimator on receiver planes and surfaces (engine::PhotonEstimator).
+enum class Estimator { PerSource, Contribution };
 /// How sensors off a receiver plane are estimated (engine/final_gather.h).
 enum class PointEstimate { Gather, Surface };
 
@@ -359,6 +361,10 @@ struct Simulation {
   /// Sensors that are not on a receiver plane: a final gather from each (the default), or
   /// the surface photons where the sensor lies (it must lie on a surface that stores them).
   PointEstimate point_estimate = PointEstimate::Gather;
+  /// Receiver-plane and surface estimates: each source from its own N nearest photons (the
+  /// default), or the contribution estimate (R. Schregle, "Development and Integration of
+  /// the RADIANCE Photon Map Extension", 2015: the N nearest of all sources, binned).
+  Estimator estimator = Estimator::PerSource;
   int gather_rays = 1024;        ///< final-gather rays per sensor (engine::GatherOptions)
   int gather_bandwidth = 32;     ///< photons per lookup at a gather hit
   SourceLocation location;
