@@ -5,7 +5,8 @@
 #
 #   bash scripts/fuzz.sh [MINUTES] [HARNESS...]     # harnesses: project epw obj pts matrix
 #
-# Each harness starts from its seeds in fuzz/corpus/<name>/ and grows build-fuzz/corpus/<name>/.
+# Each harness starts from its seeds in fuzz/corpus/<name>/ and grows build-fuzz/corpus/<name>/,
+# with the dictionary fuzz/<name>.dict if there is one.
 # It runs in libFuzzer's fork mode and keeps going after a finding, so one run reports every
 # distinct crash, leak, timeout or out-of-memory of its time: the inputs are written to
 # build-fuzz/artifacts/<name>/, the log to build-fuzz/<name>.log. The script ends with one line
@@ -43,10 +44,12 @@ found=0
 for h in "${harnesses[@]}"; do
   mkdir -p "build-fuzz/corpus/$h" "build-fuzz/artifacts/$h"
   echo "fuzz.sh: fuzzing $h for $minutes min (log build-fuzz/$h.log)"
+  dict=()
+  [ ! -f "fuzz/$h.dict" ] || dict=(-dict="fuzz/$h.dict")
   # Fork mode with one worker: a finding is saved and the run goes on (-ignore_*).
   "build-fuzz/fuzz/fuzz_$h" -max_total_time=$((minutes * 60)) -timeout=$timeout_s \
     -malloc_limit_mb=$malloc_limit_mb -rss_limit_mb=$rss_limit_mb \
-    -fork=1 -ignore_crashes=1 -ignore_ooms=1 -ignore_timeouts=1 \
+    -fork=1 -ignore_crashes=1 -ignore_ooms=1 -ignore_timeouts=1 "${dict[@]}" \
     -artifact_prefix="build-fuzz/artifacts/$h/" "build-fuzz/corpus/$h" "fuzz/corpus/$h" \
     > "build-fuzz/$h.log" 2>&1 || true
   last=$(grep -E '^#[0-9]+: cov:' "build-fuzz/$h.log" | tail -1 || true)
