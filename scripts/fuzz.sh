@@ -19,7 +19,7 @@ minutes=${1:-5}
 shift || true
 harnesses=("$@")
 [ ${#harnesses[@]} -gt 0 ] || harnesses=(project epw obj pts matrix)
-case "$minutes" in ''|*[!0-9]*) echo "fuzz.sh: MINUTES must be a whole number, got '$minutes'" >&2; exit 2;; esac
+case "$minutes" in ''|0|*[!0-9]*) echo "fuzz.sh: MINUTES must be a whole number from 1, got '$minutes'" >&2; exit 2;; esac
 
 # libFuzzer's limits of one input (libFuzzer documentation, "Options"): a single allocation
 # over 1 GiB, a process over 2 GiB or an input running longer than 10 s is a finding.
