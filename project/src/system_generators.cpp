@@ -259,7 +259,11 @@ void generate_systems(const Project& project, MaterialLookup& materials,
 
   // Port enclosures (header comment).
   std::vector<std::pair<const Enclosure*, std::pair<Vec3, Vec3>>> built;
-  for (const auto& [window_name, e] : enclosures) {
+  for (const auto& entry : enclosures) {
+    // Named references, not a structured binding: the lambda `face` below captures them, and
+    // C++17 does not allow capturing structured bindings (clang rejects it).
+    const std::string& window_name = entry.first;
+    const Enclosure& e = entry.second;
     const WindowFrame& f = e.frame;
     const double m = EnclosureMargin_m;
     const double u0 = e.box.lo.x - m, u1 = e.box.hi.x + m, v0 = e.box.lo.y - m,
