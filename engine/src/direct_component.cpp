@@ -47,33 +47,6 @@ Vec3 checked_unit_normal(const SensorPoint& sensor) {
   return sensor.normal / len;
 }
 
-/// Stratified estimate of integral over source p of L(w) T(w) max(0, dot(w, n)) dw, with
-/// L = 1 when `radiance` is null, over the source's solid angle. `origin` is the sensor
-/// already moved off its surface.
-Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Material>& materials,
-                                     const SourceSet& sources, std::size_t p, const Vec3& origin,
-                                     const Vec3& normal, int k, std::uint64_t seed,
-                                     std::uint64_t sensor_index,
-                                     const std::function<Vec3(const Vec3&)>* radiance) {
-  Rng rng(seed, p, sensor_index, RandomStream::Direct);
-  Vec3 sum;
-  for (int i = 0; i < k; ++i) {
-    for (int j = 0; j < k; ++j) {
-      // Draw both numbers before any early exit so that every stratum uses the same pair
-      // whatever the scene: glazed and unglazed runs then trace identical directions.
-      const double u1 = std::min((i + rng.uniform()) / k, OneMinusEpsilon);
-      const double u2 = std::min((j + rng.uniform()) / k, OneMinusEpsilon);
-      const Vec3 w = sources.sample_direction(p, u1, u2);
-      const double cos_theta = dot(w, normal);
-      if (!(cos_theta > 0.0)) continue;
-      const Vec3 t = sky_transmittance(scene, materials, origin, w);
-      if (t.x == 0.0 && t.y == 0.0 && t.z == 0.0) continue;
-      sum += (radiance ? mul(t, (*radiance)(w)) : t) * cos_theta;
-    }
-  }
-  return sum * (sources[p].solid_angle_sr / (static_cast<double>(k) * k));
-}
-
 /// One side of a port cut by the sensor's horizontal plane (header comment): what port
 /// sampling draws its points from. A parallelogram with a horizontal edge pair (a vertical
 /// or sloped window) stays one, sampled by the aligned map; anything else is a fan of
@@ -214,6 +187,47 @@ double port_density(const PortSet& ports, const PortSide sides[2], const Vec3& o
   return density;
 }
 
+/// The port side of the balance heuristic, for the solid-angle strata of strategy A.
+struct PortSampling {
+  const PortSet& ports;
+  const PortSide* sides;  ///< [0] below, [1] above the sensor's height
+  double n_per_side;
+  double density(const Vec3& origin, const Vec3& w) const { return port_density(ports, sides, origin, w, n_per_side, -1); }
+};
+
+/// L(w) T(w) cos: the integrand, L = 1 when `radiance` is null.
+Vec3 source_value(const Vec3& t, const Vec3& w, double cos_theta, const std::function<Vec3(const Vec3&)>* radiance) {
+  return (radiance ? mul(t, (*radiance)(w)) : t) * cos_theta;
+}
+
+/// Stratified samples of source p's solid angle (k x k strata), each weighted by 1 / (its
+/// density n_a / Omega_p plus the port sampling's along the same direction, if `ports`):
+/// alone (ports null) the plain estimator Omega_p / n sum T cos, else strategy A of the
+/// balance heuristic (header comment). `origin` is the sensor already moved off its surface.
+Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Material>& materials,
+                                     const SourceSet& sources, std::size_t p, const Vec3& origin,
+                                     const Vec3& normal, int k, std::uint64_t seed, std::uint64_t sensor_index,
+                                     const std::function<Vec3(const Vec3&)>* radiance, const PortSampling* ports) {
+  Rng rng(seed, p, sensor_index, RandomStream::Direct);
+  const double density_a = static_cast<double>(k) * k / sources[p].solid_angle_sr;
+  Vec3 sum;
+  for (int i = 0; i < k; ++i) {
+    for (int j = 0; j < k; ++j) {
+      // Draw both numbers before any early exit so that every stratum uses the same pair
+      // whatever the scene: glazed and unglazed runs then trace identical directions.
+      const double u1 = std::min((i + rng.uniform()) / k, OneMinusEpsilon);
+      const double u2 = std::min((j + rng.uniform()) / k, OneMinusEpsilon);
+      const Vec3 w = sources.sample_direction(p, u1, u2);
+      const double cos_theta = dot(w, normal);
+      if (!(cos_theta > 0.0)) continue;
+      const Vec3 t = sky_transmittance(scene, materials, origin, w);
+      if (t.x == 0.0 && t.y == 0.0 && t.z == 0.0) continue;
+      sum += source_value(t, w, cos_theta, radiance) * (1.0 / (density_a + (ports ? ports->density(origin, w) : 0.0)));
+    }
+  }
+  return sum;
+}
+
 /// One sensor's row, every source at once, by multiple importance sampling (header comment):
 /// k x k strata over each source's solid angle and kb x kb stratified points on every port
 /// piece, combined with the balance heuristic.
@@ -231,29 +245,12 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
     side.cumulative_m2.push_back(side.area_m2);
   }
   const double n_a = static_cast<double>(k) * k, n_b = static_cast<double>(kb) * kb;
-  auto value = [&](const Vec3& t, const Vec3& w, double cos_theta) {
-    return (radiance ? mul(t, (*radiance)(w)) : t) * cos_theta;
-  };
+  const PortSampling port_sampling{ports, sides, n_b};
   // Strategy A: each source's own solid angle (the same directions as without ports).
   for (std::size_t p = 0; p < sources.size(); ++p) {
-    Rng rng(seed, p, sensor_index, RandomStream::Direct);
-    const double density_a = n_a / sources[p].solid_angle_sr;
     const bool with_ports = sources[p].solid_angle_sr >= PortSampledMinimumSolidAngle_sr;
-    Vec3 sum;
-    for (int i = 0; i < k; ++i) {
-      for (int j = 0; j < k; ++j) {
-        const double u1 = std::min((i + rng.uniform()) / k, OneMinusEpsilon);
-        const double u2 = std::min((j + rng.uniform()) / k, OneMinusEpsilon);
-        const Vec3 w = sources.sample_direction(p, u1, u2);
-        const double cos_theta = dot(w, normal);
-        if (!(cos_theta > 0.0)) continue;
-        const Vec3 t = sky_transmittance(scene, materials, origin, w);
-        if (t.x == 0.0 && t.y == 0.0 && t.z == 0.0) continue;
-        sum += value(t, w, cos_theta) *
-               (1.0 / (density_a + (with_ports ? port_density(ports, sides, origin, w, n_b, -1) : 0.0)));
-      }
-    }
-    row[p] += sum;
+    row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, seed, sensor_index,
+                                              radiance, with_ports ? &port_sampling : nullptr);
   }
   // Strategy B: points uniform over each side's port pieces, each direction credited to the
   // source containing it.
@@ -282,7 +279,7 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
         const double density = n_a / sources[static_cast<std::size_t>(p)].solid_angle_sr +
                                n_b * d2 / (side.area_m2 * cos_port) +
                                port_density(ports, sides, origin, w, n_b, piece.port);
-        row[static_cast<std::size_t>(p)] += value(t, w, cos_theta) * (1.0 / density);
+        row[static_cast<std::size_t>(p)] += source_value(t, w, cos_theta, radiance) * (1.0 / density);
       }
     }
   }
@@ -302,7 +299,7 @@ void integrate_sensor(const Scene& scene, const std::vector<Material>& materials
   }
   for (std::size_t p = 0; p < sources.size(); ++p)
     row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, options.seed,
-                                              sensor_index, radiance);
+                                              sensor_index, radiance, nullptr);
 }
 
 }  // namespace
