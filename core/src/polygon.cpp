@@ -164,10 +164,24 @@ std::vector<std::array<std::uint32_t, 3>> triangulate_polygon(const std::vector<
     const std::uint32_t ia = ring[(i + m - 1) % m], ib = ring[i], ic = ring[(i + 1) % m];
     const Point2 &a = pts[ia], &b = pts[ib], &c = pts[ic];
     if (orient(a, b, c) <= area_eps) return false;  // reflex or flat corner
+    // Only points in the bounding box of the ear grown by the tests' tolerance can pass them:
+    // a cheap test first keeps polygons of many thousand vertices fast. The tolerance
+    // area_eps is a distance of up to t = area_eps / (shortest edge) from each edge line; the
+    // triangle grown by t is the triangle scaled about its incentre by (r + t) / r (r the
+    // inradius, twice the area over the perimeter), so no point of it lies farther than
+    // t / r x (longest edge) from the triangle.
+    const double ab = std::hypot(b.x - a.x, b.y - a.y), bc = std::hypot(c.x - b.x, c.y - b.y),
+                 ca = std::hypot(a.x - c.x, a.y - c.y);
+    const double inradius = orient(a, b, c) / (ab + bc + ca);
+    const double t = area_eps / std::max(std::min({ab, bc, ca}), 1e-300);
+    const double pad = len_eps + t / inradius * std::max({ab, bc, ca});
+    const double lo_x = std::min({a.x, b.x, c.x}) - pad, hi_x = std::max({a.x, b.x, c.x}) + pad;
+    const double lo_y = std::min({a.y, b.y, c.y}) - pad, hi_y = std::max({a.y, b.y, c.y}) + pad;
     for (std::size_t k = 0; k < m; ++k) {
       const std::uint32_t ip = ring[k];
-      if (ip == ia || ip == ib || ip == ic) continue;
       const Point2& p = pts[ip];
+      if (p.x < lo_x || p.x > hi_x || p.y < lo_y || p.y > hi_y) continue;
+      if (ip == ia || ip == ib || ip == ic) continue;
       // A vertex at the same place as a corner (a touching polygon) does not block.
       auto same = [&](const Point2& q) { return std::hypot(p.x - q.x, p.y - q.y) <= len_eps; };
       if (same(a) || same(b) || same(c)) continue;
