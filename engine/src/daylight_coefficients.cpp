@@ -3,11 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
-
-#include <tbb/parallel_for.h>
-
 #include <limits>
 #include <stdexcept>
+
+#include <tbb/parallel_for.h>
 
 #include "dayphoton/core/units.h"
 

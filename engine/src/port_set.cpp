@@ -84,15 +84,4 @@ PortSample PortSet::sample(std::size_t port_index, double u1, double u2) const {
   return out;
 }
 
-PortSample PortSet::sample_aligned(std::size_t port_index, double u1, double u2) const {
-  if (port_index >= m_ports.size() || !m_ports[port_index].parallelogram) return sample(port_index, u1, u2);
-  const Port& port = m_ports[port_index];
-  const std::array<Vec3, 3>& g = *port.parallelogram;
-  PortSample out;
-  out.position = g[0] + g[1] * u1 + g[2] * u2;
-  out.normal = port.normal;
-  out.pdf_per_m2 = 1.0 / port.area_m2;
-  return out;
-}
-
 }  // namespace dayphoton::engine

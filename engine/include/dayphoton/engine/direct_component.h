@@ -54,7 +54,7 @@
 // ports: a light pipe's dome has dozens of facets), so the horizon
 // (the ground bin's boundary) never cuts a stratum (a horizontal cut through a window's
 // strata gave +-3 % at 1024 points); a parallelogram with horizontal edges (a vertical or
-// sloped window) keeps edge-aligned strata (PortSet::sample_aligned), any other polygon is
+// sloped window) keeps edge-aligned strata (Port::parallelogram), any other polygon is
 // clipped into a fan of triangles. Sources below PortSampledMinimumSolidAngle_sr take no
 // port samples (for them the two densities are not mixed). With
 // port_sampling off, or in a scene without ports, the estimator is the plain one above.

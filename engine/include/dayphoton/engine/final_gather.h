@@ -66,13 +66,15 @@ struct GatherOptions {
 };
 
 /// Caustic (specular paths to a source) and global (photon lookups) parts, each
-/// [sensor * sources + source], RGB W/m^2 per unit source radiance. `surface_photons` is the
-/// map of every stored surface photon of `sources` (Direct included). Parallel over sensors,
-/// deterministic. Throws std::invalid_argument for rays_per_sensor < 1, bandwidth 0, a
-/// sensor normal that is zero or not finite, or a photon whose source is not in `sources`.
+/// [sensor * sources + source], RGB W/m^2 per unit source radiance.
 struct GatheredCoefficients {
   std::vector<Vec3> caustic, global;
 };
+
+/// The gather at every sensor. `surface_photons` is the map of every stored surface photon
+/// of `sources` (Direct included). Parallel over sensors, deterministic. Throws
+/// std::invalid_argument for rays_per_sensor < 1, bandwidth 0, a sensor normal that is zero
+/// or not finite, or a photon whose source is not in `sources`.
 GatheredCoefficients gather_photon_coefficients(const Scene& scene,
                                                 const std::vector<Material>& materials,
                                                 const SourceSet& sources,

@@ -36,7 +36,8 @@ struct Port {
   Vec3 centroid;       ///< area-weighted centroid, metres
   std::vector<std::array<Vec3, 3>> triangles;
   std::vector<double> cumulative_area_m2;  ///< running sum of triangle areas
-  /// For a port that is a parallelogram (most windows): corner and the two edge vectors.
+  /// For a port that is a parallelogram (most windows): corner and the two edge vectors, for
+  /// samplers that want strata aligned with its edges (the direct component's port pieces).
   std::optional<std::array<Vec3, 3>> parallelogram;
   SourceLocation location;
 };
@@ -71,11 +72,6 @@ class PortSet {
   /// A point uniformly distributed by area on port `port`, from two independent uniform
   /// numbers in [0, 1); pdf = 1 / area. Throws std::out_of_range for a bad port index.
   PortSample sample(std::size_t port, double u1, double u2) const;
-  /// The same distribution, but for a parallelogram port the map corner + u1 e1 + u2 e2,
-  /// whose strata are aligned with its edges: a stratified estimator then sees a horizontal
-  /// edge (the horizon across a vertical window) in one row of strata, not across the
-  /// triangles' warped ones. Other ports: sample(). Throws like sample().
-  PortSample sample_aligned(std::size_t port, double u1, double u2) const;
 
  private:
   std::vector<Port> m_ports;
