@@ -90,18 +90,24 @@ void gather_path(const Scene& scene, const std::vector<Material>& materials, con
     // the lookups above). Reciprocity lets the backward path use the forward sampling.
     const double u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
     const std::optional<ScatterSample> s = material.sample(direction, hit->normal, u0, u1, u2);
-    if (!s || is_diffuse(s->type)) return;
+    if (!s) return;
     if (s->delta) {
       weight = mul(weight, s->weight);
+      if (s->type != ScatterType::StraightTransmission) specular = true;
     } else {
+      // Whichever component drew the direction, the glossy part of the BSDF there over the
+      // whole mixture's pdf (a one-sample estimate of the glossy integral, unbiased); a
+      // Lambertian surface leaves nothing beyond its lookup.
       const double pdf = material.pdf(direction, s->direction, hit->normal);
       if (!(pdf > 0)) return;
       const bool reflected = dot(s->direction, side) > 0;
       const Vec3 f_diffuse = (reflected ? rho_d : tau_d) * (1.0 / Pi);
-      const Vec3 glossy = clamp_non_negative(material.eval(direction, s->direction, hit->normal) - f_diffuse);
+      const Vec3 f = material.eval(direction, s->direction, hit->normal);
+      const Vec3 glossy = clamp_non_negative(f - f_diffuse);
+      if (!(max_component(glossy) > 1e-9 * max_component(f))) return;
       weight = mul(weight, glossy) * (std::fabs(dot(s->direction, hit->normal)) / pdf);
+      specular = true;
     }
-    if (s->type != ScatterType::StraightTransmission) specular = true;
     if (hit->port >= 0 && dot(s->direction, side) < 0) through_port = true;
     // Russian roulette once the path weight falls below RouletteThreshold of its start
     // (1 / N): unbiased, and it ends the long tails of inter-reflecting specular surfaces
