@@ -83,6 +83,10 @@ double lattice(double span_m, double spacing_m, double& first_m);
 /// "<what> would have N sensors, more than limits.sensors_per_grid (...)".
 std::string limit_message(const std::string& what, double count, std::uint64_t max_points);
 
+/// Reports a spacing that is not positive and finite, or an inset that is negative or not
+/// finite, at their keys; false if it reported.
+bool check_spacing_and_inset(const GridSpec& spec, const std::string& what, Diagnostics& diag);
+
 /// The room named `name`, or nullptr after reporting "<what>: unknown room" with a hint.
 const RoomSpec* find_grid_room(const std::string& name, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
                                const SourceLocation& where, const std::string& what);

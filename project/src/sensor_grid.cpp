@@ -72,6 +72,19 @@ std::string limit_message(const std::string& what, double count, std::uint64_t m
          over_limit_text(max_points, "limits.sensors_per_grid");
 }
 
+bool check_spacing_and_inset(const GridSpec& spec, const std::string& what, Diagnostics& diag) {
+  bool ok = true;
+  if (!std::isfinite(spec.spacing_m) || spec.spacing_m <= 0) {
+    report(diag, spec.location_of("spacing"), what + ": spacing must be positive");
+    ok = false;
+  }
+  if (!std::isfinite(spec.inset_m) || spec.inset_m < 0) {
+    report(diag, spec.location_of("inset"), what + ": inset must be >= 0");
+    ok = false;
+  }
+  return ok;
+}
+
 const RoomSpec* find_grid_room(const std::string& name, const std::vector<RoomSpec>& rooms, Diagnostics& diag,
                                const SourceLocation& where, const std::string& what) {
   std::vector<std::string> names;
@@ -98,14 +111,7 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, std
   if (spec.wall || spec.rectangle) return generate_surface_grid(spec, rooms, max_points, diag, out);
   const SourceLocation& at_spacing = spec.spacing_location.known() ? spec.spacing_location : spec.location;
   bool ok = true;
-  if (!std::isfinite(spec.spacing_m) || spec.spacing_m <= 0) {
-    report(diag, spec.location_of("spacing"), what + ": spacing must be positive");
-    ok = false;
-  }
-  if (!std::isfinite(spec.inset_m) || spec.inset_m < 0) {
-    report(diag, spec.location_of("inset"), what + ": inset must be >= 0");
-    ok = false;
-  }
+  if (!check_spacing_and_inset(spec, what, diag)) ok = false;
   if (!std::isfinite(spec.height_m)) {
     report(diag, spec.location_of("height"), what + ": height is not finite");
     ok = false;

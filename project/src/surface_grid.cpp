@@ -78,14 +78,7 @@ bool generate_surface_grid(const GridSpec& spec, const std::vector<RoomSpec>& ro
                            Diagnostics& diag, SensorGrid& out) {
   const std::string what = "grid '" + spec.name + "'";
   bool ok = true;
-  if (!std::isfinite(spec.spacing_m) || spec.spacing_m <= 0) {
-    report(diag, spec.location_of("spacing"), what + ": spacing must be positive");
-    ok = false;
-  }
-  if (!std::isfinite(spec.inset_m) || spec.inset_m < 0) {
-    report(diag, spec.location_of("inset"), what + ": inset must be >= 0");
-    ok = false;
-  }
+  if (!check_spacing_and_inset(spec, what, diag)) ok = false;
   if (!std::isfinite(spec.offset_m) || spec.offset_m < 0) {
     report(diag, spec.location_of("offset"), what + ": offset must be >= 0");
     ok = false;
