@@ -320,9 +320,11 @@ SkyPath trace_to_sky(const Scene& scene, const std::vector<Material>& materials,
       if (path.port < 0) path.transmittance = Vec3{};
       return path;
     }
-    // Outside the room nothing is transmitted or reflected toward the sensor: whatever
-    // the ray meets after its port (an obstruction, another building) blocks the sky.
-    if (path.port >= 0 || crossings >= MaxShadowRayCrossings) return SkyPath{};
+    // Outside the room nothing is reflected toward the sensor: whatever the ray meets after
+    // its port (an obstruction, another building) blocks the sky, except an outdoor
+    // scatterer's straight transmission (a glazed canopy), which port emission also leaves
+    // to the scatterer (port_emission.h).
+    if ((path.port >= 0 && hit->scatterer < 0) || crossings >= MaxShadowRayCrossings) return SkyPath{};
     const Material& material = materials[static_cast<std::size_t>(hit->material)];
     path.transmittance = mul(path.transmittance, material.straight_transmittance(incoming, hit->normal));
     if (!(path.transmittance.x > 0.0 || path.transmittance.y > 0.0 || path.transmittance.z > 0.0))

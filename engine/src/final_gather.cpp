@@ -72,7 +72,9 @@ void gather_path(const Scene& scene, const std::vector<Material>& materials, con
       }
       return;
     }
-    if (through_port || event > options.max_specular_events) return;  // blocked outside, or too deep
+    // Outside, only an outdoor scatterer sends light on (its photons include those that
+    // landed on it straight from the sources); anything else blocks the sky.
+    if ((through_port && hit->scatterer < 0) || event > options.max_specular_events) return;
     const Material& material = materials[static_cast<std::size_t>(hit->material)];
     if (!hit->front_face && material.type() == MaterialType::Dielectric) {
       const Vec3 tpm = material.interior_transmittance_per_m();

@@ -62,6 +62,8 @@ struct BlockResult {
   std::vector<Photon> surface;
   std::vector<std::vector<Photon>> planes;
   std::uint64_t entered = 0, global = 0, caustic = 0, direct = 0, rays = 0;
+  /// Attempts that landed on an outdoor scatterer and whose path then entered a room.
+  std::uint64_t scattered_indoors = 0;
   bool complete = false;  ///< every attempt of the block was traced
 };
 
@@ -121,15 +123,46 @@ std::optional<PathStart> pass_port(const Scene& scene, const std::vector<Materia
   return start;
 }
 
+// A photon that lands on an outdoor scatterer straight from its source: its Direct record
+// there (the scatterer's irradiance, which a final gather looking at the scatterer needs),
+// then the scatterer's own scattering event. Returns the path start, or nothing if the
+// photon is absorbed.
+std::optional<PathStart> land_on_scatterer(const Scene& scene, const std::vector<Material>& materials,
+                                           const PortEntry& entry, std::uint32_t source,
+                                           const TracingOptions& options, Rng& scattering,
+                                           Rng& roulette_rng, PhotonSink& sink) {
+  const Port& scatterer = scene.outdoor_scatterers()[static_cast<std::size_t>(entry.scatterer)];
+  const Material& material =
+      materials[static_cast<std::size_t>(scene.description().surfaces[scatterer.surface].material)];
+  const Vec3 lit_side = dot(entry.direction, scatterer.normal) < 0 ? scatterer.normal : scatterer.normal * -1.0;
+  if ((options.store_direct || options.store_direct_on_surfaces) && material.stores_photons())
+    sink.record(-1, make_photon(entry.position, {1, 1, 1}, lit_side, source, PathClass::Direct));
+  const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
+  const std::optional<ScatterSample> s = material.sample(entry.direction, scatterer.normal, u0, u1, u2);
+  if (!s) return std::nullopt;
+  PathStart start;
+  start.flux = {1, 1, 1};
+  if (!roulette(start.flux, s->weight, roulette_rng)) return std::nullopt;
+  start.direction = s->direction;
+  start.origin = scene.offset_ray_origin(entry.position, scatterer.normal, s->direction);
+  start.source = source;
+  start.scattered = s->type != ScatterType::StraightTransmission;
+  start.diffuse_scattered = is_diffuse(s->type);
+  start.outdoors = true;
+  return start;
+}
+
 }  // namespace
 
-void trace_path(const Scene& scene, const std::vector<Material>& materials,
+bool trace_path(const Scene& scene, const std::vector<Material>& materials,
                 const std::vector<ReceiverPlane>& planes, const PathStart& start,
                 const TracingOptions& options, Rng& scattering, Rng& roulette_rng,
                 PhotonSink& sink, std::uint64_t* rays) {
   Vec3 flux = start.flux;
   bool scattered = start.scattered;
   bool diffuse = start.diffuse_scattered;
+  bool outdoors = start.outdoors;
+  bool was_indoors = !outdoors;
   Ray ray{start.origin, start.direction, 0.0, std::numeric_limits<double>::infinity()};
   for (int event = 0; event <= options.max_events; ++event) {
     const PathClass path_class = !scattered ? PathClass::Direct
@@ -139,7 +172,7 @@ void trace_path(const Scene& scene, const std::vector<Material>& materials,
     const std::optional<Hit> hit = scene.intersect(ray);
     if (rays) ++*rays;
     const double t_end = hit ? hit->t : std::numeric_limits<double>::infinity();
-    if (store) {
+    if (store && !outdoors) {
       for (std::size_t g = 0; g < planes.size(); ++g) {
         const double t = planes[g].front_crossing(ray.origin, ray.direction);
         if (!(t >= ray.tmin && t < t_end)) continue;
@@ -150,21 +183,30 @@ void trace_path(const Scene& scene, const std::vector<Material>& materials,
                                 start.source, path_class));
       }
     }
-    if (!hit) return;
+    if (!hit) return was_indoors;
     const Material& material = materials[static_cast<std::size_t>(hit->material)];
     if (!hit->front_face && material.type() == MaterialType::Dielectric) {
       // The segment ran inside the dielectric: Beer-Lambert attenuation per metre.
       const Vec3 tpm = material.interior_transmittance_per_m();
       flux = mul(flux, {std::pow(tpm.x, hit->t), std::pow(tpm.y, hit->t), std::pow(tpm.z, hit->t)});
     }
-    if ((store || options.store_direct_on_surfaces) && material.stores_photons()) {
+    if ((store || options.store_direct_on_surfaces) && material.stores_photons() &&
+        (!outdoors || hit->scatterer >= 0)) {
       const Vec3 side = hit->front_face ? hit->normal : hit->normal * -1.0;
       sink.record(-1, make_photon(hit->position, flux, side, start.source, path_class));
     }
     const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
     const std::optional<ScatterSample> s = material.sample(ray.direction, hit->normal, u0, u1, u2);
-    if (!s) return;
-    if (!roulette(flux, s->weight, roulette_rng)) return;
+    if (!s) return was_indoors;
+    if (!roulette(flux, s->weight, roulette_rng)) return was_indoors;
+    if (hit->port >= 0) {
+      // Passing a port (not reflected by it): indoors along its normal, outdoors against it.
+      const Vec3& n = scene.ports()[static_cast<std::size_t>(hit->port)].normal;
+      const double before = dot(ray.direction, n), after = dot(s->direction, n);
+      if (before > 0 && after > 0) outdoors = false;
+      if (before < 0 && after < 0) outdoors = true;
+      was_indoors = was_indoors || !outdoors;
+    }
     if (s->type != ScatterType::StraightTransmission) {
       scattered = true;
       diffuse = diffuse || is_diffuse(s->type);
@@ -172,6 +214,7 @@ void trace_path(const Scene& scene, const std::vector<Material>& materials,
     ray = Ray{scene.offset_ray_origin(hit->position, hit->normal, s->direction), s->direction,
               0.0, std::numeric_limits<double>::infinity()};
   }
+  return was_indoors;
 }
 
 namespace {
@@ -180,6 +223,7 @@ struct SourceResult {
   std::vector<Photon> surface;
   std::vector<std::vector<Photon>> planes;
   SourceTally tally;
+  std::uint64_t scattered_indoors = 0;  ///< BlockResult::scattered_indoors, summed
 };
 
 // Trace attempts [first, last) of `source`, in parallel blocks, appending to `result`.
@@ -209,13 +253,16 @@ void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
       ++out.entered;
       Rng scattering(options.seed, source, i, RandomStream::Scattering);
       Rng roulette_rng(options.seed, source, i, RandomStream::Roulette);
-      const std::optional<PathStart> start =
-          pass_port(scene, materials, *entry, source, scattering, roulette_rng);
-      if (!start) continue;
       Rng storage(options.seed, source, i, RandomStream::Storage);
       sink.set_rng(&storage);
-      trace_path(scene, materials, planes, *start, options, scattering, roulette_rng, sink,
-                 &out.rays);
+      const std::optional<PathStart> start =
+          entry->port >= 0
+              ? pass_port(scene, materials, *entry, source, scattering, roulette_rng)
+              : land_on_scatterer(scene, materials, *entry, source, options, scattering, roulette_rng, sink);
+      if (!start) continue;
+      const bool indoors = trace_path(scene, materials, planes, *start, options, scattering, roulette_rng,
+                                      sink, &out.rays);
+      if (entry->scatterer >= 0 && indoors) ++out.scattered_indoors;
     }
     out.complete = true;
   });
@@ -233,6 +280,7 @@ void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
     result.tally.stored_caustic += b.caustic;
     result.tally.stored_direct += b.direct;
     result.tally.rays += b.rays;
+    result.scattered_indoors += b.scattered_indoors;
   }
 }
 
@@ -274,8 +322,18 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
       1, static_cast<std::uint64_t>(std::ceil(options.prepass_fraction * double(smallest))));
   std::uint64_t prepass = initial;
   std::uint64_t done = 0;
-  const std::uint64_t give_up =
-      static_cast<std::uint64_t>(options.max_prepass_attempts_per_target) * largest;
+  // Attempt limits in port-equivalent attempts (photon_tracer.h, "Outdoor scatterers"): an
+  // attempt on a port counts fully; of the attempts on outdoor scatterers only those whose
+  // light enters a room count (an upper 95 % bound on their share, from the attempts so far).
+  const double port_share = tally.bound_flux > 0 ? emitter.port_bound_flux(source) / tally.bound_flux : 1.0;
+  auto useful_share = [&](std::uint64_t attempts) {
+    if (port_share >= 1.0 || attempts == 0) return 1.0;
+    return std::min(1.0, port_share + (double(result.scattered_indoors) + 3.0) / double(attempts));
+  };
+  auto scaled_limit = [&](std::size_t per_target, std::uint64_t attempts) {
+    return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::ceil(
+                                          double(per_target) * double(largest) * useful_share(attempts))));
+  };
 
   auto enough = [&](std::size_t target, std::uint64_t stored) {
     return target == 0 ||
@@ -293,7 +351,7 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
     const bool d_found = target_d > 0 && tally.stored_direct > 0 && d_ok;
     if (g_ok && c_ok && d_ok) break;
     if ((g_found || c_found || d_found) && prepass >= 64 * initial) break;
-    if (prepass >= give_up) break;
+    if (prepass >= std::max(initial, scaled_limit(options.max_prepass_attempts_per_target, prepass))) break;
     // Light enters but nothing is stored (every surface it reaches absorbs it before it
     // scatters onto anything that stores, e.g. a black room): after 2^16 entries the stored
     // fraction of the entering flux is below 5e-5 (95 % confidence: 3 / 65536); stop.
@@ -324,10 +382,9 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
     const StorageProbabilities d{tally.storage_probability_global, tally.storage_probability_caustic,
                                  tally.storage_probability_direct};
     // The low-yield cap (photon_tracer.h): fixed before any of these attempts is traced.
-    const std::uint64_t cap =
-        options.max_mainpass_attempts_per_target == 0
-            ? std::numeric_limits<std::uint64_t>::max()
-            : static_cast<std::uint64_t>(options.max_mainpass_attempts_per_target) * largest;
+    const std::uint64_t cap = options.max_mainpass_attempts_per_target == 0
+                                  ? std::numeric_limits<std::uint64_t>::max()
+                                  : scaled_limit(options.max_mainpass_attempts_per_target, prepass);
     const double planned = std::ceil(double(prepass) * r_max);
     tally.capped = planned > double(cap);
     const std::uint64_t main = tally.capped ? cap : static_cast<std::uint64_t>(planned);

@@ -20,6 +20,8 @@ struct Scene::Impl {
   std::vector<SceneTriangle> triangles;
   std::vector<int> surface_port;  ///< per surface: port index or -1
   PortSet ports;
+  std::vector<int> surface_scatterer;  ///< per surface: outdoor scatterer index or -1
+  PortSet scatterers;
   Bounds3 bounds;
   double scale_m = 1;      ///< max(1 m, largest absolute coordinate)
   double epsilon_m = 1e-5;
@@ -80,6 +82,9 @@ Scene Scene::build(const SceneDescription& description) {
                                         " is out of range (" + std::to_string(material_count) +
                                         " materials)");
     }
+    if (s.port && s.outdoor_scatterer)
+      diagnostics.error(s.location, what + " is both a port and an outdoor scatterer; a surface is "
+                                           "at most one of them");
     if (s.vertices.size() < 3) {
       diagnostics.error(s.location, what + " has " + std::to_string(s.vertices.size()) +
                                         " vertices; a polygon needs at least 3");
@@ -127,6 +132,7 @@ Scene Scene::build(const SceneDescription& description) {
   std::vector<float> vertices_xyz;
   std::vector<std::uint32_t> indices;
   impl->surface_port.assign(surfaces.size(), -1);
+  impl->surface_scatterer.assign(surfaces.size(), -1);
   for (std::size_t i = 0; i < surfaces.size(); ++i) {
     const Surface& s = surfaces[i];
     const auto base = static_cast<std::uint32_t>(vertices_xyz.size() / 3);
@@ -146,6 +152,8 @@ Scene Scene::build(const SceneDescription& description) {
     }
     if (s.port)
       impl->surface_port[i] = impl->ports.add(static_cast<int>(i), s, triangulation[i]);
+    else if (s.outdoor_scatterer)
+      impl->surface_scatterer[i] = impl->scatterers.add(static_cast<int>(i), s, triangulation[i]);
   }
   if (!impl->triangles.empty()) {
     impl->bounds = {lo, hi};
@@ -176,6 +184,7 @@ std::optional<Hit> Scene::intersect(const Ray& ray) const {
   hit.surface = tri.surface;
   hit.material = m_impl->description.surfaces[static_cast<std::size_t>(tri.surface)].material;
   hit.port = m_impl->surface_port[static_cast<std::size_t>(tri.surface)];
+  hit.scatterer = m_impl->surface_scatterer[static_cast<std::size_t>(tri.surface)];
   hit.primitive = raw.primitive;
   hit.u = raw.u;
   hit.v = raw.v;
@@ -208,6 +217,7 @@ const SceneTriangle& Scene::triangle(std::uint32_t primitive) const {
 
 const SceneDescription& Scene::description() const { return m_impl->description; }
 const PortSet& Scene::ports() const { return m_impl->ports; }
+const PortSet& Scene::outdoor_scatterers() const { return m_impl->scatterers; }
 const std::vector<SensorGrid>& Scene::sensor_grids() const { return m_impl->description.grids; }
 
 bool Scene::is_port(int surface_index) const {

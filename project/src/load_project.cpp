@@ -625,7 +625,9 @@ class Loader {
     mount.side = side == "interior" ? MountSide::Interior : MountSide::Exterior;
     std::string port;
     if (r.read_choice("port", port))
-      mount.port = port == "enclosure" ? PortMode::Enclosure : PortMode::Window;
+      mount.port = port == "enclosure" ? PortMode::Enclosure
+                   : port == "window"  ? PortMode::Window
+                                       : PortMode::System;
     if (mount.side == MountSide::Interior) {
       if (r.has("port"))
         m_reporter.error(r.location_of("port"), "'port' applies to exterior systems only (inside "

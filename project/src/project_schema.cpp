@@ -75,13 +75,7 @@ ParamSchema system_side() {
   return P("side", T::Choice, "inside the room or outside the wall").choices({"interior", "exterior"}).def("interior");
 }
 ParamSchema system_port() {
-  return P("port", T::Choice, "exterior only: photons enter through the window (exterior parts only shade it), or through an opening box around system and window (their reflections are traced)").choices({"window", "enclosure"}).def("window");
-}
-ParamSchema system_port_enclosure() {
-  return P("port", T::Choice, "exterior only: photons enter through an opening box around panel and window (a transmitting panel needs it), or through the window").choices({"enclosure", "window"}).def("enclosure");
-}
-ParamSchema system_port_window() {
-  return P("port", T::Choice, "photons enter through the window (the system only shades it), or through an opening box around system and window").choices({"window", "enclosure"}).def("window");
+  return P("port", T::Choice, "exterior only, where sky and sun photons enter: the window and the system's own surfaces (what the system reflects and transmits is traced), the window alone (shading only: an approximation that drops the light the system reflects), or an opening box around system and window").choices({"system", "window", "enclosure"}).def("system");
 }
 
 std::vector<SectionSchema> build_schema() {
@@ -230,7 +224,7 @@ std::vector<SectionSchema> build_schema() {
       P("material", T::String, "slat material (both sides)").required(),
   }});
   s.push_back({"prismatic_panel system", "a panel of horizontal dielectric prisms parallel to a window", {
-      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port_enclosure(),
+      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port(),
       P("apex_angle", T::Number, "apex angle of the isosceles prism cross-section").unit("deg").range(10, 170).def("90"),
       P("pitch", T::Number, "prism base width = vertical period").unit("m").above(0).required(),
       P("apex", T::Choice, "where the apexes point").choices({"inward", "outward"}).def("inward"),
@@ -241,7 +235,7 @@ std::vector<SectionSchema> build_schema() {
       P("material", T::String, "a dielectric material").required(),
   }});
   s.push_back({"lamella_panel system", "a dielectric panel cut by inclined air lamellae (Y-glass, seeds/000 section 4.2.1)", {
-      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port_enclosure(),
+      system_type(), system_name(), system_enabled(), system_window(), system_side(), system_port(),
       P("thickness", T::Number, "panel thickness, wall-normal").unit("m").above(0).required(),
       P("spacing", T::Number, "vertical distance between lamellae").unit("m").above(0).required(),
       P("lamella_angle", T::Number, "lamella inclination; > 0: the room-side edge lower").unit("deg").range(-45, 45).def("7"),
@@ -279,7 +273,7 @@ std::vector<SectionSchema> build_schema() {
       P("collector_material", T::String, "collector glazing (glass or opening)").required(),
   }});
   s.push_back({"overhang system", "a horizontal or tilted projection above a window", {
-      system_type(), system_name(), system_enabled(), system_window(), system_port_window(),
+      system_type(), system_name(), system_enabled(), system_window(), system_port(),
       P("height", T::Number, "height of the overhang's wall edge above the floor (default: the window head)").unit("m").at_least(0),
       P("depth", T::Number, "from the wall to the free edge, along the overhang").unit("m").above(0).required(),
       P("tilt", T::Number, "rotation about the wall edge; > 0 raises the free edge").unit("deg").range(-60, 60).def("0"),
@@ -288,7 +282,7 @@ std::vector<SectionSchema> build_schema() {
       P("material", T::String, "material of every face").required(),
   }});
   s.push_back({"fins system", "vertical projections beside a window", {
-      system_type(), system_name(), system_enabled(), system_window(), system_port_window(),
+      system_type(), system_name(), system_enabled(), system_window(), system_port(),
       P("depth", T::Number, "from the wall to the free edge, along the fin").unit("m").above(0).required(),
       P("jambs", T::Choice, "which jambs get a fin, as seen from outside").choices({"both", "left", "right"}).def("both"),
       P("offset", T::Number, "from the jamb to the fin, away from the window").unit("m").at_least(0).def("0"),

@@ -8,9 +8,13 @@
 //
 // Ports (seeds/000 section 4.1.3; digest: "ports may be closed invisible geometry
 // enclosing an external system"): the window stays the photon port of interior systems
-// and of exterior ones with `port: window`; port emission tests the path from the window
-// toward the source, so exterior geometry shades but light it reflects is lost (no
-// external inter-reflection). With `port: enclosure` the exterior parts of every such
+// and of exterior ones with `port: system` or `port: window`; port emission tests the path
+// from the window toward the source, so exterior geometry shades it. With `port: system`
+// (the default) the exterior parts are outdoor scatterers (Surface::outdoor_scatterer):
+// photons land on them straight from the sources too, and what they reflect or transmit
+// toward the window is traced (engine/port_emission.h). With `port: window` they only
+// shade: light they reflect is lost (no external inter-reflection), an approximation
+// named as such wherever it is reported. With `port: enclosure` the exterior parts of every such
 // system of a window and the window itself are enclosed in a box of `opening` polygons
 // (ports, normals into the box), EnclosureMargin_m larger than their bounding box in the
 // window frame, open toward the wall; the window then stays glazing but is no longer a
@@ -241,10 +245,12 @@ void generate_systems(const Project& project, MaterialLookup& materials,
       if (transmits) {
         b.error("port", "(exterior, port: window) transmits light, but outside its window's "
                         "port every surface only shades: the window would be blocked; use "
-                        "port: enclosure");
+                        "port: system");
         continue;
       }
     }
+    if (sys.mount.side == MountSide::Exterior && sys.mount.port == PortMode::System)
+      for (Surface& part : parts) part.outdoor_scatterer = true;
     if (sys.mount.side == MountSide::Exterior && sys.mount.port == PortMode::Enclosure) {
       auto [it, fresh] = enclosures.emplace(sys.mount.window, Enclosure{frame, {}, &sys});
       if (fresh) {
@@ -279,7 +285,7 @@ void generate_systems(const Project& project, MaterialLookup& materials,
                what + ": the port enclosure of window '" + window_name + "' (" + metres(u0) +
                    " to " + metres(u1) + " along the wall, heights " + metres(v0) + " to " +
                    metres(v1) + ") covers window '" + other.name +
-                   "', which would be a second port behind it; use port: window or move the system");
+                   "', which would be a second port behind it; use port: system or move the system");
         ok = false;
       }
     }
@@ -292,7 +298,7 @@ void generate_systems(const Project& project, MaterialLookup& materials,
         report(diag, e.first->location,
                what + ": the port enclosure of window '" + window_name +
                    "' overlaps the one of window '" + other->frame.window->name +
-                   "' (ports must not overlap); use port: window for one of them");
+                   "' (ports must not overlap); use port: system for one of them");
         ok = false;
       }
     }

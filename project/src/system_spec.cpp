@@ -1,5 +1,5 @@
-// SystemSpec helpers (project.h): the project-file name of a system's type and the
-// location of its keys, used by the generators' located messages.
+// SystemSpec helpers (project.h): the project-file names of a system's type and port mode,
+// and the location of its keys, used by the generators' located messages.
 #include <type_traits>
 
 #include "dayphoton/project/project.h"
@@ -26,6 +26,15 @@ SourceLocation SystemSpec::location_of(const std::string& key) const {
   for (const auto& [k, loc] : key_locations)
     if (k == key) return loc;
   return location;
+}
+
+const char* port_mode_name(PortMode mode) {
+  switch (mode) {
+    case PortMode::System: return "system";
+    case PortMode::Window: return "window";
+    case PortMode::Enclosure: return "enclosure";
+  }
+  return "system";
 }
 
 }  // namespace dayphoton::project

@@ -14,7 +14,7 @@ ContentHash scene_key(const SceneDescription& scene) {
   }
   h.integer(static_cast<std::int64_t>(scene.surfaces.size()));
   for (const Surface& s : scene.surfaces) {
-    h.integer(s.material).integer(s.port ? 1 : 0).integer(static_cast<std::int64_t>(s.vertices.size()));
+    h.integer(s.material).integer(s.port ? 1 : s.outdoor_scatterer ? 2 : 0).integer(static_cast<std::int64_t>(s.vertices.size()));
     for (const Vec3& v : s.vertices) h.vec3(v);
   }
   return h;

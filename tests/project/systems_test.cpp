@@ -172,14 +172,14 @@ TEST(Systems, EveryTypeLoadsWithItsKeysAndDefaults) {
   EXPECT_EQ(shelf.thickness_m, 0);
   EXPECT_TRUE(shelf.underside_material.empty());
   EXPECT_EQ(s[0].location_of("depth").line, 20);
-  EXPECT_EQ(s[1].mount.port, PortMode::Window);  // outside, the window stays the port by default
+  EXPECT_EQ(s[1].mount.port, PortMode::System);  // outside, its reflections are traced by default
   EXPECT_EQ(std::get<LightShelfSpec>(s[1].params).underside_material, "walls");
   EXPECT_EQ(s[1].location_of("tilt").line, 22);
   const auto& blinds = std::get<BlindsSpec>(s[2].params);
   EXPECT_EQ(blinds.facets, 4);
   EXPECT_EQ(blinds.angle_deg, 0);
   EXPECT_FALSE(blinds.offset_m.has_value());
-  EXPECT_EQ(s[3].mount.port, PortMode::Enclosure);  // a transmitting panel outside needs one
+  EXPECT_EQ(s[3].mount.port, PortMode::System);  // a transmitting panel too
   const auto& prisms = std::get<PrismaticPanelSpec>(s[3].params);
   EXPECT_EQ(prisms.apex_angle_deg, 90);
   EXPECT_FALSE(prisms.apex_outward);
@@ -196,7 +196,7 @@ TEST(Systems, EveryTypeLoadsWithItsKeysAndDefaults) {
   EXPECT_TRUE(pipe.dome);
   EXPECT_EQ(pipe.dome_rings, 4);
   EXPECT_EQ(s[7].mount.side, MountSide::Exterior);  // overhangs are outside
-  EXPECT_EQ(s[7].mount.port, PortMode::Window);     // and only shade by default
+  EXPECT_EQ(s[7].mount.port, PortMode::System);     // and their reflections are traced
   const auto& fins = std::get<FinsSpec>(s[8].params);
   EXPECT_FALSE(fins.left);
   EXPECT_TRUE(fins.right);
@@ -266,7 +266,7 @@ TEST(Systems, EachInputErrorHasItsExactMessageAndLocation) {
        "    - {type: cpc, name: c, window: win, side: exterior, port: window, acceptance_angle: 25, count: 8,\n"
        "       kind: dielectric, material: pmma, exit_material: mirror}\n",
        {"20:63: cpc 'c' (exterior, port: window) transmits light, but outside its window's port every "
-        "surface only shades: the window would be blocked; use port: enclosure"}},
+        "surface only shades: the window would be blocked; use port: system"}},
       {"light_pipe_outside_the_ceiling_and_overlapping",
        "    - {type: light_pipe, name: l, room: room, x: 3.9, y: 3, diameter: 0.4, length: 1,\n"
        "       tube_material: mirror, diffuser_material: diffuser, collector_material: glass}\n"
@@ -307,7 +307,7 @@ TEST(Systems, AnEnclosureMustNotCoverAnotherWindow) {
   EXPECT_EQ(got, std::vector<std::string>{
                      "20:7: overhang 'o': the port enclosure of window 'clerestory' (-0.01 m to 3.01 m "
                      "along the wall, heights 1.591 m to 2.91 m) covers window 'view', which would be a "
-                     "second port behind it; use port: window or move the system"});
+                     "second port behind it; use port: system or move the system"});
 }
 
 TEST(Systems, InteriorMirrorShelfIsTheEngineTestShelf) {

@@ -57,6 +57,10 @@ struct Surface {
   std::vector<Vec3> vertices;  ///< planar, simple; normal by winding (counter-clockwise)
   bool port = false;           ///< photons from the sky/sun enter through this surface
   SourceLocation location;
+  /// An outdoor surface whose reflected and transmitted light is traced (an exterior daylight
+  /// system's part): photons from the sky and sun also start where they land on it directly
+  /// (either side), and scatter from there. Never also a port.
+  bool outdoor_scatterer = false;
 };
 
 struct SensorPoint {

@@ -7,9 +7,11 @@
 // where T is the product of the straight transmittances (Material::straight_transmittance:
 // Fresnel-weighted thin glass, openings) of the surfaces the shadow ray from the sensor
 // passes, up to and including the first PORT it crosses; anything opaque before the port,
-// or ANY surface after it (external obstructions; there is no external inter-reflection),
-// makes T = 0, and so does a ray that leaves without crossing a port (photons enter only
-// through ports). These are exactly the zero-event paths that the photon tracer does not
+// or any surface after it (external obstructions; there is no external inter-reflection)
+// other than an outdoor scatterer's straight transmission (a glazed canopy: port emission
+// leaves that light to the scatterer, whose photons stay Direct through it), makes T = 0,
+// and so does a ray that leaves without crossing a port (photons enter only through
+// ports). These are exactly the zero-event paths that the photon tracer does not
 // store, so direct + photon estimates count every path once.
 //
 // The integral is estimated by stratified sampling of the source's solid angle

@@ -32,7 +32,9 @@
 // one such event reaches the source containing its direction (SourceSet::find) with unit
 // radiance: that is the caustic part. Paths that leave without a specular event are the
 // zero-event light of the direct component (shadow rays, direct_component.h) and are NOT
-// counted here; a path that meets anything after its port is blocked, and one that leaves
+// counted here; a path that meets anything after its port is blocked (an outdoor scatterer
+// excepted: its photons, direct ones included, are looked up and its specular events
+// followed, as in the room; port_emission.h), and one that leaves
 // without crossing a port carries nothing (the rule of direct_component.h), so every light
 // path is counted once. Where the photon pass stores no photons (a black room), the gather
 // adds only the specular paths, which is exactly the light there is.

@@ -40,6 +40,15 @@
 // "Low-yield cap": a capped source's absolute noise is at most that of a source whose yield
 // is exactly at the cap).
 //
+// Outdoor scatterers (port_emission.h): a photon that lands on one is stored there as
+// Direct (with store_direct or store_direct_on_surfaces: a final gather looking out of a
+// window at the scatterer reads it) and scattered by its material, outdoors (trace_path).
+// Many of these photons never enter a room (a mirror shelf under a high north sky reflects
+// everything back up), so the low-yield cap and the pre-pass give-up limit count attempts
+// in port-equivalents: every attempt on a port counts, and of the attempts on scatterers
+// only the share whose path entered a room (its upper 95 % bound, (n + 3) / attempts). A
+// scene without scatterers is capped exactly as before.
+//
 // Determinism: attempt i of source p uses Rng(seed, p, i, stream) for the emission,
 // scattering and roulette streams; attempts are traced in blocks in parallel (oneTBB) and
 // the stored photons concatenated in (source, attempt) order, so the result is identical
@@ -176,12 +185,20 @@ struct PathStart {
   std::uint32_t source = 0;
   bool scattered = false;         ///< false: the path starts as Direct
   bool diffuse_scattered = false; ///< true: the path is already Global
+  /// The path starts outdoors (on an outdoor scatterer), not in a room behind a port.
+  bool outdoors = false;
 };
 
 /// Trace one photon path, reporting stored records to `sink` (Direct records only if
 /// options.store_direct). `scattering` and `roulette` are the path's two streams; `rays`, if
 /// given, counts the rays cast.
-void trace_path(const Scene& scene, const std::vector<Material>& materials,
+///
+/// Indoors and outdoors: a path is outdoors from an outdoor scatterer until it passes a port
+/// inward (along the port's normal), and again after passing one outward. Outdoors it is
+/// stored only on outdoor scatterers (what a final gather looking at them needs), never on
+/// the outer faces of rooms or on receiver planes. Returns true if the path was indoors at
+/// any point.
+bool trace_path(const Scene& scene, const std::vector<Material>& materials,
                 const std::vector<ReceiverPlane>& planes, const PathStart& start,
                 const TracingOptions& options, Rng& scattering, Rng& roulette, PhotonSink& sink,
                 std::uint64_t* rays = nullptr);

@@ -17,6 +17,22 @@
 // Ports must not overlap as seen from a source (one ray's flux would enter twice) and every
 // aperture must be a port (light entering elsewhere is lost): the thesis leaves both to the
 // user; dayphoton's scene check reports ports, the user marks them.
+//
+// Outdoor scatterers (Surface::outdoor_scatterer: the parts of exterior daylight systems)
+// are emission sites too, one per lit side (both for a thin part, the outside for a face of
+// a closed solid: scatterer_sides.h): side s of a scatterer with normal n takes the light
+// arriving from directions with d . s > 0 (s = n or -n), exactly as a port whose inward
+// normal is -s. A photon accepted there lands on the scatterer (it is scattered by the
+// scatterer's material in the tracer) instead of entering a room. Every ray from the sky
+// toward the building thus starts its path at its first hit among the ports and scatterers:
+// a port's path toward the source that a scatterer blocks is rejected (the scatterer takes
+// that light), and a scatterer point that another surface hides from the source is
+// rejected too (that surface takes it, if it is a scatterer or a port). Light reflected by
+// other outdoor surfaces (ground excepted: it is a source) is still not modelled.
+//
+// Set-up cost: the cosine bound of a site depends on its inward normal only; each source's
+// direction grid is sampled once and the bound is computed once per distinct normal (the
+// slats of a blind share a few), so sites are cheap however many there are.
 #pragma once
 
 #include <cstddef>
@@ -31,11 +47,13 @@
 
 namespace dayphoton::engine {
 
-/// An accepted, unoccluded emission: where the photon meets its port and where it goes.
+/// An accepted, unoccluded emission: where the photon meets its port (or lands on an outdoor
+/// scatterer) and where it goes.
 struct PortEntry {
-  Vec3 position;   ///< on the port polygon, metres
-  Vec3 direction;  ///< propagation direction (into the room), unit
-  int port = -1;   ///< index into Scene::ports()
+  Vec3 position;   ///< on the port (or scatterer) polygon, metres
+  Vec3 direction;  ///< propagation direction (into the room, or onto the scatterer), unit
+  int port = -1;   ///< index into Scene::ports(), or -1 for a scatterer
+  int scatterer = -1;  ///< index into Scene::outdoor_scatterers(), or -1 for a port
 };
 
 class PortEmitter {
@@ -46,8 +64,17 @@ class PortEmitter {
   /// carries times the number of attempts. Zero if no port faces the source.
   double bound_flux(std::size_t source) const { return m_bound_total[source]; }
 
-  /// sum_k Phi_pk by midpoint quadrature on an n x n grid of the source (tests, reports).
+  /// The part of bound_flux on the ports (the rest lands on outdoor scatterers).
+  double port_bound_flux(std::size_t source) const {
+    return m_port_sites == 0 ? 0.0 : m_cumulative[source][m_port_sites - 1];
+  }
+
+  /// sum_k Phi_pk by midpoint quadrature on an n x n grid of the source (tests, reports),
+  /// over every site: ports and both sides of every outdoor scatterer.
   double port_flux(std::size_t source, int n = 256) const;
+
+  /// Number of emission sites: the ports, then each lit side of every outdoor scatterer.
+  std::size_t site_count() const { return m_sites.size(); }
 
   /// One emission attempt for `source` using `rng` (RandomStream::Emission). Nothing if the
   /// attempt is rejected or its path toward the source is blocked. `rays`, if given, is
@@ -56,11 +83,21 @@ class PortEmitter {
                                    std::uint64_t* rays = nullptr) const;
 
  private:
+  /// A port, or one side of an outdoor scatterer.
+  struct Site {
+    const PortSet* set = nullptr;    ///< Scene::ports() or Scene::outdoor_scatterers()
+    std::size_t index = 0;           ///< in `set`
+    Vec3 inward;                     ///< accepts directions d (toward the source) with d . inward < 0
+    int port = -1, scatterer = -1;
+  };
+
   const Scene* m_scene;
   const SourceSet* m_sources;
+  std::vector<Site> m_sites;  ///< the ports first, then the scatterers' sides
+  std::size_t m_port_sites = 0;
   std::vector<double> m_bound_total;            ///< per source
-  std::vector<std::vector<double>> m_cumulative; ///< per source: running sum of B_pk over ports
-  std::vector<std::vector<double>> m_cos_bound;  ///< per source: c_pk
+  std::vector<std::vector<double>> m_cumulative; ///< per source: running sum of B_pk over sites
+  std::vector<std::vector<double>> m_cos_bound;  ///< per source: c_pk per site
 };
 
 }  // namespace dayphoton::engine

@@ -36,6 +36,8 @@ struct Hit {
   int surface = -1;         ///< index into SceneDescription::surfaces
   int material = -1;        ///< index into SceneDescription::materials
   int port = -1;            ///< index into Scene::ports() if the surface is a port, else -1
+  /// Index into Scene::outdoor_scatterers() if the surface is one, else -1.
+  int scatterer = -1;
   std::uint32_t primitive = 0;  ///< triangle index, see Scene::triangle()
   /// Barycentrics of the hit in its triangle (v0, v1, v2):
   /// position = (1 - u - v) * v0 + u * v1 + v * v2.

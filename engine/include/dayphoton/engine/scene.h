@@ -2,7 +2,7 @@
 //
 // What goes into the Embree scene: every surface of the description, ports included (a port
 // is glazing, real geometry a photon can hit from inside the room; Hit::port tells a port
-// hit apart). Sensor grids are NOT geometry: they are kept as given (sensor_grids()) and
+// hit apart), and outdoor scatterers (Surface::outdoor_scatterer; Hit::scatterer). Sensor grids are NOT geometry: they are kept as given (sensor_grids()) and
 // the estimators use them as virtual receiver planes.
 //
 // Building: each surface is validated and triangulated with dayphoton::triangulate_polygon
@@ -100,6 +100,10 @@ class Scene {
   const std::vector<SensorGrid>& sensor_grids() const;
   /// True if surface `surface_index` is a port.
   bool is_port(int surface_index) const;
+  /// Outdoor scatterers (surfaces with outdoor_scatterer = true), in surface order, each with
+  /// its triangles and area for uniform sampling (the Port record; its normal is the
+  /// polygon's winding normal, and both sides receive light).
+  const PortSet& outdoor_scatterers() const;
 
  private:
   struct Impl;

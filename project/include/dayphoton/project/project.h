@@ -129,16 +129,21 @@ struct MeshSpec {
 enum class MountSide { Interior, Exterior };
 
 /// Where photons enter for a window-mounted system (docs/daylight-systems.md, "Ports").
-/// Window: the window stays the photon port; exterior parts only shade it (the path from
-/// the port toward the source is tested; light they reflect is not modelled). Enclosure: an
-/// invisible box of `opening` ports encloses the exterior parts and the window, which is
-/// then no longer a port, so light reflected or refracted outside is traced.
-enum class PortMode { Window, Enclosure };
+/// System (the default): the window stays the photon port and the exterior parts are
+/// outdoor scatterers (Surface::outdoor_scatterer): photons also land on them straight from
+/// the sources, so the light they reflect or transmit toward the window is traced. Window:
+/// the window alone is the port; exterior parts only shade it (the path from the port toward
+/// the source is tested; light they reflect is not modelled), an explicit approximation.
+/// Enclosure: an invisible box of `opening` ports encloses the exterior parts and the
+/// window, which is then no longer a port, so light reflected or refracted outside is traced.
+enum class PortMode { System, Window, Enclosure };
+/// The `port` value of the project file ("system", "window", "enclosure").
+const char* port_mode_name(PortMode mode);
 
 struct WindowMount {
   std::string window;                  ///< name of the window the system belongs to
   MountSide side = MountSide::Interior;
-  PortMode port = PortMode::Window;    ///< resolved: interior systems always Window
+  PortMode port = PortMode::System;    ///< resolved: interior systems always Window
 };
 
 /// Light shelf: a flat shelf (or a closed slab) along the wall at `height_m` above the floor,
