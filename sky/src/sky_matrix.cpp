@@ -107,7 +107,7 @@ BelowHorizonDirect tally_below_horizon(const std::vector<double>& below_W_m2, co
   for (const double dni : below_W_m2) {
     if (!(dni > 0)) continue;
     ++b.records;
-    if (dni > 20.0) ++b.records_over_20_W_m2;  // gendaymtx's warning threshold (facts section 2.6)
+    if (dni > GendaymtxBelowHorizonWarning_W_m2) ++b.records_over_20_W_m2;
     b.direct_normal_Wh_m2 += dni;              // hourly records: W/m^2 x 1 h
     b.largest_W_m2 = std::max(b.largest_W_m2, dni);
   }

@@ -10,6 +10,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/sky/perez.h"
 #include "dayphoton/study/annual_study.h"
 
 namespace dayphoton::study {
@@ -119,7 +120,8 @@ std::string below_horizon_note(const sky::BelowHorizonDirect& b, bool sun_bins) 
   std::string text = "sun below the horizon: " + std::to_string(b.records) + (b.records == 1 ? " hour" : " hours") +
                      " of the weather file " + (b.records == 1 ? "has" : "have") +
                      " direct irradiance while the sun is below the horizon at the sun's site (" +
-                     std::to_string(b.records_over_20_W_m2) + " above 20 W/m2, largest " + format_number(b.largest_W_m2) +
+                     std::to_string(b.records_over_20_W_m2) + " above " + format_number(sky::GendaymtxBelowHorizonWarning_W_m2) +
+                     " W/m2, largest " + format_number(b.largest_W_m2) +
                      " W/m2; " + fixed(b.direct_normal_Wh_m2 / 1000.0, 2) + " kWh/m2 of direct normal irradiation, " +
                      fixed(share, 2) + " % of the file's); ";
   text += sun_bins ? "their direct sun is left out (no sun below the horizon is traced), their sky is kept"

@@ -79,7 +79,7 @@ struct SunRecord {
 /// sun sources of its own (the sun-bins mode) leaves their direct light out.
 struct BelowHorizonDirect {
   std::size_t records = 0;
-  std::size_t records_over_20_W_m2 = 0;  ///< those gendaymtx warns about (> 20 W/m^2)
+  std::size_t records_over_20_W_m2 = 0;  ///< those gendaymtx warns about (GendaymtxBelowHorizonWarning_W_m2)
   double direct_normal_Wh_m2 = 0;        ///< their direct normal irradiation (hourly records)
   double largest_W_m2 = 0;               ///< their largest direct normal irradiance
   double file_direct_normal_Wh_m2 = 0;   ///< the whole file's, for scale
