@@ -120,23 +120,11 @@ nlohmann::json summary_of(const fs::path& folder) {
 const std::vector<std::string> ResultFiles = {"illuminance.csv", "illuminance.bin", "metrics.csv",
                                               "grid_metrics.json", "daylight_factor.csv"};
 
-/// Three runs of the office, shared by the tests below: as shipped, from_weather, and the
-/// Mannheim site on the station's clock (each with the first run's photons, its own sky).
-class SunSiteRuns : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    const fs::path root = fs::path(::testing::TempDir()) / "dayphoton_sun_site";
-    site_dir = root / "site";
-    from_weather_dir = root / "from_weather";
-    mannheim_dir = root / "mannheim";
-    run_into(office_with_site(OfficeSite), site_dir);
-    run_into(office_with_site(FromWeather), from_weather_dir, site_dir);
-    // With the sky artefacts too: a key without the site would hand Mannheim Oakland's sky.
-    run_into(office_with_site(MannheimOnStationClock), mannheim_dir, site_dir, true);
-  }
-  static fs::path site_dir, from_weather_dir, mannheim_dir;
+/// The output folders of three runs of the office: as shipped, from_weather, and the Mannheim
+/// site on the station's clock (each with the first run's photons, its own sky).
+struct OfficeRuns {
+  fs::path site_dir, from_weather_dir, mannheim_dir;
 };
-fs::path SunSiteRuns::site_dir, SunSiteRuns::from_weather_dir, SunSiteRuns::mannheim_dir;
 
 TEST(SunSite, TenDegreesNorthGivesTheSunPositionsSpaGivesThere) {
   const weather::EpwFile epw = weather::read_epw(OaklandEpw);
@@ -180,7 +168,9 @@ TEST(SunSite, TenDegreesNorthGivesTheSunPositionsSpaGivesThere) {
   EXPECT_NEAR(base - here, 10.0, 0.05);
 }
 
-TEST_F(SunSiteRuns, SiteEqualToTheHeaderGivesTheResultsOfFromWeatherByteForByte) {
+/// The office as shipped (its site equal to the EPW header) and with from_weather: true.
+void expect_site_equal_to_the_header_gives_the_results_of_from_weather(const OfficeRuns& r) {
+  const fs::path &site_dir = r.site_dir, &from_weather_dir = r.from_weather_dir;
   for (const std::string& name : ResultFiles) {
     const fs::path a = site_dir / "workplane" / name, b = from_weather_dir / "workplane" / name;
     ASSERT_TRUE(fs::exists(a)) << a;
@@ -194,7 +184,9 @@ TEST_F(SunSiteRuns, SiteEqualToTheHeaderGivesTheResultsOfFromWeatherByteForByte)
   EXPECT_NE(w["site"]["sun"].get<std::string>().find("the weather file's site (site: from_weather)"), std::string::npos);
 }
 
-TEST_F(SunSiteRuns, MannheimWithTheOaklandFileIsNotTheOaklandResult) {
+/// The Mannheim site with the Oakland file (on its clock) against the Oakland site.
+void expect_mannheim_with_the_oakland_file_is_not_the_oakland_result(const OfficeRuns& r) {
+  const fs::path &site_dir = r.site_dir, &mannheim_dir = r.mannheim_dir;
   // The sun of Mannheim at Oakland's instants: the annual illuminance is another one.
   EXPECT_NE(read_text(site_dir / "workplane" / "illuminance.csv"), read_text(mannheim_dir / "workplane" / "illuminance.csv"));
   EXPECT_NE(read_text(site_dir / "workplane" / "metrics.csv"), read_text(mannheim_dir / "workplane" / "metrics.csv"));
@@ -224,7 +216,9 @@ TEST(SunSite, AnotherTimeZoneThanTheWeatherFilesIsALocatedError) {
   EXPECT_FALSE(fs::exists(folder / "run.log"));  // nothing written before the error
 }
 
-TEST_F(SunSiteRuns, BelowHorizonDirectHoursAreCountedInLogSummaryAndReport) {
+/// The hours with direct light and the sun below the horizon in the log, summary and report.
+void expect_below_horizon_hours_counted_in_log_summary_and_report(const OfficeRuns& r) {
+  const fs::path &site_dir = r.site_dir, &mannheim_dir = r.mannheim_dir;
   const weather::EpwFile epw = weather::read_epw(OaklandEpw);
   for (const auto& [folder, site_lines] : {std::pair{site_dir, OfficeSite}, std::pair{mannheim_dir, MannheimOnStationClock}}) {
     const SunSite site = resolve_sun_site(office_with_site(site_lines).site, epw);
@@ -254,8 +248,9 @@ TEST_F(SunSiteRuns, BelowHorizonDirectHoursAreCountedInLogSummaryAndReport) {
   EXPECT_GT(summary_of(mannheim_dir)["site"]["below_horizon_direct"]["hours"].get<std::size_t>(), 2000u);
 }
 
-TEST_F(SunSiteRuns, AnnualAndTheSkyImagesRebuildTheSkyOfTheSiteTheSummaryRecords) {
-  // `dayphoton annual` and the report's sky images read the site back from summary.json.
+/// `dayphoton annual` and the report's sky images read the site back from summary.json.
+void expect_the_summary_records_the_site(const OfficeRuns& r) {
+  const fs::path &from_weather_dir = r.from_weather_dir, &mannheim_dir = r.mannheim_dir;
   const weather::EpwFile epw = weather::read_epw(OaklandEpw);
   const std::string path = (mannheim_dir / "summary.json").string();
   const std::optional<SunSite> recorded = recorded_sun_site(read_text(mannheim_dir / "summary.json"), path, epw);
@@ -278,6 +273,32 @@ TEST_F(SunSiteRuns, AnnualAndTheSkyImagesRebuildTheSkyOfTheSiteTheSummaryRecords
   const std::string other_clock =
       R"({"site": {"from_weather": false, "latitude_deg": 49.5, "longitude_deg": 8.5, "time_zone_h": 1, "elevation_m": 0}})";
   EXPECT_THROW(recorded_sun_site(other_clock, path, epw), InputError);
+}
+
+TEST(SunSite, OfficeRunsForItsSiteFromWeatherAndMannheim) {
+  // One test for the three runs: CTest runs each test in a process of its own.
+  const fs::path root = fs::path(::testing::TempDir()) / "dayphoton_sun_site_runs";
+  const OfficeRuns r{root / "site", root / "from_weather", root / "mannheim"};
+  run_into(office_with_site(OfficeSite), r.site_dir);
+  run_into(office_with_site(FromWeather), r.from_weather_dir, r.site_dir);
+  // With the sky artefacts too: a key without the site would hand Mannheim Oakland's sky.
+  run_into(office_with_site(MannheimOnStationClock), r.mannheim_dir, r.site_dir, true);
+  {
+    SCOPED_TRACE("site equal to the header vs from_weather");
+    expect_site_equal_to_the_header_gives_the_results_of_from_weather(r);
+  }
+  {
+    SCOPED_TRACE("Mannheim vs Oakland");
+    expect_mannheim_with_the_oakland_file_is_not_the_oakland_result(r);
+  }
+  {
+    SCOPED_TRACE("below-horizon hours");
+    expect_below_horizon_hours_counted_in_log_summary_and_report(r);
+  }
+  {
+    SCOPED_TRACE("the site recorded in summary.json");
+    expect_the_summary_records_the_site(r);
+  }
 }
 
 }  // namespace
