@@ -116,7 +116,7 @@ nlohmann::json summary_of(const fs::path& folder) {
   return nlohmann::json::parse(read_text(folder / "summary.json"));
 }
 
-/// The files of a grid folder that hold results (the annual tables, metrics, DF, coefficients).
+/// The files of a grid folder that hold results the sky enters (annual tables, metrics) and the DF.
 const std::vector<std::string> ResultFiles = {"illuminance.csv", "illuminance.bin", "metrics.csv",
                                               "grid_metrics.json", "daylight_factor.csv"};
 
