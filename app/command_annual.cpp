@@ -3,7 +3,9 @@
 // (DIR/coefficients_sky.mtx, DIR/sensors.csv), without any tracing (issue 5 item 6). The sky
 // matrix is built from the EPW in the RADIANCE-compatible mode (gendaymtx -m MF, sun spread
 // into patches) or read from a RADIANCE matrix file (--sky-matrix, e.g. gendaymtx output,
-// plain or .gz); the EPW always gives the time stamps. See docs/outputs.md and docs/cli.md.
+// plain or .gz); the EPW always gives the time stamps. The sun is computed for the site the
+// run's summary.json records (study/sun_site.h), else for the weather file header's site.
+// See docs/outputs.md and docs/cli.md.
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -18,6 +20,7 @@
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/result_files.h"
+#include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
 
 namespace dayphoton::app {
@@ -34,17 +37,24 @@ sky::PatchBasis basis_of_columns(std::size_t columns, const std::string& coeffic
                    std::to_string(columns) + " columns match no sky basis (Tregenza 146, Reinhart MF n 144 n^2 + 2)");
 }
 
-/// The ground reflectance the run used, from the run's summary.json beside the grid folder
-/// (simulation.ground_reflectance), so that the rebuilt sky equals the run's; nullopt if
-/// there is no such file or key.
-std::optional<double> run_ground_reflectance(const std::string& grid_dir) {
+/// The run's summary.json beside the grid folder: its path and text ("" if there is no such
+/// regular file).
+std::pair<std::string, std::string> run_summary(const std::string& grid_dir) {
   fs::path dir = fs::absolute(grid_dir).lexically_normal();
   if (!dir.has_filename()) dir = dir.parent_path();  // "grid/" -> "grid"
   const fs::path summary = dir.parent_path() / "summary.json";
-  if (!input_file_problem(summary.string()).empty()) return std::nullopt;  // absent, or a FIFO: not waited on
+  if (!input_file_problem(summary.string()).empty()) return {summary.string(), ""};  // absent, or a FIFO: not waited on
   std::ifstream in(summary);
-  if (!in) return std::nullopt;
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return {summary.string(), in ? text.str() : std::string()};
+}
+
+/// The ground reflectance the run used, from its summary.json (simulation.ground_reflectance),
+/// so that the rebuilt sky equals the run's; nullopt if there is no such file or key.
+std::optional<double> run_ground_reflectance(const std::string& summary_text) {
+  if (summary_text.empty()) return std::nullopt;
+  const nlohmann::json j = nlohmann::json::parse(summary_text, nullptr, false);
   if (j.is_discarded() || !j.contains("simulation") || !j["simulation"].is_object()) return std::nullopt;
   const nlohmann::json& s = j["simulation"];
   if (!s.contains("ground_reflectance") || !s["ground_reflectance"].is_number()) return std::nullopt;
@@ -95,15 +105,22 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
   // A missing weather file (or a FIFO) is bad input (exit 1): read_epw says so, located.
   const weather::EpwFile epw = weather::read_epw(o.weather_path);
   study::AnnualSky sky;
+  std::string site_line;
   if (o.sky_matrix_path.empty()) {
+    const auto [summary_path, summary_text] = run_summary(o.coefficients_dir);
     double rho = o.ground_reflectance;
     if (!o.ground_reflectance_given)
-      if (const std::optional<double> from_run = run_ground_reflectance(o.coefficients_dir)) rho = *from_run;
+      if (const std::optional<double> from_run = run_ground_reflectance(summary_text)) rho = *from_run;
+    // The sun of the run's site (its summary.json), else of the weather file's header.
+    const std::optional<study::SunSite> recorded = study::recorded_sun_site(summary_text, summary_path, epw);
+    const study::SunSite site = recorded ? *recorded : study::header_sun_site(epw);
+    site_line = study::sun_site_sentence(site) +
+                (recorded ? " (the run's, from " + summary_path + ")" : std::string(" (no run summary records a site)"));
     require_matrix_within_limit("the sky matrix (" + std::to_string(basis.bin_count()) +
                                     " bins, one column per record of " + o.weather_path + ")",
                                 static_cast<std::uint64_t>(basis.bin_count()), epw.records.size(), 3,
                                 o.max_matrix_values);
-    sky = study::annual_sky_from_epw(epw, basis, study::radiance_compatible_sky_options(rho));
+    sky = study::annual_sky_from_epw(epw, site.solar, basis, study::radiance_compatible_sky_options(rho));
   } else {
     sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, epw, read_options, o.max_decompressed_bytes);
     if (sky.matrix.rows() != coefficients.columns() || sky.matrix.components() != coefficients.components())
@@ -129,6 +146,7 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
     out << "dayphoton annual: " << sensors.size() << " sensors x " << result.illuminance.step_count()
         << " steps, " << result.occupied_hours << " occupied hours (08:00-18:00 local standard time)\n"
         << "  sky: " << result.sky_description << "\n"
+        << (site_line.empty() ? std::string() : "  site: " + site_line + "\n")
         << "  mean DA300 " << percent(g.mean.da_percent) << ", sDA300/50% " << percent(g.sda_percent) << " ("
         << sda_sensors << " of " << sensors.size() << " sensors), mean UDI 100-2000 "
         << percent(g.mean.udi_original_percent) << ", mean occupied illuminance " << std::fixed

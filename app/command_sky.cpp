@@ -74,8 +74,8 @@ int run_sky(const SkyOptions& o, const std::string& command_line, std::ostream& 
     latlong.precision(8);
     latlong << std::fixed << "LATLONG= " << site.latitude_deg << ' ' << site.longitude_deg;
     matrix.header_lines().push_back(latlong.str());
-    if (result.sun_below_horizon_with_direct > 0)
-      std::cerr << "dayphoton sky: note: " << result.sun_below_horizon_with_direct
+    if (result.below_horizon_direct.records_over_20_W_m2 > 0)
+      std::cerr << "dayphoton sky: note: " << result.below_horizon_direct.records_over_20_W_m2
                 << " records have direct irradiance > 20 W/m2 with the sun below the horizon; "
                    "their sun was kept, as gendaymtx does\n";
   }

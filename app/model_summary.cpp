@@ -12,6 +12,7 @@
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sensor_support.h"
+#include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
 
 namespace dayphoton::app {
@@ -42,12 +43,20 @@ std::string utc_offset_text(double hours) {
   return s.str();
 }
 
-std::vector<std::string> describe_weather(const project::Project& proj) {
+/// The weather lines and the sun lines of the summary: which site the sun is computed for (the
+/// sentence the run log, summary.json and the report print), the station's distance and the
+/// hours with direct light while the sun is below the horizon (study/sun_site.h).
+void describe_weather_and_sun(const project::Project& proj, std::vector<std::string>& lines,
+                              std::vector<std::string>& sun_lines) {
   // A daylight-factor study needs no weather file (load_project checks when one is needed).
-  if (proj.weather.path.empty()) return {"none (daylight factors only)"};
+  if (proj.weather.path.empty()) {
+    lines = {"none (daylight factors only)"};
+    sun_lines = {"none: no weather file, so no sun (daylight factors only)"};
+    return;
+  }
   const weather::EpwFile epw = weather::read_epw(proj.weather.path);
   const weather::EpwLocation& loc = epw.header.location;
-  std::vector<std::string> lines;
+  lines.clear();
   lines.push_back(proj.weather.path_as_written + ": " + loc.city + ", " + loc.state + ", " + loc.country +
                   " (WMO " + loc.wmo + ", " + loc.source + ")");
   lines.push_back(latitude_text(loc.latitude_deg) + ", " + longitude_text(loc.longitude_east_deg) + ", " +
@@ -55,17 +64,12 @@ std::vector<std::string> describe_weather(const project::Project& proj) {
                   std::to_string(epw.records.size()) + " hourly records" +
                   (epw.leap_day_present ? " (with 29 February)" : ""));
   for (const Diagnostic& w : epw.warnings) lines.push_back("warning: " + w.location.to_string() + ": " + w.message);
-  // A weather station far from the site is legal (the nearest station) but worth a look.
-  const double distance_deg = std::hypot(loc.latitude_deg - proj.site.latitude_deg,
-                                         loc.longitude_east_deg - proj.site.longitude_deg);
-  if (distance_deg > 1.0)
-    lines.push_back("note: the weather station is " + fixed(distance_deg, 1) +
-                    " degrees from the site; the sun is computed for the site");
-  if (std::abs(loc.time_zone_h - proj.site.time_zone_h) > 1e-9)
-    lines.push_back("note: the weather file's time zone (" + utc_offset_text(loc.time_zone_h) +
-                    ") differs from the site's (" + utc_offset_text(proj.site.time_zone_h) +
-                    "); records are read in the file's time zone");
-  return lines;
+  // A time zone other than the file's is an error here as in `run` (located at time_zone).
+  const study::SunSite site = study::resolve_sun_site(proj.site, epw);
+  sun_lines = {study::sun_site_sentence(site)};
+  if (const std::string w = study::station_distance_warning(site); !w.empty()) sun_lines.push_back(w);
+  sun_lines.push_back(study::below_horizon_note(study::annual_below_horizon_direct(epw, site),
+                                                proj.simulation.sun == project::SunMode::Bins));
 }
 }  // namespace
 
@@ -73,7 +77,7 @@ ModelSummary summarize_model(const project::Project& proj) {
   ModelSummary s;
   s.project_path = proj.path;
   s.site = proj.site;
-  s.weather_lines = describe_weather(proj);
+  describe_weather_and_sun(proj, s.weather_lines, s.sun_lines);
   s.scene = project::build_scene_description(proj);
   // Building the Embree scene runs the engine's own validation (degenerate triangles etc.).
   const engine::Scene scene = engine::Scene::build(s.scene);
@@ -157,16 +161,21 @@ ModelSummary summarize_model(const project::Project& proj) {
 
 void print_model_summary(const ModelSummary& s, std::ostream& out) {
   out << "project  " << s.project_path << '\n';
-  out << "site     " << (s.site.name.empty() ? std::string("(unnamed)") : s.site.name) << ": "
-      << latitude_text(s.site.latitude_deg) << ", " << longitude_text(s.site.longitude_deg)
-      << ", " << utc_offset_text(s.site.time_zone_h) << ", elevation "
-      << fixed(s.site.elevation_m, 1) << " m, north " << fixed(s.site.north_deg, 2) << " deg";
+  out << "site     " << (s.site.name.empty() ? std::string("(unnamed)") : s.site.name) << ": ";
+  if (s.site.from_weather)
+    out << "the weather file's site (from_weather)";
+  else
+    out << latitude_text(s.site.latitude_deg) << ", " << longitude_text(s.site.longitude_deg) << ", "
+        << utc_offset_text(s.site.time_zone_h) << ", elevation " << fixed(s.site.elevation_m, 1) << " m";
+  out << ", north " << fixed(s.site.north_deg, 2) << " deg";
   if (s.site.utm_zone)
     out << " + meridian convergence " << fixed(s.site.meridian_convergence_deg, 4) << " deg (UTM "
         << *s.site.utm_zone << (s.site.utm_north ? "N" : "S") << ")";
   out << '\n';
   for (std::size_t i = 0; i < s.weather_lines.size(); ++i)
     out << (i == 0 ? "weather  " : "         ") << s.weather_lines[i] << '\n';
+  for (std::size_t i = 0; i < s.sun_lines.size(); ++i)
+    out << (i == 0 ? "sun      " : "         ") << s.sun_lines[i] << '\n';
 
   out << "surfaces " << s.surface_count << " polygons, " << s.triangle_count << " triangles\n";
   out << "  " << std::left << std::setw(20) << "material" << std::setw(13) << "type"

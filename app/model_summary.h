@@ -43,6 +43,9 @@ struct ModelSummary {
   std::string project_path;
   project::Site site;
   std::vector<std::string> weather_lines;  ///< human-readable weather header
+  /// Which site the sun is computed for, the station's distance, the hours with direct light
+  /// and the sun below the horizon (the run log's words, study/sun_site.h).
+  std::vector<std::string> sun_lines;
   std::vector<MaterialArea> materials;
   std::size_t surface_count = 0;
   std::size_t triangle_count = 0;

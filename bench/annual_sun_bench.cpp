@@ -40,6 +40,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/annual_sun.h"
+#include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
 
 using namespace dayphoton;
@@ -359,9 +360,10 @@ int main(int argc, char** argv) {
 
   // Sky-only matrix and suns (RADIANCE-compatible conventions).
   const weather::EpwFile epw = weather::read_epw(proj.weather.path);
+  const sky::SolarSite site = study::resolve_sun_site(proj.site, epw).solar;  // as the run
   const sky::PatchBasis basis = sky::PatchBasis::tregenza();
   const study::SkyAndSuns ss =
-      study::annual_sky_and_suns(epw, basis, study::sun_excluded_sky_options(sim.ground_reflectance));
+      study::annual_sky_and_suns(epw, site, basis, study::sun_excluded_sky_options(sim.ground_reflectance));
   const std::vector<sky::SunRecord>& suns = ss.suns;
 
   // Sky coefficients as the pipeline makes them (ground bin x 16 photons).
@@ -514,7 +516,7 @@ int main(int argc, char** argv) {
     std::printf("  (add %.2f points of sunless occupied hours to the mean DA300 values above)\n", sunless_da_mean);
   radiance_sun_hour(scene, materials, plane, sensors, sky_c, basis, sun_mf, sun_tracing, sun_estimating);
   const study::AnnualSky spread =
-      study::annual_sky_from_epw(epw, basis, study::radiance_compatible_sky_options(sim.ground_reflectance));
+      study::annual_sky_from_epw(epw, site, basis, study::radiance_compatible_sky_options(sim.ground_reflectance));
   window_sun_energy(description, materials, basis, spread, ss);
   // The sun's part of the annual illuminance per sensor row, direct and indirect, in both
   // modes: spread = sky coefficients (direct part / photon part) x (spread - sky-only

@@ -150,6 +150,9 @@ class Loader {
     check_photon_limit();
 
     const Outputs& o = m_project.outputs;
+    if (m_project.site.from_weather && !weather)
+      m_reporter.error(m_from_weather_location,
+                       "site: from_weather: true needs a weather file ('weather'), whose header gives the site");
     if (m_project.weather.path.empty() && !weather && (o.annual_illuminance || o.metrics))
       m_reporter.error(root.location,
                        "missing required key 'weather' in project (needed for annual_illuminance "
@@ -188,11 +191,34 @@ class Loader {
     site.location = node.location;
     ParamReader r(node, schema_section("site"), m_reporter);
     r.read_string("name", site.name);
+    r.read_bool("from_weather", site.from_weather);
+    m_from_weather_location = r.location_of("from_weather");
+    r.read_number("north", site.north_deg);
+    if (site.from_weather) {
+      // One source of truth: the header's site is the sun's; a second one in the project
+      // would be ignored, which is what from_weather must not do silently.
+      for (const char* key : {"latitude", "longitude", "time_zone", "elevation", "utm_zone"})
+        if (r.has(key)) {
+          r.take(key);
+          m_reporter.error(r.location_of(key),
+                           std::string("'") + key + "' is not used with from_weather: true (the sun is computed for "
+                               "the weather file header's site); remove it, or set from_weather: false to compute "
+                               "the sun for this site" +
+                               (std::string(key) == "utm_zone" ? " (a UTM zone needs the site's latitude and longitude)"
+                                                               : ""));
+        }
+      r.finish();
+      return;
+    }
+    for (const char* key : {"latitude", "longitude", "time_zone"})
+      if (!r.has(key))
+        m_reporter.error(node.location, std::string("missing required key '") + key +
+                                            "' in site (or from_weather: true for the weather file's site)");
     const bool have_lat = r.read_angle("latitude", AngleKind::Latitude, site.latitude_deg);
     const bool have_lon = r.read_angle("longitude", AngleKind::Longitude, site.longitude_deg);
     r.read_number("time_zone", site.time_zone_h);
+    site.time_zone_location = r.location_of("time_zone");
     r.read_number("elevation", site.elevation_m);
-    r.read_number("north", site.north_deg);
     if (const YamlNode* z = r.take("utm_zone"); z && !z->is_null()) {
       if (read_utm_zone(*z) && have_lat && have_lon) {
         try {
@@ -1142,6 +1168,7 @@ class Loader {
   Project& m_project;
   Reporter& m_reporter;
   const LoadOptions& m_options;
+  SourceLocation m_from_weather_location;  ///< of site.from_weather (its check needs the weather key)
   NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
       m_polygon_names{"polygon"}, m_box_names{"box"}, m_mesh_names{"mesh"},
       m_sensor_names{"sensor set"}, m_variant_names{"variant"}, m_system_names{"system"};

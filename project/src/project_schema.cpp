@@ -96,10 +96,11 @@ std::vector<SectionSchema> build_schema() {
   }});
   s.push_back({"site", "location of the site and orientation of the model", {
       P("name", T::String, "site name for reports").def(""),
-      P("latitude", T::Angle, "north positive; decimal degrees or DMS (41d58'48\"N)").unit("deg").range(-90, 90).required(),
-      P("longitude", T::Angle, "east positive (as EPW); decimal degrees or DMS (87d54'W)").unit("deg").range(-180, 180).required(),
-      P("time_zone", T::Number, "standard-time offset from UTC, east positive (EPW convention)").unit("h").range(-12, 14).required(),
-      P("elevation", T::Number, "site elevation above sea level").unit("m").range(-500, 9000).def("0"),
+      P("from_weather", T::Boolean, "true: the sun and the sky are computed for the weather file header's site, as RADIANCE's gendaymtx does (latitude, longitude, time_zone, elevation and utm_zone are then not written); false: for this site, with the weather station's irradiance").def("false"),
+      P("latitude", T::Angle, "north positive; decimal degrees or DMS (41d58'48\"N); required unless from_weather").unit("deg").range(-90, 90),
+      P("longitude", T::Angle, "east positive (as EPW); decimal degrees or DMS (87d54'W); required unless from_weather").unit("deg").range(-180, 180),
+      P("time_zone", T::Number, "standard-time offset from UTC, east positive (EPW convention); must be the weather file's (its hours are that clock's); required unless from_weather").unit("h").range(-12, 14),
+      P("elevation", T::Number, "site elevation above sea level (SPA sun positions)").unit("m").range(-500, 9000).def("0"),
       P("north", T::Number, "angle clockwise (seen from above) from model +Y to true north").unit("deg").range(-360, 360).def("0"),
       P("utm_zone", T::Special, "UTM zone the model is drawn in: '33N' or {zone: 33, hemisphere: north}; north is then measured to grid north and corrected by the meridian convergence"),
   }});

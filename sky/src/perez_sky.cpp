@@ -201,7 +201,7 @@ PerezState perez_state(const PerezInputs& in) {
   const double hy = horizontal > 0 ? sun.y / horizontal : -1.0;
   s.model_sun_direction = Vec3{hx * std::sin(s.sun_zenith_rad), hy * std::sin(s.sun_zenith_rad),
                                std::cos(s.sun_zenith_rad)};
-  s.sun_below_horizon_with_direct = s.sun_altitude_rad <= 0 && dni > 20.0;
+  s.sun_below_horizon_with_direct = s.sun_altitude_rad <= 0 && dni > GendaymtxBelowHorizonWarning_W_m2;
 
   s.dew_point_defaulted = !in.dew_point_C.has_value();
   s.dew_point_C = in.dew_point_C.value_or(PerezDefaultDewPoint_C);

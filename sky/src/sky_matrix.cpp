@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
@@ -72,6 +74,48 @@ void set_rgb(RadianceMatrix& m, std::size_t row, std::size_t column, const Vec3&
   for (int c = 0; c < 3; ++c) m.at(row, column, c) = static_cast<float>(rgb[c]);
 }
 
+/// The records' hours are local standard time of the file's time zone: a site on another
+/// clock would pair each record with the sun of another instant (sky_matrix.h).
+void require_file_clock(const weather::EpwFile& epw, const SolarSite& site) {
+  if (site.time_zone_h != epw.header.location.time_zone_h)
+    throw std::invalid_argument("sky matrix: the site's time zone (" + format_number(site.time_zone_h) +
+                                " h) is not the clock of " + epw.source_name + "'s records (" +
+                                format_number(epw.header.location.time_zone_h) + " h)");
+}
+
+SolarPositionOptions solar_options_for(const weather::EpwFile& epw, const SkyMatrixOptions& options) {
+  SolarPositionOptions solar = options.solar;
+  solar.radiance_series_has_leap_day = epw.leap_day_present;
+  return solar;
+}
+
+/// The sun of a record: at its mid-hour, local standard time (SiteClock).
+SolarPosition record_sun(const SolarSite& site, const weather::SiteClock& clock, const weather::TimeStep& step,
+                         const SolarPositionOptions& solar) {
+  return solar_position(site, SolarTime{clock.year(), step.month, step.day, step.hour_lst}, solar);
+}
+
+/// BelowHorizonDirect's rule: direct light measured while the sun's centre is below the horizon.
+bool direct_below_horizon(double direct_normal_W_m2, const SolarPosition& sun) {
+  return direct_normal_W_m2 > 0 && sun.direction.z <= 0;
+}
+
+/// BelowHorizonDirect from each record's direct normal irradiance if it is below the horizon
+/// (else 0) and the file's records.
+BelowHorizonDirect tally_below_horizon(const std::vector<double>& below_W_m2, const weather::EpwFile& epw) {
+  BelowHorizonDirect b;
+  for (const double dni : below_W_m2) {
+    if (!(dni > 0)) continue;
+    ++b.records;
+    if (dni > GendaymtxBelowHorizonWarning_W_m2) ++b.records_over_20_W_m2;
+    b.direct_normal_Wh_m2 += dni;              // hourly records: W/m^2 x 1 h
+    b.largest_W_m2 = std::max(b.largest_W_m2, dni);
+  }
+  for (const weather::WeatherRecord& r : epw.records)
+    if (r.direct_normal_w_m2 && *r.direct_normal_w_m2 > 0) b.file_direct_normal_Wh_m2 += *r.direct_normal_w_m2;
+  return b;
+}
+
 }  // namespace
 
 SkyMatrixOptions SkyMatrixOptions::gendaymtx_compatible() {
@@ -93,8 +137,23 @@ SolarSite solar_site_of(const weather::EpwFile& epw) {
   return site;
 }
 
+BelowHorizonDirect below_horizon_direct(const weather::EpwFile& epw, const SolarSite& site,
+                                        const SkyMatrixOptions& options) {
+  require_file_clock(epw, site);
+  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
+  const std::vector<weather::TimeStep> steps = clock.steps(epw.records);
+  const SolarPositionOptions solar = solar_options_for(epw, options);
+  std::vector<double> below(steps.size(), 0.0);
+  for (std::size_t t = 0; t < steps.size(); ++t) {
+    const double dni = epw.records[t].direct_normal_w_m2.value_or(0.0);
+    if (dni > 0 && direct_below_horizon(dni, record_sun(site, clock, steps[t], solar))) below[t] = dni;
+  }
+  return tally_below_horizon(below, epw);
+}
+
 SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, const PatchBasis& basis,
                            const SkyMatrixOptions& options) {
+  require_file_clock(epw, site);
   const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
   const std::vector<weather::TimeStep> steps = clock.steps(epw.records);
   const std::size_t n_steps = steps.size();
@@ -116,13 +175,12 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
   // spacing (not the count) per patch, at least 2 x 2.
   const int samples_per_axis =
       std::max(2, (options.mean_samples_per_axis + basis.multiplication_factor() - 1) / basis.multiplication_factor());
-  SolarPositionOptions solar = options.solar;
-  solar.radiance_series_has_leap_day = epw.leap_day_present;
+  const SolarPositionOptions solar = solar_options_for(epw, options);
 
   SkyMatrix result;
   result.matrix = RadianceMatrix(static_cast<std::size_t>(n_bins), n_steps, 3);
   std::vector<std::optional<SunRecord>> suns(n_steps);
-  std::vector<char> below_with_direct(n_steps, 0);
+  std::vector<double> below_horizon_W_m2(n_steps, 0.0);  // direct normal of records below the horizon
 
   // Patch centres and projected solid angles, shared by every step.
   std::vector<double> centre_zenith(n_bins), centre_weight(n_bins), projected_solid_angle(n_bins);
@@ -140,8 +198,8 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
     const double dhi = *record.diffuse_horizontal_w_m2;
     if (dni + dhi <= 1e-4) return;  // night: the whole column stays zero (gendaymtx)
 
-    const SolarPosition sun =
-        solar_position(site, SolarTime{clock.year(), step.month, step.day, step.hour_lst}, solar);
+    const SolarPosition sun = record_sun(site, clock, step, solar);
+    if (direct_below_horizon(dni, sun)) below_horizon_W_m2[t] = dni;
     PerezInputs inputs;
     inputs.direct_normal_irradiance_W_m2 = dni;
     inputs.diffuse_horizontal_irradiance_W_m2 = dhi;
@@ -206,7 +264,6 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
     }
 
     if (sun_lux_normal > 0) {
-      if (sun.direction.z <= 0) below_with_direct[t] = dni > 20.0;
       if (options.sun != SunInMatrix::None) spread_sun(basis, sun.direction, sun_lux_normal, result.matrix, t);
       if (sun.direction.z > 0) {
         SunRecord record_out;
@@ -221,8 +278,7 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
 
   for (const auto& s : suns)
     if (s) result.suns.push_back(*s);
-  result.sun_below_horizon_with_direct =
-      static_cast<std::size_t>(std::count(below_with_direct.begin(), below_with_direct.end(), 1));
+  result.below_horizon_direct = tally_below_horizon(below_horizon_W_m2, epw);
   return result;
 }
 

@@ -77,10 +77,10 @@ std::string annual_sky_description(const weather::EpwFile& epw, const sky::Patch
   return describe_options(options, basis) + ", from " + epw.source_name;
 }
 
-AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::PatchBasis& basis,
-                              const sky::SkyMatrixOptions& options) {
+AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::SolarSite& site,
+                              const sky::PatchBasis& basis, const sky::SkyMatrixOptions& options) {
   AnnualSky result;
-  result.matrix = sky::build_sky_matrix(epw, sky::solar_site_of(epw), basis, options).matrix;
+  result.matrix = sky::build_sky_matrix(epw, site, basis, options).matrix;
   result.steps = time_stamps(epw);
   result.daylight_hours_quantity = daylight_hours_quantity(epw, result.daylight_hours_source);
   result.description = annual_sky_description(epw, basis, options);

@@ -123,10 +123,10 @@ std::string sky_and_suns_description(const weather::EpwFile& epw, const sky::Pat
          ") from " + epw.source_name + "; sun from sun bins (indirect) and exact hourly shadow rays (direct)";
 }
 
-SkyAndSuns annual_sky_and_suns(const weather::EpwFile& epw, const sky::PatchBasis& basis,
-                               sky::SkyMatrixOptions options) {
+SkyAndSuns annual_sky_and_suns(const weather::EpwFile& epw, const sky::SolarSite& site,
+                               const sky::PatchBasis& basis, sky::SkyMatrixOptions options) {
   options.sun = sky::SunInMatrix::None;
-  sky::SkyMatrix built = sky::build_sky_matrix(epw, sky::solar_site_of(epw), basis, options);
+  sky::SkyMatrix built = sky::build_sky_matrix(epw, site, basis, options);
   SkyAndSuns result;
   result.sky.matrix = std::move(built.matrix);
   result.sky.steps = time_stamps(epw);

@@ -88,10 +88,13 @@ std::string coefficients_key(const std::vector<std::string>& photon_keys, const 
   return h.hex();
 }
 
-std::string sky_matrix_key(const std::string& weather_path, const sky::PatchBasis& basis,
-                           double ground_reflectance, bool sun_excluded) {
+std::string sky_matrix_key(const std::string& weather_path, const sky::SolarSite& site,
+                           const sky::PatchBasis& basis, double ground_reflectance, bool sun_excluded) {
   ContentHash h;
   h.text("sky matrix").integer(EngineCacheVersion).file(weather_path);
+  // Every field of the site the sun is computed for (SPA also reads pressure and temperature).
+  h.number(site.latitude_deg).number(site.longitude_deg).number(site.time_zone_h).number(site.elevation_m);
+  h.number(site.pressure_mbar).number(site.temperature_c);
   h.integer(basis.multiplication_factor()).number(ground_reflectance);
   h.text(sun_excluded ? "radiance-compatible, sun excluded; suns" : "radiance-compatible, sun spread");
   return h.hex();

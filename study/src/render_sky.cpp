@@ -13,6 +13,7 @@
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/sky/solar_position.h"
 #include "dayphoton/study/result_images.h"
+#include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
 #include "dayphoton/weather/site_clock.h"
 
@@ -96,8 +97,10 @@ RenderSkyResult make_render_sky(const RenderSkySettings& settings, const project
     if (!record.direct_normal_w_m2 || !record.diffuse_horizontal_w_m2)
       throw InputError(weather::epw_field_location(epw, record, weather::epw_field::DirectNormalRadiation),
                        "the record of " + when.text() + " lacks its direct normal or diffuse horizontal irradiance");
+    // The sun of the project's site (or the header's with from_weather), as in the run.
+    const SunSite site = resolve_sun_site(project.site, epw);
     const sky::SolarPosition sun =
-        sky::solar_position(sky::solar_site_of(epw), sky::SolarTime{clock.year(), step.month, step.day, step.hour_lst}, {});
+        sky::solar_position(site.solar, sky::SolarTime{clock.year(), step.month, step.day, step.hour_lst}, {});
     sky::PerezInputs inputs;
     inputs.direct_normal_irradiance_W_m2 = *record.direct_normal_w_m2;
     inputs.diffuse_horizontal_irradiance_W_m2 = *record.diffuse_horizontal_w_m2;

@@ -910,6 +910,18 @@ std::string summary_section(const json& summary, const std::string& results_dir,
       {"latitude (deg, north +)", json_scalar(site.value("latitude_deg", json()))},
       {"longitude (deg, east +)", json_scalar(site.value("longitude_deg", json()))},
       {"time zone (h from UTC, standard time)", json_scalar(site.value("time_zone_h", json()))}};
+  // Which site the sun is computed for, in the words of check and the run log (sun_site.h).
+  if (site.contains("sun")) {
+    const json sun = site.value("sun", json());
+    project.emplace_back("sun and sky", sun.is_string() ? esc(sun.get<std::string>()) : std::string("no weather file: no sun"));
+  }
+  if (site.contains("station_distance_km"))
+    project.emplace_back("weather station distance (km)", json_scalar(site.value("station_distance_km", json())));
+  if (site.contains("below_horizon_direct")) {
+    const json b = site.value("below_horizon_direct", json::object());
+    project.emplace_back("hours with direct irradiance and the sun below the horizon",
+                         json_scalar(b.value("hours", json())) + " (their sun " + esc(b.value("their_sun", std::string())) + ")");
+  }
   s << "<h3>Site</h3>" << key_value_table(project);
   const std::string weather = summary.value("weather", std::string());
   s << "<h3 id=\"weather\">Weather</h3>";
@@ -1201,8 +1213,8 @@ std::vector<std::string> write_images_and_report(const std::string& results_dir,
       const std::vector<std::string> w = write_grid_images(grid_folder_in(results_dir, join(results_dir, "operated"), g));
       written.insert(written.end(), w.begin(), w.end());
     }
-    const std::vector<std::string> w = write_sky_images(results_dir, outputs.sky_hour, summary.value("weather", std::string()),
-                                                        summary.value("simulation", json::object()).dump());
+    const std::vector<std::string> w =
+        write_sky_images(results_dir, outputs.sky_hour, summary.dump(), join(results_dir, "summary.json"));
     written.insert(written.end(), w.begin(), w.end());
   }
   if (outputs.report) {

@@ -18,6 +18,7 @@
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/result_tables.h"
+#include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
 
 namespace dayphoton::study {
@@ -389,21 +390,24 @@ std::vector<std::string> write_sky_images(const std::string& results_dir, const 
   const nlohmann::json summary = nlohmann::json::parse(in, nullptr, false);
   if (summary.is_discarded() || !summary.is_object())
     throw InputError(SourceLocation{summary_path, 0, 0}, "not a JSON object");
-  return write_sky_images(results_dir, hour, summary.value("weather", std::string()),
-                          summary.value("simulation", nlohmann::json::object()).dump(), size);
+  return write_sky_images(results_dir, hour, summary.dump(), summary_path, size);
 }
 
 std::vector<std::string> write_sky_images(const std::string& results_dir, const YearHour& hour,
-                                          const std::string& weather, const std::string& simulation_json, int size) {
+                                          const std::string& summary_text, const std::string& summary_path, int size) {
+  nlohmann::json summary = nlohmann::json::parse(summary_text, nullptr, false);
+  if (!summary.is_object()) summary = nlohmann::json::object();
+  const std::string weather = summary.value("weather", std::string());
   if (weather.empty() || !fs::exists(weather)) return {};
-  nlohmann::json sim = nlohmann::json::parse(simulation_json, nullptr, false);
+  nlohmann::json sim = summary.value("simulation", nlohmann::json::object());
   if (!sim.is_object()) sim = nlohmann::json::object();
   const double rho = sim.value("ground_reflectance", 0.2);
   const sky::PatchBasis basis = sim.value("basis", std::string("tregenza")) == "reinhart"
                                     ? sky::PatchBasis::reinhart(sim.value("reinhart_mf", 1))
                                     : sky::PatchBasis::tregenza();
   const weather::EpwFile epw = weather::read_epw(weather);
-  const AnnualSky sky = annual_sky_from_epw(epw, basis, radiance_compatible_sky_options(rho));
+  const SunSite site = recorded_or_header_sun_site(summary_text, summary_path, epw);
+  const AnnualSky sky = annual_sky_from_epw(epw, site.solar, basis, radiance_compatible_sky_options(rho));
 
   // The record whose interval (h - 1, h] holds the hour: mid-hour stamp ceil(H) - 0.5.
   const double stamp = std::ceil(hour.hour - 1e-9) - 0.5;

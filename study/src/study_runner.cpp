@@ -37,6 +37,7 @@
 #include "dayphoton/study/output_manifest.h"
 #include "dayphoton/study/report_html.h"
 #include "dayphoton/study/result_files.h"
+#include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
 #include "dayphoton/weather/site_clock.h"
 #include "dayphoton/metrics/annual_metrics.h"
@@ -217,7 +218,37 @@ struct RunContext {
   OutputManifest& outputs;  ///< every output file written, for summary.json `files`
   std::optional<AnnualSky> sky;  ///< built or loaded once, on first use (sun spread)
   std::optional<SkyAndSuns> sky_and_suns;  ///< the same for the sun-bins mode
+  const weather::EpwFile* epw = nullptr;   ///< the project's weather file, if it has one
+  const SunSite* sun_site = nullptr;       ///< the site its sun is computed for (sun_site.h)
 };
+
+/// summary.json `site` (docs/outputs.md): the site the sun is computed for (the project's, or
+/// the weather file header's with from_weather), the sentence every output prints about it,
+/// the station's distance and the hours with direct light and the sun below the horizon.
+nlohmann::json site_json(const project::Site& project_site, const SunSite* sun_site,
+                         const sky::BelowHorizonDirect* below, bool sun_bins) {
+  nlohmann::json j = {{"name", project_site.name}, {"from_weather", project_site.from_weather}};
+  const sky::SolarSite solar = sun_site ? sun_site->solar
+                                        : sky::SolarSite{project_site.latitude_deg, project_site.longitude_deg,
+                                                         project_site.time_zone_h, project_site.elevation_m};
+  j["latitude_deg"] = solar.latitude_deg;
+  j["longitude_deg"] = solar.longitude_deg;
+  j["time_zone_h"] = solar.time_zone_h;
+  j["elevation_m"] = solar.elevation_m;
+  if (!sun_site) {
+    j["sun"] = nullptr;
+    return j;
+  }
+  j["sun"] = sun_site_sentence(*sun_site);
+  j["station"] = sun_site->station;
+  j["station_distance_km"] = sun_site->station_distance_km;
+  j["below_horizon_direct"] = {{"hours", below->records},
+                               {"hours_over_20_W_m2", below->records_over_20_W_m2},
+                               {"direct_normal_kWh_m2", below->direct_normal_Wh_m2 / 1000.0},
+                               {"largest_W_m2", below->largest_W_m2},
+                               {"their_sun", sun_bins ? "left out" : "spread into the nearest sky patches"}};
+  return j;
+}
 
 metrics::MetricSettings metric_settings(const project::MetricsSettings& m) {
   metrics::MetricSettings s;
@@ -251,9 +282,10 @@ AnnualOutputs annual_outputs_of(const project::Project& project) {
 const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBasis& basis,
                             RunContext& ctx) {
   if (ctx.sky) return *ctx.sky;
-  const weather::EpwFile epw = weather::read_epw(project.weather.path);
+  const weather::EpwFile& epw = *ctx.epw;
+  const sky::SolarSite& site = ctx.sun_site->solar;
   const double rho_g = project.simulation.ground_reflectance;
-  const std::string key = sky_matrix_key(project.weather.path, basis, rho_g, false);
+  const std::string key = sky_matrix_key(project.weather.path, site, basis, rho_g, false);
   AnnualSky sky;
   bool cached = false;
   if (!ctx.settings.force) {
@@ -275,7 +307,7 @@ const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBas
     ctx.log.line("sky matrix: cached");
   } else {
     ctx.progress.start("sky matrix", epw.records.size(), "hours");
-    sky = annual_sky_from_epw(epw, basis, radiance_compatible_sky_options(rho_g));
+    sky = annual_sky_from_epw(epw, site, basis, radiance_compatible_sky_options(rho_g));
     ctx.store.write("sky", key, encode_matrix(sky.matrix));
     ctx.progress.advance(epw.records.size());
     ctx.progress.end();
@@ -290,9 +322,10 @@ const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBas
 const SkyAndSuns& sky_and_suns(const project::Project& project, const sky::PatchBasis& basis,
                                RunContext& ctx) {
   if (ctx.sky_and_suns) return *ctx.sky_and_suns;
-  const weather::EpwFile epw = weather::read_epw(project.weather.path);
+  const weather::EpwFile& epw = *ctx.epw;
+  const sky::SolarSite& site = ctx.sun_site->solar;
   const double rho_g = project.simulation.ground_reflectance;
-  const std::string key = sky_matrix_key(project.weather.path, basis, rho_g, true);
+  const std::string key = sky_matrix_key(project.weather.path, site, basis, rho_g, true);
   SkyAndSuns result;
   bool cached = false;
   if (!ctx.settings.force) {
@@ -317,7 +350,7 @@ const SkyAndSuns& sky_and_suns(const project::Project& project, const sky::Patch
     ctx.log.line("sky matrix: cached");
   } else {
     ctx.progress.start("sky matrix", epw.records.size(), "hours");
-    result = annual_sky_and_suns(epw, basis, sun_excluded_sky_options(rho_g));
+    result = annual_sky_and_suns(epw, site, basis, sun_excluded_sky_options(rho_g));
     const RadianceMatrix suns = suns_to_matrix(result.suns);
     // Use the suns as the cache stores them (single precision), so that a later run from the
     // cache gives byte-identical results.
@@ -790,6 +823,16 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                     Progress& progress) {
   RunReport report;
   const project::Simulation& sim = project.simulation;
+  // The weather file and the site of its sun first: a time zone that is not the file's is an
+  // input error, reported before anything is written.
+  std::optional<weather::EpwFile> epw;
+  std::optional<SunSite> sun_site;
+  std::optional<sky::BelowHorizonDirect> below_horizon;
+  if (!project.weather.path.empty()) {
+    epw = weather::read_epw(project.weather.path);
+    sun_site = resolve_sun_site(project.site, *epw);
+    below_horizon = annual_below_horizon_direct(*epw, *sun_site);
+  }
   report.output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
   fs::create_directories(report.output_dir);
   // One run per folder (output_lock.h); then what earlier runs left: temporaries of killed
@@ -817,8 +860,13 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     report.notes.push_back(
         "sun: spread into the 4 nearest sky patches as RADIANCE's gendaymtx does (RADIANCE-compatible "
         "mode); no ASE");
-  report.notes.push_back(
-      "sky: the annual sky uses the site of the weather file's header (as gendaymtx does)");
+  if (sun_site) {
+    report.notes.push_back("site: " + sun_site_sentence(*sun_site));
+    if (const std::string w = station_distance_warning(*sun_site); !w.empty()) report.notes.push_back("site: " + w);
+    report.notes.push_back(below_horizon_note(*below_horizon, sim.sun == project::SunMode::Bins));
+  } else {
+    report.notes.push_back("site: no weather file, so no sun: daylight factors only");
+  }
   for (const std::string& n : report.notes) log.line(n);
 
   // Operated shading needs each hour's direct sun (the loader says so for project files).
@@ -833,7 +881,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     return nullptr;
   };
 
-  RunContext ctx{settings, progress, log, report, store, outputs, std::nullopt, std::nullopt};
+  RunContext ctx{settings, progress, log, report, store, outputs, std::nullopt, std::nullopt,
+                 epw ? &*epw : nullptr, sun_site ? &*sun_site : nullptr};
   // The project as written is the base case, in <output>/<grid>/; each variant is studied
   // in addition, in <output>/variants/<variant>/<grid>/ (a folder no grid name can clash with).
   nlohmann::json grids = run_case(project, "", report.output_dir, ctx, keep(project::BaseCaseName));
@@ -856,8 +905,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
       {"project", project.path},
       {"versions", {{"dayphoton", settings.version}, {"compiler", __VERSION__}}},
       {"output", report.output_dir},
-      {"site", {{"name", project.site.name}, {"latitude_deg", project.site.latitude_deg},
-                {"longitude_deg", project.site.longitude_deg}, {"time_zone_h", project.site.time_zone_h}}},
+      {"site", site_json(project.site, sun_site ? &*sun_site : nullptr, below_horizon ? &*below_horizon : nullptr,
+                         sim.sun == project::SunMode::Bins)},
       {"weather", project.weather.path},
       {"simulation", {{"basis", sim.basis == project::SkyBasis::Tregenza ? "tregenza" : "reinhart"},
                       {"reinhart_mf", sim.basis == project::SkyBasis::Tregenza ? 1 : sim.reinhart_mf},

@@ -187,6 +187,32 @@ std::vector<BadCase> bad_cases() {
        "site: {latitude: 37.72, longitude: -122.22, time_zone: -8, utm_zone: 61N}\n",
        {"5:70: bad value '61N' for 'utm_zone': UTM zone must be 1..60"},
        false},
+      {"from_weather_takes_no_second_site",
+       "weather: " + OfficeEpw + "\n"
+       "materials: {}\n"
+       "geometry: {}\n"
+       "site: {from_weather: true, latitude: 37.72, elevation: 2, utm_zone: 10N}\n",
+       {"6:38: 'latitude' is not used with from_weather: true (the sun is computed for the weather file header's "
+        "site); remove it, or set from_weather: false to compute the sun for this site",
+        "6:56: 'elevation' is not used with from_weather: true (the sun is computed for the weather file header's "
+        "site); remove it, or set from_weather: false to compute the sun for this site",
+        "6:69: 'utm_zone' is not used with from_weather: true (the sun is computed for the weather file header's "
+        "site); remove it, or set from_weather: false to compute the sun for this site (a UTM zone needs the "
+        "site's latitude and longitude)"},
+       false},
+      {"from_weather_needs_a_weather_file",
+       "materials: {}\n"
+       "geometry: {}\n"
+       "site: {from_weather: true}\n",
+       {"5:22: site: from_weather: true needs a weather file ('weather'), whose header gives the site"},
+       false},
+      {"site_needs_its_position_without_from_weather",
+       "materials: {}\n"
+       "geometry: {}\n"
+       "site: {longitude: -122.22}\n",
+       {"5:7: missing required key 'latitude' in site (or from_weather: true for the weather file's site)",
+        "5:7: missing required key 'time_zone' in site (or from_weather: true for the weather file's site)"},
+       false},
       {"several_errors_in_one_file",
        "materials:\n"
        "  w: {type: lambertian, reflectance: -0.1}\n"
@@ -407,6 +433,22 @@ TEST(ProjectLoader, UtmZoneSetsConvergenceAndRotation) {
   EXPECT_EQ(*q.site.utm_zone, 56);
   EXPECT_FALSE(q.site.utm_north);
   EXPECT_NEAR(q.site.meridian_convergence_deg, utm_meridian_convergence_deg(-33.87, 151.21, 56), 1e-12);
+}
+
+TEST(ProjectLoader, SiteFromWeatherLeavesThePositionToTheWeatherFile) {
+  const Project p = load_project_from_string(
+      "site: {name: station, from_weather: true, north: 12}\nweather: " + OfficeEpw +
+          "\nmaterials: {}\ngeometry: {}\n",
+      FakePath);
+  EXPECT_TRUE(p.site.from_weather);
+  EXPECT_EQ(p.site.name, "station");
+  EXPECT_DOUBLE_EQ(p.site.north_deg, 12);
+  // Written by default as false; the position then comes from the file, with the location of
+  // time_zone kept for the check that it is the weather file's clock.
+  const Project q = load_project_from_string(Head + "materials: {}\ngeometry: {}\n", FakePath);
+  EXPECT_FALSE(q.site.from_weather);
+  EXPECT_EQ(q.site.time_zone_location.line, 1);
+  EXPECT_EQ(q.site.time_zone_location.column, 56);
 }
 
 TEST(ProjectLoader, DefaultsComeFromTheSchemaAndMatchTheStructs) {

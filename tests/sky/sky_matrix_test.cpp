@@ -14,6 +14,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/sky/perez.h"
 #include "dayphoton/weather/site_clock.h"
+#include "../weather/epw_test_support.h"
 
 using namespace dayphoton;
 using namespace dayphoton::sky;
@@ -184,4 +185,62 @@ TEST(SkyVector, CieOvercastSkyVectorKeepsItsHorizontalIlluminance) {
       EXPECT_NEAR(l / l_zenith, expected_ratio, 0.01 * expected_ratio) << "bin " << b;
     }
   }
+}
+
+namespace {
+
+/// A synthetic year (Oakland header, tests/weather/epw_test_support.h) whose only direct light
+/// is 500 W/m2 at 12:30 every day, 30 W/m2 at 00:30 on 1-10 January and 10 W/m2 at 23:30 on
+/// 1-5 January: 15 records with the sun below the horizon at Oakland, 10 above 20 W/m2.
+weather::EpwFile direct_at_noon_and_midnight() {
+  weather::test::SyntheticEpw synthetic;
+  for (int m = 1; m <= 12; ++m)
+    for (int d = 1; d <= weather::days_in_month(m, false); ++d)
+      for (int h = 1; h <= 24; ++h)
+        synthetic.set_field(weather::test::SyntheticEpw::line_of(m, d, h), 15, h == 13 ? "500" : "0");
+  for (int d = 1; d <= 10; ++d) synthetic.set_field(weather::test::SyntheticEpw::line_of(1, d, 1), 15, "30");
+  for (int d = 1; d <= 5; ++d) synthetic.set_field(weather::test::SyntheticEpw::line_of(1, d, 24), 15, "10");
+  return synthetic.read();
+}
+
+}  // namespace
+
+TEST(SkyMatrix, CountsTheRecordsWithDirectLightAndTheSunBelowTheHorizon) {
+  const weather::EpwFile epw = direct_at_noon_and_midnight();
+  SkyMatrixOptions spa;  // SPA sun positions; patch-centre values only to keep the test quick
+  spa.patch_value = PatchValue::Centre;
+  for (const SkyMatrixOptions& options : {spa, SkyMatrixOptions::gendaymtx_compatible()}) {
+    const BelowHorizonDirect b = below_horizon_direct(epw, solar_site_of(epw), options);
+    EXPECT_EQ(b.records, 15u);
+    EXPECT_EQ(b.records_over_20_W_m2, 10u);
+    EXPECT_DOUBLE_EQ(b.direct_normal_Wh_m2, 10 * 30.0 + 5 * 10.0);
+    EXPECT_DOUBLE_EQ(b.largest_W_m2, 30.0);
+    EXPECT_DOUBLE_EQ(b.file_direct_normal_Wh_m2, 365 * 500.0 + 350.0);
+    // build_sky_matrix counts the same records, and lists a sun for the noon ones only.
+    const SkyMatrix sky = build_sky_matrix(epw, solar_site_of(epw), PatchBasis::tregenza(), options);
+    EXPECT_EQ(sky.below_horizon_direct.records, b.records);
+    EXPECT_EQ(sky.below_horizon_direct.records_over_20_W_m2, b.records_over_20_W_m2);
+    EXPECT_DOUBLE_EQ(sky.below_horizon_direct.direct_normal_Wh_m2, b.direct_normal_Wh_m2);
+    EXPECT_EQ(sky.suns.size(), 365u);
+  }
+  // The sun is the site's: 180 degrees of longitude east of the header, on the file's clock
+  // (UTC-8), 12:30 is 00:20 local mean solar time there and 00:30 is 12:20. Every noon
+  // record now has the sun below the horizon and every midnight record has it above.
+  SolarSite opposite = solar_site_of(epw);
+  opposite.longitude_deg += 180.0;
+  const BelowHorizonDirect b = below_horizon_direct(epw, opposite, SkyMatrixOptions{});
+  EXPECT_EQ(b.records, 365u);
+  EXPECT_EQ(b.records_over_20_W_m2, 365u);
+  EXPECT_DOUBLE_EQ(b.direct_normal_Wh_m2, 365 * 500.0);
+  EXPECT_EQ(build_sky_matrix(epw, opposite, PatchBasis::tregenza(), spa).suns.size(), 15u);
+}
+
+TEST(SkyMatrix, RefusesASiteOnAnotherClockThanTheWeatherFile) {
+  // The records' hours are the file's local standard time: another zone would pair each
+  // record with the sun of another instant.
+  const weather::EpwFile epw = direct_at_noon_and_midnight();
+  SolarSite site = solar_site_of(epw);
+  site.time_zone_h = 1;
+  EXPECT_THROW(build_sky_matrix(epw, site, PatchBasis::tregenza(), SkyMatrixOptions{}), std::invalid_argument);
+  EXPECT_THROW(below_horizon_direct(epw, site, SkyMatrixOptions{}), std::invalid_argument);
 }

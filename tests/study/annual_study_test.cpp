@@ -182,7 +182,7 @@ TEST_F(RadianceReference, ReproducesRadianceIlluminanceAndMetrics) {
 // compatibility test checks the elements above 1 % of their hour's maximum; the bound assumes
 // the 1 % for all.) Measured: worst DA300 difference 0.084 points, UDI 0.09.
 TEST_F(RadianceReference, OwnGendaymtxCompatibleSkyGivesDa300WithinTheSkyToleranceBound) {
-  const AnnualSky own = annual_sky_from_epw(*epw, sky::PatchBasis::tregenza(), radiance_compatible_sky_options(0.2));
+  const AnnualSky own = annual_sky_from_epw(*epw, sky::solar_site_of(*epw), sky::PatchBasis::tregenza(), radiance_compatible_sky_options(0.2));
   ASSERT_EQ(own.matrix.rows(), 146u);
   ASSERT_EQ(own.matrix.columns(), 8760u);
   const AnnualStudySettings settings;

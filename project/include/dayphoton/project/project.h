@@ -28,10 +28,17 @@ struct Located {
 
 struct Site {
   std::string name;
+  /// `from_weather: true`: the sun and the sky are computed for the weather file header's site,
+  /// as RADIANCE's gendaymtx does; latitude, longitude, time_zone, elevation and utm_zone are
+  /// then not written (the fields below stay 0: use study::resolve_sun_site for the values).
+  /// false: the sun is computed for this site, with the weather station's irradiance.
+  bool from_weather = false;
   double latitude_deg = 0;    ///< north positive
   double longitude_deg = 0;   ///< east positive (as EPW; RADIANCE's -o uses west positive)
   double time_zone_h = 0;     ///< standard time offset from UTC, east positive (EPW convention)
   double elevation_m = 0;
+  /// Where time_zone was written (the check that it is the weather file's clock points here).
+  SourceLocation time_zone_location;
   /// Angle (degrees, clockwise seen from above) from model +Y to true north (Honeybee
   /// convention): the model is rotated by this angle about +Z to world coordinates.
   double north_deg = 0;

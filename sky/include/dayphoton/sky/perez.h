@@ -26,6 +26,10 @@ namespace dayphoton::sky {
 /// used when no dew point is given.
 constexpr double PerezDefaultDewPoint_C = 11.0;
 
+/// gendaymtx warns about direct normal irradiance above this while the sun is below the
+/// horizon (facts section 2.6); it keeps their sun in the nearest patches all the same.
+constexpr double GendaymtxBelowHorizonWarning_W_m2 = 20.0;
+
 struct PerezInputs {
   double direct_normal_irradiance_W_m2 = 0;     ///< I, >= 0
   double diffuse_horizontal_irradiance_W_m2 = 0;  ///< E_d, >= 0

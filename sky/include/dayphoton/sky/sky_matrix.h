@@ -71,21 +71,44 @@ struct SunRecord {
   double disc_radiance = 0;
 };
 
+/// Records whose direct normal irradiance is > 0 while the centre of the sun is below the
+/// horizon at the site (altitude <= 0 by the options' algorithm, at the record's mid-hour):
+/// measured direct light that the site's sun cannot bring at that time. build_sky_matrix
+/// still spreads their sun into the sky patches nearest to it (SunInMatrix::Spread and Only,
+/// as gendaymtx does: facts section 2.6) but lists no SunRecord for them, so an engine with
+/// sun sources of its own (the sun-bins mode) leaves their direct light out.
+struct BelowHorizonDirect {
+  std::size_t records = 0;
+  std::size_t records_over_20_W_m2 = 0;  ///< those gendaymtx warns about (GendaymtxBelowHorizonWarning_W_m2)
+  double direct_normal_Wh_m2 = 0;        ///< their direct normal irradiation (hourly records)
+  double largest_W_m2 = 0;               ///< their largest direct normal irradiance
+  double file_direct_normal_Wh_m2 = 0;   ///< the whole file's, for scale
+};
+
 struct SkyMatrix {
   RadianceMatrix matrix;            ///< bins x steps x RGB
   /// Steps whose sun centre is above the horizon and whose direct illuminance is > 0. With
   /// SunInMatrix::Spread or Only the same sun is also in the matrix: use one or the other.
   std::vector<SunRecord> suns;
-  std::size_t sun_below_horizon_with_direct = 0;  ///< records gendaymtx warns about
+  BelowHorizonDirect below_horizon_direct;
 };
 
-/// Site of the sky computation (position, time zone) from an EPW header.
+/// The weather file header's site (position, time zone, elevation): what RADIANCE's gendaymtx
+/// computes the sun for. A project computes it for its own site (study/sun_site.h).
 SolarSite solar_site_of(const weather::EpwFile& epw);
 
-/// The annual sky matrix of a weather file. Throws InputError naming the record and field when
-/// a record needed for a daytime sky lacks its direct normal or diffuse horizontal irradiance.
+/// The annual sky matrix of a weather file, with the sun of `site` and the file's irradiance.
+/// The records' hours are local standard time of the file's time zone (its header), so
+/// site.time_zone_h must equal it (std::invalid_argument otherwise: a record would be paired
+/// with the sun of another instant). Throws InputError naming the record and field when a
+/// record needed for a daytime sky lacks its direct normal or diffuse horizontal irradiance.
 SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, const PatchBasis& basis,
                            const SkyMatrixOptions& options);
+
+/// BelowHorizonDirect of build_sky_matrix(epw, site, basis, options) without building the
+/// matrix (the sun positions alone: milliseconds for a year). Same time-zone rule.
+BelowHorizonDirect below_horizon_direct(const weather::EpwFile& epw, const SolarSite& site,
+                                        const SkyMatrixOptions& options);
 
 /// A sky vector (bins x 1 x RGB) for one sky model with a uniform ground of the given radiance.
 RadianceMatrix sky_vector(const SkyModel& sky, const PatchBasis& basis, const Vec3& ground_radiance_rgb,

@@ -60,9 +60,10 @@ sky::SkyMatrixOptions radiance_compatible_sky_options(double ground_reflectance 
 std::string annual_sky_description(const weather::EpwFile& epw, const sky::PatchBasis& basis,
                                    const sky::SkyMatrixOptions& options);
 
-/// Sky matrix built from the EPW with build_sky_matrix, stamped with the EPW's time steps.
-AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::PatchBasis& basis,
-                              const sky::SkyMatrixOptions& options);
+/// Sky matrix built from the EPW with build_sky_matrix for the sun of `site` (the project's,
+/// study/sun_site.h; its time zone must be the file's), stamped with the EPW's time steps.
+AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::SolarSite& site,
+                              const sky::PatchBasis& basis, const sky::SkyMatrixOptions& options);
 
 /// Sky matrix read from a RADIANCE matrix file (read_matrix_file), stamped with the EPW's
 /// time steps. Throws InputError naming the matrix file if its column count differs from the

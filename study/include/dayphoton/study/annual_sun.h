@@ -114,11 +114,11 @@ sky::SkyMatrixOptions sun_excluded_sky_options(double ground_reflectance = 0.2);
 /// SkyAndSuns::sky.description of annual_sky_and_suns (the same whether built or cached).
 std::string sky_and_suns_description(const weather::EpwFile& epw, const sky::PatchBasis& basis);
 
-/// Sky-only matrix and suns of a weather file (build_sky_matrix with options.sun = None is
-/// enforced). The suns are rounded through float exactly as suns_to_matrix stores them, so a
+/// Sky-only matrix and suns of a weather file for the sun of `site` (study/sun_site.h;
+/// build_sky_matrix with options.sun = None is enforced). The suns are rounded through float exactly as suns_to_matrix stores them, so a
 /// run that reads them back from the cache computes the same numbers.
-SkyAndSuns annual_sky_and_suns(const weather::EpwFile& epw, const sky::PatchBasis& basis,
-                               sky::SkyMatrixOptions options);
+SkyAndSuns annual_sky_and_suns(const weather::EpwFile& epw, const sky::SolarSite& site,
+                               const sky::PatchBasis& basis, sky::SkyMatrixOptions options);
 
 /// Suns as a matrix for the cache: one row per sun, 6 columns of 1 component: step,
 /// direction x, y, z, direct normal illuminance (lux), disc radiance. And back (throws

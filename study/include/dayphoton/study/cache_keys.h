@@ -4,10 +4,12 @@
 //                         facing, outline), the sky basis, source p, the tracing options
 //   coefficients of a grid : the photon-pass key of every source, the grid's sensors,
 //                         the estimate and direct-sampling options
-//   sky matrix          : the weather file's bytes (the site comes from its header), the
-//                         basis, the ground reflectance, the sky mode (sun spread or
-//                         excluded); in the sun-bins mode the hourly suns are stored under
-//                         the same key
+//   sky matrix          : the weather file's bytes, the site the sun is computed for
+//                         (latitude, longitude, time zone, elevation: the project's, or the
+//                         header's with site.from_weather, so both give one key when they
+//                         are equal), the basis, the ground reflectance, the sky mode (sun
+//                         spread or excluded); in the sun-bins mode the hourly suns are
+//                         stored under the same key
 // Sun bins (`sun: bins`, study/annual_sun.h):
 //   photons of a sun bin: the scene, the receiver planes, the bin's Reinhart MF and patch
 //                         (its direction), the disc's radius, the tracing options; NOT the
@@ -30,6 +32,7 @@
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/sky/patch_basis.h"
+#include "dayphoton/sky/solar_position.h"
 #include "dayphoton/study/content_hash.h"
 
 namespace dayphoton::study {
@@ -45,10 +48,11 @@ std::string photon_source_key(const ContentHash& scene, const ContentHash& plane
 std::string coefficients_key(const std::vector<std::string>& photon_keys, const SensorGrid& grid,
                              const engine::CoefficientOptions& options);
 
-/// Sky matrix of a weather file: `sun_excluded` false = the RADIANCE-compatible matrix with the
-/// sun spread into patches, true = the same without the sun (and the suns beside it).
-std::string sky_matrix_key(const std::string& weather_path, const sky::PatchBasis& basis,
-                           double ground_reflectance, bool sun_excluded);
+/// Sky matrix of a weather file for the sun of `site`: `sun_excluded` false = the
+/// RADIANCE-compatible matrix with the sun spread into patches, true = the same without the
+/// sun (and the suns beside it).
+std::string sky_matrix_key(const std::string& weather_path, const sky::SolarSite& site,
+                           const sky::PatchBasis& basis, double ground_reflectance, bool sun_excluded);
 /// Photons of one sun bin: patch `patch` of Reinhart MF `mf`, a disc of `half_angle_rad`.
 std::string sun_photon_key(const ContentHash& scene, const ContentHash& planes, int mf, int patch,
                            double half_angle_rad, const engine::TracingOptions& options);

@@ -9,8 +9,8 @@
 //              disc is not part of the standard sky (as gensky's skies without +s)
 //   hour:M/D/H one record of the project's weather file (the record whose interval
 //              (h - 1, h] holds H, local standard time): the Perez all-weather sky of that
-//              record (NREL SPA sun position at the record's mid-hour, the weather file's dew
-//              point) and its sun disc (0.533 deg, Perez 1990 direct efficacy). The sun is
+//              record (NREL SPA sun position at the record's mid-hour for the project's
+//              site, study/sun_site.h; the weather file's dew point) and its sun disc (0.533 deg, Perez 1990 direct efficacy). The sun is
 //              not in the bins' radiances: add_sun_source() makes it a photon source of its
 //              own (its inter-reflected light then has photons of its own, instead of a few
 //              heavy photons of the bin that holds it); the directly lit patches come from

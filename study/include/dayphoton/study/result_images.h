@@ -105,14 +105,14 @@ YearHour parse_year_hour(const std::string& text);
 /// `size` pixels, with attributes naming the weather file, the time and the sky model),
 /// plus false-colour PNGs beside them. The sky matrix is rebuilt from the weather file named in
 /// summary.json, exactly as `dayphoton run` builds it (RADIANCE-compatible mode, the run's
-/// basis and ground reflectance). Returns the paths written; none if summary.json names no
+/// basis, ground reflectance and sun site: study/sun_site.h recorded_sun_site). Returns the paths written; none if summary.json names no
 /// weather file. InputError if the hour is not in the weather file.
 std::vector<std::string> write_sky_images(const std::string& results_dir, const YearHour& hour, int size = 256);
 
-/// The same with the weather file and summary.json's `simulation` object (JSON text) given,
-/// for a run that writes summary.json after its images.
+/// The same with summary.json's text given (`summary_path` names it in messages), for a run
+/// that writes summary.json after its images.
 std::vector<std::string> write_sky_images(const std::string& results_dir, const YearHour& hour,
-                                          const std::string& weather, const std::string& simulation_json,
+                                          const std::string& summary_text, const std::string& summary_path,
                                           int size = 256);
 
 }  // namespace dayphoton::study
