@@ -11,6 +11,7 @@ const char* material_type_name(MaterialType type) {
     case MaterialType::Dielectric: return "dielectric";
     case MaterialType::Translucent: return "translucent";
     case MaterialType::Opening: return "opening";
+    case MaterialType::Glazing: return "glazing";
   }
   return "unknown";
 }
