@@ -16,6 +16,10 @@ const char* material_type_name(MaterialType type) {
   return "unknown";
 }
 
+std::string material_type_as_written(const MaterialSpec& material) {
+  return material.type_as_written.empty() ? material_type_name(material.type) : material.type_as_written;
+}
+
 int SceneDescription::find_material(const std::string& name) const {
   for (std::size_t i = 0; i < materials.size(); ++i)
     if (materials[i].name == name) return static_cast<int>(i);

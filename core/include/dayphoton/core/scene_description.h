@@ -121,6 +121,10 @@ struct SensorGrid {
   SourceLocation location;
 };
 
+/// The type as the project file wrote it ("plastic"), for messages: type_as_written, or
+/// material_type_name(type) when that is empty.
+std::string material_type_as_written(const MaterialSpec& material);
+
 struct SceneDescription {
   std::vector<MaterialSpec> materials;
   std::vector<Surface> surfaces;
