@@ -38,6 +38,7 @@ check_case check_typos 1 check tests/cli/cases/typos.yaml
 check_case check_window_too_big 1 check tests/cli/cases/window_too_big.yaml
 check_case check_yaml_syntax 1 check tests/cli/cases/syntax.yaml
 check_case check_daylight_factor_only 0 check tests/cli/cases/daylight_factor_only.yaml
+check_case check_glazing 0 check tests/cli/cases/glazing.yaml
 check_case check_missing_file 1 check tests/cli/cases/does_not_exist.yaml
 check_case usage_no_subcommand 2
 check_case sun_bad_epw 1 sun tests/cli/cases/truncated.epw
