@@ -67,6 +67,26 @@ std::vector<std::string> describe_weather(const project::Project& proj) {
                     "); records are read in the file's time zone");
   return lines;
 }
+double mean_rgb(const Vec3& v) { return (v.x + v.y + v.z) / 3.0; }
+
+// One glazing pane as `check` lists it (RGB values as their mean).
+std::string describe_pane(const GlazingPaneSpec& p) {
+  std::string text = p.thickness_m > 0 ? format_number(p.thickness_m * 1e3) + " mm, " : std::string();
+  switch (p.optics) {
+    case GlazingPaneSpec::Optics::Transmittance:
+      return text + "uncoated, normal transmittance " + fixed(mean_rgb(p.transmittance), 3) + ", n " +
+             format_number(p.refractive_index);
+    case GlazingPaneSpec::Optics::Absorption:
+      return text + "uncoated, absorption " + format_number(mean_rgb(p.absorption_per_m)) + " /m, n " +
+             format_number(p.refractive_index);
+    case GlazingPaneSpec::Optics::Coated:
+      return text + "coated " + (p.coating_on_inner_face ? "inner" : "outer") + " face, normal transmittance " +
+             fixed(mean_rgb(p.transmittance), 3) + ", reflectance outer " + fixed(mean_rgb(p.outer_reflectance), 3) +
+             " / inner " + fixed(mean_rgb(p.inner_reflectance), 3);
+  }
+  return text;
+}
+
 // Glass and glazing (and openings with a window's frame and maintenance factors): the
 // transmittance for light from outside at the listed angles, with the window's factors.
 void describe_glazing(const MaterialSpec& spec, MaterialArea& out) {
@@ -77,6 +97,9 @@ void describe_glazing(const MaterialSpec& spec, MaterialArea& out) {
   if (spec.type == MaterialType::Glazing)
     out.glazing += ", " + std::to_string(spec.panes.size()) + (spec.panes.size() == 1 ? " pane" : " panes");
   if (spec.transmittance_factor != 1.0) out.glazing += ", x " + format_number(spec.transmittance_factor);
+  // A window's derived material has its base glazing's panes, listed there.
+  for (std::size_t i = 0; spec.transmittance_factor == 1.0 && i < spec.panes.size(); ++i)
+    out.panes.push_back("pane " + std::to_string(i + 1) + ": " + describe_pane(spec.panes[i]));
   const engine::Material model = engine::Material::from_spec(spec);
   // Pane 1 faces the side the normal points away from: light from outside travels along +n.
   const Vec3 normal{0, 0, 1};
@@ -208,6 +231,7 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
     out << "  " << std::left << std::setw(20) << m.name << std::setw(24) << m.glazing << std::right;
     for (double t : m.transmittance) out << std::setw(8) << fixed(t, 3);
     out << '\n';
+    for (const std::string& pane : m.panes) out << "    " << pane << '\n';
   }
 
   out << "ports    " << s.ports.size() << '\n';

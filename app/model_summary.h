@@ -22,6 +22,8 @@ struct MaterialArea {
   /// transmittance for light from outside at each of TransmittanceAnglesDeg (empty otherwise).
   std::string glazing;
   std::vector<double> transmittance;
+  /// Glazing: one line per pane (thickness, normal transmittance or absorption, index, coating).
+  std::vector<std::string> panes;
 };
 
 /// Angles of incidence at which `check` lists each glazing's transmittance.
