@@ -71,6 +71,48 @@ void describe_weather_and_sun(const project::Project& proj, std::vector<std::str
   sun_lines.push_back(study::below_horizon_note(study::annual_below_horizon_direct(epw, site),
                                                 proj.simulation.sun == project::SunMode::Bins));
 }
+double mean_rgb(const Vec3& v) { return (v.x + v.y + v.z) / 3.0; }
+
+// One glazing pane as `check` lists it (RGB values as their mean).
+std::string describe_pane(const GlazingPaneSpec& p) {
+  std::string text = p.thickness_m > 0 ? format_number(p.thickness_m * 1e3) + " mm, " : std::string();
+  switch (p.optics) {
+    case GlazingPaneSpec::Optics::Transmittance:
+      return text + "uncoated, normal transmittance " + fixed(mean_rgb(p.transmittance), 3) + ", n " +
+             format_number(p.refractive_index);
+    case GlazingPaneSpec::Optics::Absorption:
+      return text + "uncoated, absorption " + format_number(mean_rgb(p.absorption_per_m)) + " /m, n " +
+             format_number(p.refractive_index);
+    case GlazingPaneSpec::Optics::Coated:
+      return text + "coated " + (p.coating_on_inner_face ? "inner" : "outer") + " face, normal transmittance " +
+             fixed(mean_rgb(p.transmittance), 3) + ", reflectance outer " + fixed(mean_rgb(p.outer_reflectance), 3) +
+             " / inner " + fixed(mean_rgb(p.inner_reflectance), 3);
+  }
+  return text;
+}
+
+// Glass and glazing (and openings with a window's frame and maintenance factors): the
+// transmittance for light from outside at the listed angles, with the window's factors.
+void describe_glazing(const MaterialSpec& spec, MaterialArea& out) {
+  const bool glazed = spec.type == MaterialType::Glass || spec.type == MaterialType::Glazing ||
+                      (spec.type == MaterialType::Opening && spec.transmittance_factor != 1.0);
+  if (!glazed) return;
+  out.glazing = material_type_name(spec.type);
+  if (spec.type == MaterialType::Glazing)
+    out.glazing += ", " + std::to_string(spec.panes.size()) + (spec.panes.size() == 1 ? " pane" : " panes");
+  if (spec.transmittance_factor != 1.0) out.glazing += ", x " + format_number(spec.transmittance_factor);
+  // A window's derived material has its base glazing's panes, listed there.
+  for (std::size_t i = 0; spec.transmittance_factor == 1.0 && i < spec.panes.size(); ++i)
+    out.panes.push_back("pane " + std::to_string(i + 1) + ": " + describe_pane(spec.panes[i]));
+  const engine::Material model = engine::Material::from_spec(spec);
+  // Pane 1 faces the side the normal points away from: light from outside travels along +n.
+  const Vec3 normal{0, 0, 1};
+  for (double angle_deg : TransmittanceAnglesDeg) {
+    const double a = deg_to_rad(angle_deg);
+    const Vec3 t = model.straight_transmittance({std::sin(a), 0, std::cos(a)}, normal);
+    out.transmittance.push_back((t.x + t.y + t.z) / 3.0);
+  }
+}
 }  // namespace
 
 ModelSummary summarize_model(const project::Project& proj) {
@@ -84,8 +126,10 @@ ModelSummary summarize_model(const project::Project& proj) {
 
   s.materials.resize(s.scene.materials.size());
   for (std::size_t i = 0; i < s.scene.materials.size(); ++i) {
-    s.materials[i].name = s.scene.materials[i].name;
-    s.materials[i].type = material_type_name(s.scene.materials[i].type);
+    const MaterialSpec& spec = s.scene.materials[i];
+    s.materials[i].name = spec.name;
+    s.materials[i].type = material_type_as_written(spec);
+    describe_glazing(spec, s.materials[i]);
   }
   s.surface_count = s.scene.surfaces.size();
   for (const Surface& surface : s.scene.surfaces) {
@@ -183,6 +227,21 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
   for (const MaterialArea& m : s.materials)
     out << "  " << std::left << std::setw(20) << m.name << std::setw(13) << m.type << std::right
         << std::setw(9) << m.surfaces << std::setw(12) << fixed(m.area_m2, 2) << '\n';
+  bool glazing_header = false;
+  for (const MaterialArea& m : s.materials) {
+    if (m.transmittance.empty()) continue;
+    if (!glazing_header) {
+      out << "glazing  transmittance from outside (mean of RGB) by angle of incidence\n";
+      out << "  " << std::left << std::setw(20) << "material" << std::setw(24) << "kind" << std::right;
+      for (double a : TransmittanceAnglesDeg) out << std::setw(8) << fixed(a, 0) + " deg";
+      out << '\n';
+      glazing_header = true;
+    }
+    out << "  " << std::left << std::setw(20) << m.name << std::setw(24) << m.glazing << std::right;
+    for (double t : m.transmittance) out << std::setw(8) << fixed(t, 3);
+    out << '\n';
+    for (const std::string& pane : m.panes) out << "    " << pane << '\n';
+  }
 
   out << "ports    " << s.ports.size() << '\n';
   if (!s.ports.empty())

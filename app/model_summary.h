@@ -15,10 +15,19 @@ namespace dayphoton::app {
 
 struct MaterialArea {
   std::string name;
-  std::string type;
+  std::string type;  ///< as the project file wrote it ("plastic", not the model "lambertian")
   int surfaces = 0;
   double area_m2 = 0;
+  /// Glass, glazing and glazed openings: "glass", "glazing, 2 panes", ... and the mean-RGB
+  /// transmittance for light from outside at each of TransmittanceAnglesDeg (empty otherwise).
+  std::string glazing;
+  std::vector<double> transmittance;
+  /// Glazing: one line per pane (thickness, normal transmittance or absorption, index, coating).
+  std::vector<std::string> panes;
 };
+
+/// Angles of incidence at which `check` lists each glazing's transmittance.
+inline constexpr double TransmittanceAnglesDeg[] = {0, 30, 45, 60, 75};
 
 struct PortInfo {
   std::string name;

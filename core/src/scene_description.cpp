@@ -11,8 +11,13 @@ const char* material_type_name(MaterialType type) {
     case MaterialType::Dielectric: return "dielectric";
     case MaterialType::Translucent: return "translucent";
     case MaterialType::Opening: return "opening";
+    case MaterialType::Glazing: return "glazing";
   }
   return "unknown";
+}
+
+std::string material_type_as_written(const MaterialSpec& material) {
+  return material.type_as_written.empty() ? material_type_name(material.type) : material.type_as_written;
 }
 
 int SceneDescription::find_material(const std::string& name) const {

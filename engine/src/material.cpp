@@ -4,7 +4,8 @@
 //     lobe, ward_lobe.h), diffuse transmission, specular transmission (straight through or a
 //     Ward lobe of roughness alpha / 2 mirrored through the surface, see below); two-sided
 //     (a back-side hit flips the normal);
-//   - thin glass (thin_glass_fresnel.h): delta reflection and straight transmission;
+//   - thin glass (thin_glass_fresnel.h) and glazing systems (glazing_system.h): delta
+//     reflection and straight transmission;
 //   - dielectric interface (fresnel.h): delta reflection and refraction;
 //   - opening: straight transmission with weight 1.
 // The parameters of each model and their RADIANCE counterparts are in docs/materials.md.
@@ -22,10 +23,12 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "bsdf_frame.h"
 #include "dayphoton/core/units.h"
 #include "fresnel.h"
+#include "glazing_system.h"
 #include "thin_glass_fresnel.h"
 #include "ward_lobe.h"
 
@@ -79,6 +82,9 @@ struct Material::Model {
 
   // Thin glass: per-pass transmissivity per channel.
   Vec3 glass_transmissivity{0, 0, 0};
+  // Glazing: the resolved panes, from the outside in, and whether all channels are equal.
+  std::vector<ResolvedPane> panes;
+  bool grey_panes = true;
 
   // Mean-RGB selection weights of the layered components at incidence cosine cos_i.
   std::array<double, ComponentCount> selection(double cos_i) const {
@@ -111,10 +117,32 @@ struct Material::Model {
       r[c] = g.reflectance;
     }
   }
-  Vec3 glass_response(double cos_i, bool transmitted) const {
-    Vec3 t, r;
-    glass_response(cos_i, t, r);
-    return transmitted ? t : r;
+  // Glazing: transmittance and the reflectance of the side the light arrives from. Pane 1
+  // faces the side the normal points away from, so light with dot(incoming, normal) > 0
+  // (arriving against the back of the surface) meets pane 1 first.
+  void glazing_response(double cos_in, Vec3& t, Vec3& r) const {
+    const bool from_outside = cos_in > 0;
+    const double cos_i = std::fabs(cos_in);
+    for (int c = 0; c < 3; ++c) {
+      if (c > 0 && grey_panes) {
+        t[c] = t[0];
+        r[c] = r[0];
+        continue;
+      }
+      const LayerOptics o = glazing_optics(panes, cos_i, c);
+      t[c] = o.transmittance;
+      r[c] = from_outside ? o.outer_reflectance : o.inner_reflectance;
+    }
+  }
+
+  // Glass and glazing: transmittance (times the window's transmittance factor) and
+  // reflectance for light arriving along a direction with cosine cos_in to the normal.
+  void pane_response(double cos_in, Vec3& t, Vec3& r) const {
+    if (spec.type == MaterialType::Glazing)
+      glazing_response(cos_in, t, r);
+    else
+      glass_response(std::fabs(cos_in), t, r);
+    if (spec.transmittance_factor != 1.0) t = t * spec.transmittance_factor;
   }
 };
 
@@ -176,11 +204,27 @@ Material Material::from_spec(const MaterialSpec& spec) {
         throw std::invalid_argument("material '" + spec.name + "': refractive index " +
                                     std::to_string(spec.refractive_index) + " must be > 0");
       break;
+    case MaterialType::Glazing:
+      try {
+        m.panes = resolve_panes(spec.panes);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("material '" + spec.name + "': " + e.what());
+      }
+      m.grey_panes = is_grey(m.panes);
+      break;
     case MaterialType::Opening:
       break;
     default:
       throw std::invalid_argument("material '" + spec.name + "': unknown material type");
   }
+  const bool transmits_straight = spec.type == MaterialType::Glass ||
+                                  spec.type == MaterialType::Glazing ||
+                                  spec.type == MaterialType::Opening;
+  if (spec.transmittance_factor != 1.0 &&
+      (!transmits_straight || !(spec.transmittance_factor > 0.0 && spec.transmittance_factor <= 1.0)))
+    throw std::invalid_argument("material '" + spec.name + "': transmittance factor " +
+                                std::to_string(spec.transmittance_factor) +
+                                " needs a glass, glazing or opening material and a value in (0, 1]");
   return Material(std::move(model));
 }
 
@@ -203,12 +247,15 @@ std::optional<ScatterSample> Material::sample(const Vec3& incoming, const Vec3& 
   const double cos_in = dot(incoming, normal);
   const double cos_i = std::fabs(cos_in);
   switch (m.spec.type) {
-    case MaterialType::Opening:
-      return ScatterSample{incoming, Vec3{1, 1, 1}, ScatterType::StraightTransmission, true};
+    case MaterialType::Opening: {
+      const double f = m.spec.transmittance_factor;
+      return ScatterSample{incoming, Vec3{f, f, f}, ScatterType::StraightTransmission, true};
+    }
 
-    case MaterialType::Glass: {
+    case MaterialType::Glass:
+    case MaterialType::Glazing: {
       Vec3 t, r;
-      m.glass_response(cos_i, t, r);
+      m.pane_response(cos_in, t, r);
       const double total = mean(t) + mean(r);
       if (!(total > 0)) return std::nullopt;
       const double p_reflect = mean(r) / total;
@@ -346,12 +393,16 @@ Vec3 Material::albedo(const Vec3& incoming, const Vec3& normal) const {
   const Model& m = *m_model;
   const double cos_i = std::fabs(dot(incoming, normal));
   switch (m.spec.type) {
-    case MaterialType::Opening:
+    case MaterialType::Opening: {
+      const double f = m.spec.transmittance_factor;
+      return {f, f, f};
+    }
     case MaterialType::Dielectric:
       return {1, 1, 1};  // R + (1 - R): the interface itself loses nothing
-    case MaterialType::Glass: {
+    case MaterialType::Glass:
+    case MaterialType::Glazing: {
       Vec3 t, r;
-      m.glass_response(cos_i, t, r);
+      m.pane_response(dot(incoming, normal), t, r);
       return t + r;
     }
     default:
@@ -368,10 +419,16 @@ Vec3 Material::albedo(const Vec3& incoming, const Vec3& normal) const {
 Vec3 Material::straight_transmittance(const Vec3& incoming, const Vec3& normal) const {
   const Model& m = *m_model;
   switch (m.spec.type) {
-    case MaterialType::Opening:
-      return {1, 1, 1};
+    case MaterialType::Opening: {
+      const double f = m.spec.transmittance_factor;
+      return {f, f, f};
+    }
     case MaterialType::Glass:
-      return m.glass_response(std::fabs(dot(incoming, normal)), true);
+    case MaterialType::Glazing: {
+      Vec3 t, r;
+      m.pane_response(dot(incoming, normal), t, r);
+      return t;
+    }
     case MaterialType::Translucent:
       // A rough translucent scatters its specular transmission into a glossy lobe (eval()),
       // so nothing passes undeviated.

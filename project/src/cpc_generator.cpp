@@ -62,7 +62,7 @@ bool generate_cpc(const MountedBuild& b, const CpcSpec& p) {
     const MaterialType t = b.materials.spec(exit_mat).type;
     if (t != MaterialType::Lambertian && t != MaterialType::Metal && t != MaterialType::Mirror) {
       b.error("exit_material", "needs an opaque exit coating (lambertian, plastic, metal or mirror), but '" +
-                                   b.materials.spec(exit_mat).name + "' is " + material_type_name(t));
+                                   b.materials.spec(exit_mat).name + "' is " + material_type_as_written(b.materials.spec(exit_mat)));
       return false;
     }
   } else if (!b.check_not_dielectric("material", mat, "the walls of a reflective CPC")) {

@@ -18,15 +18,19 @@ namespace dayphoton::project::detail {
 /// unknown names (with a "did you mean") at the referring location.
 class MaterialLookup {
  public:
-  MaterialLookup(const std::vector<MaterialSpec>& materials, Diagnostics& diag);
+  MaterialLookup(std::vector<MaterialSpec>& materials, Diagnostics& diag);
   /// Index of `name`, or -1 after reporting an error naming `what` (e.g. "floor material of
   /// room 'office'").
   int resolve(const std::string& name, const SourceLocation& where, const std::string& what);
   /// The definition of material `index` (a valid index from resolve()).
   const MaterialSpec& spec(int index) const { return m_materials[static_cast<std::size_t>(index)]; }
+  /// Index of material `index` with its transmitted light scaled by `factor`: `index` itself
+  /// for a factor of 1, otherwise a copy named "<name> x <factor>" appended to the scene's
+  /// materials once per (material, factor). Not resolvable by name from the project file.
+  int with_transmittance_factor(int index, double factor);
 
  private:
-  const std::vector<MaterialSpec>& m_materials;
+  std::vector<MaterialSpec>& m_materials;
   std::vector<std::string> m_names;
   Diagnostics& m_diag;
 };
@@ -48,6 +52,13 @@ struct RoomCutouts {
 /// its normal into the room; the ceiling has the cutouts' openings.
 void generate_room(const RoomSpec& room, const RoomCutouts& cutouts, MaterialLookup& materials,
                    Diagnostics& diag, std::vector<Surface>& out);
+
+/// The material of room window `w`: its glazing with the window's frame factor times its
+/// maintenance factor applied (MaterialLookup::with_transmittance_factor), or -1 after
+/// reporting an error: an unknown material, or factors on a material that does not transmit
+/// straight through (only glass, glazing and opening do). `what` names the window.
+int window_material(const WindowSpec& w, const std::string& what, MaterialLookup& materials,
+                    Diagnostics& diag);
 
 /// Axis-aligned box rotated about +Z (counter-clockwise for positive rotation_deg) around
 /// its origin corner; six faces with outward normals.

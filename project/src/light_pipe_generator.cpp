@@ -54,10 +54,11 @@ bool generate_light_pipe(const SystemSpec& spec, const LightPipeSpec& p, const R
   const int collector = material("collector_material", p.collector_material);
   if (tube < 0 || diffuser < 0 || collector < 0) return false;
   const MaterialType ct = materials.spec(collector).type;
-  if (ct != MaterialType::Glass && ct != MaterialType::Opening && ct != MaterialType::Translucent) {
+  if (ct != MaterialType::Glass && ct != MaterialType::Glazing && ct != MaterialType::Opening &&
+      ct != MaterialType::Translucent) {
     report(diag, spec.location_of("collector_material"),
-           what + ": the collector is the photon port and must let light in (glass, opening or "
-                  "translucent), but '" + p.collector_material + "' is " + material_type_name(ct));
+           what + ": the collector is the photon port and must let light in (glass, glazing, "
+                  "opening or translucent), but '" + p.collector_material + "' is " + material_type_as_written(materials.spec(collector)));
     return false;
   }
   const double r = 0.5 * p.diameter_m, margin = 1e-3;

@@ -321,6 +321,9 @@ class Loader {
       m.type = type == "plastic" ? MaterialType::Lambertian
                : type == "metal" ? MaterialType::Metal
                                  : MaterialType::Translucent;
+      // A plastic is the Lambertian model with a specular lobe; keep the user's word for
+      // messages and `check`.
+      if (type == "plastic") m.type_as_written = type;
       r.read_rgb("reflectance", m.reflectance);
       r.read_number("specularity", m.specularity);
       r.read_number("roughness", m.roughness);
@@ -335,6 +338,11 @@ class Loader {
       m.type = MaterialType::Glass;
       r.read_rgb("transmittance", m.transmittance);
       r.read_number("refractive_index", m.refractive_index);
+    } else if (type == "glazing") {
+      m.type = MaterialType::Glazing;
+      for_each_item(r, "panes", [&](const YamlNode& n) { m.panes.push_back(read_glazing_pane(n)); });
+      if (r.has("panes") && m.panes.empty())
+        m_reporter.error(r.location_of("panes"), "material '" + entry.key + "': a glazing needs at least one pane");
     } else if (type == "dielectric") {
       m.type = MaterialType::Dielectric;
       r.read_number("refractive_index", m.refractive_index);
@@ -344,6 +352,56 @@ class Loader {
     }
     r.finish();
     return true;
+  }
+
+  /// One pane of a glazing: exactly one of transmittance, absorption (with thickness) and
+  /// coating; a coated pane's optics are its coating's, so it takes no refractive index.
+  GlazingPaneSpec read_glazing_pane(const YamlNode& node) {
+    GlazingPaneSpec pane;
+    ParamReader r(node, schema_section("glazing pane"), m_reporter);
+    const char* forms[] = {"transmittance", "absorption", "coating"};
+    std::vector<std::string> given;
+    for (const char* key : forms)
+      if (r.has(key)) given.push_back(key);
+    if (given.size() != 1)
+      m_reporter.error(node.location, given.empty()
+                                          ? "a glazing pane needs one of 'transmittance', 'absorption' or 'coating'"
+                                          : "a glazing pane takes only one of 'transmittance', 'absorption' and "
+                                            "'coating', got '" + given[0] + "' and '" + given[1] + "'");
+    for (std::size_t i = 1; i < given.size(); ++i) r.take(given[i]);  // reported above
+    double thickness_mm = 0;
+    if (r.has("thickness") && r.read_number("thickness", thickness_mm)) pane.thickness_m = thickness_mm * 1e-3;
+    if (r.has("transmittance")) {
+      pane.optics = GlazingPaneSpec::Optics::Transmittance;
+      r.read_rgb("transmittance", pane.transmittance);
+    } else if (r.has("absorption")) {
+      pane.optics = GlazingPaneSpec::Optics::Absorption;
+      r.read_rgb("absorption", pane.absorption_per_m);
+      if (!r.has("thickness"))
+        m_reporter.error(r.location_of("absorption"), "a glazing pane's 'absorption' needs its 'thickness'");
+    } else if (const YamlNode* coating = r.take("coating"); coating && expect_map(*coating, "coating", m_reporter)) {
+      pane.optics = GlazingPaneSpec::Optics::Coated;
+      if (r.has("refractive_index")) {
+        m_reporter.error(r.location_of("refractive_index"),
+                         "a coated pane's optics are its coating's transmittance and reflectance; "
+                         "'refractive_index' does not apply");
+        r.take("refractive_index");
+      }
+      ParamReader c(*coating, schema_section("glazing coating"), m_reporter);
+      std::string face;
+      if (c.read_choice("face", face)) pane.coating_on_inner_face = face == "inner";
+      c.read_rgb("transmittance", pane.transmittance);
+      Vec3 coated{0, 0, 0};
+      c.read_rgb("reflectance", coated);
+      Vec3 glass_side = coated;
+      if (c.has("glass_side_reflectance")) c.read_rgb("glass_side_reflectance", glass_side);
+      pane.outer_reflectance = pane.coating_on_inner_face ? glass_side : coated;
+      pane.inner_reflectance = pane.coating_on_inner_face ? coated : glass_side;
+      c.finish();
+    }
+    if (pane.optics != GlazingPaneSpec::Optics::Coated) r.read_number("refractive_index", pane.refractive_index);
+    r.finish();
+    return pane;
   }
 
   void use_material(const ParamReader& r, const std::string& key, const std::string& name) {
@@ -425,6 +483,8 @@ class Loader {
     double offset = 0;
     if (r.read_number("offset", offset)) w.offset_m = offset;
     if (r.read_string("material", w.material)) use_material(r, "material", w.material);
+    r.read_number("frame_factor", w.frame_factor);
+    r.read_number("maintenance_factor", w.maintenance_factor);
     r.finish();
     return w;
   }

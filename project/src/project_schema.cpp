@@ -37,7 +37,7 @@ struct P {
 using T = ParamType;
 
 const std::vector<std::string> MaterialTypes = {"lambertian", "plastic", "metal", "mirror",
-                                                "glass", "dielectric", "translucent",
+                                                "glass", "glazing", "dielectric", "translucent",
                                                 "opening"};
 
 ParamSchema material_type() {
@@ -128,6 +128,23 @@ std::vector<SectionSchema> build_schema() {
       P("transmittance", T::Rgb, "normal-incidence visible transmittance (not RADIANCE transmissivity)").range(0, 1).required(),
       P("refractive_index", T::Number, "refractive index of the pane").above(1).def("1.52"),
   }});
+  s.push_back({"glazing material", "glazing system: panes from the outside in, combined by the multi-layer formulas (docs/materials.md)", {
+      material_type(),
+      P("panes", T::SectionList, "the panes, from the outside in (pane 1 on the side a surface's normal points away from: outside for a window)").section("glazing pane").required(),
+  }});
+  s.push_back({"glazing pane", "one pane of a glazing: exactly one of transmittance, absorption or coating", {
+      P("transmittance", T::Rgb, "uncoated pane: normal-incidence visible transmittance").range(0, 1),
+      P("absorption", T::Rgb, "uncoated pane: absorption coefficient of the glass (needs thickness)").unit("1/m").at_least(0),
+      P("thickness", T::Number, "pane thickness (sets the absorption's path; otherwise shown by check)").unit("mm").above(0),
+      P("refractive_index", T::Number, "uncoated pane: refractive index of the glass").above(1).def("1.52"),
+      P("coating", T::Section, "coated pane (low-e, solar control): its measured normal-incidence optics").section("glazing coating"),
+  }});
+  s.push_back({"glazing coating", "a coated pane's normal-incidence optics (data sheet or IGDB values of the coated pane)", {
+      P("face", T::Choice, "the coated face: the pane's outer face (toward pane 1) or inner face").choices({"outer", "inner"}).required(),
+      P("transmittance", T::Rgb, "normal-incidence visible transmittance of the coated pane").range(0, 1).required(),
+      P("reflectance", T::Rgb, "normal-incidence visible reflectance of the coated face").range(0, 1).required(),
+      P("glass_side_reflectance", T::Rgb, "normal-incidence reflectance of the uncoated face; the coated face's if absent").range(0, 1),
+  }});
   s.push_back({"dielectric material", "thick refracting interface (prisms, light pipes)", {
       material_type(),
       P("refractive_index", T::Number, "refractive index").above(1).required(),
@@ -172,6 +189,8 @@ std::vector<SectionSchema> build_schema() {
       P("sill", T::Number, "height of the bottom edge above the floor").unit("m").at_least(0).required(),
       P("offset", T::Number, "from the wall's lower-coordinate end (min x or min y) to the near edge; centred if absent").unit("m").at_least(0),
       P("material", T::String, "glazing material").required(),
+      P("frame_factor", T::Number, "glazed fraction of the opening (the frame absorbs the rest); multiplies the glazing's transmittance").range(0, 1).above(0).def("1"),
+      P("maintenance_factor", T::Number, "transmittance left by dirt on the glazing; multiplies the glazing's transmittance").range(0, 1).above(0).def("1"),
   }});
   s.push_back({"polygon", "a planar polygon; normal by counter-clockwise winding", {
       P("name", T::String, "unique polygon name").required(),

@@ -274,7 +274,7 @@ void generate_room(const RoomSpec& room, const RoomCutouts& cutouts, MaterialLoo
     if (overlaps) continue;
     holes[wall_index].push_back(r);
     placed[wall_index].push_back(&w);
-    const int glass_mat = materials.resolve(w.material, w.location, wwhat);
+    const int glass_mat = window_material(w, wwhat, materials, diag);
     // A window inside a daylight system's port enclosure is glazing, not a port (the
     // enclosure's openings are the ports; docs/daylight-systems.md).
     const bool port = cutouts.windows_without_port.count(w.name) == 0;

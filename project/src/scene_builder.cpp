@@ -32,7 +32,7 @@ void report(Diagnostics& diag, const SourceLocation& where, const std::string& m
   diag.error(where, message, line);
 }
 
-MaterialLookup::MaterialLookup(const std::vector<MaterialSpec>& materials, Diagnostics& diag)
+MaterialLookup::MaterialLookup(std::vector<MaterialSpec>& materials, Diagnostics& diag)
     : m_materials(materials), m_diag(diag) {
   for (const MaterialSpec& m : materials) m_names.push_back(m.name);
 }

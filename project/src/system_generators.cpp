@@ -149,7 +149,7 @@ bool MountedBuild::check_dielectric(const std::string& key, int index) const {
   if (index < 0) return false;
   const MaterialSpec& m = materials.spec(index);
   if (m.type == MaterialType::Dielectric) return true;
-  error(key, "needs a dielectric material, but '" + m.name + "' is " + material_type_name(m.type));
+  error(key, "needs a dielectric material, but '" + m.name + "' is " + material_type_as_written(m));
   return false;
 }
 
@@ -240,7 +240,8 @@ void generate_systems(const Project& project, MaterialLookup& materials,
       for (const Surface& s : parts) {
         const MaterialType t = materials.spec(s.material).type;
         transmits = transmits || t == MaterialType::Dielectric || t == MaterialType::Glass ||
-                    t == MaterialType::Translucent || t == MaterialType::Opening;
+                    t == MaterialType::Glazing || t == MaterialType::Translucent ||
+                    t == MaterialType::Opening;
       }
       if (transmits) {
         b.error("port", "(exterior, port: window) transmits light, but outside its window's "

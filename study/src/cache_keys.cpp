@@ -11,6 +11,15 @@ ContentHash scene_key(const SceneDescription& scene) {
   for (const MaterialSpec& m : scene.materials) {
     h.integer(static_cast<int>(m.type)).vec3(m.reflectance).number(m.specularity).number(m.roughness);
     h.vec3(m.transmittance).number(m.refractive_index).number(m.transmissivity).number(m.transmitted_specular);
+    // Hashed only where they exist, so the keys of projects without them stay as they were.
+    if (m.type == MaterialType::Glazing) {
+      h.integer(static_cast<std::int64_t>(m.panes.size()));
+      for (const GlazingPaneSpec& p : m.panes) {
+        h.integer(static_cast<int>(p.optics)).vec3(p.transmittance).vec3(p.absorption_per_m);
+        h.number(p.thickness_m).number(p.refractive_index).vec3(p.outer_reflectance).vec3(p.inner_reflectance);
+      }
+    }
+    if (m.transmittance_factor != 1.0) h.text("transmittance factor").number(m.transmittance_factor);
   }
   h.integer(static_cast<std::int64_t>(scene.surfaces.size()));
   for (const Surface& s : scene.surfaces) {

@@ -41,6 +41,7 @@ check_case check_daylight_factor_only 0 check tests/cli/cases/daylight_factor_on
 check_case check_site_other_time_zone 1 check tests/cli/cases/site_other_time_zone.yaml
 check_case check_site_far_from_station 0 check tests/cli/cases/site_far_from_station.yaml
 check_case check_site_from_weather 0 check tests/cli/cases/site_from_weather.yaml
+check_case check_glazing 0 check tests/cli/cases/glazing.yaml
 check_case check_missing_file 1 check tests/cli/cases/does_not_exist.yaml
 check_case usage_no_subcommand 2
 check_case sun_bad_epw 1 sun tests/cli/cases/truncated.epw

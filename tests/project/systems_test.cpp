@@ -249,7 +249,7 @@ TEST(Systems, EachInputErrorHasItsExactMessageAndLocation) {
         "21:88: blinds 'b' cannot use the dielectric 'pmma' for slats (a dielectric is the surface "
         "of a closed solid; give the part a thickness or use another material)",
         "23:80: light_pipe 'l': the collector is the photon port and must let light in (glass, "
-        "opening or translucent), but 'walls' is lambertian"}},
+        "glazing, opening or translucent), but 'walls' is lambertian"}},
       {"interior_blinds_through_the_glass",
        "    - {type: blinds, name: b, window: win, slat_width: 0.08, spacing: 0.06, angle: 45, offset: 0.02, material: walls}\n",
        {"20:7: blinds 'b' (interior) reaches 0.0083 m out of room 'room' through the wall plane; give "

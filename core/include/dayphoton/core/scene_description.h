@@ -22,10 +22,35 @@ enum class MaterialType {
   Dielectric,   ///< thick refracting interface (prisms): refractive index, RGB transmission
   Translucent,  ///< RADIANCE trans: plastic with diffuse/specular transmission
   Opening,      ///< fully transparent aperture (an "invisible" photon port); no scattering
+  Glazing,      ///< glazing system: panes combined by the multi-layer formulas (docs/materials.md)
 };
 
 /// Name used in project files and messages ("lambertian", "metal", ...).
 const char* material_type_name(MaterialType type);
+
+/// One pane of a glazing system (MaterialType::Glazing), listed from the outside in. Its
+/// normal-incidence optics come from exactly one of three forms (`optics`).
+struct GlazingPaneSpec {
+  enum class Optics {
+    Transmittance,  ///< uncoated: normal transmittance `transmittance` and index n
+    Absorption,     ///< uncoated: absorption coefficient `absorption_per_m` over `thickness_m`
+    Coated,         ///< coated: measured normal `transmittance` and face reflectances
+  };
+  Optics optics = Optics::Transmittance;
+  /// Transmittance / Coated: normal-incidence transmittance per RGB channel, [0,1].
+  Vec3 transmittance{0, 0, 0};
+  /// Absorption: absorption coefficient of the glass per RGB channel, 1/m (>= 0).
+  Vec3 absorption_per_m{0, 0, 0};
+  /// Pane thickness, metres (0 = not given; needed by Absorption).
+  double thickness_m = 0;
+  /// Uncoated panes: refractive index of the glass.
+  double refractive_index = 1.52;
+  /// Coated: normal-incidence reflectance of the pane's outer face (toward pane 1 / the
+  /// outside) and of its inner face, per RGB channel.
+  Vec3 outer_reflectance{0, 0, 0}, inner_reflectance{0, 0, 0};
+  /// Coated: which face carries the coating (for messages and `check`): true = the inner face.
+  bool coating_on_inner_face = false;
+};
 
 struct MaterialSpec {
   std::string name;
@@ -47,6 +72,16 @@ struct MaterialSpec {
   double transmissivity = 0;
   /// Translucent: fraction of the transmitted light that is transmitted specularly, [0,1].
   double transmitted_specular = 0;
+  /// Glazing: the panes, from the outside in. Pane 1 faces the side the surface's normal
+  /// points away from (for a port, the outside; port normals face into the room).
+  std::vector<GlazingPaneSpec> panes;
+  /// Glass/Glazing/Opening: factor on the transmitted light, (0,1]; the rest is absorbed.
+  /// A room window's frame factor times its maintenance factor (docs/materials.md); 1 for
+  /// every material of the project file.
+  double transmittance_factor = 1.0;
+  /// The type as the project file wrote it when it differs from material_type_name(type)
+  /// ("plastic" is a Lambertian with a specular lobe); empty otherwise.
+  std::string type_as_written;
 };
 
 /// A planar polygon with a material. Ports are openings through which photons from distant
@@ -89,6 +124,10 @@ struct SensorGrid {
   int columns = 0, rows = 0;
   SourceLocation location;
 };
+
+/// The type as the project file wrote it ("plastic"), for messages: type_as_written, or
+/// material_type_name(type) when that is empty.
+std::string material_type_as_written(const MaterialSpec& material);
 
 struct SceneDescription {
   std::vector<MaterialSpec> materials;

@@ -12,7 +12,9 @@
 //   - `normal` is the surface's geometric normal as in Hit::normal (either side). A hit is
 //     on the front side when dot(incoming, normal) < 0. Reflecting models (Lambertian,
 //     plastic, metal, mirror, translucent) are two-sided: a back-side hit behaves like a
-//     front-side hit with the normal flipped, as in RADIANCE. Thin glass is symmetric.
+//     front-side hit with the normal flipped, as in RADIANCE. Thin glass is symmetric; a
+//     glazing system transmits the same both ways but reflects with the side's own
+//     reflectance (pane 1 faces the side the normal points away from).
 //     Dielectric is not: the front side is outside (index 1), the back side inside (index n).
 //
 // eval(incoming, outgoing, normal) returns the BSDF f (1/sr, per RGB channel) of the
@@ -76,7 +78,9 @@ class Material {
   /// Build the model of `spec`. Parameters are assumed valid (the project reader checks
   /// ranges); throws std::invalid_argument if they are not. Glass additionally needs its
   /// normal transmittance reachable by a pane of its index: Tn <= (1 - r0) / (1 + r0),
-  /// r0 = ((n - 1) / (n + 1))^2 (0.918 for n = 1.52); a clearer "glass" is an opening.
+  /// r0 = ((n - 1) / (n + 1))^2 (0.918 for n = 1.52); a clearer "glass" is an opening. So
+  /// does each uncoated pane of a glazing. A transmittance factor other than 1 needs a
+  /// glass, glazing or opening material.
   /// Glossy materials tabulate their lobe's albedo here (about 1 ms each).
   static Material from_spec(const MaterialSpec& spec);
 
@@ -110,7 +114,8 @@ class Material {
   Vec3 albedo(const Vec3& incoming, const Vec3& normal) const;
 
   /// Per-channel transmittance of the straight (unrefracted) pass-through for light along
-  /// `incoming`: the thin-glass Fresnel transmittance, 1 for an opening, a smooth
+  /// `incoming`: the thin-glass Fresnel transmittance, the glazing system's angular
+  /// transmittance, 1 for an opening (each times the spec's transmittance_factor), a smooth
   /// (roughness 0) translucent's specular transmission, 0 for everything else (a rough
   /// translucent spreads that light into a glossy lobe, which is in eval()). Shadow rays of
   /// the direct component pass through surfaces with this weight.

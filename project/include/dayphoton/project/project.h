@@ -80,6 +80,11 @@ struct WindowSpec {
   /// min y for east/west walls) to the window's near edge; centred if absent.
   std::optional<double> offset_m;
   std::string material;  ///< glazing material name
+  /// Glazed fraction of the opening, (0, 1]: the frame absorbs the rest. Multiplies the
+  /// glazing's transmittance (docs/materials.md, "Frame and maintenance factors").
+  double frame_factor = 1.0;
+  /// Transmittance left by dirt on the glazing, (0, 1]. Multiplies it too.
+  double maintenance_factor = 1.0;
   SourceLocation location;
 };
 
