@@ -108,4 +108,22 @@ Project apply_variant(const Project& base, const VariantSpec& variant) {
   return result;
 }
 
+std::vector<std::string> variant_changes(const VariantSpec& variant) {
+  std::vector<std::string> changes;
+  for (const MaterialSpec& m : variant.materials) changes.push_back("material " + m.name + " replaced");
+  for (const SystemSpec& s : variant.systems) changes.push_back("system " + s.name + " changed");
+  const VariantRemovals& r = variant.remove;
+  for (const auto& [kind, names] : {std::pair{"polygon", &r.polygons}, {"box", &r.boxes}, {"mesh", &r.meshes},
+                                    {"system", &r.systems}, {"window", &r.windows}})
+    for (const Located<std::string>& name : *names) changes.push_back(std::string(kind) + " " + name.value + " removed");
+  const VariantAdditions& a = variant.add;
+  for (const PolygonSpec& p : a.polygons) changes.push_back("polygon " + p.name + " added");
+  for (const BoxSpec& b : a.boxes) changes.push_back("box " + b.name + " added");
+  for (const MeshSpec& m : a.meshes) changes.push_back("mesh " + m.name + " added");
+  for (const SystemSpec& s : a.systems) changes.push_back("system " + s.name + " added");
+  for (const AddedWindow& w : a.windows)
+    changes.push_back("window " + w.window.name + " added to room " + w.room.value);
+  return changes;
+}
+
 }  // namespace dayphoton::project

@@ -195,6 +195,10 @@ TEST(VariantGeometry, RemovalsAndAdditionsLoadWithTheirLocations) {
   EXPECT_EQ(v.add.windows[0].window.name, "west");
   EXPECT_EQ(v.add.windows[0].window.wall, Wall::West);
   EXPECT_EQ(v.add.windows[0].window.sill_m, 1.2);
+  EXPECT_EQ(variant_changes(v),
+            (std::vector<std::string>{"polygon screen removed", "box column removed", "mesh furniture removed",
+                                      "system venetian removed", "window east removed",
+                                      "window west added to room office"}));
   const Project applied = apply_variant(p, v);
   EXPECT_TRUE(applied.geometry.polygons.empty());
   EXPECT_TRUE(applied.geometry.boxes.empty());

@@ -104,6 +104,10 @@ TEST_F(VariantScene, RemovingTheShelfGivesTheResultsOfTheProjectWithoutIt) {
   ASSERT_FALSE(written.empty());
   ASSERT_TRUE(written.count("daylight_factor.csv"));
   EXPECT_EQ(variant, written);
+  // summary.json and the run log say what the variant changed.
+  const auto summary = files_of(m_dir / "a").at("summary.json");
+  EXPECT_NE(summary.find("\"changes\": [\n        \"system shelf removed\"\n      ]"), std::string::npos) << summary;
+  EXPECT_NE(files_of(m_dir / "a").at("run.log").find("variant no_shelf: system shelf removed\n"), std::string::npos);
   // The shelf changes the daylight factors (else the comparison above would prove nothing).
   ASSERT_TRUE(base.count("daylight_factor.csv"));
   EXPECT_NE(base.at("daylight_factor.csv"), written.at("daylight_factor.csv"));

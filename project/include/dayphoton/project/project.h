@@ -510,6 +510,12 @@ Project load_project_from_string(const std::string& text, const std::string& pat
 /// hand-made variants).
 Project apply_variant(const Project& base, const VariantSpec& variant);
 
+/// What `variant` changes, one short phrase each, in this order: replaced materials, changed
+/// systems, removed then added elements by kind ("material glazing replaced", "system
+/// venetian changed", "polygon skylight removed", "window west added to room office"); for
+/// the run log and summary.json.
+std::vector<std::string> variant_changes(const VariantSpec& variant);
+
 /// Generate the scene: rooms with their windows cut out (windows become glazing ports),
 /// polygons, boxes, OBJ meshes, daylight systems (docs/daylight-systems.md; systems may cut
 /// the ceiling, add `opening` port enclosures and then make their window an ordinary
