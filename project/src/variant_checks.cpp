@@ -104,9 +104,10 @@ class VariantChecker {
       for (const RoomSpec& room : m_base.geometry.rooms)
         for (const WindowSpec& w : room.windows)
           if (w.name == r.value) check(room.name, w.wall, w.name, r.location, "removes");
-    for (std::size_t i = 0; i < m_variant.add.windows.size(); ++i) {
-      const AddedWindow& a = m_variant.add.windows[i];
-      const SourceLocation at = i < added_windows.size() ? added_windows[i].location : a.window.location;
+    for (const AddedWindow& a : m_variant.add.windows) {
+      SourceLocation at = a.window.location;  // its name's, if it has one
+      for (const Located<std::string>& name : added_windows)
+        if (name.value == a.window.name) at = name.location;
       check(a.room.value, a.window.wall, a.window.name, at, "adds");
     }
   }
