@@ -7,9 +7,12 @@
 // room references (and the materials a variant replaces) are resolved after everything is
 // read, with "did you mean" hints. Rules between keys (occupancy start < end, UDI band order) are checked here.
 // Daylight systems are read against their type's schema section; a variant's changes to a
-// system are merged into the base system's node and read again as a whole.
+// system are merged into the base system's node and read again as a whole; the elements it
+// adds are read like the base's, and what it removes and adds is checked against the base
+// once everything is read (variant_checks.h).
 // All errors are collected (Diagnostics, cap 50) and thrown together as one InputError. The
 // file format is described in docs/project-format.md.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -24,6 +27,7 @@
 #include "dayphoton/project/project_schema.h"
 #include "dayphoton/project/site_geodesy.h"
 #include "param_reader.h"
+#include "variant_checks.h"
 #include "yaml_document.h"
 
 namespace dayphoton::project {
@@ -48,6 +52,8 @@ class NameSet {
                               std::to_string(it->second.line) + ")");
   }
   bool contains(const std::string& name) const { return m_first.count(name) > 0; }
+  /// The name where it was first defined (`name` must have been added).
+  Located<std::string> first(const std::string& name) const { return {name, m_first.at(name)}; }
   std::vector<std::string> names() const {
     std::vector<std::string> n;
     for (const auto& kv : m_first) n.push_back(kv.first);
@@ -158,6 +164,8 @@ class Loader {
                        "missing required key 'weather' in project (needed for annual_illuminance "
                        "and metrics; set both to false in outputs for a daylight-factor study)");
     check_references();
+    for (std::size_t i = 0; i < m_project.variants.size(); ++i)
+      check_variant(m_project, m_project.variants[i], m_variant_added[i], m_reporter);
   }
 
  private:
@@ -413,9 +421,10 @@ class Loader {
     if (!expect_map(node, "geometry", m_reporter)) return;
     ParamReader r(node, schema_section("geometry"), m_reporter);
     for_each_item(r, "rooms", [&](const YamlNode& n) { read_room(n); });
-    for_each_item(r, "polygons", [&](const YamlNode& n) { read_polygon(n); });
-    for_each_item(r, "boxes", [&](const YamlNode& n) { read_box(n); });
-    for_each_item(r, "meshes", [&](const YamlNode& n) { read_mesh(n); });
+    Geometry& g = m_project.geometry;
+    for_each_item(r, "polygons", [&](const YamlNode& n) { g.polygons.push_back(read_polygon(n, m_polygon_names)); });
+    for_each_item(r, "boxes", [&](const YamlNode& n) { g.boxes.push_back(read_box(n, m_box_names)); });
+    for_each_item(r, "meshes", [&](const YamlNode& n) { g.meshes.push_back(read_mesh(n, m_mesh_names)); });
     for_each_item(r, "systems", [&](const YamlNode& n) {
       if (auto sys = read_system(n, /*base=*/true)) m_project.geometry.systems.push_back(std::move(*sys));
     });
@@ -463,16 +472,22 @@ class Loader {
         m_reporter.error(mats->location, "missing required key 'walls' in room materials");
       m.finish();
     }
-    for_each_item(r, "windows", [&](const YamlNode& n) { room.windows.push_back(read_window(n)); });
+    for_each_item(r, "windows", [&](const YamlNode& n) { room.windows.push_back(read_window(n, m_window_names)); });
     r.finish();
     m_project.geometry.rooms.push_back(std::move(room));
   }
 
-  WindowSpec read_window(const YamlNode& node) {
+  /// A window of a room (its name into `names`), or with `room` one a variant adds: then
+  /// the map also names the room.
+  WindowSpec read_window(const YamlNode& node, NameSet& names, Located<std::string>* room = nullptr) {
     WindowSpec w;
     w.location = node.location;
-    ParamReader r(node, schema_section("window"), m_reporter);
-    if (r.read_string("name", w.name)) m_window_names.add(w.name, r.location_of("name"), m_reporter);
+    ParamReader r(node, schema_section(room ? "added window" : "window"), m_reporter);
+    if (room && r.read_string("room", room->value)) {
+      room->location = r.location_of("room");
+      m_room_uses.push_back({room->value, room->location});
+    }
+    if (r.read_string("name", w.name)) names.add(w.name, r.location_of("name"), m_reporter);
     std::string wall;
     if (r.read_choice("wall", wall))
       w.wall = wall == "south" ? Wall::South : wall == "north" ? Wall::North
@@ -489,38 +504,38 @@ class Loader {
     return w;
   }
 
-  void read_polygon(const YamlNode& node) {
+  PolygonSpec read_polygon(const YamlNode& node, NameSet& names) {
     PolygonSpec p;
     p.location = node.location;
     ParamReader r(node, schema_section("polygon"), m_reporter);
-    if (r.read_string("name", p.name)) m_polygon_names.add(p.name, r.location_of("name"), m_reporter);
+    if (r.read_string("name", p.name)) names.add(p.name, r.location_of("name"), m_reporter);
     if (r.read_points("vertices", p.vertices) && p.vertices.size() < 3)
       m_reporter.error(r.location_of("vertices"), "'vertices' needs at least 3 points, got " +
                                                       std::to_string(p.vertices.size()));
     if (r.read_string("material", p.material)) use_material(r, "material", p.material);
     r.read_bool("port", p.port);
     r.finish();
-    m_project.geometry.polygons.push_back(std::move(p));
+    return p;
   }
 
-  void read_box(const YamlNode& node) {
+  BoxSpec read_box(const YamlNode& node, NameSet& names) {
     BoxSpec b;
     b.location = node.location;
     ParamReader r(node, schema_section("box"), m_reporter);
-    if (r.read_string("name", b.name)) m_box_names.add(b.name, r.location_of("name"), m_reporter);
+    if (r.read_string("name", b.name)) names.add(b.name, r.location_of("name"), m_reporter);
     r.read_vec3("origin", b.origin);
     r.read_vec3("size", b.size_m);
     r.read_number("rotation", b.rotation_deg);
     if (r.read_string("material", b.material)) use_material(r, "material", b.material);
     r.finish();
-    m_project.geometry.boxes.push_back(std::move(b));
+    return b;
   }
 
-  void read_mesh(const YamlNode& node) {
+  MeshSpec read_mesh(const YamlNode& node, NameSet& names) {
     MeshSpec m;
     m.location = node.location;
     ParamReader r(node, schema_section("mesh"), m_reporter);
-    if (r.read_string("name", m.name)) m_mesh_names.add(m.name, r.location_of("name"), m_reporter);
+    if (r.read_string("name", m.name)) names.add(m.name, r.location_of("name"), m_reporter);
     if (r.read_string("file", m.path_as_written))
       existing_file("OBJ file", m.path_as_written, r.location_of("file"), m.path);
     if (const YamlNode* map = r.take("material_map"); map && expect_map(*map, "material_map", m_reporter)) {
@@ -543,12 +558,13 @@ class Loader {
     r.read_number("rotation", m.rotation_deg);
     r.read_bool("port", m.port);
     r.finish();
-    m_project.geometry.meshes.push_back(std::move(m));
+    return m;
   }
 
   // ---- daylight systems (docs/daylight-systems.md) --------------------------------------
   /// One system `{type: ..., name: ..., ...}`. `base`: a system of geometry.systems (its name
-  /// is registered and its node kept for variants); otherwise a variant's merged definition.
+  /// is registered, its node kept for variants, its window checked against the project's);
+  /// otherwise a variant's merged or added definition (variant_checks.h checks its window).
   std::optional<SystemSpec> read_system(const YamlNode& node, bool base) {
     if (!node.find("type")) {
       m_reporter.error(node.location, "missing required key 'type' in system");
@@ -598,7 +614,7 @@ class Loader {
       required_material("collector_material", p.collector_material);
       sys.params = p;
     } else {
-      read_mount(r, type, sys.mount);
+      read_mount(r, type, sys.mount, base);
       if (type == "light_shelf") {
         LightShelfSpec p;
         r.read_number("height", p.height_m);
@@ -703,8 +719,8 @@ class Loader {
 
   /// `window`, `side` and `port` of a window-mounted system. Overhangs and fins are always
   /// outside (their schema has no `side`); `port` only means something outside.
-  void read_mount(ParamReader& r, const std::string& type, WindowMount& mount) {
-    if (r.read_string("window", mount.window)) m_window_uses.push_back({mount.window, r.location_of("window")});
+  void read_mount(ParamReader& r, const std::string& type, WindowMount& mount, bool base) {
+    if (r.read_string("window", mount.window) && base) m_window_uses.push_back({mount.window, r.location_of("window")});
     const bool has_side = r.schema().find("side") != nullptr;
     std::string side = "exterior";
     if (has_side) r.read_choice("side", side);
@@ -1085,12 +1101,16 @@ class Loader {
       m_variant_folders.add("variant", v.name, r.location_of("name"), m_reporter);
       m_variant_names.add(v.name, r.location_of("name"), m_reporter);
     }
-    const bool has_materials = r.has("materials"), has_systems = r.has("systems");
     std::size_t changes = 0;
     const YamlNode* empty_map = nullptr;
+    auto count = [&](const YamlNode& map, std::size_t n) {
+      changes += n;
+      if (n == 0 && !empty_map) empty_map = &map;
+    };
+    bool any = false;
+    for (const char* key : {"materials", "systems", "remove", "add"}) any = any || r.has(key);
     if (const YamlNode* mats = r.take("materials"); mats && expect_map(*mats, "materials", m_reporter)) {
-      if (mats->entries.empty()) empty_map = mats;
-      changes += mats->entries.size();
+      count(*mats, mats->entries.size());
       for (const auto& entry : mats->entries) {
         m_variant_material_uses.push_back({{entry.key, entry.key_location}, v.name});
         MaterialSpec m;
@@ -1098,17 +1118,93 @@ class Loader {
       }
     }
     if (const YamlNode* systems = r.take("systems"); systems && expect_map(*systems, "systems", m_reporter)) {
-      if (systems->entries.empty() && !empty_map) empty_map = systems;
-      changes += systems->entries.size();
+      count(*systems, systems->entries.size());
       for (const auto& entry : systems->entries) read_variant_system(entry, v);
     }
-    if (!has_materials && !has_systems)
-      m_reporter.error(node.location, "missing required key 'materials' or 'systems' in variant");
+    AddedNames added;
+    // A `remove` or `add` with keys changes something, or has its own errors.
+    if (const YamlNode* n = r.take("remove"); n && expect_map(*n, "remove", m_reporter))
+      count(*n, read_variant_removals(*n, v.remove) + n->entries.size());
+    if (const YamlNode* n = r.take("add"); n && expect_map(*n, "add", m_reporter))
+      count(*n, read_variant_additions(*n, v.add, added) + n->entries.size());
+    if (!any)
+      m_reporter.error(node.location, "missing required key 'materials', 'systems', 'remove' or 'add' in variant");
     else if (changes == 0 && empty_map)
-      m_reporter.error(empty_map->location, "variant '" + v.name + "' replaces nothing (give at "
-                                            "least one material or system)");
+      m_reporter.error(empty_map->location, "variant '" + v.name + "' changes nothing (replace a material or "
+                                            "system, or remove or add an element)");
     r.finish();
     m_project.variants.push_back(std::move(v));
+    m_variant_added.push_back(std::move(added));
+  }
+
+  /// `remove: {polygons: [name, ...], ...}`; returns the number of names.
+  std::size_t read_variant_removals(const YamlNode& node, VariantRemovals& out) {
+    ParamReader r(node, schema_section("variant remove"), m_reporter);
+    std::size_t n = 0;
+    for (auto [key, list] : {std::pair{"polygons", &out.polygons}, {"boxes", &out.boxes}, {"meshes", &out.meshes},
+                             {"systems", &out.systems}, {"windows", &out.windows}}) {
+      *list = read_names(r, key);
+      n += list->size();
+    }
+    r.finish();
+    return n;
+  }
+
+  /// A non-empty list of names, each where it was written.
+  std::vector<Located<std::string>> read_names(ParamReader& r, const std::string& key) {
+    std::vector<Located<std::string>> names;
+    const YamlNode* list = r.take(key);
+    if (!list) return names;
+    if (!list->is_sequence() || list->items.empty()) {
+      m_reporter.error(list->location, "expected a list of one or more names for '" + key + "', got " +
+                                           (list->is_sequence() ? std::string("an empty list") : list->describe()));
+      return names;
+    }
+    for (const YamlNode& item : list->items) {
+      if (item.is_scalar() && !item.scalar.empty()) names.push_back({item.scalar, item.location});
+      else m_reporter.error(item.location, "expected a name in '" + key + "', got " + item.describe());
+    }
+    return names;
+  }
+
+  /// `add: {polygons: [...], ...}`: full definitions read as the base's, their names unique
+  /// within the variant (against the base: check_variant). Returns the number of elements.
+  std::size_t read_variant_additions(const YamlNode& node, VariantAdditions& out, AddedNames& added) {
+    ParamReader r(node, schema_section("variant add"), m_reporter);
+    NameSet polygons{"polygon"}, boxes{"box"}, meshes{"mesh"}, systems{"system"}, windows{"window"};
+    auto located = [](const NameSet& names, const std::string& name, std::vector<Located<std::string>>& to) {
+      const bool listed = std::any_of(to.begin(), to.end(), [&](const auto& l) { return l.value == name; });
+      if (names.contains(name) && !listed) to.push_back(names.first(name));
+    };
+    for_each_item(r, "polygons", [&](const YamlNode& n) {
+      out.polygons.push_back(read_polygon(n, polygons));
+      located(polygons, out.polygons.back().name, added.polygons);
+    });
+    for_each_item(r, "boxes", [&](const YamlNode& n) {
+      out.boxes.push_back(read_box(n, boxes));
+      located(boxes, out.boxes.back().name, added.boxes);
+    });
+    for_each_item(r, "meshes", [&](const YamlNode& n) {
+      out.meshes.push_back(read_mesh(n, meshes));
+      located(meshes, out.meshes.back().name, added.meshes);
+    });
+    for_each_item(r, "systems", [&](const YamlNode& n) {
+      auto sys = read_system(n, /*base=*/false);
+      if (!sys) return;
+      if (!sys->name.empty()) {
+        systems.add(sys->name, sys->location_of("name"), m_reporter);
+        located(systems, sys->name, added.systems);
+      }
+      out.systems.push_back(std::move(*sys));
+    });
+    for_each_item(r, "windows", [&](const YamlNode& n) {
+      AddedWindow w;
+      w.window = read_window(n, windows, &w.room);
+      located(windows, w.window.name, added.windows);
+      out.windows.push_back(std::move(w));
+    });
+    r.finish();
+    return out.polygons.size() + out.boxes.size() + out.meshes.size() + out.systems.size() + out.windows.size();
   }
 
   /// `system_name: {key: value, ...}` of a variant: the base system's node with these keys
@@ -1244,6 +1340,7 @@ class Loader {
     std::string variant;
   };
   std::vector<VariantMaterialUse> m_variant_material_uses;
+  std::vector<AddedNames> m_variant_added;  ///< per variant, in order
 };
 
 }  // namespace

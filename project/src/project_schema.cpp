@@ -90,7 +90,7 @@ std::vector<SectionSchema> build_schema() {
       P("simulation", T::Section, "photon and sky settings").section("simulation"),
       P("outputs", T::Section, "what to write and where").section("outputs"),
       P("metrics", T::Section, "thresholds and occupancy of the results").section("metrics"),
-      P("variants", T::SectionList, "study variants: the project with some materials replaced").section("variant"),
+      P("variants", T::SectionList, "study variants: the project with some materials or systems replaced, geometry removed or added").section("variant"),
       P("operation", T::Section, "operated shading (LM-83 blinds rule): per hour the open or the shaded case").section("operation"),
       P("limits", T::Section, "the largest study the project may make; raise a limit for a study that needs more").section("limits"),
   }});
@@ -397,11 +397,36 @@ std::vector<SectionSchema> build_schema() {
       P("ase_threshold", T::Number, "ASE: direct-sun illuminance threshold").unit("lx").above(0).def("1000"),
       P("ase_hours", T::Number, "ASE: a sensor fails with more occupied hours than this at or above ase_threshold").unit("h").range(0, 8784).def("250"),
   }});
-  s.push_back({"variant", "a study variant: the whole project with the listed materials and systems replaced", {
+  s.push_back({"variant", "a study variant: the whole project with the listed materials and systems replaced, and geometry removed or added", {
       P("name", T::String, "unique variant name, also its output folder: a path name (see Names that become folders)").required(),
       P("materials", T::NameMap, "name of a material in `materials` -> its full definition in this variant"),
       P("systems", T::NameMap, "name of a system in `geometry.systems` -> the keys it changes in this variant (any but type and name)"),
+      P("remove", T::Section, "base elements this variant leaves out, by name").section("variant remove"),
+      P("add", T::Section, "elements this variant adds, defined as in `geometry`").section("variant add"),
   }});
+  s.push_back({"variant remove", "names of base elements a variant leaves out; nothing left may depend on them", {
+      P("polygons", T::NameList, "polygons of `geometry.polygons`"),
+      P("boxes", T::NameList, "boxes of `geometry.boxes`"),
+      P("meshes", T::NameList, "meshes of `geometry.meshes`"),
+      P("systems", T::NameList, "systems of `geometry.systems` (not also changed under the variant's `systems`)"),
+      P("windows", T::NameList, "windows of rooms (photon ports); no remaining system may be mounted on one, nor a wall grid cover its wall"),
+  }});
+  s.push_back({"variant add", "elements a variant adds, each a full definition with a name the base does not use (or that the variant removes)", {
+      P("polygons", T::SectionList, "planar polygons").section("polygon"),
+      P("boxes", T::SectionList, "solid boxes").section("box"),
+      P("meshes", T::SectionList, "Wavefront OBJ meshes").section("mesh"),
+      P("systems", T::SectionList, "daylight systems").section("system"),
+      P("windows", T::SectionList, "windows, each in a room of `geometry.rooms`").section("added window"),
+  }});
+  {
+    // The keys of a window, with the room it is cut into first.
+    SectionSchema added{"added window", "a window a variant adds: `room` and the keys of a window", {
+        P("room", T::String, "name of the room in `geometry.rooms` whose wall the window is in").required(),
+    }};
+    for (const SectionSchema& section : s)
+      if (section.name == "window") added.params.insert(added.params.end(), section.params.begin(), section.params.end());
+    s.push_back(added);
+  }
   // LM-83-12 section 2.2.6 and its definition of direct sun (docs/metrics.md).
   s.push_back({"operation", "operated shading: per grid and hour, the shaded case when too many sensors see direct sun in the open case (IES LM-83 blinds rule; needs simulation.sun: bins)", {
       P("open", T::String, "case of the open state: a variant name, or `base` for the project as written; its direct sun decides every hour and gives ASE").required(),
@@ -427,6 +452,7 @@ std::string param_type_name(ParamType type) {
     case ParamType::Path: return "path";
     case ParamType::PointList: return "list of [x, y, z]";
     case ParamType::NumberList: return "list of numbers";
+    case ParamType::NameList: return "list of names";
     case ParamType::Section: return "map";
     case ParamType::SectionList: return "list";
     case ParamType::NameMap: return "map";

@@ -122,6 +122,7 @@ struct PlanGeometry {
 
 struct GridData {
   std::string case_name;  ///< "" for the base case, else the variant
+  std::vector<std::string> changes;  ///< a variant's: what it changes (summary.json)
   std::string name;
   std::string folder;
   std::string id;
@@ -182,8 +183,11 @@ std::vector<std::vector<Vec3>> windows_on_plan(const SensorGrid& grid, const std
 }
 
 /// Geometry of every grid of the project named in summary.json (by grid name), if it loads.
-std::map<std::string, PlanGeometry> project_geometry(const std::string& project_path, std::string& note) {
-  std::map<std::string, PlanGeometry> out;
+/// Plans of every grid, per case: "" the base, else a variant's name (its windows are its own).
+using CasePlans = std::map<std::string, std::map<std::string, PlanGeometry>>;
+
+CasePlans project_geometry(const std::string& project_path, std::string& note) {
+  CasePlans out;
   if (project_path.empty() || !fs::exists(project_path)) {
     note = "the project file " + (project_path.empty() ? std::string("(not named)") : project_path) +
            " is not available: plans show the sensors' extent, without windows";
@@ -194,11 +198,17 @@ std::map<std::string, PlanGeometry> project_geometry(const std::string& project_
     project::LoadOptions geometry_only;
     geometry_only.output_folder_overridden = true;
     const project::Project project = project::load_project(project_path, geometry_only);
-    const SceneDescription scene = project::build_scene_description(project);
-    std::vector<std::vector<Vec3>> windows;
-    for (const Surface& s : scene.surfaces)
-      if (s.port) windows.push_back(s.vertices);
-    for (const SensorGrid& g : scene.grids) out[g.name] = PlanGeometry{g.outline, windows_on_plan(g, windows), {}};
+    auto plans = [](const project::Project& p) {
+      const SceneDescription scene = project::build_scene_description(p);
+      std::vector<std::vector<Vec3>> windows;
+      for (const Surface& s : scene.surfaces)
+        if (s.port) windows.push_back(s.vertices);
+      std::map<std::string, PlanGeometry> grids;
+      for (const SensorGrid& g : scene.grids) grids[g.name] = PlanGeometry{g.outline, windows_on_plan(g, windows), {}};
+      return grids;
+    };
+    out[""] = plans(project);
+    for (const project::VariantSpec& v : project.variants) out[v.name] = plans(project::apply_variant(project, v));
     note = "room outline and windows from " + project_path + " as it is now";
   } catch (const std::exception&) {
     note = "the project file " + project_path +
@@ -669,6 +679,11 @@ std::string grid_section(const GridData& g, PageIds& page) {
     << esc(g.title()) << "</h2>";
   s << "<p class=\"meta\">" << g.sensors.size() << " sensors; folder <code>" << esc(g.folder) << "</code>";
   if (!g.plan.note.empty()) s << "; " << esc(g.plan.note);
+  if (!g.changes.empty()) {
+    std::string changes;
+    for (const std::string& c : g.changes) changes += (changes.empty() ? "" : ", ") + c;
+    s << "; changes: " << esc(changes);
+  }
   s << "</p>";
   for (const std::string& p : g.problems) s << "<p class=\"problem\">could not read: " << esc(p) << "</p>";
   const SensorLattice lattice = sensor_lattice(g.sensors);
@@ -1129,21 +1144,27 @@ namespace {
 std::string report_html_of(const std::string& results_dir, const json& summary) {
   PageIds page;
   std::string geometry_note;
-  const std::map<std::string, PlanGeometry> geometry = project_geometry(summary.value("project", std::string()), geometry_note);
+  const CasePlans geometry = project_geometry(summary.value("project", std::string()), geometry_note);
 
   std::vector<GridData> grids;
   for (const json& g : summary.value("grids", json::array()))
     grids.push_back(load_grid("", g, grid_folder(results_dir, "", g)));
   for (const json& v : summary.value("variants", json::array()))
-    for (const json& g : v.value("grids", json::array()))
+    for (const json& g : v.value("grids", json::array())) {
       grids.push_back(load_grid(v.value("name", std::string("variant")), g,
                                 grid_folder(results_dir, v.value("name", std::string()), g)));
+      for (const json& c : v.value("changes", json::array()))
+        if (c.is_string()) grids.back().changes.push_back(c.get<std::string>());
+    }
   for (const json& g : operated_grids(summary))
     grids.push_back(load_grid(operated_case(summary), g, grid_folder_in(results_dir, join(results_dir, "operated"), g)));
   for (GridData& g : grids) {
-    auto it = geometry.find(g.name);
-    if (it != geometry.end()) g.plan = it->second;
-    else if (!geometry.empty()) g.plan.note = "grid not in the project file any more: no outline";
+    // A variant's own windows; the base's for the base and the operated case.
+    const auto plans = geometry.find(geometry.count(g.case_name) ? g.case_name : std::string());
+    if (plans == geometry.end()) continue;
+    auto it = plans->second.find(g.name);
+    if (it != plans->second.end()) g.plan = it->second;
+    else g.plan.note = "grid not in the project file any more: no outline";
   }
 
   std::vector<std::string> ids{"summary", "overview"};

@@ -889,7 +889,11 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   nlohmann::json variants = nlohmann::json::array();
   for (const project::VariantSpec& v : project.variants) {
     const std::string dir = join(join(report.output_dir, "variants"), v.name);
-    nlohmann::json vj = {{"name", v.name}, {"folder", dir}};
+    const std::vector<std::string> changes = project::variant_changes(v);
+    std::string listed;
+    for (const std::string& c : changes) listed += (listed.empty() ? "" : ", ") + c;
+    log.line("variant " + v.name + ": " + listed);
+    nlohmann::json vj = {{"name", v.name}, {"folder", dir}, {"changes", changes}};
     vj["grids"] = run_case(project::apply_variant(project, v), v.name, dir, ctx, keep(v.name));
     variants.push_back(vj);
   }

@@ -229,17 +229,17 @@ std::vector<BadCase> variant_cases() {
       {"variant_replacing_nothing",
        "variants:\n"
        "  - {name: a, materials: {}}\n",
-       {"8:26: variant 'a' replaces nothing (give at least one material or system)"}},
+       {"8:26: variant 'a' changes nothing (replace a material or system, or remove or add an element)"}},
       {"missing_name_and_missing_materials",
        "variants:\n"
        "  - {materials: {glazing: {type: glass, transmittance: 0.4}}}\n"
        "  - name: b\n",
        {"8:5: missing required key 'name' in variant",
-        "9:5: missing required key 'materials' or 'systems' in variant"}},
+        "9:5: missing required key 'materials', 'systems', 'remove' or 'add' in variant"}},
       {"unknown_key_in_variant",
        "variants:\n"
        "  - {name: a, material: {glazing: {type: glass, transmittance: 0.4}}}\n",
-       {"8:5: missing required key 'materials' or 'systems' in variant",
+       {"8:5: missing required key 'materials', 'systems', 'remove' or 'add' in variant",
         "8:15: unknown key 'material' in variant (did you mean 'materials'?)"}},
       {"bad_material_definitions_inside_a_variant",
        "variants:\n"

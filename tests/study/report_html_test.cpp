@@ -283,6 +283,38 @@ TEST(ReportHtml, PlansComeFromAProjectWhoseOutputFolderLiesElsewhere) {
   EXPECT_EQ(html.find("no longer loads"), std::string::npos);
 }
 
+// A variant's plan shows its own windows (a removed window is not drawn), and its section
+// says what it changes.
+TEST(ReportHtml, AVariantsPlanShowsItsOwnWindowsAndItsChanges) {
+  const std::string dir = temp_dir("variant_windows");
+  std::ofstream(dir + "/project.yaml")
+      << "site: {latitude: 51.5, longitude: -0.12, time_zone: 0}\n"
+         "outputs: {annual_illuminance: false, metrics: false}\n"
+         "materials: {walls: {type: lambertian, reflectance: 0.5}, glazing: {type: glass, transmittance: 0.6}}\n"
+         "geometry:\n"
+         "  rooms:\n"
+         "    - name: office\n"
+         "      size: [4, 3, 3]\n"
+         "      materials: {floor: walls, ceiling: walls, walls: walls}\n"
+         "      windows: [{name: south, wall: south, width: 2, height: 1, sill: 1, material: glazing}]\n"
+         "sensors: {grids: [{name: north_wing, room: office, height: 0.8, spacing: 1}]}\n"
+         "variants: [{name: blank, remove: {windows: [south]}}]\n";
+  write_grid(dir + "/north_wing", false);
+  write_grid(dir + "/variants/blank/north_wing", false);
+  std::ofstream(dir + "/summary.json") << R"({"project": ")" << dir << R"(/project.yaml",
+    "grids": [{"name": "north_wing"}],
+    "variants": [{"name": "blank", "changes": ["window south removed"], "grids": [{"name": "north_wing"}]}]})";
+  const std::string html = report_html(dir);
+  const std::size_t base_at = html.find("id=\"grid-north_wing\""), variant_at = html.find("id=\"grid-blank--north_wing\"");
+  ASSERT_NE(base_at, std::string::npos);
+  ASSERT_NE(variant_at, std::string::npos);
+  ASSERT_LT(base_at, variant_at);
+  EXPECT_GE(count(html.substr(base_at, variant_at - base_at), "class=\"window\""), 1u);
+  EXPECT_EQ(count(html.substr(variant_at), "class=\"window\""), 0u);
+  EXPECT_NE(html.find("changes: window south removed", variant_at), std::string::npos);
+  EXPECT_EQ(html.substr(base_at, variant_at - base_at).find("changes:"), std::string::npos);
+}
+
 TEST(ReportHtml, AFolderWithoutSummaryIsAnInputError) {
   const std::string dir = temp_dir("empty");
   try {

@@ -425,9 +425,35 @@ struct MetricsSettings {
   SourceLocation location;
 };
 
+/// What a variant removes from the base project: names of base elements, each where the
+/// variant wrote it (docs/project-format.md, `variants`).
+struct VariantRemovals {
+  std::vector<Located<std::string>> polygons, boxes, meshes, systems;
+  std::vector<Located<std::string>> windows;  ///< windows of room generators (photon ports)
+  bool empty() const;
+};
+
+/// A window a variant adds to a room of the base project.
+struct AddedWindow {
+  Located<std::string> room;
+  WindowSpec window;
+};
+
+/// What a variant adds: full definitions, read and validated like the base's, after the
+/// base's elements of the same kind (windows after their room's own).
+struct VariantAdditions {
+  std::vector<PolygonSpec> polygons;
+  std::vector<BoxSpec> boxes;
+  std::vector<MeshSpec> meshes;
+  std::vector<SystemSpec> systems;
+  std::vector<AddedWindow> windows;
+  bool empty() const;
+};
+
 /// A study variant: the whole project with some materials and/or daylight systems replaced
 /// (alternative glazing, blinds modelled as a translucent material, blinds tilted or
-/// closed, ...). Only replaces materials and systems that exist in the base project;
+/// closed, ...), and polygons, boxes, meshes, systems and windows removed or added. Rooms,
+/// sensors and settings are the base's (every case has the same sensors);
 /// apply_variant() builds the variant's Project.
 struct VariantSpec {
   std::string name;                    ///< unique, a portable folder name
@@ -436,6 +462,8 @@ struct VariantSpec {
   /// variant's `systems: {name: {key: value}}` overrides applied (docs/project-format.md).
   std::vector<SystemSpec> systems;
   SourceLocation location;
+  VariantRemovals remove;              ///< `remove`: base elements left out
+  VariantAdditions add;                ///< `add`: elements the base does not have
 };
 
 /// The name that `operation` uses for the project as written (the base case).
@@ -490,11 +518,20 @@ Project load_project_from_string(const std::string& text, const std::string& pat
 
 /// The project of one variant: `base` with every material of `variant` put in place of the
 /// base material of the same name (same position in `materials`, so material indices do not
-/// change) and every system of `variant` in place of the base system of the same name;
-/// everything else, `variants` included, is equal to `base`. Throws std::invalid_argument
-/// if the variant names a material or system `base` does not have (the loader reports that
-/// as an input error, so this only happens with hand-made variants).
+/// change) and every system of `variant` in place of the base system of the same name; then
+/// the removed elements left out (the others keep their order) and the added ones appended
+/// after the base's of their kind (an added window after its room's windows); everything
+/// else, `variants` included, is equal to `base`. Throws std::invalid_argument if the
+/// variant replaces or removes something `base` does not have, or adds a window to a room it
+/// does not have (the loader reports these as input errors, so this only happens with
+/// hand-made variants).
 Project apply_variant(const Project& base, const VariantSpec& variant);
+
+/// What `variant` changes, one short phrase each, in this order: replaced materials, changed
+/// systems, removed then added elements by kind ("material glazing replaced", "system
+/// venetian changed", "polygon skylight removed", "window west added to room office"); for
+/// the run log and summary.json.
+std::vector<std::string> variant_changes(const VariantSpec& variant);
 
 /// Generate the scene: rooms with their windows cut out (windows become glazing ports),
 /// polygons, boxes, OBJ meshes, daylight systems (docs/daylight-systems.md; systems may cut

@@ -22,6 +22,7 @@ enum class ParamType {
   Path,         ///< a file or folder path, relative to the project file
   PointList,    ///< [[x, y, z], ...]
   NumberList,   ///< [a, b, ...]: one or more numbers, each within the range
+  NameList,     ///< [a, b, ...]: one or more names
   Section,      ///< a nested map with its own schema (`section` names it)
   SectionList,  ///< a list of maps with the schema `section`
   NameMap,      ///< a map from names to values (see help)
