@@ -1,8 +1,10 @@
 // build_scene_description: Project -> SceneDescription (the geometry stage of project.h).
 //
 // Order: materials are copied; daylight systems are generated (system_generators.h; an
-// `opening` material is appended for port enclosures), then rooms (windows cut out,
-// glazing as ports unless an enclosure took over, light-pipe openings in ceilings), free
+// `opening` material is appended for port enclosures), interior windows are found
+// (interior_windows.cpp), then rooms (windows cut out, glazing as ports unless an enclosure
+// took over or the window is interior, interior windows of adjoining rooms cut out too,
+// light-pipe and roof-light openings in ceilings), free
 // polygons, boxes, OBJ meshes and the systems' surfaces, all in model coordinates and validated (finite vertices,
 // non-zero area, planarity within 1e-3 m x max(1, size) where size is the largest extent of
 // the polygon's bounding box, triangulable); sensor grids and point sets are generated;
@@ -135,6 +137,11 @@ SceneDescription build_scene_description(const Project& project) {
   // being ports inside an enclosure); their surfaces come after the meshes.
   detail::SystemOutput systems;
   detail::generate_systems(project, materials, scene.materials, diag, systems);
+  // Interior windows: glazing, not ports, cut out of the adjoining room's wall too.
+  for (const detail::InteriorOpening& i : detail::find_interior_windows(g.rooms, &diag)) {
+    systems.rooms[i.room->name].windows_without_port.insert(i.window->name);
+    systems.rooms[i.adjoining->name].wall_holes.push_back({i.adjoining_wall, i.rect_in_adjoining});
+  }
   std::vector<Surface> surfaces;
   static const detail::RoomCutouts unchanged;
   for (const RoomSpec& room : g.rooms) {
