@@ -346,5 +346,25 @@ TEST(InteriorWindows, PartlyInTheOtherRoomsWallOrDefinedTwiceAreLocatedErrors) {
                 ":14:11) in the wall the rooms share: an interior window is defined once, in either room"}));
 }
 
+TEST(InteriorWindows, ASystemOutsideAnInteriorWindowIsALocatedError) {
+  // Outside the office's interior window is the corridor: an exterior system there is an
+  // error; interior blinds (in the office) are fine.
+  const std::string rooms =
+      two_rooms("        - {name: internal, wall: north, width: 2, height: 1, sill: 1, offset: 1, material: glass}\n");
+  EXPECT_EQ(errors_of(rooms +
+                      "  systems:\n"
+                      "    - {type: blinds, name: b, window: internal, side: exterior, slat_width: 0.05, spacing: 0.04, material: walls}\n"
+                      "    - {type: overhang, name: o, window: internal, depth: 0.5, material: walls}\n"),
+            (std::vector<std::string>{
+                "20:55: blinds 'b' is outside window 'internal', an interior window: outside is room 'corridor'; mount "
+                "it inside (side: interior) or model it in that room",
+                "21:41: overhang 'o' is outside window 'internal', an interior window: outside is room 'corridor'; mount "
+                "it inside (side: interior) or model it in that room"}));
+  EXPECT_TRUE(errors_of(rooms +
+                        "  systems:\n"
+                        "    - {type: blinds, name: b, window: internal, slat_width: 0.05, spacing: 0.04, material: walls}\n")
+                  .empty());
+}
+
 }  // namespace
 }  // namespace dayphoton::project
