@@ -25,20 +25,14 @@
 #include <string>
 #include <utility>
 
-#include "dayphoton/core/polygon.h"
 #include "geometry_generators.h"
+#include "system_geometry.h"
 
 namespace dayphoton::project::detail {
 
 namespace {
 
 constexpr double SnapTolerance_m = 1e-6;
-
-/// `polygon` turned, if needed, so that its winding normal points along `normal`.
-std::vector<Vec3> facing(std::vector<Vec3> polygon, const Vec3& normal) {
-  if (dot(polygon_normal(polygon), normal) < 0) std::reverse(polygon.begin() + 1, polygon.end());
-  return polygon;
-}
 
 std::string span(double a, double b) { return format_number(a) + " to " + format_number(b) + " m"; }
 
