@@ -111,11 +111,10 @@ std::vector<Vec3> facing(std::vector<Vec3> polygon, const Vec3& normal) {
 /// rectangular openings (roof lights, room coordinates) and convex holes (model coordinates,
 /// each containing its vertex centroid, as the light pipe's regular polygons do): the
 /// rectangle minus the openings and the holes' bounding boxes is split like a wall
-/// (wall_pieces), and
-/// the ring between each bounding box and its hole is cut into one piece per hole edge by
-/// the rays from the hole's centre through its vertices (each piece: hole edge, two ray
-/// segments and the box boundary between them, corners included). Every piece is planar
-/// and simple; pieces of zero area (a hole edge lying on its box) are dropped.
+/// (wall_pieces), and the ring between each bounding box and its hole is cut into one piece
+/// per hole edge by the rays from the hole's centre through its vertices (each piece: hole
+/// edge, two ray segments and the box boundary between them, corners included). Every piece
+/// is planar and simple; pieces of zero area (a hole edge lying on its box) are dropped.
 std::vector<std::vector<Vec3>> ceiling_pieces(const Vec3& origin, double sx, double sy, double z,
                                               const std::vector<CeilingRect>& openings,
                                               const std::vector<std::vector<Vec3>>& holes) {

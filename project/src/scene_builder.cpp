@@ -2,9 +2,9 @@
 //
 // Order: materials are copied; daylight systems are generated (system_generators.h; an
 // `opening` material is appended for port enclosures), interior windows are found
-// (interior_windows.cpp), then rooms (windows cut out, glazing as ports unless an enclosure
-// took over or the window is interior, interior windows of adjoining rooms cut out too,
-// light-pipe and roof-light openings in ceilings), free
+// (interior_windows.cpp; a system outside one is an error), then rooms (windows cut out,
+// glazing as ports unless an enclosure took over or the window is interior, interior windows
+// of adjoining rooms cut out too, light-pipe and roof-light openings in ceilings), free
 // polygons, boxes, OBJ meshes and the systems' surfaces, all in model coordinates and validated (finite vertices,
 // non-zero area, planarity within 1e-3 m x max(1, size) where size is the largest extent of
 // the polygon's bounding box, triangulable); sensor grids and point sets are generated;
