@@ -11,7 +11,9 @@
 //   glazing, not a port (before, the adjoining room's wall was left whole and the glazing
 //   was a port: no light reached the other room); defined from either room it is the same
 //   opening; a window partly in the other room's wall, or the same opening defined from
-//   both rooms, is a located error; a window beside the other room's wall stays a port.
+//   both rooms, is a located error; a window beside the other room's wall stays a port; a
+//   system outside an interior window is a located error;
+// - the example projects roof_light and corridor build with their openings.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -364,6 +366,22 @@ TEST(InteriorWindows, ASystemOutsideAnInteriorWindowIsALocatedError) {
                         "  systems:\n"
                         "    - {type: blinds, name: b, window: internal, slat_width: 0.05, spacing: 0.04, material: walls}\n")
                   .empty());
+}
+
+TEST(RoomOpenings, ExampleProjectsLoadAndBuild) {
+  const std::string projects = std::string(DAYPHOTON_SOURCE_DIR) + "/projects/";
+  const SceneDescription roof = build_scene_description(load_project(projects + "roof_light/project.yaml"));
+  int ports = 0;
+  for (const Surface& s : roof.surfaces) ports += s.port;
+  EXPECT_EQ(ports, 2);
+  EXPECT_TRUE(find(roof, "hall.flush")->port);
+  EXPECT_EQ(with_prefix(roof, "hall.well.well_").size(), 4u);
+  const Project corridor = load_project(projects + "corridor/project.yaml");
+  const SceneDescription d = build_scene_description(corridor);
+  EXPECT_TRUE(find(d, "office.facade")->port);
+  EXPECT_FALSE(find(d, "office.internal")->port);
+  ASSERT_EQ(interior_windows(corridor.geometry).size(), 1u);
+  EXPECT_EQ(interior_windows(corridor.geometry)[0].adjoining_room, "corridor");
 }
 
 }  // namespace
