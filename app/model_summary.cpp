@@ -43,6 +43,9 @@ std::string utc_offset_text(double hours) {
   return s.str();
 }
 
+/// A port facing the zenith (as printed, to 0.1 degree).
+bool horizontal(const PortInfo& p) { return p.tilt_deg < 0.05; }
+
 /// The weather lines and the sun lines of the summary: which site the sun is computed for (the
 /// sentence the run log, summary.json and the report print), the station's distance and the
 /// hours with direct light while the sun is below the horizon (study/sun_site.h).
@@ -150,6 +153,20 @@ ModelSummary summarize_model(const project::Project& proj) {
       s.ports.push_back(port);
     }
   }
+  auto area_of = [&](const std::string& surface_name) {
+    for (const Surface& surface : s.scene.surfaces)
+      if (surface.name == surface_name) return polygon_area_m2(surface.vertices);
+    return 0.0;
+  };
+  for (const project::RoomSpec& room : proj.geometry.rooms)
+    for (const project::RoofLightSpec& l : room.roof_lights) {
+      const std::string name = room.name + "." + l.name;
+      s.roof_lights.push_back({name, area_of(name), l.well_depth_m});
+    }
+  for (const project::InteriorWindow& w : project::interior_windows(proj.geometry)) {
+    const std::string name = w.room + "." + w.window;
+    s.interior_windows.push_back({name, w.adjoining_room, area_of(name)});
+  }
   s.triangle_count = scene.triangle_count();
   std::vector<engine::Material> models;
   for (const MaterialSpec& m : s.scene.materials) models.push_back(engine::Material::from_spec(m));
@@ -249,8 +266,26 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
         << std::setw(13) << "azimuth_deg" << std::setw(10) << "tilt_deg" << "  facing\n";
   for (const PortInfo& p : s.ports)
     out << "  " << std::left << std::setw(20) << p.name << std::right << std::setw(10)
-        << fixed(p.area_m2, 2) << std::setw(13) << fixed(p.azimuth_deg, 1) << std::setw(10)
-        << fixed(p.tilt_deg, 1) << "  " << compass_point(p.azimuth_deg) << '\n';
+        << fixed(p.area_m2, 2) << std::setw(13)
+        // A horizontal opening (a roof light) faces the zenith; it has no azimuth.
+        << (horizontal(p) ? std::string("-") : fixed(p.azimuth_deg, 1)) << std::setw(10) << fixed(p.tilt_deg, 1)
+        << "  " << (horizontal(p) ? std::string("up") : compass_point(p.azimuth_deg)) << '\n';
+
+  if (!s.roof_lights.empty()) {
+    out << "roof lights " << s.roof_lights.size() << " (glazing: the ports above)\n";
+    out << "  " << std::left << std::setw(20) << "name" << std::right << std::setw(10) << "area_m2"
+        << std::setw(15) << "well_depth_m" << '\n';
+    for (const RoofLightInfo& l : s.roof_lights)
+      out << "  " << std::left << std::setw(20) << l.name << std::right << std::setw(10) << fixed(l.area_m2, 2)
+          << std::setw(15) << fixed(l.well_depth_m, 2) << (l.well_depth_m > 0 ? "" : "  flush") << '\n';
+  }
+  if (!s.interior_windows.empty()) {
+    out << "interior windows " << s.interior_windows.size()
+        << " (glazing between rooms, not ports: light reaches them through the exterior openings)\n";
+    for (const InteriorWindowInfo& w : s.interior_windows)
+      out << "  " << std::left << std::setw(20) << w.name << std::right << std::setw(10) << fixed(w.area_m2, 2)
+          << "  into room '" << w.adjoining_room << "'\n";
+  }
 
   out << "sensors  " << s.grids.size() << (s.grids.size() == 1 ? " grid" : " grids") << '\n';
   for (const GridInfo& g : s.grids) {

@@ -1,5 +1,6 @@
 // ModelSummary: what `check` (and the head of `run`) prints about a project: site, weather,
-// surfaces and areas per material, ports with orientation, sensor grids. Building it performs
+// surfaces and areas per material, ports with orientation, roof lights, interior windows,
+// sensor grids. Building it performs
 // every validation (weather header, geometry, Embree scene), so a summary exists only for a
 // valid model.
 #pragma once
@@ -36,6 +37,20 @@ struct PortInfo {
   double tilt_deg = 0;     ///< of the outward normal from the zenith (90 = vertical window)
 };
 
+/// A roof light of the room generator (its glazing is also listed among the ports).
+struct RoofLightInfo {
+  std::string name;          ///< "<room>.<roof light>", the glazing's surface name
+  double area_m2 = 0;
+  double well_depth_m = 0;   ///< 0: flush with the ceiling
+};
+
+/// A window between two rooms: glazing, not a port (project::interior_windows).
+struct InteriorWindowInfo {
+  std::string name;          ///< "<room>.<window>", the glazing's surface name
+  std::string adjoining_room;
+  double area_m2 = 0;
+};
+
 struct GridInfo {
   std::string name;
   std::size_t sensors = 0;
@@ -59,6 +74,8 @@ struct ModelSummary {
   std::size_t surface_count = 0;
   std::size_t triangle_count = 0;
   std::vector<PortInfo> ports;
+  std::vector<RoofLightInfo> roof_lights;
+  std::vector<InteriorWindowInfo> interior_windows;
   std::vector<GridInfo> grids;
   SceneDescription scene;
 };

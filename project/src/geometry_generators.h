@@ -11,6 +11,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/project/project.h"
+#include "window_frame.h"
 
 namespace dayphoton::project::detail {
 
@@ -38,18 +39,32 @@ class MaterialLookup {
 /// Report an error, quoting the source line when the location names a readable file.
 void report(Diagnostics& diag, const SourceLocation& where, const std::string& message);
 
-/// What daylight systems change in a room (system_generators.h).
+/// An opening that an adjoining room's interior window cuts into a wall of this room, in
+/// this room's wall frame (interior_windows.cpp).
+struct WallHole {
+  Wall wall = Wall::South;
+  WallRect rect;
+};
+
+/// What daylight systems and adjoining rooms change in a room (system_generators.h,
+/// interior_windows.cpp).
 struct RoomCutouts {
   /// Convex polygons in the ceiling plane (light-pipe openings), each containing the
   /// centroid of its vertices; inside the ceiling and apart (the systems check).
   std::vector<std::vector<Vec3>> ceiling_holes;
-  /// Windows inside an exterior system's port enclosure: glazing, but not ports.
+  /// What cut each of ceiling_holes ("light_pipe 'pipe'"), for messages.
+  std::vector<std::string> ceiling_hole_owners;
+  /// Windows inside an exterior system's port enclosure, and interior windows: glazing,
+  /// but not ports.
   std::set<std::string> windows_without_port;
+  /// Interior windows of adjoining rooms: cut out of this room's walls too.
+  std::vector<WallHole> wall_holes;
 };
 
 /// Room box (normals into the room) with its windows cut out of the named walls; each
 /// window becomes a glazing Surface with port = true (unless `cutouts` says otherwise) and
-/// its normal into the room; the ceiling has the cutouts' openings.
+/// its normal into the room; the walls also have the cutouts' wall holes, the ceiling the
+/// cutouts' openings and the roof lights' (generate_roof_lights).
 void generate_room(const RoomSpec& room, const RoomCutouts& cutouts, MaterialLookup& materials,
                    Diagnostics& diag, std::vector<Surface>& out);
 
@@ -59,6 +74,37 @@ void generate_room(const RoomSpec& room, const RoomCutouts& cutouts, MaterialLoo
 /// straight through (only glass, glazing and opening do). `what` names the window.
 int window_material(const WindowSpec& w, const std::string& what, MaterialLookup& materials,
                     Diagnostics& diag);
+
+/// A rectangle of a room's ceiling: x in [x0, x1], y in [y0, y1], room coordinates (from
+/// the room's origin corner).
+struct CeilingRect {
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+};
+
+/// The roof lights of `room` (roof_light_generator.cpp): each valid one (inside the ceiling,
+/// apart from the others and from the light-pipe openings in `cutouts`) adds its glazing (a
+/// port, normal down) and the walls of its light well to `out`, and its opening to the
+/// returned list; each invalid one is reported at the offending key and left out.
+std::vector<CeilingRect> generate_roof_lights(const RoomSpec& room, const RoomCutouts& cutouts,
+                                              MaterialLookup& materials, Diagnostics& diag,
+                                              std::vector<Surface>& out);
+
+/// An interior window (interior_windows.cpp): a window of `room` whose rectangle lies in the
+/// wall of `adjoining` that coincides with its own wall (same plane, `adjoining` on the far
+/// side).
+struct InteriorOpening {
+  const RoomSpec* room = nullptr;
+  const WindowSpec* window = nullptr;
+  const RoomSpec* adjoining = nullptr;
+  Wall adjoining_wall = Wall::North;
+  WallRect rect_in_adjoining;  ///< the window in the adjoining room's wall frame
+};
+
+/// Every interior window of `rooms`, in file order. With `diag`, reports (at the window) a
+/// window that lies partly in another room's wall, and two interior windows that overlap
+/// (the same opening defined from both rooms). Windows that do not fit their own wall are
+/// left to generate_room.
+std::vector<InteriorOpening> find_interior_windows(const std::vector<RoomSpec>& rooms, Diagnostics* diag);
 
 /// Axis-aligned box rotated about +Z (counter-clockwise for positive rotation_deg) around
 /// its origin corner; six faces with outward normals.

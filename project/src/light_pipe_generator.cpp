@@ -85,6 +85,7 @@ bool generate_light_pipe(const SystemSpec& spec, const LightPipeSpec& p, const R
     out.push_back(std::move(surface));
   };
   cutouts.ceiling_holes.push_back(bottom);
+  cutouts.ceiling_hole_owners.push_back(what);
   add("diffuser", diffuser, bottom, {0, 0, -1}, false);
   const int n = p.sides;
   for (int k = 0; k < n; ++k) {

@@ -473,6 +473,7 @@ class Loader {
       m.finish();
     }
     for_each_item(r, "windows", [&](const YamlNode& n) { room.windows.push_back(read_window(n, m_window_names)); });
+    for_each_item(r, "roof_lights", [&](const YamlNode& n) { room.roof_lights.push_back(read_roof_light(n)); });
     r.finish();
     m_project.geometry.rooms.push_back(std::move(room));
   }
@@ -487,9 +488,19 @@ class Loader {
       room->location = r.location_of("room");
       m_room_uses.push_back({room->value, room->location});
     }
-    if (r.read_string("name", w.name)) names.add(w.name, r.location_of("name"), m_reporter);
+    if (r.read_string("name", w.name)) {
+      names.add(w.name, r.location_of("name"), m_reporter);
+      if (m_roof_light_names.contains(w.name)) opening_name_clash(w.name, r.location_of("name"));
+    }
     std::string wall;
-    if (r.read_choice("wall", wall))
+    if (const YamlEntry* e = r.node().find("wall");
+        e && e->value.is_scalar() && (e->value.scalar == "roof" || e->value.scalar == "ceiling")) {
+      // The generator's openings in the ceiling are roof lights, not windows.
+      m_reporter.error(e->value.location, "a window is in a wall (south, north, east or west), not in the " +
+                                              e->value.scalar + ": an opening in the ceiling is a roof light "
+                                              "(`roof_lights` of the room)");
+      r.take("wall");
+    } else if (r.read_choice("wall", wall))
       w.wall = wall == "south" ? Wall::South : wall == "north" ? Wall::North
                : wall == "east" ? Wall::East : Wall::West;
     r.read_number("width", w.width_m);
@@ -502,6 +513,33 @@ class Loader {
     r.read_number("maintenance_factor", w.maintenance_factor);
     r.finish();
     return w;
+  }
+
+  RoofLightSpec read_roof_light(const YamlNode& node) {
+    RoofLightSpec l;
+    l.location = node.location;
+    for (const auto& e : node.entries) l.key_locations.push_back({e.key, e.value.location});
+    ParamReader r(node, schema_section("roof light"), m_reporter);
+    if (r.read_string("name", l.name)) {
+      m_roof_light_names.add(l.name, r.location_of("name"), m_reporter);
+      if (m_window_names.contains(l.name)) opening_name_clash(l.name, r.location_of("name"));
+    }
+    r.read_number("width", l.width_m);
+    r.read_number("length", l.length_m);
+    double offset = 0;
+    if (r.read_number("offset_x", offset)) l.offset_x_m = offset;
+    if (r.read_number("offset_y", offset)) l.offset_y_m = offset;
+    r.read_number("well_depth", l.well_depth_m);
+    if (r.has("well_material") && r.read_string("well_material", l.well_material))
+      use_material(r, "well_material", l.well_material);
+    if (r.read_string("material", l.material)) use_material(r, "material", l.material);
+    r.finish();
+    return l;
+  }
+
+  /// Windows and roof lights both name surfaces "<room>.<name>" and results: one name each.
+  void opening_name_clash(const std::string& name, const SourceLocation& where) {
+    m_reporter.error(where, "'" + name + "' names both a window and a roof light (each opening needs its own name)");
   }
 
   PolygonSpec read_polygon(const YamlNode& node, NameSet& names) {
@@ -1326,6 +1364,7 @@ class Loader {
   const LoadOptions& m_options;
   SourceLocation m_from_weather_location;  ///< of site.from_weather (its check needs the weather key)
   NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
+      m_roof_light_names{"roof light"},
       m_polygon_names{"polygon"}, m_box_names{"box"}, m_mesh_names{"mesh"},
       m_sensor_names{"sensor set"}, m_variant_names{"variant"}, m_system_names{"system"};
   // Sensor sets are folders beside `variants/` and `operated/` (docs/outputs.md); variants

@@ -170,7 +170,8 @@ std::vector<SectionSchema> build_schema() {
       P("origin", T::Vec3, "(min x, min y, floor) corner").unit("m").def("[0, 0, 0]"),
       P("size", T::Vec3, "x, y, z extents").unit("m").above(0).required(),
       P("materials", T::Section, "surface materials").section("room materials").required(),
-      P("windows", T::SectionList, "openings glazed with a material; they become photon ports").section("window"),
+      P("windows", T::SectionList, "openings glazed with a material; they become photon ports (interior windows, in a wall shared with another room, stay glazing)").section("window"),
+      P("roof_lights", T::SectionList, "rectangular openings in the ceiling, glazed flush or at the top of a light well; the glazing becomes a photon port").section("roof light"),
   }});
   s.push_back({"room materials", "materials of a room's surfaces (names from `materials`)", {
       P("floor", T::String, "floor material").required(),
@@ -191,6 +192,16 @@ std::vector<SectionSchema> build_schema() {
       P("material", T::String, "glazing material").required(),
       P("frame_factor", T::Number, "glazed fraction of the opening (the frame absorbs the rest); multiplies the glazing's transmittance").range(0, 1).above(0).def("1"),
       P("maintenance_factor", T::Number, "transmittance left by dirt on the glazing; multiplies the glazing's transmittance").range(0, 1).above(0).def("1"),
+  }});
+  s.push_back({"roof light", "a rectangular opening in a room's ceiling (room coordinates: x from the west wall, y from the south wall)", {
+      P("name", T::String, "unique roof light name").required(),
+      P("width", T::Number, "extent along x").unit("m").above(0).required(),
+      P("length", T::Number, "extent along y").unit("m").above(0).required(),
+      P("offset_x", T::Number, "from the room's west wall (min x) to the near edge; centred if absent").unit("m").at_least(0),
+      P("offset_y", T::Number, "from the room's south wall (min y) to the near edge; centred if absent").unit("m").at_least(0),
+      P("well_depth", T::Number, "height of the light well from the ceiling up to the glazing; 0: glazing flush with the ceiling").unit("m").at_least(0).def("0"),
+      P("well_material", T::String, "walls of the light well (default: the room's ceiling material)"),
+      P("material", T::String, "glazing material (glass, opening or translucent)").required(),
   }});
   s.push_back({"polygon", "a planar polygon; normal by counter-clockwise winding", {
       P("name", T::String, "unique polygon name").required(),

@@ -14,12 +14,16 @@
 // and a sill and a head strip: 18 - 6 = 12 m^2 of wall. Each window becomes a glazing
 // Surface (port = true) in the wall plane with the same inward normal.
 //
-// Daylight systems may change a room (RoomCutouts): light pipes cut convex openings into
-// the ceiling (ceiling_pieces below), and a window inside an exterior system's port
-// enclosure stays glazing but is no longer a port.
+// Daylight systems and adjoining rooms may change a room (RoomCutouts): light pipes cut
+// convex openings into the ceiling (ceiling_pieces below), a window inside an exterior
+// system's port enclosure stays glazing but is no longer a port, and an interior window
+// (interior_windows.cpp) is glazing, not a port, and is cut out of the adjoining room's
+// wall as well. Roof lights (roof_light_generator.cpp) cut rectangular openings into the
+// ceiling.
 //
 // Surface names: "<room>.floor", "<room>.ceiling" (".1", ".2", ... with openings),
-// "<room>.wall_<dir>" (".1", ".2", ... when split), "<room>.<window name>".
+// "<room>.wall_<dir>" (".1", ".2", ... when split), "<room>.<window name>", and the roof
+// lights' (roof_light_generator.cpp).
 #include "dayphoton/core/diagnostics.h"
 #include <algorithm>
 #include <cmath>
@@ -103,14 +107,16 @@ std::vector<Vec3> facing(std::vector<Vec3> polygon, const Vec3& normal) {
   return polygon;
 }
 
-/// The ceiling rectangle [0, sx] x [0, sy] (room coordinates, at height z) minus convex
-/// holes (each containing its vertex centroid, as the light pipe's regular polygons do):
-/// the rectangle minus the holes' bounding boxes is split like a wall (wall_pieces), and
-/// the ring between each bounding box and its hole is cut into one piece per hole edge by
-/// the rays from the hole's centre through its vertices (each piece: hole edge, two ray
-/// segments and the box boundary between them, corners included). Every piece is planar
-/// and simple; pieces of zero area (a hole edge lying on its box) are dropped.
+/// The ceiling rectangle [0, sx] x [0, sy] (room coordinates, at height z) minus
+/// rectangular openings (roof lights, room coordinates) and convex holes (model coordinates,
+/// each containing its vertex centroid, as the light pipe's regular polygons do): the
+/// rectangle minus the openings and the holes' bounding boxes is split like a wall
+/// (wall_pieces), and the ring between each bounding box and its hole is cut into one piece
+/// per hole edge by the rays from the hole's centre through its vertices (each piece: hole
+/// edge, two ray segments and the box boundary between them, corners included). Every piece
+/// is planar and simple; pieces of zero area (a hole edge lying on its box) are dropped.
 std::vector<std::vector<Vec3>> ceiling_pieces(const Vec3& origin, double sx, double sy, double z,
+                                              const std::vector<CeilingRect>& openings,
                                               const std::vector<std::vector<Vec3>>& holes) {
   std::vector<Rect> boxes;
   for (const auto& hole : holes) {
@@ -125,7 +131,9 @@ std::vector<std::vector<Vec3>> ceiling_pieces(const Vec3& origin, double sx, dou
   }
   std::vector<std::vector<Vec3>> pieces;
   const Vec3 down{0, 0, -1};
-  for (const Rect& r : wall_pieces(sx, sy, boxes))
+  std::vector<Rect> cut = boxes;
+  for (const CeilingRect& r : openings) cut.push_back({r.x0, r.x1, r.y0, r.y1});
+  for (const Rect& r : wall_pieces(sx, sy, cut))
     pieces.push_back(facing({origin + Vec3{r.u0, r.v0, z}, origin + Vec3{r.u1, r.v0, z},
                              origin + Vec3{r.u1, r.v1, z}, origin + Vec3{r.u0, r.v1, z}},
                             down));
@@ -203,13 +211,17 @@ void generate_room(const RoomSpec& room, const RoomCutouts& cutouts, MaterialLoo
   // Floor (normal +z) and ceiling (normal -z), as in office.rad.
   out.push_back({room.name + ".floor", floor_mat,
                  {o, o + Vec3{s.x, 0, 0}, o + Vec3{s.x, s.y, 0}, o + Vec3{0, s.y, 0}}, false, room.location});
-  if (cutouts.ceiling_holes.empty()) {
+  // Roof lights: glazing and light wells; their openings are cut out of the ceiling.
+  const std::vector<CeilingRect> roof_openings = generate_roof_lights(room, cutouts, materials, diag, out);
+  if (cutouts.ceiling_holes.empty() && roof_openings.empty()) {
     out.push_back({room.name + ".ceiling", ceiling_mat,
                    {o + Vec3{0, 0, s.z}, o + Vec3{0, s.y, s.z}, o + Vec3{s.x, s.y, s.z}, o + Vec3{s.x, 0, s.z}},
                    false, room.location});
   } else {
-    // Openings of light pipes (validated by their generator: inside the ceiling, apart).
-    const auto pieces = ceiling_pieces(o, s.x, s.y, s.z, cutouts.ceiling_holes);
+    // Openings of light pipes (validated by their generator: inside the ceiling, apart) and
+    // of roof lights (validated by theirs: inside the ceiling, apart from each other and
+    // from the pipes).
+    const auto pieces = ceiling_pieces(o, s.x, s.y, s.z, roof_openings, cutouts.ceiling_holes);
     for (std::size_t i = 0; i < pieces.size(); ++i)
       out.push_back({room.name + ".ceiling." + std::to_string(i + 1), ceiling_mat, pieces[i], false,
                      room.location});
@@ -276,10 +288,16 @@ void generate_room(const RoomSpec& room, const RoomCutouts& cutouts, MaterialLoo
     placed[wall_index].push_back(&w);
     const int glass_mat = window_material(w, wwhat, materials, diag);
     // A window inside a daylight system's port enclosure is glazing, not a port (the
-    // enclosure's openings are the ports; docs/daylight-systems.md).
+    // enclosure's openings are the ports; docs/daylight-systems.md); so is an interior
+    // window (light reaches it through the rooms' exterior openings).
     const bool port = cutouts.windows_without_port.count(w.name) == 0;
     out.push_back({room.name + "." + wname, glass_mat, wall_rectangle(frame, r), port, w.location});
   }
+
+  // Interior windows of adjoining rooms open through this room's walls too (validated by
+  // find_interior_windows: inside the wall, apart from this room's own windows).
+  for (const WallHole& h : cutouts.wall_holes)
+    holes[static_cast<int>(h.wall)].push_back({h.rect.u0, h.rect.u1, h.rect.v0, h.rect.v1});
 
   // Walls around their openings.
   for (Wall wall : {Wall::South, Wall::North, Wall::East, Wall::West}) {

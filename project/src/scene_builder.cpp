@@ -1,8 +1,10 @@
 // build_scene_description: Project -> SceneDescription (the geometry stage of project.h).
 //
 // Order: materials are copied; daylight systems are generated (system_generators.h; an
-// `opening` material is appended for port enclosures), then rooms (windows cut out,
-// glazing as ports unless an enclosure took over, light-pipe openings in ceilings), free
+// `opening` material is appended for port enclosures), interior windows are found
+// (interior_windows.cpp; a system outside one is an error), then rooms (windows cut out,
+// glazing as ports unless an enclosure took over or the window is interior, interior windows
+// of adjoining rooms cut out too, light-pipe and roof-light openings in ceilings), free
 // polygons, boxes, OBJ meshes and the systems' surfaces, all in model coordinates and validated (finite vertices,
 // non-zero area, planarity within 1e-3 m x max(1, size) where size is the largest extent of
 // the polygon's bounding box, triangulable); sensor grids and point sets are generated;
@@ -103,6 +105,12 @@ void generate_polygon(const PolygonSpec& spec, detail::MaterialLookup& materials
   out.push_back(std::move(s));
 }
 
+bool written(const SystemSpec& sys, const std::string& key) {
+  for (const auto& kv : sys.key_locations)
+    if (kv.first == key) return true;
+  return false;
+}
+
 void rotate_scene(SceneDescription& scene, double north_deg) {
   if (north_deg == 0) return;
   for (Surface& s : scene.surfaces)
@@ -135,6 +143,19 @@ SceneDescription build_scene_description(const Project& project) {
   // being ports inside an enclosure); their surfaces come after the meshes.
   detail::SystemOutput systems;
   detail::generate_systems(project, materials, scene.materials, diag, systems);
+  // Interior windows: glazing, not ports, cut out of the adjoining room's wall too. A system
+  // outside such a window would stand in the adjoining room (and an enclosure's ports there).
+  for (const detail::InteriorOpening& i : detail::find_interior_windows(g.rooms, &diag)) {
+    systems.rooms[i.room->name].windows_without_port.insert(i.window->name);
+    systems.rooms[i.adjoining->name].wall_holes.push_back({i.adjoining_wall, i.rect_in_adjoining});
+    for (const SystemSpec& sys : g.systems)
+      if (sys.enabled && sys.mount.window == i.window->name && sys.mount.side == MountSide::Exterior &&
+          !std::holds_alternative<LightPipeSpec>(sys.params))
+        detail::report(diag, sys.location_of(written(sys, "side") ? "side" : "window"),
+                       std::string(sys.type_name()) + " '" + sys.name + "' is outside window '" + i.window->name +
+                           "', an interior window: outside is room '" + i.adjoining->name +
+                           "'; mount it inside (side: interior) or model it in that room");
+  }
   std::vector<Surface> surfaces;
   static const detail::RoomCutouts unchanged;
   for (const RoomSpec& room : g.rooms) {

@@ -1,5 +1,5 @@
-// SystemSpec helpers (project.h): the project-file names of a system's type and port mode,
-// and the location of its keys, used by the generators' located messages.
+// SystemSpec and RoofLightSpec helpers (project.h): the project-file names of a system's
+// type and port mode, and the location of keys, used by the generators' located messages.
 #include <type_traits>
 
 #include "dayphoton/project/project.h"
@@ -23,6 +23,12 @@ const char* SystemSpec::type_name() const {
 }
 
 SourceLocation SystemSpec::location_of(const std::string& key) const {
+  for (const auto& [k, loc] : key_locations)
+    if (k == key) return loc;
+  return location;
+}
+
+SourceLocation RoofLightSpec::location_of(const std::string& key) const {
   for (const auto& [k, loc] : key_locations)
     if (k == key) return loc;
   return location;

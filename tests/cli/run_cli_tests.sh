@@ -32,6 +32,8 @@ check_case() {
 check_case version 0 --version
 check_case help 0 --help
 check_case check_office 0 check projects/office/project.yaml
+check_case check_roof_light 0 check projects/roof_light/project.yaml
+check_case check_corridor 0 check projects/corridor/project.yaml
 check_case check_black_room 0 check tests/cli/cases/black_room.yaml
 check_case check_black_room_surface 1 check tests/cli/cases/black_room_surface.yaml
 check_case check_typos 1 check tests/cli/cases/typos.yaml

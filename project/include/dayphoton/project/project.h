@@ -88,13 +88,40 @@ struct WindowSpec {
   SourceLocation location;
 };
 
+/// A roof light (skylight): a rectangular opening in a room's ceiling, its glazing either
+/// flush with the ceiling (well_depth_m = 0) or at the top of a light well of that depth
+/// whose four walls rise from the ceiling opening (docs/daylight-systems.md, "Roof lights").
+/// The glazing is a photon port facing down into the room. Placed in room coordinates: x
+/// from the room's west wall (min x) over width_m, y from its south wall (min y) over
+/// length_m; centred along an axis whose offset is absent.
+struct RoofLightSpec {
+  std::string name;
+  double width_m = 0;   ///< along x
+  double length_m = 0;  ///< along y
+  std::optional<double> offset_x_m, offset_y_m;  ///< to the near edges; centred if absent
+  double well_depth_m = 0;     ///< ceiling to glazing; 0 = flush
+  std::string well_material;   ///< walls of the well; empty = the room's ceiling material
+  std::string material;        ///< glazing material
+  SourceLocation location;
+  /// Where each key was written, for located errors; see location_of().
+  std::vector<std::pair<std::string, SourceLocation>> key_locations;
+
+  /// Location of `key` as written, else of the roof light.
+  SourceLocation location_of(const std::string& key) const;
+};
+
 struct RoomSpec {
   std::string name;
   Vec3 origin{0, 0, 0};   ///< the room's (min x, min y, floor) corner, metres
   Vec3 size_m{0, 0, 0};   ///< x, y, z extents
   std::string floor_material, ceiling_material;
   std::string wall_material[4];  ///< indexed by Wall
+  /// Windows in the walls. A window in a wall that another room shares (same plane, the
+  /// other room on the far side) is an INTERIOR window when its rectangle lies inside that
+  /// room's wall: both walls are cut and its glazing is ordinary glazing, not a port
+  /// (interior_windows(); docs/daylight-systems.md, "Interior windows").
   std::vector<WindowSpec> windows;
+  std::vector<RoofLightSpec> roof_lights;
   SourceLocation location;
 };
 
@@ -533,13 +560,27 @@ Project apply_variant(const Project& base, const VariantSpec& variant);
 /// the run log and summary.json.
 std::vector<std::string> variant_changes(const VariantSpec& variant);
 
-/// Generate the scene: rooms with their windows cut out (windows become glazing ports),
+/// A window between two rooms (see RoomSpec::windows): it belongs to `room` and opens into
+/// `adjoining_room`.
+struct InteriorWindow {
+  std::string room, window, adjoining_room;
+};
+
+/// The interior windows of `geometry`, in file order. Reports nothing: windows that do not
+/// fit, or lie partly in another room's wall, are errors of build_scene_description and are
+/// left out here.
+std::vector<InteriorWindow> interior_windows(const Geometry& geometry);
+
+/// Generate the scene: rooms with their windows cut out (windows become glazing ports,
+/// interior windows are cut out of both rooms' walls and stay ordinary glazing; roof lights
+/// cut the ceiling, their glazing a port at the top of their well),
 /// polygons, boxes, OBJ meshes, daylight systems (docs/daylight-systems.md; systems may cut
 /// the ceiling, add `opening` port enclosures and then make their window an ordinary
 /// surface), sensor grids and point files, all rotated by the site's
 /// rotation_to_true_north_deg about +Z. Validates the geometry (non-planar polygons,
-/// windows outside their wall or overlapping, unknown materials, degenerate faces, NaN/Inf)
-/// and throws InputError with located messages.
+/// windows outside their wall, overlapping or lying partly in another room's wall, roof
+/// lights outside the ceiling or overlapping each other or a light pipe, unknown materials,
+/// degenerate faces, NaN/Inf) and throws InputError with located messages.
 SceneDescription build_scene_description(const Project& project);
 
 }  // namespace dayphoton::project
