@@ -12,6 +12,7 @@
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sensor_support.h"
+#include "dayphoton/study/placement_check.h"
 #include "dayphoton/weather/epw_reader.h"
 
 namespace dayphoton::app {
@@ -90,18 +91,27 @@ ModelSummary summarize_model(const project::Project& proj) {
       s.materials[surface.material].surfaces += 1;
       s.materials[surface.material].area_m2 += area;
     }
-    if (surface.port) {
-      // Port normals face into the room; the window faces the opposite way.
-      const Vec3 outward = -polygon_normal(surface.vertices);
-      PortInfo port;
-      port.name = surface.name;
-      port.area_m2 = area;
-      port.azimuth_deg = rad_to_deg(std::atan2(outward.x, outward.y));
-      if (port.azimuth_deg < 0) port.azimuth_deg += 360.0;
-      port.tilt_deg = rad_to_deg(std::acos(std::clamp(outward.z, -1.0, 1.0)));
-      s.ports.push_back(port);
-    }
   }
+  // Ports as the engine sees them: Port::normal points into the room whichever way the
+  // polygon was drawn (engine/port_facing.h); the window faces the opposite way.
+  for (std::size_t k = 0; k < scene.ports().size(); ++k) {
+    const engine::Port& p = scene.ports()[k];
+    const Vec3 outward = p.normal * -1.0;
+    PortInfo port;
+    port.name = p.name;
+    port.area_m2 = p.area_m2;
+    port.azimuth_deg = rad_to_deg(std::atan2(outward.x, outward.y));
+    if (port.azimuth_deg < 0) port.azimuth_deg += 360.0;
+    port.tilt_deg = rad_to_deg(std::acos(std::clamp(outward.z, -1.0, 1.0)));
+    port.room_side = study::describe_port_facing(scene, k);
+    s.ports.push_back(port);
+  }
+  // Ports that face no decidable way, sensors outside every room or in a solid, no port or
+  // no sensor: located errors (study/placement_check.h); dropped sensors are listed.
+  const study::PlacementCheck placement =
+      study::check_placement(scene, s.scene.grids, SourceLocation{proj.path, 1, 1});
+  for (const study::SensorSetPlacement& set : placement.sets)
+    if (set.dropped) s.placement_lines.push_back(set.description);
   s.triangle_count = scene.triangle_count();
   std::vector<engine::Material> models;
   for (const MaterialSpec& m : s.scene.materials) models.push_back(engine::Material::from_spec(m));
@@ -110,7 +120,7 @@ ModelSummary summarize_model(const project::Project& proj) {
   for (const SensorGrid& grid : s.scene.grids) {
     GridInfo info;
     info.name = grid.name;
-    info.sensors = grid.points.size();
+    info.sensors = grid.points.size();  // after dropping (drop_occluded)
     info.columns = grid.columns;
     info.rows = grid.rows;
     info.spacing_m = grid.spacing_m;
@@ -178,11 +188,13 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
   out << "ports    " << s.ports.size() << '\n';
   if (!s.ports.empty())
     out << "  " << std::left << std::setw(20) << "name" << std::right << std::setw(10) << "area_m2"
-        << std::setw(13) << "azimuth_deg" << std::setw(10) << "tilt_deg" << "  facing\n";
+        << std::setw(13) << "azimuth_deg" << std::setw(10) << "tilt_deg" << "  facing  room side\n";
   for (const PortInfo& p : s.ports)
     out << "  " << std::left << std::setw(20) << p.name << std::right << std::setw(10)
         << fixed(p.area_m2, 2) << std::setw(13) << fixed(p.azimuth_deg, 1) << std::setw(10)
-        << fixed(p.tilt_deg, 1) << "  " << compass_point(p.azimuth_deg) << '\n';
+        << fixed(p.tilt_deg, 1) << "  " << std::left << std::setw(6)
+        << (p.tilt_deg < 0.5 ? "up" : p.tilt_deg > 179.5 ? "down" : compass_point(p.azimuth_deg)) << "  "
+        << p.room_side << std::right << '\n';
 
   out << "sensors  " << s.grids.size() << (s.grids.size() == 1 ? " grid" : " grids") << '\n';
   for (const GridInfo& g : s.grids) {
@@ -193,6 +205,7 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
     if (g.planar) out << " on the plane at " << fixed(g.plane_height_m, 2) << " m";
     out << ", " << g.estimate << '\n';
   }
+  for (const std::string& line : s.placement_lines) out << "  " << line << '\n';
 }
 
 }  // namespace dayphoton::app

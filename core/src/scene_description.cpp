@@ -15,6 +15,16 @@ const char* material_type_name(MaterialType type) {
   return "unknown";
 }
 
+const char* port_facing_name(PortFacing facing) {
+  switch (facing) {
+    case PortFacing::Winding: return "winding";
+    case PortFacing::Auto: return "auto";
+    case PortFacing::In: return "in";
+    case PortFacing::Out: return "out";
+  }
+  return "unknown";
+}
+
 int SceneDescription::find_material(const std::string& name) const {
   for (std::size_t i = 0; i < materials.size(); ++i)
     if (materials[i].name == name) return static_cast<int>(i);

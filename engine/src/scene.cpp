@@ -11,6 +11,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/polygon.h"
+#include "dayphoton/engine/port_facing.h"
 #include "embree_accel.h"
 
 namespace dayphoton::engine {
@@ -151,7 +152,18 @@ Scene Scene::build(const SceneDescription& description) {
     impl->bounds = {lo, hi};
   }
   impl->accel = std::make_unique<EmbreeAccel>(vertices_xyz, indices);
-  return Scene(std::move(impl));
+  // Ports face either way: decide each one's room side from the built scene (port_facing.h).
+  Scene scene(std::move(impl));
+  PortSet& ports = scene.m_impl->ports;
+  for (std::size_t k = 0; k < ports.size(); ++k) {
+    const PortFacing facing = scene.description().surfaces[static_cast<std::size_t>(ports[k].surface)].facing;
+    if (facing == PortFacing::Winding) continue;
+    const PortSideTest test = test_port_sides(scene, ports[k]);
+    const PortSideDecision decision = decide_port_side(facing, test);
+    ports.orient(k, decision.against_winding, decision.reason, test.sky_fraction_winding,
+                 test.sky_fraction_opposite);
+  }
+  return scene;
 }
 
 std::optional<Hit> Scene::intersect(const Ray& ray) const {

@@ -91,6 +91,8 @@ struct PolygonSpec {
   std::vector<Vec3> vertices;
   std::string material;
   bool port = false;
+  /// Ports: which side is the room (`facing`: auto, in = the winding normal points into it, out).
+  PortFacing facing = PortFacing::Auto;
   SourceLocation location;
 };
 
@@ -116,6 +118,8 @@ struct MeshSpec {
   double scale = 1;
   double rotation_deg = 0;  ///< about +Z, applied after scale, before translate
   bool port = false;
+  /// Ports: which side of every face is the room (`facing`: auto, in, out), as for polygons.
+  PortFacing facing = PortFacing::Auto;
   SourceLocation location;
 };
 
@@ -299,6 +303,7 @@ struct GridSpec {
   double inset_m = 0.5;
   double offset_m = 0;              ///< wall and rectangle grids: in front of the surface
   Vec3 normal{0, 0, 1};             ///< room and polygon grids
+  bool drop_occluded = false;       ///< drop sensors outside every room or inside a solid
   SourceLocation location;
   SourceLocation spacing_location;  ///< of `spacing` if written, else of the grid
 
@@ -315,6 +320,7 @@ struct PointsSpec {
   std::vector<SensorPoint> points;  ///< inline points
   std::string file;                 ///< resolved .pts path (x y z nx ny nz per line), or empty
   std::string file_as_written;
+  bool drop_occluded = false;  ///< drop sensors outside every room or inside a solid
   SourceLocation location;
 };
 
