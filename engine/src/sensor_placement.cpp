@@ -32,14 +32,14 @@ SensorPlacementTest test_sensor_placement(const Scene& scene, const SensorPoint&
   const SceneDescription& description = scene.description();
   const Vec3 origin = has_normal ? sensor.position + n * (10.0 * scene.ray_epsilon_m()) : sensor.position;
   std::map<int, int> back_hits;  // surface -> rays stopped at its back
-  for (const Vec3& d : directions) {
-    ++out.rays;
+  // Follows one ray through ports and transparent surfaces; true if it crossed a port.
+  auto trace = [&](const Vec3& d, bool count) {
     Ray ray{origin, d};
     bool crossed_port = false;
     for (int crossing = 0;; ++crossing) {
       const std::optional<Hit> hit = scene.intersect(ray);
       if (!hit) {
-        if (!crossed_port) ++out.sky_without_port;
+        if (count && !crossed_port) ++out.sky_without_port;
         break;
       }
       const Surface& surface = description.surfaces[static_cast<std::size_t>(hit->surface)];
@@ -50,13 +50,31 @@ SensorPlacementTest test_sensor_placement(const Scene& scene, const SensorPoint&
         ray.origin = scene.offset_ray_origin(hit->position, hit->normal, d);
         continue;
       }
-      if (surface.solid_face && !hit->front_face) {
+      if (count && surface.solid_face && !hit->front_face) {
         ++out.back_of_solid;
         ++back_hits[hit->surface];
       }
       break;
     }
-    if (crossed_port) ++out.through_port;
+    return crossed_port;
+  };
+  for (const Vec3& d : directions) {
+    ++out.rays;
+    if (trace(d, true)) ++out.through_port;
+  }
+  // A sensor that looks inside a solid gets a second chance: one ray aimed at the centroid of
+  // each port. One that reaches a port sees out (a room whose mesh faces point outward, a
+  // window too small for the spread directions to meet); inside a closed solid none does.
+  if (out.through_port == 0 && out.sky_without_port == 0 &&
+      out.back_of_solid >= SensorInsideSolidFraction * out.rays) {
+    for (const Port& port : scene.ports().ports()) {
+      const Vec3 to = port.centroid - origin;
+      if (!(length(to) > 0)) continue;
+      if (trace(normalize(to), false)) {
+        out.through_port = 1;
+        break;
+      }
+    }
   }
   if (out.sky_without_port >= SensorOutsideSkyFraction * out.rays) {
     out.placement = SensorPlacement::OutsideRooms;

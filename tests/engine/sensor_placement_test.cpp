@@ -84,6 +84,21 @@ TEST(SensorPlacement, PolygonsOfEitherWindingAreNotSolids) {
     EXPECT_EQ(placement_of(scene, {3, y, 0.8}), SensorPlacement::InRoom) << "y " << y;
 }
 
+TEST(SensorPlacement, AMeshRoomWoundOutwardIsARoom) {
+  // The office drawn as a mesh wound outward (every face a solid face, its back toward the
+  // room): a sensor facing the back wall sees only the back of solid faces in its
+  // hemisphere, but a ray aimed at the window reaches it.
+  SceneDescription d = test::office_room();
+  for (Surface& s : d.surfaces) {
+    std::reverse(s.vertices.begin(), s.vertices.end());
+    s.solid_face = !s.port;
+  }
+  const Scene scene = Scene::build(d);
+  const SensorPlacementTest t = test_sensor_placement(scene, {{3, 6, 1.5}, {0, 1, 0}});
+  EXPECT_EQ(t.placement, SensorPlacement::InRoom);
+  EXPECT_EQ(t.back_of_solid, t.rays);  // every spread ray met the back of a face
+}
+
 TEST(SensorPlacement, TenThousandSensorsTakeWellUnderASecond) {
   const Scene scene = Scene::build(office_with_column());
   std::vector<SensorPoint> sensors;

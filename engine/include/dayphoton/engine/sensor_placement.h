@@ -15,10 +15,13 @@
 //     wall);
 //   - inside a solid: no ray reaches a port or the sky, and at least SensorInsideSolidFraction
 //     of the rays stop at the back of a solid's face (Surface::solid_face: boxes and OBJ
-//     meshes, wound outward). Polygons count as thin, two-sided sheets (shelves, slats, walls
-//     of either winding), so the back of a polygon never means "inside";
+//     meshes, wound outward), and then a ray aimed at each port's centroid does not reach it
+//     either (a room drawn as a mesh wound outward sees its windows). Polygons count as thin,
+//     two-sided sheets (shelves, slats, walls of either winding), so the back of a polygon
+//     never means "inside";
 //   - in a room otherwise.
-// Cost: SensorPlacementRays rays (plus one per transparent surface crossed) per sensor.
+// Cost: SensorPlacementRays rays (plus one per transparent surface crossed) per sensor, and one
+// per port for a sensor that looks inside a solid.
 #pragma once
 
 #include <cstddef>
