@@ -109,7 +109,7 @@ ModelSummary summarize_model(const project::Project& proj) {
   // Ports that face no decidable way, sensors outside every room or in a solid, no port or
   // no sensor: located errors (study/placement_check.h); dropped sensors are listed.
   const study::PlacementCheck placement =
-      study::check_placement(scene, s.scene.grids, SourceLocation{proj.path, 1, 1});
+      study::check_placement(scene, s.scene.grids, proj);
   for (const study::SensorSetPlacement& set : placement.sets)
     if (set.dropped) s.placement_lines.push_back(set.description);
   s.triangle_count = scene.triangle_count();

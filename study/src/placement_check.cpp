@@ -8,6 +8,7 @@
 #include "dayphoton/engine/port_facing.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sensor_placement.h"
+#include "dayphoton/project/north_rotation.h"
 
 namespace dayphoton::study {
 namespace {
@@ -59,8 +60,10 @@ std::string describe_port_facing(const engine::Scene& scene, std::size_t index) 
 }
 
 PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGrid>& grids,
-                               const SourceLocation& project) {
+                               const project::Project& proj) {
   Diagnostics diag;
+  const SourceLocation project{proj.path, 1, 1};
+  const double north_deg = proj.site.rotation_to_true_north_deg();
   const SceneDescription& description = scene.description();
   if (scene.ports().empty())
     report(diag, project,
@@ -106,7 +109,8 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
         const std::size_t i = bad[j];
         const engine::SensorPlacementTest& t = tests[i];
         if (j > 0) m << "; ";
-        m << "sensor " << i << " at " << point_text(grid.points[i].position) << " m ";
+        m << "sensor " << i << " at " << point_text(project::world_to_model(grid.points[i].position, north_deg))
+          << " m ";
         if (t.placement == engine::SensorPlacement::OutsideRooms) {
           m << "sees the sky without a port in " << percent(double(t.sky_without_port) / t.rays) << " of its "
             << "hemisphere";

@@ -533,7 +533,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   // No port, no sensor, a port that faces no decidable way, sensors outside every room or in
   // a solid: located errors; sets with drop_occluded lose those sensors (placement_check.h).
   const PlacementCheck placement =
-      check_placement(scene, description.grids, SourceLocation{project.path, 1, 1});
+      check_placement(scene, description.grids, project);
   for (const SensorSetPlacement& set : placement.sets)
     if (set.dropped) {
       log.line(prefix + set.description);

@@ -43,7 +43,7 @@ Outcome check_text(const std::string& text) {
     const project::Project p = project::load_project_from_string(text, "placement.yaml");
     SceneDescription d = project::build_scene_description(p);
     const engine::Scene scene = engine::Scene::build(d);
-    out.check = check_placement(scene, d.grids, SourceLocation{p.path, 1, 1});
+    out.check = check_placement(scene, d.grids, p);
     out.grids = d.grids;
   } catch (const InputError& e) {
     for (const Diagnostic& d : e.diagnostics())
@@ -107,6 +107,20 @@ TEST(PlacementCheck, SensorsOutsideEveryRoomAreALocatedError) {
                          "sees the sky without a port in 100 % of its hemisphere; sensor 2 at (3, -2, 1) m sees the "
                          "sky without a port in 80 % of its hemisphere); they would read (almost) no light. Move "
                          "them into a room, or give the set 'drop_occluded: true' to leave them out");
+}
+
+TEST(PlacementCheck, SensorsAreNamedInModelCoordinates) {
+  // A site rotated 30 degrees: the scene is in world coordinates, the message in the
+  // coordinates the user wrote.
+  std::string rotated = Head;
+  rotated.replace(rotated.find("time_zone: -8}"), 14, "time_zone: -8, north: 30}");
+  const Outcome o = check_text(rotated + Office + R"(sensors:
+  points:
+    - name: probes
+      points: [[3, 4, 10, 0, 0, 1]]
+)");
+  ASSERT_EQ(o.errors.size(), 1u);
+  EXPECT_NE(o.errors[0].find("(sensor 0 at (3, 4, 10) m sees the sky"), std::string::npos) << o.errors[0];
 }
 
 TEST(PlacementCheck, AProjectWithoutPortsOrSensorsIsAnError) {

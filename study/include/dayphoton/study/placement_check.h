@@ -16,6 +16,7 @@
 
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/core/source_location.h"
+#include "dayphoton/project/project.h"
 
 namespace dayphoton::engine {
 class Scene;
@@ -40,12 +41,13 @@ struct PlacementCheck {
   std::size_t dropped() const;
 };
 
-/// Run the checks on `scene` (built from a description whose sensor sets are `grids`).
-/// Sets with drop_occluded lose their offending sensors (a full lattice then stops being
-/// one: columns = rows = 0). Throws InputError with every problem found; `project` locates
-/// the project-wide ones (no ports, no sensors).
+/// Run the checks on `scene` (built from `project`'s scene description, whose sensor sets are
+/// `grids`). Sets with drop_occluded lose their offending sensors (a full lattice then stops
+/// being one: columns = rows = 0). Throws InputError with every problem found; the
+/// project-wide ones (no ports, no sensors) are located at the project file's first line, and
+/// sensor positions are printed in model coordinates, as written.
 PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGrid>& grids,
-                               const SourceLocation& project);
+                               const project::Project& project);
 
 /// How port `port` of `scene` faces and why, for `check` ("into the room: the other side sees
 /// the sky (62 % of the test rays, this side 0 %)").
