@@ -100,10 +100,11 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
     }
     if (!bad.empty()) {
       std::ostringstream m;
-      m << "sensor set '" << grid.name << "': " << bad.size() << " of " << grid.points.size() << " sensors ";
-      if (set.outside > 0) m << set.outside << " outside every room";
-      if (set.outside > 0 && set.inside_solid > 0) m << " and ";
-      if (set.inside_solid > 0) m << set.inside_solid << " inside a solid";
+      m << "sensor set '" << grid.name << "': " << bad.size() << " of " << grid.points.size() << " sensors lie ";
+      if (set.outside > 0 && set.inside_solid > 0)
+        m << "outside every room (" << set.outside << ") or inside a solid (" << set.inside_solid << ")";
+      else
+        m << (set.outside > 0 ? "outside every room" : "inside a solid");
       m << " (";
       for (std::size_t j = 0; j < bad.size() && j < PlacementExamples; ++j) {
         const std::size_t i = bad[j];

@@ -108,8 +108,8 @@ fi
 "$bin" run tests/cli/cases/roof_light_polygons.yaml --output "$scratch/roof" --quiet >"$scratch/roof.out" 2>&1
 code=$?
 if [ "$code" -eq 0 ] && grep -q '"dropped_sensors"' "$scratch/roof/summary.json" &&
-   grep -q "sensor set 'workplane': 1 of 64 sensors 1 inside a solid" "$scratch/roof/run.log" &&
-   grep -q "sensor set 'probes': 1 of 2 sensors 1 outside every room" "$scratch/roof/run.log" &&
+   grep -q "sensor set 'workplane': 1 of 64 sensors lie inside a solid" "$scratch/roof/run.log" &&
+   grep -q "sensor set 'probes': 1 of 2 sensors lie outside every room" "$scratch/roof/run.log" &&
    [ "$(wc -l <"$scratch/roof/workplane/sensors.csv")" -eq 64 ] && [ "$(wc -l <"$scratch/roof/probes/sensors.csv")" -eq 2 ]; then
   echo "ok   run_drop_occluded"; passed=$((passed + 1))
 else

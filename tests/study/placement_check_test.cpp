@@ -64,7 +64,7 @@ sensors:
     - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5}
 )");
   ASSERT_EQ(o.errors.size(), 1u);
-  EXPECT_EQ(o.errors[0].rfind("17:7: sensor set 'workplane': 1 of 165 sensors 1 inside a solid (sensor 82 at (3, 4, "
+  EXPECT_EQ(o.errors[0].rfind("17:7: sensor set 'workplane': 1 of 165 sensors lie inside a solid (sensor 82 at (3, 4, "
                               "0.8) m sees only the back of 'column.",
                               0),
             0u)
@@ -103,7 +103,7 @@ TEST(PlacementCheck, SensorsOutsideEveryRoomAreALocatedError) {
 )");
   ASSERT_EQ(o.errors.size(), 1u);
   // Sensor 2, 2 m in front of the facade, sees the building in a fifth of its hemisphere.
-  EXPECT_EQ(o.errors[0], "15:7: sensor set 'probes': 2 of 3 sensors 2 outside every room (sensor 1 at (3, 4, 10) m "
+  EXPECT_EQ(o.errors[0], "15:7: sensor set 'probes': 2 of 3 sensors lie outside every room (sensor 1 at (3, 4, 10) m "
                          "sees the sky without a port in 100 % of its hemisphere; sensor 2 at (3, -2, 1) m sees the "
                          "sky without a port in 80 % of its hemisphere); they would read (almost) no light. Move "
                          "them into a room, or give the set 'drop_occluded: true' to leave them out");
