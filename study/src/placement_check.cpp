@@ -155,4 +155,14 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
   return out;
 }
 
+void check_project_placement(const project::Project& project) {
+  auto check_case = [](const project::Project& p) {
+    SceneDescription description = project::build_scene_description(p);
+    const engine::Scene scene = engine::Scene::build(description);
+    check_placement(scene, description.grids, p);
+  };
+  check_case(project);
+  for (const project::VariantSpec& v : project.variants) check_case(project::apply_variant(project, v));
+}
+
 }  // namespace dayphoton::study

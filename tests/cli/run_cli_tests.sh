@@ -103,6 +103,17 @@ else
   echo "FAIL run_cache_not_writable: exit $code"; cat "$scratch/nocache.out"; failed=$((failed + 1))
 fi
 
+# A sensor inside a solid without drop_occluded: run stops before it writes anything.
+sed 's/, drop_occluded: true//' tests/cli/cases/roof_light_polygons.yaml >"$scratch/column.yaml"
+"$bin" run "$scratch/column.yaml" --output "$scratch/column_results" --quiet >"$scratch/column.out" 2>&1
+code=$?
+if [ "$code" -eq 1 ] && [ ! -e "$scratch/column_results" ] &&
+   grep -q "column.yaml:31:7: error: sensor set 'workplane': 1 of 64 sensors lie inside a solid" "$scratch/column.out"; then
+  echo "ok   run_sensor_in_column"; passed=$((passed + 1))
+else
+  echo "FAIL run_sensor_in_column: exit $code"; cat "$scratch/column.out"; failed=$((failed + 1))
+fi
+
 # drop_occluded: run leaves out the sensor in the column and the probe above the roof, and
 # says so in run.log and summary.json (dropped_sensors) and the results hold the rest.
 "$bin" run tests/cli/cases/roof_light_polygons.yaml --output "$scratch/roof" --quiet >"$scratch/roof.out" 2>&1

@@ -49,6 +49,11 @@ struct PlacementCheck {
 PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGrid>& grids,
                                const project::Project& project);
 
+/// The checks for the base case and every variant of `project`, building each scene (and
+/// everything build_scene_description and Scene::build validate) and discarding it: `run` calls
+/// this for every project before it writes anything. Throws InputError.
+void check_project_placement(const project::Project& project);
+
 /// How port `port` of `scene` faces and why, for `check` ("into the room: the other side sees
 /// the sky (62 % of the test rays, this side 0 %)").
 std::string describe_port_facing(const engine::Scene& scene, std::size_t port);
