@@ -17,6 +17,7 @@
 #include "commands.h"
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
+#include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/study_runner.h"
 
 namespace dayphoton::app {
@@ -67,6 +68,9 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   load.output_folder_overridden = !options.output_dir.empty();
   std::vector<project::Project> projects;
   for (const std::string& path : options.project_paths) projects.push_back(project::load_project(path, load));
+  // Geometry and placement (no port, no sensor, sensors outside every room or in a solid,
+  // undecidable ports) of every case, before anything is written.
+  for (const project::Project& proj : projects) study::check_project_placement(proj);
 
   const study::ProgressStyle style =
       study::Progress::choose_style(&out == &std::cout && isatty(STDOUT_FILENO), options.quiet);

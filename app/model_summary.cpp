@@ -12,6 +12,7 @@
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sensor_support.h"
+#include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
 
@@ -141,18 +142,27 @@ ModelSummary summarize_model(const project::Project& proj) {
       s.materials[surface.material].surfaces += 1;
       s.materials[surface.material].area_m2 += area;
     }
-    if (surface.port) {
-      // Port normals face into the room; the window faces the opposite way.
-      const Vec3 outward = -polygon_normal(surface.vertices);
-      PortInfo port;
-      port.name = surface.name;
-      port.area_m2 = area;
-      port.azimuth_deg = rad_to_deg(std::atan2(outward.x, outward.y));
-      if (port.azimuth_deg < 0) port.azimuth_deg += 360.0;
-      port.tilt_deg = rad_to_deg(std::acos(std::clamp(outward.z, -1.0, 1.0)));
-      s.ports.push_back(port);
-    }
   }
+  // Ports as the engine sees them: Port::normal points into the room whichever way the
+  // polygon was drawn (engine/port_facing.h); the window faces the opposite way.
+  for (std::size_t k = 0; k < scene.ports().size(); ++k) {
+    const engine::Port& p = scene.ports()[k];
+    const Vec3 outward = p.normal * -1.0;
+    PortInfo port;
+    port.name = p.name;
+    port.area_m2 = p.area_m2;
+    port.azimuth_deg = rad_to_deg(std::atan2(outward.x, outward.y));
+    if (port.azimuth_deg < 0) port.azimuth_deg += 360.0;
+    port.tilt_deg = rad_to_deg(std::acos(std::clamp(outward.z, -1.0, 1.0)));
+    port.room_side = study::describe_port_facing(scene, k);
+    s.ports.push_back(port);
+  }
+  // Ports that face no decidable way, sensors outside every room or in a solid, no port or
+  // no sensor: located errors (study/placement_check.h); dropped sensors are listed.
+  const study::PlacementCheck placement =
+      study::check_placement(scene, s.scene.grids, proj);
+  for (const study::SensorSetPlacement& set : placement.sets)
+    if (set.dropped) s.placement_lines.push_back(set.description);
   auto area_of = [&](const std::string& surface_name) {
     for (const Surface& surface : s.scene.surfaces)
       if (surface.name == surface_name) return polygon_area_m2(surface.vertices);
@@ -163,6 +173,8 @@ ModelSummary summarize_model(const project::Project& proj) {
       const std::string name = room.name + "." + l.name;
       s.roof_lights.push_back({name, area_of(name), l.well_depth_m});
     }
+  for (const project::SystemSpec& system : proj.geometry.systems)
+    s.system_lines.push_back(project::describe_system_light(system));
   for (const project::InteriorWindow& w : project::interior_windows(proj.geometry)) {
     const std::string name = w.room + "." + w.window;
     s.interior_windows.push_back({name, w.adjoining_room, area_of(name)});
@@ -175,7 +187,7 @@ ModelSummary summarize_model(const project::Project& proj) {
   for (const SensorGrid& grid : s.scene.grids) {
     GridInfo info;
     info.name = grid.name;
-    info.sensors = grid.points.size();
+    info.sensors = grid.points.size();  // after dropping (drop_occluded)
     info.columns = grid.columns;
     info.rows = grid.rows;
     info.spacing_m = grid.spacing_m;
@@ -263,13 +275,15 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
   out << "ports    " << s.ports.size() << '\n';
   if (!s.ports.empty())
     out << "  " << std::left << std::setw(20) << "name" << std::right << std::setw(10) << "area_m2"
-        << std::setw(13) << "azimuth_deg" << std::setw(10) << "tilt_deg" << "  facing\n";
+        << std::setw(13) << "azimuth_deg" << std::setw(10) << "tilt_deg" << "  facing  room side\n";
   for (const PortInfo& p : s.ports)
     out << "  " << std::left << std::setw(20) << p.name << std::right << std::setw(10)
         << fixed(p.area_m2, 2) << std::setw(13)
         // A horizontal opening (a roof light) faces the zenith; it has no azimuth.
-        << (horizontal(p) ? std::string("-") : fixed(p.azimuth_deg, 1)) << std::setw(10) << fixed(p.tilt_deg, 1)
-        << "  " << (horizontal(p) ? std::string("up") : compass_point(p.azimuth_deg)) << '\n';
+        << (horizontal(p) ? std::string("-") : fixed(p.azimuth_deg, 1)) << std::setw(10)
+        << fixed(p.tilt_deg, 1) << "  " << std::left << std::setw(6)
+        << (p.tilt_deg < 0.5 ? "up" : p.tilt_deg > 179.5 ? "down" : compass_point(p.azimuth_deg)) << "  "
+        << p.room_side << std::right << '\n';
 
   if (!s.roof_lights.empty()) {
     out << "roof lights " << s.roof_lights.size() << " (glazing: the ports above)\n";
@@ -287,6 +301,11 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
           << "  into room '" << w.adjoining_room << "'\n";
   }
 
+  if (!s.system_lines.empty()) {
+    out << "systems  " << s.system_lines.size() << '\n';
+    for (const std::string& line : s.system_lines) out << "  " << line << '\n';
+  }
+
   out << "sensors  " << s.grids.size() << (s.grids.size() == 1 ? " grid" : " grids") << '\n';
   for (const GridInfo& g : s.grids) {
     out << "  " << std::left << std::setw(20) << g.name << std::right << std::setw(6) << g.sensors
@@ -296,6 +315,7 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
     if (g.planar) out << " on the plane at " << fixed(g.plane_height_m, 2) << " m";
     out << ", " << g.estimate << '\n';
   }
+  for (const std::string& line : s.placement_lines) out << "  " << line << '\n';
 }
 
 }  // namespace dayphoton::app

@@ -35,6 +35,7 @@ struct PortInfo {
   double area_m2 = 0;
   double azimuth_deg = 0;  ///< of the outward normal, clockwise from true north
   double tilt_deg = 0;     ///< of the outward normal from the zenith (90 = vertical window)
+  std::string room_side;   ///< which side is the room, and why (study::describe_port_facing)
 };
 
 /// A roof light of the room generator (its glazing is also listed among the ports).
@@ -76,12 +77,15 @@ struct ModelSummary {
   std::vector<PortInfo> ports;
   std::vector<RoofLightInfo> roof_lights;
   std::vector<InteriorWindowInfo> interior_windows;
+  /// One line per daylight system: how its light is modelled (project::describe_system_light).
+  std::vector<std::string> system_lines;
   std::vector<GridInfo> grids;
+  std::vector<std::string> placement_lines;  ///< sensor sets that dropped sensors (drop_occluded)
   SceneDescription scene;
 };
 
 /// Validate everything the project refers to and gather the summary; throws InputError
-/// (also for a surface estimate, simulation.point_estimate: surface, of a sensor that does not
+/// (also for the placement checks of study/placement_check.h, and for a surface estimate, simulation.point_estimate: surface, of a sensor that does not
 /// lie on a surface storing photons: it would silently read no photon light).
 ModelSummary summarize_model(const project::Project& proj);
 

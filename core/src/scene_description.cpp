@@ -20,6 +20,16 @@ std::string material_type_as_written(const MaterialSpec& material) {
   return material.type_as_written.empty() ? material_type_name(material.type) : material.type_as_written;
 }
 
+const char* port_facing_name(PortFacing facing) {
+  switch (facing) {
+    case PortFacing::Winding: return "winding";
+    case PortFacing::Auto: return "auto";
+    case PortFacing::In: return "in";
+    case PortFacing::Out: return "out";
+  }
+  return "unknown";
+}
+
 int SceneDescription::find_material(const std::string& name) const {
   for (std::size_t i = 0; i < materials.size(); ++i)
     if (materials[i].name == name) return static_cast<int>(i);

@@ -58,6 +58,16 @@ int PortSet::port_of_surface(int surface_index) const {
   return -1;
 }
 
+void PortSet::orient(std::size_t port_index, bool against_winding, PortSideReason reason,
+                     double sky_fraction_winding, double sky_fraction_opposite) {
+  Port& port = m_ports.at(port_index);
+  if (port.against_winding != against_winding) port.normal = port.normal * -1.0;
+  port.against_winding = against_winding;
+  port.side_reason = reason;
+  port.sky_fraction_winding = sky_fraction_winding;
+  port.sky_fraction_opposite = sky_fraction_opposite;
+}
+
 PortSample PortSet::sample(std::size_t port_index, double u1, double u2) const {
   if (port_index >= m_ports.size())
     throw std::out_of_range("port index " + std::to_string(port_index) + " out of range (" +

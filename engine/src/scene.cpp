@@ -9,8 +9,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <tbb/parallel_for.h>
+
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/polygon.h"
+#include "dayphoton/engine/port_facing.h"
 #include "embree_accel.h"
 
 namespace dayphoton::engine {
@@ -159,7 +162,25 @@ Scene Scene::build(const SceneDescription& description) {
     impl->bounds = {lo, hi};
   }
   impl->accel = std::make_unique<EmbreeAccel>(vertices_xyz, indices);
-  return Scene(std::move(impl));
+  // Ports face either way: decide each one's room side from the built scene (port_facing.h).
+  // The tests run in parallel (a mesh of port faces is tested face by face); orienting comes
+  // after all of them, so every test sees the same scene.
+  Scene scene(std::move(impl));
+  PortSet& ports = scene.m_impl->ports;
+  auto facing_of = [&](std::size_t k) {
+    return scene.description().surfaces[static_cast<std::size_t>(ports[k].surface)].facing;
+  };
+  std::vector<PortSideTest> tests(ports.size());
+  tbb::parallel_for(std::size_t(0), ports.size(), [&](std::size_t k) {
+    if (facing_of(k) != PortFacing::Winding) tests[k] = test_port_sides(scene, ports[k]);
+  });
+  for (std::size_t k = 0; k < ports.size(); ++k) {
+    if (facing_of(k) == PortFacing::Winding) continue;
+    const PortSideDecision decision = decide_port_side(facing_of(k), tests[k]);
+    ports.orient(k, decision.against_winding, decision.reason, tests[k].sky_fraction_winding,
+                 tests[k].sky_fraction_opposite);
+  }
+  return scene;
 }
 
 std::optional<Hit> Scene::intersect(const Ray& ray) const {

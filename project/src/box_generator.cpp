@@ -52,6 +52,7 @@ void generate_box(const BoxSpec& box, MaterialLookup& materials, Diagnostics& di
     surface.name = box.name + "." + f.name;
     surface.material = mat;
     for (const auto& v : f.v) surface.vertices.push_back(corner(v[0], v[1], v[2]));
+    surface.solid_face = true;
     surface.location = box.location;
     out.push_back(std::move(surface));
   }

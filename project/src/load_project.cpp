@@ -552,6 +552,7 @@ class Loader {
                                                       std::to_string(p.vertices.size()));
     if (r.read_string("material", p.material)) use_material(r, "material", p.material);
     r.read_bool("port", p.port);
+    read_facing(r, p.port, p.facing);
     r.finish();
     return p;
   }
@@ -595,8 +596,21 @@ class Loader {
     r.read_number("scale", m.scale);
     r.read_number("rotation", m.rotation_deg);
     r.read_bool("port", m.port);
+    read_facing(r, m.port, m.facing);
     r.finish();
     return m;
+  }
+
+  /// `facing` of a polygon or mesh: only for ports.
+  void read_facing(ParamReader& r, bool port, PortFacing& facing) {
+    if (!r.has("facing")) return;
+    std::string value;
+    if (!r.read_choice("facing", value)) return;
+    if (!port) {
+      m_reporter.error(r.location_of("facing"), "'facing' applies to ports only (add 'port: true', or remove it)");
+      return;
+    }
+    facing = value == "in" ? PortFacing::In : value == "out" ? PortFacing::Out : PortFacing::Auto;
   }
 
   // ---- daylight systems (docs/daylight-systems.md) --------------------------------------
@@ -838,6 +852,7 @@ class Loader {
       if (length(normal) > 0) g.normal = normalize(normal);
       else m_reporter.error(r.location_of("normal"), "'normal' must not be the zero vector");
     }
+    r.read_bool("drop_occluded", g.drop_occluded);
     r.finish();
     m_project.sensors.grids.push_back(std::move(g));
   }
@@ -887,6 +902,7 @@ class Loader {
       m_reporter.error(r.location_of("file"), "points takes 'points' or 'file', not both");
     else if (!has_points && !has_file)
       m_reporter.error(node.location, "points needs 'points' or 'file'");
+    r.read_bool("drop_occluded", p.drop_occluded);
     r.finish();
     m_project.sensors.points.push_back(std::move(p));
   }

@@ -83,6 +83,10 @@ void generate_mesh(const MeshSpec& mesh, MaterialLookup& materials, Diagnostics&
       surface.vertices.push_back(Vec3{q.x * c - q.y * s, q.x * s + q.y * c, q.z} + mesh.translate);
     }
     surface.port = mesh.port;
+    surface.facing = mesh.facing;
+    // OBJ faces are wound counter-clockwise seen from outside (the format's convention), so
+    // a closed mesh is a solid with outward normals; a mesh of ports is an opening.
+    surface.solid_face = !mesh.port;
     surface.location = face.location;
     out.push_back(std::move(surface));
   }

@@ -208,6 +208,7 @@ std::vector<SectionSchema> build_schema() {
       P("vertices", T::PointList, "at least 3 vertices [x, y, z]").unit("m").required(),
       P("material", T::String, "material name").required(),
       P("port", T::Boolean, "photons from sky and sun enter through it").def("false"),
+      P("facing", T::Choice, "ports: which side is the room: auto (the side that does not see the sky), in (the normal by the vertex order points into the room) or out").choices({"auto", "in", "out"}).def("auto"),
   }});
   s.push_back({"box", "a solid box with outward faces", {
       P("name", T::String, "unique box name").required(),
@@ -225,6 +226,7 @@ std::vector<SectionSchema> build_schema() {
       P("scale", T::Number, "uniform scale applied first").above(0).def("1"),
       P("rotation", T::Number, "counter-clockwise rotation about +Z after scaling").unit("deg").range(-360, 360).def("0"),
       P("port", T::Boolean, "all faces are photon ports").def("false"),
+      P("facing", T::Choice, "ports: which side is the room: auto (the side that does not see the sky), in (the normal of each face by its vertex order points into the room) or out").choices({"auto", "in", "out"}).def("auto"),
   }});
   // Daylight systems (docs/daylight-systems.md). Heights are above the room floor; `offset`
   // and `depth` are measured perpendicular to the wall; angles in degrees.
@@ -338,6 +340,7 @@ std::vector<SectionSchema> build_schema() {
       P("inset", T::Number, "distance kept from the outline").unit("m").at_least(0).def("0.5"),
       P("offset", T::Number, "wall and rectangle grids: distance of the sensors from the surface along their normal (0: on it)").unit("m").at_least(0).def("0"),
       P("normal", T::Vec3, "room and polygon grids: direction the sensors face").def("[0, 0, 1]"),
+      P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room or inside a solid (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
   }});
   s.push_back({"grid wall", "a room surface covered by a grid", {
       P("room", T::String, "name of a room in geometry.rooms").required(),
@@ -352,6 +355,7 @@ std::vector<SectionSchema> build_schema() {
       P("name", T::String, "unique sensor-set name, also its output folder: a path name (see Names that become folders), not `variants` or `operated`").required(),
       P("points", T::Special, "[[x, y, z, nx, ny, nz], ...] in metres"),
       P("file", T::Path, "RADIANCE .pts file (x y z nx ny nz per line), must exist"),
+      P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room or inside a solid (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
   }});
   s.push_back({"simulation", "photon tracing and sky discretisation", {
       P("basis", T::Special, "sky patches: tregenza, reinhart:N or {reinhart: N} (N = 1..12)").def("tregenza"),

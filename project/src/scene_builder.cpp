@@ -101,6 +101,7 @@ void generate_polygon(const PolygonSpec& spec, detail::MaterialLookup& materials
   s.material = materials.resolve(spec.material, spec.location, "polygon '" + spec.name + "'");
   s.vertices = spec.vertices;
   s.port = spec.port;
+  s.facing = spec.facing;
   s.location = spec.location;
   out.push_back(std::move(s));
 }

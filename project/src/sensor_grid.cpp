@@ -127,12 +127,23 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, std
   out = SensorGrid{};
   out.name = spec.name;
   out.location = spec.location;
+  out.drop_occluded = spec.drop_occluded;
   out.spacing_m = spec.spacing_m;
 
   if (!spec.room.empty()) {
     const RoomSpec* room = find_grid_room(spec.room, rooms, diag, spec.location_of("room"), what);
     if (!room) return false;
     if (!is_finite(room->origin) || !is_finite(room->size_m)) return false;  // reported by the room
+    // Above the ceiling or below the floor the sensors lie outside the room (the ceiling and
+    // the floor themselves are legitimate sensor planes).
+    if (spec.height_m < 0 || spec.height_m > room->size_m.z) {
+      report(diag, spec.location_of("height"),
+             what + ": height " + format_number(spec.height_m) + " m puts the sensors " +
+                 (spec.height_m < 0 ? "below the floor" : "above the ceiling") + " of room '" + room->name +
+                 "' (" + format_number(room->size_m.z) + " m high); a room grid's height is measured from "
+                 "the floor and must lie in [0, " + format_number(room->size_m.z) + "] m");
+      return false;
+    }
     const double z = room->origin.z + spec.height_m;
     double x_first = 0, y_first = 0;
     const double nx = lattice(room->size_m.x - 2 * spec.inset_m, spec.spacing_m, x_first);
@@ -245,6 +256,7 @@ bool generate_points(const PointsSpec& spec, std::uint64_t max_points, Diagnosti
   out = SensorGrid{};
   out.name = spec.name;
   out.location = spec.location;
+  out.drop_occluded = spec.drop_occluded;
   bool ok = true;
   if (spec.points.size() > max_points) {
     report(diag, spec.location, limit_message(what, double(spec.points.size()), max_points));

@@ -151,6 +151,7 @@ bool generate_surface_grid(const GridSpec& spec, const std::vector<RoomSpec>& ro
   out = SensorGrid{};
   out.name = spec.name;
   out.location = spec.location;
+  out.drop_occluded = spec.drop_occluded;
   out.spacing_m = spec.spacing_m;
   const Vec3 shift = f.normal * spec.offset_m;
   const double tolerance_m = 1e-9 * std::max({1.0, lu, lv});

@@ -1,6 +1,8 @@
 // SystemSpec and RoofLightSpec helpers (project.h): the project-file names of a system's
 // type and port mode, and the location of keys, used by the generators' located messages.
+#include <string>
 #include <type_traits>
+#include <variant>
 
 #include "dayphoton/project/project.h"
 
@@ -32,6 +34,25 @@ SourceLocation RoofLightSpec::location_of(const std::string& key) const {
   for (const auto& [k, loc] : key_locations)
     if (k == key) return loc;
   return location;
+}
+
+std::string describe_system_light(const SystemSpec& system) {
+  std::string s = std::string(system.type_name()) + " '" + system.name + "'";
+  if (!system.enabled) return s + ": disabled (absent from the scene)";
+  if (std::holds_alternative<LightPipeSpec>(system.params))
+    return s + ": traced from its collector (a photon port) down the tube";
+  const std::string window = " window '" + system.mount.window + "'";
+  if (system.mount.side == MountSide::Interior) return s + " inside" + window + ": traced in the room";
+  s += " outside" + window + ", port: " + port_mode_name(system.mount.port) + ": ";
+  switch (system.mount.port) {
+    case PortMode::System:
+      return s + "what it reflects and transmits toward the window is traced (its surfaces are outdoor scatterers)";
+    case PortMode::Window:
+      return s + "SHADING ONLY, an approximation: the light it reflects toward the window is not traced";
+    case PortMode::Enclosure:
+      return s + "traced through an invisible box of openings around it and its window";
+  }
+  return s;
 }
 
 const char* port_mode_name(PortMode mode) {

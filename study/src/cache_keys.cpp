@@ -25,6 +25,9 @@ ContentHash scene_key(const SceneDescription& scene) {
   for (const Surface& s : scene.surfaces) {
     h.integer(s.material).integer(s.port ? 1 : s.outdoor_scatterer ? 2 : 0).integer(static_cast<std::int64_t>(s.vertices.size()));
     for (const Vec3& v : s.vertices) h.vec3(v);
+    // Which side of a port is the room changes its emission; generated ports (Winding) keep
+    // the keys they had before ports could face either way.
+    if (s.port && s.facing != PortFacing::Winding) h.text("facing").integer(static_cast<int>(s.facing));
   }
   return h;
 }

@@ -31,6 +31,7 @@
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/operated_shading.h"
 #include "dayphoton/study/output_lock.h"
@@ -560,8 +561,17 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
 
   // 1. Scene, materials, sources, receiver planes.
   progress.start(prefix + "scene", 1, "model");
-  const SceneDescription description = project::build_scene_description(project);
+  SceneDescription description = project::build_scene_description(project);
   const engine::Scene scene = engine::Scene::build(description);
+  // No port, no sensor, a port that faces no decidable way, sensors outside every room or in
+  // a solid: located errors; sets with drop_occluded lose those sensors (placement_check.h).
+  const PlacementCheck placement =
+      check_placement(scene, description.grids, project);
+  for (const SensorSetPlacement& set : placement.sets)
+    if (set.dropped) {
+      log.line(prefix + set.description);
+      report.notes.push_back(prefix + set.description);
+    }
   std::vector<engine::Material> materials;
   for (const MaterialSpec& m : description.materials)
     materials.push_back(engine::Material::from_spec(m));
@@ -697,6 +707,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     write_sensors_csv(grid.points, join(folder, "sensors.csv"));
     ctx.outputs.record(join(folder, "sensors.csv"));
     nlohmann::json gj = {{"name", grid.name}, {"sensors", grid.points.size()}, {"folder", folder}};
+    if (placement.sets[g].dropped)
+      gj["dropped_sensors"] = {{"outside_rooms", placement.sets[g].outside},
+                               {"inside_solid", placement.sets[g].inside_solid}};
     if (project.outputs.coefficients) {
       c.write_file(join(folder, "coefficients_sky.mtx"), matrix_format);
       ctx.outputs.record(join(folder, "coefficients_sky.mtx"));
@@ -867,6 +880,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   } else {
     report.notes.push_back("site: no weather file, so no sun: daylight factors only");
   }
+  for (const project::SystemSpec& system : project.geometry.systems)
+    report.notes.push_back("system: " + project::describe_system_light(system));
   for (const std::string& n : report.notes) log.line(n);
 
   // Operated shading needs each hour's direct sun (the loader says so for project files).

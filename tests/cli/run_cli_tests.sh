@@ -45,6 +45,7 @@ check_case check_site_other_time_zone 1 check tests/cli/cases/site_other_time_zo
 check_case check_site_far_from_station 0 check tests/cli/cases/site_far_from_station.yaml
 check_case check_site_from_weather 0 check tests/cli/cases/site_from_weather.yaml
 check_case check_glazing 0 check tests/cli/cases/glazing.yaml
+check_case check_roof_light_polygons 0 check tests/cli/cases/roof_light_polygons.yaml
 check_case check_missing_file 1 check tests/cli/cases/does_not_exist.yaml
 check_case usage_no_subcommand 2
 check_case sun_bad_epw 1 sun tests/cli/cases/truncated.epw
@@ -107,6 +108,30 @@ if [ "$code" -eq 4 ] &&
   echo "ok   run_cache_not_writable"; passed=$((passed + 1))
 else
   echo "FAIL run_cache_not_writable: exit $code"; cat "$scratch/nocache.out"; failed=$((failed + 1))
+fi
+
+# A sensor inside a solid without drop_occluded: run stops before it writes anything.
+sed 's/, drop_occluded: true//' tests/cli/cases/roof_light_polygons.yaml >"$scratch/column.yaml"
+"$bin" run "$scratch/column.yaml" --output "$scratch/column_results" --quiet >"$scratch/column.out" 2>&1
+code=$?
+if [ "$code" -eq 1 ] && [ ! -e "$scratch/column_results" ] &&
+   grep -q "column.yaml:31:7: error: sensor set 'workplane': 1 of 64 sensors lie inside a solid" "$scratch/column.out"; then
+  echo "ok   run_sensor_in_column"; passed=$((passed + 1))
+else
+  echo "FAIL run_sensor_in_column: exit $code"; cat "$scratch/column.out"; failed=$((failed + 1))
+fi
+
+# drop_occluded: run leaves out the sensor in the column and the probe above the roof, and
+# says so in run.log and summary.json (dropped_sensors) and the results hold the rest.
+"$bin" run tests/cli/cases/roof_light_polygons.yaml --output "$scratch/roof" --quiet >"$scratch/roof.out" 2>&1
+code=$?
+if [ "$code" -eq 0 ] && grep -q '"dropped_sensors"' "$scratch/roof/summary.json" &&
+   grep -q "sensor set 'workplane': 1 of 64 sensors lie inside a solid" "$scratch/roof/run.log" &&
+   grep -q "sensor set 'probes': 1 of 2 sensors lie outside every room" "$scratch/roof/run.log" &&
+   [ "$(wc -l <"$scratch/roof/workplane/sensors.csv")" -eq 64 ] && [ "$(wc -l <"$scratch/roof/probes/sensors.csv")" -eq 2 ]; then
+  echo "ok   run_drop_occluded"; passed=$((passed + 1))
+else
+  echo "FAIL run_drop_occluded: exit $code"; cat "$scratch/roof.out"; failed=$((failed + 1))
 fi
 
 # A project in a folder whose name is not UTF-8 (Latin-1 'cafe' with an acute accent): the run

@@ -498,6 +498,29 @@ TEST(ProjectLoader, SimulationBasisForms) {
             std::vector<std::string>{"5:32: 'reinhart' must be in [1, 12], got 13"});
 }
 
+TEST(ProjectLoader, PortFacingAndDropOccluded) {
+  const std::string materials = "materials: {g: {type: glass, transmittance: 0.6}}\n";
+  auto polygon = [&](const std::string& keys) {
+    return Head + materials + "geometry:\n  polygons:\n    - {name: p, material: g, " + keys +
+           "vertices: [[0, 0, 3], [1, 0, 3], [1, 1, 3]]}\n";
+  };
+  EXPECT_EQ(load_project_from_string(polygon("port: true, "), FakePath).geometry.polygons[0].facing, PortFacing::Auto);
+  EXPECT_EQ(load_project_from_string(polygon("port: true, facing: in, "), FakePath).geometry.polygons[0].facing,
+            PortFacing::In);
+  EXPECT_EQ(load_project_from_string(polygon("port: true, facing: out, "), FakePath).geometry.polygons[0].facing,
+            PortFacing::Out);
+  EXPECT_EQ(errors_of(polygon("facing: out, ")),
+            std::vector<std::string>{"6:38: 'facing' applies to ports only (add 'port: true', or remove it)"});
+  EXPECT_EQ(errors_of(polygon("port: true, facing: up, ")),
+            std::vector<std::string>{"6:50: unknown value 'up' for 'facing': expected one of auto, in, out"});
+  const Project sensors = load_project_from_string(
+      Head + "materials: {}\ngeometry: {}\nsensors:\n  grids: [{name: g, polygon: [[0, 0, 0], [1, 0, 0], [1, 1, 0]], drop_occluded: true}]\n"
+             "  points: [{name: p, points: [[0, 0, 0, 0, 0, 1]], drop_occluded: true}]\n",
+      FakePath);
+  EXPECT_TRUE(sensors.sensors.grids[0].drop_occluded);
+  EXPECT_TRUE(sensors.sensors.points[0].drop_occluded);
+}
+
 TEST(ProjectLoader, SimulationRegionOfInterest) {
   // Read as written (model coordinates); every sensor must lie inside it, else the one
   // message per grid points at the key.

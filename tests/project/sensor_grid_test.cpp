@@ -152,6 +152,25 @@ TEST(SensorGrid, GridsWithoutPointsAndUnknownRoomsAreLocatedErrors) {
   EXPECT_NE(build_error(p).find("sensor set name 'workplane' is used twice"), std::string::npos);
 }
 
+TEST(SensorGrid, ARoomGridAboveTheCeilingOrBelowTheFloorIsALocatedError) {
+  // A grid at 3.5 m in a 3 m room lies on the roof, outside the room: an error at `height`.
+  Project p = office_project();
+  p.sensors.grids[0].height_m = 3.5;
+  p.sensors.grids[0].key_locations.push_back({"height", {"office.yaml", 31, 13}});
+  EXPECT_NE(build_error(p).find("office.yaml:31:13: error: grid 'workplane': height 3.5 m puts the sensors above the "
+                                "ceiling of room 'office' (3 m high); a room grid's height is measured from the "
+                                "floor and must lie in [0, 3] m"),
+            std::string::npos)
+      << build_error(p);
+  p.sensors.grids[0].height_m = -0.1;
+  EXPECT_NE(build_error(p).find("height -0.1 m puts the sensors below the floor"), std::string::npos) << build_error(p);
+  // The floor and the ceiling themselves are sensor planes.
+  for (double h : {0.0, 3.0}) {
+    p.sensors.grids[0].height_m = h;
+    EXPECT_EQ(build_error(p), "") << "height " << h;
+  }
+}
+
 TEST(PtsReader, ReadsAndNormalises) {
   Diagnostics diag;
   const auto pts = read_pts_from_string(

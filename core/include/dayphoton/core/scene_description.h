@@ -84,6 +84,18 @@ struct MaterialSpec {
   std::string type_as_written;
 };
 
+/// Which side of a port is the room (the engine's Port::normal points into it).
+enum class PortFacing {
+  Winding,  ///< by construction: the winding normal points into the room (generated windows,
+            ///< enclosures, collectors); not tested
+  Auto,     ///< decided from the scene: the side whose rays escape to the sky is outside
+  In,       ///< declared: the winding normal points into the room (tested against the scene)
+  Out,      ///< declared: the winding normal points out of the room (tested against the scene)
+};
+
+/// Name used in project files and messages ("auto", "in", "out"; "winding" for generated ports).
+const char* port_facing_name(PortFacing facing);
+
 /// A planar polygon with a material. Ports are openings through which photons from distant
 /// sources enter (windows become ports automatically).
 struct Surface {
@@ -96,6 +108,10 @@ struct Surface {
   /// system's part): photons from the sky and sun also start where they land on it directly
   /// (either side), and scatter from there. Never also a port.
   bool outdoor_scatterer = false;
+  PortFacing facing = PortFacing::Winding;  ///< ports: which side is the room
+  /// A face of a closed solid drawn with outward normals (boxes, OBJ meshes): a sensor that
+  /// sees the back of such faces all round lies inside a solid (engine/sensor_placement.h).
+  bool solid_face = false;
 };
 
 struct SensorPoint {
@@ -119,6 +135,9 @@ struct SensorGrid {
   /// or the 4 corners of a wall or rectangle moved by the grid's offset).
   std::vector<Vec3> outline;
   double spacing_m = 0;          ///< for generated grids
+  /// Sensors outside every room or inside a solid are dropped (counted) instead of being an
+  /// error (the set's `drop_occluded` key).
+  bool drop_occluded = false;
   /// For generated grids that are a full lattice (row-major, rows outer): room grids and wall
   /// and rectangle grids with no point left out; 0 otherwise.
   int columns = 0, rows = 0;

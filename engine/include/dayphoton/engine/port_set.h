@@ -28,11 +28,29 @@
 
 namespace dayphoton::engine {
 
+/// How a port's inward side was decided (engine/port_facing.h).
+enum class PortSideReason {
+  Generated,     ///< PortFacing::Winding: the generator winds it into the room; not tested
+  Sky,           ///< PortFacing::Auto: the side whose test rays escape to the sky is outside
+  Declared,      ///< PortFacing::In/Out, and the test rays agree or cannot tell
+  Ambiguous,     ///< PortFacing::Auto, and the rays cannot tell (both sides see the sky, or
+                 ///< neither): the winding is kept; a project must declare the facing
+  Contradicted,  ///< PortFacing::In/Out, but the rays say the declared room side sees the sky
+};
+
 struct Port {
   int surface = -1;    ///< index into SceneDescription::surfaces
   std::string name;    ///< the surface's name
   double area_m2 = 0;  ///< sum of the triangle areas
-  Vec3 normal;         ///< unit normal of the polygon (its winding; into the room for rooms)
+  /// Unit normal pointing INTO the room: the polygon's winding normal, or its opposite when
+  /// against_winding (ports face either way; Scene::build decides, engine/port_facing.h).
+  /// Port emission and the port's own scattering rely on this side.
+  Vec3 normal;
+  bool against_winding = false;  ///< normal = -(winding normal)
+  PortSideReason side_reason = PortSideReason::Generated;
+  /// Share of the facing test's rays that escape to the sky from the side the winding normal
+  /// points to, and from the other side (both 0 when not tested: Generated).
+  double sky_fraction_winding = 0, sky_fraction_opposite = 0;
   Vec3 centroid;       ///< area-weighted centroid, metres
   std::vector<std::array<Vec3, 3>> triangles;
   std::vector<double> cumulative_area_m2;  ///< running sum of triangle areas
@@ -68,6 +86,11 @@ class PortSet {
 
   /// Port index of a surface, or -1 if that surface is not a port.
   int port_of_surface(int surface_index) const;
+
+  /// Make `normal` of port `port` point along (against_winding = false) or against its
+  /// polygon's winding normal, and record why. Throws std::out_of_range for a bad index.
+  void orient(std::size_t port, bool against_winding, PortSideReason reason, double sky_fraction_winding,
+              double sky_fraction_opposite);
 
   /// A point uniformly distributed by area on port `port`, from two independent uniform
   /// numbers in [0, 1); pdf = 1 / area. Throws std::out_of_range for a bad port index.

@@ -16,6 +16,10 @@
 // dropped. Embree runs in robust mode (RTC_SCENE_FLAG_ROBUST, watertight edges shared by
 // triangles with identical vertices) at high build quality; see engine/src/embree_accel.cpp.
 //
+// Ports: after the build, each port whose Surface::facing is not Winding gets its room side
+// decided by rays (engine/port_facing.h), and Port::normal points into the room whichever way
+// the polygon was drawn; the triangles keep the polygon's winding.
+//
 // Precision: Embree intersects in single precision. The hit distance t is then refined in
 // double precision against the hit triangle's plane (double-precision vertices), so
 // Hit::position lies on the surface to about 1e-15 relative, not 1e-7.

@@ -130,6 +130,8 @@ struct PolygonSpec {
   std::vector<Vec3> vertices;
   std::string material;
   bool port = false;
+  /// Ports: which side is the room (`facing`: auto, in = the winding normal points into it, out).
+  PortFacing facing = PortFacing::Auto;
   SourceLocation location;
 };
 
@@ -155,6 +157,8 @@ struct MeshSpec {
   double scale = 1;
   double rotation_deg = 0;  ///< about +Z, applied after scale, before translate
   bool port = false;
+  /// Ports: which side of every face is the room (`facing`: auto, in, out), as for polygons.
+  PortFacing facing = PortFacing::Auto;
   SourceLocation location;
 };
 
@@ -178,6 +182,13 @@ enum class MountSide { Interior, Exterior };
 enum class PortMode { System, Window, Enclosure };
 /// The `port` value of the project file ("system", "window", "enclosure").
 const char* port_mode_name(PortMode mode);
+
+struct SystemSpec;
+/// How the light of a system is modelled, one sentence for `check`, the run log and the
+/// report: "light_shelf 'outer' outside window 'w', port: system: what it reflects and
+/// transmits toward the window is traced", and for `port: window` that it only shades (an
+/// approximation).
+std::string describe_system_light(const SystemSpec& system);
 
 struct WindowMount {
   std::string window;                  ///< name of the window the system belongs to
@@ -343,6 +354,7 @@ struct GridSpec {
   double inset_m = 0.5;
   double offset_m = 0;              ///< wall and rectangle grids: in front of the surface
   Vec3 normal{0, 0, 1};             ///< room and polygon grids
+  bool drop_occluded = false;       ///< drop sensors outside every room or inside a solid
   SourceLocation location;
   SourceLocation spacing_location;  ///< of `spacing` if written, else of the grid
 
@@ -359,6 +371,7 @@ struct PointsSpec {
   std::vector<SensorPoint> points;  ///< inline points
   std::string file;                 ///< resolved .pts path (x y z nx ny nz per line), or empty
   std::string file_as_written;
+  bool drop_occluded = false;  ///< drop sensors outside every room or inside a solid
   SourceLocation location;
 };
 

@@ -1,0 +1,63 @@
+// Sensor placement: whether a sensor lies in a room (where light from the ports can reach
+// it), outside every room, or inside a solid. Photons enter only through the ports, so a
+// sensor in open air outside gets almost nothing (a daylight factor of 0.0001 %) and one
+// inside a column only what leaks through its faces (0.8 %), both without a word; `check`
+// and `run` refuse them (study/placement_check.h).
+//
+// Test: SensorPlacementRays well-spread directions over the hemisphere the sensor faces
+// (spread_directions.h; the whole sphere for a sensor without a normal) are cast from the
+// sensor's position moved 10 ray epsilons along its normal (so a sensor on a surface,
+// facing away from it, does not see that surface). Each ray passes through ports and
+// transparent surfaces (glass, openings, dielectrics), noting whether it crossed a port,
+// and stops at the first other surface or escapes to the sky.
+//   - outside every room: at least SensorOutsideSkyFraction of the rays escape to the sky
+//     without crossing a port (in a closed room none does: every way out is a port or a
+//     wall);
+//   - inside a solid: no ray reaches a port or the sky, and at least SensorInsideSolidFraction
+//     of the rays stop at the back of a solid's face (Surface::solid_face: boxes and OBJ
+//     meshes, wound outward), and then a ray aimed at each port's centroid does not reach it
+//     either (a room drawn as a mesh wound outward sees its windows). Polygons count as thin,
+//     two-sided sheets (shelves, slats, walls of either winding), so the back of a polygon
+//     never means "inside";
+//   - in a room otherwise.
+// Cost: SensorPlacementRays rays (plus one per transparent surface crossed) per sensor, and one
+// per port for a sensor that looks inside a solid.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "dayphoton/core/scene_description.h"
+
+namespace dayphoton::engine {
+
+class Scene;
+
+constexpr int SensorPlacementRays = 64;
+/// "Most rays escape" (the least share that means outside): a quarter, since a sensor outside
+/// a facade and facing it sees the building in much of its hemisphere.
+constexpr double SensorOutsideSkyFraction = 0.25;
+/// A sensor inside a box sees the back of its faces in every direction; where the solid
+/// touches another surface (a column under the ceiling) a few rays may stop there first.
+constexpr double SensorInsideSolidFraction = 0.75;
+/// Transparent surfaces a placement ray passes through before it gives up (counted as
+/// stopped at a surface).
+constexpr int SensorPlacementMaxCrossings = 32;
+
+enum class SensorPlacement { InRoom, OutsideRooms, InsideSolid };
+
+struct SensorPlacementTest {
+  SensorPlacement placement = SensorPlacement::InRoom;
+  int rays = 0;
+  int sky_without_port = 0;   ///< rays escaping to the sky without crossing a port
+  int through_port = 0;       ///< rays that crossed a port (escaping or not)
+  int back_of_solid = 0;      ///< rays stopped at the back of a solid's face
+  int solid_surface = -1;     ///< inside a solid: the surface most rays stopped at the back of
+};
+
+SensorPlacementTest test_sensor_placement(const Scene& scene, const SensorPoint& sensor);
+
+/// test_sensor_placement for every sensor, in parallel; results in the sensors' order.
+std::vector<SensorPlacementTest> test_sensor_placements(const Scene& scene, const std::vector<SensorPoint>& sensors);
+
+}  // namespace dayphoton::engine

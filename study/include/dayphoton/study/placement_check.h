@@ -1,0 +1,61 @@
+// Placement check: what `check` and `run` refuse before anything is traced, because it would
+// give plausible-looking but wrong numbers without a word:
+//   - a project with no photon port (no window, no port polygon: no light can enter) or no
+//     sensor;
+//   - a port whose room side cannot be told (engine/port_facing.h: both sides see the sky or
+//     neither) or whose declared `facing` puts the room on the side that sees the sky;
+//   - sensors outside every room or inside a solid (engine/sensor_placement.h), unless their
+//     set says `drop_occluded: true`: then they are dropped and counted.
+// Every error is located (the project file, the port's polygon or OBJ face, the sensor set)
+// and names the first offending sensors by index (0-based, as in sensors.csv) and position.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/core/source_location.h"
+#include "dayphoton/project/project.h"
+
+namespace dayphoton::engine {
+class Scene;
+}
+
+namespace dayphoton::study {
+
+/// Offending sensors named in a message (the rest are counted).
+constexpr std::size_t PlacementExamples = 3;
+
+struct SensorSetPlacement {
+  std::string name;
+  std::size_t sensors = 0;       ///< before dropping
+  std::size_t outside = 0;       ///< outside every room
+  std::size_t inside_solid = 0;  ///< inside a solid
+  bool dropped = false;          ///< drop_occluded: the offending sensors were removed
+  std::string description;       ///< one line for the log, the report and check
+};
+
+struct PlacementCheck {
+  std::vector<SensorSetPlacement> sets;  ///< in the order of the grids
+  std::size_t dropped() const;
+};
+
+/// Run the checks on `scene` (built from `project`'s scene description, whose sensor sets are
+/// `grids`). Sets with drop_occluded lose their offending sensors (a full lattice then stops
+/// being one: columns = rows = 0). Throws InputError with every problem found; the
+/// project-wide ones (no ports, no sensors) are located at the project file's first line, and
+/// sensor positions are printed in model coordinates, as written.
+PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGrid>& grids,
+                               const project::Project& project);
+
+/// The checks for the base case and every variant of `project`, building each scene (and
+/// everything build_scene_description and Scene::build validate) and discarding it: `run` calls
+/// this for every project before it writes anything. Throws InputError.
+void check_project_placement(const project::Project& project);
+
+/// How port `port` of `scene` faces and why, for `check` ("into the room: the other side sees
+/// the sky (62 % of the test rays, this side 0 %)").
+std::string describe_port_facing(const engine::Scene& scene, std::size_t port);
+
+}  // namespace dayphoton::study

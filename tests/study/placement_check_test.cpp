@@ -1,0 +1,188 @@
+// Placement checks (study/placement_check.h), from project text to located errors: sensors
+// inside a column or outside every room, a project without ports or sensors, ports whose room
+// side cannot be told or is declared wrong; and drop_occluded, which drops and counts
+// instead. `check` (app/model_summary.cpp) and `run` (study_runner.cpp) call the same check.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/engine/scene.h"
+#include "dayphoton/project/project.h"
+#include "dayphoton/study/placement_check.h"
+
+namespace dayphoton::study {
+namespace {
+
+const std::string Head = R"(site: {latitude: 37.72, longitude: -122.22, time_zone: -8}
+outputs: {annual_illuminance: false, metrics: false}
+materials:
+  walls: {type: lambertian, reflectance: 0.5}
+  glazing: {type: glass, transmittance: 0.6}
+)";
+
+const std::string Office = R"(geometry:
+  rooms:
+    - name: office
+      size: [6, 8, 3]
+      materials: {floor: walls, ceiling: walls, walls: walls}
+      windows:
+        - {name: south, wall: south, width: 4, height: 1.5, sill: 0.9, material: glazing}
+)";
+
+struct Outcome {
+  std::vector<std::string> errors;  ///< "line:col: message"
+  PlacementCheck check;
+  std::vector<SensorGrid> grids;
+};
+
+Outcome check_text(const std::string& text) {
+  Outcome out;
+  try {
+    const project::Project p = project::load_project_from_string(text, "placement.yaml");
+    SceneDescription d = project::build_scene_description(p);
+    const engine::Scene scene = engine::Scene::build(d);
+    out.check = check_placement(scene, d.grids, p);
+    out.grids = d.grids;
+  } catch (const InputError& e) {
+    for (const Diagnostic& d : e.diagnostics())
+      out.errors.push_back(std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + ": " +
+                           d.message);
+  }
+  return out;
+}
+
+TEST(PlacementCheck, SensorsInsideAColumnAreALocatedError) {
+  // A grid through a 0.6 x 0.6 m column: room grid points x = 0.5 .. 5.5, y = 0.5 .. 7.5
+  // every 0.5 m; the column covers x, y in (2.7, 3.3) x (3.7, 4.3): the sensor at (3, 4),
+  // column 5 of row 7, index 5 + 7 x 11 = 82, only.
+  const Outcome o = check_text(Head + Office + R"(  boxes:
+    - {name: column, origin: [2.7, 3.7, 0], size: [0.6, 0.6, 3], material: walls}
+sensors:
+  grids:
+    - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5}
+)");
+  ASSERT_EQ(o.errors.size(), 1u);
+  EXPECT_EQ(o.errors[0].rfind("17:7: sensor set 'workplane': 1 of 165 sensors lie inside a solid (sensor 82 at (3, 4, "
+                              "0.8) m sees only the back of 'column.",
+                              0),
+            0u)
+      << o.errors[0];
+  EXPECT_NE(o.errors[0].find("drop_occluded: true"), std::string::npos);
+}
+
+TEST(PlacementCheck, DropOccludedDropsAndCountsThem) {
+  const Outcome o = check_text(Head + Office + R"(  boxes:
+    - {name: column, origin: [2.7, 3.7, 0], size: [0.6, 0.6, 3], material: walls}
+sensors:
+  grids:
+    - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5, drop_occluded: true}
+  points:
+    - name: probes
+      drop_occluded: true
+      points: [[3, 2, 0.8, 0, 0, 1], [3, 4, 10, 0, 0, 1], [3, 5, 1, 0, 0, 1]]
+)");
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  ASSERT_EQ(o.check.sets.size(), 2u);
+  EXPECT_TRUE(o.check.sets[0].dropped);
+  EXPECT_EQ(o.check.sets[0].inside_solid, 1u);
+  EXPECT_EQ(o.grids[0].points.size(), 164u);
+  EXPECT_EQ(o.grids[0].columns, 0);  // no longer a full lattice
+  EXPECT_EQ(o.check.sets[1].outside, 1u);
+  ASSERT_EQ(o.grids[1].points.size(), 2u);
+  EXPECT_EQ(o.grids[1].points[1].position.y, 5.0);
+  EXPECT_EQ(o.check.dropped(), 2u);
+}
+
+TEST(PlacementCheck, SensorsOutsideEveryRoomAreALocatedError) {
+  const Outcome o = check_text(Head + Office + R"(sensors:
+  points:
+    - name: probes
+      points: [[3, 2, 0.8, 0, 0, 1], [3, 4, 10, 0, 0, 1], [3, -2, 1, 0, 0, 1]]
+)");
+  ASSERT_EQ(o.errors.size(), 1u);
+  // Sensor 2, 2 m in front of the facade, sees the building in a fifth of its hemisphere.
+  EXPECT_EQ(o.errors[0], "15:7: sensor set 'probes': 2 of 3 sensors lie outside every room (sensor 1 at (3, 4, 10) m "
+                         "sees the sky without a port in 100 % of its hemisphere; sensor 2 at (3, -2, 1) m sees the "
+                         "sky without a port in 80 % of its hemisphere); they would read (almost) no light. Move "
+                         "them into a room, or give the set 'drop_occluded: true' to leave them out");
+}
+
+TEST(PlacementCheck, SensorsAreNamedInModelCoordinates) {
+  // A site rotated 30 degrees: the scene is in world coordinates, the message in the
+  // coordinates the user wrote.
+  std::string rotated = Head;
+  rotated.replace(rotated.find("time_zone: -8}"), 14, "time_zone: -8, north: 30}");
+  const Outcome o = check_text(rotated + Office + R"(sensors:
+  points:
+    - name: probes
+      points: [[3, 4, 10, 0, 0, 1]]
+)");
+  ASSERT_EQ(o.errors.size(), 1u);
+  EXPECT_NE(o.errors[0].find("(sensor 0 at (3, 4, 10) m sees the sky"), std::string::npos) << o.errors[0];
+}
+
+TEST(PlacementCheck, AProjectWithoutPortsOrSensorsIsAnError) {
+  const Outcome o = check_text(Head + R"(geometry:
+  rooms:
+    - {name: office, size: [6, 8, 3], materials: {floor: walls, ceiling: walls, walls: walls}}
+)");
+  ASSERT_EQ(o.errors.size(), 2u);
+  EXPECT_EQ(o.errors[0].rfind("1:1: the project has no photon port", 0), 0u) << o.errors[0];
+  EXPECT_EQ(o.errors[1].rfind("1:1: the project has no sensors", 0), 0u) << o.errors[1];
+}
+
+/// A 4 x 4 x 3 m room of polygons with a 1 x 1 m roof light drawn facing the sky, with
+/// `facing` as given (empty: none). Nothing above the roof.
+std::string roof_light(const std::string& facing, bool through_floor = false) {
+  return Head + R"(geometry:
+  polygons:
+    - {name: floor, material: walls, vertices: [[0, 0, 0], [4, 0, 0], [4, 4, 0], [0, 4, 0]]}
+    - {name: wall_w, material: walls, vertices: [[0, 0, 0], [0, 4, 0], [0, 4, 3], [0, 0, 3]]}
+    - {name: wall_e, material: walls, vertices: [[4, 0, 0], [4, 0, 3], [4, 4, 3], [4, 4, 0]]}
+    - {name: wall_s, material: walls, vertices: [[0, 0, 0], [0, 0, 3], [4, 0, 3], [4, 0, 0]]}
+    - {name: wall_n, material: walls, vertices: [[0, 4, 0], [4, 4, 0], [4, 4, 3], [0, 4, 3]]}
+    - {name: ceiling_s, material: walls, vertices: [[0, 0, 3], [0, 1.5, 3], [4, 1.5, 3], [4, 0, 3]]}
+    - {name: ceiling_n, material: walls, vertices: [[0, 2.5, 3], [0, 4, 3], [4, 4, 3], [4, 2.5, 3]]}
+    - {name: ceiling_w, material: walls, vertices: [[0, 1.5, 3], [0, 2.5, 3], [1.5, 2.5, 3], [1.5, 1.5, 3]]}
+    - {name: ceiling_e, material: walls, vertices: [[2.5, 1.5, 3], [2.5, 2.5, 3], [4, 2.5, 3], [4, 1.5, 3]]}
+    - name: roof_light
+      material: glazing
+      port: true
+      vertices: [[1.5, 1.5, 3], [2.5, 1.5, 3], [2.5, 2.5, 3], [1.5, 2.5, 3]]
+)" + (facing.empty() ? "" : "      facing: " + facing + "\n") +
+         (through_floor ? "    - {name: free, material: glazing, port: true, vertices: [[10, 0, 0], [11, 0, 0], [11, 1, 0]]}\n"
+                        : "") +
+         R"(sensors:
+  grids:
+    - {name: workplane, polygon: [[0, 0, 0], [4, 0, 0], [4, 4, 0], [0, 4, 0]], height: 0.8, spacing: 0.5, inset: 0.5}
+)";
+}
+
+TEST(PlacementCheck, ARoofLightFacingTheSkyIsFine) {
+  for (const std::string facing : {"", "auto", "out"}) {
+    const Outcome o = check_text(roof_light(facing));
+    EXPECT_TRUE(o.errors.empty()) << facing << ": " << o.errors[0];
+  }
+}
+
+TEST(PlacementCheck, APortDeclaredTheWrongWayIsALocatedError) {
+  const Outcome o = check_text(roof_light("in"));
+  ASSERT_EQ(o.errors.size(), 1u);
+  EXPECT_EQ(o.errors[0], "17:7: port 'roof_light': 'facing: in' puts the room on the side that sees the sky (sky "
+                         "seen by 100 % of the test rays on the side its vertex order faces, 0 % on the other); use "
+                         "'facing: out' or 'facing: auto'");
+}
+
+TEST(PlacementCheck, APortWhoseRoomSideCannotBeToldIsALocatedError) {
+  const Outcome o = check_text(roof_light("", /*through_floor=*/true));
+  ASSERT_EQ(o.errors.size(), 1u);
+  // A pane 6 m east of the room, on the ground: the room hides a little of its upper side's sky.
+  EXPECT_EQ(o.errors[0], "21:7: port 'free': cannot tell which side is the room: both sides see the sky (sky seen "
+                         "by 96 % of the test rays on the side its vertex order faces, 100 % on the other); say "
+                         "'facing: in' (its normal by the vertex order points into the room) or 'facing: out'");
+}
+
+}  // namespace
+}  // namespace dayphoton::study
