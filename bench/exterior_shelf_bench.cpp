@@ -117,9 +117,9 @@ int main(int argc, char** argv) {
   const double suns[][2] = {{30, 180}, {50, 160}, {65, 210}};
   const std::size_t n = static_cast<std::size_t>(sim.photons_per_bin);
   const auto big = static_cast<std::size_t>(std::llround(double(n) * reference_factor));
-  std::printf("ceiling probes (lx per unit sun radiance x 1e3): system at %zu photons, enclosure at %zu photons "
-              "and 4096 gather rays (reference), window (shading only)\n",
-              n, big);
+  std::printf("ceiling probes (illuminance per unit sun radiance): reference = enclosure at %zu photons and 4096 "
+              "gather rays; system, enclosure and window (shading only) at %zu photons and 1024 rays\n",
+              big, n);
   double sum2 = 0;
   int count = 0;
   for (const auto& sun : suns) {
@@ -130,14 +130,18 @@ int main(int argc, char** argv) {
     const double ts = seconds_since(t0);
     const std::vector<double> r = probes_under(enclosure, d, big, 4096, 8);
     const std::vector<double> w = probes_under(window, d, n, 1024, 7);
+    const std::vector<double> sr = probes_under(system, d, big, 4096, 9);
+    const std::vector<double> er = probes_under(enclosure, d, n, 1024, 10);
     for (std::size_t p = 0; p < s.size(); ++p) {
-      const double rel = s[p] / r[p] - 1;
+      const double rel = sr[p] / r[p] - 1;
       sum2 += rel * rel;
       ++count;
-      std::printf("  sun %2.0f/%3.0f probe %zu: system %8.4f  reference %8.4f (%+.1f %%)  window %8.4f (%+.1f %%)"
-                  "  [%.2f s]\n",
-                  sun[0], sun[1], p, s[p] * 1e3, r[p] * 1e3, 100 * rel, w[p] * 1e3, 100 * (w[p] / r[p] - 1), ts);
+      std::printf("  sun %2.0f/%3.0f probe %zu: reference %.4e; system %+.1f %% (%+.1f %% at the reference's photons),"
+                  " enclosure %+.1f %%, window %+.1f %%  [system %.2f s]\n",
+                  sun[0], sun[1], p, r[p], 100 * (s[p] / r[p] - 1), 100 * rel, 100 * (er[p] / r[p] - 1),
+                  100 * (w[p] / r[p] - 1), ts);
     }
   }
-  std::printf("RMS of system vs reference over %d probe-suns: %.2f %%\n", count, 100 * std::sqrt(sum2 / count));
+  std::printf("RMS of system vs enclosure, both at the reference's photons, over %d probe-suns: %.2f %%\n", count,
+              100 * std::sqrt(sum2 / count));
 }
