@@ -99,6 +99,26 @@ class BlockSink final : public PhotonSink {
   Rng* m_storage = nullptr;
 };
 
+// The first scattering event of a path, at `position` on a surface of `material` (geometric
+// normal `normal`) that a photon of unit flux reaches along `direction`: the sampled event,
+// then flux-weighted roulette. Returns the path start, or nothing if the photon is absorbed.
+std::optional<PathStart> first_event(const Scene& scene, const Material& material, const Vec3& position,
+                                     const Vec3& normal, const Vec3& direction, std::uint32_t source,
+                                     Rng& scattering, Rng& roulette_rng) {
+  const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
+  const std::optional<ScatterSample> s = material.sample(direction, normal, u0, u1, u2);
+  if (!s) return std::nullopt;
+  PathStart start;
+  start.flux = {1, 1, 1};
+  if (!roulette(start.flux, s->weight, roulette_rng)) return std::nullopt;
+  start.direction = s->direction;
+  start.origin = scene.offset_ray_origin(position, normal, s->direction);
+  start.source = source;
+  start.scattered = s->type != ScatterType::StraightTransmission;
+  start.diffuse_scattered = is_diffuse(s->type);
+  return start;
+}
+
 // The port's own scattering event (seeds/000 section 4.1.3: photons leave the port "as if
 // they had passed through it"). Returns the path start, or nothing if the photon is
 // reflected back out or absorbed.
@@ -108,25 +128,16 @@ std::optional<PathStart> pass_port(const Scene& scene, const std::vector<Materia
   const Port& port = scene.ports()[static_cast<std::size_t>(entry.port)];
   const Material& material =
       materials[static_cast<std::size_t>(scene.description().surfaces[port.surface].material)];
-  const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
-  const std::optional<ScatterSample> s = material.sample(entry.direction, port.normal, u0, u1, u2);
-  if (!s) return std::nullopt;
-  PathStart start;
-  start.flux = {1, 1, 1};
-  if (!roulette(start.flux, s->weight, roulette_rng)) return std::nullopt;
-  if (dot(s->direction, port.normal) <= 0) return std::nullopt;  // back out of the room
-  start.direction = s->direction;
-  start.origin = scene.offset_ray_origin(entry.position, port.normal, s->direction);
-  start.source = source;
-  start.scattered = s->type != ScatterType::StraightTransmission;
-  start.diffuse_scattered = is_diffuse(s->type);
+  std::optional<PathStart> start =
+      first_event(scene, material, entry.position, port.normal, entry.direction, source, scattering, roulette_rng);
+  if (start && dot(start->direction, port.normal) <= 0) return std::nullopt;  // back out of the room
   return start;
 }
 
 // A photon that lands on an outdoor scatterer straight from its source: its Direct record
 // there (the scatterer's irradiance, which a final gather looking at the scatterer needs),
-// then the scatterer's own scattering event. Returns the path start, or nothing if the
-// photon is absorbed.
+// then the scatterer's own scattering event, outdoors. Returns the path start, or nothing if
+// the photon is absorbed.
 std::optional<PathStart> land_on_scatterer(const Scene& scene, const std::vector<Material>& materials,
                                            const PortEntry& entry, std::uint32_t source,
                                            const TracingOptions& options, Rng& scattering,
@@ -137,18 +148,9 @@ std::optional<PathStart> land_on_scatterer(const Scene& scene, const std::vector
   const Vec3 lit_side = dot(entry.direction, scatterer.normal) < 0 ? scatterer.normal : scatterer.normal * -1.0;
   if ((options.store_direct || options.store_direct_on_surfaces) && material.stores_photons())
     sink.record(-1, make_photon(entry.position, {1, 1, 1}, lit_side, source, PathClass::Direct));
-  const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
-  const std::optional<ScatterSample> s = material.sample(entry.direction, scatterer.normal, u0, u1, u2);
-  if (!s) return std::nullopt;
-  PathStart start;
-  start.flux = {1, 1, 1};
-  if (!roulette(start.flux, s->weight, roulette_rng)) return std::nullopt;
-  start.direction = s->direction;
-  start.origin = scene.offset_ray_origin(entry.position, scatterer.normal, s->direction);
-  start.source = source;
-  start.scattered = s->type != ScatterType::StraightTransmission;
-  start.diffuse_scattered = is_diffuse(s->type);
-  start.outdoors = true;
+  std::optional<PathStart> start = first_event(scene, material, entry.position, scatterer.normal, entry.direction,
+                                               source, scattering, roulette_rng);
+  if (start) start->outdoors = true;
   return start;
 }
 

@@ -66,9 +66,11 @@ SceneDescription shelf_scene(ShelfPorts ports) {
   return d;
 }
 
-/// Caustic flux stored on the ceiling per unit sun radiance (in these scenes the ceiling's
-/// only light: the sun reflected by the mirror through the window), and the photon count.
-std::pair<double, std::size_t> ceiling_flux(const SceneDescription& d, const SourceSet& sun, std::uint64_t seed) {
+/// Caustic flux stored on the surfaces `where` accepts, per unit sun radiance, and the
+/// photon count (20000 caustic photons targeted).
+template <typename Where>
+std::pair<double, std::size_t> caustic_flux(const SceneDescription& d, const SourceSet& sun, std::uint64_t seed,
+                                            Where where) {
   const Scene scene = Scene::build(d);
   TracingOptions o;
   o.photons_per_source = 500;
@@ -77,14 +79,18 @@ std::pair<double, std::size_t> ceiling_flux(const SceneDescription& d, const Sou
   const TracedPhotons traced = trace_photons(scene, models_of(d), sun, {}, o);
   double flux = 0;
   std::size_t n = 0;
-  for (const Photon& p : traced.surface) {
-    const Vec3 at = p.position_m();
-    if (p.path_class == PathClass::Caustic && at.z > 2.999 && at.y > 0) {
+  for (const Photon& p : traced.surface)
+    if (p.path_class == PathClass::Caustic && where(p.position_m())) {
       flux += mean3(p.flux_rgb());
       ++n;
     }
-  }
   return {flux, n};
+}
+
+/// On the ceiling: in these scenes its only light, the sun the mirror reflects through the
+/// window.
+std::pair<double, std::size_t> ceiling_flux(const SceneDescription& d, const SourceSet& sun, std::uint64_t seed) {
+  return caustic_flux(d, sun, seed, [](const Vec3& at) { return at.z > 2.999 && at.y > 0; });
 }
 
 TEST(OutdoorScatterers, ExteriorShelfSendsTheEnclosuresFluxToTheCeiling) {
@@ -143,22 +149,9 @@ SceneDescription dielectric_scene(ShelfPorts ports) {
   return d;
 }
 
-/// Caustic flux stored in the room (y > 0) per unit source radiance, and the photon count.
+/// Anywhere in the room.
 std::pair<double, std::size_t> room_caustic_flux(const SceneDescription& d, const SourceSet& sun, std::uint64_t seed) {
-  const Scene scene = Scene::build(d);
-  TracingOptions o;
-  o.photons_per_source = 500;
-  o.caustic_photons_per_source = 20000;
-  o.seed = seed;
-  const TracedPhotons traced = trace_photons(scene, models_of(d), sun, {}, o);
-  double flux = 0;
-  std::size_t n = 0;
-  for (const Photon& p : traced.surface)
-    if (p.path_class == PathClass::Caustic && p.position_m().y > 0.001) {
-      flux += mean3(p.flux_rgb());
-      ++n;
-    }
-  return {flux, n};
+  return caustic_flux(d, sun, seed, [](const Vec3& at) { return at.y > 0.001; });
 }
 
 TEST(OutdoorScatterers, ExteriorDielectricPanelSendsTheEnclosuresFlux) {
