@@ -38,7 +38,9 @@
 namespace dayphoton::study {
 
 /// Bumped whenever the engine's output for the same inputs changes (invalidates old caches).
-constexpr int EngineCacheVersion = 3;
+/// 4: photons outdoors after leaving through a port are no longer stored (photon_tracer.h,
+/// "Indoors and outdoors").
+constexpr int EngineCacheVersion = 4;
 
 ContentHash scene_key(const SceneDescription& scene);
 ContentHash planes_key(const std::vector<SensorGrid>& grids);
