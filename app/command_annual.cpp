@@ -6,10 +6,14 @@
 // plain or .gz); the EPW always gives the time stamps. The sun is computed for the site the
 // run's summary.json records (study/sun_site.h), else for the weather file header's site.
 // See docs/outputs.md and docs/cli.md.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
 #include <iomanip>
 #include <ostream>
 
@@ -69,6 +73,27 @@ std::string percent(double v) {
   return s.str();
 }
 
+/// Folders up to two levels below `dir` that hold a coefficients_sky.mtx (a run's grid
+/// folders: <results>/<grid> and <results>/<variant>/<grid>), sorted, at most 8.
+std::vector<std::string> grid_folders_below(const std::string& dir) {
+  constexpr std::size_t MaxListed = 8;
+  std::vector<std::string> found;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (it.depth() >= 2) it.disable_recursion_pending();
+    if (it->is_directory(ec) && fs::exists(it->path() / "coefficients_sky.mtx", ec)) found.push_back(it->path().string());
+  }
+  std::sort(found.begin(), found.end());
+  if (found.size() > MaxListed) found.resize(MaxListed);
+  return found;
+}
+
+std::string join_names(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
 }  // namespace
 
 int run_annual(const AnnualOptions& o, std::ostream& out) {
@@ -78,6 +103,15 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
     throw InputError(SourceLocation{o.coefficients_dir, 0, 0},
                      "not a folder; --coefficients takes a grid folder written by `dayphoton run`");
   const std::string coefficients_path = (fs::path(o.coefficients_dir) / "coefficients_sky.mtx").string();
+  if (!fs::exists(coefficients_path)) {
+    // The usual slip: the results folder (or a case's folder) instead of one of its grids.
+    std::vector<std::string> grids = grid_folders_below(o.coefficients_dir);
+    std::string hint = grids.empty() ? std::string("; `dayphoton run` writes it into each grid's folder")
+                                     : "; grid folders below it: " + join_names(grids);
+    throw InputError(SourceLocation{o.coefficients_dir, 0, 0},
+                     "no coefficients_sky.mtx in this folder: --coefficients takes a grid folder written by "
+                     "`dayphoton run`" + hint);
+  }
   const std::string sensors_path = (fs::path(o.coefficients_dir) / "sensors.csv").string();
   std::optional<sky::PatchBasis> requested_basis;
   if (!o.basis.empty()) requested_basis = parse_basis_option(o.basis);
