@@ -46,6 +46,18 @@ void set_distance(SunSite& s, const weather::EpwFile& epw) {
       great_circle_distance_km(s.solar.latitude_deg, s.solar.longitude_deg, loc.latitude_deg, loc.longitude_east_deg);
 }
 
+/// The sun site at a given place and clock (not the header's), with the station's distance.
+SunSite sun_site_at(double latitude_deg, double longitude_deg, double time_zone_h, double elevation_m,
+                    const weather::EpwFile& epw) {
+  SunSite s;
+  s.solar.latitude_deg = latitude_deg;
+  s.solar.longitude_deg = longitude_deg;
+  s.solar.time_zone_h = time_zone_h;
+  s.solar.elevation_m = elevation_m;
+  set_distance(s, epw);
+  return s;
+}
+
 std::string time_zone_problem(double site_h, const weather::EpwFile& epw) {
   const double file_h = epw.header.location.time_zone_h;
   return "the site's time zone (" + utc_offset_text(site_h) + ") is not the weather file's (" + utc_offset_text(file_h) +
@@ -80,13 +92,7 @@ SunSite resolve_sun_site(const project::Site& site, const weather::EpwFile& epw)
   if (site.time_zone_h != epw.header.location.time_zone_h)
     throw InputError(site.time_zone_location, time_zone_problem(site.time_zone_h, epw),
                      read_source_line(site.time_zone_location.file, site.time_zone_location.line));
-  SunSite s;
-  s.solar.latitude_deg = site.latitude_deg;
-  s.solar.longitude_deg = site.longitude_deg;
-  s.solar.time_zone_h = site.time_zone_h;
-  s.solar.elevation_m = site.elevation_m;
-  set_distance(s, epw);
-  return s;
+  return sun_site_at(site.latitude_deg, site.longitude_deg, site.time_zone_h, site.elevation_m, epw);
 }
 
 std::string sun_site_sentence(const SunSite& s) {
@@ -152,13 +158,7 @@ std::optional<SunSite> recorded_sun_site(const std::string& summary_text, const 
                      "the run computed the sun on the clock of " + utc_offset_text(p.time_zone_h) + ", but the records of " +
                          epw.source_name + " are local standard time of " +
                          utc_offset_text(epw.header.location.time_zone_h) + ": give the run's weather file");
-  SunSite s;
-  s.solar.latitude_deg = p.latitude_deg;
-  s.solar.longitude_deg = p.longitude_deg;
-  s.solar.time_zone_h = p.time_zone_h;
-  s.solar.elevation_m = p.elevation_m;
-  set_distance(s, epw);
-  return s;
+  return sun_site_at(p.latitude_deg, p.longitude_deg, p.time_zone_h, p.elevation_m, epw);
 }
 
 SunSite recorded_or_header_sun_site(const std::string& summary_text, const std::string& summary_path,
