@@ -52,10 +52,11 @@ bool horizontal(const PortInfo& p) { return p.tilt_deg < 0.05; }
 /// hours with direct light while the sun is below the horizon (study/sun_site.h).
 void describe_weather_and_sun(const project::Project& proj, std::vector<std::string>& lines,
                               std::vector<std::string>& sun_lines) {
-  // A daylight-factor study needs no weather file (load_project checks when one is needed).
-  if (proj.weather.path.empty()) {
-    lines = {"none (daylight factors only)"};
-    sun_lines = {"none: no weather file, so no sun (daylight factors only)"};
+  // A daylight-factor study reads no weather file (load_project checks the annual study has one).
+  if (proj.study == project::StudyKind::DaylightFactor) {
+    lines = {proj.weather.path.empty() ? "none: a daylight-factor study (study: daylight_factor)"
+                                       : "not used: a daylight-factor study (study: daylight_factor)"};
+    sun_lines = {"none: a daylight-factor study traces no sun (CIE overcast sky only)"};
     return;
   }
   const weather::EpwFile epw = weather::read_epw(proj.weather.path);

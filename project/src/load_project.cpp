@@ -117,6 +117,11 @@ class Loader {
     long long version = 1;
     if (r.read_integer("version", version)) m_project.format_version = static_cast<int>(version);
     if (const YamlNode* n = r.take("site")) read_site(*n);
+    std::string study;
+    const bool study_written = r.has("study");
+    m_project.study_location = r.location_of("study");
+    if (r.read_choice("study", study))
+      m_project.study = study == "daylight_factor" ? StudyKind::DaylightFactor : StudyKind::Annual;
     const YamlNode* weather = r.take("weather");
     if (weather && weather->is_null())
       m_reporter.error(weather->location, "missing value for 'weather'");
@@ -155,14 +160,7 @@ class Loader {
     r.finish();
     check_photon_limit();
 
-    const Outputs& o = m_project.outputs;
-    if (m_project.site.from_weather && !weather)
-      m_reporter.error(m_from_weather_location,
-                       "site: from_weather: true needs a weather file ('weather'), whose header gives the site");
-    if (m_project.weather.path.empty() && !weather && (o.annual_illuminance || o.metrics))
-      m_reporter.error(root.location,
-                       "missing required key 'weather' in project (needed for annual_illuminance "
-                       "and metrics; set both to false in outputs for a daylight-factor study)");
+    check_study_kind(root, study_written, weather);
     check_references();
     for (std::size_t i = 0; i < m_project.variants.size(); ++i)
       check_variant(m_project, m_project.variants[i], m_variant_added[i], m_reporter);
@@ -271,6 +269,45 @@ class Loader {
     site.utm_zone = static_cast<int>(zone);
     site.utm_north = hemisphere == "north";
     return true;
+  }
+
+  // ---- study kind -----------------------------------------------------------------------
+  /// The study kind against what it needs and what it makes: an annual study needs the
+  /// weather file; a daylight-factor study writes no annual output and has no operated
+  /// shading; a weather file it names is not read (`check`, the run log and summary.json say
+  /// so). A file without `study`,
+  /// without a weather file and without annual outputs is a daylight-factor study.
+  void check_study_kind(const YamlNode& root, bool study_written, const YamlNode* weather) {
+    Outputs& o = m_project.outputs;
+    if (m_project.site.from_weather && !weather)
+      m_reporter.error(m_from_weather_location,
+                       "site: from_weather: true needs a weather file ('weather'), whose header gives the site");
+    if (!study_written && !weather && !o.annual_illuminance && !o.metrics)
+      m_project.study = StudyKind::DaylightFactor;
+    if (m_project.study == StudyKind::Annual) {
+      if (weather) return;
+      if (study_written)
+        m_reporter.error(m_project.study_location,
+                         "study: annual needs a weather file ('weather'); for daylight factors only, write "
+                         "'study: daylight_factor'");
+      else
+        m_reporter.error(root.location,
+                         "missing required key 'weather' in project (the annual study needs it; for daylight "
+                         "factors only, write 'study: daylight_factor')");
+      return;
+    }
+    // A daylight-factor study.
+    for (const auto& [key, written] : m_annual_outputs_written) {
+      if (!written.second) continue;
+      m_reporter.error(written.first, "outputs." + key + ": true needs the annual study; this project is a "
+                                      "daylight-factor study (study: daylight_factor)");
+    }
+    o.annual_illuminance = false;
+    o.metrics = false;
+    if (m_project.operation)
+      m_reporter.error(m_project.operation->location,
+                       "operation needs the annual study (each hour's direct sun); this project is a "
+                       "daylight-factor study (study: daylight_factor)");
   }
 
   // ---- weather --------------------------------------------------------------------------
@@ -1059,6 +1096,10 @@ class Loader {
     r.read_bool("daylight_factor", o.daylight_factor);
     r.read_bool("annual_illuminance", o.annual_illuminance);
     r.read_bool("metrics", o.metrics);
+    for (const char* key : {"annual_illuminance", "metrics"})
+      if (r.has(key))
+        m_annual_outputs_written[key] = {r.location_of(key), key == std::string("metrics") ? o.metrics
+                                                                                            : o.annual_illuminance};
     r.read_bool("coefficients", o.coefficients);
     r.read_bool("images", o.images);
     r.read_bool("report", o.report);
@@ -1378,6 +1419,9 @@ class Loader {
   Project& m_project;
   Reporter& m_reporter;
   const LoadOptions& m_options;
+  /// outputs.annual_illuminance and outputs.metrics where written, with their values
+  /// (check_study_kind: a daylight-factor study cannot make them).
+  std::map<std::string, std::pair<SourceLocation, bool>> m_annual_outputs_written;
   SourceLocation m_from_weather_location;  ///< of site.from_weather (its check needs the weather key)
   NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
       m_roof_light_names{"roof light"},
@@ -1416,6 +1460,10 @@ SourceLocation GridSpec::location_of(const std::string& key) const {
   for (const auto& kv : key_locations)
     if (kv.first == key) return kv.second;
   return location;
+}
+
+const char* study_kind_name(StudyKind kind) {
+  return kind == StudyKind::DaylightFactor ? "daylight_factor" : "annual";
 }
 
 const char* wall_name(Wall wall) {

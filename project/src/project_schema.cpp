@@ -83,7 +83,8 @@ std::vector<SectionSchema> build_schema() {
   s.push_back({"project", "the top level of a project file", {
       P("version", T::Integer, "project-file format version").range(1, 1).def("1"),
       P("site", T::Section, "where the building is").section("site").required(),
-      P("weather", T::Special, "EPW file: a path, or a map {file: path}; needed for annual outputs"),
+      P("study", T::Choice, "what run computes: annual (daylight factors, annual illuminance and metrics from the weather file's skies and sun) or daylight_factor (the CIE overcast sky only: no weather file, no sun traced); default annual, or daylight_factor for a file without weather that sets annual_illuminance and metrics to false").choices({"annual", "daylight_factor"}).def("annual"),
+      P("weather", T::Special, "EPW file: a path, or a map {file: path}; needed by the annual study"),
       P("materials", T::NameMap, "material name -> material definition (map by `type`)").required(),
       P("geometry", T::Section, "rooms, polygons, boxes and meshes").section("geometry").required(),
       P("sensors", T::Section, "sensor grids and point sets").section("sensors"),

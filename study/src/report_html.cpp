@@ -928,7 +928,7 @@ std::string summary_section(const json& summary, const std::string& results_dir,
   // Which site the sun is computed for, in the words of check and the run log (sun_site.h).
   if (site.contains("sun")) {
     const json sun = site.value("sun", json());
-    project.emplace_back("sun and sky", sun.is_string() ? esc(sun.get<std::string>()) : std::string("no weather file: no sun"));
+    project.emplace_back("sun and sky", sun.is_string() ? esc(sun.get<std::string>()) : std::string("daylight-factor study: no sun"));
   }
   if (site.contains("station_distance_km"))
     project.emplace_back("weather station distance (km)", json_scalar(site.value("station_distance_km", json())));
@@ -940,9 +940,14 @@ std::string summary_section(const json& summary, const std::string& results_dir,
   s << "<h3>Site</h3>" << key_value_table(project);
   const std::string weather = summary.value("weather", std::string());
   s << "<h3 id=\"weather\">Weather</h3>";
-  std::vector<std::pair<std::string, std::string>> w{{"weather file", "<code>" + esc(weather) + "</code>"}};
-  for (const auto& [k, v] : weather_station(weather)) w.emplace_back(k, esc(v));
-  if (w.size() == 1) w.emplace_back("station", "the weather file is not readable from here");
+  std::vector<std::pair<std::string, std::string>> w;
+  if (weather.empty()) {
+    w.emplace_back("weather file", "none: a daylight-factor study (CIE overcast sky) needs no weather");
+  } else {
+    w.emplace_back("weather file", "<code>" + esc(weather) + "</code>");
+    for (const auto& [k, v] : weather_station(weather)) w.emplace_back(k, esc(v));
+    if (w.size() == 1) w.emplace_back("station", "the weather file is not readable from here");
+  }
   s << key_value_table(w);
   s << "<h3>Simulation settings</h3>";
   std::vector<std::pair<std::string, std::string>> settings;

@@ -734,9 +734,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   const bool sun_bins = sim.sun == project::SunMode::Bins;
   const AnnualStudySettings annual_settings = annual_settings_of(project);
   const AnnualOutputs which = annual_outputs_of(project);
-  if ((annual || (sun_bins && project.outputs.coefficients)) && project.weather.path.empty()) {
-    log.line(prefix + "annual: the project has no weather file; annual outputs" +
-             (sun_bins ? std::string(" and sun coefficients") : std::string()) + " skipped");
+  if (project.study == project::StudyKind::DaylightFactor) {
+    // Nothing annual: no sky matrix, no sun (the loader turned the annual outputs off).
   } else if (sun_bins && (annual || project.outputs.coefficients)) {
     // Sun bins: sky-only matrix + exact direct sun + interpolated indirect sun.
     const SkyAndSuns& ss = sky_and_suns(project, basis, ctx);
@@ -841,7 +840,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   std::optional<weather::EpwFile> epw;
   std::optional<SunSite> sun_site;
   std::optional<sky::BelowHorizonDirect> below_horizon;
-  if (!project.weather.path.empty()) {
+  const bool annual_study = project.study == project::StudyKind::Annual;
+  if (annual_study) {
     epw = weather::read_epw(project.weather.path);
     sun_site = resolve_sun_site(project.site, *epw);
     below_horizon = annual_below_horizon_direct(*epw, *sun_site);
@@ -864,7 +864,11 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     log.line("removed " + std::to_string(temporaries) + " temporary file(s) of interrupted writes");
   if (outputs.stale_removed() > 0)
     log.line("removed " + std::to_string(outputs.stale_removed()) + " output file(s) of the previous run");
-  if (sim.sun == project::SunMode::Bins)
+  if (!annual_study)
+    report.notes.push_back(
+        "study: daylight factors under the CIE overcast sky (study: daylight_factor): no weather file read, no "
+        "sun traced, no annual results");
+  else if (sim.sun == project::SunMode::Bins)
     report.notes.push_back(
         "sun: sun bins (Reinhart MF " + std::to_string(sim.sun_mf) +
         " patch centres on the sun path, indirect light interpolated) and the direct sun traced "
@@ -877,8 +881,6 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     report.notes.push_back("site: " + sun_site_sentence(*sun_site));
     if (const std::string w = station_distance_warning(*sun_site); !w.empty()) report.notes.push_back("site: " + w);
     report.notes.push_back(below_horizon_note(*below_horizon, sim.sun == project::SunMode::Bins));
-  } else {
-    report.notes.push_back("site: no weather file, so no sun: daylight factors only");
   }
   for (const project::SystemSpec& system : project.geometry.systems)
     report.notes.push_back("system: " + project::describe_system_light(system));
@@ -917,7 +919,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   if (op && !open_tables.grids.empty() && open_tables.grids.size() == shaded_tables.grids.size())
     operated = run_operated(project, *op, open_tables, shaded_tables, join(report.output_dir, "operated"), ctx);
   else if (op)
-    log.line("operated: skipped (no annual results: the project has no weather file)");
+    log.line("operated: skipped (no annual results)");
 
   // 7. summary.json and the run log.
   nlohmann::json summary = {
@@ -926,7 +928,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
       {"output", report.output_dir},
       {"site", site_json(project.site, sun_site ? &*sun_site : nullptr, below_horizon ? &*below_horizon : nullptr,
                          sim.sun == project::SunMode::Bins)},
-      {"weather", project.weather.path},
+      {"study", project::study_kind_name(project.study)},
+      {"weather", annual_study ? project.weather.path : std::string()},
       {"simulation", {{"basis", sim.basis == project::SkyBasis::Tregenza ? "tregenza" : "reinhart"},
                       {"reinhart_mf", sim.basis == project::SkyBasis::Tregenza ? 1 : sim.reinhart_mf},
                       {"photons_per_bin", sim.photons_per_bin},
@@ -949,7 +952,10 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
       {"variants", variants},
       {"notes", report.notes}};
   if (!operated.is_null()) summary["operated"] = operated;
-  if (sim.sun == project::SunMode::Bins) {
+  if (!annual_study) {
+    summary["simulation"].erase("sun");
+    summary["simulation"].erase("annual_sky");
+  } else if (sim.sun == project::SunMode::Bins) {
     summary["simulation"]["sun_mf"] = sim.sun_mf;
     summary["simulation"]["sun_photons_per_bin"] = sun_tracing_options(project, true).photons_per_source;
     summary["simulation"]["sun_bandwidth"] = sun_bin_bandwidth(static_cast<std::size_t>(sim.bandwidth));

@@ -41,6 +41,7 @@ check_case check_window_too_big 1 check tests/cli/cases/window_too_big.yaml
 check_case check_variant_window_too_big 1 check tests/cli/cases/variant_window_too_big.yaml
 check_case check_yaml_syntax 1 check tests/cli/cases/syntax.yaml
 check_case check_daylight_factor_only 0 check tests/cli/cases/daylight_factor_only.yaml
+check_case check_daylight_factor_study 0 check tests/cli/cases/daylight_factor_study.yaml
 check_case check_site_other_time_zone 1 check tests/cli/cases/site_other_time_zone.yaml
 check_case check_site_far_from_station 0 check tests/cli/cases/site_far_from_station.yaml
 check_case check_site_from_weather 0 check tests/cli/cases/site_from_weather.yaml
@@ -132,6 +133,21 @@ if [ "$code" -eq 0 ] && grep -q '"dropped_sensors"' "$scratch/roof/summary.json"
   echo "ok   run_drop_occluded"; passed=$((passed + 1))
 else
   echo "FAIL run_drop_occluded: exit $code"; cat "$scratch/roof.out"; failed=$((failed + 1))
+fi
+
+# study: daylight_factor with a weather file: no sky matrix, no sun step, no annual output.
+"$bin" run tests/cli/cases/daylight_factor_study.yaml --output "$scratch/df_study" --quiet >"$scratch/df_study.out" 2>&1
+code=$?
+if [ "$code" -eq 0 ] && [ -s "$scratch/df_study/workplane/daylight_factor.csv" ] &&
+   [ -s "$scratch/df_study/workplane/coefficients_sky.mtx" ] &&
+   [ ! -e "$scratch/df_study/workplane/coefficients_sun.mtx" ] && [ ! -e "$scratch/df_study/workplane/illuminance.csv" ] &&
+   ! grep -qE "^(sky matrix|sun |direct sun|annual)" "$scratch/df_study/run.log" &&
+   grep -q '"study": "daylight_factor"' "$scratch/df_study/summary.json" &&
+   grep -q '"weather": ""' "$scratch/df_study/summary.json" &&
+   grep -q "study: daylight factors under the CIE overcast sky" "$scratch/df_study/run.log"; then
+  echo "ok   run_daylight_factor_study"; passed=$((passed + 1))
+else
+  echo "FAIL run_daylight_factor_study: exit $code"; cat "$scratch/df_study.out" "$scratch/df_study/run.log"; failed=$((failed + 1))
 fi
 
 # A project in a folder whose name is not UTF-8 (Latin-1 'cafe' with an acute accent): the run

@@ -238,6 +238,46 @@ TEST(ProjectLoader, EachErrorClassHasItsExactMessageAndLocation) {
   }
 }
 
+TEST(ProjectLoader, StudyKindDecidesWhatTheWeatherFileAndTheOutputsMayBe) {
+  const std::string site = "site: {latitude: 37.72, longitude: -122.22, time_zone: -8}\n";
+  const std::string rest = "materials: {}\ngeometry: {}\n";
+  // The annual study (the default) needs the weather file, located at the top or at `study`.
+  EXPECT_EQ(errors_of(site + rest),
+            std::vector<std::string>{"1:1: missing required key 'weather' in project (the annual study needs it; "
+                                     "for daylight factors only, write 'study: daylight_factor')"});
+  EXPECT_EQ(errors_of(site + "study: annual\n" + rest),
+            std::vector<std::string>{"2:8: study: annual needs a weather file ('weather'); for daylight factors "
+                                     "only, write 'study: daylight_factor'"});
+  // A daylight-factor study: no weather needed, the annual outputs off.
+  const Project df = load_project_from_string(site + "study: daylight_factor\n" + rest, FakePath);
+  EXPECT_EQ(df.study, StudyKind::DaylightFactor);
+  EXPECT_FALSE(df.outputs.annual_illuminance);
+  EXPECT_FALSE(df.outputs.metrics);
+  EXPECT_TRUE(df.outputs.daylight_factor);
+  // ... also with a weather file, which it does not read.
+  const Project dfw =
+      load_project_from_string(site + "study: daylight_factor\nweather: " + OfficeEpw + "\n" + rest, FakePath);
+  EXPECT_EQ(dfw.study, StudyKind::DaylightFactor);
+  // The form before `study`: no weather file and no annual output is a daylight-factor study.
+  EXPECT_EQ(load_project_from_string(Head + rest, FakePath).study, StudyKind::DaylightFactor);
+  // With the weather file and nothing said, the annual study.
+  EXPECT_EQ(load_project_from_string(site + "weather: " + OfficeEpw + "\n" + rest, FakePath).study,
+            StudyKind::Annual);
+  // A daylight-factor study cannot make annual outputs or operate shading.
+  EXPECT_EQ(errors_of(site + "study: daylight_factor\noutputs: {metrics: true, annual_illuminance: false}\n" + rest +
+                      "operation: {open: a, shaded: b}\n"),
+            (std::vector<std::string>{
+                "6:19: unknown case 'a' in operation.open (a variant name or 'base')",
+                "6:30: unknown case 'b' in operation.shaded (a variant name or 'base')",
+                "3:20: outputs.metrics: true needs the annual study; this project is a daylight-factor study "
+                "(study: daylight_factor)",
+                "6:12: operation needs the annual study (each hour's direct sun); this project is a "
+                "daylight-factor study (study: daylight_factor)"}));
+  const std::vector<std::string> bad_kind = errors_of(site + "study: hourly\n" + rest);
+  ASSERT_FALSE(bad_kind.empty());
+  EXPECT_EQ(bad_kind[0].rfind("2:8: ", 0), 0u) << bad_kind[0];
+}
+
 TEST(ProjectLoader, EmptyFileIsALocatedError) {
   EXPECT_EQ(errors_of(""), std::vector<std::string>{"1:1: the project file is empty"});
   EXPECT_EQ(errors_of("# only a comment\n"), std::vector<std::string>{"1:1: the project file is empty"});

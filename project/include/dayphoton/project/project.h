@@ -59,6 +59,13 @@ struct Site {
   double rotation_to_true_north_deg() const { return north_deg - meridian_convergence_deg; }
 };
 
+/// What `run` computes (`study`, docs/project-format.md): the annual study (daylight factors,
+/// the weather file's annual skies and sun, annual illuminance and metrics), or daylight
+/// factors only (the CIE overcast sky: no weather file is read and no sun is traced).
+enum class StudyKind { Annual, DaylightFactor };
+/// The `study` value of the project file ("annual", "daylight_factor").
+const char* study_kind_name(StudyKind kind);
+
 struct Weather {
   std::string path;           ///< resolved against the project file's folder
   std::string path_as_written;
@@ -526,6 +533,10 @@ struct Project {
   std::string path;       ///< the project file as given
   std::string directory;  ///< its folder, for resolving relative paths
   Site site;
+  /// Annual unless the file says `study: daylight_factor`, or has no weather file and asks
+  /// for no annual output (the form before the `study` key existed).
+  StudyKind study = StudyKind::Annual;
+  SourceLocation study_location;  ///< of `study` if written, else of the file's top level
   Weather weather;
   std::vector<MaterialSpec> materials;
   Geometry geometry;
