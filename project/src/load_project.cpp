@@ -156,6 +156,7 @@ class Loader {
     }
     for_each_item(r, "variants", [&](const YamlNode& n) { read_variant(n); });
     if (const YamlNode* n = r.take("operation")) read_operation(*n);
+    for_each_item(r, "points_in_time", [&](const YamlNode& n) { read_point_in_time(n); });
     if (const YamlNode* n = r.take("limits")) read_limits(*n);
     r.finish();
     check_photon_limit();
@@ -271,6 +272,94 @@ class Loader {
     return true;
   }
 
+  // ---- points in time -------------------------------------------------------------------
+  void read_point_in_time(const YamlNode& node) {
+    if (!expect_map(node, "points_in_time item", m_reporter)) return;
+    PointInTimeSpec c;
+    c.location = node.location;
+    ParamReader r(node, schema_section("point_in_time"), m_reporter);
+    bool ok = true;
+    if (r.read_string("name", c.name)) {
+      m_point_folders.add("point-in-time case", c.name, r.location_of("name"), m_reporter);
+      m_point_names.add(c.name, r.location_of("name"), m_reporter);
+    } else {
+      ok = false;
+    }
+    std::string date, time, sky;
+    if (r.read_string("date", date)) ok = parse_month_day(date, r.location_of("date"), c.month, c.day) && ok;
+    else ok = false;
+    c.time_location = r.location_of("time");
+    if (r.read_string("time", time)) ok = parse_time_of_day(time, c.time_location, c.hour_lst) && ok;
+    else ok = false;
+    if (r.read_choice("sky", sky))
+      c.sky = sky == "weather" ? PointSky::Weather : sky == "cie" ? PointSky::CieGeneral : PointSky::CieOvercast;
+    else
+      ok = false;
+    long long type = 0;
+    const bool has_type = r.has("cie_type");
+    if (r.read_integer("cie_type", type)) c.cie_type = static_cast<int>(type);
+    const bool has_diffuse = r.has("diffuse_horizontal_illuminance");
+    r.read_number("diffuse_horizontal_illuminance", c.diffuse_horizontal_illuminance_lux);
+    const bool has_direct = r.has("direct_normal_illuminance");
+    r.read_number("direct_normal_illuminance", c.direct_normal_illuminance_lux);
+    // Each sky takes exactly its own keys: a key another sky needs is an error, not ignored.
+    const std::string why = std::string("with sky: ") + point_sky_name(c.sky);
+    if (c.sky == PointSky::CieGeneral) {
+      if (!has_type) m_reporter.error(c.location, "missing required key 'cie_type' in points_in_time item (sky: cie)");
+      if (!has_direct)
+        m_reporter.error(c.location, "missing required key 'direct_normal_illuminance' in points_in_time item "
+                                     "(sky: cie; the sun's direct normal illuminance in lux, 0 for no sun)");
+    } else {
+      if (has_type) m_reporter.error(r.location_of("cie_type"), "'cie_type' is not used " + why + " (only with sky: cie)");
+      if (has_direct)
+        m_reporter.error(r.location_of("direct_normal_illuminance"),
+                         "'direct_normal_illuminance' is not used " + why +
+                             (c.sky == PointSky::Weather ? " (the weather file gives the sun)" : " (it has no sun)"));
+    }
+    if (c.sky == PointSky::Weather && has_diffuse)
+      m_reporter.error(r.location_of("diffuse_horizontal_illuminance"),
+                       "'diffuse_horizontal_illuminance' is not used with sky: weather (the weather file gives the sky)");
+    r.finish();
+    if (ok) m_project.points_in_time.push_back(std::move(c));
+  }
+
+  /// "MM-DD" (also "M-D"): a date of a non-leap year.
+  bool parse_month_day(const std::string& text, const SourceLocation& at, int& month, int& day) {
+    static const int days_in_month[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    const std::size_t dash = text.find('-');
+    long long m = 0, d = 0;
+    if (dash == std::string::npos || !parse_integer(text.substr(0, dash), m) || !parse_integer(text.substr(dash + 1), d) ||
+        m < 1 || m > 12 || d < 1 || d > days_in_month[m - 1]) {
+      m_reporter.error(at, "bad date '" + printable_name(text) +
+                               "' for 'date': expected month-day of a non-leap year, e.g. 03-21");
+      return false;
+    }
+    month = static_cast<int>(m);
+    day = static_cast<int>(d);
+    return true;
+  }
+
+  /// "HH:MM" or decimal hours, in [0, 24].
+  bool parse_time_of_day(const std::string& text, const SourceLocation& at, double& hours) {
+    const std::size_t colon = text.find(':');
+    double h = -1;
+    if (colon == std::string::npos) {
+      if (!parse_double(text, h)) h = -1;
+    } else {
+      long long hh = 0, mm = 0;
+      if (colon + 3 == text.size() && parse_integer(text.substr(0, colon), hh) &&
+          parse_integer(text.substr(colon + 1), mm) && mm >= 0 && mm < 60 && hh >= 0)
+        h = double(hh) + double(mm) / 60.0;
+    }
+    if (!(h >= 0 && h <= 24)) {
+      m_reporter.error(at, "bad time '" + printable_name(text) +
+                               "' for 'time': expected local standard time as HH:MM or decimal hours in [0, 24]");
+      return false;
+    }
+    hours = h;
+    return true;
+  }
+
   // ---- study kind -----------------------------------------------------------------------
   /// The study kind against what it needs and what it makes: an annual study needs the
   /// weather file; a daylight-factor study writes no annual output and has no operated
@@ -296,7 +385,15 @@ class Loader {
                          "factors only, write 'study: daylight_factor')");
       return;
     }
-    // A daylight-factor study.
+    // A daylight-factor study: points in time under the weather file's sky need the annual study.
+    for (const PointInTimeSpec& c : m_project.points_in_time)
+      if (c.sky == PointSky::Weather)
+        m_reporter.error(c.location, "point-in-time case '" + c.name + "': sky: weather needs the annual study "
+                                     "(study: annual with a weather file)");
+      else if (m_project.site.from_weather)
+        m_reporter.error(c.location, "point-in-time case '" + c.name + "': the sun needs the site, and a "
+                                     "daylight-factor study does not read the weather file (site: from_weather); "
+                                     "give latitude, longitude and time_zone in site");
     for (const auto& [key, written] : m_annual_outputs_written) {
       if (!written.second) continue;
       m_reporter.error(written.first, "outputs." + key + ": true needs the annual study; this project is a "
@@ -1422,6 +1519,8 @@ class Loader {
   /// outputs.annual_illuminance and outputs.metrics where written, with their values
   /// (check_study_kind: a daylight-factor study cannot make them).
   std::map<std::string, std::pair<SourceLocation, bool>> m_annual_outputs_written;
+  NameSet m_point_names{"point-in-time case"};
+  FolderNames m_point_folders{{}, ""};
   SourceLocation m_from_weather_location;  ///< of site.from_weather (its check needs the weather key)
   NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
       m_roof_light_names{"roof light"},
@@ -1464,6 +1563,15 @@ SourceLocation GridSpec::location_of(const std::string& key) const {
 
 const char* study_kind_name(StudyKind kind) {
   return kind == StudyKind::DaylightFactor ? "daylight_factor" : "annual";
+}
+
+const char* point_sky_name(PointSky sky) {
+  switch (sky) {
+    case PointSky::CieOvercast: return "cie_overcast";
+    case PointSky::CieGeneral: return "cie";
+    case PointSky::Weather: return "weather";
+  }
+  return "cie_overcast";
 }
 
 const char* wall_name(Wall wall) {

@@ -92,6 +92,7 @@ std::vector<SectionSchema> build_schema() {
       P("outputs", T::Section, "what to write and where").section("outputs"),
       P("metrics", T::Section, "thresholds and occupancy of the results").section("metrics"),
       P("variants", T::SectionList, "study variants: the project with some materials or systems replaced, geometry removed or added").section("variant"),
+      P("points_in_time", T::SectionList, "point-in-time cases: the illuminance at every sensor at one date and time under one sky").section("point_in_time"),
       P("operation", T::Section, "operated shading (LM-83 blinds rule): per hour the open or the shaded case").section("operation"),
       P("limits", T::Section, "the largest study the project may make; raise a limit for a study that needs more").section("limits"),
   }});
@@ -449,6 +450,15 @@ std::vector<SectionSchema> build_schema() {
       P("shaded", T::String, "case of the shaded state (a variant name or `base`), used in the hours the rule closes the shading").required(),
       P("direct_sun_threshold", T::Number, "a sensor sees direct sun when its direct-sun-only, zero-bounce illuminance in the open case is >= this").unit("lx").above(0).def("1000"),
       P("sunlit_limit", T::Number, "an hour is shaded when MORE than this share of the grid's sensors see direct sun").unit("%").range(0, 100).def("2"),
+  }});
+  s.push_back({"point_in_time", "one date and local standard time under one sky: illuminance per sensor (sky, sun and their reflections)", {
+      P("name", T::String, "case name: a column of point_in_time.csv and an image name (the folder-name rule)").required(),
+      P("date", T::String, "month-day, e.g. 03-21 (29 February is not a date of the study's year)").required(),
+      P("time", T::String, "local standard time (no daylight saving), HH:MM or decimal hours, 0 to 24").required(),
+      P("sky", T::Choice, "cie_overcast: the CIE standard overcast sky, no sun; cie: the CIE standard general sky of cie_type with its sun; weather: the weather file's hour that contains the time (its Perez sky and sun, as in the annual study)").choices({"cie_overcast", "cie", "weather"}).required(),
+      P("cie_type", T::Integer, "CIE standard general sky type (ISO 15469:2004 / CIE S 011), with sky: cie").range(1, 15),
+      P("diffuse_horizontal_illuminance", T::Number, "horizontal illuminance of the sky alone (without the sun), CIE skies").unit("lx").above(0).def("10000"),
+      P("direct_normal_illuminance", T::Number, "the sun's direct normal illuminance, with sky: cie (required: 0 for a sky without sun)").unit("lx").range(0, 200000),
   }});
   return s;
 }

@@ -266,12 +266,7 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
     if (sun_lux_normal > 0) {
       if (options.sun != SunInMatrix::None) spread_sun(basis, sun.direction, sun_lux_normal, result.matrix, t);
       if (sun.direction.z > 0) {
-        SunRecord record_out;
-        record_out.step = t;
-        record_out.direction = sun.direction;
-        record_out.direct_normal_illuminance_lux = sun_lux_normal;
-        record_out.disc_radiance = sun_lux_normal / (RadianceWhiteEfficacy_lm_per_W * SunDiscSolidAngle_sr);
-        suns[t] = record_out;
+        suns[t] = sun_record(t, sun.direction, sun_lux_normal);
       }
     }
   });
@@ -280,6 +275,15 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
     if (s) result.suns.push_back(*s);
   result.below_horizon_direct = tally_below_horizon(below_horizon_W_m2, epw);
   return result;
+}
+
+SunRecord sun_record(std::size_t step, const Vec3& direction, double direct_normal_illuminance_lux) {
+  SunRecord r;
+  r.step = step;
+  r.direction = direction;
+  r.direct_normal_illuminance_lux = direct_normal_illuminance_lux;
+  r.disc_radiance = direct_normal_illuminance_lux / (RadianceWhiteEfficacy_lm_per_W * SunDiscSolidAngle_sr);
+  return r;
 }
 
 RadianceMatrix sky_vector(const SkyModel& sky, const PatchBasis& basis, const Vec3& ground_radiance,

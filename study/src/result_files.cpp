@@ -112,6 +112,24 @@ void write_daylight_factor_csv(const std::vector<SensorPoint>& sensors, const st
   });
 }
 
+void write_point_in_time_csv(const std::vector<SensorPoint>& sensors, const std::vector<std::string>& case_names,
+                             const metrics::IlluminanceTable& table, const std::string& path) {
+  check_count(sensors.size(), table.sensor_count(), path);
+  if (case_names.size() != table.step_count())
+    throw std::invalid_argument(path + ": " + std::to_string(case_names.size()) + " case names for " +
+                                std::to_string(table.step_count()) + " steps");
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "index,x,y,z";
+    for (const std::string& name : case_names) out << ',' << name << "_lux";
+    out << '\n';
+    for (std::size_t i = 0; i < sensors.size(); ++i) {
+      out << index_xyz(i, sensors[i]);
+      for (std::size_t k = 0; k < case_names.size(); ++k) out << ',' << fixed(table.lux(k, i), 1);
+      out << '\n';
+    }
+  });
+}
+
 std::vector<std::string> metrics_csv_columns(const metrics::MetricSettings& settings, bool with_ase) {
   const std::string x = threshold_name(settings.da_threshold_lux);
   const std::string low = threshold_name(settings.udi_lower_lux);

@@ -202,6 +202,22 @@ std::vector<GridQuantity> grid_quantities(const std::string& grid_dir) {
         out.push_back({"mean_occupied_illuminance", "metrics.csv", c, "mean illuminance over the occupied hours",
                        "lx", illuminance_scale()});
   }
+  // Point-in-time cases: one `<case>_lux` column each (result_files.h), one image each.
+  const std::string points = join(grid_dir, "point_in_time.csv");
+  if (fs::exists(points)) {
+    std::ifstream in(points);
+    std::string header;
+    std::getline(in, header);
+    if (!header.empty() && header.back() == '\r') header.pop_back();
+    std::stringstream ss(header);
+    const std::string lux = "_lux";
+    for (std::string c; std::getline(ss, c, ',');)
+      if (c.size() > lux.size() && c.compare(c.size() - lux.size(), lux.size(), lux) == 0) {
+        const std::string name = c.substr(0, c.size() - lux.size());
+        out.push_back({"point_in_time_" + name, "point_in_time.csv", c, "illuminance at point in time '" + name + "'",
+                       "lx", illuminance_scale()});
+      }
+  }
   return out;
 }
 

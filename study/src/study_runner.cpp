@@ -32,6 +32,7 @@
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/placement_check.h"
+#include "dayphoton/study/point_in_time.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/operated_shading.h"
 #include "dayphoton/study/output_lock.h"
@@ -537,6 +538,67 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   return result;
 }
 
+/// The point-in-time cases of one case (point_in_time.h) at every grid: point_in_time.csv per
+/// grid and each grid's summary.json `point_in_time` entries (`grids_json[g]`).
+void run_points_in_time(const project::Project& project, const std::string& prefix,
+                        const SceneDescription& description, const engine::Scene& scene,
+                        const std::vector<engine::Material>& materials,
+                        const std::vector<engine::ReceiverPlane>& planes, const std::vector<int>& plane_of_grid,
+                        const sky::PatchBasis& basis, const std::vector<RadianceMatrix>& sky_coefficients,
+                        const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx) {
+  const project::Simulation& sim = project.simulation;
+  const std::vector<project::PointInTimeSpec>& cases = project.points_in_time;
+  const bool weather_cases = std::any_of(cases.begin(), cases.end(), [](const project::PointInTimeSpec& c) {
+    return c.sky == project::PointSky::Weather;
+  });
+  const SkyAndSuns* annual = weather_cases ? &sky_and_suns(project, basis, ctx) : nullptr;
+  const project::Site& ps = project.site;
+  const sky::SolarSite site = ctx.sun_site ? ctx.sun_site->solar
+                                           : sky::SolarSite{ps.latitude_deg, ps.longitude_deg, ps.time_zone_h,
+                                                            ps.elevation_m};
+  const SkyAndSuns skies = point_in_time_skies(cases, site, basis, sim.ground_reflectance, annual);
+  for (const std::string& line : describe_points_in_time(cases, skies)) ctx.log.line(prefix + "point in time " + line);
+  std::vector<GridSun> sun;
+  std::optional<engine::SunBins> bins;
+  if (!skies.suns.empty()) {
+    std::vector<Vec3> directions;
+    for (const sky::SunRecord& s : skies.suns) directions.push_back(s.direction);
+    bins = engine::SunBins::for_suns(directions, sim.sun_mf);
+    sun = run_sun_bins(project, prefix + "point in time ", description, scene, materials, planes, plane_of_grid,
+                       skies, *bins, ctx);
+  }
+  std::vector<std::string> names;
+  for (const project::PointInTimeSpec& c : cases) names.push_back(c.name);
+  for (std::size_t g = 0; g < description.grids.size(); ++g) {
+    const SensorGrid& grid = description.grids[g];
+    metrics::IlluminanceTable table = annual_illuminance(sky_coefficients[g], skies.sky.matrix, skies.sky.steps);
+    if (bins) {
+      const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, skies.suns, skies.sky.steps);
+      const metrics::IlluminanceTable indirect =
+          indirect_sun_table(sun[g].bin_coefficients, *bins, skies.suns, skies.sky.steps);
+      for (std::size_t k = 0; k < table.step_count(); ++k)
+        for (std::size_t i = 0; i < table.sensor_count(); ++i)
+          table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + double(direct.lux(k, i)) +
+                                               double(indirect.lux(k, i)));
+    }
+    const std::string path = join(folders[g], "point_in_time.csv");
+    write_point_in_time_csv(grid.points, names, table, path);
+    ctx.outputs.record(path);
+    nlohmann::json entries = nlohmann::json::array();
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      std::vector<double> values(table.sensor_count());
+      for (std::size_t i = 0; i < values.size(); ++i) values[i] = table.lux(k, i);
+      const GridStatistics st = grid_statistics(values, {});
+      entries.push_back({{"name", cases[k].name}, {"sky", project::point_sky_name(cases[k].sky)},
+                         {"illuminance_lux", {{"mean", st.mean}, {"median", st.median}, {"min", st.min},
+                                              {"max", st.max}, {"uniformity", st.uniformity}}}});
+    }
+    grids_json[g]["point_in_time"] = entries;
+    ctx.log.line(prefix + "point in time " + grid.name + ": " + std::to_string(cases.size()) + " case(s) at " +
+                 std::to_string(grid.points.size()) + " sensors");
+  }
+}
+
 /// What the operated result takes from one case (sun: bins), per grid in the case's order.
 struct CaseTables {
   struct Grid {
@@ -778,6 +840,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
     }
   }
+  // 7. Point-in-time cases.
+  if (!project.points_in_time.empty())
+    run_points_in_time(project, prefix, description, scene, materials, planes, plane_of_grid, basis,
+                       coefficient_matrices, folders, grids_json, ctx);
   return grids_json;
 }
 

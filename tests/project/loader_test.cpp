@@ -278,6 +278,38 @@ TEST(ProjectLoader, StudyKindDecidesWhatTheWeatherFileAndTheOutputsMayBe) {
   EXPECT_EQ(bad_kind[0].rfind("2:8: ", 0), 0u) << bad_kind[0];
 }
 
+TEST(ProjectLoader, PointsInTimeTakeTheKeysOfTheirSky) {
+  const std::string head = Head + "materials: {}\ngeometry: {}\npoints_in_time:\n";
+  const Project p = load_project_from_string(
+      head + "  - {name: a, date: 12-21, time: \"9:30\", sky: cie, cie_type: 12, direct_normal_illuminance: 0}\n"
+             "  - {name: b, date: 3-1, time: 15.25, sky: cie_overcast, diffuse_horizontal_illuminance: 20000}\n",
+      FakePath);
+  ASSERT_EQ(p.points_in_time.size(), 2u);
+  EXPECT_EQ(p.points_in_time[0].month, 12);
+  EXPECT_EQ(p.points_in_time[0].day, 21);
+  EXPECT_DOUBLE_EQ(p.points_in_time[0].hour_lst, 9.5);
+  EXPECT_EQ(p.points_in_time[0].sky, PointSky::CieGeneral);
+  EXPECT_EQ(p.points_in_time[0].cie_type, 12);
+  EXPECT_DOUBLE_EQ(p.points_in_time[0].diffuse_horizontal_illuminance_lux, 10000);
+  EXPECT_DOUBLE_EQ(p.points_in_time[1].hour_lst, 15.25);
+  EXPECT_DOUBLE_EQ(p.points_in_time[1].diffuse_horizontal_illuminance_lux, 20000);
+  EXPECT_EQ(errors_of(head +
+                      "  - {name: a, date: 02-29, time: \"25:00\", sky: cie}\n"
+                      "  - {name: a, date: 1-1, time: 1, sky: cie_overcast, cie_type: 3, direct_normal_illuminance: 5}\n"
+                      "  - {name: w, date: 1-1, time: 12, sky: weather, diffuse_horizontal_illuminance: 5}\n"),
+            (std::vector<std::string>{
+                "6:21: bad date '02-29' for 'date': expected month-day of a non-leap year, e.g. 03-21",
+                "6:34: bad time '25:00' for 'time': expected local standard time as HH:MM or decimal hours in [0, 24]",
+                "6:5: missing required key 'cie_type' in points_in_time item (sky: cie)",
+                "6:5: missing required key 'direct_normal_illuminance' in points_in_time item (sky: cie; the sun's "
+                "direct normal illuminance in lux, 0 for no sun)",
+                "7:12: duplicate point-in-time case name 'a' (first defined at line 6)",
+                "7:64: 'cie_type' is not used with sky: cie_overcast (only with sky: cie)",
+                "7:94: 'direct_normal_illuminance' is not used with sky: cie_overcast (it has no sun)",
+                "8:82: 'diffuse_horizontal_illuminance' is not used with sky: weather (the weather file gives the sky)",
+                "8:5: point-in-time case 'w': sky: weather needs the annual study (study: annual with a weather file)"}));
+}
+
 TEST(ProjectLoader, EmptyFileIsALocatedError) {
   EXPECT_EQ(errors_of(""), std::vector<std::string>{"1:1: the project file is empty"});
   EXPECT_EQ(errors_of("# only a comment\n"), std::vector<std::string>{"1:1: the project file is empty"});

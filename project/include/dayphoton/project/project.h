@@ -528,6 +528,31 @@ struct OperationSpec {
   SourceLocation location;
 };
 
+/// The sky of a point-in-time case (`points_in_time[].sky`).
+enum class PointSky {
+  CieOvercast,  ///< CIE standard overcast sky (Moon & Spencer), no sun
+  CieGeneral,   ///< CIE standard general sky of type 1..15 (ISO 15469 / CIE S 011) with its sun
+  Weather,      ///< the weather file's hour that contains the time (the annual study's sky and sun)
+};
+/// The `sky` value of the project file ("cie_overcast", "cie", "weather").
+const char* point_sky_name(PointSky sky);
+
+/// A point-in-time case (`points_in_time`): the illuminance at every sensor at one date and
+/// local standard time under one sky, with its sun.
+struct PointInTimeSpec {
+  std::string name;
+  int month = 1, day = 1;
+  double hour_lst = 12;  ///< local standard time, [0, 24]
+  PointSky sky = PointSky::CieOvercast;
+  int cie_type = 0;      ///< CieGeneral: 1..15
+  /// CIE skies: the sky's (diffuse) horizontal illuminance, lux.
+  double diffuse_horizontal_illuminance_lux = 10000;
+  /// CieGeneral: the sun's direct normal illuminance, lux (0: no sun).
+  double direct_normal_illuminance_lux = 0;
+  SourceLocation location;       ///< of the case
+  SourceLocation time_location;  ///< of `time` (a sun below the horizon is located there)
+};
+
 struct Project {
   int format_version = 1; ///< `version` key of the file (only 1 exists)
   std::string path;       ///< the project file as given
@@ -546,6 +571,7 @@ struct Project {
   MetricsSettings metrics;
   std::vector<VariantSpec> variants;  ///< in file order; empty if the file has none
   std::optional<OperationSpec> operation;  ///< absent: no operated result
+  std::vector<PointInTimeSpec> points_in_time;  ///< in file order; empty if the file has none
   /// `limits`: the largest study this project may make (sensors, photons), each checked
   /// before anything of that size is allocated; defaults in core/resource_limits.h.
   ResourceLimits limits;

@@ -71,6 +71,10 @@ struct SunRecord {
   double disc_radiance = 0;
 };
 
+/// The SunRecord of a sun of `direct_normal_illuminance_lux` along `direction` at `step`: its
+/// disc radiance spreads the illuminance over the 0.533 degree disc (SunHalfAngle_rad).
+SunRecord sun_record(std::size_t step, const Vec3& direction, double direct_normal_illuminance_lux);
+
 /// Records whose direct normal irradiance is > 0 while the centre of the sun is below the
 /// horizon at the site (altitude <= 0 by the options' algorithm, at the record's mid-hour):
 /// measured direct light that the site's sun cannot bring at that time. build_sky_matrix

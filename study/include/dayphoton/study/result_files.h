@@ -7,6 +7,7 @@
 
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/metrics/annual_metrics.h"
+#include "dayphoton/metrics/illuminance_table.h"
 
 namespace dayphoton::study {
 
@@ -19,6 +20,10 @@ std::vector<SensorPoint> read_sensors_csv(const std::string& path);
 /// daylight_factor.csv: index,x,y,z,df_percent (4 decimals).
 void write_daylight_factor_csv(const std::vector<SensorPoint>& sensors,
                                const std::vector<double>& df_percent, const std::string& path);
+/// point_in_time.csv: index,x,y,z then one `<case>_lux` column per point-in-time case
+/// (`case_names`, in file order), lux with 1 decimal. `table` has one step per case.
+void write_point_in_time_csv(const std::vector<SensorPoint>& sensors, const std::vector<std::string>& case_names,
+                             const metrics::IlluminanceTable& table, const std::string& path);
 /// metrics.csv: index,x,y,z then da<X>_percent, cda<X>_percent, damax_percent,
 /// udi_below<L>_percent, udi<L>_<U1>_percent, udi_above<U1>_percent,
 /// udi_supplementary<L>_<X>_percent, udi_autonomous<X>_<U2>_percent, udi_above<U2>_percent,

@@ -1,0 +1,56 @@
+// Point-in-time cases (project key `points_in_time`): the illuminance at every sensor at one
+// date and local standard time under one sky, with its sun and every reflection of both.
+//
+// Each case becomes one step of the sun-bins mode's layout (annual_sun.h), so the cases are
+// computed exactly as an hour of the annual study:
+//   E[case][s] = sky coefficients x the case's sky column (sky and ground, no sun)
+//              + direct sun  : traced exactly for the case's sun (direct_sun_coefficients)
+//              + indirect sun: the sun-bin coefficients interpolated to the case's sun
+// The skies:
+//   - cie_overcast: the CIE standard overcast sky (Moon & Spencer 1942; CIE S 011 type 16)
+//     scaled to the given horizontal illuminance, built as the daylight factor's sky is, so
+//     E = DF x E_h / 100 at every sensor;
+//   - cie: the CIE standard general sky of type 1..15 (ISO 15469:2004 / CIE S 011/E:2003) for
+//     the sun at the case's time, scaled to the given diffuse horizontal illuminance, plus a
+//     sun of the given direct normal illuminance;
+//   - weather: the weather file's record that contains the time, taken from the annual
+//     study's sky without the sun and its sun record (the same numbers as that hour of
+//     the annual study).
+// The ground (bin 0) is the Lambertian ground lit by the sky and the sun, as in the annual sky
+// matrix (sky::ground_radiance_rgb).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/metrics/illuminance_table.h"
+#include "dayphoton/project/project.h"
+#include "dayphoton/sky/patch_basis.h"
+#include "dayphoton/sky/solar_position.h"
+#include "dayphoton/study/annual_sun.h"
+
+namespace dayphoton::study {
+
+/// The solar position algorithm of the CIE cases: NREL SPA (Reda & Andreas 2004), without
+/// refraction, for this year (a date of the study has no year; the sun's position at a given
+/// date and time moves by less than 0.02 degree from one year to the next within a leap cycle).
+constexpr int PointInTimeSolarYear = 2001;
+
+/// The cases' skies and suns: one step per case in file order (time stamp = the case's date and
+/// time), sky columns without the sun, a SunRecord for every case whose sun is above the
+/// horizon and has direct light. `annual` (the annual study's sky without the sun and its
+/// suns) is needed only by `sky: weather` cases. Throws InputError located at a case's `time`
+/// for a CIE general sky whose sun is below the horizon, or at the case for a weather case
+/// whose time the weather file does not hold.
+SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& cases, const sky::SolarSite& site,
+                               const sky::PatchBasis& basis, double ground_reflectance,
+                               const SkyAndSuns* annual);
+
+/// One sentence per case for the run log and summary.json: "winter_noon: 12-21 12:00 LST,
+/// CIE general sky type 12, sun at 28.8 deg altitude, 180.1 deg azimuth, 80000 lx direct
+/// normal, 10000 lx diffuse horizontal".
+std::vector<std::string> describe_points_in_time(const std::vector<project::PointInTimeSpec>& cases,
+                                                 const SkyAndSuns& skies);
+
+}  // namespace dayphoton::study

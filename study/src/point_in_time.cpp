@@ -1,0 +1,141 @@
+// Point-in-time cases as steps of the sun-bins layout (point_in_time.h).
+#include "dayphoton/study/point_in_time.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/units.h"
+#include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/sky/sky_model.h"
+
+namespace dayphoton::study {
+
+namespace {
+
+std::string clock_text(const project::PointInTimeSpec& c) {
+  const int minutes = static_cast<int>(std::lround(c.hour_lst * 60.0));
+  char text[32];
+  std::snprintf(text, sizeof text, "%02d-%02d %02d:%02d", c.month, c.day, minutes / 60, minutes % 60);
+  return text;
+}
+
+std::string degrees(double rad) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", rad_to_deg(rad));
+  return text;
+}
+
+std::string lux(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f", value);
+  return text;
+}
+
+/// The step of the weather file's record that contains the time: the record of the hour
+/// (h - 1, h] in EPW's convention has its mid-hour stamp at h - 0.5, so a time t falls in
+/// the record stamped floor(t) + 0.5 (t = 24:00 in the day's last record).
+std::optional<std::size_t> weather_step(const AnnualSky& sky, const project::PointInTimeSpec& c) {
+  const double stamp = std::min(std::floor(c.hour_lst), 23.0) + 0.5;
+  for (std::size_t t = 0; t < sky.steps.size(); ++t) {
+    const metrics::TimeStamp& s = sky.steps[t];
+    if (s.month == c.month && s.day == c.day && std::fabs(s.hour - stamp) < 1e-6) return t;
+  }
+  return std::nullopt;
+}
+
+void copy_column(const RadianceMatrix& from, std::size_t from_column, RadianceMatrix& to, std::size_t to_column) {
+  for (std::size_t bin = 0; bin < from.rows(); ++bin)
+    for (int c = 0; c < from.components(); ++c) to.at(bin, to_column, c) = from.at(bin, from_column, c);
+}
+
+}  // namespace
+
+SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& cases, const sky::SolarSite& site,
+                               const sky::PatchBasis& basis, double ground_reflectance,
+                               const SkyAndSuns* annual) {
+  SkyAndSuns out;
+  out.sky.matrix = RadianceMatrix(static_cast<std::size_t>(basis.bin_count()), cases.size(), 3);
+  const Vec3 rho{ground_reflectance, ground_reflectance, ground_reflectance};
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const project::PointInTimeSpec& c = cases[k];
+    out.sky.steps.push_back({c.month, c.day, c.hour_lst});
+    if (c.sky == project::PointSky::Weather) {
+      if (!annual) throw std::logic_error("point in time: a weather case without the annual sky");
+      const std::optional<std::size_t> t = weather_step(annual->sky, c);
+      if (!t)
+        throw InputError(c.location, "point-in-time case '" + c.name + "': the weather file has no record for " +
+                                         clock_text(c));
+      copy_column(annual->sky.matrix, *t, out.sky.matrix, k);
+      for (const sky::SunRecord& sun : annual->suns)
+        if (sun.step == *t) {
+          sky::SunRecord r = sun;
+          r.step = k;
+          out.suns.push_back(r);
+        }
+      continue;
+    }
+    const sky::SkyScale scale = sky::SkyScale::horizontal_illuminance_lux(c.diffuse_horizontal_illuminance_lux);
+    if (c.sky == project::PointSky::CieOvercast) {
+      // As the daylight factor's sky (study_runner.cpp), so E = DF x E_h / 100.
+      const auto overcast = sky::make_cie_overcast_sky(scale);
+      const RadianceMatrix v = sky::sky_vector(
+          *overcast, basis, sky::ground_radiance_rgb(rho, c.diffuse_horizontal_illuminance_lux, 0, {0, 0, -1}));
+      copy_column(v, 0, out.sky.matrix, k);
+      continue;
+    }
+    sky::SolarPositionOptions options;  // SPA, no refraction
+    const sky::SolarPosition sun =
+        sky::solar_position(site, sky::SolarTime{PointInTimeSolarYear, c.month, c.day, c.hour_lst}, options);
+    if (!sun.sun_up)
+      throw InputError(c.time_location, "point-in-time case '" + c.name + "': the sun is below the horizon at " +
+                                            clock_text(c) + " (altitude " + degrees(sun.altitude_rad) +
+                                            " deg); a CIE general sky needs the sun above it");
+    const auto general = sky::make_cie_general_sky(c.cie_type, sun.direction, scale);
+    const RadianceMatrix v = sky::sky_vector(
+        *general, basis,
+        sky::ground_radiance_rgb(rho, general->horizontal_illuminance_lux(), c.direct_normal_illuminance_lux,
+                                 sun.direction));
+    copy_column(v, 0, out.sky.matrix, k);
+    if (c.direct_normal_illuminance_lux > 0)
+      out.suns.push_back(sky::sun_record(k, sun.direction, c.direct_normal_illuminance_lux));
+  }
+  out.sky.description = "point-in-time skies: " + std::to_string(cases.size()) + " case(s)";
+  return out;
+}
+
+std::vector<std::string> describe_points_in_time(const std::vector<project::PointInTimeSpec>& cases,
+                                                 const SkyAndSuns& skies) {
+  std::vector<std::string> lines;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const project::PointInTimeSpec& c = cases[k];
+    std::string s = c.name + ": " + clock_text(c) + " local standard time, ";
+    if (c.sky == project::PointSky::CieOvercast) {
+      s += "CIE standard overcast sky, " + lux(c.diffuse_horizontal_illuminance_lux) + " lx horizontal, no sun";
+    } else {
+      s += c.sky == project::PointSky::Weather ? "the weather file's hour"
+                                               : "CIE standard general sky type " + std::to_string(c.cie_type) + ", " +
+                                                     lux(c.diffuse_horizontal_illuminance_lux) +
+                                                     " lx diffuse horizontal";
+      const sky::SunRecord* sun = nullptr;
+      for (const sky::SunRecord& r : skies.suns)
+        if (r.step == k) sun = &r;
+      if (sun) {
+        const double altitude = std::asin(std::clamp(sun->direction.z, -1.0, 1.0));
+        double azimuth = std::atan2(sun->direction.x, sun->direction.y);
+        if (azimuth < 0) azimuth += 2 * Pi;
+        s += ", sun at " + degrees(altitude) + " deg altitude, " + degrees(azimuth) + " deg azimuth, " +
+             lux(sun->direct_normal_illuminance_lux) + " lx direct normal";
+      } else {
+        s += ", no direct sun";
+      }
+    }
+    lines.push_back(s);
+  }
+  return lines;
+}
+
+}  // namespace dayphoton::study
