@@ -13,6 +13,7 @@
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sensor_support.h"
 #include "dayphoton/study/placement_check.h"
+#include "dayphoton/study/point_in_time.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
 
@@ -51,7 +52,9 @@ bool horizontal(const PortInfo& p) { return p.tilt_deg < 0.05; }
 /// sentence the run log, summary.json and the report print), the station's distance and the
 /// hours with direct light while the sun is below the horizon (study/sun_site.h).
 void describe_weather_and_sun(const project::Project& proj, std::vector<std::string>& lines,
-                              std::vector<std::string>& sun_lines) {
+                              std::vector<std::string>& sun_lines, sky::SolarSite& solar) {
+  const project::Site& ps = proj.site;
+  solar = sky::SolarSite{ps.latitude_deg, ps.longitude_deg, ps.time_zone_h, ps.elevation_m};
   // A daylight-factor study reads no weather file (load_project checks the annual study has one).
   if (proj.study == project::StudyKind::DaylightFactor) {
     lines = {proj.weather.path.empty() ? "none: a daylight-factor study (study: daylight_factor)"
@@ -71,6 +74,7 @@ void describe_weather_and_sun(const project::Project& proj, std::vector<std::str
   for (const Diagnostic& w : epw.warnings) lines.push_back("warning: " + w.location.to_string() + ": " + w.message);
   // A time zone other than the file's is an error here as in `run` (located at time_zone).
   const study::SunSite site = study::resolve_sun_site(proj.site, epw);
+  solar = site.solar;
   sun_lines = {study::sun_site_sentence(site)};
   if (const std::string w = study::station_distance_warning(site); !w.empty()) sun_lines.push_back(w);
   sun_lines.push_back(study::below_horizon_note(study::annual_below_horizon_direct(epw, site),
@@ -124,7 +128,10 @@ ModelSummary summarize_model(const project::Project& proj) {
   ModelSummary s;
   s.project_path = proj.path;
   s.site = proj.site;
-  describe_weather_and_sun(proj, s.weather_lines, s.sun_lines);
+  sky::SolarSite solar;
+  describe_weather_and_sun(proj, s.weather_lines, s.sun_lines, solar);
+  // The points in time whose sun needs no tracing are checked as `run` checks them.
+  s.point_in_time_lines = study::check_points_in_time(proj.points_in_time, solar);
   s.scene = project::build_scene_description(proj);
   // Building the Embree scene runs the engine's own validation (degenerate triangles etc.).
   const engine::Scene scene = engine::Scene::build(s.scene);
@@ -317,6 +324,10 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
     out << ", " << g.estimate << '\n';
   }
   for (const std::string& line : s.placement_lines) out << "  " << line << '\n';
+  if (!s.point_in_time_lines.empty()) {
+    out << "points in time " << s.point_in_time_lines.size() << '\n';
+    for (const std::string& line : s.point_in_time_lines) out << "  " << line << '\n';
+  }
 }
 
 }  // namespace dayphoton::app

@@ -71,6 +71,8 @@ struct ModelSummary {
   /// Which site the sun is computed for, the station's distance, the hours with direct light
   /// and the sun below the horizon (the run log's words, study/sun_site.h).
   std::vector<std::string> sun_lines;
+  /// One line per point-in-time case (study::check_points_in_time).
+  std::vector<std::string> point_in_time_lines;
   std::vector<MaterialArea> materials;
   std::size_t surface_count = 0;
   std::size_t triangle_count = 0;

@@ -52,7 +52,56 @@ void copy_column(const RadianceMatrix& from, std::size_t from_column, RadianceMa
     for (int c = 0; c < from.components(); ++c) to.at(bin, to_column, c) = from.at(bin, from_column, c);
 }
 
+/// The sun of a CIE case: NREL SPA for the site at the case's date and time.
+sky::SolarPosition cie_sun(const project::PointInTimeSpec& c, const sky::SolarSite& site) {
+  return sky::solar_position(site, sky::SolarTime{PointInTimeSolarYear, c.month, c.day, c.hour_lst},
+                             sky::SolarPositionOptions{});
+}
+
+std::string sun_below_horizon(const project::PointInTimeSpec& c, const sky::SolarPosition& sun) {
+  return "point-in-time case '" + c.name + "': the sun is below the horizon at " + clock_text(c) + " (altitude " +
+         degrees(sun.altitude_rad) + " deg); a CIE general sky needs the sun above it";
+}
+
+std::string sun_text(const Vec3& direction) {
+  const double altitude = std::asin(std::clamp(direction.z, -1.0, 1.0));
+  double azimuth = std::atan2(direction.x, direction.y);
+  if (azimuth < 0) azimuth += 2 * Pi;
+  return "sun at " + degrees(altitude) + " deg altitude, " + degrees(azimuth) + " deg azimuth";
+}
+
+std::string sky_text(const project::PointInTimeSpec& c) {
+  switch (c.sky) {
+    case project::PointSky::CieOvercast:
+      return "CIE standard overcast sky, " + lux(c.diffuse_horizontal_illuminance_lux) + " lx horizontal, no sun";
+    case project::PointSky::CieGeneral:
+      return "CIE standard general sky type " + std::to_string(c.cie_type) + ", " +
+             lux(c.diffuse_horizontal_illuminance_lux) + " lx diffuse horizontal";
+    case project::PointSky::Weather: return "the weather file's hour";
+  }
+  return {};
+}
+
 }  // namespace
+
+std::vector<std::string> check_points_in_time(const std::vector<project::PointInTimeSpec>& cases,
+                                              const sky::SolarSite& site) {
+  Diagnostics diagnostics;
+  std::vector<std::string> lines;
+  for (const project::PointInTimeSpec& c : cases) {
+    std::string line = c.name + ": " + clock_text(c) + " local standard time, " + sky_text(c);
+    if (c.sky == project::PointSky::CieGeneral) {
+      const sky::SolarPosition sun = cie_sun(c, site);
+      if (!sun.sun_up) diagnostics.error(c.time_location, sun_below_horizon(c, sun));
+      line += ", " + sun_text(sun.direction) + ", " +
+              (c.direct_normal_illuminance_lux > 0 ? lux(c.direct_normal_illuminance_lux) + " lx direct normal"
+                                                   : std::string("no direct sun"));
+    }
+    lines.push_back(line);
+  }
+  diagnostics.throw_if_errors();
+  return lines;
+}
 
 SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& cases, const sky::SolarSite& site,
                                const sky::PatchBasis& basis, double ground_reflectance,
@@ -87,13 +136,8 @@ SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& case
       copy_column(v, 0, out.sky.matrix, k);
       continue;
     }
-    sky::SolarPositionOptions options;  // SPA, no refraction
-    const sky::SolarPosition sun =
-        sky::solar_position(site, sky::SolarTime{PointInTimeSolarYear, c.month, c.day, c.hour_lst}, options);
-    if (!sun.sun_up)
-      throw InputError(c.time_location, "point-in-time case '" + c.name + "': the sun is below the horizon at " +
-                                            clock_text(c) + " (altitude " + degrees(sun.altitude_rad) +
-                                            " deg); a CIE general sky needs the sun above it");
+    const sky::SolarPosition sun = cie_sun(c, site);
+    if (!sun.sun_up) throw InputError(c.time_location, sun_below_horizon(c, sun));
     const auto general = sky::make_cie_general_sky(c.cie_type, sun.direction, scale);
     const RadianceMatrix v = sky::sky_vector(
         *general, basis,
@@ -112,26 +156,13 @@ std::vector<std::string> describe_points_in_time(const std::vector<project::Poin
   std::vector<std::string> lines;
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const project::PointInTimeSpec& c = cases[k];
-    std::string s = c.name + ": " + clock_text(c) + " local standard time, ";
-    if (c.sky == project::PointSky::CieOvercast) {
-      s += "CIE standard overcast sky, " + lux(c.diffuse_horizontal_illuminance_lux) + " lx horizontal, no sun";
-    } else {
-      s += c.sky == project::PointSky::Weather ? "the weather file's hour"
-                                               : "CIE standard general sky type " + std::to_string(c.cie_type) + ", " +
-                                                     lux(c.diffuse_horizontal_illuminance_lux) +
-                                                     " lx diffuse horizontal";
+    std::string s = c.name + ": " + clock_text(c) + " local standard time, " + sky_text(c);
+    if (c.sky != project::PointSky::CieOvercast) {
       const sky::SunRecord* sun = nullptr;
       for (const sky::SunRecord& r : skies.suns)
         if (r.step == k) sun = &r;
-      if (sun) {
-        const double altitude = std::asin(std::clamp(sun->direction.z, -1.0, 1.0));
-        double azimuth = std::atan2(sun->direction.x, sun->direction.y);
-        if (azimuth < 0) azimuth += 2 * Pi;
-        s += ", sun at " + degrees(altitude) + " deg altitude, " + degrees(azimuth) + " deg azimuth, " +
-             lux(sun->direct_normal_illuminance_lux) + " lx direct normal";
-      } else {
-        s += ", no direct sun";
-      }
+      s += sun ? ", " + sun_text(sun->direction) + ", " + lux(sun->direct_normal_illuminance_lux) + " lx direct normal"
+               : std::string(", no direct sun");
     }
     lines.push_back(s);
   }

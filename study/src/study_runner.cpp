@@ -912,6 +912,11 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     sun_site = resolve_sun_site(project.site, *epw);
     below_horizon = annual_below_horizon_direct(*epw, *sun_site);
   }
+  // The points in time whose sun needs no tracing are checked before anything is written.
+  check_points_in_time(
+      project.points_in_time, sun_site ? sun_site->solar
+                                       : sky::SolarSite{project.site.latitude_deg, project.site.longitude_deg,
+                                                        project.site.time_zone_h, project.site.elevation_m});
   report.output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
   fs::create_directories(report.output_dir);
   // One run per folder (output_lock.h); then what earlier runs left: temporaries of killed

@@ -42,6 +42,8 @@ check_case check_variant_window_too_big 1 check tests/cli/cases/variant_window_t
 check_case check_yaml_syntax 1 check tests/cli/cases/syntax.yaml
 check_case check_daylight_factor_only 0 check tests/cli/cases/daylight_factor_only.yaml
 check_case check_daylight_factor_study 0 check tests/cli/cases/daylight_factor_study.yaml
+check_case check_points_in_time 0 check tests/cli/cases/points_in_time.yaml
+check_case check_points_in_time_sun_set 1 check tests/cli/cases/points_in_time_sun_set.yaml
 check_case check_site_other_time_zone 1 check tests/cli/cases/site_other_time_zone.yaml
 check_case check_site_far_from_station 0 check tests/cli/cases/site_far_from_station.yaml
 check_case check_site_from_weather 0 check tests/cli/cases/site_from_weather.yaml

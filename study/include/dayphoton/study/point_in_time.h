@@ -37,6 +37,14 @@ namespace dayphoton::study {
 /// date and time moves by less than 0.02 degree from one year to the next within a leap cycle).
 constexpr int PointInTimeSolarYear = 2001;
 
+/// The project's checks of the cases that need no tracing, for `check` and before `run`
+/// writes anything: a CIE general sky needs its sun above the horizon at the site (an
+/// InputError with every such case located at its `time`). Returns one line per case for
+/// `check`: "winter: 12-21 10:30 local standard time, CIE standard general sky type 12, sun at
+/// 22.3 deg altitude, 152.5 deg azimuth".
+std::vector<std::string> check_points_in_time(const std::vector<project::PointInTimeSpec>& cases,
+                                              const sky::SolarSite& site);
+
 /// The cases' skies and suns: one step per case in file order (time stamp = the case's date and
 /// time), sky columns without the sun, a SunRecord for every case whose sun is above the
 /// horizon and has direct light. `annual` (the annual study's sky without the sun and its
