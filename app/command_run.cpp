@@ -82,6 +82,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     settings.version = DAYPHOTON_VERSION;
     settings.command = "dayphoton run " + proj.path;
     settings.output_dir = folders[i];
+    settings.cache_dir = options.cache_dir;
     const study::RunReport report = study::run_study(proj, settings, progress);
     progress.print_summary();
     if (!options.quiet) {

@@ -49,10 +49,19 @@ struct RunOptions {
   std::vector<std::string> project_paths;
   std::string output_dir;
   int threads = 0;
+  std::string cache_dir;  ///< empty: beside each output folder (study/cache_folder.h)
   bool force = false;
   bool quiet = false;
 };
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err);
+
+struct CleanOptions {
+  std::string target;     ///< an output folder of `run`, or a project file (its outputs.folder)
+  std::string cache_dir;  ///< empty: the output folder's (study/cache_folder.h)
+  bool all = false;       ///< remove the whole cache folder
+  bool dry_run = false;
+};
+int run_clean(const CleanOptions& options, std::ostream& out);
 
 struct SunOptions {
   std::string weather_path;

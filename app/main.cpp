@@ -85,8 +85,18 @@ int main(int argc, char** argv) {
   run_cmd->add_option("-o,--output", run.output_dir, "Output folder (default: results/ beside the project)");
   run_cmd->add_option("-j,--threads", run.threads, "Worker threads (default: all cores)")
       ->check(whole_number(0, MaxThreads, "threads (0: all cores)"));
+  run_cmd->add_option("--cache", run.cache_dir,
+                      "Cache folder (default: .<output name>-cache beside the output folder)");
   run_cmd->add_flag("--force", run.force, "Recompute every step even if cached");
   run_cmd->add_flag("-q,--quiet", run.quiet, "Print errors only");
+
+  CleanOptions clean;
+  auto* clean_cmd = cli.add_subcommand("clean", "Remove what a run's cache can no longer reuse");
+  clean_cmd->add_option("target", clean.target, "Output folder of `run`, or a project file (its outputs.folder)")
+      ->required();
+  clean_cmd->add_option("--cache", clean.cache_dir, "Cache folder (default: the output folder's)");
+  clean_cmd->add_flag("--all", clean.all, "Remove the whole cache folder");
+  clean_cmd->add_flag("-n,--dry-run", clean.dry_run, "Say what would be removed, remove nothing");
 
   SunOptions sun;
   auto* sun_cmd = cli.add_subcommand("sun", "Sun position for every hour of a weather file (CSV)");
@@ -216,6 +226,7 @@ int main(int argc, char** argv) {
   try {
     if (check_cmd->parsed()) return run_check(check, std::cout);
     if (run_cmd->parsed()) return run_run(run, std::cout, std::cerr);
+    if (clean_cmd->parsed()) return run_clean(clean, std::cout);
     if (sun_cmd->parsed()) return run_sun(sun, std::cout);
     if (sky_cmd->parsed()) {
       sky.cie_options_given = sky_cmd->count("--altitude") + sky_cmd->count("--azimuth") +

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <functional>
 #include <mutex>
+#include <set>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -92,7 +93,23 @@ std::optional<std::string> absent(std::string* problem, std::string why) {
 
 }  // namespace
 
-ArtifactStore::ArtifactStore(std::string directory) : m_directory(std::move(directory)) {}
+struct ArtifactStore::Used {
+  std::mutex mutex;
+  std::set<std::string> names;
+  void note(const std::string& path) {
+    const std::string name = fs::path(path).filename().string();
+    std::lock_guard<std::mutex> lock(mutex);
+    names.insert(name);
+  }
+};
+
+ArtifactStore::ArtifactStore(std::string directory)
+    : m_directory(std::move(directory)), m_used(std::make_shared<Used>()) {}
+
+std::vector<std::string> ArtifactStore::used_files() const {
+  std::lock_guard<std::mutex> lock(m_used->mutex);
+  return {m_used->names.begin(), m_used->names.end()};
+}
 
 std::string ArtifactStore::path_for(const std::string& kind, const std::string& key) const {
   if (!valid_name(kind)) throw std::invalid_argument("invalid artefact kind '" + kind + "'");
@@ -132,6 +149,7 @@ void ArtifactStore::write(const std::string& kind, const std::string& key,
         out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
       },
       /*binary=*/true, /*sync=*/false);  // the frame's checksum catches what a sync would
+  m_used->note(path);
 }
 
 std::optional<std::string> ArtifactStore::read(const std::string& kind, const std::string& key,
@@ -192,6 +210,7 @@ std::optional<std::string> ArtifactStore::read(const std::string& kind, const st
   file.erase(0, at);
   if (checksum64(file) != checksum) return absent(problem, "corrupted (checksum mismatch)");
   if (problem) problem->clear();
+  m_used->note(path);
   return file;
 }
 

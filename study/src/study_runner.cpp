@@ -30,6 +30,7 @@
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/artifact_store.h"
+#include "dayphoton/study/cache_folder.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/point_in_time.h"
@@ -922,13 +923,20 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   // One run per folder (output_lock.h); then what earlier runs left: temporaries of killed
   // writers, and the outputs of the previous run, which this one replaces (output_manifest.h).
   const OutputLock lock = OutputLock::acquire(report.output_dir, settings.command);
-  const std::size_t temporaries = remove_dead_temporaries(report.output_dir);
+  // The cache beside the output folder (cache_folder.h); an earlier version's cache inside
+  // it moves there.
+  const std::string cache_dir = settings.cache_dir.empty() ? default_cache_folder(report.output_dir) : settings.cache_dir;
+  const bool adopted = adopt_legacy_cache(report.output_dir, cache_dir);
+  const std::size_t temporaries = remove_dead_temporaries(report.output_dir) + remove_dead_temporaries(cache_dir);
   const std::string this_run = lock.owner().describe();
   OutputManifest outputs = OutputManifest::begin(report.output_dir, this_run);
-  const ArtifactStore store(join(report.output_dir, ".cache"));
+  const ArtifactStore store(cache_dir);
   RunLog log(progress, join(report.output_dir, "run.log"));
   log.line("project " + project.path + " -> " + report.output_dir);
   log.quiet_line("run: " + this_run);
+  log.quiet_line("cache: " + cache_dir);
+  if (adopted)
+    log.line("moved the cache of an earlier version from " + legacy_cache_folder(report.output_dir) + " to " + cache_dir);
   if (lock.taken_over())
     log.line("took over the lock of a run that no longer exists: " + lock.taken_over()->describe());
   if (temporaries > 0)
@@ -1061,6 +1069,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   for (const ManifestEntry& e : outputs.entries())
     files.push_back({{"path", e.path}, {"bytes", e.bytes}, {"sha256", e.sha256}});
   summary["files"] = files;
+  write_used_list(store);  // what `dayphoton clean` keeps (cache_folder.h)
   write_file_atomically(join(report.output_dir, OutputManifest::SummaryName), json_text(summary) + "\n");
   outputs.finish();
   log.quiet_line("complete: " + std::string(OutputManifest::SummaryName) + " lists " + std::to_string(files.size()) +

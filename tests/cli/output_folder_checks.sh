@@ -27,7 +27,6 @@ for f in summary["files"]:
     if len(data) != f["bytes"] or hashlib.sha256(data).hexdigest() != f["sha256"]:
         problems.append(f"{f['path']}: size or hash differs from summary.json")
 for root, dirs, files in os.walk(out):
-    dirs[:] = [d for d in dirs if d != ".cache"]
     for name in files:
         rel = os.path.relpath(os.path.join(root, name), out)
         if rel not in listed and rel not in ("summary.json", "run.log"):
@@ -47,7 +46,6 @@ problems = []
 if os.path.exists(os.path.join(out, "summary.json")): problems.append("summary.json present")
 if not os.path.exists(os.path.join(out, "INCOMPLETE")): problems.append("no INCOMPLETE marker")
 for root, dirs, files in os.walk(out):
-    dirs[:] = [d for d in dirs if d != ".cache"]
     for name in files:
         path = os.path.join(root, name)
         if os.path.getmtime(path) < ref:

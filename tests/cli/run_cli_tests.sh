@@ -103,11 +103,11 @@ fi
 # A cache that cannot be written (its folder is a file: ENOTDIR, even as root) fails every
 # photon artefact's write while other sources are still being traced: a clean error and
 # exit 4, never a signal (the cancelled photon passes used to segfault: exit 139).
-mkdir -p "$scratch/nocache" && : >"$scratch/nocache/.cache"
+: >"$scratch/.nocache-cache"
 "$bin" run projects/office/project.yaml --output "$scratch/nocache" --threads 4 --quiet >"$scratch/nocache.out" 2>&1
 code=$?
 if [ "$code" -eq 4 ] &&
-   grep -qxF "dayphoton: error: cannot create the cache folder $scratch/nocache/.cache: Not a directory" "$scratch/nocache.out"; then
+   grep -qxF "dayphoton: error: cannot create the cache folder $scratch/.nocache-cache: Not a directory" "$scratch/nocache.out"; then
   echo "ok   run_cache_not_writable"; passed=$((passed + 1))
 else
   echo "FAIL run_cache_not_writable: exit $code"; cat "$scratch/nocache.out"; failed=$((failed + 1))
@@ -150,6 +150,16 @@ if [ "$code" -eq 0 ] && [ -s "$scratch/df_study/workplane/daylight_factor.csv" ]
   echo "ok   run_daylight_factor_study"; passed=$((passed + 1))
 else
   echo "FAIL run_daylight_factor_study: exit $code"; cat "$scratch/df_study.out" "$scratch/df_study/run.log"; failed=$((failed + 1))
+fi
+
+# The cache lies beside the output folder, not in it; `clean` keeps what the last run used.
+if [ -d "$scratch/.df_study-cache" ] && [ ! -e "$scratch/df_study/.cache" ] &&
+   [ -s "$scratch/.df_study-cache/used-by-last-run.txt" ] &&
+   "$bin" clean "$scratch/df_study" --dry-run | grep -q "^would remove 0 artefacts (0.0 MB) that the last complete run did not use; kept 147 " &&
+   "$bin" clean "$scratch/df_study" --all | grep -q "^removed $scratch/.df_study-cache: 148 files" && [ ! -e "$scratch/.df_study-cache" ]; then
+  echo "ok   run_cache_beside_and_clean"; passed=$((passed + 1))
+else
+  echo "FAIL run_cache_beside_and_clean"; ls -a "$scratch"; failed=$((failed + 1))
 fi
 
 # A project in a folder whose name is not UTF-8 (Latin-1 'cafe' with an acute accent): the run

@@ -22,6 +22,7 @@ fail() { echo "FAIL $*"; exit 1; }
 . "$(dirname "$0")/output_folder_checks.sh"
 
 out="$scratch/out"
+cache="$scratch/.out-cache"   # the cache beside the output folder (docs/cache.md)
 
 # Starts `run second.yaml` and kills it with SIGKILL once the file test "$1" succeeds.
 kill_when() {
@@ -49,7 +50,7 @@ problems=$(check_complete "$out") || fail "first run: $problems"
 echo "ok   complete run: summary.json lists $(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['files']))" "$out/summary.json") outputs, sizes and hashes match"
 
 # 2. The changed re-run killed twice: in its photon pass, and after its first new output.
-new_photons() { [ -n "$(find "$out/.cache" -name 'photons-*.bin' -newer "$scratch/started" 2>/dev/null | head -1)" ]; }
+new_photons() { [ -n "$(find "$cache" -name 'photons-*.bin' -newer "$scratch/started" 2>/dev/null | head -1)" ]; }
 kill_when new_photons "in the photon pass"
 new_output() { [ -n "$(find "$out/workplane" -name 'daylight_factor.csv' -newer "$scratch/started" 2>/dev/null)" ]; }
 kill_when new_output "after writing daylight_factor.csv"
@@ -57,11 +58,11 @@ kill_when new_output "after writing daylight_factor.csv"
 # 3. Completed, with a temporary of a dead writer planted: only the re-run's outputs remain.
 sleep 30 & dead=$!; kill -9 $dead; wait $dead 2>/dev/null  # a pid that no longer runs
 echo partial >"$out/summary.json.tmp.$dead"
-echo partial >"$out/.cache/photons-0.bin.tmp.$dead"
+echo partial >"$cache/photons-0.bin.tmp.$dead"
 "$bin" run "$scratch/office/second.yaml" --output "$out" --quiet || fail "the completing run failed"
 problems=$(check_complete "$out") || fail "completed re-run: $problems"
 [ -e "$out/workplane/illuminance.csv" ] && fail "the earlier run's illuminance.csv is still there"
-[ -e "$out/summary.json.tmp.$dead" ] || [ -e "$out/.cache/photons-0.bin.tmp.$dead" ] &&
+[ -e "$out/summary.json.tmp.$dead" ] || [ -e "$cache/photons-0.bin.tmp.$dead" ] &&
   fail "temporaries of a dead writer were not removed"
 grep -q "removed 2 temporary file" "$out/run.log" || fail "run.log does not report the removed temporaries"
 echo "ok   completed re-run: only its own outputs, manifest matches, dead temporaries removed"
@@ -70,8 +71,8 @@ echo "ok   completed re-run: only its own outputs, manifest matches, dead tempor
 cp -r "$out" "$scratch/before"
 "$bin" run "$scratch/office/second.yaml" --output "$out" --quiet || fail "the cached run failed"
 grep -q "photons: traced 0 of 146" "$out/run.log" || fail "cached run: $(grep photons "$out/run.log")"
-diff -r -x .cache -x run.log "$scratch/before" "$out" >/dev/null ||
-  fail "a fully cached run changed: $(diff -rq -x .cache -x run.log "$scratch/before" "$out")"
+diff -r -x run.log "$scratch/before" "$out" >/dev/null ||
+  fail "a fully cached run changed: $(diff -rq -x run.log "$scratch/before" "$out")"
 echo "ok   fully cached re-run: every output byte-identical (summary.json and grid_metrics.json included)"
 
 # 5. The lock: a second run into a folder in use fails clearly; a dead holder's lock is taken over.

@@ -26,13 +26,13 @@ finished='^photons-[0-9a-f]*\.bin$'
 "$bin" run "$project" --output "$scratch/a" --quiet &
 pid=$!
 for _ in $(seq 1 600); do
-  n=$(ls "$scratch/a/.cache" 2>/dev/null | grep -c "$finished" || true)
+  n=$(ls "$scratch/.a-cache" 2>/dev/null | grep -c "$finished" || true)
   [ "$n" -ge 20 ] && break
   sleep 0.05
 done
 kill -9 "$pid" 2>/dev/null
 wait "$pid" 2>/dev/null
-cached=$(ls "$scratch/a/.cache" | grep -c "$finished")
+cached=$(ls "$scratch/.a-cache" | grep -c "$finished")
 [ -e "$scratch/a/summary.json" ] && fail "the run finished before it could be interrupted ($cached sources cached)"
 [ "$cached" -ge 1 ] || fail "nothing was cached before the kill"
 "$bin" run "$project" --output "$scratch/a" --quiet || fail "the resumed run failed"

@@ -11,6 +11,7 @@
 //    report, which say the same sentence about the sun's site;
 //  - the cache keeps the sky of each site apart.
 // Runs use the office at reduced photon counts (the sky, not the photons, is under test).
+#include "dayphoton/study/cache_folder.h"
 #include "dayphoton/study/sun_site.h"
 
 #include <gtest/gtest.h>
@@ -89,13 +90,15 @@ const char* const MannheimOwnClock =
 /// run builds its own sky and reuses the rest.
 void run_into(const project::Project& p, const fs::path& folder, const fs::path& cache_from = {},
               bool copy_sky = false) {
+  const fs::path cache = default_cache_folder(folder.string());
   fs::remove_all(folder);
+  fs::remove_all(cache);
   if (!cache_from.empty()) {
-    fs::create_directories(folder / ".cache");
-    for (const auto& e : fs::directory_iterator(cache_from / ".cache")) {
+    fs::create_directories(cache);
+    for (const auto& e : fs::directory_iterator(default_cache_folder(cache_from.string()))) {
       const std::string name = e.path().filename().string();
       const bool sky = name.rfind("sky-", 0) == 0 || name.rfind("suns-", 0) == 0;
-      if (!sky || copy_sky) fs::copy_file(e.path(), folder / ".cache" / name);
+      if ((!sky || copy_sky) && e.path().extension() == ".bin") fs::copy_file(e.path(), cache / name);
     }
   }
   RunSettings settings;

@@ -1,5 +1,6 @@
-// ArtifactStore: the cache of a run's intermediate results, one file per artefact under
-// <output folder>/.cache/, named <kind>-<key>.bin (key = ContentHash::hex() of its inputs).
+// ArtifactStore: the cache of a run's intermediate results, one file per artefact in the
+// cache folder (cache_folder.h: beside the output folder, not in it), named
+// <kind>-<key>.bin (key = ContentHash::hex() of its inputs).
 // docs/cache.md describes the whole cache: keys, framing, atomicity, invalidation, resume.
 //
 // Every file is written atomically (temporary file "<name>.tmp.<pid>" + rename,
@@ -24,8 +25,10 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace dayphoton::study {
 
@@ -52,8 +55,14 @@ class ArtifactStore {
   std::optional<std::string> read(const std::string& kind, const std::string& key,
                                   std::string* problem = nullptr) const;
 
+  /// The file names (<kind>-<key>.bin) of every artefact this store read intact or wrote,
+  /// sorted: what the run that used it can reuse (cache_folder.h, pruning).
+  std::vector<std::string> used_files() const;
+
  private:
+  struct Used;
   std::string m_directory;
+  std::shared_ptr<Used> m_used;  ///< shared by copies: they are the same store
 };
 
 }  // namespace dayphoton::study

@@ -42,6 +42,7 @@ namespace dayphoton::study {
 
 struct RunSettings {
   std::string output_dir;  ///< empty: the project's outputs.folder
+  std::string cache_dir;   ///< empty: beside the output folder (cache_folder.h)
   bool force = false;      ///< ignore the cache (recompute and overwrite)
   std::string version;     ///< dayphoton's version, recorded in summary.json
   std::string command;     ///< the command line, recorded in the output folder's lock file
