@@ -1,0 +1,56 @@
+#include "dayphoton/study/project_metric_settings.h"
+
+namespace dayphoton::study {
+
+metrics::MetricSettings metric_settings(const project::MetricsSettings& m) {
+  metrics::MetricSettings s;
+  s.da_threshold_lux = m.da_threshold_lux;
+  s.udi_lower_lux = m.udi_lower_lux;
+  s.udi_upper_original_lux = m.udi_upper_original_lux;
+  s.udi_upper_revised_lux = m.udi_upper_revised_lux;
+  s.sda_time_fraction = m.sda_time_fraction;
+  s.ase_threshold_lux = m.ase_threshold_lux;
+  s.ase_hours = m.ase_hours;
+  return s;
+}
+
+namespace {
+
+metrics::DayHours day_hours(const project::OccupancySpec::Windows& windows) {
+  metrics::DayHours hours;
+  for (const auto& [start, end] : windows) hours.push_back({start, end});
+  return hours;
+}
+
+}  // namespace
+
+metrics::OccupancyPlan occupancy_plan(const project::MetricsSettings& m) {
+  const project::OccupancySpec& o = m.occupancy;
+  if (!o.given) return metrics::OccupancyPlan::daily_hours(m.occupancy_start_h, m.occupancy_end_h);
+  metrics::OccupancyPlan plan;
+  plan.location = o.location;
+  if (!o.file.empty()) {
+    plan.kind = metrics::OccupancyPlan::Kind::Hourly;
+    plan.hourly = o.hourly;
+    plan.hourly_source = o.file;
+    return plan;
+  }
+  plan.kind = metrics::OccupancyPlan::Kind::Weekly;
+  for (std::size_t d = 0; d < 7; ++d) plan.week[d] = day_hours(o.week[d]);
+  plan.holiday_hours = day_hours(o.holiday_hours);
+  for (const project::OccupancySpec::Holiday& h : o.holidays)
+    plan.holidays.push_back({h.from_month, h.from_day, h.to_month, h.to_day});
+  if (o.january_1 >= 0) plan.january_1 = static_cast<metrics::Weekday>(o.january_1);
+  plan.daylight_saving = metrics::parse_daylight_saving(o.daylight_saving).value_or(metrics::DaylightSaving::None);
+  return plan;
+}
+
+AnnualStudySettings annual_settings_of(const project::Project& project, const weather::EpwFile* epw) {
+  AnnualStudySettings settings;
+  settings.metrics = metric_settings(project.metrics);
+  settings.occupancy = occupancy_plan(project.metrics);
+  if (epw) settings.calendar = weather_calendar(*epw);
+  return settings;
+}
+
+}  // namespace dayphoton::study
