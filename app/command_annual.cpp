@@ -100,8 +100,11 @@ std::string join_names(const std::vector<std::string>& names) {
 /// overrides, checked as the project file's keys are (UsageError).
 study::AnnualStudySettings annual_settings(const AnnualOptions& o, const project::Project* project,
                                            const weather::EpwFile& epw) {
-  study::AnnualStudySettings settings =
-      project ? study::annual_settings_of(*project, &epw) : study::AnnualStudySettings{};
+  // The grid folder is named after its sensor set, whose own schedule (if any) applies.
+  fs::path grid = fs::absolute(o.coefficients_dir).lexically_normal();
+  if (!grid.has_filename()) grid = grid.parent_path();
+  study::AnnualStudySettings settings = project ? study::annual_settings_of(*project, &epw, grid.filename().string())
+                                                : study::AnnualStudySettings{};
   settings.calendar = study::weather_calendar(epw);
   metrics::MetricSettings& m = settings.metrics;
   if (o.da_threshold_lux) m.da_threshold_lux = *o.da_threshold_lux;

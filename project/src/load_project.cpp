@@ -854,6 +854,8 @@ class Loader {
       else m_reporter.error(r.location_of("normal"), "'normal' must not be the zero vector");
     }
     r.read_bool("drop_occluded", g.drop_occluded);
+    if (const YamlNode* occupancy = r.take("occupancy"); occupancy && expect_map(*occupancy, "occupancy", m_reporter))
+      read_occupancy(*occupancy, m_project.directory, m_reporter, g.occupancy);
     r.finish();
     m_project.sensors.grids.push_back(std::move(g));
   }
@@ -904,6 +906,8 @@ class Loader {
     else if (!has_points && !has_file)
       m_reporter.error(node.location, "points needs 'points' or 'file'");
     r.read_bool("drop_occluded", p.drop_occluded);
+    if (const YamlNode* occupancy = r.take("occupancy"); occupancy && expect_map(*occupancy, "occupancy", m_reporter))
+      read_occupancy(*occupancy, m_project.directory, m_reporter, p.occupancy);
     r.finish();
     m_project.sensors.points.push_back(std::move(p));
   }

@@ -341,6 +341,7 @@ std::vector<SectionSchema> build_schema() {
       P("offset", T::Number, "wall and rectangle grids: distance of the sensors from the surface along their normal (0: on it)").unit("m").at_least(0).def("0"),
       P("normal", T::Vec3, "room and polygon grids: direction the sensors face").def("[0, 0, 1]"),
       P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room or inside a solid (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
+      P("occupancy", T::Section, "this sensor set's own occupancy schedule (as metrics.occupancy), instead of the project's").section("occupancy"),
   }});
   s.push_back({"grid wall", "a room surface covered by a grid", {
       P("room", T::String, "name of a room in geometry.rooms").required(),
@@ -356,6 +357,7 @@ std::vector<SectionSchema> build_schema() {
       P("points", T::Special, "[[x, y, z, nx, ny, nz], ...] in metres"),
       P("file", T::Path, "RADIANCE .pts file (x y z nx ny nz per line), must exist"),
       P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room or inside a solid (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
+      P("occupancy", T::Section, "this sensor set's own occupancy schedule (as metrics.occupancy), instead of the project's").section("occupancy"),
   }});
   s.push_back({"simulation", "photon tracing and sky discretisation", {
       P("basis", T::Special, "sky patches: tregenza, reinhart:N or {reinhart: N} (N = 1..12)").def("tregenza"),

@@ -24,8 +24,7 @@ metrics::DayHours day_hours(const project::OccupancySpec::Windows& windows) {
 
 }  // namespace
 
-metrics::OccupancyPlan occupancy_plan(const project::MetricsSettings& m) {
-  const project::OccupancySpec& o = m.occupancy;
+metrics::OccupancyPlan occupancy_plan(const project::OccupancySpec& o, const project::MetricsSettings& m) {
   if (!o.given) return metrics::OccupancyPlan::daily_hours(m.occupancy_start_h, m.occupancy_end_h);
   metrics::OccupancyPlan plan;
   plan.location = o.location;
@@ -45,10 +44,16 @@ metrics::OccupancyPlan occupancy_plan(const project::MetricsSettings& m) {
   return plan;
 }
 
-AnnualStudySettings annual_settings_of(const project::Project& project, const weather::EpwFile* epw) {
+AnnualStudySettings annual_settings_of(const project::Project& project, const weather::EpwFile* epw,
+                                       const std::string& sensor_set) {
   AnnualStudySettings settings;
   settings.metrics = metric_settings(project.metrics);
-  settings.occupancy = occupancy_plan(project.metrics);
+  const project::OccupancySpec* spec = &project.metrics.occupancy;
+  for (const project::GridSpec& g : project.sensors.grids)
+    if (g.name == sensor_set && g.occupancy.given) spec = &g.occupancy;
+  for (const project::PointsSpec& p : project.sensors.points)
+    if (p.name == sensor_set && p.occupancy.given) spec = &p.occupancy;
+  settings.occupancy = occupancy_plan(*spec, project.metrics);
   if (epw) settings.calendar = weather_calendar(*epw);
   return settings;
 }

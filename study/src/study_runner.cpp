@@ -712,11 +712,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   // 5-6. Annual illuminance and metrics.
   const bool annual = project.outputs.annual_illuminance || project.outputs.metrics;
   const bool sun_bins = sim.sun == project::SunMode::Bins;
-  const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.epw);
   const AnnualOutputs which = annual_outputs_of(project);
-  // The schedule the metrics use, once per case (docs/metrics.md "Occupancy schedules").
-  auto log_occupancy = [&](const AnnualStudy& study) {
-    log.line(prefix + "occupancy: " + annual_settings.occupancy.description() + "; " +
+  // The schedule the metrics of each grid use (docs/metrics.md "Occupancy schedules").
+  auto log_occupancy = [&](const std::string& grid, const AnnualStudy& study, const AnnualStudySettings& settings) {
+    log.line(prefix + "occupancy " + grid + ": " + settings.occupancy.description() + "; " +
              std::to_string(study.occupied_hours) + " occupied hours of " +
              std::to_string(study.illuminance.step_count()));
   };
@@ -745,9 +744,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
       const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps);
       const metrics::IlluminanceTable indirect = indirect_sun_table(sun[g].bin_coefficients, bins, ss.suns, ss.sky.steps);
+      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.epw, grid.name);
       const AnnualStudy study =
           compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, direct, indirect, annual_settings);
-      if (g == 0) log_occupancy(study);
+      log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       if (keep) keep->grids.push_back({grid.name, grid.points, study.illuminance, direct});
       progress.advance(ss.sky.steps.size());
@@ -759,8 +759,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
+      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.epw, grid.name);
       const AnnualStudy study = compute_annual_study(coefficient_matrices[g], sky, annual_settings);
-      if (g == 0) log_occupancy(study);
+      log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       progress.advance(sky.steps.size());
       progress.end();
@@ -777,7 +778,6 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
                             const CaseTables& open, const CaseTables& shaded, const std::string& dir,
                             RunContext& ctx) {
   const SkyAndSuns& ss = *ctx.sky_and_suns;  // both cases' annual step built it
-  const AnnualStudySettings settings = annual_settings_of(project, ctx.epw);
   const AnnualOutputs which = annual_outputs_of(project);
   ShadingRule rule;
   rule.direct_sun_threshold_lux = op.direct_sun_threshold_lux;
@@ -787,6 +787,7 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
   for (std::size_t g = 0; g < open.grids.size(); ++g) {
     const CaseTables::Grid& o = open.grids[g];
     const CaseTables::Grid& c = shaded.grids.at(g);  // the same grids: variants share the sensors
+    const AnnualStudySettings settings = annual_settings_of(project, ctx.epw, o.name);
     const std::string folder = join(dir, o.name);
     ctx.progress.start("operated " + o.name, o.illuminance.step_count(), "hours");
     const OperatedStudy operated = compute_operated_study(

@@ -14,7 +14,7 @@ fail() { echo "FAIL $*"; exit 1; }
 project=tests/cli/cases/school/project.yaml
 
 "$bin" run "$project" --output "$scratch/run" --quiet || fail "run exited $?"
-grep -q "^occupancy: Monday, Tuesday 08:00-12:00, 13:00-15:30; Wednesday 08:00-12:00;.* US daylight saving time; [0-9]* occupied hours of 8760$" \
+grep -q "^occupancy desks: Monday, Tuesday 08:00-12:00, 13:00-15:30; Wednesday 08:00-12:00;.* US daylight saving time; [0-9]* occupied hours of 8760$" \
   "$scratch/run/run.log" || fail "run.log does not state the schedule: $(grep occupancy "$scratch/run/run.log")"
 "$bin" annual --coefficients "$scratch/run/desks" --project "$project" -o "$scratch/annual" >"$scratch/annual.out" ||
   fail "annual --project exited $?: $(cat "$scratch/annual.out")"
@@ -30,6 +30,11 @@ assert run["occupancy"] == ann["occupancy"] and run["thresholds"] == ann["thresh
 assert ann["occupancy"]["january_1"]["weekday"] == "Sunday"  # the EPW's DATA PERIODS
 assert 0 < ann["occupied_hours"] < 3650
 PY
+# The grid with its own schedule (every day, clock time): annual takes it from the folder's name.
+grep -q "^occupancy club: Monday-Sunday 08:00-18:00; local clock time with US daylight saving time; 3650 occupied hours of 8760$" \
+  "$scratch/run/run.log" || fail "run.log: $(grep "occupancy club" "$scratch/run/run.log")"
+"$bin" annual --coefficients "$scratch/run/club" --project "$project" -o "$scratch/club" --quiet || fail "annual club exited $?"
+cmp -s "$scratch/run/club/metrics.csv" "$scratch/club/metrics.csv" || fail "club: metrics.csv of annual --project differs from run's"
 grep -q "mean DA500 " "$scratch/annual.out" || fail "annual does not print DA500: $(cat "$scratch/annual.out")"
 
 # Overrides: the every-day LM-83 window and DA300 (3650 occupied hours, other values).

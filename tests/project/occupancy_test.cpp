@@ -88,6 +88,23 @@ TEST(Occupancy, SchoolWeekLoads) {
   EXPECT_EQ(old.metrics.occupancy_start_h, 7);
 }
 
+TEST(Occupancy, SensorSetsHaveTheirOwn) {
+  const Project p = load_project_from_string(
+      Base +
+          "sensors:\n"
+          "  grids: [{name: a, polygon: [[0, 0, 0], [1, 0, 0], [1, 1, 0]], occupancy: {weekends: [10, 16]}}]\n"
+          "  points: [{name: b, points: [[0, 0, 1, 0, 0, 1]], occupancy: {every_day: [0, 24]}}]\n",
+      "/tmp/p/project.yaml");
+  EXPECT_FALSE(p.metrics.occupancy.given);
+  ASSERT_TRUE(p.sensors.grids[0].occupancy.given);
+  EXPECT_EQ(p.sensors.grids[0].occupancy.week[6], (Windows{{10, 16}}));
+  EXPECT_TRUE(p.sensors.grids[0].occupancy.week[0].empty());
+  EXPECT_EQ(p.sensors.points[0].occupancy.week[3], (Windows{{0, 24}}));
+  EXPECT_EQ(errors_of("sensors:\n"
+                      "  points: [{name: b, points: [[0, 0, 1, 0, 0, 1]], occupancy: {every_day: [0, 25]}}]\n"),
+            (std::vector<std::string>{"8:79: 'every_day': hours must be in [0, 24], got 25"}));
+}
+
 TEST(Occupancy, EveryBadValueIsLocated) {
   EXPECT_EQ(errors_of("metrics:\n"
                       "  occupancy_start: 7\n"

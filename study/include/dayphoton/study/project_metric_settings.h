@@ -15,10 +15,13 @@ namespace dayphoton::study {
 /// The thresholds.
 metrics::MetricSettings metric_settings(const project::MetricsSettings& m);
 
-/// The occupancy: the `occupancy` schedule if written, else the daily window.
-metrics::OccupancyPlan occupancy_plan(const project::MetricsSettings& m);
+/// The occupancy: `spec` if written, else the daily window of `m`.
+metrics::OccupancyPlan occupancy_plan(const project::OccupancySpec& spec, const project::MetricsSettings& m);
 
-/// Thresholds, occupancy and, when `epw` is given, its calendar.
-AnnualStudySettings annual_settings_of(const project::Project& project, const weather::EpwFile* epw);
+/// Thresholds, occupancy and, when `epw` is given, its calendar. The occupancy is the sensor
+/// set's own (`sensors.grids[].occupancy`, `sensors.points[].occupancy`) when the set named
+/// `sensor_set` has one, else the project's (`metrics.occupancy`, else the daily window).
+AnnualStudySettings annual_settings_of(const project::Project& project, const weather::EpwFile* epw,
+                                       const std::string& sensor_set = "");
 
 }  // namespace dayphoton::study
