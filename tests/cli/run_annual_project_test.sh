@@ -47,6 +47,24 @@ o = json.load(open(d + "/override/grid_metrics.json"))
 assert o["occupied_hours"] == 3650, o["occupied_hours"]
 assert "da300_percent" in o["mean"] and o["thresholds"]["da_lux"] == 300
 PY
+# A CSV schedule (one 0/1 per record) equal to the LM-83 window gives the default's metrics.
+python3 - "$scratch" "$PWD" <<'PY' || exit 1
+import re, sys
+d, root = sys.argv[1], sys.argv[2]
+with open(d + "/lm83.csv", "w") as f:
+    f.write("occupied\n" + "".join("1\n" if 8 <= i % 24 < 18 else "0\n" for i in range(8760)))
+text = open(root + "/tests/cli/cases/school/project.yaml").read()
+text = re.sub(r"weather: .*", "weather: " + root + "/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw", text)
+text = re.sub(r"  occupancy:\n(    .*\n)+", "  occupancy: {file: lm83.csv}\n", text)
+open(d + "/csv_project.yaml", "w").write(text)
+PY
+"$bin" annual --coefficients "$scratch/run/desks" --project "$scratch/csv_project.yaml" -o "$scratch/csv" --quiet ||
+  fail "annual with a CSV schedule exited $?"
+"$bin" annual --coefficients "$scratch/run/desks" --project "$scratch/csv_project.yaml" --occupancy-hours 8 18 \
+  -o "$scratch/window" --quiet || fail "annual with the window exited $?"
+cmp -s "$scratch/csv/metrics.csv" "$scratch/window/metrics.csv" || fail "the CSV schedule's metrics differ from the window's"
+grep -q '"file"' "$scratch/csv/grid_metrics.json" || fail "grid_metrics.json does not name the CSV"
+
 # A bad override is a usage error (exit 2), and --weather is needed without a project.
 "$bin" annual --coefficients "$scratch/run/desks" --project "$project" --occupancy-hours 18 8 --quiet >/dev/null 2>&1
 [ $? -eq 2 ] || fail "--occupancy-hours 18 8 is not a usage error"
