@@ -58,4 +58,21 @@ AnnualStudySettings annual_settings_of(const project::Project& project, const we
   return settings;
 }
 
+std::vector<std::string> occupancy_summary(const project::Project& project, const weather::EpwFile& epw) {
+  std::vector<std::string> lines;
+  const std::vector<metrics::TimeStamp> steps = time_stamps(epw);
+  auto add = [&](const std::string& label, const std::string& set) {
+    const AnnualStudySettings settings = annual_settings_of(project, &epw, set);
+    const metrics::OccupancySchedule schedule = occupancy_schedule(settings, steps);
+    lines.push_back(label + ": " + settings.occupancy.description() + "; " + std::to_string(schedule.occupied_count()) +
+                    " occupied hours of " + std::to_string(steps.size()));
+  };
+  if (project.metrics.occupancy.given) add("occupancy", "");
+  for (const project::GridSpec& g : project.sensors.grids)
+    if (g.occupancy.given) add("occupancy of " + g.name, g.name);
+  for (const project::PointsSpec& p : project.sensors.points)
+    if (p.occupancy.given) add("occupancy of " + p.name, p.name);
+  return lines;
+}
+
 }  // namespace dayphoton::study

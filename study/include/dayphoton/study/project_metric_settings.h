@@ -4,6 +4,9 @@
 // evaluate the same metrics for the same project.
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "dayphoton/metrics/annual_metrics.h"
 #include "dayphoton/metrics/occupancy_plan.h"
 #include "dayphoton/project/project.h"
@@ -23,5 +26,11 @@ metrics::OccupancyPlan occupancy_plan(const project::OccupancySpec& spec, const 
 /// `sensor_set` has one, else the project's (`metrics.occupancy`, else the daily window).
 AnnualStudySettings annual_settings_of(const project::Project& project, const weather::EpwFile* epw,
                                        const std::string& sensor_set = "");
+
+/// For `check`: one line per schedule the project writes (`metrics.occupancy` and each sensor
+/// set's own), "occupancy[ of <set>]: <description>; N occupied hours of M", evaluated on the
+/// weather file, so that a schedule that does not fit it (a CSV of another length, no weekday
+/// of 1 January) is an InputError before any run. Empty when the project uses the daily window.
+std::vector<std::string> occupancy_summary(const project::Project& project, const weather::EpwFile& epw);
 
 }  // namespace dayphoton::study
