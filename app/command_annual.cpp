@@ -22,7 +22,9 @@
 #include "commands.h"
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/input_file.h"
+#include "dayphoton/project/project.h"
 #include "dayphoton/study/annual_study.h"
+#include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
@@ -94,6 +96,59 @@ std::string join_names(const std::vector<std::string>& names) {
   return out;
 }
 
+/// The metric settings: the project's (--project) or the defaults, then the command line's
+/// overrides, checked as the project file's keys are (UsageError).
+study::AnnualStudySettings annual_settings(const AnnualOptions& o, const project::Project* project,
+                                           const weather::EpwFile& epw) {
+  // The grid folder is named after its sensor set, whose own schedule (if any) applies.
+  fs::path grid = fs::absolute(o.coefficients_dir).lexically_normal();
+  if (!grid.has_filename()) grid = grid.parent_path();
+  study::AnnualStudySettings settings = project ? study::annual_settings_of(*project, &epw, grid.filename().string())
+                                                : study::AnnualStudySettings{};
+  settings.calendar = study::weather_calendar(epw);
+  metrics::MetricSettings& m = settings.metrics;
+  if (o.da_threshold_lux) m.da_threshold_lux = *o.da_threshold_lux;
+  if (o.udi_lower_lux) m.udi_lower_lux = *o.udi_lower_lux;
+  if (o.udi_upper_original_lux) m.udi_upper_original_lux = *o.udi_upper_original_lux;
+  if (o.udi_upper_revised_lux) m.udi_upper_revised_lux = *o.udi_upper_revised_lux;
+  if (o.sda_time_fraction) {
+    if (!(*o.sda_time_fraction > 0)) throw UsageError("--sda-time-fraction must be in (0, 1]");
+    m.sda_time_fraction = *o.sda_time_fraction;
+  }
+  if (!(m.udi_upper_original_lux > m.udi_lower_lux))
+    throw UsageError("the UDI upper limit (" + format_number(m.udi_upper_original_lux) +
+                     " lx) must be greater than the lower one (" + format_number(m.udi_lower_lux) + " lx)");
+  if (!(m.udi_upper_revised_lux > m.udi_lower_lux))
+    throw UsageError("the revised UDI upper limit (" + format_number(m.udi_upper_revised_lux) +
+                     " lx) must be greater than the lower one (" + format_number(m.udi_lower_lux) + " lx)");
+  if (m.da_threshold_lux < m.udi_lower_lux || m.da_threshold_lux > m.udi_upper_revised_lux)
+    throw UsageError("the DA threshold (" + format_number(m.da_threshold_lux) + " lx) must lie between the UDI lower limit (" +
+                     format_number(m.udi_lower_lux) + " lx) and the revised upper limit (" +
+                     format_number(m.udi_upper_revised_lux) + " lx): the revised UDI band is split there");
+
+  metrics::OccupancyPlan& plan = settings.occupancy;
+  if (!o.occupancy_hours.empty()) {
+    const double start = o.occupancy_hours[0], end = o.occupancy_hours[1];
+    if (!(end > start))
+      throw UsageError("--occupancy-hours: the end (" + format_number(end) + ") must be after the start (" +
+                       format_number(start) + ")");
+    plan = metrics::OccupancyPlan::daily_hours(start, end);
+  }
+  if (!o.daylight_saving.empty() || !o.january_1.empty()) {
+    if (plan.kind == metrics::OccupancyPlan::Kind::Hourly)
+      throw UsageError("--daylight-saving and --january-1 do not apply to an hourly schedule (a CSV file)");
+    if (plan.kind == metrics::OccupancyPlan::Kind::Daily) {  // the same window every day, now on the clock
+      const metrics::HourWindow window = plan.daily;
+      plan = metrics::OccupancyPlan{};
+      plan.kind = metrics::OccupancyPlan::Kind::Weekly;
+      plan.week.fill({window});
+    }
+    if (!o.daylight_saving.empty()) plan.daylight_saving = *metrics::parse_daylight_saving(o.daylight_saving);
+    if (!o.january_1.empty()) plan.january_1 = metrics::parse_weekday(o.january_1);
+  }
+  return settings;
+}
+
 }  // namespace
 
 int run_annual(const AnnualOptions& o, std::ostream& out) {
@@ -136,8 +191,17 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
                      "has " + std::to_string(coefficients.columns()) + " columns but --basis " + o.basis + " has " +
                          std::to_string(basis.bin_count()) + " bins");
 
+  // The project first: its errors are located in it (exit 1), before any matrix is read.
+  std::optional<project::Project> project;
+  if (!o.project_path.empty()) project = project::load_project(o.project_path);
+  const std::string weather_path = !o.weather_path.empty() ? o.weather_path
+                                   : project                 ? project->weather.path
+                                                             : std::string();
+  if (weather_path.empty())
+    throw UsageError(project ? "the project " + o.project_path + " has no weather file: give --weather"
+                             : std::string("--weather is required (or --project, whose weather file is used)"));
   // A missing weather file (or a FIFO) is bad input (exit 1): read_epw says so, located.
-  const weather::EpwFile epw = weather::read_epw(o.weather_path);
+  const weather::EpwFile epw = weather::read_epw(weather_path);
   study::AnnualSky sky;
   std::string site_line;
   if (o.sky_matrix_path.empty()) {
@@ -151,7 +215,7 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
     site_line = study::sun_site_sentence(site) +
                 (recorded ? " (the run's, from " + summary_path + ")" : std::string(" (no run summary records a site)"));
     require_matrix_within_limit("the sky matrix (" + std::to_string(basis.bin_count()) +
-                                    " bins, one column per record of " + o.weather_path + ")",
+                                    " bins, one column per record of " + weather_path + ")",
                                 static_cast<std::uint64_t>(basis.bin_count()), epw.records.size(), 3,
                                 o.max_matrix_values);
     sky = study::annual_sky_from_epw(epw, site.solar, basis, study::radiance_compatible_sky_options(rho));
@@ -167,7 +231,7 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
 
   require_matrix_within_limit("the illuminance table (" + std::to_string(sensors.size()) + " sensors, one row per record)",
                               sensors.size(), sky.steps.size(), 1, o.max_matrix_values);
-  const study::AnnualStudySettings settings;
+  const study::AnnualStudySettings settings = annual_settings(o, project ? &*project : nullptr, epw);
   const study::AnnualStudy result = study::compute_annual_study(coefficients, sky, settings);
   const std::string output_dir =
       o.output_dir.empty() ? (fs::path(o.coefficients_dir) / "annual").string() : o.output_dir;
@@ -176,14 +240,22 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
   if (!o.quiet) {
     const metrics::GridMetrics& g = result.grid;
     std::size_t sda_sensors = 0;
-    for (const metrics::SensorMetrics& m : result.sensors) sda_sensors += m.da_percent >= 50.0;
+    const bool overridden = !o.occupancy_hours.empty() || !o.daylight_saving.empty() || !o.january_1.empty() ||
+                            o.da_threshold_lux || o.udi_lower_lux || o.udi_upper_original_lux ||
+                            o.udi_upper_revised_lux || o.sda_time_fraction;
+    const metrics::MetricSettings& ms = settings.metrics;
+    for (const metrics::SensorMetrics& m : result.sensors) sda_sensors += m.da_percent >= 100.0 * ms.sda_time_fraction;
+    const std::string da = "DA" + format_number(ms.da_threshold_lux);
     out << "dayphoton annual: " << sensors.size() << " sensors x " << result.illuminance.step_count()
-        << " steps, " << result.occupied_hours << " occupied hours (08:00-18:00 local standard time)\n"
+        << " steps, " << result.occupied_hours << " occupied hours (" << settings.occupancy.description() << ")\n"
+        << (project ? "  metric settings: " + o.project_path + (overridden ? ", with the command line's overrides" : "") + "\n"
+                    : std::string())
         << "  sky: " << result.sky_description << "\n"
         << (site_line.empty() ? std::string() : "  site: " + site_line + "\n")
-        << "  mean DA300 " << percent(g.mean.da_percent) << ", sDA300/50% " << percent(g.sda_percent) << " ("
-        << sda_sensors << " of " << sensors.size() << " sensors), mean UDI 100-2000 "
-        << percent(g.mean.udi_original_percent) << ", mean occupied illuminance " << std::fixed
+        << "  mean " << da << " " << percent(g.mean.da_percent) << ", s" << da << "/"
+        << format_number(100.0 * ms.sda_time_fraction) << "% " << percent(g.sda_percent) << " ("
+        << sda_sensors << " of " << sensors.size() << " sensors), mean UDI " << format_number(ms.udi_lower_lux) << "-"
+        << format_number(ms.udi_upper_original_lux) << " " << percent(g.mean.udi_original_percent) << ", mean occupied illuminance " << std::fixed
         << std::setprecision(0) << g.mean.mean_occupied_lux << " lux\n";
     if (!g.en17037.empty()) {
       out << "  EN 17037 daylight provision:";

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -98,6 +99,14 @@ struct AnnualOptions {
   bool quiet = false;
   std::uint64_t max_matrix_values = ResourceLimits{}.matrix_values;            ///< each matrix and the table
   std::uint64_t max_decompressed_bytes = ResourceLimits{}.decompressed_bytes;  ///< a .gz sky matrix
+  /// Metric settings (thresholds, occupancy) and the default weather file from this project.
+  std::string project_path;
+  /// Overrides of the metric settings (docs/cli.md); each unset when empty.
+  std::vector<double> occupancy_hours;  ///< START END: every day, replaces the schedule
+  std::string daylight_saving;          ///< none, eu, us
+  std::string january_1;                ///< weekday of 1 January
+  std::optional<double> da_threshold_lux, udi_lower_lux, udi_upper_original_lux, udi_upper_revised_lux,
+      sda_time_fraction;
 };
 int run_annual(const AnnualOptions& options, std::ostream& out);
 

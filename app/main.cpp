@@ -141,7 +141,34 @@ int main(int argc, char** argv) {
   annual_cmd->add_option("--coefficients", annual.coefficients_dir,
                          "Grid folder written by `dayphoton run` (coefficients_sky.mtx, sensors.csv)")
       ->required();
-  annual_cmd->add_option("--weather", annual.weather_path, "Weather file (EPW): time stamps, and the sky")->required();
+  annual_cmd->add_option("--weather", annual.weather_path,
+                         "Weather file (EPW): time stamps, and the sky (default: the --project's weather file)");
+  annual_cmd->add_option("--project", annual.project_path,
+                         "Project file: its metric settings (thresholds, occupancy schedule) and weather file, so "
+                         "that the metrics are the run's");
+  annual_cmd->add_option("--occupancy-hours", annual.occupancy_hours,
+                         "START END: occupied every day from START to END (hours, local standard time; "
+                         "replaces the project's schedule; default 8 18)")
+      ->expected(2)->check(FiniteNumber)->check(CLI::Range(0.0, 24.0));
+  annual_cmd->add_option("--daylight-saving", annual.daylight_saving,
+                         "none, eu or us: the occupied hours are clock time with that daylight saving time")
+      ->check(CLI::IsMember({"none", "eu", "us"}));
+  annual_cmd->add_option("--january-1", annual.january_1,
+                         "Weekday of 1 January for a weekly schedule (default: the weather file's DATA PERIODS)")
+      ->check(CLI::IsMember({"monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday"}));
+  annual_cmd->add_option("--da-threshold", annual.da_threshold_lux, "DA, cDA and sDA threshold (lx, default 300)")
+      ->check(FiniteNumber)->check(CLI::PositiveNumber);
+  annual_cmd->add_option("--udi-lower", annual.udi_lower_lux, "UDI: below this it fell short (lx, default 100)")
+      ->check(FiniteNumber)->check(CLI::PositiveNumber);
+  annual_cmd->add_option("--udi-upper-original", annual.udi_upper_original_lux,
+                         "UDI (Nabil & Mardaljevic): above this it is exceeded (lx, default 2000)")
+      ->check(FiniteNumber)->check(CLI::PositiveNumber);
+  annual_cmd->add_option("--udi-upper-revised", annual.udi_upper_revised_lux,
+                         "revised UDI: above this it is exceeded (lx, default 3000)")
+      ->check(FiniteNumber)->check(CLI::PositiveNumber);
+  annual_cmd->add_option("--sda-time-fraction", annual.sda_time_fraction,
+                         "sDA: fraction of occupied hours at or above the DA threshold (default 0.5)")
+      ->check(FiniteNumber)->check(CLI::Range(0.0, 1.0));
   annual_cmd->add_option("--sky-matrix", annual.sky_matrix_path,
                          "Read the sky matrix from this RADIANCE matrix file (e.g. gendaymtx output, plain or .gz) "
                          "instead of building it from the weather file");

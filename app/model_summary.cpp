@@ -14,6 +14,7 @@
 #include "dayphoton/engine/sensor_support.h"
 #include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/point_in_time.h"
+#include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
 
@@ -72,6 +73,7 @@ void describe_weather_and_sun(const project::Project& proj, std::vector<std::str
                   std::to_string(epw.records.size()) + " hourly records" +
                   (epw.leap_day_present ? " (with 29 February)" : ""));
   for (const Diagnostic& w : epw.warnings) lines.push_back("warning: " + w.location.to_string() + ": " + w.message);
+  for (const std::string& line : study::occupancy_summary(proj, epw)) lines.push_back(line);
   // A time zone other than the file's is an error here as in `run` (located at time_zone).
   const study::SunSite site = study::resolve_sun_site(proj.site, epw);
   solar = site.solar;

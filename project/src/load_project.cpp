@@ -26,6 +26,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/project/project_schema.h"
 #include "dayphoton/project/site_geodesy.h"
+#include "occupancy_reader.h"
 #include "param_reader.h"
 #include "variant_checks.h"
 #include "yaml_document.h"
@@ -987,6 +988,8 @@ class Loader {
       else m_reporter.error(r.location_of("normal"), "'normal' must not be the zero vector");
     }
     r.read_bool("drop_occluded", g.drop_occluded);
+    if (const YamlNode* occupancy = r.take("occupancy"); occupancy && expect_map(*occupancy, "occupancy", m_reporter))
+      read_occupancy(*occupancy, m_project.directory, m_reporter, g.occupancy);
     r.finish();
     m_project.sensors.grids.push_back(std::move(g));
   }
@@ -1037,6 +1040,8 @@ class Loader {
     else if (!has_points && !has_file)
       m_reporter.error(node.location, "points needs 'points' or 'file'");
     r.read_bool("drop_occluded", p.drop_occluded);
+    if (const YamlNode* occupancy = r.take("occupancy"); occupancy && expect_map(*occupancy, "occupancy", m_reporter))
+      read_occupancy(*occupancy, m_project.directory, m_reporter, p.occupancy);
     r.finish();
     m_project.sensors.points.push_back(std::move(p));
   }
@@ -1246,6 +1251,14 @@ class Loader {
     const bool da = r.read_number("da_threshold", m.da_threshold_lux);
     const bool start = r.read_number("occupancy_start", m.occupancy_start_h);
     const bool end = r.read_number("occupancy_end", m.occupancy_end_h);
+    if (const YamlNode* occupancy = r.take("occupancy"); occupancy && expect_map(*occupancy, "occupancy", m_reporter)) {
+      for (const char* old_key : {"occupancy_start", "occupancy_end"})
+        if (r.has(old_key))
+          m_reporter.error(node.find(old_key)->key_location,
+                           std::string("'") + old_key + "' cannot be combined with 'occupancy': write the hours "
+                           "there (every_day: [start, end])");
+      read_occupancy(*occupancy, m_project.directory, m_reporter, m.occupancy);
+    }
     const bool low = r.read_number("udi_lower", m.udi_lower_lux);
     const bool up1 = r.read_number("udi_upper_original", m.udi_upper_original_lux);
     const bool up2 = r.read_number("udi_upper_revised", m.udi_upper_revised_lux);

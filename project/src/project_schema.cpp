@@ -343,6 +343,7 @@ std::vector<SectionSchema> build_schema() {
       P("offset", T::Number, "wall and rectangle grids: distance of the sensors from the surface along their normal (0: on it)").unit("m").at_least(0).def("0"),
       P("normal", T::Vec3, "room and polygon grids: direction the sensors face").def("[0, 0, 1]"),
       P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room or inside a solid (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
+      P("occupancy", T::Section, "this sensor set's own occupancy schedule (as metrics.occupancy), instead of the project's").section("occupancy"),
   }});
   s.push_back({"grid wall", "a room surface covered by a grid", {
       P("room", T::String, "name of a room in geometry.rooms").required(),
@@ -358,6 +359,7 @@ std::vector<SectionSchema> build_schema() {
       P("points", T::Special, "[[x, y, z, nx, ny, nz], ...] in metres"),
       P("file", T::Path, "RADIANCE .pts file (x y z nx ny nz per line), must exist"),
       P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room or inside a solid (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
+      P("occupancy", T::Section, "this sensor set's own occupancy schedule (as metrics.occupancy), instead of the project's").section("occupancy"),
   }});
   s.push_back({"simulation", "photon tracing and sky discretisation", {
       P("basis", T::Special, "sky patches: tregenza, reinhart:N or {reinhart: N} (N = 1..12)").def("tregenza"),
@@ -407,12 +409,31 @@ std::vector<SectionSchema> build_schema() {
       P("da_threshold", T::Number, "illuminance threshold of DA, cDA and sDA; splits the revised UDI band").unit("lx").above(0).def("300"),
       P("occupancy_start", T::Number, "occupied: records whose mid-hour time t has occupancy_start <= t < occupancy_end (local standard time, no DST, every day)").unit("h").range(0, 24).def("8"),
       P("occupancy_end", T::Number, "end of the occupied hours, greater than occupancy_start").unit("h").range(0, 24).def("18"),
+      P("occupancy", T::Section, "an occupancy schedule instead of occupancy_start/occupancy_end: hours per kind of day, holidays, daylight saving time, or a CSV file").section("occupancy"),
       P("udi_lower", T::Number, "UDI: below this the illuminance fell short").unit("lx").above(0).def("100"),
       P("udi_upper_original", T::Number, "UDI (Nabil & Mardaljevic 2005): above this it is exceeded").unit("lx").above(0).def("2000"),
       P("udi_upper_revised", T::Number, "revised UDI (Mardaljevic): above this it is exceeded").unit("lx").above(0).def("3000"),
       P("sda_time_fraction", T::Number, "sDA: fraction of occupied hours a sensor must reach da_threshold").range(0, 1).above(0).def("0.5"),
       P("ase_threshold", T::Number, "ASE: direct-sun illuminance threshold").unit("lx").above(0).def("1000"),
       P("ase_hours", T::Number, "ASE: a sensor fails with more occupied hours than this at or above ase_threshold").unit("h").range(0, 8784).def("250"),
+  }});
+  // docs/metrics.md "Occupancy schedules"; mirrors metrics::OccupancyPlan.
+  s.push_back({"occupancy", "occupied hours of the annual metrics (docs/metrics.md, Occupancy schedules); hours are [start, end] of local clock time: a window such as [8, 17], a list of windows such as [[8, 12], [13, 17]], or closed. A day takes its own key, else weekdays / weekends, else every_day, else it is closed", {
+      P("every_day", T::Special, "hours of every day not given otherwise").unit("h"),
+      P("weekdays", T::Special, "hours of Monday to Friday").unit("h"),
+      P("weekends", T::Special, "hours of Saturday and Sunday").unit("h"),
+      P("monday", T::Special, "hours of Mondays").unit("h"),
+      P("tuesday", T::Special, "hours of Tuesdays").unit("h"),
+      P("wednesday", T::Special, "hours of Wednesdays").unit("h"),
+      P("thursday", T::Special, "hours of Thursdays").unit("h"),
+      P("friday", T::Special, "hours of Fridays").unit("h"),
+      P("saturday", T::Special, "hours of Saturdays").unit("h"),
+      P("sunday", T::Special, "hours of Sundays").unit("h"),
+      P("holidays", T::Special, "days with holiday_hours instead: a list of dates MM-DD (12-25) and periods MM-DD..MM-DD (07-06..08-31; 12-23..01-03 runs over the year end), the same every year of the weather file"),
+      P("holiday_hours", T::Special, "hours of the holidays").unit("h").def("closed"),
+      P("january_1", T::Choice, "weekday of 1 January (default: from the weather file's DATA PERIODS start day)").choices({"monday", "tuesday", "wednesday", "thursday", "friday", "saturday", "sunday"}),
+      P("daylight_saving", T::Choice, "the hours are clock time with daylight saving time: eu (last Sunday of March to last Sunday of October, 01:00 UTC), us (second Sunday of March to first Sunday of November, 02:00 local time) or none (standard time all year)").choices({"none", "eu", "us"}).def("none"),
+      P("file", T::Path, "CSV file, relative to the project file: one value per weather record in file order, 1 occupied or 0 not (a first line that is not a number is a header); no other key with it"),
   }});
   s.push_back({"variant", "a study variant: the whole project with the listed materials and systems replaced, and geometry removed or added", {
       P("name", T::String, "unique variant name, also its output folder: a path name (see Names that become folders)").required(),

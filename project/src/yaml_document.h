@@ -66,6 +66,8 @@ class Reporter {
   bool at_cap() const { return m_diagnostics.at_cap(); }
   bool has_errors() const { return m_diagnostics.has_errors(); }
   const SourceText& source() const { return m_source; }
+  /// For errors in other files (their own lines under the caret), e.g. a CSV the project names.
+  Diagnostics& diagnostics() { return m_diagnostics; }
 
  private:
   Diagnostics& m_diagnostics;

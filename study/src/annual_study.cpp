@@ -47,6 +47,35 @@ std::vector<metrics::TimeStamp> time_stamps(const weather::EpwFile& epw) {
   return stamps;
 }
 
+metrics::WeatherCalendar weather_calendar(const weather::EpwFile& epw) {
+  metrics::WeatherCalendar calendar;
+  calendar.time_zone_h = epw.header.location.time_zone_h;
+  const weather::EpwDataPeriod& period = epw.header.data_period;
+  const std::string date = std::to_string(period.start_month) + "/" + std::to_string(period.start_day);
+  if (const auto start = metrics::parse_weekday(period.start_weekday)) {
+    calendar.january_1 =
+        metrics::january_1_from(*start, period.start_month, period.start_day, epw.leap_day_present);
+    calendar.january_1_source = "the DATA PERIODS of " + epw.source_name + ": " + metrics::weekday_name(*start) + " " + date;
+  } else {
+    calendar.january_1_source = "the DATA PERIODS of " + epw.source_name + " start " + date + " on '" +
+                                period.start_weekday + "', not a weekday";
+  }
+  return calendar;
+}
+
+metrics::OccupancySchedule occupancy_schedule(const AnnualStudySettings& settings,
+                                              const std::vector<metrics::TimeStamp>& steps) {
+  const metrics::OccupancyPlan& plan = settings.occupancy;
+  if (plan.kind == metrics::OccupancyPlan::Kind::Daily &&
+      !(plan.daily.start_h >= 0 && plan.daily.start_h < plan.daily.end_h && plan.daily.end_h <= 24))
+    throw std::invalid_argument("occupancy window must satisfy 0 <= start < end <= 24 hours");
+  metrics::OccupancySchedule schedule = plan.schedule(steps, settings.calendar);
+  if (schedule.occupied_count() == 0 && !steps.empty())
+    throw InputError(plan.location, "the occupancy (" + plan.description() + ") leaves no occupied hour in the " +
+                                        std::to_string(steps.size()) + " records of the weather file");
+  return schedule;
+}
+
 std::vector<double> daylight_hours_quantity(const weather::EpwFile& epw, std::string& source) {
   std::vector<double> lux, w_m2;
   for (const weather::WeatherRecord& r : epw.records) {
@@ -114,14 +143,10 @@ AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weat
 
 AnnualStudy compute_annual_study(const RadianceMatrix& coefficients, const AnnualSky& sky,
                                  const AnnualStudySettings& settings, const metrics::IlluminanceTable* direct_sun) {
-  if (!(settings.occupancy_start_h >= 0 && settings.occupancy_start_h < settings.occupancy_end_h &&
-        settings.occupancy_end_h <= 24))
-    throw std::invalid_argument("occupancy window must satisfy 0 <= start < end <= 24 hours");
+  const metrics::OccupancySchedule occupancy = occupancy_schedule(settings, sky.steps);
   AnnualStudy study;
   study.illuminance = annual_illuminance(coefficients, sky.matrix, sky.steps);
   study.sky_description = sky.description;
-  const metrics::OccupancySchedule occupancy =
-      metrics::OccupancySchedule::daily_hours(sky.steps, settings.occupancy_start_h, settings.occupancy_end_h);
   study.occupied_hours = occupancy.occupied_count();
   study.sensors = metrics::compute_sensor_metrics(study.illuminance, occupancy, settings.metrics);
   if (direct_sun) {
@@ -145,6 +170,27 @@ AnnualStudy compute_annual_study(const RadianceMatrix& coefficients, const Annua
   return study;
 }
 
+static nlohmann::json occupancy_json(const AnnualStudySettings& settings) {
+  using nlohmann::json;
+  const metrics::OccupancyPlan& plan = settings.occupancy;
+  switch (plan.kind) {
+    case metrics::OccupancyPlan::Kind::Daily:
+      return {{"start_h", plan.daily.start_h},
+              {"end_h", plan.daily.end_h},
+              {"time", "local standard time, mid-hour stamps, every day"}};
+    case metrics::OccupancyPlan::Kind::Hourly:
+      return {{"schedule", plan.description()}, {"file", plan.hourly_source},
+              {"time", "one value per weather record, in file order"}};
+    case metrics::OccupancyPlan::Kind::Weekly: break;
+  }
+  json j = {{"schedule", plan.description()},
+            {"daylight_saving", metrics::describe_daylight_saving(plan.daylight_saving)},
+            {"time", "local clock time at the mid-hour stamps"}};
+  if (const auto first = plan.january_1_of(settings.calendar))
+    j["january_1"] = {{"weekday", metrics::weekday_name(first->first)}, {"from", first->second}};
+  return j;
+}
+
 std::string grid_metrics_json(const AnnualStudy& study, const AnnualStudySettings& settings) {
   using nlohmann::json;
   const metrics::MetricSettings& m = settings.metrics;
@@ -152,9 +198,7 @@ std::string grid_metrics_json(const AnnualStudy& study, const AnnualStudySetting
   j["sensors"] = study.sensors.size();
   j["time_steps"] = study.illuminance.step_count();
   j["occupied_hours"] = study.occupied_hours;
-  j["occupancy"] = {{"start_h", settings.occupancy_start_h},
-                    {"end_h", settings.occupancy_end_h},
-                    {"time", "local standard time, mid-hour stamps, every day"}};
+  j["occupancy"] = occupancy_json(settings);
   j["thresholds"] = {{"da_lux", m.da_threshold_lux},
                      {"udi_lower_lux", m.udi_lower_lux},
                      {"udi_upper_original_lux", m.udi_upper_original_lux},

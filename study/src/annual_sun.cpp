@@ -298,8 +298,7 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
       study.illuminance.lux(t, s) = static_cast<float>(double(study.illuminance.lux(t, s)) +
                                                        double(direct_sun.lux(t, s)) +
                                                        double(indirect_sun.lux(t, s)));
-  const metrics::OccupancySchedule occupancy =
-      metrics::OccupancySchedule::daily_hours(sky.steps, settings.occupancy_start_h, settings.occupancy_end_h);
+  const metrics::OccupancySchedule occupancy = occupancy_schedule(settings, sky.steps);
   study.sensors = metrics::compute_sensor_metrics(study.illuminance, occupancy, settings.metrics);
   study.grid = metrics::summarize_grid(study.sensors, settings.metrics, {}, &study.ase_hours);
   if (!sky.daylight_hours_quantity.empty())

@@ -90,16 +90,12 @@ OperatedStudy compute_operated_study(const metrics::IlluminanceTable& open,
   if (open_direct_sun.step_count() != open.step_count() || open_direct_sun.sensor_count() != open.sensor_count())
     throw std::invalid_argument("operated shading: the open case's direct-sun table has " + shape(open_direct_sun) +
                                 ", its illuminance " + shape(open));
-  if (!(settings.occupancy_start_h >= 0 && settings.occupancy_start_h < settings.occupancy_end_h &&
-        settings.occupancy_end_h <= 24))
-    throw std::invalid_argument("occupancy window must satisfy 0 <= start < end <= 24 hours");
+  const metrics::OccupancySchedule occupancy = occupancy_schedule(settings, open.steps());
   OperatedStudy result;
   result.schedule = shading_schedule(open_direct_sun, rule);
   AnnualStudy& study = result.study;
   study.illuminance = operated_illuminance(open, shaded, result.schedule);
   study.sky_description = description;
-  const metrics::OccupancySchedule occupancy = metrics::OccupancySchedule::daily_hours(
-      open.steps(), settings.occupancy_start_h, settings.occupancy_end_h);
   study.occupied_hours = occupancy.occupied_count();
   result.occupied.resize(open.step_count());
   for (std::size_t t = 0; t < open.step_count(); ++t) result.occupied[t] = occupancy.occupied(t) ? 1 : 0;

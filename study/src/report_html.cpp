@@ -506,6 +506,13 @@ std::string udi_bars_svg(const json& mean, const json& thresholds) {
   return s.str();
 }
 
+/// The occupancy schedule of a grid_metrics.json `occupancy` object, as " (schedule)" for
+/// weekly and hourly schedules; "" for the daily window (shown on the temporal map).
+std::string occupancy_note(const json& occupancy) {
+  if (!occupancy.is_object() || !occupancy.contains("schedule") || !occupancy["schedule"].is_string()) return "";
+  return " (" + esc(occupancy["schedule"].get<std::string>()) + ")";
+}
+
 /// Day of year x hour map of the grid's mean illuminance; occupancy window dashed.
 std::string temporal_svg(const metrics::IlluminanceTable& table, double occupancy_start_h, double occupancy_end_h,
                          const ColourScale& scale) {
@@ -549,6 +556,7 @@ std::string temporal_svg(const metrics::IlluminanceTable& table, double occupanc
   s << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << w << "\" height=\"" << h
     << "\" fill=\"none\" stroke=\"#000\"/>";
   for (double oh : {occupancy_start_h, occupancy_end_h}) {
+    if (!std::isfinite(oh)) continue;  // a weekly or hourly schedule: no one daily window to draw
     const double y = top + h - h * oh / 24;
     s << "<line x1=\"" << left << "\" x2=\"" << left + w << "\" y1=\"" << num(y, 1) << "\" y2=\"" << num(y, 1)
       << "\" stroke=\"#fff\" stroke-dasharray=\"4 3\" stroke-width=\"1\"/>";
@@ -802,7 +810,8 @@ std::string grid_section(const GridData& g, PageIds& page) {
     const json occ = annual ? annual->value("occupancy", json::object()) : json::object();
     const ColourScale scale = illuminance_scale();
     s << "<figure><div class=\"row\">"
-      << temporal_svg(*g.illuminance, occ.value("start_h", 8.0), occ.value("end_h", 18.0), scale) << legend_svg(scale, page)
+      << temporal_svg(*g.illuminance, occ.value("start_h", occ.contains("schedule") ? NAN : 8.0),
+                      occ.value("end_h", occ.contains("schedule") ? NAN : 18.0), scale) << legend_svg(scale, page)
       << "</div><figcaption>Mean illuminance over the grid's " << g.illuminance->sensor_count()
       << " sensors for every hour of the weather year (lx, logarithmic; below 1 lx grey).</figcaption></figure>";
   } else {
@@ -849,7 +858,8 @@ std::string grid_section(const GridData& g, PageIds& page) {
     const json ase = annual->value("ase_percent", json());
     s << "<tr><td>ASE (share of sensors)</td><td class=\"n\">" << (ase.is_number() ? num(ase.get<double>(), 1) : "-")
       << "</td><td>%</td></tr>";
-    s << "<tr><td>occupied hours</td><td class=\"n\">" << annual->value("occupied_hours", 0) << "</td><td>h</td></tr>";
+    s << "<tr><td>occupied hours" << occupancy_note(annual->value("occupancy", json::object())) << "</td><td class=\"n\">"
+      << annual->value("occupied_hours", 0) << "</td><td>h</td></tr>";
     s << "<tr><td>time steps</td><td class=\"n\">" << annual->value("time_steps", 0) << "</td><td></td></tr>";
     s << "</table><p class=\"note\">Sky: " << esc(annual->value("sky", std::string())) << ".</p>";
   } else {

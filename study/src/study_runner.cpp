@@ -28,6 +28,7 @@
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/annual_study.h"
+#include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_folder.h"
@@ -251,27 +252,6 @@ nlohmann::json site_json(const project::Site& project_site, const SunSite* sun_s
                                {"largest_W_m2", below->largest_W_m2},
                                {"their_sun", sun_bins ? "left out" : "spread into the nearest sky patches"}};
   return j;
-}
-
-metrics::MetricSettings metric_settings(const project::MetricsSettings& m) {
-  metrics::MetricSettings s;
-  s.da_threshold_lux = m.da_threshold_lux;
-  s.udi_lower_lux = m.udi_lower_lux;
-  s.udi_upper_original_lux = m.udi_upper_original_lux;
-  s.udi_upper_revised_lux = m.udi_upper_revised_lux;
-  s.sda_time_fraction = m.sda_time_fraction;
-  s.ase_threshold_lux = m.ase_threshold_lux;
-  s.ase_hours = m.ase_hours;
-  return s;
-}
-
-/// The project's metric settings and occupancy, for every annual result (cases and operated).
-AnnualStudySettings annual_settings_of(const project::Project& project) {
-  AnnualStudySettings settings;
-  settings.metrics = metric_settings(project.metrics);
-  settings.occupancy_start_h = project.metrics.occupancy_start_h;
-  settings.occupancy_end_h = project.metrics.occupancy_end_h;
-  return settings;
 }
 
 AnnualOutputs annual_outputs_of(const project::Project& project) {
@@ -795,8 +775,13 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   // 5-6. Annual illuminance and metrics.
   const bool annual = project.outputs.annual_illuminance || project.outputs.metrics;
   const bool sun_bins = sim.sun == project::SunMode::Bins;
-  const AnnualStudySettings annual_settings = annual_settings_of(project);
   const AnnualOutputs which = annual_outputs_of(project);
+  // The schedule the metrics of each grid use (docs/metrics.md "Occupancy schedules").
+  auto log_occupancy = [&](const std::string& grid, const AnnualStudy& study, const AnnualStudySettings& settings) {
+    log.line(prefix + "occupancy " + grid + ": " + settings.occupancy.description() + "; " +
+             std::to_string(study.occupied_hours) + " occupied hours of " +
+             std::to_string(study.illuminance.step_count()));
+  };
   if (project.study == project::StudyKind::DaylightFactor) {
     // Nothing annual: no sky matrix, no sun (the loader turned the annual outputs off).
   } else if (sun_bins && (annual || project.outputs.coefficients)) {
@@ -821,8 +806,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
       const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps);
       const metrics::IlluminanceTable indirect = indirect_sun_table(sun[g].bin_coefficients, bins, ss.suns, ss.sky.steps);
+      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.epw, grid.name);
       const AnnualStudy study =
           compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, direct, indirect, annual_settings);
+      log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       if (keep) keep->grids.push_back({grid.name, grid.points, study.illuminance, direct});
       progress.advance(ss.sky.steps.size());
@@ -834,7 +821,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
+      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.epw, grid.name);
       const AnnualStudy study = compute_annual_study(coefficient_matrices[g], sky, annual_settings);
+      log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       progress.advance(sky.steps.size());
       progress.end();
@@ -855,7 +844,6 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
                             const CaseTables& open, const CaseTables& shaded, const std::string& dir,
                             RunContext& ctx) {
   const SkyAndSuns& ss = *ctx.sky_and_suns;  // both cases' annual step built it
-  const AnnualStudySettings settings = annual_settings_of(project);
   const AnnualOutputs which = annual_outputs_of(project);
   ShadingRule rule;
   rule.direct_sun_threshold_lux = op.direct_sun_threshold_lux;
@@ -865,6 +853,7 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
   for (std::size_t g = 0; g < open.grids.size(); ++g) {
     const CaseTables::Grid& o = open.grids[g];
     const CaseTables::Grid& c = shaded.grids.at(g);  // the same grids: variants share the sensors
+    const AnnualStudySettings settings = annual_settings_of(project, ctx.epw, o.name);
     const std::string folder = join(dir, o.name);
     ctx.progress.start("operated " + o.name, o.illuminance.step_count(), "hours");
     const OperatedStudy operated = compute_operated_study(

@@ -50,6 +50,8 @@ check_case check_site_from_weather 0 check tests/cli/cases/site_from_weather.yam
 check_case check_glazing 0 check tests/cli/cases/glazing.yaml
 check_case check_roof_light_polygons 0 check tests/cli/cases/roof_light_polygons.yaml
 check_case check_missing_file 1 check tests/cli/cases/does_not_exist.yaml
+check_case check_school_occupancy 0 check tests/cli/cases/school/project.yaml
+check_case check_occupancy_short_csv 1 check tests/cli/cases/occupancy_short.yaml
 check_case usage_no_subcommand 2
 check_case sun_bad_epw 1 sun tests/cli/cases/truncated.epw
 check_case sky_bad_cie_type 2 sky --cie 19

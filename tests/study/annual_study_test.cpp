@@ -189,7 +189,7 @@ TEST_F(RadianceReference, OwnGendaymtxCompatibleSkyGivesDa300WithinTheSkyToleran
   const AnnualStudy study = compute_annual_study(*coefficients, own, settings);
   const AnnualStudy radiance = compute_annual_study(*coefficients, *radiance_sky, settings);
   const metrics::OccupancySchedule occupied = metrics::OccupancySchedule::daily_hours(
-      radiance.illuminance.steps(), settings.occupancy_start_h, settings.occupancy_end_h);
+      radiance.illuminance.steps(), settings.occupancy.daily.start_h, settings.occupancy.daily.end_h);
   const double d = test::GendaymtxElementTolerance;
   // Percent of occupied hours whose RADIANCE illuminance could cross `threshold_lux`.
   auto band_percent = [&](std::size_t s, double threshold_lux) {
@@ -334,8 +334,7 @@ TEST(AnnualStudyOutputs, RejectsMismatchedInputs) {
   metrics::IlluminanceTable wrong(sky.steps, 2);
   EXPECT_THROW(compute_annual_study(c, sky, {}, &wrong), std::invalid_argument);
   AnnualStudySettings bad;
-  bad.occupancy_start_h = 18;
-  bad.occupancy_end_h = 8;
+  bad.occupancy.daily = {18, 8};
   EXPECT_THROW(compute_annual_study(c, sky, bad), std::invalid_argument);
   AnnualSky short_quantity = sky;
   short_quantity.daylight_hours_quantity.pop_back();

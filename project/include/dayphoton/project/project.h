@@ -6,6 +6,7 @@
 // with all of them (up to a cap); neither writes anything.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -334,6 +335,27 @@ struct Geometry {
 enum class RoomSurface { South, North, East, West, Floor, Ceiling };
 const char* room_surface_name(RoomSurface surface);
 
+/// `metrics.occupancy` (docs/metrics.md, "Occupancy schedules"): the occupied hours per
+/// kind of day, holidays, the weekday of 1 January and daylight saving time, or a CSV file of
+/// one 0/1 value per weather record. Plain data mirroring metrics::OccupancyPlan (this library
+/// does not depend on it). Not given: MetricsSettings' daily window.
+struct OccupancySpec {
+  /// [start_h, end_h) of local clock time, 0 <= start < end <= 24, in order, not overlapping.
+  using Windows = std::vector<std::pair<double, double>>;
+  struct Holiday {
+    int from_month = 1, from_day = 1, to_month = 1, to_day = 1;  ///< both included; may wrap the year end
+  };
+  bool given = false;
+  std::array<Windows, 7> week;  ///< Monday .. Sunday; empty: closed
+  Windows holiday_hours;        ///< empty: closed (the default)
+  std::vector<Holiday> holidays;
+  int january_1 = -1;           ///< 0 = Monday .. 6 = Sunday; -1: the weather file's DATA PERIODS
+  std::string daylight_saving = "none";  ///< none, eu, us
+  std::string file;             ///< resolved CSV path; "" unless the schedule is a file
+  std::vector<bool> hourly;     ///< the file's values, one per weather record
+  SourceLocation location;      ///< of the `occupancy` key's value
+};
+
 /// A regular sensor grid (docs/project-format.md, `sensors.grids`). Exactly one of `room`,
 /// `polygon`, `wall` and `rectangle` says what it covers:
 ///   - room: the room's floor rectangle, sensors at height_m above the floor facing `normal`;
@@ -362,6 +384,7 @@ struct GridSpec {
   double offset_m = 0;              ///< wall and rectangle grids: in front of the surface
   Vec3 normal{0, 0, 1};             ///< room and polygon grids
   bool drop_occluded = false;       ///< drop sensors outside every room or inside a solid
+  OccupancySpec occupancy;          ///< this grid's own schedule, if given (else the project's)
   SourceLocation location;
   SourceLocation spacing_location;  ///< of `spacing` if written, else of the grid
 
@@ -379,6 +402,7 @@ struct PointsSpec {
   std::string file;                 ///< resolved .pts path (x y z nx ny nz per line), or empty
   std::string file_as_written;
   bool drop_occluded = false;  ///< drop sensors outside every room or inside a solid
+  OccupancySpec occupancy;     ///< this set's own schedule, if given (else the project's)
   SourceLocation location;
 };
 
@@ -463,6 +487,8 @@ struct MetricsSettings {
   /// every day; 0 <= start_h < end_h <= 24.
   double occupancy_start_h = 8;
   double occupancy_end_h = 18;
+  /// A schedule beyond the daily window (`occupancy`); then the two keys above are unused.
+  OccupancySpec occupancy;
   double udi_lower_lux = 100;            ///< below: "fell short"
   double udi_upper_original_lux = 2000;  ///< Nabil & Mardaljevic 2005
   double udi_upper_revised_lux = 3000;   ///< Mardaljevic's revision

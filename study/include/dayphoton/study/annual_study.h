@@ -12,7 +12,8 @@
 //    nearest patches, patch-centre Perez values, RADIANCE's sun formulas, sky colour, 11 C dew
 //    point) or read from a RADIANCE matrix file such as gendaymtx output;
 //  - time stamps from the EPW via weather::SiteClock: mid-hour, local standard time, no DST;
-//  - occupancy: daily hours [start, end) of the mid-hour stamp, default 08:00-18:00 (3650 h);
+//  - occupancy: a metrics::OccupancyPlan, default daily hours [8, 18) of the mid-hour stamp
+//    (3650 h); weekly plans take the weekday of 1 January and the time zone from the EPW;
 //  - ASE only from a direct-sun-only, zero-bounce table (LM-83); EN 17037 over the daylight
 //    hours = the brightest half of the steps by the EPW's diffuse horizontal illuminance.
 #pragma once
@@ -25,6 +26,7 @@
 #include "dayphoton/metrics/annual_metrics.h"
 #include "dayphoton/metrics/illuminance_table.h"
 #include "dayphoton/metrics/occupancy.h"
+#include "dayphoton/metrics/occupancy_plan.h"
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/weather/epw_reader.h"
@@ -78,12 +80,22 @@ AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weat
 RadianceMatrix read_matrix_file(const std::string& path, const MatrixReadOptions& options = {},
                                 std::uint64_t max_decompressed_bytes = ResourceLimits{}.decompressed_bytes);
 
-/// Settings of the metrics: thresholds and the occupancy window (local standard time).
+/// The calendar of an EPW for occupancy plans: the weekday of 1 January from the DATA
+/// PERIODS start day and date, and the time zone.
+metrics::WeatherCalendar weather_calendar(const weather::EpwFile& epw);
+
+/// Settings of the metrics: thresholds and the occupancy (docs/metrics.md).
 struct AnnualStudySettings {
   metrics::MetricSettings metrics;
-  double occupancy_start_h = 8.0;
-  double occupancy_end_h = 18.0;
+  metrics::OccupancyPlan occupancy;    ///< default 08:00-18:00 every day, local standard time
+  metrics::WeatherCalendar calendar;   ///< of the weather file (weather_calendar)
 };
+
+/// The occupied steps of `settings` for `steps`. Throws std::invalid_argument for a daily
+/// window outside 0 <= start < end <= 24, and InputError (at the plan's location) for a plan
+/// that does not fit the weather file or leaves no occupied step.
+metrics::OccupancySchedule occupancy_schedule(const AnnualStudySettings& settings,
+                                              const std::vector<metrics::TimeStamp>& steps);
 
 /// Everything computed for one grid.
 struct AnnualStudy {
