@@ -25,7 +25,7 @@
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/sun_site.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::app {
 
@@ -137,7 +137,7 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
                          std::to_string(basis.bin_count()) + " bins");
 
   // A missing weather file (or a FIFO) is bad input (exit 1): read_epw says so, located.
-  const weather::EpwFile epw = weather::read_epw(o.weather_path);
+  const weather::HourlyWeather weather = weather::read_hourly_weather(o.weather_path);
   study::AnnualSky sky;
   std::string site_line;
   if (o.sky_matrix_path.empty()) {
@@ -146,17 +146,17 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
     if (!o.ground_reflectance_given)
       if (const std::optional<double> from_run = run_ground_reflectance(summary_text)) rho = *from_run;
     // The sun of the run's site (its summary.json), else of the weather file's header.
-    const std::optional<study::SunSite> recorded = study::recorded_sun_site(summary_text, summary_path, epw);
-    const study::SunSite site = recorded ? *recorded : study::header_sun_site(epw);
+    const std::optional<study::SunSite> recorded = study::recorded_sun_site(summary_text, summary_path, weather);
+    const study::SunSite site = recorded ? *recorded : study::header_sun_site(weather);
     site_line = study::sun_site_sentence(site) +
                 (recorded ? " (the run's, from " + summary_path + ")" : std::string(" (no run summary records a site)"));
     require_matrix_within_limit("the sky matrix (" + std::to_string(basis.bin_count()) +
                                     " bins, one column per record of " + o.weather_path + ")",
-                                static_cast<std::uint64_t>(basis.bin_count()), epw.records.size(), 3,
+                                static_cast<std::uint64_t>(basis.bin_count()), weather.records.size(), 3,
                                 o.max_matrix_values);
-    sky = study::annual_sky_from_epw(epw, site.solar, basis, study::radiance_compatible_sky_options(rho));
+    sky = study::annual_sky_from_weather(weather, site.solar, basis, study::radiance_compatible_sky_options(rho));
   } else {
-    sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, epw, read_options, o.max_decompressed_bytes);
+    sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, weather, read_options, o.max_decompressed_bytes);
     if (sky.matrix.rows() != coefficients.columns() || sky.matrix.components() != coefficients.components())
       throw InputError(SourceLocation{o.sky_matrix_path, 0, 0},
                        "has " + std::to_string(sky.matrix.rows()) + " rows x " +

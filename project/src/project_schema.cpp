@@ -83,7 +83,7 @@ std::vector<SectionSchema> build_schema() {
   s.push_back({"project", "the top level of a project file", {
       P("version", T::Integer, "project-file format version").range(1, 1).def("1"),
       P("site", T::Section, "where the building is").section("site").required(),
-      P("weather", T::Special, "EPW file: a path, or a map {file: path}; needed for annual outputs"),
+      P("weather", T::Special, "hourly weather file, EPW or RADIANCE/DAYSIM .wea (by its extension): a path, or a map {file: path}; needed for annual outputs"),
       P("materials", T::NameMap, "material name -> material definition (map by `type`)").required(),
       P("geometry", T::Section, "rooms, polygons, boxes and meshes").section("geometry").required(),
       P("sensors", T::Section, "sensor grids and point sets").section("sensors"),
@@ -109,7 +109,7 @@ std::vector<SectionSchema> build_schema() {
       P("hemisphere", T::Choice, "hemisphere of the zone").choices({"north", "south"}).required(),
   }});
   s.push_back({"weather", "weather file (map form of `weather`)", {
-      P("file", T::Path, "EPW file, relative to the project file; must exist").required(),
+      P("file", T::Path, "EPW file, or .wea file (its header gives the site), relative to the project file; must exist").required(),
   }});
   s.push_back({"lambertian material", "ideal diffuse reflector (RADIANCE plastic, no specular lobe)", {
       material_type(), reflectance("diffuse reflectance, grey or [r, g, b]"),

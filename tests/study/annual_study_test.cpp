@@ -61,7 +61,7 @@ class RadianceReference : public ::testing::Test {
     const std::string dc = RefDir + "/office_dc_classic.mtx.gz";
     const std::string sky = RefDir + "/oakland_sky_m1.mtx.gz";
     if (!fs::exists(dc) || !fs::exists(sky)) return;
-    epw = std::make_unique<weather::EpwFile>(weather::read_epw(EpwPath));
+    epw = std::make_unique<weather::HourlyWeather>(weather::read_hourly_weather(EpwPath));
     coefficients = std::make_unique<RadianceMatrix>(test::read_gzip_matrix(dc));
     radiance_sky = std::make_unique<AnnualSky>();
     radiance_sky->matrix = test::read_gzip_matrix(sky);
@@ -77,12 +77,12 @@ class RadianceReference : public ::testing::Test {
   void SetUp() override {
     ASSERT_TRUE(coefficients) << "reference data not found under " << RefDir;
   }
-  static std::unique_ptr<weather::EpwFile> epw;
+  static std::unique_ptr<weather::HourlyWeather> epw;
   static std::unique_ptr<RadianceMatrix> coefficients;
   static std::unique_ptr<AnnualSky> radiance_sky;
   static std::vector<ReferenceSensor> reference;
 };
-std::unique_ptr<weather::EpwFile> RadianceReference::epw;
+std::unique_ptr<weather::HourlyWeather> RadianceReference::epw;
 std::unique_ptr<RadianceMatrix> RadianceReference::coefficients;
 std::unique_ptr<AnnualSky> RadianceReference::radiance_sky;
 std::vector<ReferenceSensor> RadianceReference::reference;
@@ -90,7 +90,7 @@ std::vector<ReferenceSensor> RadianceReference::reference;
 }  // namespace
 
 TEST(AnnualStudyTime, OaklandStepsAreMidHourStandardTimeWith3650OccupiedHours) {
-  const weather::EpwFile epw = weather::read_epw(EpwPath);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(EpwPath);
   const auto steps = time_stamps(epw);
   ASSERT_EQ(steps.size(), 8760u);
   EXPECT_EQ(steps.front().month, 1);
@@ -182,7 +182,7 @@ TEST_F(RadianceReference, ReproducesRadianceIlluminanceAndMetrics) {
 // compatibility test checks the elements above 1 % of their hour's maximum; the bound assumes
 // the 1 % for all.) Measured: worst DA300 difference 0.084 points, UDI 0.09.
 TEST_F(RadianceReference, OwnGendaymtxCompatibleSkyGivesDa300WithinTheSkyToleranceBound) {
-  const AnnualSky own = annual_sky_from_epw(*epw, sky::solar_site_of(*epw), sky::PatchBasis::tregenza(), radiance_compatible_sky_options(0.2));
+  const AnnualSky own = annual_sky_from_weather(*epw, sky::solar_site_of(*epw), sky::PatchBasis::tregenza(), radiance_compatible_sky_options(0.2));
   ASSERT_EQ(own.matrix.rows(), 146u);
   ASSERT_EQ(own.matrix.columns(), 8760u);
   const AnnualStudySettings settings;
