@@ -58,7 +58,9 @@ std::vector<double> daylight_hours_quantity(const weather::HourlyWeather& weathe
     return lux;
   }
   if (!weather.records.empty() && w_m2.size() == weather.records.size()) {
-    source = "diffuse horizontal irradiance of " + weather.source_name + " (its illuminance field has missing values)";
+    source = "diffuse horizontal irradiance of " + weather.source_name +
+             (weather.format == weather::WeatherFormat::Wea ? " (a .wea file has no illuminance)"
+                                                             : " (its illuminance field has missing values)");
     return w_m2;
   }
   source = "none: " + weather.source_name + " lacks diffuse horizontal values";

@@ -105,6 +105,26 @@ TEST(AnnualStudyTime, OaklandStepsAreMidHourStandardTimeWith3650OccupiedHours) {
   EXPECT_NE(source.find("diffuse horizontal illuminance"), std::string::npos) << source;
 }
 
+TEST(AnnualStudyTime, AWeaFileGivesTheStepsOfItsEpwAndDaylightHoursFromIrradiance) {
+  // The corpus pair clean.epw / hourly.wea holds the same hours and irradiance.
+  const std::string corpus = std::string(DAYPHOTON_TEST_DATA_DIR) + "/weather/";
+  const weather::HourlyWeather epw = weather::read_hourly_weather(corpus + "clean.epw");
+  const weather::HourlyWeather wea = weather::read_hourly_weather(corpus + "hourly.wea");
+  const auto a = time_stamps(epw), b = time_stamps(wea);
+  ASSERT_EQ(a.size(), 48u);
+  ASSERT_EQ(b.size(), a.size());
+  for (std::size_t t = 0; t < a.size(); ++t) {
+    EXPECT_EQ(a[t].month, b[t].month);
+    EXPECT_EQ(a[t].day, b[t].day);
+    EXPECT_EQ(a[t].hour, b[t].hour);
+  }
+  std::string source;
+  const std::vector<double> quantity = daylight_hours_quantity(wea, source);
+  ASSERT_EQ(quantity.size(), 48u);
+  EXPECT_EQ(quantity[11], 62.0);  // Jan 1 hour 12: its diffuse horizontal irradiance, W/m^2
+  EXPECT_NE(source.find("(a .wea file has no illuminance)"), std::string::npos) << source;
+}
+
 TEST_F(RadianceReference, ReproducesRadianceIlluminanceAndMetrics) {
   ASSERT_EQ(coefficients->rows(), 165u);
   ASSERT_EQ(coefficients->columns(), 146u);
