@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -273,6 +277,42 @@ TEST(WeatherCorpus, WeaIlluminanceUnitsAreRefusedAsAnnualWeather) {
   EXPECT_EQ(errors_of([] { read_hourly_weather(corpus("units_illuminance.wea")); }),
             std::vector<std::string>{"units_illuminance.wea:6:25: error: weather_data_file_units 3: the annual sky "
                                      "needs direct normal and diffuse horizontal irradiance (units 1)"});
+}
+
+// Seeded random corruptions of the .wea and EPW corpus texts through the reader and the
+// series: a series or an InputError, never a crash or another exception.
+TEST(WeatherCorpus, FuzzedCorruptionsOfTheSeriesNeverCrash) {
+  std::mt19937 rng(11u);
+  const std::string alphabet = "0123456789 .,-+/\n\tabc_\xff";
+  for (const std::string name : {"hourly.wea", "missing_short_gaps.epw"}) {
+    std::ifstream file(corpus(name), std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    ASSERT_FALSE(text.empty()) << name;
+    int failures = 0;
+    for (int iteration = 0; iteration < 200; ++iteration) {
+      std::string t = text;
+      for (int k = 0; k < 3; ++k) {
+        const std::size_t pos = rng() % t.size();
+        switch (rng() % 3) {
+          case 0: t[pos] = alphabet[rng() % alphabet.size()]; break;
+          case 1: t.erase(pos, 1 + rng() % 20); break;
+          case 2: t.insert(pos, 1, alphabet[rng() % alphabet.size()]); break;
+        }
+        if (t.empty()) t = "x";
+      }
+      std::istringstream in(t);
+      try {
+        if (name == "hourly.wea")
+          hourly_weather_from_wea(read_wea(in, "fuzz.wea"));
+        else
+          hourly_weather_from_epw(read_epw(in, "fuzz.epw"));
+      } catch (const InputError& e) {
+        ++failures;
+        for (const Diagnostic& d : e.diagnostics()) EXPECT_FALSE(d.message.empty());
+      }
+    }
+    EXPECT_GT(failures, 50) << name;  // most corruptions are caught, not silently accepted
+  }
 }
 
 TEST(WeatherCorpus, ExtensionChoosesTheReader) {
