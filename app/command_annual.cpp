@@ -1,9 +1,9 @@
-// `dayphoton annual --coefficients DIR --weather FILE.epw`: the annual illuminance tables and
-// metrics of a grid from the sky coefficients an earlier `dayphoton run` exported
+// `dayphoton annual --coefficients DIR --weather FILE.epw|FILE.wea`: the annual illuminance
+// tables and metrics of a grid from the sky coefficients an earlier `dayphoton run` exported
 // (DIR/coefficients_sky.mtx, DIR/sensors.csv), without any tracing (issue 5 item 6). The sky
-// matrix is built from the EPW in the RADIANCE-compatible mode (gendaymtx -m MF, sun spread
-// into patches) or read from a RADIANCE matrix file (--sky-matrix, e.g. gendaymtx output,
-// plain or .gz); the EPW always gives the time stamps. The sun is computed for the site the
+// matrix is built from the weather file in the RADIANCE-compatible mode (gendaymtx -m MF, sun
+// spread into patches) or read from a RADIANCE matrix file (--sky-matrix, e.g. gendaymtx
+// output, plain or .gz); the weather file always gives the time stamps. The sun is computed for the site the
 // run's summary.json records (study/sun_site.h), else for the weather file header's site.
 // See docs/outputs.md and docs/cli.md.
 #include <algorithm>

@@ -1,5 +1,6 @@
-// `dayphoton sun WEATHER.epw`: the sun position for every record of a weather file, at the
-// record's mid-hour in local standard time, for the site of the file's LOCATION header.
+// `dayphoton sun WEATHER.epw|WEATHER.wea`: the sun position for every record of a weather
+// file, at the record's mid-hour in local standard time, for the site of the file's header
+// (EPW LOCATION, or the .wea header).
 #include <cstdio>
 #include <iostream>
 #include <sstream>

@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
 
   SunOptions sun;
   auto* sun_cmd = cli.add_subcommand("sun", "Sun position for every hour of a weather file (CSV)");
-  sun_cmd->add_option("weather", sun.weather_path, "Weather file (EPW)")->required();
+  sun_cmd->add_option("weather", sun.weather_path, "Weather file (EPW, or .wea by its extension)")->required();
   sun_cmd->add_option("--solar-position", sun.solar_position,
                       "spa (NREL SPA, default) or radiance (gendaymtx's formulas)")
       ->check(CLI::IsMember({"spa", "radiance"}));
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
   SkyOptions sky;
   auto* sky_cmd = cli.add_subcommand(
       "sky", "Annual sky matrix of a weather file, or the sky vector of a CIE sky (RADIANCE matrix format)");
-  sky_cmd->add_option("weather", sky.weather_path, "Weather file (EPW)");
+  sky_cmd->add_option("weather", sky.weather_path, "Weather file (EPW, or .wea by its extension)");
   sky_cmd->add_option("--cie", sky.cie, "CIE sky instead of a weather file: 1..15 (ISO 15469), overcast, uniform");
   sky_cmd->add_option("--altitude", sky.sun_altitude_deg, "CIE general skies: sun altitude (deg)")->check(FiniteNumber);
   sky_cmd->add_option("--azimuth", sky.sun_azimuth_deg, "CIE general skies: sun azimuth (deg, clockwise from north)")
@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
   annual_cmd->add_option("--coefficients", annual.coefficients_dir,
                          "Grid folder written by `dayphoton run` (coefficients_sky.mtx, sensors.csv)")
       ->required();
-  annual_cmd->add_option("--weather", annual.weather_path, "Weather file (EPW): time stamps, and the sky")->required();
+  annual_cmd->add_option("--weather", annual.weather_path, "Weather file (EPW, or .wea by its extension): time stamps, and the sky")->required();
   annual_cmd->add_option("--sky-matrix", annual.sky_matrix_path,
                          "Read the sky matrix from this RADIANCE matrix file (e.g. gendaymtx output, plain or .gz) "
                          "instead of building it from the weather file");
