@@ -81,6 +81,16 @@ TEST(WeatherCorpus, BadDataPeriodDateIsStillALocatedError) {
                                      "or YYYY/M/D, found '2015/13/1'"});
 }
 
+TEST(WeatherCorpus, ByteOrderMarkIsNotPartOfTheFirstLine) {
+  const EpwFile epw = read_epw(corpus("utf8_bom.epw"));
+  EXPECT_EQ(epw.header.location.city, "Testville");
+  EXPECT_EQ(epw.records.size(), 48u);
+  EXPECT_TRUE(epw.warnings.empty());
+  const HourlyWeather wea = read_hourly_weather(corpus("utf8_bom.wea"));
+  EXPECT_EQ(wea.site.city, "Testville");
+  EXPECT_EQ(wea.records.size(), 48u);
+}
+
 TEST(WeatherCorpus, LocationLineWithAnEleventhField) {
   const EpwFile epw = read_epw(corpus("location_11_fields.epw"));
   EXPECT_DOUBLE_EQ(epw.header.location.latitude_deg, 37.72);

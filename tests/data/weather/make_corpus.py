@@ -43,7 +43,7 @@ def days(start, end):
 
 
 def epw(name, start=(1, 1), end=(1, 2), year=2015, location=LOCATION, holidays=HOLIDAYS,
-        period=None, edit=None):
+        period=None, edit=None, bom=False):
     """An EPW file of the hours of start..end; `edit(records)` changes fields in place
     (records[i] is the field list of the i-th record, 0-based)."""
     if period is None:
@@ -55,7 +55,7 @@ def epw(name, start=(1, 1), end=(1, 2), year=2015, location=LOCATION, holidays=H
              "GROUND TEMPERATURES,0", holidays, "COMMENTS 1,synthetic variant for dayphoton's tests",
              "COMMENTS 2,values are made up", period]
     lines += [",".join(r) for r in records]
-    with open(os.path.join(HERE, name), "w", newline="") as f:
+    with open(os.path.join(HERE, name), "w", newline="", encoding="utf-8-sig" if bom else "utf-8") as f:
         f.write("".join(line + "\r\n" for line in lines))
 
 
@@ -106,8 +106,8 @@ def ladybug_style(records):
         setf(records, i, 27, "")
 
 
-def wea(name, header, rows):
-    with open(os.path.join(HERE, name), "w", newline="") as f:
+def wea(name, header, rows, bom=False):
+    with open(os.path.join(HERE, name), "w", newline="", encoding="utf-8-sig" if bom else "utf-8") as f:
         f.write("".join(line + "\n" for line in header + rows))
 
 
@@ -145,7 +145,9 @@ def main():
         location="LOCATION,Testville,CA,USA,SYNTH,999999,37.72,-122.22,-8.0,2.0,0",
         holidays="HOLIDAYS/DAYLIGHT SAVINGS,,0,0,0",
         period="DATA PERIODS,1,1,Data,Thursday,2015/1/1,2015/1/2", edit=ladybug_style)
+    epw("utf8_bom.epw", bom=True)
     wea("hourly.wea", WEA_HEADER, wea_rows())
+    wea("utf8_bom.wea", WEA_HEADER, wea_rows(), bom=True)
     wea("hourly_leap_day.wea", WEA_HEADER, wea_rows((2, 28), (3, 1)))
     bad = wea_rows()
     bad[30] = "1 2 6.500 12x 3"
