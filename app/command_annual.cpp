@@ -1,9 +1,9 @@
-// `dayphoton annual --coefficients DIR --weather FILE.epw`: the annual illuminance tables and
-// metrics of a grid from the sky coefficients an earlier `dayphoton run` exported
+// `dayphoton annual --coefficients DIR --weather FILE.epw|FILE.wea`: the annual illuminance
+// tables and metrics of a grid from the sky coefficients an earlier `dayphoton run` exported
 // (DIR/coefficients_sky.mtx, DIR/sensors.csv), without any tracing (issue 5 item 6). The sky
-// matrix is built from the EPW in the RADIANCE-compatible mode (gendaymtx -m MF, sun spread
-// into patches) or read from a RADIANCE matrix file (--sky-matrix, e.g. gendaymtx output,
-// plain or .gz); the EPW always gives the time stamps. The sun is computed for the site the
+// matrix is built from the weather file in the RADIANCE-compatible mode (gendaymtx -m MF, sun
+// spread into patches) or read from a RADIANCE matrix file (--sky-matrix, e.g. gendaymtx
+// output, plain or .gz); the weather file always gives the time stamps. The sun is computed for the site the
 // run's summary.json records (study/sun_site.h), else for the weather file header's site.
 // See docs/outputs.md and docs/cli.md.
 #include <algorithm>
@@ -27,7 +27,7 @@
 #include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/sun_site.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::app {
 
@@ -99,13 +99,13 @@ std::string join_names(const std::vector<std::string>& names) {
 /// The metric settings: the project's (--project) or the defaults, then the command line's
 /// overrides, checked as the project file's keys are (UsageError).
 study::AnnualStudySettings annual_settings(const AnnualOptions& o, const project::Project* project,
-                                           const weather::EpwFile& epw) {
+                                           const weather::HourlyWeather& weather) {
   // The grid folder is named after its sensor set, whose own schedule (if any) applies.
   fs::path grid = fs::absolute(o.coefficients_dir).lexically_normal();
   if (!grid.has_filename()) grid = grid.parent_path();
-  study::AnnualStudySettings settings = project ? study::annual_settings_of(*project, &epw, grid.filename().string())
+  study::AnnualStudySettings settings = project ? study::annual_settings_of(*project, &weather, grid.filename().string())
                                                 : study::AnnualStudySettings{};
-  settings.calendar = study::weather_calendar(epw);
+  settings.calendar = study::weather_calendar(weather);
   metrics::MetricSettings& m = settings.metrics;
   if (o.da_threshold_lux) m.da_threshold_lux = *o.da_threshold_lux;
   if (o.udi_lower_lux) m.udi_lower_lux = *o.udi_lower_lux;
@@ -201,7 +201,7 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
     throw UsageError(project ? "the project " + o.project_path + " has no weather file: give --weather"
                              : std::string("--weather is required (or --project, whose weather file is used)"));
   // A missing weather file (or a FIFO) is bad input (exit 1): read_epw says so, located.
-  const weather::EpwFile epw = weather::read_epw(weather_path);
+  const weather::HourlyWeather weather = weather::read_hourly_weather(weather_path);
   study::AnnualSky sky;
   std::string site_line;
   if (o.sky_matrix_path.empty()) {
@@ -210,17 +210,17 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
     if (!o.ground_reflectance_given)
       if (const std::optional<double> from_run = run_ground_reflectance(summary_text)) rho = *from_run;
     // The sun of the run's site (its summary.json), else of the weather file's header.
-    const std::optional<study::SunSite> recorded = study::recorded_sun_site(summary_text, summary_path, epw);
-    const study::SunSite site = recorded ? *recorded : study::header_sun_site(epw);
+    const std::optional<study::SunSite> recorded = study::recorded_sun_site(summary_text, summary_path, weather);
+    const study::SunSite site = recorded ? *recorded : study::header_sun_site(weather);
     site_line = study::sun_site_sentence(site) +
                 (recorded ? " (the run's, from " + summary_path + ")" : std::string(" (no run summary records a site)"));
     require_matrix_within_limit("the sky matrix (" + std::to_string(basis.bin_count()) +
                                     " bins, one column per record of " + weather_path + ")",
-                                static_cast<std::uint64_t>(basis.bin_count()), epw.records.size(), 3,
+                                static_cast<std::uint64_t>(basis.bin_count()), weather.records.size(), 3,
                                 o.max_matrix_values);
-    sky = study::annual_sky_from_epw(epw, site.solar, basis, study::radiance_compatible_sky_options(rho));
+    sky = study::annual_sky_from_weather(weather, site.solar, basis, study::radiance_compatible_sky_options(rho));
   } else {
-    sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, epw, read_options, o.max_decompressed_bytes);
+    sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, weather, read_options, o.max_decompressed_bytes);
     if (sky.matrix.rows() != coefficients.columns() || sky.matrix.components() != coefficients.components())
       throw InputError(SourceLocation{o.sky_matrix_path, 0, 0},
                        "has " + std::to_string(sky.matrix.rows()) + " rows x " +
@@ -231,7 +231,7 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
 
   require_matrix_within_limit("the illuminance table (" + std::to_string(sensors.size()) + " sensors, one row per record)",
                               sensors.size(), sky.steps.size(), 1, o.max_matrix_values);
-  const study::AnnualStudySettings settings = annual_settings(o, project ? &*project : nullptr, epw);
+  const study::AnnualStudySettings settings = annual_settings(o, project ? &*project : nullptr, weather);
   const study::AnnualStudy result = study::compute_annual_study(coefficients, sky, settings);
   const std::string output_dir =
       o.output_dir.empty() ? (fs::path(o.coefficients_dir) / "annual").string() : o.output_dir;

@@ -4,11 +4,12 @@
 #include <sstream>
 
 #include "commands.h"
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::app {
 
@@ -55,10 +56,12 @@ int run_sky(const SkyOptions& o, const std::string& command_line, std::ostream& 
     matrix.header_lines().push_back("SKY= " + sky->description());
   } else {
     if (o.weather_path.empty()) throw UsageError("give a weather file or --cie TYPE");
-    const weather::EpwFile epw = weather::read_epw(o.weather_path);
+    const weather::HourlyWeather weather = weather::read_hourly_weather(o.weather_path);
+    // What the reader accepted with a warning (ignored fields, filled gaps, header variants).
+    for (const Diagnostic& w : weather.warnings) std::cerr << w.format();
     require_matrix_within_limit("the sky matrix (--basis " + o.basis + ": " + std::to_string(basis.bin_count()) +
                                     " bins, one column per record of " + o.weather_path + ")",
-                                static_cast<std::uint64_t>(basis.bin_count()), epw.records.size(), 3,
+                                static_cast<std::uint64_t>(basis.bin_count()), weather.records.size(), 3,
                                 o.max_matrix_values);
     sky::SkyMatrixOptions options;
     if (o.solar_position == "radiance") options = sky::SkyMatrixOptions::gendaymtx_compatible();
@@ -66,8 +69,8 @@ int run_sky(const SkyOptions& o, const std::string& command_line, std::ostream& 
     else if (o.sun == "none") options.sun = sky::SunInMatrix::None;
     else options.sun = sky::SunInMatrix::Only;
     options.ground_reflectance = o.ground_reflectance;
-    const sky::SolarSite site = sky::solar_site_of(epw);
-    sky::SkyMatrix result = sky::build_sky_matrix(epw, site, basis, options);
+    const sky::SolarSite site = sky::solar_site_of(weather);
+    sky::SkyMatrix result = sky::build_sky_matrix(weather, site, basis, options);
     matrix = std::move(result.matrix);
     matrix.header_lines().push_back(command_line);
     std::ostringstream latlong;

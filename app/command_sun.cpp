@@ -1,15 +1,17 @@
-// `dayphoton sun WEATHER.epw`: the sun position for every record of a weather file, at the
-// record's mid-hour in local standard time, for the site of the file's LOCATION header.
+// `dayphoton sun WEATHER.epw|WEATHER.wea`: the sun position for every record of a weather
+// file, at the record's mid-hour in local standard time, for the site of the file's header
+// (EPW LOCATION, or the .wea header).
 #include <cstdio>
 #include <iostream>
 #include <sstream>
 
 #include "commands.h"
 #include "dayphoton/core/atomic_file.h"
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/solar_position.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 #include "dayphoton/weather/site_clock.h"
 
 namespace dayphoton::app {
@@ -26,18 +28,20 @@ void require_written(std::ostream& out, const std::string& what) {
 }
 
 int run_sun(const SunOptions& options, std::ostream& out) {
-  const weather::EpwFile epw = weather::read_epw(options.weather_path);
-  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
-  const sky::SolarSite site = sky::solar_site_of(epw);
+  const weather::HourlyWeather weather = weather::read_hourly_weather(options.weather_path);
+  // What the reader accepted with a warning (ignored fields, filled gaps, header variants).
+  for (const Diagnostic& w : weather.warnings) std::cerr << w.format();
+  const weather::SiteClock clock = weather::SiteClock::for_weather(weather);
+  const sky::SolarSite site = sky::solar_site_of(weather);
   sky::SolarPositionOptions solar;
   solar.algorithm = parse_solar_position(options.solar_position);
   solar.apply_refraction = solar.algorithm == sky::SolarPositionAlgorithm::Spa && !options.no_refraction;
-  solar.radiance_series_has_leap_day = epw.leap_day_present;
+  solar.radiance_series_has_leap_day = weather.leap_day_present;
 
   std::ostringstream table;
   table << "month,day,hour,altitude_deg,azimuth_deg,sun_up\n";
   char line[128];
-  for (const weather::TimeStep& step : clock.steps(epw.records)) {
+  for (const weather::TimeStep& step : clock.steps(weather.records)) {
     const sky::SolarPosition p =
         sky::solar_position(site, sky::SolarTime{clock.year(), step.month, step.day, step.hour_lst}, solar);
     std::snprintf(line, sizeof line, "%d,%d,%.1f,%.4f,%.4f,%d\n", step.month, step.day, step.hour_lst,

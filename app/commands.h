@@ -73,7 +73,7 @@ struct SunOptions {
 int run_sun(const SunOptions& options, std::ostream& out);
 
 struct SkyOptions {
-  std::string weather_path;       ///< EPW for an annual matrix
+  std::string weather_path;       ///< EPW or .wea for an annual matrix
   std::string cie;                ///< or a CIE sky: "1".."15", "overcast", "uniform"
   double sun_altitude_deg = 45, sun_azimuth_deg = 180;  ///< for CIE general skies
   double horizontal_illuminance_lux = 10000;            ///< for CIE skies
@@ -90,8 +90,8 @@ int run_sky(const SkyOptions& options, const std::string& command_line, std::ost
 
 struct AnnualOptions {
   std::string coefficients_dir;  ///< grid folder of `dayphoton run` (coefficients_sky.mtx, sensors.csv)
-  std::string weather_path;      ///< EPW: time stamps, and the sky unless sky_matrix_path is given
-  std::string sky_matrix_path;   ///< RADIANCE matrix file (plain or .gz); empty: built from the EPW
+  std::string weather_path;      ///< EPW or .wea: time stamps, and the sky unless sky_matrix_path is given
+  std::string sky_matrix_path;   ///< RADIANCE matrix file (plain or .gz); empty: built from the weather file
   std::string output_dir;        ///< empty: <coefficients_dir>/annual
   std::string basis;             ///< empty: from the coefficients' column count
   double ground_reflectance = 0.2;     ///< used if given, else the run's (summary.json), else 0.2

@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
 
   SunOptions sun;
   auto* sun_cmd = cli.add_subcommand("sun", "Sun position for every hour of a weather file (CSV)");
-  sun_cmd->add_option("weather", sun.weather_path, "Weather file (EPW)")->required();
+  sun_cmd->add_option("weather", sun.weather_path, "Weather file (EPW, or .wea by its extension)")->required();
   sun_cmd->add_option("--solar-position", sun.solar_position,
                       "spa (NREL SPA, default) or radiance (gendaymtx's formulas)")
       ->check(CLI::IsMember({"spa", "radiance"}));
@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
   SkyOptions sky;
   auto* sky_cmd = cli.add_subcommand(
       "sky", "Annual sky matrix of a weather file, or the sky vector of a CIE sky (RADIANCE matrix format)");
-  sky_cmd->add_option("weather", sky.weather_path, "Weather file (EPW)");
+  sky_cmd->add_option("weather", sky.weather_path, "Weather file (EPW, or .wea by its extension)");
   sky_cmd->add_option("--cie", sky.cie, "CIE sky instead of a weather file: 1..15 (ISO 15469), overcast, uniform");
   sky_cmd->add_option("--altitude", sky.sun_altitude_deg, "CIE general skies: sun altitude (deg)")->check(FiniteNumber);
   sky_cmd->add_option("--azimuth", sky.sun_azimuth_deg, "CIE general skies: sun azimuth (deg, clockwise from north)")
@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
                          "Grid folder written by `dayphoton run` (coefficients_sky.mtx, sensors.csv)")
       ->required();
   annual_cmd->add_option("--weather", annual.weather_path,
-                         "Weather file (EPW): time stamps, and the sky (default: the --project's weather file)");
+                         "Weather file (EPW, or .wea by its extension): time stamps, and the sky (default: the --project's weather file)");
   annual_cmd->add_option("--project", annual.project_path,
                          "Project file: its metric settings (thresholds, occupancy schedule) and weather file, so "
                          "that the metrics are the run's");

@@ -16,7 +16,7 @@
 #include "dayphoton/study/point_in_time.h"
 #include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/sun_site.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::app {
 
@@ -63,23 +63,27 @@ void describe_weather_and_sun(const project::Project& proj, std::vector<std::str
     sun_lines = {"none: a daylight-factor study traces no sun (CIE overcast sky only)"};
     return;
   }
-  const weather::EpwFile epw = weather::read_epw(proj.weather.path);
-  const weather::EpwLocation& loc = epw.header.location;
+  const weather::HourlyWeather weather = weather::read_hourly_weather(proj.weather.path);
+  const weather::WeatherSite& loc = weather.site;
   lines.clear();
-  lines.push_back(proj.weather.path_as_written + ": " + loc.city + ", " + loc.state + ", " + loc.country +
-                  " (WMO " + loc.wmo + ", " + loc.source + ")");
+  if (weather.format == weather::WeatherFormat::Wea)  // a .wea header has only a place name
+    lines.push_back(proj.weather.path_as_written + ": " + loc.city + (loc.country.empty() ? "" : ", " + loc.country) +
+                    " (.wea, the site of its header)");
+  else
+    lines.push_back(proj.weather.path_as_written + ": " + loc.city + ", " + loc.state + ", " + loc.country +
+                    " (WMO " + loc.wmo + ", " + loc.source + ")");
   lines.push_back(latitude_text(loc.latitude_deg) + ", " + longitude_text(loc.longitude_east_deg) + ", " +
                   utc_offset_text(loc.time_zone_h) + ", elevation " + fixed(loc.elevation_m, 1) + " m; " +
-                  std::to_string(epw.records.size()) + " hourly records" +
-                  (epw.leap_day_present ? " (with 29 February)" : ""));
-  for (const Diagnostic& w : epw.warnings) lines.push_back("warning: " + w.location.to_string() + ": " + w.message);
-  for (const std::string& line : study::occupancy_summary(proj, epw)) lines.push_back(line);
+                  std::to_string(weather.records.size()) + " hourly records" +
+                  (weather.leap_day_present ? " (with 29 February)" : ""));
+  for (const Diagnostic& w : weather.warnings) lines.push_back("warning: " + w.location.to_string() + ": " + w.message);
+  for (const std::string& line : study::occupancy_summary(proj, weather)) lines.push_back(line);
   // A time zone other than the file's is an error here as in `run` (located at time_zone).
-  const study::SunSite site = study::resolve_sun_site(proj.site, epw);
+  const study::SunSite site = study::resolve_sun_site(proj.site, weather);
   solar = site.solar;
   sun_lines = {study::sun_site_sentence(site)};
   if (const std::string w = study::station_distance_warning(site); !w.empty()) sun_lines.push_back(w);
-  sun_lines.push_back(study::below_horizon_note(study::annual_below_horizon_direct(epw, site),
+  sun_lines.push_back(study::below_horizon_note(study::annual_below_horizon_direct(weather, site),
                                                 proj.simulation.sun == project::SunMode::Bins));
 }
 double mean_rgb(const Vec3& v) { return (v.x + v.y + v.z) / 3.0; }

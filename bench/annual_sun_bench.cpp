@@ -359,7 +359,7 @@ int main(int argc, char** argv) {
   const std::size_t S = sensors.size();
 
   // Sky-only matrix and suns (RADIANCE-compatible conventions).
-  const weather::EpwFile epw = weather::read_epw(proj.weather.path);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(proj.weather.path);
   const sky::SolarSite site = study::resolve_sun_site(proj.site, epw).solar;  // as the run
   const sky::PatchBasis basis = sky::PatchBasis::tregenza();
   const study::SkyAndSuns ss =
@@ -516,7 +516,7 @@ int main(int argc, char** argv) {
     std::printf("  (add %.2f points of sunless occupied hours to the mean DA300 values above)\n", sunless_da_mean);
   radiance_sun_hour(scene, materials, plane, sensors, sky_c, basis, sun_mf, sun_tracing, sun_estimating);
   const study::AnnualSky spread =
-      study::annual_sky_from_epw(epw, site, basis, study::radiance_compatible_sky_options(sim.ground_reflectance));
+      study::annual_sky_from_weather(epw, site, basis, study::radiance_compatible_sky_options(sim.ground_reflectance));
   window_sun_energy(description, materials, basis, spread, ss);
   // The sun's part of the annual illuminance per sensor row, direct and indirect, in both
   // modes: spread = sky coefficients (direct part / photon part) x (spread - sky-only

@@ -14,7 +14,7 @@ using Clock = std::chrono::steady_clock;
 
 int main(int argc, char** argv) {
   const std::string epw_path = argc > 1 ? argv[1] : "projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw";
-  const weather::EpwFile epw = weather::read_epw(epw_path);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(epw_path);
   const sky::SolarSite site = sky::solar_site_of(epw);
   std::printf("sky matrix benchmark: %s, %zu records\n", epw_path.c_str(), epw.records.size());
   std::printf("%-6s %-22s %10s %12s %14s\n", "basis", "mode", "build_s", "float_out_s", "patch-hours/s");

@@ -421,7 +421,7 @@ class Loader {
       r.finish();
       if (!ok) return;
     } else {
-      m_reporter.error(node.location, "expected an EPW path or {file: path} for 'weather', got " +
+      m_reporter.error(node.location, "expected a weather file path (EPW or .wea) or {file: path} for 'weather', got " +
                                           node.describe());
       return;
     }

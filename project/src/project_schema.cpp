@@ -84,7 +84,7 @@ std::vector<SectionSchema> build_schema() {
       P("version", T::Integer, "project-file format version").range(1, 1).def("1"),
       P("site", T::Section, "where the building is").section("site").required(),
       P("study", T::Choice, "what run computes: annual (daylight factors, annual illuminance and metrics from the weather file's skies and sun) or daylight_factor (the CIE overcast sky only: no weather file, no sun traced); default annual, or daylight_factor for a file without weather that sets annual_illuminance and metrics to false").choices({"annual", "daylight_factor"}).def("annual"),
-      P("weather", T::Special, "EPW file: a path, or a map {file: path}; needed by the annual study"),
+      P("weather", T::Special, "hourly weather file, EPW or RADIANCE/DAYSIM .wea (by its extension): a path, or a map {file: path}; needed by the annual study"),
       P("materials", T::NameMap, "material name -> material definition (map by `type`)").required(),
       P("geometry", T::Section, "rooms, polygons, boxes and meshes").section("geometry").required(),
       P("sensors", T::Section, "sensor grids and point sets").section("sensors"),
@@ -111,7 +111,7 @@ std::vector<SectionSchema> build_schema() {
       P("hemisphere", T::Choice, "hemisphere of the zone").choices({"north", "south"}).required(),
   }});
   s.push_back({"weather", "weather file (map form of `weather`)", {
-      P("file", T::Path, "EPW file, relative to the project file; must exist").required(),
+      P("file", T::Path, "EPW file, or .wea file (its header gives the site), relative to the project file; must exist").required(),
   }});
   s.push_back({"lambertian material", "ideal diffuse reflector (RADIANCE plastic, no specular lobe)", {
       material_type(), reflectance("diffuse reflectance, grey or [r, g, b]"),

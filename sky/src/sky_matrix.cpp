@@ -76,16 +76,16 @@ void set_rgb(RadianceMatrix& m, std::size_t row, std::size_t column, const Vec3&
 
 /// The records' hours are local standard time of the file's time zone: a site on another
 /// clock would pair each record with the sun of another instant (sky_matrix.h).
-void require_file_clock(const weather::EpwFile& epw, const SolarSite& site) {
-  if (site.time_zone_h != epw.header.location.time_zone_h)
+void require_file_clock(const weather::HourlyWeather& weather, const SolarSite& site) {
+  if (site.time_zone_h != weather.site.time_zone_h)
     throw std::invalid_argument("sky matrix: the site's time zone (" + format_number(site.time_zone_h) +
-                                " h) is not the clock of " + epw.source_name + "'s records (" +
-                                format_number(epw.header.location.time_zone_h) + " h)");
+                                " h) is not the clock of " + weather.source_name + "'s records (" +
+                                format_number(weather.site.time_zone_h) + " h)");
 }
 
-SolarPositionOptions solar_options_for(const weather::EpwFile& epw, const SkyMatrixOptions& options) {
+SolarPositionOptions solar_options_for(const weather::HourlyWeather& weather, const SkyMatrixOptions& options) {
   SolarPositionOptions solar = options.solar;
-  solar.radiance_series_has_leap_day = epw.leap_day_present;
+  solar.radiance_series_has_leap_day = weather.leap_day_present;
   return solar;
 }
 
@@ -102,7 +102,7 @@ bool direct_below_horizon(double direct_normal_W_m2, const SolarPosition& sun) {
 
 /// BelowHorizonDirect from each record's direct normal irradiance if it is below the horizon
 /// (else 0) and the file's records.
-BelowHorizonDirect tally_below_horizon(const std::vector<double>& below_W_m2, const weather::EpwFile& epw) {
+BelowHorizonDirect tally_below_horizon(const std::vector<double>& below_W_m2, const weather::HourlyWeather& weather) {
   BelowHorizonDirect b;
   for (const double dni : below_W_m2) {
     if (!(dni > 0)) continue;
@@ -111,7 +111,7 @@ BelowHorizonDirect tally_below_horizon(const std::vector<double>& below_W_m2, co
     b.direct_normal_Wh_m2 += dni;              // hourly records: W/m^2 x 1 h
     b.largest_W_m2 = std::max(b.largest_W_m2, dni);
   }
-  for (const weather::WeatherRecord& r : epw.records)
+  for (const weather::WeatherRecord& r : weather.records)
     if (r.direct_normal_w_m2 && *r.direct_normal_w_m2 > 0) b.file_direct_normal_Wh_m2 += *r.direct_normal_w_m2;
   return b;
 }
@@ -128,46 +128,45 @@ SkyMatrixOptions SkyMatrixOptions::gendaymtx_compatible() {
   return o;
 }
 
-SolarSite solar_site_of(const weather::EpwFile& epw) {
+SolarSite solar_site_of(const weather::HourlyWeather& weather) {
   SolarSite site;
-  site.latitude_deg = epw.header.location.latitude_deg;
-  site.longitude_deg = epw.header.location.longitude_east_deg;
-  site.time_zone_h = epw.header.location.time_zone_h;
-  site.elevation_m = epw.header.location.elevation_m;
+  site.latitude_deg = weather.site.latitude_deg;
+  site.longitude_deg = weather.site.longitude_east_deg;
+  site.time_zone_h = weather.site.time_zone_h;
+  site.elevation_m = weather.site.elevation_m;
   return site;
 }
 
-BelowHorizonDirect below_horizon_direct(const weather::EpwFile& epw, const SolarSite& site,
+BelowHorizonDirect below_horizon_direct(const weather::HourlyWeather& weather, const SolarSite& site,
                                         const SkyMatrixOptions& options) {
-  require_file_clock(epw, site);
-  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
-  const std::vector<weather::TimeStep> steps = clock.steps(epw.records);
-  const SolarPositionOptions solar = solar_options_for(epw, options);
+  require_file_clock(weather, site);
+  const weather::SiteClock clock = weather::SiteClock::for_weather(weather);
+  const std::vector<weather::TimeStep> steps = clock.steps(weather.records);
+  const SolarPositionOptions solar = solar_options_for(weather, options);
   std::vector<double> below(steps.size(), 0.0);
   for (std::size_t t = 0; t < steps.size(); ++t) {
-    const double dni = epw.records[t].direct_normal_w_m2.value_or(0.0);
+    const double dni = weather.records[t].direct_normal_w_m2.value_or(0.0);
     if (dni > 0 && direct_below_horizon(dni, record_sun(site, clock, steps[t], solar))) below[t] = dni;
   }
-  return tally_below_horizon(below, epw);
+  return tally_below_horizon(below, weather);
 }
 
-SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, const PatchBasis& basis,
+SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSite& site, const PatchBasis& basis,
                            const SkyMatrixOptions& options) {
-  require_file_clock(epw, site);
-  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
-  const std::vector<weather::TimeStep> steps = clock.steps(epw.records);
+  require_file_clock(weather, site);
+  const weather::SiteClock clock = weather::SiteClock::for_weather(weather);
+  const std::vector<weather::TimeStep> steps = clock.steps(weather.records);
   const std::size_t n_steps = steps.size();
   const int n_bins = basis.bin_count();
 
   // Missing irradiance makes a daytime sky impossible: report every such record, located.
   Diagnostics diagnostics;
-  for (const weather::WeatherRecord& r : epw.records) {
-    if (!r.direct_normal_w_m2)
-      diagnostics.error(weather::epw_field_location(epw, r, weather::epw_field::DirectNormalRadiation),
-                        "field 15 (direct normal radiation) is missing; the sky needs it");
-    if (!r.diffuse_horizontal_w_m2)
-      diagnostics.error(weather::epw_field_location(epw, r, weather::epw_field::DiffuseHorizontalRadiation),
-                        "field 16 (diffuse horizontal radiation) is missing; the sky needs it");
+  for (const weather::WeatherRecord& r : weather.records) {
+    for (const weather::WeatherValue v :
+         {weather::WeatherValue::DirectNormalIrradiance, weather::WeatherValue::DiffuseHorizontalIrradiance})
+      if (!(v == weather::WeatherValue::DirectNormalIrradiance ? r.direct_normal_w_m2 : r.diffuse_horizontal_w_m2))
+        diagnostics.error(weather::weather_value_location(weather, r, v),
+                          weather::weather_value_name(weather, v) + " is missing; the sky needs it");
   }
   diagnostics.throw_if_errors();
 
@@ -175,7 +174,7 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
   // spacing (not the count) per patch, at least 2 x 2.
   const int samples_per_axis =
       std::max(2, (options.mean_samples_per_axis + basis.multiplication_factor() - 1) / basis.multiplication_factor());
-  const SolarPositionOptions solar = solar_options_for(epw, options);
+  const SolarPositionOptions solar = solar_options_for(weather, options);
 
   SkyMatrix result;
   result.matrix = RadianceMatrix(static_cast<std::size_t>(n_bins), n_steps, 3);
@@ -192,7 +191,7 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
   }
 
   tbb::parallel_for(std::size_t(0), n_steps, [&](std::size_t t) {
-    const weather::WeatherRecord& record = epw.records[t];
+    const weather::WeatherRecord& record = weather.records[t];
     const weather::TimeStep& step = steps[t];
     const double dni = *record.direct_normal_w_m2;
     const double dhi = *record.diffuse_horizontal_w_m2;
@@ -205,7 +204,7 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
     inputs.diffuse_horizontal_irradiance_W_m2 = dhi;
     inputs.sun_direction = sun.direction;
     inputs.day_of_year = options.radiance_day_of_year
-                             ? radiance_day_of_year(step.month, step.day, epw.leap_day_present)
+                             ? radiance_day_of_year(step.month, step.day, weather.leap_day_present)
                              : step.day_of_year;
     if (options.dew_point_from_weather && record.dew_point_c) inputs.dew_point_C = *record.dew_point_c;
 
@@ -273,7 +272,7 @@ SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, c
 
   for (const auto& s : suns)
     if (s) result.suns.push_back(*s);
-  result.below_horizon_direct = tally_below_horizon(below_horizon_W_m2, epw);
+  result.below_horizon_direct = tally_below_horizon(below_horizon_W_m2, weather);
   return result;
 }
 

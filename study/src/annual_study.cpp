@@ -38,27 +38,30 @@ std::string describe_options(const sky::SkyMatrixOptions& o, const sky::PatchBas
 
 }  // namespace
 
-std::vector<metrics::TimeStamp> time_stamps(const weather::EpwFile& epw) {
-  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
+std::vector<metrics::TimeStamp> time_stamps(const weather::HourlyWeather& weather) {
+  const weather::SiteClock clock = weather::SiteClock::for_weather(weather);
   std::vector<metrics::TimeStamp> stamps;
-  stamps.reserve(epw.records.size());
-  for (const weather::TimeStep& step : clock.steps(epw.records))
+  stamps.reserve(weather.records.size());
+  for (const weather::TimeStep& step : clock.steps(weather.records))
     stamps.push_back(metrics::TimeStamp{step.month, step.day, step.hour_lst});
   return stamps;
 }
 
-metrics::WeatherCalendar weather_calendar(const weather::EpwFile& epw) {
+metrics::WeatherCalendar weather_calendar(const weather::HourlyWeather& weather) {
   metrics::WeatherCalendar calendar;
-  calendar.time_zone_h = epw.header.location.time_zone_h;
-  const weather::EpwDataPeriod& period = epw.header.data_period;
-  const std::string date = std::to_string(period.start_month) + "/" + std::to_string(period.start_day);
-  if (const auto start = metrics::parse_weekday(period.start_weekday)) {
+  calendar.time_zone_h = weather.site.time_zone_h;
+  if (weather.format == weather::WeatherFormat::Wea) {
+    calendar.january_1_source = weather.source_name + " (a .wea file names no weekday)";
+    return calendar;
+  }
+  const std::string date = std::to_string(weather.start_month) + "/" + std::to_string(weather.start_day);
+  if (const auto start = metrics::parse_weekday(weather.start_weekday)) {
     calendar.january_1 =
-        metrics::january_1_from(*start, period.start_month, period.start_day, epw.leap_day_present);
-    calendar.january_1_source = "the DATA PERIODS of " + epw.source_name + ": " + metrics::weekday_name(*start) + " " + date;
+        metrics::january_1_from(*start, weather.start_month, weather.start_day, weather.leap_day_present);
+    calendar.january_1_source = "the DATA PERIODS of " + weather.source_name + ": " + metrics::weekday_name(*start) + " " + date;
   } else {
-    calendar.january_1_source = "the DATA PERIODS of " + epw.source_name + " start " + date + " on '" +
-                                period.start_weekday + "', not a weekday";
+    calendar.january_1_source = "the DATA PERIODS of " + weather.source_name + " start " + date + " on '" +
+                                weather.start_weekday + "', not a weekday";
   }
   return calendar;
 }
@@ -76,21 +79,23 @@ metrics::OccupancySchedule occupancy_schedule(const AnnualStudySettings& setting
   return schedule;
 }
 
-std::vector<double> daylight_hours_quantity(const weather::EpwFile& epw, std::string& source) {
+std::vector<double> daylight_hours_quantity(const weather::HourlyWeather& weather, std::string& source) {
   std::vector<double> lux, w_m2;
-  for (const weather::WeatherRecord& r : epw.records) {
+  for (const weather::WeatherRecord& r : weather.records) {
     if (r.diffuse_horizontal_lux) lux.push_back(*r.diffuse_horizontal_lux);
     if (r.diffuse_horizontal_w_m2) w_m2.push_back(*r.diffuse_horizontal_w_m2);
   }
-  if (!epw.records.empty() && lux.size() == epw.records.size()) {
-    source = "diffuse horizontal illuminance of " + epw.source_name;
+  if (!weather.records.empty() && lux.size() == weather.records.size()) {
+    source = "diffuse horizontal illuminance of " + weather.source_name;
     return lux;
   }
-  if (!epw.records.empty() && w_m2.size() == epw.records.size()) {
-    source = "diffuse horizontal irradiance of " + epw.source_name + " (its illuminance field has missing values)";
+  if (!weather.records.empty() && w_m2.size() == weather.records.size()) {
+    source = "diffuse horizontal irradiance of " + weather.source_name +
+             (weather.format == weather::WeatherFormat::Wea ? " (a .wea file has no illuminance)"
+                                                             : " (its illuminance field has missing values)");
     return w_m2;
   }
-  source = "none: " + epw.source_name + " lacks diffuse horizontal values";
+  source = "none: " + weather.source_name + " lacks diffuse horizontal values";
   return {};
 }
 
@@ -101,18 +106,18 @@ sky::SkyMatrixOptions radiance_compatible_sky_options(double ground_reflectance)
   return o;
 }
 
-std::string annual_sky_description(const weather::EpwFile& epw, const sky::PatchBasis& basis,
+std::string annual_sky_description(const weather::HourlyWeather& weather, const sky::PatchBasis& basis,
                                    const sky::SkyMatrixOptions& options) {
-  return describe_options(options, basis) + ", from " + epw.source_name;
+  return describe_options(options, basis) + ", from " + weather.source_name;
 }
 
-AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::SolarSite& site,
+AnnualSky annual_sky_from_weather(const weather::HourlyWeather& weather, const sky::SolarSite& site,
                               const sky::PatchBasis& basis, const sky::SkyMatrixOptions& options) {
   AnnualSky result;
-  result.matrix = sky::build_sky_matrix(epw, site, basis, options).matrix;
-  result.steps = time_stamps(epw);
-  result.daylight_hours_quantity = daylight_hours_quantity(epw, result.daylight_hours_source);
-  result.description = annual_sky_description(epw, basis, options);
+  result.matrix = sky::build_sky_matrix(weather, site, basis, options).matrix;
+  result.steps = time_stamps(weather);
+  result.daylight_hours_quantity = daylight_hours_quantity(weather, result.daylight_hours_source);
+  result.description = annual_sky_description(weather, basis, options);
   return result;
 }
 
@@ -125,19 +130,19 @@ RadianceMatrix read_matrix_file(const std::string& path, const MatrixReadOptions
   return RadianceMatrix::read(in, path, options);
 }
 
-AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weather::EpwFile& epw,
+AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weather::HourlyWeather& weather,
                                       const MatrixReadOptions& options, std::uint64_t max_decompressed_bytes) {
   AnnualSky result;
   result.matrix = read_matrix_file(matrix_path, options, max_decompressed_bytes);
-  result.steps = time_stamps(epw);
+  result.steps = time_stamps(weather);
   if (result.matrix.columns() != result.steps.size())
     throw InputError(SourceLocation{matrix_path, 0, 0},
                      "the sky matrix has " + std::to_string(result.matrix.columns()) +
-                         " columns (time steps) but the weather file " + epw.source_name + " has " +
+                         " columns (time steps) but the weather file " + weather.source_name + " has " +
                          std::to_string(result.steps.size()) + " records");
-  result.daylight_hours_quantity = daylight_hours_quantity(epw, result.daylight_hours_source);
+  result.daylight_hours_quantity = daylight_hours_quantity(weather, result.daylight_hours_source);
   result.description = "RADIANCE matrix " + matrix_path + " (" + std::to_string(result.matrix.rows()) +
-                       " bins), time steps of " + epw.source_name;
+                       " bins), time steps of " + weather.source_name;
   return result;
 }
 

@@ -118,20 +118,20 @@ sky::SkyMatrixOptions sun_excluded_sky_options(double ground_reflectance) {
   return o;
 }
 
-std::string sky_and_suns_description(const weather::EpwFile& epw, const sky::PatchBasis& basis) {
+std::string sky_and_suns_description(const weather::HourlyWeather& weather, const sky::PatchBasis& basis) {
   return "Perez sky matrix without the sun (gendaymtx -s conventions, MF " + std::to_string(basis.multiplication_factor()) +
-         ") from " + epw.source_name + "; sun from sun bins (indirect) and exact hourly shadow rays (direct)";
+         ") from " + weather.source_name + "; sun from sun bins (indirect) and exact hourly shadow rays (direct)";
 }
 
-SkyAndSuns annual_sky_and_suns(const weather::EpwFile& epw, const sky::SolarSite& site,
+SkyAndSuns annual_sky_and_suns(const weather::HourlyWeather& weather, const sky::SolarSite& site,
                                const sky::PatchBasis& basis, sky::SkyMatrixOptions options) {
   options.sun = sky::SunInMatrix::None;
-  sky::SkyMatrix built = sky::build_sky_matrix(epw, site, basis, options);
+  sky::SkyMatrix built = sky::build_sky_matrix(weather, site, basis, options);
   SkyAndSuns result;
   result.sky.matrix = std::move(built.matrix);
-  result.sky.steps = time_stamps(epw);
-  result.sky.daylight_hours_quantity = daylight_hours_quantity(epw, result.sky.daylight_hours_source);
-  result.sky.description = sky_and_suns_description(epw, basis);
+  result.sky.steps = time_stamps(weather);
+  result.sky.daylight_hours_quantity = daylight_hours_quantity(weather, result.sky.daylight_hours_source);
+  result.sky.description = sky_and_suns_description(weather, basis);
   result.suns = suns_from_matrix(suns_to_matrix(built.suns));  // the cache's float rounding
   return result;
 }

@@ -44,7 +44,7 @@ metrics::OccupancyPlan occupancy_plan(const project::OccupancySpec& o, const pro
   return plan;
 }
 
-AnnualStudySettings annual_settings_of(const project::Project& project, const weather::EpwFile* epw,
+AnnualStudySettings annual_settings_of(const project::Project& project, const weather::HourlyWeather* weather,
                                        const std::string& sensor_set) {
   AnnualStudySettings settings;
   settings.metrics = metric_settings(project.metrics);
@@ -54,15 +54,15 @@ AnnualStudySettings annual_settings_of(const project::Project& project, const we
   for (const project::PointsSpec& p : project.sensors.points)
     if (p.name == sensor_set && p.occupancy.given) spec = &p.occupancy;
   settings.occupancy = occupancy_plan(*spec, project.metrics);
-  if (epw) settings.calendar = weather_calendar(*epw);
+  if (weather) settings.calendar = weather_calendar(*weather);
   return settings;
 }
 
-std::vector<std::string> occupancy_summary(const project::Project& project, const weather::EpwFile& epw) {
+std::vector<std::string> occupancy_summary(const project::Project& project, const weather::HourlyWeather& weather) {
   std::vector<std::string> lines;
-  const std::vector<metrics::TimeStamp> steps = time_stamps(epw);
+  const std::vector<metrics::TimeStamp> steps = time_stamps(weather);
   auto add = [&](const std::string& label, const std::string& set) {
-    const AnnualStudySettings settings = annual_settings_of(project, &epw, set);
+    const AnnualStudySettings settings = annual_settings_of(project, &weather, set);
     const metrics::OccupancySchedule schedule = occupancy_schedule(settings, steps);
     lines.push_back(label + ": " + settings.occupancy.description() + "; " + std::to_string(schedule.occupied_count()) +
                     " occupied hours of " + std::to_string(steps.size()));

@@ -14,7 +14,7 @@
 #include "dayphoton/sky/solar_position.h"
 #include "dayphoton/study/result_images.h"
 #include "dayphoton/study/sun_site.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 #include "dayphoton/weather/site_clock.h"
 
 namespace dayphoton::study {
@@ -82,9 +82,9 @@ RenderSkyResult make_render_sky(const RenderSkySettings& settings, const project
     const YearHour when = parse_year_hour(spec.substr(5));
     if (project.weather.path.empty())
       throw std::invalid_argument("--sky hour:M/D/H needs a weather file in the project");
-    const weather::EpwFile epw = weather::read_epw(project.weather.path);
-    const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
-    const std::vector<weather::TimeStep> steps = clock.steps(epw.records);
+    const weather::HourlyWeather weather = weather::read_hourly_weather(project.weather.path);
+    const weather::SiteClock clock = weather::SiteClock::for_weather(weather);
+    const std::vector<weather::TimeStep> steps = clock.steps(weather.records);
     const int epw_hour = static_cast<int>(std::ceil(when.hour - 1e-9));
     std::size_t index = steps.size();
     for (std::size_t t = 0; t < steps.size(); ++t)
@@ -92,13 +92,13 @@ RenderSkyResult make_render_sky(const RenderSkySettings& settings, const project
     if (index == steps.size())
       throw InputError(SourceLocation{project.weather.path, 0, 0},
                        "no record for " + when.text() + " (month/day/hour) in the weather file");
-    const weather::WeatherRecord& record = epw.records[index];
+    const weather::WeatherRecord& record = weather.records[index];
     const weather::TimeStep& step = steps[index];
     if (!record.direct_normal_w_m2 || !record.diffuse_horizontal_w_m2)
-      throw InputError(weather::epw_field_location(epw, record, weather::epw_field::DirectNormalRadiation),
+      throw InputError(weather::weather_value_location(weather, record, weather::WeatherValue::DirectNormalIrradiance),
                        "the record of " + when.text() + " lacks its direct normal or diffuse horizontal irradiance");
     // The sun of the project's site (or the header's with from_weather), as in the run.
-    const SunSite site = resolve_sun_site(project.site, epw);
+    const SunSite site = resolve_sun_site(project.site, weather);
     const sky::SolarPosition sun =
         sky::solar_position(site.solar, sky::SolarTime{clock.year(), step.month, step.day, step.hour_lst}, {});
     sky::PerezInputs inputs;

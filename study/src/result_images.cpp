@@ -19,7 +19,7 @@
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/result_tables.h"
 #include "dayphoton/study/sun_site.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::study {
 
@@ -421,9 +421,9 @@ std::vector<std::string> write_sky_images(const std::string& results_dir, const 
   const sky::PatchBasis basis = sim.value("basis", std::string("tregenza")) == "reinhart"
                                     ? sky::PatchBasis::reinhart(sim.value("reinhart_mf", 1))
                                     : sky::PatchBasis::tregenza();
-  const weather::EpwFile epw = weather::read_epw(weather);
-  const SunSite site = recorded_or_header_sun_site(summary_text, summary_path, epw);
-  const AnnualSky sky = annual_sky_from_epw(epw, site.solar, basis, radiance_compatible_sky_options(rho));
+  const weather::HourlyWeather series = weather::read_hourly_weather(weather);
+  const SunSite site = recorded_or_header_sun_site(summary_text, summary_path, series);
+  const AnnualSky sky = annual_sky_from_weather(series, site.solar, basis, radiance_compatible_sky_options(rho));
 
   // The record whose interval (h - 1, h] holds the hour: mid-hour stamp ceil(H) - 0.5.
   const double stamp = std::ceil(hour.hour - 1e-9) - 0.5;

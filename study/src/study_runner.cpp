@@ -42,7 +42,7 @@
 #include "dayphoton/study/report_html.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/sun_site.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 #include "dayphoton/weather/site_clock.h"
 #include "dayphoton/metrics/annual_metrics.h"
 #include "json_text.h"
@@ -222,7 +222,7 @@ struct RunContext {
   OutputManifest& outputs;  ///< every output file written, for summary.json `files`
   std::optional<AnnualSky> sky;  ///< built or loaded once, on first use (sun spread)
   std::optional<SkyAndSuns> sky_and_suns;  ///< the same for the sun-bins mode
-  const weather::EpwFile* epw = nullptr;   ///< the project's weather file, if it has one
+  const weather::HourlyWeather* weather = nullptr;   ///< the project's weather file, if it has one
   const SunSite* sun_site = nullptr;       ///< the site its sun is computed for (sun_site.h)
 };
 
@@ -265,7 +265,7 @@ AnnualOutputs annual_outputs_of(const project::Project& project) {
 const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBasis& basis,
                             RunContext& ctx) {
   if (ctx.sky) return *ctx.sky;
-  const weather::EpwFile& epw = *ctx.epw;
+  const weather::HourlyWeather& weather = *ctx.weather;
   const sky::SolarSite& site = ctx.sun_site->solar;
   const double rho_g = project.simulation.ground_reflectance;
   const std::string key = sky_matrix_key(project.weather.path, site, basis, rho_g, false);
@@ -282,17 +282,17 @@ const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBas
     }
   }
   if (cached) {
-    sky.steps = time_stamps(epw);
-    sky.daylight_hours_quantity = daylight_hours_quantity(epw, sky.daylight_hours_source);
-    sky.description = annual_sky_description(epw, basis, radiance_compatible_sky_options(rho_g));
+    sky.steps = time_stamps(weather);
+    sky.daylight_hours_quantity = daylight_hours_quantity(weather, sky.daylight_hours_source);
+    sky.description = annual_sky_description(weather, basis, radiance_compatible_sky_options(rho_g));
     ctx.report.sky_matrix_cached = true;
     ctx.progress.cached("sky matrix");
     ctx.log.line("sky matrix: cached");
   } else {
-    ctx.progress.start("sky matrix", epw.records.size(), "hours");
-    sky = annual_sky_from_epw(epw, site, basis, radiance_compatible_sky_options(rho_g));
+    ctx.progress.start("sky matrix", weather.records.size(), "hours");
+    sky = annual_sky_from_weather(weather, site, basis, radiance_compatible_sky_options(rho_g));
     ctx.store.write("sky", key, encode_matrix(sky.matrix));
-    ctx.progress.advance(epw.records.size());
+    ctx.progress.advance(weather.records.size());
     ctx.progress.end();
     ctx.log.line("sky matrix: built from " + project.weather.path);
   }
@@ -305,7 +305,7 @@ const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBas
 const SkyAndSuns& sky_and_suns(const project::Project& project, const sky::PatchBasis& basis,
                                RunContext& ctx) {
   if (ctx.sky_and_suns) return *ctx.sky_and_suns;
-  const weather::EpwFile& epw = *ctx.epw;
+  const weather::HourlyWeather& weather = *ctx.weather;
   const sky::SolarSite& site = ctx.sun_site->solar;
   const double rho_g = project.simulation.ground_reflectance;
   const std::string key = sky_matrix_key(project.weather.path, site, basis, rho_g, true);
@@ -325,22 +325,22 @@ const SkyAndSuns& sky_and_suns(const project::Project& project, const sky::Patch
     }
   }
   if (cached) {
-    result.sky.steps = time_stamps(epw);
-    result.sky.daylight_hours_quantity = daylight_hours_quantity(epw, result.sky.daylight_hours_source);
-    result.sky.description = sky_and_suns_description(epw, basis);
+    result.sky.steps = time_stamps(weather);
+    result.sky.daylight_hours_quantity = daylight_hours_quantity(weather, result.sky.daylight_hours_source);
+    result.sky.description = sky_and_suns_description(weather, basis);
     ctx.report.sky_matrix_cached = true;
     ctx.progress.cached("sky matrix");
     ctx.log.line("sky matrix: cached");
   } else {
-    ctx.progress.start("sky matrix", epw.records.size(), "hours");
-    result = annual_sky_and_suns(epw, site, basis, sun_excluded_sky_options(rho_g));
+    ctx.progress.start("sky matrix", weather.records.size(), "hours");
+    result = annual_sky_and_suns(weather, site, basis, sun_excluded_sky_options(rho_g));
     const RadianceMatrix suns = suns_to_matrix(result.suns);
     // Use the suns as the cache stores them (single precision), so that a later run from the
     // cache gives byte-identical results.
     result.suns = suns_from_matrix(suns);
     ctx.store.write("sky", key, encode_matrix(result.sky.matrix));
     ctx.store.write("suns", key, encode_matrix(suns));
-    ctx.progress.advance(epw.records.size());
+    ctx.progress.advance(weather.records.size());
     ctx.progress.end();
     ctx.log.line("sky matrix: built from " + project.weather.path + " (sun excluded; " +
                  std::to_string(result.suns.size()) + " sun hours)");
@@ -806,7 +806,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
       const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps);
       const metrics::IlluminanceTable indirect = indirect_sun_table(sun[g].bin_coefficients, bins, ss.suns, ss.sky.steps);
-      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.epw, grid.name);
+      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
       const AnnualStudy study =
           compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, direct, indirect, annual_settings);
       log_occupancy(grid.name, study, annual_settings);
@@ -821,7 +821,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
-      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.epw, grid.name);
+      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
       const AnnualStudy study = compute_annual_study(coefficient_matrices[g], sky, annual_settings);
       log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
@@ -853,7 +853,7 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
   for (std::size_t g = 0; g < open.grids.size(); ++g) {
     const CaseTables::Grid& o = open.grids[g];
     const CaseTables::Grid& c = shaded.grids.at(g);  // the same grids: variants share the sensors
-    const AnnualStudySettings settings = annual_settings_of(project, ctx.epw, o.name);
+    const AnnualStudySettings settings = annual_settings_of(project, ctx.weather, o.name);
     const std::string folder = join(dir, o.name);
     ctx.progress.start("operated " + o.name, o.illuminance.step_count(), "hours");
     const OperatedStudy operated = compute_operated_study(
@@ -893,14 +893,14 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   const project::Simulation& sim = project.simulation;
   // The weather file and the site of its sun first: a time zone that is not the file's is an
   // input error, reported before anything is written.
-  std::optional<weather::EpwFile> epw;
+  std::optional<weather::HourlyWeather> weather;
   std::optional<SunSite> sun_site;
   std::optional<sky::BelowHorizonDirect> below_horizon;
   const bool annual_study = project.study == project::StudyKind::Annual;
   if (annual_study) {
-    epw = weather::read_epw(project.weather.path);
-    sun_site = resolve_sun_site(project.site, *epw);
-    below_horizon = annual_below_horizon_direct(*epw, *sun_site);
+    weather = weather::read_hourly_weather(project.weather.path);
+    sun_site = resolve_sun_site(project.site, *weather);
+    below_horizon = annual_below_horizon_direct(*weather, *sun_site);
   }
   // The points in time whose sun needs no tracing are checked before anything is written.
   check_points_in_time(
@@ -926,6 +926,9 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   log.quiet_line("cache: " + cache_dir);
   if (adopted)
     log.line("moved the cache of an earlier version from " + legacy_cache_folder(report.output_dir) + " to " + cache_dir);
+  // What the weather reader accepted with a warning (ignored fields, filled gaps, variants).
+  if (weather)
+    for (const Diagnostic& w : weather->warnings) log.line("weather: " + w.format().substr(0, w.format().find('\n')));
   if (lock.taken_over())
     log.line("took over the lock of a run that no longer exists: " + lock.taken_over()->describe());
   if (temporaries > 0)
@@ -967,7 +970,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   };
 
   RunContext ctx{settings, progress, log, report, store, outputs, std::nullopt, std::nullopt,
-                 epw ? &*epw : nullptr, sun_site ? &*sun_site : nullptr};
+                 weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
   // The project as written is the base case, in <output>/<grid>/; each variant is studied
   // in addition, in <output>/variants/<variant>/<grid>/ (a folder no grid name can clash with).
   nlohmann::json grids = run_case(project, "", report.output_dir, ctx, keep(project::BaseCaseName));

@@ -27,41 +27,41 @@ std::string latitude_text(double deg) { return fixed(std::abs(deg), 4) + (deg >=
 std::string longitude_text(double deg) { return fixed(std::abs(deg), 4) + (deg >= 0 ? " E" : " W"); }
 std::string utc_offset_text(double hours) { return std::string("UTC") + (hours >= 0 ? "+" : "") + format_number(hours); }
 
-std::string station_of(const weather::EpwFile& epw) {
-  const weather::EpwLocation& loc = epw.header.location;
+std::string station_of(const weather::HourlyWeather& weather) {
+  const weather::WeatherSite& loc = weather.site;
   std::string name = loc.city;
   for (const std::string& part : {loc.state, loc.country})
     if (!part.empty() && part != "-") name += (name.empty() ? "" : ", ") + part;
-  if (name.empty()) name = epw.source_name;
+  if (name.empty()) name = weather.source_name;
   return name + (loc.wmo.empty() ? std::string() : " (WMO " + loc.wmo + ")");
 }
 
 /// Distances in the messages: one decimal below 10 km, whole kilometres above.
 std::string distance_text(double km) { return km < 10.0 ? fixed(km, 1) : fixed(km, 0); }
 
-void set_distance(SunSite& s, const weather::EpwFile& epw) {
-  const weather::EpwLocation& loc = epw.header.location;
-  s.station = station_of(epw);
+void set_distance(SunSite& s, const weather::HourlyWeather& weather) {
+  const weather::WeatherSite& loc = weather.site;
+  s.station = station_of(weather);
   s.station_distance_km =
       great_circle_distance_km(s.solar.latitude_deg, s.solar.longitude_deg, loc.latitude_deg, loc.longitude_east_deg);
 }
 
 /// The sun site at a given place and clock (not the header's), with the station's distance.
 SunSite sun_site_at(double latitude_deg, double longitude_deg, double time_zone_h, double elevation_m,
-                    const weather::EpwFile& epw) {
+                    const weather::HourlyWeather& weather) {
   SunSite s;
   s.solar.latitude_deg = latitude_deg;
   s.solar.longitude_deg = longitude_deg;
   s.solar.time_zone_h = time_zone_h;
   s.solar.elevation_m = elevation_m;
-  set_distance(s, epw);
+  set_distance(s, weather);
   return s;
 }
 
-std::string time_zone_problem(double site_h, const weather::EpwFile& epw) {
-  const double file_h = epw.header.location.time_zone_h;
+std::string time_zone_problem(double site_h, const weather::HourlyWeather& weather) {
+  const double file_h = weather.site.time_zone_h;
   return "the site's time zone (" + utc_offset_text(site_h) + ") is not the weather file's (" + utc_offset_text(file_h) +
-         ", in the header of " + epw.source_name + "): its hours are local standard time of " +
+         ", in the header of " + weather.source_name + "): its hours are local standard time of " +
          utc_offset_text(file_h) + " and each record's sun is computed at that instant; dayphoton does not move a "
          "year of records to another clock. Use a weather file of the site's time zone, or write time_zone: " +
          format_number(file_h) + " to read the hours (and the occupancy) on the station's clock, or "
@@ -79,20 +79,20 @@ double great_circle_distance_km(double latitude1_deg, double longitude1_deg, dou
   return 2.0 * EarthMeanRadius_km * std::asin(std::min(1.0, std::sqrt(a)));
 }
 
-SunSite header_sun_site(const weather::EpwFile& epw) {
+SunSite header_sun_site(const weather::HourlyWeather& weather) {
   SunSite s;
-  s.solar = sky::solar_site_of(epw);
+  s.solar = sky::solar_site_of(weather);
   s.from_weather = true;
-  set_distance(s, epw);
+  set_distance(s, weather);
   return s;
 }
 
-SunSite resolve_sun_site(const project::Site& site, const weather::EpwFile& epw) {
-  if (site.from_weather) return header_sun_site(epw);
-  if (site.time_zone_h != epw.header.location.time_zone_h)
-    throw InputError(site.time_zone_location, time_zone_problem(site.time_zone_h, epw),
+SunSite resolve_sun_site(const project::Site& site, const weather::HourlyWeather& weather) {
+  if (site.from_weather) return header_sun_site(weather);
+  if (site.time_zone_h != weather.site.time_zone_h)
+    throw InputError(site.time_zone_location, time_zone_problem(site.time_zone_h, weather),
                      read_source_line(site.time_zone_location.file, site.time_zone_location.line));
-  return sun_site_at(site.latitude_deg, site.longitude_deg, site.time_zone_h, site.elevation_m, epw);
+  return sun_site_at(site.latitude_deg, site.longitude_deg, site.time_zone_h, site.elevation_m, weather);
 }
 
 std::string sun_site_sentence(const SunSite& s) {
@@ -114,8 +114,8 @@ std::string station_distance_warning(const SunSite& s) {
          "two climates are alike";
 }
 
-sky::BelowHorizonDirect annual_below_horizon_direct(const weather::EpwFile& epw, const SunSite& site) {
-  return sky::below_horizon_direct(epw, site.solar, radiance_compatible_sky_options());
+sky::BelowHorizonDirect annual_below_horizon_direct(const weather::HourlyWeather& weather, const SunSite& site) {
+  return sky::below_horizon_direct(weather, site.solar, radiance_compatible_sky_options());
 }
 
 std::string below_horizon_note(const sky::BelowHorizonDirect& b, bool sun_bins) {
@@ -136,12 +136,12 @@ std::string below_horizon_note(const sky::BelowHorizonDirect& b, bool sun_bins) 
 }
 
 std::optional<SunSite> recorded_sun_site(const std::string& summary_text, const std::string& summary_path,
-                                         const weather::EpwFile& epw) {
+                                         const weather::HourlyWeather& weather) {
   const nlohmann::json j = nlohmann::json::parse(summary_text, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("site") || !j["site"].is_object()) return std::nullopt;
   const nlohmann::json& site = j["site"];
   if (!site.contains("from_weather") || !site["from_weather"].is_boolean()) return std::nullopt;
-  if (site["from_weather"].get<bool>()) return header_sun_site(epw);
+  if (site["from_weather"].get<bool>()) return header_sun_site(weather);
   for (const char* key : {"latitude_deg", "longitude_deg", "time_zone_h", "elevation_m"})
     if (!site.contains(key) || !site[key].is_number())
       throw InputError(SourceLocation{summary_path, 0, 0}, std::string("site.") + key + " is missing or not a number");
@@ -153,18 +153,18 @@ std::optional<SunSite> recorded_sun_site(const std::string& summary_text, const 
   if (!(std::abs(p.latitude_deg) <= 90 && std::abs(p.longitude_deg) <= 180 && std::abs(p.time_zone_h) <= 15 &&
         std::isfinite(p.elevation_m)))
     throw InputError(SourceLocation{summary_path, 0, 0}, "site: a latitude, longitude, time zone or elevation out of range");
-  if (p.time_zone_h != epw.header.location.time_zone_h)
+  if (p.time_zone_h != weather.site.time_zone_h)
     throw InputError(SourceLocation{summary_path, 0, 0},
                      "the run computed the sun on the clock of " + utc_offset_text(p.time_zone_h) + ", but the records of " +
-                         epw.source_name + " are local standard time of " +
-                         utc_offset_text(epw.header.location.time_zone_h) + ": give the run's weather file");
-  return sun_site_at(p.latitude_deg, p.longitude_deg, p.time_zone_h, p.elevation_m, epw);
+                         weather.source_name + " are local standard time of " +
+                         utc_offset_text(weather.site.time_zone_h) + ": give the run's weather file");
+  return sun_site_at(p.latitude_deg, p.longitude_deg, p.time_zone_h, p.elevation_m, weather);
 }
 
 SunSite recorded_or_header_sun_site(const std::string& summary_text, const std::string& summary_path,
-                                    const weather::EpwFile& epw) {
-  if (std::optional<SunSite> s = recorded_sun_site(summary_text, summary_path, epw)) return *s;
-  return header_sun_site(epw);
+                                    const weather::HourlyWeather& weather) {
+  if (std::optional<SunSite> s = recorded_sun_site(summary_text, summary_path, weather)) return *s;
+  return header_sun_site(weather);
 }
 
 }  // namespace dayphoton::study

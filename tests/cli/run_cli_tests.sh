@@ -54,6 +54,12 @@ check_case check_school_occupancy 0 check tests/cli/cases/school/project.yaml
 check_case check_occupancy_short_csv 1 check tests/cli/cases/occupancy_short.yaml
 check_case usage_no_subcommand 2
 check_case sun_bad_epw 1 sun tests/cli/cases/truncated.epw
+check_case check_weather_wea 0 check tests/cli/cases/weather_wea.yaml
+check_case sun_wea 0 sun tests/data/weather/hourly.wea
+check_case sun_wea_missing_hour 1 sun tests/data/weather/missing_hour.wea
+check_case sun_epw_variants_warn 0 sun tests/data/weather/ladybug_style.epw -o "$scratch/variants_sun.csv"
+check_case sun_epw_unused_fields_warn 0 sun tests/data/weather/unused_fields_junk.epw -o "$scratch/junk_sun.csv"
+check_case sky_epw_long_gap 1 sky tests/data/weather/missing_long_gap.epw -o "$scratch/gap.mtx"
 check_case sky_bad_cie_type 2 sky --cie 19
 check_case sky_conflicting_options 2 sky projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw --cie overcast
 check_case sky_overcast_vector 0 sky --cie overcast --illuminance 10000

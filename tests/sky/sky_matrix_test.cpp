@@ -10,10 +10,13 @@
 #include <filesystem>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "../reference_data.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/sky/perez.h"
 #include "dayphoton/weather/site_clock.h"
+#include "dayphoton/weather/wea.h"
 #include "../weather/epw_test_support.h"
 
 using namespace dayphoton;
@@ -74,7 +77,7 @@ class GendaymtxCompatibility : public ::testing::TestWithParam<GendaymtxFile> {}
 TEST_P(GendaymtxCompatibility, MatchesRadianceBinByBinHourByHour) {
   const std::string ref_path = ReferenceDir + "/" + GetParam().file;
   ASSERT_TRUE(std::filesystem::exists(ref_path)) << "reference data not found: " << ref_path;
-  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
   SkyMatrixOptions options = SkyMatrixOptions::gendaymtx_compatible();
   options.sun = GetParam().sun;
   const SkyMatrix ours = build_sky_matrix(epw, solar_site_of(epw), PatchBasis::tregenza(), options);
@@ -109,8 +112,8 @@ TEST(SkyMatrix, EveryHourIsNormalisedToThePerezDiffuseIlluminance) {
   // E_d x eta_diffuse of the hour, recomputed here from an independent sun position and Perez
   // state: the discrete normalisation makes this exact up to float storage (1e-6) -- a wrong
   // record/column pairing, sun, day of year or dew point would show as percent-level errors.
-  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
-  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
+  const weather::SiteClock clock = weather::SiteClock::for_weather(epw);
   const auto steps = clock.steps(epw.records);
   const SolarSite site = solar_site_of(epw);
   SkyMatrixOptions options;
@@ -146,7 +149,7 @@ TEST(SkyMatrix, EveryHourIsNormalisedToThePerezDiffuseIlluminance) {
 
 TEST(SkyMatrix, SpreadSunConservesDirectNormalIlluminance) {
   // gendaymtx's rule: sum over patches of Delta L Omega x 179 = E_n,v for every sun hour.
-  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
   SkyMatrixOptions options;
   options.sun = SunInMatrix::Only;
   const PatchBasis basis = PatchBasis::reinhart(2);
@@ -192,7 +195,7 @@ namespace {
 /// A synthetic year (Oakland header, tests/weather/epw_test_support.h) whose only direct light
 /// is 500 W/m2 at 12:30 every day, 30 W/m2 at 00:30 on 1-10 January and 10 W/m2 at 23:30 on
 /// 1-5 January: 15 records with the sun below the horizon at Oakland, 10 above 20 W/m2.
-weather::EpwFile direct_at_noon_and_midnight() {
+weather::HourlyWeather direct_at_noon_and_midnight() {
   weather::test::SyntheticEpw synthetic;
   for (int m = 1; m <= 12; ++m)
     for (int d = 1; d <= weather::days_in_month(m, false); ++d)
@@ -200,13 +203,13 @@ weather::EpwFile direct_at_noon_and_midnight() {
         synthetic.set_field(weather::test::SyntheticEpw::line_of(m, d, h), 15, h == 13 ? "500" : "0");
   for (int d = 1; d <= 10; ++d) synthetic.set_field(weather::test::SyntheticEpw::line_of(1, d, 1), 15, "30");
   for (int d = 1; d <= 5; ++d) synthetic.set_field(weather::test::SyntheticEpw::line_of(1, d, 24), 15, "10");
-  return synthetic.read();
+  return weather::hourly_weather_from_epw(synthetic.read());
 }
 
 }  // namespace
 
 TEST(SkyMatrix, CountsTheRecordsWithDirectLightAndTheSunBelowTheHorizon) {
-  const weather::EpwFile epw = direct_at_noon_and_midnight();
+  const weather::HourlyWeather epw = direct_at_noon_and_midnight();
   SkyMatrixOptions spa;  // SPA sun positions; patch-centre values only to keep the test quick
   spa.patch_value = PatchValue::Centre;
   for (const SkyMatrixOptions& options : {spa, SkyMatrixOptions::gendaymtx_compatible()}) {
@@ -235,10 +238,41 @@ TEST(SkyMatrix, CountsTheRecordsWithDirectLightAndTheSunBelowTheHorizon) {
   EXPECT_EQ(build_sky_matrix(epw, opposite, PatchBasis::tregenza(), spa).suns.size(), 15u);
 }
 
+TEST(SkyMatrix, AnEpwAndItsWeaFileGiveTheSameMatrix) {
+  // The .wea written from the Oakland EPW (epw2wea's layout) read back as the annual weather:
+  // same site, same records, the same sky matrix through the same code, element for element.
+  const weather::HourlyWeather from_epw = weather::read_hourly_weather(OaklandEpw);
+  const std::string wea_path =
+      (std::filesystem::temp_directory_path() / ("dayphoton_sky_matrix_test_" + std::to_string(::getpid()) + ".wea"))
+          .string();
+  weather::write_wea_file(wea_path, weather::epw_to_wea(weather::read_epw(OaklandEpw)));
+  const weather::HourlyWeather from_wea = weather::read_hourly_weather(wea_path);
+  std::filesystem::remove(wea_path);
+  ASSERT_EQ(from_wea.format, weather::WeatherFormat::Wea);
+  SkyMatrixOptions options = SkyMatrixOptions::gendaymtx_compatible();  // no dew point: .wea has none
+  const SolarSite site = solar_site_of(from_epw);
+  const SolarSite wea_site = solar_site_of(from_wea);
+  EXPECT_EQ(wea_site.latitude_deg, site.latitude_deg);
+  EXPECT_EQ(wea_site.longitude_deg, site.longitude_deg);
+  EXPECT_EQ(wea_site.time_zone_h, site.time_zone_h);
+  EXPECT_EQ(wea_site.elevation_m, site.elevation_m);
+  const PatchBasis basis = PatchBasis::tregenza();
+  const SkyMatrix a = build_sky_matrix(from_epw, site, basis, options);
+  const SkyMatrix b = build_sky_matrix(from_wea, wea_site, basis, options);
+  ASSERT_EQ(a.matrix.rows(), b.matrix.rows());
+  ASSERT_EQ(a.matrix.columns(), b.matrix.columns());
+  std::size_t different = 0;
+  for (std::size_t r = 0; r < a.matrix.rows(); ++r)
+    for (std::size_t c = 0; c < a.matrix.columns(); ++c)
+      for (int k = 0; k < 3; ++k) different += a.matrix.at(r, c, k) != b.matrix.at(r, c, k) ? 1 : 0;
+  EXPECT_EQ(different, 0u);
+  EXPECT_EQ(a.suns.size(), b.suns.size());
+}
+
 TEST(SkyMatrix, RefusesASiteOnAnotherClockThanTheWeatherFile) {
   // The records' hours are the file's local standard time: another zone would pair each
   // record with the sun of another instant.
-  const weather::EpwFile epw = direct_at_noon_and_midnight();
+  const weather::HourlyWeather epw = direct_at_noon_and_midnight();
   SolarSite site = solar_site_of(epw);
   site.time_zone_h = 1;
   EXPECT_THROW(build_sky_matrix(epw, site, PatchBasis::tregenza(), SkyMatrixOptions{}), std::invalid_argument);

@@ -61,7 +61,7 @@ class RadianceReference : public ::testing::Test {
     const std::string dc = RefDir + "/office_dc_classic.mtx.gz";
     const std::string sky = RefDir + "/oakland_sky_m1.mtx.gz";
     if (!fs::exists(dc) || !fs::exists(sky)) return;
-    epw = std::make_unique<weather::EpwFile>(weather::read_epw(EpwPath));
+    epw = std::make_unique<weather::HourlyWeather>(weather::read_hourly_weather(EpwPath));
     coefficients = std::make_unique<RadianceMatrix>(test::read_gzip_matrix(dc));
     radiance_sky = std::make_unique<AnnualSky>();
     radiance_sky->matrix = test::read_gzip_matrix(sky);
@@ -77,12 +77,12 @@ class RadianceReference : public ::testing::Test {
   void SetUp() override {
     ASSERT_TRUE(coefficients) << "reference data not found under " << RefDir;
   }
-  static std::unique_ptr<weather::EpwFile> epw;
+  static std::unique_ptr<weather::HourlyWeather> epw;
   static std::unique_ptr<RadianceMatrix> coefficients;
   static std::unique_ptr<AnnualSky> radiance_sky;
   static std::vector<ReferenceSensor> reference;
 };
-std::unique_ptr<weather::EpwFile> RadianceReference::epw;
+std::unique_ptr<weather::HourlyWeather> RadianceReference::epw;
 std::unique_ptr<RadianceMatrix> RadianceReference::coefficients;
 std::unique_ptr<AnnualSky> RadianceReference::radiance_sky;
 std::vector<ReferenceSensor> RadianceReference::reference;
@@ -90,7 +90,7 @@ std::vector<ReferenceSensor> RadianceReference::reference;
 }  // namespace
 
 TEST(AnnualStudyTime, OaklandStepsAreMidHourStandardTimeWith3650OccupiedHours) {
-  const weather::EpwFile epw = weather::read_epw(EpwPath);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(EpwPath);
   const auto steps = time_stamps(epw);
   ASSERT_EQ(steps.size(), 8760u);
   EXPECT_EQ(steps.front().month, 1);
@@ -103,6 +103,26 @@ TEST(AnnualStudyTime, OaklandStepsAreMidHourStandardTimeWith3650OccupiedHours) {
   std::string source;
   EXPECT_EQ(daylight_hours_quantity(epw, source).size(), 8760u);
   EXPECT_NE(source.find("diffuse horizontal illuminance"), std::string::npos) << source;
+}
+
+TEST(AnnualStudyTime, AWeaFileGivesTheStepsOfItsEpwAndDaylightHoursFromIrradiance) {
+  // The corpus pair clean.epw / hourly.wea holds the same hours and irradiance.
+  const std::string corpus = std::string(DAYPHOTON_TEST_DATA_DIR) + "/weather/";
+  const weather::HourlyWeather epw = weather::read_hourly_weather(corpus + "clean.epw");
+  const weather::HourlyWeather wea = weather::read_hourly_weather(corpus + "hourly.wea");
+  const auto a = time_stamps(epw), b = time_stamps(wea);
+  ASSERT_EQ(a.size(), 48u);
+  ASSERT_EQ(b.size(), a.size());
+  for (std::size_t t = 0; t < a.size(); ++t) {
+    EXPECT_EQ(a[t].month, b[t].month);
+    EXPECT_EQ(a[t].day, b[t].day);
+    EXPECT_EQ(a[t].hour, b[t].hour);
+  }
+  std::string source;
+  const std::vector<double> quantity = daylight_hours_quantity(wea, source);
+  ASSERT_EQ(quantity.size(), 48u);
+  EXPECT_EQ(quantity[11], 62.0);  // Jan 1 hour 12: its diffuse horizontal irradiance, W/m^2
+  EXPECT_NE(source.find("(a .wea file has no illuminance)"), std::string::npos) << source;
 }
 
 TEST_F(RadianceReference, ReproducesRadianceIlluminanceAndMetrics) {
@@ -182,7 +202,7 @@ TEST_F(RadianceReference, ReproducesRadianceIlluminanceAndMetrics) {
 // compatibility test checks the elements above 1 % of their hour's maximum; the bound assumes
 // the 1 % for all.) Measured: worst DA300 difference 0.084 points, UDI 0.09.
 TEST_F(RadianceReference, OwnGendaymtxCompatibleSkyGivesDa300WithinTheSkyToleranceBound) {
-  const AnnualSky own = annual_sky_from_epw(*epw, sky::solar_site_of(*epw), sky::PatchBasis::tregenza(), radiance_compatible_sky_options(0.2));
+  const AnnualSky own = annual_sky_from_weather(*epw, sky::solar_site_of(*epw), sky::PatchBasis::tregenza(), radiance_compatible_sky_options(0.2));
   ASSERT_EQ(own.matrix.rows(), 146u);
   ASSERT_EQ(own.matrix.columns(), 8760u);
   const AnnualStudySettings settings;

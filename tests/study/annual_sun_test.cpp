@@ -240,11 +240,11 @@ TEST(AnnualSunSky, SkyWithoutSunPlusSunsIsTheSpreadSkyOfOakland) {
   // sky rows are those of gendaymtx -s conventions, and each hour's sun carries the direct
   // normal illuminance the spread mode puts into its 4 patches (gendaymtx conserves it:
   // sum over patches of 179 L_p Omega_p = E_n). Float matrices: 1e-4 relative.
-  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
   const sky::PatchBasis basis = sky::PatchBasis::tregenza();
   const SkyAndSuns ss = annual_sky_and_suns(epw, sky::solar_site_of(epw), basis, sun_excluded_sky_options(0.2));
-  const AnnualSky none = annual_sky_from_epw(epw, sky::solar_site_of(epw), basis, sun_excluded_sky_options(0.2));
-  const AnnualSky spread = annual_sky_from_epw(epw, sky::solar_site_of(epw), basis, radiance_compatible_sky_options(0.2));
+  const AnnualSky none = annual_sky_from_weather(epw, sky::solar_site_of(epw), basis, sun_excluded_sky_options(0.2));
+  const AnnualSky spread = annual_sky_from_weather(epw, sky::solar_site_of(epw), basis, radiance_compatible_sky_options(0.2));
   EXPECT_EQ(ss.sky.matrix.data(), none.matrix.data());
   EXPECT_EQ(ss.sky.steps.size(), epw.records.size());
   ASSERT_GT(ss.suns.size(), 3000u);  // Oakland TMY3: hours with the sun up and direct light
@@ -329,7 +329,7 @@ TEST(SunBinTracing, InterpolatedIndirectSunMatchesTracingEachHoursSun) {
   const std::vector<engine::Material> materials = models_of(d);
   const SensorGrid& grid = d.grids.at(0);
   const engine::ReceiverPlane plane = engine::ReceiverPlane::from_grid(grid);
-  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
   const SkyAndSuns ss =
       annual_sky_and_suns(epw, sky::solar_site_of(epw), sky::PatchBasis::tregenza(), sun_excluded_sky_options(0.2));
   std::vector<sky::SunRecord> candidates, hours;

@@ -130,13 +130,13 @@ struct OfficeRuns {
 };
 
 TEST(SunSite, TenDegreesNorthGivesTheSunPositionsSpaGivesThere) {
-  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
   const project::Project p = office_with_site(
       "  latitude: 47.72\n  longitude: -122.22\n  time_zone: -8\n  elevation: 2");  // Oakland + 10 deg
   const SunSite site = resolve_sun_site(p.site, epw);
   EXPECT_FALSE(site.from_weather);
   EXPECT_NEAR(site.station_distance_km, 10.0 * Pi / 180.0 * EarthMeanRadius_km, 0.01);
-  const weather::SiteClock clock = weather::SiteClock::for_epw(epw);
+  const weather::SiteClock clock = weather::SiteClock::for_weather(epw);
   const std::vector<weather::TimeStep> steps = clock.steps(epw.records);
   const sky::SolarSite there{47.72, -122.22, -8, 2};
   const sky::SolarSite station = sky::solar_site_of(epw);
@@ -222,7 +222,7 @@ TEST(SunSite, AnotherTimeZoneThanTheWeatherFilesIsALocatedError) {
 /// The hours with direct light and the sun below the horizon in the log, summary and report.
 void expect_below_horizon_hours_counted_in_log_summary_and_report(const OfficeRuns& r) {
   const fs::path &site_dir = r.site_dir, &mannheim_dir = r.mannheim_dir;
-  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
   for (const auto& [folder, site_lines] : {std::pair{site_dir, OfficeSite}, std::pair{mannheim_dir, MannheimOnStationClock}}) {
     const SunSite site = resolve_sun_site(office_with_site(site_lines).site, epw);
     const sky::BelowHorizonDirect expected = annual_below_horizon_direct(epw, site);
@@ -254,7 +254,7 @@ void expect_below_horizon_hours_counted_in_log_summary_and_report(const OfficeRu
 /// `dayphoton annual` and the report's sky images read the site back from summary.json.
 void expect_the_summary_records_the_site(const OfficeRuns& r) {
   const fs::path &from_weather_dir = r.from_weather_dir, &mannheim_dir = r.mannheim_dir;
-  const weather::EpwFile epw = weather::read_epw(OaklandEpw);
+  const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
   const std::string path = (mannheim_dir / "summary.json").string();
   const std::optional<SunSite> recorded = recorded_sun_site(read_text(mannheim_dir / "summary.json"), path, epw);
   ASSERT_TRUE(recorded.has_value());

@@ -269,9 +269,9 @@ std::vector<Corruption> corruptions() {
        [](SyntheticEpw& e) { e.set_field(SyntheticEpw::line_of(7, 4, 13), 15, "1600"); },
        {"t.epw:4437:15: error: field 15 (direct normal radiation): 1600 W/m^2 is outside the "
         "physical range [0, 1500]"}},
-      {"relative humidity above 110 %", [](SyntheticEpw& e) { e.set_field(30, 9, "150"); },
-       {"t.epw:30:9: error: field 9 (relative humidity): 150 % is outside the physical range "
-        "[0, 110]"}},
+      {"dew point below -70 degC", [](SyntheticEpw& e) { e.set_field(30, 8, "-80"); },
+       {"t.epw:30:8: error: field 8 (dew point temperature): -80 degC is outside the physical range "
+        "[-70, 70]"}},
       {"two records swapped", [](SyntheticEpw& e) { std::swap(e.lines[100], e.lines[101]); },
        {"t.epw:101:2: error: missing record(s): expected 1/4 hour 21, found 1/4 hour 22",
         "t.epw:102:2: error: record 1/4 hour 21 is out of order: expected 1/4 hour 23 after "
@@ -329,7 +329,7 @@ TEST(EpwReader, InputErrorTextIsCompilerStyle) {
 
 TEST(EpwReader, ErrorsAreCappedButCounted) {
   SyntheticEpw epw;
-  for (std::size_t i = 8; i < epw.lines.size(); ++i) epw.set_field(static_cast<int>(i) + 1, 7, "warm");
+  for (std::size_t i = 8; i < epw.lines.size(); ++i) epw.set_field(static_cast<int>(i) + 1, 16, "bright");
   try {
     epw.read(/*max_errors=*/10);
     FAIL() << "expected InputError";

@@ -215,15 +215,15 @@ class EpwParser {
 
   void parse_location(const std::vector<std::string_view>& f) {
     const int n = static_cast<int>(f.size());
-    if (n != 10) {
-      const int field = n < 10 ? n + 1 : 11;
-      error(1, field,
-            "LOCATION line has " + std::to_string(n) + " fields, expected 10" +
-                (n < 10 ? std::string(" (field ") + std::to_string(n + 1) + " (" +
-                              LocationFieldNames[n + 1] + ") is missing)"
-                        : std::string()));
-      if (n < 10) return;
+    if (n < 10) {
+      error(1, n + 1,
+            "LOCATION line has " + std::to_string(n) + " fields, expected 10 (field " +
+                std::to_string(n + 1) + " (" + LocationFieldNames[n + 1] + ") is missing)");
+      return;
     }
+    if (n > 10)  // e.g. a trailing comma or a note: fields 1-10 are still where they belong
+      m_diag.warning(at(1, 11), "LOCATION line has " + std::to_string(n) +
+                                    " fields, expected 10; the fields after field 10 (elevation) are ignored");
     EpwLocation& loc = m_file.header.location;
     loc.city = std::string(trim(f[1]));
     loc.state = std::string(trim(f[2]));
@@ -250,12 +250,14 @@ class EpwParser {
   }
 
   void parse_holidays(const std::vector<std::string_view>& f) {
-    if (f.size() < 2) {
-      error(5, 2, "HOLIDAYS/DAYLIGHT SAVINGS line has no field 2 (LeapYear observed)");
-      return;
-    }
-    const std::string flag = upper(trim(f[1]));
-    if (flag == "YES") {
+    const std::string flag = f.size() < 2 ? std::string() : upper(trim(f[1]));
+    if (flag.empty()) {
+      // Written by some converters: the records decide the calendar (parse_records).
+      m_leap_flag_empty = true;
+      m_diag.warning(at(5, 2), std::string("field 2 (LeapYear observed) is ") +
+                                   (f.size() < 2 ? "absent" : "empty") +
+                                   "; the calendar follows the records (366 days if they hold February 29)");
+    } else if (flag == "YES") {
       m_file.header.leap_year_observed = true;
     } else if (flag != "NO") {
       error(5, 2, "field 2 (LeapYear observed): expected 'Yes' or 'No', found " +
@@ -265,17 +267,25 @@ class EpwParser {
     if (f.size() > 3) m_file.header.dst_end = std::string(trim(f[3]));
   }
 
-  /// "M/D" or "M/D/YYYY" -> month, day; false (and an error) if invalid.
+  /// "M/D", "M/D/YYYY" or "YYYY/M/D" (a first part of 4 digits is a year) -> month, day;
+  /// false (and an error) if invalid. The year of a data period is not used: the records
+  /// carry their own years (SiteClock).
   bool parse_date(std::string_view text, int field, const char* what, int& month, int& day) {
     const std::vector<std::string_view> p = split(text, '/');
     std::optional<int> m, d;
-    if (p.size() == 2 || (p.size() == 3 && parse_int(p[2]))) {
+    if (p.size() == 2) {
+      m = parse_int(p[0]);
+      d = parse_int(p[1]);
+    } else if (p.size() == 3 && trim(p[0]).size() == 4 && parse_int(p[0])) {
+      m = parse_int(p[1]);
+      d = parse_int(p[2]);
+    } else if (p.size() == 3 && parse_int(p[2])) {
       m = parse_int(p[0]);
       d = parse_int(p[1]);
     }
     if (!m || !d || *m < 1 || *m > 12 || *d < 1 || *d > days_in_month(*m, true)) {
       error(8, field, std::string("field ") + std::to_string(field) + " (" + what +
-                          "): expected a date M/D, found " + quoted(trim(text)));
+                          "): expected a date M/D, M/D/YYYY or YYYY/M/D, found " + quoted(trim(text)));
       return false;
     }
     month = *m;
@@ -360,7 +370,8 @@ class EpwParser {
       Stamp s{rec->month, rec->day, rec->hour};
       if (s.month == 2 && s.day == 29 && !m_leap) {
         m_leap = true;
-        m_diag.warning(at(line, 3),
+        if (!m_leap_flag_empty)  // an empty flag was already reported, with this rule
+          m_diag.warning(at(line, 3),
                        "February 29 present although the HOLIDAYS/DAYLIGHT SAVINGS line says "
                        "LeapYear observed = No; the leap day is kept (366-day year)");
         if (previous) expected = next_stamp(*previous, true);
@@ -402,6 +413,7 @@ class EpwParser {
                 std::to_string(dp.start_day) + " hour 1 to " + end.text() + "), found " +
                 std::to_string(m_file.records.size()) + "; next expected " + expected.text());
     }
+    report_ignored_values();
     m_file.leap_day_present = false;
     for (const WeatherRecord& r : m_file.records)
       if (r.month == 2 && r.day == 29) m_file.leap_day_present = true;
@@ -458,21 +470,32 @@ class EpwParser {
     for (const FieldSpec& spec : NumericFields) {
       const std::string_view raw = trim(f[spec.field - 1]);
       if (raw.empty()) continue;  // empty = missing
+      const bool used = epw_field_is_used(spec.field);
       const std::optional<double> v = parse_double(raw);
       if (!v) {
-        error(line, spec.field, field_label(spec.field) + ": " + quoted(raw) + " is not a number");
+        if (used)
+          error(line, spec.field, field_label(spec.field) + ": " + quoted(raw) + " is not a number");
+        else
+          ignore(line, spec.field, field_label(spec.field) + ": " + quoted(raw) + " is not a number");
         continue;
       }
       const bool missing = spec.missing_exact ? *v == spec.missing_code : *v >= spec.missing_code;
       if (missing) continue;
       if (*v < spec.min || *v > spec.max) {
+        const std::string range = "[" + number_text(spec.min) + ", " +
+                                  (std::isinf(spec.max) ? std::string("inf") : number_text(spec.max)) + "]";
+        if (!used) {
+          ignore(line, spec.field, field_label(spec.field) + ": " + std::string(raw) +
+                                       (*spec.unit ? std::string(" ") + spec.unit : std::string()) +
+                                       " is outside " + range);
+          continue;
+        }
         std::string msg = field_label(spec.field) + ": " + std::string(raw) + " " + spec.unit;
         if (*v < 0 && spec.min == 0)
           msg += " is negative";
         else
           msg += " is outside the physical range";
-        msg += " [" + number_text(spec.min) + ", " +
-               (std::isinf(spec.max) ? std::string("inf") : number_text(spec.max)) + "]";
+        msg += " " + range;
         error(line, spec.field, msg);
         continue;
       }
@@ -482,10 +505,35 @@ class EpwParser {
     return r;
   }
 
+  /// A bad value in a field dayphoton does not use: read as missing, counted, the first
+  /// MaxLocatedIgnoredValues located (report_ignored_values summarises the rest).
+  void ignore(int line, int field, const std::string& problem) {
+    ++m_file.ignored_value_count;
+    ++m_ignored_by_field[static_cast<std::size_t>(field)];
+    if (m_file.ignored_value_count <= MaxLocatedIgnoredValues)
+      m_diag.warning(at(line, field), problem + "; dayphoton does not use this field, the value is ignored");
+  }
+
+  void report_ignored_values() {
+    const std::size_t n = m_file.ignored_value_count;
+    if (n <= MaxLocatedIgnoredValues) return;
+    std::string by_field;
+    for (std::size_t f = 1; f < m_ignored_by_field.size(); ++f) {
+      if (m_ignored_by_field[f] == 0) continue;
+      if (!by_field.empty()) by_field += ", ";
+      by_field += field_label(static_cast<int>(f)) + ": " + std::to_string(m_ignored_by_field[f]);
+    }
+    m_diag.warning(SourceLocation{m_name, 0, 0},
+                   std::to_string(n) + " values in fields dayphoton does not use were ignored (" + by_field +
+                       "); the first " + std::to_string(MaxLocatedIgnoredValues) + " are located above");
+  }
+
   std::string m_name;
   Diagnostics m_diag;
   EpwFile m_file;
   bool m_leap = false;
+  bool m_leap_flag_empty = false;  ///< HOLIDAYS/DAYLIGHT SAVINGS field 2 empty or absent
+  std::array<std::size_t, epw_field::Count + 1> m_ignored_by_field{};
 };
 
 }  // namespace
@@ -494,6 +542,23 @@ int days_in_month(int month, bool leap) {
   static constexpr std::array<int, 12> Days{{31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31}};
   if (month < 1 || month > 12) return 0;
   return month == 2 && leap ? 29 : Days[static_cast<std::size_t>(month - 1)];
+}
+
+bool epw_field_is_used(int field) {
+  switch (field) {
+    case epw_field::Year:
+    case epw_field::Month:
+    case epw_field::Day:
+    case epw_field::Hour:
+    case epw_field::Minute:
+    case epw_field::DewPoint:
+    case epw_field::DirectNormalRadiation:
+    case epw_field::DiffuseHorizontalRadiation:
+    case epw_field::DiffuseHorizontalIlluminance:
+      return true;
+    default:
+      return false;
+  }
 }
 
 const char* epw_field_name(int field) {

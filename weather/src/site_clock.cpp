@@ -57,17 +57,27 @@ double julian_day(int year, int month, int day, double hour_ut) {
 SiteClock::SiteClock(double time_zone_h, int year, bool leap_calendar)
     : m_time_zone_h(time_zone_h), m_year(year), m_leap(leap_calendar) {}
 
-SiteClock SiteClock::for_epw(const EpwFile& epw) {
-  const bool leap = epw.leap_day_present;
+/// The year of a series' records: their common year, else the reference year.
+static int clock_year(const std::vector<WeatherRecord>& records, bool leap) {
   int year = leap ? 2020 : 2021;
-  if (!epw.records.empty()) {
-    const int first = epw.records.front().year;
+  if (!records.empty()) {
+    const int first = records.front().year;
     bool uniform = true;
-    for (const WeatherRecord& r : epw.records) uniform = uniform && r.year == first;
+    for (const WeatherRecord& r : records) uniform = uniform && r.year == first;
     // An actual-year file keeps its year, unless its calendar contradicts it.
     if (uniform && first >= 1 && (!leap || gregorian_leap(first))) year = first;
   }
-  return SiteClock(epw.header.location.time_zone_h, year, leap);
+  return year;
+}
+
+SiteClock SiteClock::for_epw(const EpwFile& epw) {
+  return SiteClock(epw.header.location.time_zone_h, clock_year(epw.records, epw.leap_day_present),
+                   epw.leap_day_present);
+}
+
+SiteClock SiteClock::for_weather(const HourlyWeather& weather) {
+  return SiteClock(weather.site.time_zone_h, clock_year(weather.records, weather.leap_day_present),
+                   weather.leap_day_present);
 }
 
 TimeStep SiteClock::step(int month, int day, int hour) const {

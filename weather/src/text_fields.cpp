@@ -30,6 +30,8 @@ std::vector<std::string> read_lines(std::istream& in) {
   std::string line;
   while (std::getline(in, line)) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // A UTF-8 byte order mark, written by some Windows editors, is not part of the first line.
+    if (lines.empty() && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     lines.push_back(std::move(line));
   }
   return lines;

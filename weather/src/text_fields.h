@@ -76,7 +76,8 @@ inline std::string quoted(std::string_view s) {
 /// `min_decimals` digits after the point: format_number(2.0, 1) == "2.0".
 std::string format_number(double value, int min_decimals);
 
-/// Read all lines of a stream (without '\n' or a trailing '\r').
+/// Read all lines of a stream (without '\n' or a trailing '\r'; a UTF-8 byte order mark at
+/// the start of the stream is dropped).
 std::vector<std::string> read_lines(std::istream& in);
 
 }  // namespace dayphoton::weather::detail

@@ -130,6 +130,7 @@ class WeaParser {
                   "weather_data_file_units: expected 1, 2 or 3, found " + quoted(t[1].text));
           else
             h.units = static_cast<WeaUnits>(*u);
+          h.units_column = t[1].column;
           break;
         }
         default: break;
@@ -179,6 +180,7 @@ class WeaParser {
         ok = false;
       } else {
         r.hour_lst = *h;
+        r.hour_column = t[2].column;
       }
       const auto value = [&](const Token& tok, const char* what, double& out) {
         const std::optional<double> v = parse_double(tok.text);

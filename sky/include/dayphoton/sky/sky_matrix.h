@@ -28,7 +28,7 @@
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/sky/solar_position.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::sky {
 
@@ -99,19 +99,19 @@ struct SkyMatrix {
 
 /// The weather file header's site (position, time zone, elevation): what RADIANCE's gendaymtx
 /// computes the sun for. A project computes it for its own site (study/sun_site.h).
-SolarSite solar_site_of(const weather::EpwFile& epw);
+SolarSite solar_site_of(const weather::HourlyWeather& weather);
 
 /// The annual sky matrix of a weather file, with the sun of `site` and the file's irradiance.
 /// The records' hours are local standard time of the file's time zone (its header), so
 /// site.time_zone_h must equal it (std::invalid_argument otherwise: a record would be paired
 /// with the sun of another instant). Throws InputError naming the record and field when a
 /// record needed for a daytime sky lacks its direct normal or diffuse horizontal irradiance.
-SkyMatrix build_sky_matrix(const weather::EpwFile& epw, const SolarSite& site, const PatchBasis& basis,
+SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSite& site, const PatchBasis& basis,
                            const SkyMatrixOptions& options);
 
-/// BelowHorizonDirect of build_sky_matrix(epw, site, basis, options) without building the
+/// BelowHorizonDirect of build_sky_matrix(weather, site, basis, options) without building the
 /// matrix (the sun positions alone: milliseconds for a year). Same time-zone rule.
-BelowHorizonDirect below_horizon_direct(const weather::EpwFile& epw, const SolarSite& site,
+BelowHorizonDirect below_horizon_direct(const weather::HourlyWeather& weather, const SolarSite& site,
                                         const SkyMatrixOptions& options);
 
 /// A sky vector (bins x 1 x RGB) for one sky model with a uniform ground of the given radiance.

@@ -29,7 +29,7 @@
 #include "dayphoton/metrics/occupancy_plan.h"
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/sky_matrix.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::study {
 
@@ -45,32 +45,32 @@ struct AnnualSky {
 };
 
 /// Time stamps of the EPW records: month, day and mid-hour local standard time (SiteClock).
-std::vector<metrics::TimeStamp> time_stamps(const weather::EpwFile& epw);
+std::vector<metrics::TimeStamp> time_stamps(const weather::HourlyWeather& weather);
 
 /// The EN 17037 ranking quantity of every record: the diffuse horizontal illuminance field
 /// (lux) when every record has it; otherwise the diffuse horizontal irradiance (W/m^2, which
 /// orders the hours nearly alike) when every record has that; otherwise empty. `source`
 /// receives which one was used.
-std::vector<double> daylight_hours_quantity(const weather::EpwFile& epw, std::string& source);
+std::vector<double> daylight_hours_quantity(const weather::HourlyWeather& weather, std::string& source);
 
 /// The RADIANCE-compatible sky options: SkyMatrixOptions::gendaymtx_compatible() with the sun
 /// spread into patches (the mode in which sky coefficients alone give the annual result).
 sky::SkyMatrixOptions radiance_compatible_sky_options(double ground_reflectance = 0.2);
 
-/// AnnualSky::description of annual_sky_from_epw (the same text whether the matrix is built
+/// AnnualSky::description of annual_sky_from_weather (the same text whether the matrix is built
 /// or read from the cache, so a cached run writes the same files).
-std::string annual_sky_description(const weather::EpwFile& epw, const sky::PatchBasis& basis,
+std::string annual_sky_description(const weather::HourlyWeather& weather, const sky::PatchBasis& basis,
                                    const sky::SkyMatrixOptions& options);
 
 /// Sky matrix built from the EPW with build_sky_matrix for the sun of `site` (the project's,
 /// study/sun_site.h; its time zone must be the file's), stamped with the EPW's time steps.
-AnnualSky annual_sky_from_epw(const weather::EpwFile& epw, const sky::SolarSite& site,
+AnnualSky annual_sky_from_weather(const weather::HourlyWeather& weather, const sky::SolarSite& site,
                               const sky::PatchBasis& basis, const sky::SkyMatrixOptions& options);
 
 /// Sky matrix read from a RADIANCE matrix file (read_matrix_file), stamped with the EPW's
 /// time steps. Throws InputError naming the matrix file if its column count differs from the
 /// EPW's records.
-AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weather::EpwFile& epw,
+AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weather::HourlyWeather& weather,
                                       const MatrixReadOptions& options = {},
                                       std::uint64_t max_decompressed_bytes = ResourceLimits{}.decompressed_bytes);
 
@@ -82,7 +82,7 @@ RadianceMatrix read_matrix_file(const std::string& path, const MatrixReadOptions
 
 /// The calendar of an EPW for occupancy plans: the weekday of 1 January from the DATA
 /// PERIODS start day and date, and the time zone.
-metrics::WeatherCalendar weather_calendar(const weather::EpwFile& epw);
+metrics::WeatherCalendar weather_calendar(const weather::HourlyWeather& weather);
 
 /// Settings of the metrics: thresholds and the occupancy (docs/metrics.md).
 struct AnnualStudySettings {

@@ -34,7 +34,7 @@
 #include "dayphoton/metrics/illuminance_table.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/study/annual_study.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::study {
 
@@ -112,12 +112,12 @@ struct SkyAndSuns {
 sky::SkyMatrixOptions sun_excluded_sky_options(double ground_reflectance = 0.2);
 
 /// SkyAndSuns::sky.description of annual_sky_and_suns (the same whether built or cached).
-std::string sky_and_suns_description(const weather::EpwFile& epw, const sky::PatchBasis& basis);
+std::string sky_and_suns_description(const weather::HourlyWeather& weather, const sky::PatchBasis& basis);
 
 /// Sky-only matrix and suns of a weather file for the sun of `site` (study/sun_site.h;
 /// build_sky_matrix with options.sun = None is enforced). The suns are rounded through float exactly as suns_to_matrix stores them, so a
 /// run that reads them back from the cache computes the same numbers.
-SkyAndSuns annual_sky_and_suns(const weather::EpwFile& epw, const sky::SolarSite& site,
+SkyAndSuns annual_sky_and_suns(const weather::HourlyWeather& weather, const sky::SolarSite& site,
                                const sky::PatchBasis& basis, sky::SkyMatrixOptions options);
 
 /// Suns as a matrix for the cache: one row per sun, 6 columns of 1 component: step,

@@ -22,7 +22,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/solar_position.h"
-#include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::study {
 
@@ -45,7 +45,7 @@ struct SunSite {
 
 /// The site of the project's sun for this weather file. Throws InputError located at
 /// site.time_zone when the project's time zone is not the file's (see the header comment).
-SunSite resolve_sun_site(const project::Site& site, const weather::EpwFile& epw);
+SunSite resolve_sun_site(const project::Site& site, const weather::HourlyWeather& weather);
 
 /// Great-circle distance (haversine on a sphere of EarthMeanRadius_km; within 0.5 % of the
 /// ellipsoidal distance), km.
@@ -62,10 +62,10 @@ std::string sun_site_sentence(const SunSite& site);
 /// StationDistanceWarning_km; "" otherwise.
 std::string station_distance_warning(const SunSite& site);
 
-/// The hours of `epw` with direct normal irradiance > 0 while the sun is below the horizon
+/// The hours of `weather` with direct normal irradiance > 0 while the sun is below the horizon
 /// at the site, with the sun positions of the run's annual sky (RADIANCE's formulas,
 /// radiance_compatible_sky_options): sky::below_horizon_direct.
-sky::BelowHorizonDirect annual_below_horizon_direct(const weather::EpwFile& epw, const SunSite& site);
+sky::BelowHorizonDirect annual_below_horizon_direct(const weather::HourlyWeather& weather, const SunSite& site);
 
 /// The run's line about those hours (always one line, also when there are none): how many,
 /// how much light, and what the annual sky does with it: with the sun spread into patches
@@ -77,15 +77,15 @@ std::string below_horizon_note(const sky::BelowHorizonDirect& below, bool sun_bi
 /// sky (`dayphoton annual`, the report's sky images). nullopt when the text is not such a
 /// summary or predates the record (no `site.from_weather`; those runs used the weather
 /// file header's site). InputError naming `summary_path` when the recorded time zone is not
-/// `epw`'s (another weather file's clock).
+/// `weather`'s (another weather file's clock).
 std::optional<SunSite> recorded_sun_site(const std::string& summary_text, const std::string& summary_path,
-                                         const weather::EpwFile& epw);
+                                         const weather::HourlyWeather& weather);
 
 /// The recorded sun site, or the header's (solar_site_of) when there is none.
 SunSite recorded_or_header_sun_site(const std::string& summary_text, const std::string& summary_path,
-                                    const weather::EpwFile& epw);
+                                    const weather::HourlyWeather& weather);
 
 /// The header's site as a SunSite (from_weather: what gendaymtx and `dayphoton sky` use).
-SunSite header_sun_site(const weather::EpwFile& epw);
+SunSite header_sun_site(const weather::HourlyWeather& weather);
 
 }  // namespace dayphoton::study

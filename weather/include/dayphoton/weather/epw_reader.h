@@ -13,6 +13,10 @@
 //  - Minute field: 0 or 60 (both mean the whole hour); anything else is an error.
 //  - Missing-value codes become std::nullopt (weather_record.h), never errors; an empty
 //    numeric field is also missing. Values outside physical limits are errors.
+//  - Only fields dayphoton uses (epw_field_is_used) can be errors; a bad value in another
+//    field is ignored with a counted warning (EpwFile::ignored_value_count).
+//  - DATA PERIODS dates may be M/D, M/D/YYYY or YYYY/M/D; a LOCATION line with more than 10
+//    fields and an empty LeapYear field are warnings.
 //  - Every problem is reported as file:LINE:FIELD (SourceLocation column = 1-based field
 //    number) with "field N (name)" in the message; up to `max_errors` are collected and
 //    thrown together as dayphoton::InputError. No input makes the reader crash.
@@ -26,21 +30,12 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/source_location.h"
 #include "dayphoton/weather/weather_record.h"
+#include "dayphoton/weather/weather_site.h"
 
 namespace dayphoton::weather {
 
-/// LOCATION line (header line 1). Longitude and time zone are EAST positive, as in EPW.
-struct EpwLocation {
-  std::string city;
-  std::string state;
-  std::string country;
-  std::string source;  ///< e.g. "TMY3"
-  std::string wmo;     ///< station number, kept as text
-  double latitude_deg = 0.0;        ///< north positive
-  double longitude_east_deg = 0.0;  ///< east positive (RADIANCE .wea uses west positive)
-  double time_zone_h = 0.0;         ///< hours relative to UTC, east positive (-8 = PST)
-  double elevation_m = 0.0;
-};
+/// LOCATION line (header line 1): the site. Longitude and time zone are EAST positive, as in EPW.
+using EpwLocation = WeatherSite;
 
 /// DATA PERIODS line (header line 8); only one period is supported.
 struct EpwDataPeriod {
@@ -54,7 +49,7 @@ struct EpwDataPeriod {
 /// The parsed header.
 struct EpwHeader {
   EpwLocation location;
-  bool leap_year_observed = false;  ///< HOLIDAYS/DAYLIGHT SAVINGS field 2 ("Yes"/"No")
+  bool leap_year_observed = false;  ///< HOLIDAYS/DAYLIGHT SAVINGS field 2 ("Yes"; "No" or empty: false)
   std::string dst_start;            ///< as written ("0" = none); never applied (docs/weather.md)
   std::string dst_end;
   EpwDataPeriod data_period;
@@ -67,7 +62,14 @@ struct EpwFile {
   std::vector<WeatherRecord> records;  ///< one per hour, in time order
   bool leap_day_present = false;       ///< true if the records include Feb 29 (366-day calendar)
   std::vector<Diagnostic> warnings;    ///< non-fatal findings (e.g. undeclared leap day)
+  /// Values of fields dayphoton does not use (epw_field_is_used) that were not numbers or out
+  /// of range: ignored (read as missing) and counted, the first MaxLocatedIgnoredValues located
+  /// in `warnings`, then one summary warning by field.
+  std::size_t ignored_value_count = 0;
 };
+
+/// How many ignored values of unused fields are located one by one in EpwFile::warnings.
+constexpr std::size_t MaxLocatedIgnoredValues = 10;
 
 /// 1-based EPW field numbers (field 1 = year) of the values the sky and tools need.
 namespace epw_field {
@@ -80,6 +82,12 @@ constexpr int GlobalHorizontalIlluminance = 17, DirectNormalIlluminance = 18,
 constexpr int TotalSkyCover = 23;
 constexpr int Count = 35;  ///< fields per data record
 }  // namespace epw_field
+
+/// True for the data fields dayphoton uses, whose broken values are errors: the date and time
+/// (1-5), the dew point (8, Perez's precipitable water), direct normal and diffuse horizontal
+/// irradiance (15, 16, the sky) and diffuse horizontal illuminance (19, the daylight-hours
+/// quantity). A broken value in any other field is a counted warning and reads as missing.
+bool epw_field_is_used(int field);
 
 /// Read and validate an EPW file. Throws dayphoton::InputError (all collected problems,
 /// formatted "path:line:field: error: ...") if anything is wrong, std::runtime_error if the

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "dayphoton/weather/epw_reader.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::weather {
 
@@ -50,6 +51,10 @@ class SiteClock {
   /// The clock of an EPW file: its time zone, its calendar (366 days iff it has Feb 29) and
   /// its year if all records share one, else the reference year (2021, or 2020 if 366 days).
   static SiteClock for_epw(const EpwFile& epw);
+
+  /// The same rule for a format-neutral series (hourly_weather.h): its site's time zone, its
+  /// calendar, its records' common year (.wea records have none: the reference year).
+  static SiteClock for_weather(const HourlyWeather& weather);
 
   /// The time step of hour `hour` (1..24) on `month`/`day`. Throws std::invalid_argument for
   /// an impossible date (including Feb 29 in a 365-day calendar).

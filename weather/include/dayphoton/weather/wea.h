@@ -41,6 +41,7 @@ struct WeaHeader {
   double time_zone_west_deg = 0.0;   ///< standard meridian, WEST positive (120 for UTC-8)
   double site_elevation_m = 0.0;
   WeaUnits units = WeaUnits::DirectNormalDiffuseHorizontalIrradiance;
+  int units_column = 0;  ///< 1-based character column of the units value on line 6 (0 if not read)
 };
 
 /// One data line.
@@ -51,6 +52,7 @@ struct WeaRecord {
   double direct = 0.0;    ///< W/m^2 or lux, see WeaUnits
   double diffuse = 0.0;   ///< W/m^2 or lux
   int source_line = 0;    ///< 1-based line in the source file (0 if not read)
+  int hour_column = 0;    ///< 1-based character column of the hour on that line (0 if not read)
 };
 
 struct WeaFile {
