@@ -316,6 +316,9 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
     out << ", " << g.estimate << '\n';
   }
   for (const std::string& line : s.placement_lines) out << "  " << line << '\n';
+  // What an imported RADIANCE scene left out or approximated (docs/radiance-import.md).
+  for (const Diagnostic& w : s.scene.warnings)
+    out << "warning  " << w.location.to_string() << ": " << w.message << '\n';
 }
 
 }  // namespace dayphoton::app

@@ -342,8 +342,8 @@ class Reader {
         group = group.then(s);
       } else if (a == "-i") {
         long long n = 0;
-        if (i + 1 >= args.size() || !parse_count(args[i + 1], n)) {
-          error(at, "'!xform': option -i needs a count");
+        if (i + 1 >= args.size() || !parse_count(args[i + 1], n) || n > RadianceMaxXformIterations) {
+          error(at, "'!xform': option -i needs a count from 0 to " + std::to_string(RadianceMaxXformIterations));
           return;
         }
         ++i;
@@ -625,7 +625,7 @@ class Reader {
       case Role::Unsupported:
         if (!m->reported) {
           m->reported = true;
-          unsupported(at, what + " uses " + m->reason + " (defined at " + located_at(m->location) + ")");
+          unsupported(at, what + ": " + m->reason + " (defined at " + located_at(m->location) + ")");
         }
         if (m_options.skip_unsupported) ++tally(modifier.text).skipped;
         return;

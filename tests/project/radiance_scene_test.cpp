@@ -140,11 +140,11 @@ TEST(RadianceScene, UnsupportedModifiersAreErrorsOrSkippedOnRequest) {
     Diagnostics diag;
     read(text, diag);
     ASSERT_EQ(diag.error_count(), 2u) << diag.format();
-    EXPECT_NE(diag.format().find("scene.rad:5:1: error: polygon 'a' uses plastic 'dirty' is modified by brightfunc "
+    EXPECT_NE(diag.format().find("scene.rad:5:1: error: polygon 'a': plastic 'dirty' is modified by brightfunc "
                                  "'dirt': patterns"),
               std::string::npos)
         << diag.format();
-    EXPECT_NE(diag.format().find("scene.rad:6:1: error: polygon 'b' uses BSDF 'blind': measured BSDF not yet "
+    EXPECT_NE(diag.format().find("scene.rad:6:1: error: polygon 'b': BSDF 'blind': measured BSDF not yet "
                                  "supported (defined at scene.rad:3:11)"),
               std::string::npos)
         << diag.format();
@@ -155,7 +155,7 @@ TEST(RadianceScene, UnsupportedModifiersAreErrorsOrSkippedOnRequest) {
     EXPECT_FALSE(diag.has_errors()) << diag.format();
     ASSERT_EQ(scene.surfaces.size(), 1u);
     EXPECT_EQ(scene.surfaces[0].name, "c");
-    EXPECT_NE(diag.format().find("warning: polygon 'b' uses BSDF 'blind'"), std::string::npos) << diag.format();
+    EXPECT_NE(diag.format().find("warning: polygon 'b': BSDF 'blind'"), std::string::npos) << diag.format();
   }
 }
 

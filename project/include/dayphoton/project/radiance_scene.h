@@ -54,6 +54,8 @@ constexpr int RadianceMinSegments = 12;
 constexpr int RadianceMaxSegments = 256;
 /// Nesting depth of `!xform` files (a file that includes itself is refused at once).
 constexpr int RadianceMaxXformDepth = 16;
+/// Largest `-i` count of an `!xform` (each repetition is a matrix product).
+constexpr long long RadianceMaxXformIterations = 10000;
 /// Warnings kept per scene (the rest are counted in one more).
 constexpr int RadianceMaxWarnings = 20;
 
