@@ -330,6 +330,9 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
     out << ", " << g.estimate << '\n';
   }
   for (const std::string& line : s.placement_lines) out << "  " << line << '\n';
+  // What an imported RADIANCE scene left out or approximated (docs/radiance-import.md).
+  for (const Diagnostic& w : s.scene.warnings)
+    out << "warning  " << w.location.to_string() << ": " << w.message << '\n';
   if (!s.point_in_time_lines.empty()) {
     out << "points in time " << s.point_in_time_lines.size() << '\n';
     for (const std::string& line : s.point_in_time_lines) out << "  " << line << '\n';

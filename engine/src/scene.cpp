@@ -52,6 +52,32 @@ Scene& Scene::operator=(Scene&&) noexcept = default;
 Scene::~Scene() = default;
 
 Scene Scene::build(const SceneDescription& description) {
+  // Port candidates (Surface::port_if_outdoors): build once with every candidate a port
+  // facing auto, keep those whose facing test found the sky on one side, and build again
+  // with those as ports and the others as ordinary surfaces.
+  const bool has_candidates =
+      std::any_of(description.surfaces.begin(), description.surfaces.end(),
+                  [](const Surface& s) { return s.port_if_outdoors; });
+  if (has_candidates) {
+    SceneDescription trial = description;
+    for (Surface& s : trial.surfaces)
+      if (s.port_if_outdoors) {
+        s.port_if_outdoors = false;
+        s.port = true;
+        s.facing = PortFacing::Auto;
+      }
+    const Scene tested = build(trial);
+    SceneDescription resolved = description;
+    for (const Port& port : tested.ports().ports()) {
+      Surface& s = resolved.surfaces[static_cast<std::size_t>(port.surface)];
+      if (!s.port_if_outdoors || port.side_reason != PortSideReason::Sky) continue;
+      s.port = true;
+      s.facing = PortFacing::Auto;
+      s.solid_face = false;
+    }
+    for (Surface& s : resolved.surfaces) s.port_if_outdoors = false;
+    return build(resolved);
+  }
   auto impl = std::make_unique<Impl>();
   impl->description = description;
   const auto& surfaces = impl->description.surfaces;

@@ -115,6 +115,14 @@ void generate_box(const BoxSpec& box, MaterialLookup& materials, Diagnostics& di
 void generate_mesh(const MeshSpec& mesh, MaterialLookup& materials, Diagnostics& diag,
                    std::vector<Surface>& out);
 
+/// The surfaces of a RADIANCE scene (radiance_scene.h; radiance_generator.cpp): its files
+/// read in order, its materials appended to `scene_materials` (a project material of the
+/// same name among the first `project_material_count` is used instead), its glazing made
+/// port candidates (`ports: auto`) or the surfaces of the listed modifiers made ports.
+void generate_radiance(const RadianceSceneSpec& spec, std::size_t project_material_count,
+                       std::vector<MaterialSpec>& scene_materials, Diagnostics& diag,
+                       std::vector<Surface>& out);
+
 /// Check one surface: at least 3 finite vertices, non-zero area, planar within
 /// 1e-3 m x max(1, size), simple enough to triangulate.
 void validate_surface(const Surface& surface, Diagnostics& diag);

@@ -128,8 +128,12 @@ class Loader {
       m_reporter.error(weather->location, "missing value for 'weather'");
     else if (weather)
       read_weather(*weather);
-    if (const YamlNode* n = r.take("materials")) read_materials(*n);
+    const YamlNode* materials = r.take("materials");
+    if (materials) read_materials(*materials);
     if (const YamlNode* n = r.take("geometry")) read_geometry(*n);
+    // A RADIANCE scene brings its own materials; otherwise every project needs some.
+    if (!materials && m_project.geometry.radiance.empty())
+      m_reporter.error(root.location, "missing required key 'materials' in project");
     if (const YamlNode* n = r.take("sensors")) read_sensors(*n);
     if (const YamlNode* n = r.take("simulation")) {
       read_simulation(*n);
@@ -563,7 +567,41 @@ class Loader {
     for_each_item(r, "systems", [&](const YamlNode& n) {
       if (auto sys = read_system(n, /*base=*/true)) m_project.geometry.systems.push_back(std::move(*sys));
     });
+    for_each_item(r, "radiance", [&](const YamlNode& n) { g.radiance.push_back(read_radiance(n)); });
     r.finish();
+  }
+
+  /// A RADIANCE scene entry: its files (each must exist; read when the scene is built),
+  /// `ports` (auto or modifier names), `unsupported`.
+  RadianceSceneSpec read_radiance(const YamlNode& node) {
+    RadianceSceneSpec spec;
+    spec.location = node.location;
+    ParamReader r(node, schema_section("radiance scene"), m_reporter);
+    for (const Located<std::string>& f : read_names(r, "files")) {
+      std::string resolved;
+      existing_file("RADIANCE scene file", f.value, f.location, resolved);
+      spec.files.push_back({resolved, f.location});
+      spec.files_as_written.push_back(f.value);
+    }
+    if (r.has("ports")) {
+      const YamlNode& ports = r.node().find("ports")->value;
+      if (ports.is_scalar() && ports.scalar == "auto") {
+        r.take("ports");
+      } else if (ports.is_sequence()) {
+        spec.ports_auto = false;
+        if (!ports.items.empty()) spec.port_modifiers = read_names(r, "ports");
+        else r.take("ports");
+      } else {
+        m_reporter.error(ports.location, "expected 'auto' or a list of modifier names for 'ports', got " +
+                                             ports.describe());
+        r.take("ports");
+      }
+    }
+    std::string unsupported = "error";
+    if (r.has("unsupported")) r.read_choice("unsupported", unsupported);
+    spec.skip_unsupported = unsupported == "skip";
+    r.finish();
+    return spec;
   }
 
   template <typename F>

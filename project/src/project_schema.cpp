@@ -85,7 +85,7 @@ std::vector<SectionSchema> build_schema() {
       P("site", T::Section, "where the building is").section("site").required(),
       P("study", T::Choice, "what run computes: annual (daylight factors, annual illuminance and metrics from the weather file's skies and sun) or daylight_factor (the CIE overcast sky only: no weather file, no sun traced); default annual, or daylight_factor for a file without weather that sets annual_illuminance and metrics to false").choices({"annual", "daylight_factor"}).def("annual"),
       P("weather", T::Special, "hourly weather file, EPW or RADIANCE/DAYSIM .wea (by its extension): a path, or a map {file: path}; needed by the annual study"),
-      P("materials", T::NameMap, "material name -> material definition (map by `type`)").required(),
+      P("materials", T::NameMap, "material name -> material definition (map by `type`); required unless `geometry.radiance` brings the materials"),
       P("geometry", T::Section, "rooms, polygons, boxes and meshes").section("geometry").required(),
       P("sensors", T::Section, "sensor grids and point sets").section("sensors"),
       P("simulation", T::Section, "photon and sky settings").section("simulation"),
@@ -166,6 +166,12 @@ std::vector<SectionSchema> build_schema() {
       P("boxes", T::SectionList, "solid boxes (shading, furniture)").section("box"),
       P("meshes", T::SectionList, "Wavefront OBJ meshes").section("mesh"),
       P("systems", T::SectionList, "daylight systems generated from a few parameters (docs/daylight-systems.md)").section("system"),
+      P("radiance", T::SectionList, "RADIANCE scene files read in place, their materials mapped (docs/radiance-import.md)").section("radiance scene"),
+  }});
+  s.push_back({"radiance scene", "RADIANCE scene description files (.rad) read as oconv reads them; metres, +Y north (docs/radiance-import.md)", {
+      P("files", T::NameList, "scene files read in order (a modifier must be defined before it is used), relative to the project file; each must exist").required(),
+      P("ports", T::Special, "auto: the surfaces of transmitting materials (glass, dielectric, trans, ...) with exactly one side seeing the sky become photon ports; or a list of modifier names whose surfaces are ports (facing auto)").def("auto"),
+      P("unsupported", T::Choice, "modifiers and primitives dayphoton does not model (patterns, BSDFs, meshes, ...): an error, or left out with a warning").choices({"error", "skip"}).def("error"),
   }});
   s.push_back({"room", "a box-shaped room, surfaces facing inward", {
       P("name", T::String, "unique room name").required(),

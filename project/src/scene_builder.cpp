@@ -5,7 +5,8 @@
 // (interior_windows.cpp; a system outside one is an error), then rooms (windows cut out,
 // glazing as ports unless an enclosure took over or the window is interior, interior windows
 // of adjoining rooms cut out too, light-pipe and roof-light openings in ceilings), free
-// polygons, boxes, OBJ meshes and the systems' surfaces, all in model coordinates and validated (finite vertices,
+// polygons, boxes, OBJ meshes, RADIANCE scenes (radiance_generator.cpp) and the systems' surfaces,
+// all in model coordinates and validated (finite vertices,
 // non-zero area, planarity within 1e-3 m x max(1, size) where size is the largest extent of
 // the polygon's bounding box, triangulable); sensor grids and point sets are generated;
 // finally every position and direction is rotated to world coordinates by the site's
@@ -167,6 +168,8 @@ SceneDescription build_scene_description(const Project& project) {
   for (const PolygonSpec& poly : g.polygons) generate_polygon(poly, materials, surfaces);
   for (const BoxSpec& box : g.boxes) detail::generate_box(box, materials, diag, surfaces);
   for (const MeshSpec& mesh : g.meshes) detail::generate_mesh(mesh, materials, diag, surfaces);
+  for (const RadianceSceneSpec& rad : g.radiance)
+    detail::generate_radiance(rad, project.materials.size(), scene.materials, diag, surfaces);
   surfaces.insert(surfaces.end(), systems.surfaces.begin(), systems.surfaces.end());
   for (const Surface& s : surfaces) detail::validate_surface(s, diag);
   scene.surfaces = std::move(surfaces);
@@ -218,6 +221,8 @@ SceneDescription build_scene_description(const Project& project) {
       }
   }
   diag.throw_if_errors();
+  for (const Diagnostic& d : diag.entries())
+    if (d.severity == Severity::Warning) scene.warnings.push_back(d);
   rotate_scene(scene, north_deg);
   return scene;
 }

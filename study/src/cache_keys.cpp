@@ -28,6 +28,7 @@ ContentHash scene_key(const SceneDescription& scene) {
     // Which side of a port is the room changes its emission; generated ports (Winding) keep
     // the keys they had before ports could face either way.
     if (s.port && s.facing != PortFacing::Winding) h.text("facing").integer(static_cast<int>(s.facing));
+    if (s.port_if_outdoors) h.text("port if outdoors");
   }
   return h;
 }

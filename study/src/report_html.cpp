@@ -202,7 +202,9 @@ CasePlans project_geometry(const std::string& project_path, std::string& note) {
       const SceneDescription scene = project::build_scene_description(p);
       std::vector<std::vector<Vec3>> windows;
       for (const Surface& s : scene.surfaces)
-        if (s.port) windows.push_back(s.vertices);
+        // Port candidates of an imported scene (glazing under `ports: auto`) are drawn as
+        // windows: the engine decides which face outdoors, which would need the ray scene here.
+        if (s.port || s.port_if_outdoors) windows.push_back(s.vertices);
       std::map<std::string, PlanGeometry> grids;
       for (const SensorGrid& g : scene.grids) grids[g.name] = PlanGeometry{g.outline, windows_on_plan(g, windows), {}};
       return grids;

@@ -605,6 +605,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   // 1. Scene, materials, sources, receiver planes.
   progress.start(prefix + "scene", 1, "model");
   SceneDescription description = project::build_scene_description(project);
+  // What an imported RADIANCE scene left out or approximated (docs/radiance-import.md).
+  for (const Diagnostic& w : description.warnings) log.line(prefix + "warning: " + w.location.to_string() + ": " + w.message);
   const engine::Scene scene = engine::Scene::build(description);
   // No port, no sensor, a port that faces no decidable way, sensors outside every room or in
   // a solid: located errors; sets with drop_occluded lose those sensors (placement_check.h).

@@ -38,6 +38,8 @@ check_case check_black_room 0 check tests/cli/cases/black_room.yaml
 check_case check_black_room_surface 1 check tests/cli/cases/black_room_surface.yaml
 check_case check_typos 1 check tests/cli/cases/typos.yaml
 check_case check_window_too_big 1 check tests/cli/cases/window_too_big.yaml
+check_case check_radiance_office 0 check tests/cli/cases/radiance_office.yaml
+check_case check_radiance_errors 1 check tests/cli/cases/radiance_errors.yaml
 check_case check_variant_window_too_big 1 check tests/cli/cases/variant_window_too_big.yaml
 check_case check_yaml_syntax 1 check tests/cli/cases/syntax.yaml
 check_case check_daylight_factor_only 0 check tests/cli/cases/daylight_factor_only.yaml

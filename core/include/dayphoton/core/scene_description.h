@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/source_location.h"
 #include "dayphoton/core/vec3.h"
 
@@ -112,6 +113,11 @@ struct Surface {
   /// A face of a closed solid drawn with outward normals (boxes, OBJ meshes): a sensor that
   /// sees the back of such faces all round lies inside a solid (engine/sensor_placement.h).
   bool solid_face = false;
+  /// A port candidate (an imported scene's glazing under `ports: auto`): engine::Scene::build
+  /// makes it a port (facing auto) when its facing test finds decisively that one side sees
+  /// the sky (engine/port_facing.h), and an ordinary surface otherwise (interior glazing, a
+  /// free-standing pane, the inner pane of a double glazing). `port` must be false.
+  bool port_if_outdoors = false;
 };
 
 struct SensorPoint {
@@ -152,6 +158,9 @@ struct SceneDescription {
   std::vector<MaterialSpec> materials;
   std::vector<Surface> surfaces;
   std::vector<SensorGrid> grids;
+  /// Non-fatal findings of the geometry stage, located (e.g. what a RADIANCE import left
+  /// out or approximated), for `check` and the run log.
+  std::vector<Diagnostic> warnings;
 
   int find_material(const std::string& name) const;
 };

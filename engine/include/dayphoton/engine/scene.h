@@ -18,7 +18,10 @@
 //
 // Ports: after the build, each port whose Surface::facing is not Winding gets its room side
 // decided by rays (engine/port_facing.h), and Port::normal points into the room whichever way
-// the polygon was drawn; the triangles keep the polygon's winding.
+// the polygon was drawn; the triangles keep the polygon's winding. Port candidates
+// (Surface::port_if_outdoors, an imported scene's glazing) become ports facing auto when that
+// test finds the sky decisively on one side, ordinary surfaces otherwise (the scene is built
+// twice); description() then holds the decision.
 //
 // Precision: Embree intersects in single precision. The hit distance t is then refined in
 // double precision against the hit triangle's plane (double-precision vertices), so

@@ -322,12 +322,30 @@ struct SystemSpec {
   SourceLocation location_of(const std::string& key) const;
 };
 
+/// A RADIANCE scene read in place (`geometry.radiance`, docs/radiance-import.md): its files
+/// are read in order when the scene is built (radiance_scene.h), their materials mapped by
+/// radiance_material.h and added to the scene's under their RADIANCE names (a project
+/// material of the same name is used instead: a way to give imported glazing a `glazing`).
+struct RadianceSceneSpec {
+  std::vector<Located<std::string>> files;  ///< resolved paths, each where it was written
+  std::vector<std::string> files_as_written;
+  /// `ports: auto`: the surfaces of transmitting materials (glass, dielectric, trans with
+  /// transmission, glazing, opening) are ports if exactly one side sees the sky
+  /// (Surface::port_if_outdoors). Otherwise the surfaces of the modifiers in port_modifiers
+  /// are ports (facing auto); an empty list makes no port.
+  bool ports_auto = true;
+  std::vector<Located<std::string>> port_modifiers;
+  bool skip_unsupported = false;  ///< `unsupported: skip` (else `error`)
+  SourceLocation location;
+};
+
 struct Geometry {
   std::vector<RoomSpec> rooms;
   std::vector<PolygonSpec> polygons;
   std::vector<BoxSpec> boxes;
   std::vector<MeshSpec> meshes;
   std::vector<SystemSpec> systems;  ///< daylight systems, in file order
+  std::vector<RadianceSceneSpec> radiance;  ///< RADIANCE scenes, in file order
 };
 
 /// A surface of a room generator that a sensor grid can cover: one of its four walls

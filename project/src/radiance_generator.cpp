@@ -1,0 +1,105 @@
+// RADIANCE scene generator: geometry.radiance -> Surfaces (see geometry_generators.h and
+// docs/radiance-import.md). The reading and the material mapping are radiance_scene.cpp's
+// and radiance_material.cpp's; this file decides the materials' final indices and the ports.
+#include <algorithm>
+
+#include "dayphoton/project/radiance_scene.h"
+#include "geometry_generators.h"
+
+namespace dayphoton::project::detail {
+namespace {
+
+/// Materials whose surfaces `ports: auto` considers glazing: everything that lets light
+/// through (docs/radiance-import.md, "Ports").
+bool transmits(const MaterialSpec& m) {
+  switch (m.type) {
+    case MaterialType::Glass:
+    case MaterialType::Glazing:
+    case MaterialType::Dielectric:
+    case MaterialType::Opening: return true;
+    case MaterialType::Translucent: return m.transmissivity > 0 && m.specularity < 1;
+    default: return false;
+  }
+}
+
+bool same_parameters(const MaterialSpec& a, const MaterialSpec& b) {
+  return a.type == b.type && a.reflectance == b.reflectance && a.specularity == b.specularity &&
+         a.roughness == b.roughness && a.transmittance == b.transmittance &&
+         a.refractive_index == b.refractive_index && a.transmissivity == b.transmissivity &&
+         a.transmitted_specular == b.transmitted_specular;
+}
+
+}  // namespace
+
+void generate_radiance(const RadianceSceneSpec& spec, std::size_t project_material_count,
+                       std::vector<MaterialSpec>& scene_materials, Diagnostics& diag,
+                       std::vector<Surface>& out) {
+  std::vector<std::string> paths;
+  std::vector<SourceLocation> written_at;
+  for (const auto& f : spec.files) {
+    paths.push_back(f.value);
+    written_at.push_back(f.location);
+  }
+  RadianceSceneOptions options;
+  options.skip_unsupported = spec.skip_unsupported;
+  const RadianceScene scene = read_radiance_scene(paths, options, diag, written_at);
+
+  // Scene index of each imported material: the project's own of that name, an equal one
+  // another RADIANCE scene added, or a new one (renamed if the name is taken).
+  std::vector<int> index(scene.materials.size(), -1);
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const MaterialSpec& m = scene.materials[i];
+    for (std::size_t j = 0; j < scene_materials.size() && index[i] < 0; ++j) {
+      if (scene_materials[j].name != m.name) continue;
+      if (j < project_material_count) {
+        index[i] = static_cast<int>(j);
+        diag.warning(m.location, "the project's material '" + m.name + "' (" +
+                                     material_type_as_written(scene_materials[j]) +
+                                     ") replaces this RADIANCE definition",
+                     read_source_line(m.location.file, m.location.line));
+      } else if (same_parameters(scene_materials[j], m)) {
+        index[i] = static_cast<int>(j);
+      }
+    }
+    if (index[i] >= 0) continue;
+    MaterialSpec added = m;
+    for (const MaterialSpec& existing : scene_materials)
+      if (existing.name == added.name) added.name += "@" + m.location.to_string();
+    scene_materials.push_back(std::move(added));
+    index[i] = static_cast<int>(scene_materials.size()) - 1;
+  }
+
+  for (const auto& name : spec.port_modifiers)
+    if (std::find(scene.modifier_names.begin(), scene.modifier_names.end(), name.value) ==
+        scene.modifier_names.end()) {
+      const std::string hint = closest_match(name.value, scene.modifier_names);
+      report(diag, name.location,
+             "ports: modifier '" + name.value + "' is not defined in the RADIANCE scene's files" +
+                 (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)"));
+    }
+  auto listed = [&](const RadianceSurface& s) {
+    for (const auto& name : spec.port_modifiers)
+      if (name.value == s.modifier || name.value == s.material_modifier) return true;
+    return false;
+  };
+
+  for (const RadianceSurface& r : scene.surfaces) {
+    Surface s;
+    s.name = r.name;
+    s.material = index[static_cast<std::size_t>(r.material)];
+    s.vertices = r.vertices;
+    s.location = r.location;
+    s.solid_face = r.solid_face;
+    const MaterialSpec& m = scene_materials[static_cast<std::size_t>(s.material)];
+    if (spec.ports_auto) {
+      s.port_if_outdoors = transmits(m);
+    } else if (listed(r)) {
+      s.port = true;
+      s.facing = PortFacing::Auto;
+      s.solid_face = false;
+    }
+    out.push_back(std::move(s));
+  }
+}
+
+}  // namespace dayphoton::project::detail
