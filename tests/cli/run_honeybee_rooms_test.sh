@@ -13,6 +13,7 @@
 # |mean(H - R)| <= 4 s holds with probability > 99.99 % for equal models (normal errors).
 # A wrong import (a material, a window lost or doubled, a port facing the wrong way)
 # shifts every sensor the same way and fails it.
+# First, placement: a sensor inside the imported room passes `check`, one outside is refused.
 # Usage: DAYPHOTON=path/to/dayphoton bash run_honeybee_rooms_test.sh
 set -eu
 bin=${DAYPHOTON:?set DAYPHOTON to the dayphoton executable}
@@ -65,9 +66,22 @@ geometry:
 sensors:
   points: [{name: grid, points: [%s]}]
 """ % pts
+# Placement: the imported room is a room to the placement check (a sensor inside passes, one
+# 3 m in front of the window is outside every room).
+for name, y in (("inside", 3), ("outside", -3)):
+    open(os.path.join(d, name + ".yaml"), "w").write(
+        head + "materials: {}\ngeometry: {honeybee: room.hbjson}\n"
+        "sensors: {points: [{name: p, points: [[2.5, %g, 0.8, 0, 0, 1]]}]}\n" % y)
 for name, text, seed in (("hb1", hb, 1), ("rooms1", rooms, 1), ("rooms2", rooms, 2)):
     open(os.path.join(d, name + ".yaml"), "w").write(text + sim.replace("SEED", str(seed)))
 PY
+
+"$bin" check "$scratch/inside.yaml" >"$scratch/inside.log" 2>&1 ||
+  { echo "FAIL: a sensor inside the imported room is refused"; tail -5 "$scratch/inside.log"; exit 1; }
+if "$bin" check "$scratch/outside.yaml" >"$scratch/outside.log" 2>&1 || ! grep -q "outside every room" "$scratch/outside.log"; then
+  echo "FAIL: a sensor outside the imported room is not refused"; tail -5 "$scratch/outside.log"; exit 1
+fi
+echo "placement: a sensor inside the imported room passes, one outside is refused"
 
 for run in hb1 rooms1 rooms2; do
   "$bin" run "$scratch/$run.yaml" --output "$scratch/out_$run" --quiet >"$scratch/$run.log" 2>&1 ||
