@@ -1,9 +1,11 @@
 #!/bin/bash
 # A Honeybee room equals the same room written as a dayphoton `rooms:` entry
 # (docs/honeybee-import.md, "Validation"): a 5 x 6 x 3 m room with a 3 x 1.5 m south
-# window, Honeybee's generic modifiers (floor 0.2, walls 0.5, ceiling 0.8, glass of visible
-# transmittance 0.64) against lambertian 0.2/0.5/0.8 and glass 0.64, the same 30 sensors as
-# points (final gather in both). Daylight factors only.
+# window under a 0.8 m overhang, Honeybee's generic modifiers (floor 0.2, walls 0.5, ceiling
+# 0.8, glass of visible transmittance 0.64, exterior shade 0.35) against lambertian
+# 0.2/0.5/0.8/0.35, glass 0.64 and an overhang system (port: system: both overhangs are
+# outdoor scatterers), the same 30 sensors as points (final gather in both). Daylight
+# factors only.
 #
 # Tolerance from the variance: the room project is run with two seeds; the per-sensor
 # differences of those runs, d_i, are differences of two independent estimates of one
@@ -30,10 +32,13 @@ def face(i, t, bc, b, **kw):
     f.update(kw)
     return f
 win = [[1, 0, 0.9], [4, 0, 0.9], [4, 0, 2.4], [1, 0, 2.4]]
+overhang = {"type": "Shade", "identifier": "overhang", "properties": {},
+            "geometry": {"type": "Face3D", "boundary": [[0.7, 0, 2.5], [0.7, -0.8, 2.5], [4.3, -0.8, 2.5], [4.3, 0, 2.5]]}}
 faces = [
     face("south", "Wall", "Outdoors", [[0, 0, 0], [W, 0, 0], [W, 0, H], [0, 0, H]],
          apertures=[{"type": "Aperture", "identifier": "window", "boundary_condition": {"type": "Outdoors"},
-                     "geometry": {"type": "Face3D", "boundary": win}, "properties": {}}]),
+                     "geometry": {"type": "Face3D", "boundary": win}, "properties": {},
+                     "outdoor_shades": [overhang]}]),
     face("north", "Wall", "Outdoors", [[W, D, 0], [0, D, 0], [0, D, H], [W, D, H]]),
     face("west", "Wall", "Outdoors", [[0, D, 0], [0, 0, 0], [0, 0, H], [0, D, H]]),
     face("east", "Wall", "Outdoors", [[W, 0, 0], [W, D, 0], [W, D, H], [W, 0, H]]),
@@ -57,12 +62,15 @@ rooms = head + """materials:
   walls: {type: lambertian, reflectance: 0.5}
   ceiling: {type: lambertian, reflectance: 0.8}
   glass: {type: glass, transmittance: 0.64}
+  shade: {type: lambertian, reflectance: 0.35}
 geometry:
   rooms:
     - name: room
       size: [5, 6, 3]
       materials: {floor: floor, ceiling: ceiling, walls: walls}
       windows: [{name: window, wall: south, width: 3, height: 1.5, sill: 0.9, offset: 1, material: glass}]
+  systems:
+    - {type: overhang, name: overhang, window: window, height: 2.5, depth: 0.8, extension: 0.3, material: shade}
 sensors:
   points: [{name: grid, points: [%s]}]
 """ % pts
