@@ -48,6 +48,9 @@ double honeybee_metres_per_unit(const std::string& units) {
 
 namespace {
 
+/// Deepest nesting of objects and arrays accepted (HBJSON nests about 12 levels).
+constexpr std::size_t MaxJsonDepth = 64;
+
 using json = nlohmann::json;
 using detail::JsonLocator;
 using detail::json_element;
@@ -819,22 +822,20 @@ HoneybeeModel read_honeybee_model_from_string(const std::string& text, const std
     root = json::parse(text);
   } catch (const json::parse_error& e) {
     // e.byte: 1-based position of the byte where parsing stopped.
-    SourceLocation where;
-    where.file = file;
-    const std::size_t offset = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
-    std::size_t line_start = 0;
-    where.line = 1;
-    for (std::size_t i = 0; i < offset; ++i)
-      if (text[i] == '\n') {
-        ++where.line;
-        line_start = i + 1;
-      }
-    where.column = static_cast<int>(offset - line_start + 1);
+    const SourceLocation where = detail::JsonLocator::line_and_column(
+        text, file, std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size()));
     std::string message = e.what();
     // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error ..." ->
     // the part after the position, which the location already gives.
     if (const std::size_t colon = message.find(": "); colon != std::string::npos) message = message.substr(colon + 2);
     diag.error(where, "not valid JSON: " + message, read_source_line(file, where.line));
+    diag.throw_if_errors();
+  }
+  // Honeybee models nest about a dozen levels; the locator's scan recurses once per level.
+  if (const auto [depth, offset] = detail::json_nesting(text); depth > MaxJsonDepth) {
+    const SourceLocation where = detail::JsonLocator::line_and_column(text, file, offset);
+    diag.error(where, "the JSON nests deeper than " + std::to_string(MaxJsonDepth) + " levels; a Honeybee model needs about 12",
+               read_source_line(file, where.line));
     diag.throw_if_errors();
   }
   const detail::JsonLocator locator(text, file);

@@ -5,6 +5,42 @@
 
 namespace dayphoton::project::detail {
 
+std::pair<std::size_t, std::size_t> json_nesting(const std::string& text) {
+  std::size_t depth = 0, deepest = 0, where = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '{' || c == '[') {
+      if (++depth > deepest) {
+        deepest = depth;
+        where = i;
+      }
+    } else if ((c == '}' || c == ']') && depth > 0) {
+      --depth;
+    }
+  }
+  return {deepest, where};
+}
+
+SourceLocation JsonLocator::line_and_column(const std::string& text, const std::string& file, std::size_t offset) {
+  SourceLocation loc;
+  loc.file = file;
+  loc.line = 1;
+  std::size_t line_start = 0;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i)
+    if (text[i] == '\n') {
+      ++loc.line;
+      line_start = i + 1;
+    }
+  loc.column = static_cast<int>(offset - line_start + 1);
+  return loc;
+}
+
 std::string json_member(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
 }

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "dayphoton/core/source_location.h"
@@ -28,12 +29,20 @@ class JsonLocator {
   SourceLocation locate(const std::string& path) const;
   /// Location of byte `offset` (0-based) of the text.
   SourceLocation at_offset(std::size_t offset) const;
+  /// Location of byte `offset` of `text` without building a locator (for text that is not
+  /// valid JSON).
+  static SourceLocation line_and_column(const std::string& text, const std::string& file, std::size_t offset);
 
  private:
   std::string m_file;
   std::vector<std::size_t> m_line_starts;  ///< byte offset of each line's first byte
   std::unordered_map<std::string, std::size_t> m_offsets;
 };
+
+/// The deepest nesting of objects and arrays in `text` (strings skipped) and the byte offset
+/// where it is first reached. Linear, no recursion: checked before a JsonLocator is built,
+/// whose scan recurses once per level.
+std::pair<std::size_t, std::size_t> json_nesting(const std::string& text);
 
 /// `parent.key` ("key" at the root).
 std::string json_member(const std::string& parent, const std::string& key);

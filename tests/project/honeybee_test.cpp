@@ -303,6 +303,13 @@ TEST(HoneybeeErrors, SyntaxErrorAtLineAndColumn) {
   EXPECT_NE(errors[0].find("not valid JSON"), std::string::npos) << errors[0];
 }
 
+TEST(HoneybeeErrors, DeepNestingIsRefusedWhereItIsReached) {
+  // Valid JSON, but 65 levels deep: the located scan would recurse once per level.
+  const std::string text = "{\"rooms\":\n" + std::string(64, '[') + std::string(64, ']') + "}";
+  EXPECT_EQ(located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); }),
+            std::vector<std::string>{"2:64: the JSON nests deeper than 64 levels; a Honeybee model needs about 12"});
+}
+
 TEST(HoneybeeErrors, MissingFieldNamesPathIdentifierAndLine) {
   const std::string text =
       "{\"type\": \"Model\", \"identifier\": \"m\", \"rooms\": [\n"
