@@ -427,6 +427,41 @@ TEST(HoneybeeProject, GridsAllOrByIdentifierBecomePointSets) {
   EXPECT_EQ(some.sensors.points[1].name, "back");
 }
 
+TEST(HoneybeeProject, VariantReplacesAnImportedModifierByName) {
+  TempDir dir;
+  dir.write("model.hbjson", model(room("r", box, outdoors(), outdoors()), two_grids()));
+  const std::string yaml = dir.write("p.yaml", std::string(ProjectHead) +
+                                                   "geometry: {honeybee: model.hbjson}\n"
+                                                   "sensors: {honeybee_grids: all}\n"
+                                                   "variants:\n"
+                                                   "  - name: low_e\n"
+                                                   "    materials:\n"
+                                                   "      generic_exterior_window_vis_0.64: {type: glass, transmittance: 0.4}\n");
+  const Project base = load_project(yaml);
+  ASSERT_EQ(base.variants.size(), 1u);
+  const SceneDescription scene = build_scene_description(apply_variant(base, base.variants[0]));
+  bool found = false;
+  for (const Surface& s : scene.surfaces)
+    if (s.port) {
+      EXPECT_DOUBLE_EQ(scene.materials[static_cast<std::size_t>(s.material)].transmittance.x, 0.4);
+      found = true;
+    }
+  EXPECT_TRUE(found);
+  // A project material named like a modifier the model uses is an error at the project's name.
+  const std::string clash = dir.write("c.yaml",
+                                      "version: 1\n"
+                                      "site: {latitude: 37.7, longitude: -122.2, time_zone: -8}\n"
+                                      "materials:\n"
+                                      "  generic_wall_0.50: {type: lambertian, reflectance: 0.1}\n"
+                                      "outputs: {annual_illuminance: false, metrics: false}\n"
+                                      "geometry: {honeybee: model.hbjson}\n");
+  const auto errors = located_errors([&] { load_project(clash); });
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].substr(0, 4), "4:3:");
+  EXPECT_NE(errors[0].find("material 'generic_wall_0.50' is also a modifier of the Honeybee model"), std::string::npos)
+      << errors[0];
+}
+
 TEST(HoneybeeProject, UnknownGridHintAndErrorsOfTheModelAreReported) {
   TempDir dir;
   dir.write("model.hbjson", model(room("r", box, outdoors(), outdoors()), two_grids()));
