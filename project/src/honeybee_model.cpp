@@ -369,10 +369,18 @@ class Reader {
     if (!get_string(m, path, "", "identifier", mod.identifier, true)) return std::nullopt;
     const std::string& id = mod.identifier;
     if (!get_string(m, path, id, "type", mod.type, true)) return std::nullopt;
+    // honeybee-schema writes the types capitalised since its modifier.py ("Plastic", "Glass",
+    // "Void"), lower case before (material.py: "plastic"); RADIANCE's own words are lower case.
+    static const std::set<std::string> capitalised = {"Plastic", "Metal", "Trans", "Glass", "Mirror", "Void", "Light", "Glow"};
+    auto radiance_type = [](std::string t) {
+      if (capitalised.count(t)) t[0] = static_cast<char>(t[0] - 'A' + 'a');
+      return t;
+    };
+    mod.type = radiance_type(mod.type);
     if (const json* base = member(m, path, id, "modifier", false)) {
       std::string base_type;
       if (!base->is_object() || !get_string(*base, json_member(path, "modifier"), id, "type", base_type, false) ||
-          base_type != "void") {
+          radiance_type(base_type) != "void") {
         m_problems[id] = "is modified by another modifier (a pattern, texture or mixture), which is not supported";
         return mod;
       }
@@ -382,11 +390,14 @@ class Reader {
       get_number(m, path, id, key, v, false);
       mod.args.push_back(v);
     };
+    // Fields and defaults: honeybee-schema radiance/modifier.py. The real arguments are
+    // RADIANCE's, in its order (honeybee-radiance modifier/material/*.py, _update_values:
+    // trans writes transmitted_diff and transmitted_spec as RADIANCE's trans and tspec).
     if (mod.type == "plastic" || mod.type == "metal" || mod.type == "trans") {
       arg("r_reflectance", 0);
       arg("g_reflectance", 0);
       arg("b_reflectance", 0);
-      arg("specularity", 0);
+      arg("specularity", mod.type == "metal" ? 0.9 : 0);
       arg("roughness", 0);
       if (mod.type == "trans") {
         arg("transmitted_diff", 0);
@@ -398,9 +409,9 @@ class Reader {
       arg("b_transmissivity", 0);
       arg("refraction_index", 1.52);
     } else if (mod.type == "mirror") {
-      arg("r_reflectance", 0);
-      arg("g_reflectance", 0);
-      arg("b_reflectance", 0);
+      arg("r_reflectance", 1);
+      arg("g_reflectance", 1);
+      arg("b_reflectance", 1);
       if (const json* alt = member(m, path, id, "alternate_material", false); alt && !alt->is_null())
         m_problems[id] = "has an alternate_material, which is not supported";
     } else {

@@ -272,6 +272,35 @@ TEST(Honeybee, FullModifierSetGivesModifiersInline) {
   EXPECT_DOUBLE_EQ(material(m, "inline_wall").reflectance.z, 0.45);
 }
 
+TEST(Honeybee, CapitalisedTypesOfTheCurrentSchemaAndItsDefaults) {
+  // honeybee-schema's modifier.py: "Plastic", "Metal" (specularity 0.9 by default), "Mirror"
+  // (reflectance 1 by default), "Trans", "Glass"; a "Void" base modifier is no modifier.
+  const std::string radiance =
+      R"("modifiers": [{"type": "Metal", "identifier": "steel", "r_reflectance": 0.6, "g_reflectance": 0.6,)"
+      R"( "b_reflectance": 0.6, "modifier": {"type": "Void"}}, {"type": "Mirror", "identifier": "silver"},)"
+      R"( {"type": "Trans", "identifier": "diffuser", "r_reflectance": 0.5, "g_reflectance": 0.5, "b_reflectance": 0.5,)"
+      R"( "transmitted_diff": 0.4, "transmitted_spec": 0.1},)"
+      R"( {"type": "Glass", "identifier": "clear", "r_transmissivity": 0.9, "g_transmissivity": 0.9, "b_transmissivity": 0.9}])";
+  std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
+  for (const auto& [face_name, modifier] : std::map<std::string, std::string>{
+           {"r_north", "steel"}, {"r_west", "silver"}, {"r_east", "diffuser"}}) {
+    const std::vector<Vec3> pts_of = face_name == "r_north" ? box.north() : face_name == "r_west" ? box.west() : box.east();
+    const std::string f = face(face_name, "Wall", outdoors(), pts_of);
+    text.replace(text.find(f), f.size(), face(face_name, "Wall", outdoors(), pts_of, rad_modifier(modifier)));
+  }
+  const std::string w = opening("Aperture", "r_window", outdoors(), box.window());
+  text.replace(text.find(w), w.size(), opening("Aperture", "r_window", outdoors(), box.window(), rad_modifier("clear")));
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  EXPECT_EQ(material(m, "steel").type, MaterialType::Metal);
+  EXPECT_DOUBLE_EQ(material(m, "steel").specularity, 0.9);
+  EXPECT_EQ(material(m, "silver").type, MaterialType::Mirror);
+  EXPECT_DOUBLE_EQ(material(m, "silver").reflectance.y, 1.0);
+  EXPECT_EQ(material(m, "diffuser").type, MaterialType::Translucent);
+  EXPECT_DOUBLE_EQ(material(m, "diffuser").transmissivity, 0.4);
+  EXPECT_DOUBLE_EQ(material(m, "diffuser").transmitted_specular, 0.1);
+  EXPECT_EQ(material(m, "clear").type, MaterialType::Glass);
+}
+
 // ---- sensor grids --------------------------------------------------------------------------
 
 TEST(Honeybee, SensorGridsInMetresWithUnitDirections) {
@@ -472,7 +501,8 @@ TEST(HoneybeeProject, UnknownGridHintAndErrorsOfTheModelAreReported) {
             std::vector<std::string>{"8:20: the Honeybee model has no sensor grid 'soth' (did you mean 'south'?)"});
   // An error inside the model is reported in the model's file, at its line.
   dir.write("bad.hbjson", "{\"type\": \"Model\",\n \"rooms\": 3}\n");
-  const std::string bad = dir.write("b.yaml", std::string(ProjectHead) + "geometry: {honeybee: bad.hbjson}\n");
+  const std::string bad = dir.write("b.yaml", std::string(ProjectHead) + "geometry: {honeybee: bad.hbjson}\n"
+                                                                         "sensors: {honeybee_grids: all}\n");
   EXPECT_EQ(located_errors([&] { load_project(bad); }, dir.path + "/bad.hbjson"),
             std::vector<std::string>{"2:11: rooms: expected a list of rooms, got a number"});
 }
