@@ -439,6 +439,7 @@ class Loader {
   /// is an error: one name, one material).
   void read_honeybee(ParamReader& r) {
     HoneybeeImport hb;
+    m_honeybee_given = true;
     if (!r.read_string("honeybee", hb.path_as_written)) return;
     hb.location = r.location_of("honeybee");
     if (!existing_file("Honeybee model", hb.path_as_written, hb.location, hb.path)) return;
@@ -837,6 +838,7 @@ class Loader {
   void read_honeybee_grids(const YamlNode& node) {
     const auto& hb = m_project.geometry.honeybee;
     if (!hb) {
+      if (m_honeybee_given) return;  // the model's own errors are reported
       m_reporter.error(node.location, "'honeybee_grids' needs a Honeybee model (geometry: {honeybee: model.hbjson})");
       return;
     }
@@ -1471,6 +1473,7 @@ class Loader {
   Reporter& m_reporter;
   const LoadOptions& m_options;
   SourceLocation m_from_weather_location;  ///< of site.from_weather (its check needs the weather key)
+  bool m_honeybee_given = false;  ///< geometry.honeybee written (read or not)
   NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
       m_roof_light_names{"roof light"},
       m_polygon_names{"polygon"}, m_box_names{"box"}, m_mesh_names{"mesh"},
