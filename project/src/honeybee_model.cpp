@@ -119,9 +119,12 @@ class Reader {
         for (std::size_t i = 0; i < shades->size(); ++i) {
           const json& s = (*shades)[i];
           const std::string path = json_element("orphaned_shades", i);
-          bool indoor = false;
-          if (s.is_object()) get_bool(s, path, "", "is_indoor", indoor);
-          read_shade(s, path, m_global, indoor);
+          bool indoor = false, detached = false;
+          if (s.is_object()) {
+            get_bool(s, path, "", "is_indoor", indoor);
+            get_bool(s, path, "", "is_detached", detached);
+          }
+          read_shade(s, path, m_global, indoor, detached && !indoor);
         }
       }
     }
@@ -443,41 +446,56 @@ class Reader {
       if (!sets->is_array()) {
         error(spath, "", "expected a list of modifier sets, got " + kind(*sets));
       } else {
-        for (std::size_t i = 0; i < sets->size(); ++i) read_modifier_set((*sets)[i], json_element(spath, i));
+        for (std::size_t i = 0; i < sets->size(); ++i)
+          if (auto set = read_modifier_set((*sets)[i], json_element(spath, i))) add_modifier_set(std::move(*set));
       }
     }
-    std::string global;
-    if (get_string(*rad, rpath, "", "global_modifier_set", global, false)) {
-      const auto it = m_sets.find(global);
-      if (it == m_sets.end())
-        error(json_member(rpath, "global_modifier_set"), "", "unknown modifier set '" + global + "' (not in properties.radiance.modifier_sets)");
-      else
-        m_global = &it->second;
+    // global_modifier_set: the identifier of one of modifier_sets, or (as honeybee-radiance
+    // writes it) a GlobalModifierSet object with its own list of modifiers.
+    const std::string gpath = json_member(rpath, "global_modifier_set");
+    if (const json* g = member(*rad, rpath, "", "global_modifier_set", false)) {
+      if (g->is_string()) {
+        const auto it = m_sets.find(g->get<std::string>());
+        if (it == m_sets.end())
+          error(gpath, "", "unknown modifier set '" + g->get<std::string>() + "' (not in properties.radiance.modifier_sets)");
+        else
+          m_global = &it->second;
+      } else if (g->is_object()) {
+        if (const json* mods = member(*g, gpath, "", "modifiers", false); mods && mods->is_array())
+          for (std::size_t i = 0; i < mods->size(); ++i)
+            if (auto m = parse_modifier((*mods)[i], json_element(json_member(gpath, "modifiers"), i))) add_modifier(std::move(*m));
+        if (auto set = read_modifier_set(*g, gpath, /*global=*/true)) m_global_set = std::move(*set);
+        m_global = &*m_global_set;
+      } else {
+        error(gpath, "", "expected a modifier set identifier or a GlobalModifierSet object, got " + kind(*g));
+      }
     }
   }
 
   void add_modifier(RadianceModifier m) {
-    if (m_modifiers.count(m.identifier)) {
-      // Inline modifiers of full ModifierSets repeat the model's; the first definition stays.
-      if (m_modifiers.at(m.identifier).path.rfind("properties.radiance.modifiers", 0) == 0 &&
-          m.path.rfind("properties.radiance.modifiers", 0) == 0)
-        error(m.path, m.identifier, "modifier '" + m.identifier + "' is defined twice (first at " +
-                                        m_modifiers.at(m.identifier).location.to_string() + ")");
+    if (const auto it = m_modifiers.find(m.identifier); it != m_modifiers.end()) {
+      // Modifier sets repeat the model's modifiers, and Honeybee's own files list some twice:
+      // a second definition must say the same; the first stays.
+      if (it->second.type != m.type || it->second.args != m.args)
+        error(m.path, m.identifier, "modifier '" + m.identifier + "' is defined twice, differently (first at " +
+                                        it->second.location.to_string() + ")");
       return;
     }
     const std::string id = m.identifier;
     m_modifiers.emplace(id, std::move(m));
   }
 
-  void read_modifier_set(const json& s, const std::string& path) {
+  /// One modifier set; `global`: the model's GlobalModifierSet object (no identifier needed).
+  std::optional<ModifierSet> read_modifier_set(const json& s, const std::string& path, bool global = false) {
     if (!s.is_object()) {
       error(path, "", "expected a modifier set object, got " + kind(s));
-      return;
+      return std::nullopt;
     }
     ModifierSet set;
     set.path = path;
     set.location = m_loc.locate(path);
-    if (!get_string(s, path, "", "identifier", set.identifier, true)) return;
+    if (global) set.identifier = "global_modifier_set";
+    else if (!get_string(s, path, "", "identifier", set.identifier, true)) return std::nullopt;
     for (const std::string& slot : detail::modifier_set_slots()) {
       const std::size_t dot_at = slot.find('.');
       const json* holder = &s;
@@ -515,8 +533,12 @@ class Reader {
       if (!m_modifiers.count(modifier) && !generic)
         error(json_member(path, slot), set.identifier, "unknown modifier '" + modifier + "' (not in properties.radiance.modifiers)");
     }
+    return set;
+  }
+
+  void add_modifier_set(ModifierSet set) {
     if (m_sets.count(set.identifier)) {
-      error(path, set.identifier, "modifier set '" + set.identifier + "' is defined twice");
+      error(set.path, set.identifier, "modifier set '" + set.identifier + "' is defined twice");
       return;
     }
     const std::string id = set.identifier;
@@ -587,7 +609,8 @@ class Reader {
     }
   }
 
-  void read_shade(const json& shade, const std::string& path, const ModifierSet* set, bool indoor) {
+  /// A shade; `context`: a detached orphaned shade (the set's context modifier).
+  void read_shade(const json& shade, const std::string& path, const ModifierSet* set, bool indoor, bool context = false) {
     if (!shade.is_object()) {
       error(path, "", "expected a Shade object, got " + kind(shade));
       return;
@@ -597,7 +620,8 @@ class Reader {
     Polygon3 poly;
     if (!face3d(shade, path, id, poly)) return;
     const std::string material =
-        object_modifier(shade, path, id, set, indoor ? "shade_set.interior_modifier" : "shade_set.exterior_modifier");
+        object_modifier(shade, path, id, set,
+                        context ? "context_modifier" : indoor ? "shade_set.interior_modifier" : "shade_set.exterior_modifier");
     emit(id, path, poly.boundary, poly.holes, material, indoor ? HoneybeeRole::Opaque : HoneybeeRole::OutdoorShade);
   }
 
@@ -817,6 +841,7 @@ class Reader {
   std::map<std::string, std::string> m_problems;  ///< modifier -> why it cannot be mapped
   std::map<std::string, ModifierSet> m_sets;
   const ModifierSet* m_global = nullptr;
+  std::optional<ModifierSet> m_global_set;  ///< a GlobalModifierSet object, if the model gives one
   std::map<std::string, SourceLocation> m_used;  ///< modifier -> where first used
   std::vector<std::string> m_used_order;
   std::set<std::string> m_face_ids, m_emitted_shared;

@@ -20,6 +20,7 @@ const std::vector<RadianceModifier>& honeybee_generic_modifiers() {
         plastic("generic_opaque_door_0.50", 0.5),
         plastic("generic_interior_shade_0.50", 0.5),
         plastic("generic_exterior_shade_0.35", 0.35),
+        plastic("generic_context_0.20", 0.2),
         glass("generic_interior_window_vis_0.88", 0.9584154328610596),
         glass("generic_exterior_window_vis_0.64", 0.6975761815384331),
         glass("air_boundary", 1.0),
@@ -50,6 +51,9 @@ const std::map<std::string, std::string>& generic_set() {
       {"shade_set.exterior_modifier", "generic_exterior_shade_0.35"},
       {"shade_set.interior_modifier", "generic_interior_shade_0.50"},
       {"air_boundary_modifier", "air_boundary"},
+      // honeybee-radiance's GlobalModifierSet: detached shades (context: neighbouring
+      // buildings, trees) take generic_context_0.20.
+      {"context_modifier", "generic_context_0.20"},
   };
   return set;
 }

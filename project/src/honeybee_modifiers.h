@@ -27,14 +27,15 @@ struct RadianceModifier {
 /// Honeybee's generic modifiers, as in honeybee-radiance's library of default modifiers
 /// (lib/data/modifiers/default.mat): generic_floor_0.20, generic_wall_0.50,
 /// generic_ceiling_0.80, generic_opaque_door_0.50, generic_interior_shade_0.50,
-/// generic_exterior_shade_0.35, generic_interior_window_vis_0.88 and
+/// generic_exterior_shade_0.35, generic_context_0.20, generic_interior_window_vis_0.88 and
 /// generic_exterior_window_vis_0.64 (glass transmissivities 0.9584 and 0.6976: visible
 /// transmittances 0.88 and 0.64), air_boundary.
 const std::vector<RadianceModifier>& honeybee_generic_modifiers();
 
 /// Slots of a modifier set, as "<subset>.<field>": wall_set.exterior_modifier, ...,
 /// aperture_set.window_modifier, door_set.exterior_glass_modifier, shade_set.interior_modifier,
-/// air_boundary_modifier.
+/// air_boundary_modifier, context_modifier (detached shades, as honeybee-radiance's
+/// GlobalModifierSet gives it).
 const std::vector<std::string>& modifier_set_slots();
 
 /// The generic set's modifier for `slot` (Honeybee's default generic modifier set:

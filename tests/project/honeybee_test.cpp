@@ -301,6 +301,34 @@ TEST(Honeybee, CapitalisedTypesOfTheCurrentSchemaAndItsDefaults) {
   EXPECT_EQ(material(m, "clear").type, MaterialType::Glass);
 }
 
+TEST(Honeybee, GlobalModifierSetObjectDuplicatesAndContextShades) {
+  // As honeybee-radiance writes models: global_modifier_set is a GlobalModifierSet object with
+  // its own modifiers, and the model's list may repeat a modifier (the same definition).
+  const std::string radiance =
+      R"("modifiers": [)" + plastic("wall_g", 0.42) + ", " + plastic("wall_g", 0.42) +
+      R"(], "global_modifier_set": {"type": "GlobalModifierSet", "modifiers": [)" + plastic("floor_g", 0.3) +
+      R"(], "wall_set": {"exterior_modifier": "wall_g"}, "floor_set": {"interior_modifier": "floor_g"}})";
+  std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
+  text.insert(text.size() - 1, R"(, "orphaned_shades": [{"type": "Shade", "identifier": "tree", "is_detached": true, )" +
+                                   geometry({{0, -10, 0}, {4, -10, 0}, {4, -10, 6}}) +
+                                   R"(}, {"type": "Shade", "identifier": "awning", )" +
+                                   geometry({{0, -1, 3}, {4, -1, 3}, {4, 0, 3}}) + "}]");
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  EXPECT_EQ(surface(m, "r_north").material, "wall_g");
+  EXPECT_EQ(surface(m, "r_floor").material, "floor_g");
+  EXPECT_DOUBLE_EQ(material(m, "floor_g").reflectance.x, 0.3);
+  EXPECT_EQ(surface(m, "tree").material, "generic_context_0.20");
+  EXPECT_EQ(surface(m, "tree").role, HoneybeeRole::OutdoorShade);
+  EXPECT_EQ(surface(m, "awning").material, "generic_exterior_shade_0.35");
+  // A modifier defined twice differently is an error at the second definition.
+  std::string twice = model(room("r", box, outdoors(), outdoors()),
+                            R"("modifiers": [)" + plastic("w", 0.4) + ", " + plastic("w", 0.6) + "]");
+  const auto errors = located_errors([&] { read_honeybee_model_from_string(twice, "m.hbjson"); });
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("properties.radiance.modifiers[1] ('w'): modifier 'w' is defined twice, differently"),
+            std::string::npos) << errors[0];
+}
+
 // ---- sensor grids --------------------------------------------------------------------------
 
 TEST(Honeybee, SensorGridsInMetresWithUnitDirections) {
