@@ -5,7 +5,8 @@
 // assignment follows honeybee-radiance's ModifierSet (modifierset.py: get_face_modifier,
 // get_aperture_modifier, get_door_modifier, get_shade_modifier): an object's own modifier,
 // else its room's modifier set (the model's global_modifier_set for a room without one, and
-// for orphaned shades), a slot the set leaves empty taking the generic default.
+// for orphaned faces, apertures, doors and shades), a slot the set leaves empty taking the
+// generic default.
 //
 // Geometry: coordinates are scaled to metres; a face must be planar within the model's
 // tolerance and is then projected onto its mean plane; its apertures and doors (and its
@@ -95,13 +96,9 @@ class Reader {
     // of the scene's own polygons (1 mm).
     m_out.tolerance_m = tolerance > 0 ? tolerance * m_out.metres_per_unit : 1e-3;
 
-    for (const char* key : {"orphaned_faces", "orphaned_apertures", "orphaned_doors", "shade_meshes"}) {
-      const json* v = find(root, key);
-      if (v && !v->is_null() && !(v->is_array() && v->empty()))
-        error(key, m_out.identifier,
-              std::string("'") + key + "' is not supported: dayphoton imports rooms (with their faces, apertures, "
-              "doors and shades) and orphaned shades; put these objects into rooms, or make them shades");
-    }
+    if (const json* v = find(root, "shade_meshes"); v && !v->is_null() && !(v->is_array() && v->empty()))
+      error("shade_meshes", m_out.identifier,
+            "'shade_meshes' is not supported: dayphoton imports planar shades; export them as Shade objects");
 
     read_radiance_properties(root);
 
@@ -128,6 +125,7 @@ class Reader {
         }
       }
     }
+    read_orphans(root);
     check_shared_faces();
     read_grids(root);
     build_materials();
@@ -307,11 +305,13 @@ class Reader {
 
   // ---- surfaces ---------------------------------------------------------------------------
   void emit(const std::string& id, const std::string& path, const std::vector<Vec3>& boundary,
-            const std::vector<std::vector<Vec3>>& holes, const std::string& material, HoneybeeRole role) {
+            const std::vector<std::vector<Vec3>>& holes, const std::string& material, HoneybeeRole role,
+            PortFacing facing = PortFacing::Out) {
     if (material.empty()) return;
     HoneybeeSurface s;
     s.material = material;
     s.role = role;
+    s.facing = facing;
     s.path = path;
     s.location = m_loc.locate(path);
     if (holes.empty()) {
@@ -648,7 +648,32 @@ class Reader {
     return true;
   }
 
-  void read_face(const json& face, const std::string& path, const ModifierSet* set, const std::string& room) {
+  /// Faces, apertures and doors without a parent: the global (or generic) set's modifiers;
+  /// their openings are ports whose room side the scene decides (no room says it).
+  void read_orphans(const json& root) {
+    for (const char* key : {"orphaned_faces", "orphaned_apertures", "orphaned_doors"}) {
+      const json* list = find(root, key);
+      if (!list || list->is_null()) continue;
+      if (!list->is_array()) {
+        error(key, m_out.identifier, "expected a list, got " + kind(*list));
+        continue;
+      }
+      for (std::size_t i = 0; i < list->size(); ++i) {
+        const std::string path = json_element(key, i);
+        if (std::string(key) == "orphaned_faces") {
+          read_face((*list)[i], path, m_global, "", /*orphaned=*/true);
+        } else {
+          std::vector<Vec3> outline;
+          read_opening((*list)[i], path, std::string(key) == "orphaned_doors", nullptr, "", "Wall", nullptr, m_global,
+                       PortFacing::Auto, outline);
+        }
+      }
+    }
+  }
+
+  void read_face(const json& face, const std::string& path, const ModifierSet* set, const std::string& room,
+                 bool orphaned = false) {
+    const std::string owner = orphaned ? std::string("orphaned") : "of room '" + room + "'";
     if (!face.is_object()) {
       error(path, "", "expected a Face object, got " + kind(face));
       return;
@@ -663,7 +688,7 @@ class Reader {
     if (face_type == "AirBoundary") {
       // Honeybee's air_boundary modifier is a glass of transmissivity 1; an air boundary is
       // an opening between two parts of one space: no surface at all.
-      m_out.notes.push_back("air boundary '" + id + "' of room '" + room + "' is open (no surface)");
+      m_out.notes.push_back("air boundary '" + id + "' " + owner + " is open (no surface)");
       return;
     }
     if (!subsets.count(face_type)) {
@@ -683,7 +708,7 @@ class Reader {
       m_shared.push_back({id, adjacent, path});
       second_of_pair = m_emitted_shared.count(adjacent) > 0;
       if (second_of_pair)
-        m_out.notes.push_back("face '" + id + "' of room '" + room + "' is the far side of face '" + adjacent +
+        m_out.notes.push_back("face '" + id + "' " + owner + " is the far side of face '" + adjacent +
                               "' (one surface for a shared wall)");
       else
         m_emitted_shared.insert(id);
@@ -700,8 +725,8 @@ class Reader {
         }
         for (std::size_t k = 0; k < list->size(); ++k) {
           std::vector<Vec3> opening;
-          if (read_opening((*list)[k], json_element(lpath, k), std::string(key) == "doors", poly, id, face_type, bc, set,
-                           opening))
+          if (read_opening((*list)[k], json_element(lpath, k), std::string(key) == "doors", &poly, id, face_type, &bc, set,
+                           orphaned ? PortFacing::Auto : PortFacing::Out, opening))
             holes.push_back(std::move(opening));
         }
       }
@@ -713,9 +738,10 @@ class Reader {
     emit(id, path, poly.boundary, holes, material, HoneybeeRole::Opaque);
   }
 
-  /// An aperture or door of a face: its own surface; `outline` is the hole it cuts.
-  bool read_opening(const json& obj, const std::string& path, bool door, const Polygon3& face, const std::string& face_id,
-                    const std::string& face_type, const std::string& face_bc, const ModifierSet* set,
+  /// An aperture or door: its own surface; `outline` is the hole it cuts in its face. `face`
+  /// and `face_bc` are null for an orphaned one (then nothing to lie inside or agree with).
+  bool read_opening(const json& obj, const std::string& path, bool door, const Polygon3* face, const std::string& face_id,
+                    const std::string& face_type, const std::string* face_bc, const ModifierSet* set, PortFacing facing,
                     std::vector<Vec3>& outline) {
     const char* what = door ? "Door" : "Aperture";
     if (!obj.is_object()) {
@@ -730,9 +756,9 @@ class Reader {
             std::string("a ") + what + " takes boundary condition Outdoors or Surface, got '" + bc + "'");
       return false;
     }
-    if (bc != face_bc) {
+    if (face_bc && bc != *face_bc) {
       error(json_member(json_member(path, "boundary_condition"), "type"), id,
-            std::string("boundary condition '") + bc + "' differs from its face '" + face_id + "' ('" + face_bc +
+            std::string("boundary condition '") + bc + "' differs from its face '" + face_id + "' ('" + *face_bc +
                 "'): an opening to the outdoors needs an Outdoors face, one to another room a Surface face");
       return false;
     }
@@ -742,7 +768,8 @@ class Reader {
       error(json_member(json_member(path, "geometry"), "holes"), id, std::string("a ") + what + " with holes is not supported");
       return false;
     }
-    if (!inside_face(poly.boundary, face, json_member(json_member(path, "geometry"), "boundary"), id, face_id)) return false;
+    if (face && !inside_face(poly.boundary, *face, json_member(json_member(path, "geometry"), "boundary"), id, face_id))
+      return false;
     bool glass = !door, operable = false;
     if (door) get_bool(obj, path, id, "is_glass", glass);
     else get_bool(obj, path, id, "is_operable", operable);
@@ -758,7 +785,7 @@ class Reader {
       slot = !outdoors ? "door_set.interior_modifier" : face_type == "Wall" ? "door_set.exterior_modifier" : "door_set.overhead_modifier";
     const std::string material = object_modifier(obj, path, id, set, slot);
     const HoneybeeRole role = !glass ? HoneybeeRole::Opaque : outdoors ? HoneybeeRole::Port : HoneybeeRole::InteriorGlass;
-    emit(id, path, poly.boundary, {}, material, role);
+    emit(id, path, poly.boundary, {}, material, role, facing);
     read_shades(obj, path, set);
     outline = poly.boundary;
     return true;

@@ -108,7 +108,8 @@ void generate_polygon(const PolygonSpec& spec, detail::MaterialLookup& materials
 
 /// The surfaces of an imported Honeybee model (honeybee_model.h): apertures in Outdoors faces
 /// are ports whose normal points out of the room (Honeybee's faces point outward), tested
-/// against the scene like a polygon declared `facing: out`; outdoor shades are outdoor
+/// against the scene like a polygon declared `facing: out` (orphaned ones: `facing: auto`);
+/// outdoor shades are outdoor
 /// scatterers, like the parts of exterior systems with `port: system`.
 void generate_honeybee(const HoneybeeImport& hb, detail::MaterialLookup& materials, std::vector<Surface>& out) {
   for (const HoneybeeSurface& hs : hb.model.surfaces) {
@@ -118,7 +119,7 @@ void generate_honeybee(const HoneybeeImport& hb, detail::MaterialLookup& materia
     s.vertices = hs.vertices;
     s.location = hs.location;
     s.port = hs.role == HoneybeeRole::Port;
-    if (s.port) s.facing = PortFacing::Out;
+    if (s.port) s.facing = hs.facing;
     s.outdoor_scatterer = hs.role == HoneybeeRole::OutdoorShade;
     out.push_back(std::move(s));
   }

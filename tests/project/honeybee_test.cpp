@@ -420,12 +420,36 @@ TEST(HoneybeeErrors, UnsupportedAndUnknownModifiers) {
   EXPECT_NE(errors[2].find("modifier 'patterned' is modified by another modifier"), std::string::npos) << errors[2];
 }
 
-TEST(HoneybeeErrors, OrphanedFacesAreRefusedNotDropped) {
+TEST(HoneybeeErrors, ShadeMeshesAreRefusedNotDropped) {
   std::string text = model(room("r", box, outdoors(), outdoors()));
-  text.insert(text.size() - 1, R"(, "orphaned_faces": [{"type": "Face"}])");
+  text.insert(text.size() - 1, R"(, "shade_meshes": [{"type": "ShadeMesh"}])");
   const auto errors = located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); });
   ASSERT_EQ(errors.size(), 1u);
-  EXPECT_NE(errors[0].find("orphaned_faces ('m'): 'orphaned_faces' is not supported"), std::string::npos) << errors[0];
+  EXPECT_NE(errors[0].find("shade_meshes ('m'): 'shade_meshes' is not supported"), std::string::npos) << errors[0];
+}
+
+TEST(Honeybee, OrphanedFacesAperturesAndDoorsHaveAutoFacingPorts) {
+  // A wall without a room, with a window; a skylight and a glass door without a face.
+  const std::vector<Vec3> wall = {{0, 20, 0}, {4, 20, 0}, {4, 20, 3}, {0, 20, 3}};
+  const std::vector<Vec3> window = {{1, 20, 1}, {3, 20, 1}, {3, 20, 2}, {1, 20, 2}};
+  std::string text = model(room("r", box, outdoors(), outdoors()));
+  text.insert(text.size() - 1,
+              R"(, "orphaned_faces": [)" +
+                  face("lone_wall", "Wall", outdoors(), wall, R"(, "apertures": [)" + opening("Aperture", "lone_window", outdoors(), window) + "]") +
+                  R"(], "orphaned_apertures": [)" +
+                  opening("Aperture", "lone_skylight", outdoors(), {{0, 30, 3}, {1, 30, 3}, {1, 31, 3}, {0, 31, 3}}) +
+                  R"(], "orphaned_doors": [)" +
+                  opening("Door", "lone_door", outdoors(), {{0, 40, 0}, {1, 40, 0}, {1, 40, 2}, {0, 40, 2}}, R"(, "is_glass": true)") +
+                  "]");
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  for (const char* name : {"lone_window", "lone_skylight", "lone_door"}) {
+    EXPECT_EQ(surface(m, name).role, HoneybeeRole::Port) << name;
+    EXPECT_EQ(surface(m, name).facing, PortFacing::Auto) << name;
+  }
+  EXPECT_EQ(surface(m, "r_window").facing, PortFacing::Out);
+  EXPECT_EQ(surface(m, "lone_skylight").material, "generic_exterior_window_vis_0.64");
+  EXPECT_GT(count_prefix(m, "lone_wall:"), 0u);  // the window cut out of it
+  EXPECT_EQ(surface(m, "lone_wall:1").material, "generic_wall_0.50");
 }
 
 // ---- the project keys ----------------------------------------------------------------------

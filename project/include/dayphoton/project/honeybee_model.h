@@ -34,6 +34,9 @@ struct HoneybeeSurface {
   std::vector<Vec3> vertices;   ///< metres, model coordinates, the HBJSON winding
   std::string material;         ///< a name in HoneybeeModel::materials
   HoneybeeRole role = HoneybeeRole::Opaque;
+  /// Ports: Out for the openings of room faces (Honeybee's faces point out of their room),
+  /// Auto for orphaned apertures, doors and the openings of orphaned faces (no room to say).
+  PortFacing facing = PortFacing::Out;
   std::string path;             ///< JSON path of the object (`rooms[0].faces[2]`)
   SourceLocation location;
 };
