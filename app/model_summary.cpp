@@ -189,6 +189,14 @@ ModelSummary summarize_model(const project::Project& proj) {
     }
   for (const project::SystemSpec& system : proj.geometry.systems)
     s.system_lines.push_back(project::describe_system_light(system));
+  if (const auto& hb = proj.geometry.honeybee) {
+    const project::HoneybeeModel& m = hb->model;
+    s.honeybee_lines.push_back(hb->path_as_written + " ('" + m.identifier + "'): " + std::to_string(m.rooms.size()) +
+                               " rooms, " + std::to_string(m.surfaces.size()) + " surfaces, " +
+                               std::to_string(m.materials.size()) + " modifiers, " + std::to_string(m.grids.size()) +
+                               " sensor grids; units " + m.units + ", tolerance " + format_number(m.tolerance_m) + " m");
+    s.honeybee_lines.insert(s.honeybee_lines.end(), m.notes.begin(), m.notes.end());
+  }
   for (const project::InteriorWindow& w : project::interior_windows(proj.geometry)) {
     const std::string name = w.room + "." + w.window;
     s.interior_windows.push_back({name, w.adjoining_room, area_of(name)});
@@ -265,22 +273,25 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
     out << (i == 0 ? "sun      " : "         ") << s.sun_lines[i] << '\n';
 
   out << "surfaces " << s.surface_count << " polygons, " << s.triangle_count << " triangles\n";
-  out << "  " << std::left << std::setw(20) << "material" << std::setw(13) << "type"
+  // Material names longer than the column (imported modifiers) widen it.
+  int name_width = 20;
+  for (const MaterialArea& m : s.materials) name_width = std::max(name_width, static_cast<int>(m.name.size()) + 1);
+  out << "  " << std::left << std::setw(name_width) << "material" << std::setw(13) << "type"
       << std::right << std::setw(9) << "surfaces" << std::setw(12) << "area_m2" << '\n';
   for (const MaterialArea& m : s.materials)
-    out << "  " << std::left << std::setw(20) << m.name << std::setw(13) << m.type << std::right
+    out << "  " << std::left << std::setw(name_width) << m.name << std::setw(13) << m.type << std::right
         << std::setw(9) << m.surfaces << std::setw(12) << fixed(m.area_m2, 2) << '\n';
   bool glazing_header = false;
   for (const MaterialArea& m : s.materials) {
     if (m.transmittance.empty()) continue;
     if (!glazing_header) {
       out << "glazing  transmittance from outside (mean of RGB) by angle of incidence\n";
-      out << "  " << std::left << std::setw(20) << "material" << std::setw(24) << "kind" << std::right;
+      out << "  " << std::left << std::setw(name_width) << "material" << std::setw(24) << "kind" << std::right;
       for (double a : TransmittanceAnglesDeg) out << std::setw(8) << fixed(a, 0) + " deg";
       out << '\n';
       glazing_header = true;
     }
-    out << "  " << std::left << std::setw(20) << m.name << std::setw(24) << m.glazing << std::right;
+    out << "  " << std::left << std::setw(name_width) << m.name << std::setw(24) << m.glazing << std::right;
     for (double t : m.transmittance) out << std::setw(8) << fixed(t, 3);
     out << '\n';
     for (const std::string& pane : m.panes) out << "    " << pane << '\n';
@@ -319,6 +330,9 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
     out << "systems  " << s.system_lines.size() << '\n';
     for (const std::string& line : s.system_lines) out << "  " << line << '\n';
   }
+
+  for (std::size_t i = 0; i < s.honeybee_lines.size(); ++i)
+    out << (i == 0 ? "honeybee " : "  ") << s.honeybee_lines[i] << '\n';
 
   out << "sensors  " << s.grids.size() << (s.grids.size() == 1 ? " grid" : " grids") << '\n';
   for (const GridInfo& g : s.grids) {

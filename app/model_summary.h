@@ -81,6 +81,9 @@ struct ModelSummary {
   std::vector<InteriorWindowInfo> interior_windows;
   /// One line per daylight system: how its light is modelled (project::describe_system_light).
   std::vector<std::string> system_lines;
+  /// The imported Honeybee model (docs/honeybee-import.md): what it brought, then its notes
+  /// (faces left out: the far sides of shared walls, air boundaries).
+  std::vector<std::string> honeybee_lines;
   std::vector<GridInfo> grids;
   std::vector<std::string> placement_lines;  ///< sensor sets that dropped sensors (drop_occluded)
   SceneDescription scene;

@@ -21,6 +21,7 @@
 #include <tuple>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/project/honeybee_model.h"
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/project/project.h"
@@ -568,6 +569,7 @@ class Loader {
       if (auto sys = read_system(n, /*base=*/true)) m_project.geometry.systems.push_back(std::move(*sys));
     });
     for_each_item(r, "radiance", [&](const YamlNode& n) { g.radiance.push_back(read_radiance(n)); });
+    if (r.has("honeybee")) read_honeybee(r);
     r.finish();
   }
 
@@ -602,6 +604,35 @@ class Loader {
     spec.skip_unsupported = unsupported == "skip";
     r.finish();
     return spec;
+  }
+
+  /// `geometry.honeybee: model.hbjson`: the model is read now, so that its problems are
+  /// reported with the project's and its grids can be named in `sensors`. Its modifiers
+  /// become project materials under their identifiers (a project material of the same name
+  /// is an error: one name, one material).
+  void read_honeybee(ParamReader& r) {
+    HoneybeeImport hb;
+    m_honeybee_given = true;
+    if (!r.read_string("honeybee", hb.path_as_written)) return;
+    hb.location = r.location_of("honeybee");
+    if (!existing_file("Honeybee model", hb.path_as_written, hb.location, hb.path)) return;
+    try {
+      hb.model = read_honeybee_model(hb.path, hb.path);
+    } catch (const InputError& e) {
+      for (const Diagnostic& d : e.diagnostics()) m_reporter.forward(d);
+      return;
+    }
+    for (const MaterialSpec& m : hb.model.materials) {
+      if (m_material_names.contains(m.name)) {
+        m_reporter.error(m_material_names.first(m.name).location,
+                         "material '" + m.name + "' is also a modifier of the Honeybee model (" + m.location.to_string() +
+                             "); rename one of them");
+        continue;
+      }
+      m_material_names.add(m.name, m.location, m_reporter);
+      m_project.materials.push_back(m);
+    }
+    m_project.geometry.honeybee = std::move(hb);
   }
 
   template <typename F>
@@ -970,7 +1001,70 @@ class Loader {
     ParamReader r(node, schema_section("sensors"), m_reporter);
     for_each_item(r, "grids", [&](const YamlNode& n) { read_grid(n); });
     for_each_item(r, "points", [&](const YamlNode& n) { read_points(n); });
+    if (const YamlNode* n = r.take("honeybee_grids")) read_honeybee_grids(*n);
     r.finish();
+  }
+
+  /// `sensors.honeybee_grids`: `all`, or a list of grid identifiers and maps
+  /// {grid, name, drop_occluded}. Each grid becomes a point set (its sensors as the model
+  /// gives them), named by its identifier unless `name` says otherwise.
+  void read_honeybee_grids(const YamlNode& node) {
+    const auto& hb = m_project.geometry.honeybee;
+    if (!hb) {
+      if (m_honeybee_given) return;  // the model's own errors are reported
+      m_reporter.error(node.location, "'honeybee_grids' needs a Honeybee model (geometry: {honeybee: model.hbjson})");
+      return;
+    }
+    std::vector<std::string> identifiers;
+    for (const HoneybeeGrid& g : hb->model.grids) identifiers.push_back(g.identifier);
+    auto add = [&](const std::string& grid, const Located<std::string>& name, bool drop, const SourceLocation& at) {
+      const auto it = std::find_if(hb->model.grids.begin(), hb->model.grids.end(),
+                                   [&](const HoneybeeGrid& g) { return g.identifier == grid; });
+      if (it == hb->model.grids.end()) {
+        std::string message = "the Honeybee model has no sensor grid '" + grid + "'";
+        const std::string hint = closest_match(grid, identifiers);
+        if (!hint.empty()) message += " (did you mean '" + hint + "'?)";
+        m_reporter.error(at, message);
+        return;
+      }
+      PointsSpec p;
+      p.name = name.value;
+      p.points = it->points;
+      p.drop_occluded = drop;
+      p.location = at;
+      m_sensor_folders.add("point set", p.name, name.location, m_reporter);
+      m_sensor_names.add(p.name, name.location, m_reporter);
+      m_project.sensors.points.push_back(std::move(p));
+    };
+    if (node.is_scalar() && node.scalar == "all") {
+      if (hb->model.grids.empty())
+        m_reporter.error(node.location, "'honeybee_grids: all', but the Honeybee model has no sensor grids "
+                                        "(properties.radiance.sensor_grids)");
+      for (const std::string& id : identifiers) add(id, {id, node.location}, false, node.location);
+      return;
+    }
+    if (!node.is_sequence() || node.items.empty()) {
+      m_reporter.error(node.location, "expected 'all' or a list of sensor grid identifiers for 'honeybee_grids', got " +
+                                          node.describe());
+      return;
+    }
+    for (const YamlNode& item : node.items) {
+      if (item.is_scalar()) {
+        add(item.scalar, {item.scalar, item.location}, false, item.location);
+        continue;
+      }
+      if (!expect_map(item, "honeybee grid", m_reporter)) continue;
+      ParamReader r(item, schema_section("honeybee grid"), m_reporter);
+      std::string grid, name;
+      bool drop = false;
+      const bool have_grid = r.read_string("grid", grid);
+      Located<std::string> shown{grid, r.location_of("grid")};
+      if (r.has("name") && r.read_string("name", name)) shown = {name, r.location_of("name")};
+      else r.take("name");
+      r.read_bool("drop_occluded", drop);
+      r.finish();
+      if (have_grid) add(grid, shown, drop, item.location);
+    }
   }
 
   void read_grid(const YamlNode& node) {
@@ -1573,6 +1667,7 @@ class Loader {
   NameSet m_point_names{"point-in-time case"};
   FolderNames m_point_folders{{}, ""};
   SourceLocation m_from_weather_location;  ///< of site.from_weather (its check needs the weather key)
+  bool m_honeybee_given = false;  ///< geometry.honeybee written (read or not)
   NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
       m_roof_light_names{"roof light"},
       m_polygon_names{"polygon"}, m_box_names{"box"}, m_mesh_names{"mesh"},

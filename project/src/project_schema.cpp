@@ -167,6 +167,7 @@ std::vector<SectionSchema> build_schema() {
       P("meshes", T::SectionList, "Wavefront OBJ meshes").section("mesh"),
       P("systems", T::SectionList, "daylight systems generated from a few parameters (docs/daylight-systems.md)").section("system"),
       P("radiance", T::SectionList, "RADIANCE scene files read in place, their materials mapped (docs/radiance-import.md)").section("radiance scene"),
+      P("honeybee", T::Path, "Honeybee model (HBJSON), relative to the project file: its rooms, apertures (photon ports), doors, shades, modifiers and sensor grids (docs/honeybee-import.md)"),
   }});
   s.push_back({"radiance scene", "RADIANCE scene description files (.rad) read as oconv reads them; metres, +Y north (docs/radiance-import.md)", {
       P("files", T::NameList, "scene files read in order (a modifier must be defined before it is used), relative to the project file; each must exist").required(),
@@ -335,6 +336,12 @@ std::vector<SectionSchema> build_schema() {
   s.push_back({"sensors", "where illuminance is computed", {
       P("grids", T::SectionList, "regular grids on a room floor, a polygon, a room wall or any rectangle").section("grid"),
       P("points", T::SectionList, "explicit sensor points").section("points"),
+      P("honeybee_grids", T::Special, "sensor grids of the Honeybee model (geometry.honeybee): `all`, or a list of grid identifiers and {grid, name, drop_occluded} maps; each becomes a point set named by its identifier"),
+  }});
+  s.push_back({"honeybee grid", "one sensor grid of the Honeybee model, in `sensors.honeybee_grids`", {
+      P("grid", T::String, "identifier of a sensor grid in the model's properties.radiance.sensor_grids").required(),
+      P("name", T::String, "sensor-set name, also its output folder (default: the grid's identifier): a path name (see Names that become folders)"),
+      P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room or inside a solid (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
   }});
   // Wall and rectangle grids: frames and order in project/src/sensor_grid.cpp.
   s.push_back({"grid", "a regular sensor grid over a room floor, a polygon, a room wall or a rectangle (give exactly one of them)", {

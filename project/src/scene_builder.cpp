@@ -107,6 +107,25 @@ void generate_polygon(const PolygonSpec& spec, detail::MaterialLookup& materials
   out.push_back(std::move(s));
 }
 
+/// The surfaces of an imported Honeybee model (honeybee_model.h): apertures in Outdoors faces
+/// are ports whose normal points out of the room (Honeybee's faces point outward), tested
+/// against the scene like a polygon declared `facing: out` (orphaned ones: `facing: auto`);
+/// outdoor shades are outdoor
+/// scatterers, like the parts of exterior systems with `port: system`.
+void generate_honeybee(const HoneybeeImport& hb, detail::MaterialLookup& materials, std::vector<Surface>& out) {
+  for (const HoneybeeSurface& hs : hb.model.surfaces) {
+    Surface s;
+    s.name = hs.name;
+    s.material = materials.resolve(hs.material, hs.location, hs.path + " ('" + hs.name + "')");
+    s.vertices = hs.vertices;
+    s.location = hs.location;
+    s.port = hs.role == HoneybeeRole::Port;
+    if (s.port) s.facing = hs.facing;
+    s.outdoor_scatterer = hs.role == HoneybeeRole::OutdoorShade;
+    out.push_back(std::move(s));
+  }
+}
+
 bool written(const SystemSpec& sys, const std::string& key) {
   for (const auto& kv : sys.key_locations)
     if (kv.first == key) return true;
@@ -170,6 +189,7 @@ SceneDescription build_scene_description(const Project& project) {
   for (const MeshSpec& mesh : g.meshes) detail::generate_mesh(mesh, materials, diag, surfaces);
   for (const RadianceSceneSpec& rad : g.radiance)
     detail::generate_radiance(rad, project.materials.size(), scene.materials, diag, surfaces);
+  if (g.honeybee) generate_honeybee(*g.honeybee, materials, surfaces);
   surfaces.insert(surfaces.end(), systems.surfaces.begin(), systems.surfaces.end());
   for (const Surface& s : surfaces) detail::validate_surface(s, diag);
   scene.surfaces = std::move(surfaces);

@@ -103,9 +103,12 @@ std::string SourceText::line(int line) const {
   return m_lines[static_cast<std::size_t>(line - 1)];
 }
 
-void Reporter::error(const SourceLocation& loc, std::string message) {
-  // Messages quote names and values from the file, which YAML escapes can fill with any
-  // character: control characters (C0, DEL, C1) are shown as \xNN, never sent as they are.
+namespace {
+
+// Messages quote names and values from the file, which YAML escapes (and JSON's \u escapes)
+// can fill with any character: control characters (C0, DEL, C1) are shown as \xNN, never
+// sent as they are.
+std::string printable_message(const std::string& message) {
   std::string shown;
   for (std::size_t i = 0; i < message.size(); ++i) {
     const auto byte = static_cast<unsigned char>(message[i]);
@@ -119,7 +122,17 @@ void Reporter::error(const SourceLocation& loc, std::string message) {
       shown += message[i];
     }
   }
-  m_diagnostics.error(loc, std::move(shown), m_source.line(loc.line));
+  return shown;
+}
+
+}  // namespace
+
+void Reporter::error(const SourceLocation& loc, std::string message) {
+  m_diagnostics.error(loc, printable_message(message), m_source.line(loc.line));
+}
+
+void Reporter::forward(const Diagnostic& diagnostic) {
+  m_diagnostics.error(diagnostic.location, printable_message(diagnostic.message), diagnostic.source_line);
 }
 
 const YamlEntry* YamlNode::find(const std::string& key) const {

@@ -63,6 +63,8 @@ class Reporter {
   /// Report an error; control characters in `message` (from names quoted in it) are shown
   /// as \xNN.
   void error(const SourceLocation& loc, std::string message);
+  /// Report an error found in another input file (an HBJSON model), with its own line.
+  void forward(const Diagnostic& diagnostic);
   bool at_cap() const { return m_diagnostics.at_cap(); }
   bool has_errors() const { return m_diagnostics.has_errors(); }
   const SourceText& source() const { return m_source; }

@@ -51,6 +51,8 @@ check_case check_site_far_from_station 0 check tests/cli/cases/site_far_from_sta
 check_case check_site_from_weather 0 check tests/cli/cases/site_from_weather.yaml
 check_case check_glazing 0 check tests/cli/cases/glazing.yaml
 check_case check_roof_light_polygons 0 check tests/cli/cases/roof_light_polygons.yaml
+check_case check_honeybee 0 check projects/honeybee/project.yaml
+check_case check_honeybee_bad 1 check tests/cli/cases/honeybee_bad.yaml
 check_case check_missing_file 1 check tests/cli/cases/does_not_exist.yaml
 check_case check_school_occupancy 0 check tests/cli/cases/school/project.yaml
 check_case check_occupancy_short_csv 1 check tests/cli/cases/occupancy_short.yaml

@@ -1,0 +1,77 @@
+// Honeybee model import (HBJSON, the Model schema of ladybug-tools' honeybee-schema, with its
+// Radiance extension): rooms of faces with apertures, doors and shades, modifiers and modifier
+// sets, sensor grids, units. read_honeybee_model turns one file into surfaces with materials
+// and sensor sets in metres, model coordinates; the project file places it with
+// `geometry: {honeybee: model.hbjson}` and uses its grids with `sensors: {honeybee_grids: ...}`
+// (docs/honeybee-import.md has the whole mapping and what is refused).
+//
+// Every problem is a located error: a syntax error at the file's line:column (from
+// nlohmann-json's byte offset), a missing, mistyped or unsupported field at the line:column
+// where its object starts, naming the object's identifier and its JSON path
+// (`rooms[1].faces[3].geometry.boundary`).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/core/source_location.h"
+#include "dayphoton/core/vec3.h"
+
+namespace dayphoton::project {
+
+/// What a surface of the model is in the scene.
+enum class HoneybeeRole {
+  Opaque,         ///< room face, opaque door, indoor shade: an ordinary surface
+  Port,           ///< aperture or glass door in an Outdoors face: glazing and a photon port
+  InteriorGlass,  ///< aperture or glass door between two rooms (Surface): glazing, not a port
+  OutdoorShade,   ///< outdoor shade: an outdoor scatterer (Surface::outdoor_scatterer)
+};
+
+struct HoneybeeSurface {
+  std::string name;             ///< the object's identifier; "<identifier>:<k>" for the
+                                ///< k-th triangle of a face with holes cut in it
+  std::vector<Vec3> vertices;   ///< metres, model coordinates, the HBJSON winding
+  std::string material;         ///< a name in HoneybeeModel::materials
+  HoneybeeRole role = HoneybeeRole::Opaque;
+  /// Ports: Out for the openings of room faces (Honeybee's faces point out of their room),
+  /// Auto for orphaned apertures, doors and the openings of orphaned faces (no room to say).
+  PortFacing facing = PortFacing::Out;
+  std::string path;             ///< JSON path of the object (`rooms[0].faces[2]`)
+  SourceLocation location;
+};
+
+/// One sensor grid of `properties.radiance.sensor_grids`.
+struct HoneybeeGrid {
+  std::string identifier;
+  std::vector<SensorPoint> points;  ///< metres; normals of unit length
+  SourceLocation location;
+};
+
+struct HoneybeeModel {
+  std::string identifier;
+  std::string units;               ///< as written (Meters, Millimeters, Feet, Inches, Centimeters)
+  double metres_per_unit = 1;
+  double tolerance_m = 0.01;       ///< the model's tolerance, in metres
+  /// Every modifier a surface uses (the model's own and Honeybee's generic defaults), named by
+  /// identifier, mapped by project::radiance_material.
+  std::vector<MaterialSpec> materials;
+  std::vector<HoneybeeSurface> surfaces;
+  std::vector<HoneybeeGrid> grids;
+  std::vector<std::string> rooms;  ///< room identifiers, in file order
+  /// Faces left out, one phrase each, for `check` (the second face of each shared wall, air
+  /// boundaries).
+  std::vector<std::string> notes;
+};
+
+/// Metres per unit of a Honeybee `units` value; 0 for an unknown name.
+double honeybee_metres_per_unit(const std::string& units);
+
+/// Read and map an HBJSON file. `shown_path` is the name locations carry (the path as
+/// resolved from the project file). Throws InputError with every problem found.
+HoneybeeModel read_honeybee_model(const std::string& path, const std::string& shown_path);
+
+/// Same, from text in memory (`file` names it in locations).
+HoneybeeModel read_honeybee_model_from_string(const std::string& text, const std::string& file);
+
+}  // namespace dayphoton::project

@@ -1,0 +1,563 @@
+// Honeybee model import (project/honeybee_model.h, docs/honeybee-import.md): units, the
+// modifier precedence (own modifier, room set, global set, generic set), boundary conditions
+// (ports, interior glazing, one surface per shared wall), openings cut out of their faces,
+// sensor grids, and located errors for bad input; then the project keys that use it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/polygon.h"
+#include "dayphoton/project/honeybee_model.h"
+#include "dayphoton/project/project.h"
+#include "located_errors.h"
+
+namespace dayphoton::project {
+namespace {
+
+using test::located_errors;
+
+// ---- building HBJSON text ------------------------------------------------------------------
+
+std::string pts(const std::vector<Vec3>& p) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < p.size(); ++i)
+    s += (i ? ", [" : "[") + format_number(p[i].x) + ", " + format_number(p[i].y) + ", " + format_number(p[i].z) + "]";
+  return s + "]";
+}
+
+std::string geometry(const std::vector<Vec3>& p) {
+  return R"("geometry": {"type": "Face3D", "boundary": )" + pts(p) + "}";
+}
+
+std::string rad_modifier(const std::string& modifier) {
+  return modifier.empty() ? "" : R"(, "properties": {"radiance": {"modifier": ")" + modifier + R"("}})";
+}
+
+std::string outdoors() { return R"({"type": "Outdoors"})"; }
+std::string surface_bc(const std::string& adjacent) {
+  return R"({"type": "Surface", "boundary_condition_objects": [")" + adjacent + R"(", "x"]})";
+}
+
+std::string face(const std::string& id, const std::string& type, const std::string& bc, const std::vector<Vec3>& p,
+                 const std::string& extra = "") {
+  return R"({"type": "Face", "identifier": ")" + id + R"(", "face_type": ")" + type + R"(", "boundary_condition": )" +
+         bc + ", " + geometry(p) + extra + "}";
+}
+
+std::string opening(const char* type, const std::string& id, const std::string& bc, const std::vector<Vec3>& p,
+                    const std::string& extra = "") {
+  return std::string(R"({"type": ")") + type + R"(", "identifier": ")" + id + R"(", "boundary_condition": )" + bc +
+         ", " + geometry(p) + extra + "}";
+}
+
+/// The faces of a box room x0..x1, 0..5, 0..3 (outward, counter-clockwise seen from outside).
+struct Box {
+  double x0 = 0, x1 = 4, y1 = 5, z1 = 3;
+  std::vector<Vec3> south() const { return {{x0, 0, 0}, {x1, 0, 0}, {x1, 0, z1}, {x0, 0, z1}}; }
+  std::vector<Vec3> north() const { return {{x1, y1, 0}, {x0, y1, 0}, {x0, y1, z1}, {x1, y1, z1}}; }
+  std::vector<Vec3> west() const { return {{x0, y1, 0}, {x0, 0, 0}, {x0, 0, z1}, {x0, y1, z1}}; }
+  std::vector<Vec3> east() const { return {{x1, 0, 0}, {x1, y1, 0}, {x1, y1, z1}, {x1, 0, z1}}; }
+  std::vector<Vec3> floor() const { return {{x0, 0, 0}, {x0, y1, 0}, {x1, y1, 0}, {x1, 0, 0}}; }
+  std::vector<Vec3> ceiling() const { return {{x0, 0, z1}, {x1, 0, z1}, {x1, y1, z1}, {x0, y1, z1}}; }
+  std::vector<Vec3> window() const { return {{x0 + 1, 0, 1}, {x1 - 1, 0, 1}, {x1 - 1, 0, 2}, {x0 + 1, 0, 2}}; }
+};
+
+/// A room of Box `b`: south wall with a window (Outdoors), the other faces as given.
+std::string room(const std::string& id, const Box& b, const std::string& west_bc, const std::string& east_bc,
+                 const std::string& room_extra = "", const std::string& south_extra = "") {
+  const std::string win = opening("Aperture", id + "_window", outdoors(), b.window());
+  return R"({"type": "Room", "identifier": ")" + id + R"(", "faces": [)" +
+         face(id + "_south", "Wall", outdoors(), b.south(), R"(, "apertures": [)" + win + "]" + south_extra) + ", " +
+         face(id + "_north", "Wall", outdoors(), b.north()) + ", " + face(id + "_west", "Wall", west_bc, b.west()) + ", " +
+         face(id + "_east", "Wall", east_bc, b.east()) + ", " + face(id + "_floor", "Floor", R"({"type": "Ground"})", b.floor()) +
+         ", " + face(id + "_ceiling", "RoofCeiling", outdoors(), b.ceiling()) + "]" + room_extra + "}";
+}
+
+std::string model(const std::string& rooms, const std::string& radiance = "", const std::string& head = "") {
+  return R"({"type": "Model", "identifier": "m", )" + head + R"("rooms": [)" + rooms + "]" +
+         (radiance.empty() ? "" : R"(, "properties": {"radiance": {)" + radiance + "}}") + "}";
+}
+
+const HoneybeeSurface& surface(const HoneybeeModel& m, const std::string& name) {
+  for (const HoneybeeSurface& s : m.surfaces)
+    if (s.name == name) return s;
+  throw std::runtime_error("no surface " + name);
+}
+
+std::size_t count_prefix(const HoneybeeModel& m, const std::string& prefix) {
+  std::size_t n = 0;
+  for (const HoneybeeSurface& s : m.surfaces) n += s.name.rfind(prefix, 0) == 0;
+  return n;
+}
+
+const MaterialSpec& material(const HoneybeeModel& m, const std::string& name) {
+  for (const MaterialSpec& s : m.materials)
+    if (s.name == name) return s;
+  throw std::runtime_error("no material " + name);
+}
+
+const Box box;
+
+// ---- geometry ------------------------------------------------------------------------------
+
+TEST(Honeybee, OneRoomHasPortsFacesAndItsWindowCutOut) {
+  const HoneybeeModel m = read_honeybee_model_from_string(model(room("r", box, outdoors(), outdoors())), "m.hbjson");
+  ASSERT_EQ(m.rooms, std::vector<std::string>{"r"});
+  const HoneybeeSurface& w = surface(m, "r_window");
+  EXPECT_EQ(w.role, HoneybeeRole::Port);
+  EXPECT_EQ(w.material, "generic_exterior_window_vis_0.64");
+  // The window's normal points out of the room (-y), as Honeybee draws it.
+  EXPECT_NEAR(polygon_normal(w.vertices).y, -1, 1e-12);
+  // The south wall is cut into triangles covering the wall minus the window: 12 - 2 m2.
+  double area = 0;
+  for (const HoneybeeSurface& s : m.surfaces)
+    if (s.name.rfind("r_south:", 0) == 0) {
+      area += polygon_area_m2(s.vertices);
+      EXPECT_NEAR(polygon_normal(s.vertices).y, -1, 1e-12) << s.name;  // the wall's winding kept
+      EXPECT_EQ(s.material, "generic_wall_0.50");
+    }
+  EXPECT_NEAR(area, 12.0 - 2.0, 1e-9);
+  EXPECT_EQ(surface(m, "r_north").vertices.size(), 4u);  // no opening: one polygon
+  EXPECT_EQ(surface(m, "r_floor").material, "generic_floor_0.20");
+  EXPECT_EQ(surface(m, "r_ceiling").material, "generic_ceiling_0.80");
+  // Honeybee's generic glass is given by its transmissivity (0.6976); through the RADIANCE
+  // mapping it is the visible transmittance its name states, 0.64.
+  EXPECT_NEAR(material(m, "generic_exterior_window_vis_0.64").transmittance.y, 0.64, 5e-5);
+  EXPECT_DOUBLE_EQ(material(m, "generic_wall_0.50").reflectance.x, 0.5);
+}
+
+TEST(Honeybee, FaceWithTwoHolesIsTriangulatedToItsArea) {
+  // A floor 4 x 5 with two holes given as Face3D holes (either winding).
+  const std::string holes =
+      R"(, "holes": [[[1, 1, 0], [1, 2, 0], [2, 2, 0], [2, 1, 0]], [[3, 3, 0], [3.5, 3, 0], [3.5, 4, 0]]])";
+  std::string text = model(room("r", box, outdoors(), outdoors()));
+  const std::string floor_geometry = geometry(box.floor());
+  text.replace(text.find(floor_geometry), floor_geometry.size(),
+               floor_geometry.substr(0, floor_geometry.size() - 1) + holes + "}");
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  double area = 0;
+  for (const HoneybeeSurface& s : m.surfaces)
+    if (s.name.rfind("r_floor:", 0) == 0) {
+      area += polygon_area_m2(s.vertices);
+      EXPECT_NEAR(polygon_normal(s.vertices).z, -1, 1e-12);
+    }
+  EXPECT_NEAR(area, 20.0 - 1.0 - 0.25, 1e-9);
+}
+
+TEST(Honeybee, UnitsAreConvertedToMetres) {
+  for (const auto& [units, scale] : std::map<std::string, double>{
+           {"Millimeters", 0.001}, {"Centimeters", 0.01}, {"Feet", 0.3048}, {"Inches", 0.0254}, {"Meters", 1.0}}) {
+    // The same numbers in each unit; tolerance 0.01 units.
+    const HoneybeeModel m = read_honeybee_model_from_string(
+        model(room("r", box, outdoors(), outdoors()), "", R"("units": ")" + units + R"(", "tolerance": 0.01, )"),
+        "m.hbjson");
+    EXPECT_DOUBLE_EQ(m.metres_per_unit, scale) << units;
+    EXPECT_DOUBLE_EQ(m.tolerance_m, 0.01 * scale) << units;
+    const HoneybeeSurface& n = surface(m, "r_north");
+    EXPECT_NEAR(n.vertices[0].x, 4 * scale, 1e-12) << units;
+    EXPECT_NEAR(n.vertices[0].y, 5 * scale, 1e-12) << units;
+  }
+  EXPECT_EQ(located_errors([] {
+              read_honeybee_model_from_string(model(room("r", box, outdoors(), outdoors()), "", R"("units": "Furlongs", )"),
+                                              "m.hbjson");
+            }),
+            std::vector<std::string>{"1:47: units ('m'): unknown units 'Furlongs' (Meters, Millimeters, Centimeters, Feet or Inches)"});
+}
+
+TEST(Honeybee, SharedWallIsOneSurfaceAndItsWindowInteriorGlass) {
+  Box east = box;
+  east.x0 = 4;
+  east.x1 = 8;
+  // An interior aperture in the shared wall x = 4, in both faces (opposite windings).
+  const std::vector<Vec3> in_west = {{4, 1, 1}, {4, 2, 1}, {4, 2, 2}, {4, 1, 2}};
+  const std::vector<Vec3> in_east = {{4, 2, 1}, {4, 1, 1}, {4, 1, 2}, {4, 2, 2}};
+  std::string a = room("a", box, outdoors(), surface_bc("b_west"));
+  std::string b = room("b", east, surface_bc("a_east"), outdoors());
+  const std::string a_east = face("a_east", "Wall", surface_bc("b_west"), box.east());
+  a.replace(a.find(a_east), a_east.size(),
+            face("a_east", "Wall", surface_bc("b_west"), box.east(),
+                 R"(, "apertures": [)" + opening("Aperture", "a_inner", surface_bc("b_inner"), in_west) + "]"));
+  const std::string b_west = face("b_west", "Wall", surface_bc("a_east"), east.west());
+  b.replace(b.find(b_west), b_west.size(),
+            face("b_west", "Wall", surface_bc("a_east"), east.west(),
+                 R"(, "apertures": [)" + opening("Aperture", "b_inner", surface_bc("a_inner"), in_east) + "]"));
+  const HoneybeeModel m = read_honeybee_model_from_string(model(a + ", " + b), "m.hbjson");
+  EXPECT_GT(count_prefix(m, "a_east:"), 0u);          // the first face of the pair, cut
+  EXPECT_EQ(count_prefix(m, "b_west"), 0u);           // its far side left out
+  EXPECT_EQ(count_prefix(m, "b_inner"), 0u);
+  const HoneybeeSurface& inner = surface(m, "a_inner");
+  EXPECT_EQ(inner.role, HoneybeeRole::InteriorGlass);
+  EXPECT_EQ(inner.material, "generic_interior_window_vis_0.88");
+  EXPECT_EQ(surface(m, "a_window").role, HoneybeeRole::Port);
+  EXPECT_EQ(surface(m, "b_window").role, HoneybeeRole::Port);
+  // Interior faces take the interior modifiers; the ground floor too (only Outdoors is exterior).
+  EXPECT_EQ(surface(m, "a_east:1").material, "generic_wall_0.50");
+  ASSERT_EQ(m.notes.size(), 1u);
+  EXPECT_NE(m.notes[0].find("'b_west'"), std::string::npos);
+}
+
+TEST(Honeybee, ShadesDoorsAndAirBoundaries) {
+  const std::string overhang = R"(, "outdoor_shades": [{"type": "Shade", "identifier": "oh", )" +
+                               geometry({{1, 0, 2.1}, {1, -0.5, 2.1}, {3, -0.5, 2.1}, {3, 0, 2.1}}) + "}]";
+  const std::string door = R"(, "doors": [)" +
+                           opening("Door", "d", outdoors(), {{0.2, 0, 0}, {0.8, 0, 0}, {0.8, 0, 2}, {0.2, 0, 2}}) + ", " +
+                           opening("Door", "gd", outdoors(), {{3.2, 0, 0}, {3.8, 0, 0}, {3.8, 0, 2}, {3.2, 0, 2}},
+                                   R"(, "is_glass": true)") +
+                           "]";
+  const std::string desk = R"(, "indoor_shades": [{"type": "Shade", "identifier": "desk", )" +
+                           geometry({{1, 1, 0.7}, {2, 1, 0.7}, {2, 2, 0.7}, {1, 2, 0.7}}) + "}]";
+  std::string text = model(room("r", box, outdoors(), outdoors(), desk, overhang + door));
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  EXPECT_EQ(surface(m, "oh").role, HoneybeeRole::OutdoorShade);
+  EXPECT_EQ(surface(m, "oh").material, "generic_exterior_shade_0.35");
+  EXPECT_EQ(surface(m, "desk").role, HoneybeeRole::Opaque);
+  EXPECT_EQ(surface(m, "desk").material, "generic_interior_shade_0.50");
+  EXPECT_EQ(surface(m, "d").role, HoneybeeRole::Opaque);
+  EXPECT_EQ(surface(m, "d").material, "generic_opaque_door_0.50");
+  EXPECT_EQ(surface(m, "gd").role, HoneybeeRole::Port);
+  EXPECT_EQ(surface(m, "gd").material, "generic_exterior_window_vis_0.64");
+  double wall = 0;
+  for (const HoneybeeSurface& s : m.surfaces)
+    if (s.name.rfind("r_south:", 0) == 0) wall += polygon_area_m2(s.vertices);
+  EXPECT_NEAR(wall, 12.0 - 2.0 - 1.2 - 1.2, 1e-9);
+}
+
+// ---- modifiers -----------------------------------------------------------------------------
+
+std::string plastic(const std::string& id, double r) {
+  const std::string v = format_number(r);
+  return R"({"type": "plastic", "identifier": ")" + id + R"(", "r_reflectance": )" + v + R"(, "g_reflectance": )" + v +
+         R"(, "b_reflectance": )" + v + "}";
+}
+
+TEST(Honeybee, ModifierPrecedenceOwnThenRoomSetThenGlobalSetThenGeneric) {
+  const std::string radiance =
+      R"("modifiers": [)" + plastic("own", 0.1) + ", " + plastic("room_wall", 0.3) + ", " + plastic("global_wall", 0.4) +
+      ", " + plastic("global_floor", 0.6) +
+      R"(], "modifier_sets": [)"
+      R"({"type": "ModifierSetAbridged", "identifier": "room_set", "wall_set": {"exterior_modifier": "room_wall"}},)"
+      R"({"type": "ModifierSetAbridged", "identifier": "global_set", "wall_set": {"exterior_modifier": "global_wall"},)"
+      R"( "floor_set": {"interior_modifier": "global_floor"}}], "global_modifier_set": "global_set")";
+  Box other = box;
+  other.x0 = 10;
+  other.x1 = 14;
+  std::string with_set = room("s", other, outdoors(), outdoors(),
+                              R"(, "properties": {"radiance": {"modifier_set": "room_set"}})");
+  std::string plain = room("g", box, outdoors(), outdoors());
+  // One face of the plain room names its own modifier.
+  const std::string north = face("g_north", "Wall", outdoors(), box.north());
+  plain.replace(plain.find(north), north.size(), face("g_north", "Wall", outdoors(), box.north(), rad_modifier("own")));
+  const HoneybeeModel m = read_honeybee_model_from_string(model(plain + ", " + with_set, radiance), "m.hbjson");
+  EXPECT_EQ(surface(m, "g_north").material, "own");               // its own
+  EXPECT_EQ(surface(m, "g_west").material, "global_wall");        // no room set: the global set
+  EXPECT_EQ(surface(m, "g_floor").material, "global_floor");
+  EXPECT_EQ(surface(m, "s_west").material, "room_wall");          // the room's set
+  EXPECT_EQ(surface(m, "s_floor").material, "generic_floor_0.20");  // a slot the room set leaves empty: generic
+  EXPECT_EQ(surface(m, "s_ceiling").material, "generic_ceiling_0.80");
+  EXPECT_DOUBLE_EQ(material(m, "own").reflectance.x, 0.1);
+  EXPECT_DOUBLE_EQ(material(m, "room_wall").reflectance.y, 0.3);
+}
+
+TEST(Honeybee, FullModifierSetGivesModifiersInline) {
+  const std::string radiance =
+      R"("modifier_sets": [{"type": "ModifierSet", "identifier": "full", "wall_set": {"exterior_modifier": )" +
+      plastic("inline_wall", 0.45) + R"(}}], "global_modifier_set": "full")";
+  const HoneybeeModel m = read_honeybee_model_from_string(model(room("r", box, outdoors(), outdoors()), radiance), "m.hbjson");
+  EXPECT_EQ(surface(m, "r_west").material, "inline_wall");
+  EXPECT_DOUBLE_EQ(material(m, "inline_wall").reflectance.z, 0.45);
+}
+
+TEST(Honeybee, CapitalisedTypesOfTheCurrentSchemaAndItsDefaults) {
+  // honeybee-schema's modifier.py: "Plastic", "Metal" (specularity 0.9 by default), "Mirror"
+  // (reflectance 1 by default), "Trans", "Glass"; a "Void" base modifier is no modifier.
+  const std::string radiance =
+      R"("modifiers": [{"type": "Metal", "identifier": "steel", "r_reflectance": 0.6, "g_reflectance": 0.6,)"
+      R"( "b_reflectance": 0.6, "modifier": {"type": "Void"}}, {"type": "Mirror", "identifier": "silver"},)"
+      R"( {"type": "Trans", "identifier": "diffuser", "r_reflectance": 0.5, "g_reflectance": 0.5, "b_reflectance": 0.5,)"
+      R"( "transmitted_diff": 0.4, "transmitted_spec": 0.1},)"
+      R"( {"type": "Glass", "identifier": "clear", "r_transmissivity": 0.9, "g_transmissivity": 0.9, "b_transmissivity": 0.9}])";
+  std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
+  for (const auto& [face_name, modifier] : std::map<std::string, std::string>{
+           {"r_north", "steel"}, {"r_west", "silver"}, {"r_east", "diffuser"}}) {
+    const std::vector<Vec3> pts_of = face_name == "r_north" ? box.north() : face_name == "r_west" ? box.west() : box.east();
+    const std::string f = face(face_name, "Wall", outdoors(), pts_of);
+    text.replace(text.find(f), f.size(), face(face_name, "Wall", outdoors(), pts_of, rad_modifier(modifier)));
+  }
+  const std::string w = opening("Aperture", "r_window", outdoors(), box.window());
+  text.replace(text.find(w), w.size(), opening("Aperture", "r_window", outdoors(), box.window(), rad_modifier("clear")));
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  EXPECT_EQ(material(m, "steel").type, MaterialType::Metal);
+  EXPECT_DOUBLE_EQ(material(m, "steel").specularity, 0.9);
+  EXPECT_EQ(material(m, "silver").type, MaterialType::Mirror);
+  EXPECT_DOUBLE_EQ(material(m, "silver").reflectance.y, 1.0);
+  EXPECT_EQ(material(m, "diffuser").type, MaterialType::Translucent);
+  EXPECT_DOUBLE_EQ(material(m, "diffuser").transmissivity, 0.4);
+  EXPECT_DOUBLE_EQ(material(m, "diffuser").transmitted_specular, 0.1);
+  EXPECT_EQ(material(m, "clear").type, MaterialType::Glass);
+}
+
+TEST(Honeybee, GlobalModifierSetObjectDuplicatesAndContextShades) {
+  // As honeybee-radiance writes models: global_modifier_set is a GlobalModifierSet object with
+  // its own modifiers, and the model's list may repeat a modifier (the same definition).
+  const std::string radiance =
+      R"("modifiers": [)" + plastic("wall_g", 0.42) + ", " + plastic("wall_g", 0.42) +
+      R"(], "global_modifier_set": {"type": "GlobalModifierSet", "modifiers": [)" + plastic("floor_g", 0.3) +
+      R"(], "wall_set": {"exterior_modifier": "wall_g"}, "floor_set": {"interior_modifier": "floor_g"}})";
+  std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
+  text.insert(text.size() - 1, R"(, "orphaned_shades": [{"type": "Shade", "identifier": "tree", "is_detached": true, )" +
+                                   geometry({{0, -10, 0}, {4, -10, 0}, {4, -10, 6}}) +
+                                   R"(}, {"type": "Shade", "identifier": "awning", )" +
+                                   geometry({{0, -1, 3}, {4, -1, 3}, {4, 0, 3}}) + "}]");
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  EXPECT_EQ(surface(m, "r_north").material, "wall_g");
+  EXPECT_EQ(surface(m, "r_floor").material, "floor_g");
+  EXPECT_DOUBLE_EQ(material(m, "floor_g").reflectance.x, 0.3);
+  EXPECT_EQ(surface(m, "tree").material, "generic_context_0.20");
+  EXPECT_EQ(surface(m, "tree").role, HoneybeeRole::OutdoorShade);
+  EXPECT_EQ(surface(m, "awning").material, "generic_exterior_shade_0.35");
+  // A modifier defined twice differently is an error at the second definition.
+  std::string twice = model(room("r", box, outdoors(), outdoors()),
+                            R"("modifiers": [)" + plastic("w", 0.4) + ", " + plastic("w", 0.6) + "]");
+  const auto errors = located_errors([&] { read_honeybee_model_from_string(twice, "m.hbjson"); });
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("properties.radiance.modifiers[1] ('w'): modifier 'w' is defined twice, differently"),
+            std::string::npos) << errors[0];
+}
+
+// ---- sensor grids --------------------------------------------------------------------------
+
+TEST(Honeybee, SensorGridsInMetresWithUnitDirections) {
+  const std::string grids =
+      R"("sensor_grids": [{"type": "SensorGrid", "identifier": "g1", "sensors": [)"
+      R"({"pos": [1000, 2000, 800], "dir": [0, 0, 2]}, {"pos": [2000, 2000, 800], "dir": [0, 0, 1]}]}])";
+  Box mm;
+  mm.x1 = 4000;
+  mm.y1 = 5000;
+  mm.z1 = 3000;
+  std::string rooms = room("r", mm, outdoors(), outdoors());
+  const HoneybeeModel m =
+      read_honeybee_model_from_string(model(rooms, grids, R"("units": "Millimeters", "tolerance": 1, )"), "m.hbjson");
+  ASSERT_EQ(m.grids.size(), 1u);
+  EXPECT_EQ(m.grids[0].identifier, "g1");
+  ASSERT_EQ(m.grids[0].points.size(), 2u);
+  EXPECT_NEAR(m.grids[0].points[0].position.x, 1.0, 1e-12);
+  EXPECT_NEAR(m.grids[0].points[0].position.z, 0.8, 1e-12);
+  EXPECT_DOUBLE_EQ(m.grids[0].points[0].normal.z, 1.0);
+}
+
+// ---- located errors ------------------------------------------------------------------------
+
+TEST(HoneybeeErrors, SyntaxErrorAtLineAndColumn) {
+  const std::string text = "{\n  \"type\": \"Model\",\n  \"rooms\": [,]\n}\n";
+  const auto errors = located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); }, "m.hbjson");
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].substr(0, 5), "3:13:") << errors[0];
+  EXPECT_NE(errors[0].find("not valid JSON"), std::string::npos) << errors[0];
+}
+
+TEST(HoneybeeErrors, DeepNestingIsRefusedWhereItIsReached) {
+  // Valid JSON, but 65 levels deep: the located scan would recurse once per level.
+  const std::string text = "{\"rooms\":\n" + std::string(64, '[') + std::string(64, ']') + "}";
+  EXPECT_EQ(located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); }),
+            std::vector<std::string>{"2:64: the JSON nests deeper than 64 levels; a Honeybee model needs about 12"});
+}
+
+TEST(HoneybeeErrors, MissingFieldNamesPathIdentifierAndLine) {
+  const std::string text =
+      "{\"type\": \"Model\", \"identifier\": \"m\", \"rooms\": [\n"
+      "  {\"type\": \"Room\", \"identifier\": \"r\", \"faces\": [\n"
+      "    {\"type\": \"Face\", \"identifier\": \"f0\", \"face_type\": \"Floor\", \"boundary_condition\": {\"type\": \"Ground\"}}\n"
+      "  ]}\n"
+      "]}\n";
+  EXPECT_EQ(located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); }),
+            std::vector<std::string>{"3:5: rooms[0].faces[0] ('f0'): missing required field 'geometry'"});
+}
+
+TEST(HoneybeeErrors, OddValuesAreLocatedAtTheirField) {
+  std::string text = model(room("r", box, outdoors(), outdoors()));
+  // A boundary condition Honeybee does not have, a non-planar face, an aperture outside its face.
+  const std::string west = face("r_west", "Wall", outdoors(), box.west());
+  text.replace(text.find(west), west.size(), face("r_west", "Wall", R"({"type": "Sky"})", box.west()));
+  const std::string north = face("r_north", "Wall", outdoors(), box.north());
+  text.replace(text.find(north), north.size(),
+               face("r_north", "Wall", outdoors(), {{4, 5, 0}, {0, 5, 0}, {0, 5.3, 3}, {4, 5, 3}}));
+  const std::string win = geometry(box.window());
+  text.replace(text.find(win), win.size(), geometry({{1, 0, 1}, {5, 0, 1}, {5, 0, 2}, {1, 0, 2}}));
+  const auto errors = located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); });
+  ASSERT_EQ(errors.size(), 3u);
+  EXPECT_NE(errors[0].find("rooms[0].faces[0].apertures[0].geometry.boundary ('r_window'): is not inside its face 'r_south'"),
+            std::string::npos) << errors[0];
+  EXPECT_NE(errors[1].find("rooms[0].faces[1].geometry.boundary ('r_north'): not planar: a vertex is"), std::string::npos)
+      << errors[1];
+  EXPECT_NE(errors[2].find("rooms[0].faces[2].boundary_condition.type ('r_west'): unknown boundary condition 'Sky'"),
+            std::string::npos) << errors[2];
+  // Each is located at its own column of the one-line text.
+  EXPECT_EQ(errors[0].substr(0, 2), "1:");
+}
+
+TEST(HoneybeeErrors, UnsupportedAndUnknownModifiers) {
+  const std::string radiance =
+      R"("modifiers": [{"type": "BSDF", "identifier": "blind", "bsdf_data": "x"},)"
+      R"( {"type": "plastic", "identifier": "patterned", "r_reflectance": 0.5, "modifier": {"type": "brightfunc"}}])";
+  std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
+  const std::string north = face("r_north", "Wall", outdoors(), box.north());
+  text.replace(text.find(north), north.size(), face("r_north", "Wall", outdoors(), box.north(), rad_modifier("blind")));
+  const std::string west = face("r_west", "Wall", outdoors(), box.west());
+  text.replace(text.find(west), west.size(), face("r_west", "Wall", outdoors(), box.west(), rad_modifier("patterned")));
+  const std::string east = face("r_east", "Wall", outdoors(), box.east());
+  text.replace(text.find(east), east.size(), face("r_east", "Wall", outdoors(), box.east(), rad_modifier("nothing")));
+  const auto errors = located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); });
+  ASSERT_EQ(errors.size(), 3u) << ::testing::PrintToString(errors);
+  EXPECT_NE(errors[0].find("rooms[0].faces[3].properties.radiance.modifier ('r_east'): unknown modifier 'nothing'"),
+            std::string::npos) << errors[0];
+  EXPECT_NE(errors[1].find("properties.radiance.modifiers[0] ('blind'): modifier 'blind' has type 'BSDF'"), std::string::npos)
+      << errors[1];
+  EXPECT_NE(errors[2].find("modifier 'patterned' is modified by another modifier"), std::string::npos) << errors[2];
+}
+
+TEST(HoneybeeErrors, ShadeMeshesAreRefusedNotDropped) {
+  std::string text = model(room("r", box, outdoors(), outdoors()));
+  text.insert(text.size() - 1, R"(, "shade_meshes": [{"type": "ShadeMesh"}])");
+  const auto errors = located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); });
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("shade_meshes ('m'): 'shade_meshes' is not supported"), std::string::npos) << errors[0];
+}
+
+TEST(Honeybee, OrphanedFacesAperturesAndDoorsHaveAutoFacingPorts) {
+  // A wall without a room, with a window; a skylight and a glass door without a face.
+  const std::vector<Vec3> wall = {{0, 20, 0}, {4, 20, 0}, {4, 20, 3}, {0, 20, 3}};
+  const std::vector<Vec3> window = {{1, 20, 1}, {3, 20, 1}, {3, 20, 2}, {1, 20, 2}};
+  std::string text = model(room("r", box, outdoors(), outdoors()));
+  text.insert(text.size() - 1,
+              R"(, "orphaned_faces": [)" +
+                  face("lone_wall", "Wall", outdoors(), wall, R"(, "apertures": [)" + opening("Aperture", "lone_window", outdoors(), window) + "]") +
+                  R"(], "orphaned_apertures": [)" +
+                  opening("Aperture", "lone_skylight", outdoors(), {{0, 30, 3}, {1, 30, 3}, {1, 31, 3}, {0, 31, 3}}) +
+                  R"(], "orphaned_doors": [)" +
+                  opening("Door", "lone_door", outdoors(), {{0, 40, 0}, {1, 40, 0}, {1, 40, 2}, {0, 40, 2}}, R"(, "is_glass": true)") +
+                  "]");
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  for (const char* name : {"lone_window", "lone_skylight", "lone_door"}) {
+    EXPECT_EQ(surface(m, name).role, HoneybeeRole::Port) << name;
+    EXPECT_EQ(surface(m, name).facing, PortFacing::Auto) << name;
+  }
+  EXPECT_EQ(surface(m, "r_window").facing, PortFacing::Out);
+  EXPECT_EQ(surface(m, "lone_skylight").material, "generic_exterior_window_vis_0.64");
+  EXPECT_GT(count_prefix(m, "lone_wall:"), 0u);  // the window cut out of it
+  EXPECT_EQ(surface(m, "lone_wall:1").material, "generic_wall_0.50");
+}
+
+// ---- the project keys ----------------------------------------------------------------------
+
+struct TempDir {
+  std::string path;
+  TempDir() {
+    char pattern[] = "/tmp/dayphoton_hb_XXXXXX";
+    path = mkdtemp(pattern);
+  }
+  ~TempDir() { std::system(("rm -rf '" + path + "'").c_str()); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path + "/" + name) << text;
+    return path + "/" + name;
+  }
+};
+
+const char* const ProjectHead = R"(version: 1
+site: {latitude: 37.7, longitude: -122.2, time_zone: -8}
+materials:
+  grey: {type: lambertian, reflectance: 0.5}
+outputs: {annual_illuminance: false, metrics: false}
+)";
+
+std::string two_grids() {
+  return R"("sensor_grids": [)"
+         R"({"identifier": "north", "sensors": [{"pos": [2, 4, 0.8], "dir": [0, 0, 1]}]},)"
+         R"({"identifier": "south", "sensors": [{"pos": [2, 1, 0.8], "dir": [0, 0, 1]}, {"pos": [3, 1, 0.8], "dir": [0, 0, 1]}]}])";
+}
+
+TEST(HoneybeeProject, GridsAllOrByIdentifierBecomePointSets) {
+  TempDir dir;
+  dir.write("model.hbjson", model(room("r", box, outdoors(), outdoors()), two_grids()));
+  const std::string yaml = dir.write("p.yaml", std::string(ProjectHead) +
+                                                   "geometry: {honeybee: model.hbjson}\n"
+                                                   "sensors:\n  honeybee_grids: all\n");
+  const Project all = load_project(yaml);
+  ASSERT_TRUE(all.geometry.honeybee.has_value());
+  ASSERT_EQ(all.sensors.points.size(), 2u);
+  EXPECT_EQ(all.sensors.points[0].name, "north");
+  EXPECT_EQ(all.sensors.points[1].points.size(), 2u);
+  // The modifiers the model uses are project materials; the scene has its surfaces and port.
+  EXPECT_GE(all.materials.size(), 5u);
+  const SceneDescription scene = build_scene_description(all);
+  int ports = 0;
+  for (const Surface& s : scene.surfaces) ports += s.port ? 1 : 0;
+  EXPECT_EQ(ports, 1);
+  ASSERT_EQ(scene.grids.size(), 2u);
+
+  const std::string by_id = dir.write("q.yaml", std::string(ProjectHead) +
+                                                    "geometry: {honeybee: model.hbjson}\n"
+                                                    "sensors:\n  honeybee_grids: [south, {grid: north, name: back}]\n");
+  const Project some = load_project(by_id);
+  ASSERT_EQ(some.sensors.points.size(), 2u);
+  EXPECT_EQ(some.sensors.points[0].name, "south");
+  EXPECT_EQ(some.sensors.points[1].name, "back");
+}
+
+TEST(HoneybeeProject, VariantReplacesAnImportedModifierByName) {
+  TempDir dir;
+  dir.write("model.hbjson", model(room("r", box, outdoors(), outdoors()), two_grids()));
+  const std::string yaml = dir.write("p.yaml", std::string(ProjectHead) +
+                                                   "geometry: {honeybee: model.hbjson}\n"
+                                                   "sensors: {honeybee_grids: all}\n"
+                                                   "variants:\n"
+                                                   "  - name: low_e\n"
+                                                   "    materials:\n"
+                                                   "      generic_exterior_window_vis_0.64: {type: glass, transmittance: 0.4}\n");
+  const Project base = load_project(yaml);
+  ASSERT_EQ(base.variants.size(), 1u);
+  const SceneDescription scene = build_scene_description(apply_variant(base, base.variants[0]));
+  bool found = false;
+  for (const Surface& s : scene.surfaces)
+    if (s.port) {
+      EXPECT_DOUBLE_EQ(scene.materials[static_cast<std::size_t>(s.material)].transmittance.x, 0.4);
+      found = true;
+    }
+  EXPECT_TRUE(found);
+  // A project material named like a modifier the model uses is an error at the project's name.
+  const std::string clash = dir.write("c.yaml",
+                                      "version: 1\n"
+                                      "site: {latitude: 37.7, longitude: -122.2, time_zone: -8}\n"
+                                      "materials:\n"
+                                      "  generic_wall_0.50: {type: lambertian, reflectance: 0.1}\n"
+                                      "outputs: {annual_illuminance: false, metrics: false}\n"
+                                      "geometry: {honeybee: model.hbjson}\n");
+  const auto errors = located_errors([&] { load_project(clash); });
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].substr(0, 4), "4:3:");
+  EXPECT_NE(errors[0].find("material 'generic_wall_0.50' is also a modifier of the Honeybee model"), std::string::npos)
+      << errors[0];
+}
+
+TEST(HoneybeeProject, UnknownGridHintAndErrorsOfTheModelAreReported) {
+  TempDir dir;
+  dir.write("model.hbjson", model(room("r", box, outdoors(), outdoors()), two_grids()));
+  const std::string yaml = dir.write("p.yaml", std::string(ProjectHead) +
+                                                   "geometry: {honeybee: model.hbjson}\n"
+                                                   "sensors:\n  honeybee_grids: [soth]\n");
+  EXPECT_EQ(located_errors([&] { load_project(yaml); }),
+            std::vector<std::string>{"8:20: the Honeybee model has no sensor grid 'soth' (did you mean 'south'?)"});
+  // An error inside the model is reported in the model's file, at its line.
+  dir.write("bad.hbjson", "{\"type\": \"Model\",\n \"rooms\": 3}\n");
+  const std::string bad = dir.write("b.yaml", std::string(ProjectHead) + "geometry: {honeybee: bad.hbjson}\n"
+                                                                         "sensors: {honeybee_grids: all}\n");
+  EXPECT_EQ(located_errors([&] { load_project(bad); }, dir.path + "/bad.hbjson"),
+            std::vector<std::string>{"2:11: rooms: expected a list of rooms, got a number"});
+}
+
+}  // namespace
+}  // namespace dayphoton::project
