@@ -716,7 +716,13 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     }
     if (project.outputs.daylight_factor) {
       const std::vector<double> df = daylight_factor_percent(c, overcast_vector, OvercastHorizontalLux);
-      write_daylight_factor_csv(grid.points, df, join(folder, "daylight_factor.csv"));
+      // The Monte Carlo standard error beside each value (engine/estimate_variance.h).
+      const engine::DaylightCoefficients& dc = *coefficients[g];
+      std::vector<double> variance(dc.sensors * dc.sources);
+      for (std::size_t i = 0; i < variance.size(); ++i) variance[i] = dc.direct_variance[i] + dc.photon_variance[i];
+      const std::vector<double> df_stderr =
+          daylight_factor_stderr_percent(variance, dc.sensors, overcast_vector, OvercastHorizontalLux);
+      write_daylight_factor_csv(grid.points, df, join(folder, "daylight_factor.csv"), df_stderr);
       ctx.outputs.record(join(folder, "daylight_factor.csv"));
       const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent);
       nlohmann::json areas = nlohmann::json::array();
@@ -725,6 +731,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       gj["daylight_factor_percent"] = {{"mean", st.mean}, {"median", st.median}, {"min", st.min},
                                        {"max", st.max}, {"uniformity", st.uniformity},
                                        {"area_at_or_above", areas}};
+      const DaylightFactorUncertainty u = daylight_factor_uncertainty(df, df_stderr);
+      gj["uncertainty"] = {{"df_rms_relative_stderr_percent", u.rms_relative_stderr_percent},
+                           {"df_max_relative_stderr_percent", u.max_relative_stderr_percent},
+                           {"sensors_with_daylight", u.sensors_with_light}};
     }
     grids_json.push_back(gj);
   }

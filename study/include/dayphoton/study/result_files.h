@@ -16,9 +16,11 @@ void write_sensors_csv(const std::vector<SensorPoint>& sensors, const std::strin
 /// InputError located file:line:field on a wrong header, a non-number or an index out of
 /// sequence.
 std::vector<SensorPoint> read_sensors_csv(const std::string& path);
-/// daylight_factor.csv: index,x,y,z,df_percent (4 decimals).
+/// daylight_factor.csv: index,x,y,z,df_percent (4 decimals), and df_stderr_percent (the
+/// Monte Carlo standard error of df_percent, 4 decimals) when `stderr_percent` is not empty.
 void write_daylight_factor_csv(const std::vector<SensorPoint>& sensors,
-                               const std::vector<double>& df_percent, const std::string& path);
+                               const std::vector<double>& df_percent, const std::string& path,
+                               const std::vector<double>& stderr_percent = {});
 /// metrics.csv: index,x,y,z then da<X>_percent, cda<X>_percent, damax_percent,
 /// udi_below<L>_percent, udi<L>_<U1>_percent, udi_above<U1>_percent,
 /// udi_supplementary<L>_<X>_percent, udi_autonomous<X>_<U2>_percent, udi_above<U2>_percent,
