@@ -714,6 +714,10 @@ std::string grid_section(const GridData& g, PageIds& page) {
       rows.emplace_back("standard error of DF, largest (relative)",
                         json_scalar(u.value("df_max_relative_stderr_percent", json())) + " %");
     }
+    // The annual verdicts within two standard errors (docs/metrics.md).
+    if (u.contains("da_verdicts_within_2_sigma"))
+      rows.emplace_back("sensors whose DA verdict could flip within 2 standard errors",
+                        json_scalar(u.value("da_verdicts_within_2_sigma", json())));
     s << key_value_table(rows);
   } else {
     s << "<p class=\"na\">daylight_factor.csv not found: the daylight factor was not computed.</p>";
