@@ -52,10 +52,11 @@
 // photons of a source in tracing order; the groups are independent draws), so the photon part
 // is the batch-means variance of the groups' sums, C/(C-1) (sum_c S_c^2 - S^2/C) with C the
 // source's groups. The rays' part (the sampling of the directions, and of the specular paths
-// to the sources: the caustic part) is the collapsed-strata variance of the rays' values Z_h,
-// less the photon noise those values carry, which the same strata formula applied to each
-// group's per-ray sums S_hc estimates (that noise is in the photon part already). Their sum
-// is clamped at 0.
+// to the sources: the caustic part) is the collapsed-strata variance (pairs of neighbouring
+// strata) of the rays' values over all sources, shared among the sources by their part of
+// each pair's values (a ray is shared by the sources: estimate_variance.h), less the photon
+// noise those values carry, which the same formula applied to each group's per-ray sums S_hc
+// estimates (that noise is in the photon part already). Their sum is clamped at 0.
 //
 // Determinism: gather ray i of sensor s uses Rng(seed, s, i, RandomStream::Gather); sensors
 // are independent, so the result is identical for any thread count.
