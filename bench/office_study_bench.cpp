@@ -3,15 +3,20 @@
 // matrix, annual illuminance, metrics, files), timed, next to the RADIANCE times recorded in
 // ../shared/refdata (2 cores): rfluxmtx sky coefficients 113 s (b_dc_classic), gendaymtx -m 1
 // 1.5 s and dctimestep 3.4 s (c_annual). Issue 5's goal: the whole study in at most one tenth
-// of rfluxmtx's time for the sky coefficients alone. Usage: office_study_bench [threads]
+// of rfluxmtx's time for the sky coefficients alone. Also prints the RMS relative standard
+// error of DF the run reports. Usage: office_study_bench [threads]
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/study_runner.h"
@@ -48,6 +53,27 @@ int main(int argc, char** argv) {
   std::printf("ratio: dayphoton's whole study takes %.3f of rfluxmtx's sky coefficients (goal <= 0.1), "
               "%.1f times faster than RADIANCE's annual workflow\n",
               seconds / rfluxmtx_s, radiance_annual_s / seconds);
+  // The uncertainty the run reports (daylight_factor.csv, df_stderr_percent; docs/outputs.md):
+  // the RMS over sensors of the relative standard error of DF, and the largest.
+  std::ifstream df(out + "/workplane/daylight_factor.csv");
+  std::string line;
+  std::getline(df, line);  // index,x,y,z,df_percent,df_stderr_percent
+  double sum = 0, largest = 0;
+  std::size_t n = 0;
+  while (std::getline(df, line)) {
+    std::vector<double> v;
+    std::stringstream fields(line);
+    std::string field;
+    while (std::getline(fields, field, ',')) v.push_back(std::stod(field));
+    if (v.size() != 6 || !(v[4] > 0)) continue;
+    const double r = v[5] / v[4];
+    sum += r * r;
+    largest = std::max(largest, r);
+    ++n;
+  }
+  if (n > 0)
+    std::printf("DF uncertainty (reported standard error, %zu sensors): RMS relative %.2f %%, largest %.2f %%\n", n,
+                100.0 * std::sqrt(sum / double(n)), 100.0 * largest);
   std::filesystem::remove_all(out);
   return 0;
 }

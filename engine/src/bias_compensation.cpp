@@ -161,6 +161,10 @@ DensityEstimate estimate_irradiance_bias_compensated(const PhotonMap& map, const
   result.irradiance = choice.irradiance;
   result.radius_m = choice.disc.radius_m;
   result.photon_count = choice.disc.photon_count;
+  // The variance of the estimate at the chosen bandwidth (estimate_variance.h): the choice
+  // itself depends on the photons, which this leaves out.
+  if (choice.disc.photon_count > 0)
+    (void)accumulate_disc(map, neighbours, choice.disc, options.kernel, nullptr, &result.luminance_variance);
   return result;
 }
 
@@ -168,14 +172,16 @@ DensityEstimate estimate_contributions_bias_compensated(const PhotonMap& map,
                                                         const Vec3& point,
                                                         const PhotonFilter& filter,
                                                         const BiasCompensationOptions& options,
-                                                        std::vector<Vec3>& per_source) {
+                                                        std::vector<Vec3>& per_source,
+                                                        std::vector<double>* per_source_variance) {
   PhotonFilter any_source = filter;
   any_source.source = PhotonFilter::AnySource;
   std::vector<NeighbourPhoton> neighbours;
   const Choice choice = gather_and_choose(map, point, any_source, options, neighbours);
   DensityEstimate result;
   result.irradiance =
-      accumulate_disc(map, neighbours, choice.disc, options.kernel, &per_source);
+      accumulate_disc(map, neighbours, choice.disc, options.kernel, &per_source, &result.luminance_variance,
+                      per_source_variance);
   result.radius_m = choice.disc.radius_m;
   result.photon_count = choice.disc.photon_count;
   return result;

@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "dayphoton/core/units.h"
+#include "dayphoton/engine/estimate_variance.h"
 
 namespace dayphoton::engine {
 namespace {
@@ -167,7 +168,11 @@ GridPhotons GridPhotons::for_gather(std::vector<Photon> surface_photons, std::si
   GridPhotons g;
   g.m_gather = true;
   g.m_source_count = source_count;
-  g.m_all = PhotonMap(std::move(surface_photons));
+  // Groups of consecutive photons (tracing order) for the variance, before the build reorders.
+  g.m_groups = PhotonGroups::consecutive(surface_photons, source_count);
+  std::vector<std::uint32_t> tree_to_input;
+  g.m_all = PhotonMap(std::move(surface_photons), tree_to_input);
+  g.m_groups.to_tree_order(tree_to_input);
   return g;
 }
 
@@ -175,7 +180,28 @@ namespace {
 
 struct ClassEstimates {
   Vec3 caustic{0, 0, 0}, global{0, 0, 0};
+  double variance = 0;  ///< of caustic + global's luminance (estimate_variance.h)
 };
+
+/// The variance of the local-linear estimate at the disc's centre: the estimate is
+/// sum_j (c1 + c2 dx_j + c3 dy_j) Phi_j, c the first row of the inverse moment matrix, so its
+/// variance is sum_j (c . (1, dx_j, dy_j))^2 y_j^2 = c^T Q c with Q the sums of
+/// y^2 (1, dx, dy)(1, dx, dy)^T (`q`: 1, dx, dy, dx dx, dx dy, dy dy). The clamp at 0 is left
+/// out (it only removes variance).
+double local_linear_variance(const AreaMoments& m, const double q[6]) {
+  const double a11 = m.area, a12 = m.mx, a13 = m.my;
+  const double a22 = m.mxx, a23 = m.mxy, a33 = m.myy;
+  if (!(m.area > 0)) return 0.0;
+  const double det = a11 * (a22 * a33 - a23 * a23) - a12 * (a12 * a33 - a23 * a13) +
+                     a13 * (a12 * a23 - a22 * a13);
+  const double scale = a11 * a22 * a33;
+  if (!(std::fabs(det) > 1e-9 * std::fabs(scale))) return q[0] / (m.area * m.area);
+  const double c1 = (a22 * a33 - a23 * a23) / det;
+  const double c2 = (a13 * a23 - a12 * a33) / det;
+  const double c3 = (a12 * a23 - a13 * a22) / det;
+  return c1 * c1 * q[0] + 2 * c1 * c2 * q[1] + 2 * c1 * c3 * q[2] + c2 * c2 * q[3] + 2 * c2 * c3 * q[4] +
+         c3 * c3 * q[5];
+}
 
 /// Caustic and global estimates from the photons of `map` passing `filter`, within the disc
 /// of density.bandwidth of them (density_estimate.h): local-linear on a receiver plane with
@@ -192,17 +218,27 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     if (disc.photon_count == 0) return out;
     Vec3 s0[2], s1x[2], s1y[2];
     for (int c = 0; c < 2; ++c) s0[c] = s1x[c] = s1y[c] = Vec3{0, 0, 0};
+    double q[6] = {0, 0, 0, 0, 0, 0};
     for (std::size_t j = 0; j < disc.photon_count; ++j) {
       const Photon& ph = map.photons()[found[j].index];
       const int c = ph.path_class == PathClass::Caustic ? 0 : 1;
       const Vec3 flux = ph.flux_rgb();
+      const double dx = double(ph.position[0]) - at.x, dy = double(ph.position[1]) - at.y;
       s0[c] += flux;
-      s1x[c] += flux * (double(ph.position[0]) - at.x);
-      s1y[c] += flux * (double(ph.position[1]) - at.y);
+      s1x[c] += flux * dx;
+      s1y[c] += flux * dy;
+      const double y2 = luminance_of(flux) * luminance_of(flux);
+      q[0] += y2;
+      q[1] += y2 * dx;
+      q[2] += y2 * dy;
+      q[3] += y2 * dx * dx;
+      q[4] += y2 * dx * dy;
+      q[5] += y2 * dy * dy;
     }
     const AreaMoments m = plane->clipped_disc_moments(at.x, at.y, disc.radius_m);
     out.caustic = local_linear_density(m, s0[0], s1x[0], s1y[0]);
     out.global = local_linear_density(m, s0[1], s1x[1], s1y[1]);
+    out.variance = local_linear_variance(m, q);
     return out;
   }
   const DensityEstimate all =
@@ -226,7 +262,9 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     PhotonFilter one = filter;
     one.path_classes = static_cast<decltype(one.path_classes)>(filter.path_classes & path_class_bit(c));
     if (one.path_classes == 0) continue;
-    (c == PathClass::Caustic ? out.caustic : out.global) = estimate_irradiance(map, at, one, fixed).irradiance * b;
+    const DensityEstimate e = estimate_irradiance(map, at, one, fixed);
+    (c == PathClass::Caustic ? out.caustic : out.global) = e.irradiance * b;
+    out.variance += e.luminance_variance * b * b;
   }
   return out;
 }
@@ -239,6 +277,7 @@ void estimate_photon_coefficients(const GridPhotons& photons,
   if (photons.gather())
     throw std::invalid_argument("photon coefficients: gather photons need the scene (photon_coefficients)");
   const std::size_t n_src = out.sources;
+  if (out.photon_variance.size() != out.sensors * n_src) out.photon_variance.assign(out.sensors * n_src, 0.0);
   const ReceiverPlane* plane = photons.plane();
   // The widest disc on a receiver plane (sparse sources, header comment); infinite elsewhere.
   const double max_radius_m = std::min(options.density.max_radius_m, photons.max_radius_m(options.density.bandwidth));
@@ -273,33 +312,42 @@ void estimate_photon_coefficients(const GridPhotons& photons,
           const ClassEstimates e = estimate_classes(map, plane, at, both, scaled, options, i);
           out.caustic[i] = e.caustic;
           out.global[i] = e.global;
+          out.photon_variance[i] = e.variance;
           continue;
         }
         DensityEstimateOptions global_scaled = options.density, caustic_scaled = options.density;
         global_scaled.max_radius_m = caustic_scaled.max_radius_m = max_radius_m;
         global_scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth, PathClass::Global);
         caustic_scaled.bandwidth = photons.bandwidth_of(p, options.caustic_bandwidth, PathClass::Caustic);
-        out.global[i] =
-            estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global), global_scaled, options, i).global;
-        out.caustic[i] = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic),
-                                          caustic_scaled, options, i + out.sensors * n_src)
-                             .caustic;
+        const ClassEstimates g =
+            estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global), global_scaled, options, i);
+        const ClassEstimates c = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic),
+                                                  caustic_scaled, options, i + out.sensors * n_src);
+        out.global[i] = g.global;
+        out.caustic[i] = c.caustic;
+        // Each lookup's photons are of its own class (the filter), so the two are independent.
+        out.photon_variance[i] = g.variance + c.variance;
       }
     } else {
       for (PathClass c : {PathClass::Caustic, PathClass::Global}) {
         DensityEstimateOptions density = options.density;
         if (c == PathClass::Caustic && options.caustic_bandwidth > 0) density.bandwidth = options.caustic_bandwidth;
         std::vector<Vec3> per_source(n_src, Vec3{0, 0, 0});
+        std::vector<double> per_source_variance(n_src, 0.0);
         const DensityEstimate e =
             options.bias_compensation
                 ? estimate_contributions_bias_compensated(
                       photons.all(), at, filter_for(sensor, c),
                       bias_options(options, density, s * 2 + (c == PathClass::Caustic ? 0 : 1)),
-                      per_source)
-                : estimate_contributions(photons.all(), at, filter_for(sensor, c), density, per_source);
+                      per_source, &per_source_variance)
+                : estimate_contributions(photons.all(), at, filter_for(sensor, c), density, per_source,
+                                         &per_source_variance);
         const double b = options.boundary_correction ? boundary_factor(plane, at, e.radius_m) : 1.0;
         std::vector<Vec3>& part = c == PathClass::Caustic ? out.caustic : out.global;
-        for (std::size_t p = 0; p < n_src; ++p) part[s * n_src + p] = per_source[p] * b;
+        for (std::size_t p = 0; p < n_src; ++p) {
+          part[s * n_src + p] = per_source[p] * b;
+          out.photon_variance[s * n_src + p] += per_source_variance[p] * b * b;
+        }
       }
     }
   });
@@ -315,7 +363,7 @@ DaylightCoefficients daylight_coefficients(const Scene& scene,
   c.sources = sources.size();
   c.caustic.assign(c.sensors * c.sources, Vec3{0, 0, 0});
   c.global.assign(c.sensors * c.sources, Vec3{0, 0, 0});
-  c.direct = direct_coefficients(scene, materials, sources, sensors, options.direct);
+  c.direct = direct_coefficients(scene, materials, sources, sensors, options.direct, &c.direct_variance);
   photon_coefficients(scene, materials, sources, photons, sensors, options, c);
   return c;
 }
@@ -329,9 +377,10 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
     return;
   }
   GatheredCoefficients g =
-      gather_photon_coefficients(scene, materials, sources, photons.all(), sensors, options.gather);
+      gather_photon_coefficients(scene, materials, sources, photons.all(), sensors, options.gather, &photons.groups());
   out.caustic = std::move(g.caustic);
   out.global = std::move(g.global);
+  out.photon_variance = std::move(g.variance);
 }
 
 }  // namespace dayphoton::engine

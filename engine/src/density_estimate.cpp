@@ -8,6 +8,7 @@
 #include <string>
 
 #include "dayphoton/engine/engine_error.h"
+#include "dayphoton/engine/estimate_variance.h"
 
 namespace dayphoton::engine {
 namespace {
@@ -27,7 +28,8 @@ std::size_t lookup_count(const DensityEstimateOptions& options) {
 }  // namespace
 
 Vec3 accumulate_disc(const PhotonMap& map, const std::vector<NeighbourPhoton>& sorted,
-                     const KernelDisc& disc, KernelType kernel, std::vector<Vec3>* per_source) {
+                     const KernelDisc& disc, KernelType kernel, std::vector<Vec3>* per_source,
+                     double* luminance_variance, std::vector<double>* per_source_variance) {
   if (disc.photon_count == 0) return Vec3{};
   const auto& photons = map.photons();
   if (!(disc.radius_m > 0)) {
@@ -58,6 +60,14 @@ Vec3 accumulate_disc(const PhotonMap& map, const std::vector<NeighbourPhoton>& s
     const Vec3 term = photon.flux_rgb() * weight;
     sum += term;
     if (per_source) (*per_source)[photon.source] += term;
+    if (luminance_variance || per_source_variance) {
+      // The estimate is a sum over independent photons: its variance is the sum of the
+      // squared terms (estimate_variance.h).
+      const double y = luminance_of(term);
+      if (luminance_variance) *luminance_variance += y * y;
+      if (per_source_variance && photon.source < per_source_variance->size())
+        (*per_source_variance)[photon.source] += y * y;
+    }
   }
   return sum;
 }
@@ -97,14 +107,15 @@ DensityEstimate estimate_irradiance(const PhotonMap& map, const Vec3& point,
   DensityEstimate estimate;
   estimate.radius_m = disc.radius_m;
   estimate.photon_count = disc.photon_count;
-  estimate.irradiance = accumulate_disc(map, neighbours, disc, options.kernel);
+  estimate.irradiance = accumulate_disc(map, neighbours, disc, options.kernel, nullptr, &estimate.luminance_variance);
   return estimate;
 }
 
 DensityEstimate estimate_contributions(const PhotonMap& map, const Vec3& point,
                                        const PhotonFilter& filter,
                                        const DensityEstimateOptions& options,
-                                       std::vector<Vec3>& per_source) {
+                                       std::vector<Vec3>& per_source,
+                                       std::vector<double>* per_source_variance) {
   check_options(options);
   PhotonFilter any_source = filter;
   any_source.source = PhotonFilter::AnySource;
@@ -115,7 +126,8 @@ DensityEstimate estimate_contributions(const PhotonMap& map, const Vec3& point,
   DensityEstimate estimate;
   estimate.radius_m = disc.radius_m;
   estimate.photon_count = disc.photon_count;
-  estimate.irradiance = accumulate_disc(map, neighbours, disc, options.kernel, &per_source);
+  estimate.irradiance = accumulate_disc(map, neighbours, disc, options.kernel, &per_source,
+                                       &estimate.luminance_variance, per_source_variance);
   return estimate;
 }
 

@@ -13,6 +13,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "dayphoton/engine/estimate_variance.h"
 #include "dayphoton/engine/random.h"
 
 namespace dayphoton::engine {
@@ -207,22 +208,29 @@ Vec3 source_value(const Vec3& t, const Vec3& w, double cos_theta, const std::fun
 Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Material>& materials,
                                      const SourceSet& sources, std::size_t p, const Vec3& origin,
                                      const Vec3& normal, int k, std::uint64_t seed, std::uint64_t sensor_index,
-                                     const std::function<Vec3(const Vec3&)>* radiance, const PortSampling* ports) {
+                                     const std::function<Vec3(const Vec3&)>* radiance, const PortSampling* ports,
+                                     double* variance) {
   Rng rng(seed, p, sensor_index, RandomStream::Direct);
   const double density_a = static_cast<double>(k) * k / sources[p].solid_angle_sr;
   Vec3 sum;
+  StratifiedVariance strata(k, variance);  // along j, row by row (estimate_variance.h)
   for (int i = 0; i < k; ++i) {
     for (int j = 0; j < k; ++j) {
       // Draw both numbers before any early exit so that every stratum uses the same pair
       // whatever the scene: glazed and unglazed runs then trace identical directions.
       const double u1 = std::min((i + rng.uniform()) / k, OneMinusEpsilon);
       const double u2 = std::min((j + rng.uniform()) / k, OneMinusEpsilon);
+      Vec3 value;
       const Vec3 w = sources.sample_direction(p, u1, u2);
       const double cos_theta = dot(w, normal);
-      if (!(cos_theta > 0.0)) continue;
-      const Vec3 t = sky_transmittance(scene, materials, origin, w);
-      if (t.x == 0.0 && t.y == 0.0 && t.z == 0.0) continue;
-      sum += source_value(t, w, cos_theta, radiance) * (1.0 / (density_a + (ports ? ports->density(origin, w) : 0.0)));
+      if (cos_theta > 0.0) {
+        const Vec3 t = sky_transmittance(scene, materials, origin, w);
+        if (t.x != 0.0 || t.y != 0.0 || t.z != 0.0)
+          value = source_value(t, w, cos_theta, radiance) *
+                  (1.0 / (density_a + (ports ? ports->density(origin, w) : 0.0)));
+      }
+      sum += value;
+      if (variance) strata.add(0, luminance_of(value));
     }
   }
   return sum;
@@ -234,7 +242,7 @@ Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Mater
 void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& materials,
                           const SourceSet& sources, const Vec3& origin, const Vec3& normal, int k,
                           int kb, std::uint64_t seed, std::uint64_t sensor_index,
-                          const std::function<Vec3(const Vec3&)>* radiance, Vec3* row) {
+                          const std::function<Vec3(const Vec3&)>* radiance, Vec3* row, double* variance_row) {
   const PortSet& ports = scene.ports();
   const std::vector<PortPiece> pieces = port_pieces(ports, origin.z);
   PortSide sides[2];  // [0] below the sensor's height, [1] above
@@ -250,7 +258,8 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
   for (std::size_t p = 0; p < sources.size(); ++p) {
     const bool with_ports = sources[p].solid_angle_sr >= PortSampledMinimumSolidAngle_sr;
     row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, seed, sensor_index,
-                                              radiance, with_ports ? &port_sampling : nullptr);
+                                              radiance, with_ports ? &port_sampling : nullptr,
+                                              variance_row ? variance_row + p : nullptr);
   }
   // Strategy B: points uniform over each side's port pieces, each direction credited to the
   // source containing it.
@@ -258,28 +267,38 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
     const PortSide& side = sides[side_index];
     if (side.pieces.empty()) continue;
     Rng rng(seed, static_cast<std::uint64_t>(side_index), sensor_index, RandomStream::DirectPort);
+    // Each point credited to its source (estimate_variance.h).
+    StratifiedVariance strata(kb, variance_row);
+    // One port point: the source it is credited to (-1: none) and its value.
+    auto sample = [&](double u1, double u2, Vec3& value) -> int {
+      const PortPiece& piece = side.choose(u1);
+      const Port& port = ports[static_cast<std::size_t>(piece.port)];
+      const Vec3 to = piece.point(u1, u2) - origin;
+      const double d2 = dot(to, to);
+      if (!(d2 > 0.0)) return -1;
+      const Vec3 w = to / std::sqrt(d2);
+      const double cos_theta = dot(w, normal);
+      const double cos_port = std::fabs(dot(w, port.normal));
+      if (!(cos_theta > 0.0) || !(cos_port > 0.0)) return -1;
+      const int p = sources.find(w);
+      if (p < 0 || sources[static_cast<std::size_t>(p)].solid_angle_sr < PortSampledMinimumSolidAngle_sr) return -1;
+      const Vec3 t = sky_transmittance(scene, materials, origin, w);
+      if (t.x == 0.0 && t.y == 0.0 && t.z == 0.0) return -1;
+      // This port's own density analytically (the point lies on it by construction).
+      const double density = n_a / sources[static_cast<std::size_t>(p)].solid_angle_sr +
+                             n_b * d2 / (side.area_m2 * cos_port) +
+                             port_density(ports, sides, origin, w, n_b, piece.port);
+      value = source_value(t, w, cos_theta, radiance) * (1.0 / density);
+      return p;
+    };
     for (int i = 0; i < kb; ++i) {
       for (int j = 0; j < kb; ++j) {
-        double u1 = std::min((i + rng.uniform()) / kb, OneMinusEpsilon);
+        const double u1 = std::min((i + rng.uniform()) / kb, OneMinusEpsilon);
         const double u2 = std::min((j + rng.uniform()) / kb, OneMinusEpsilon);
-        const PortPiece& piece = side.choose(u1);
-        const Port& port = ports[static_cast<std::size_t>(piece.port)];
-        const Vec3 to = piece.point(u1, u2) - origin;
-        const double d2 = dot(to, to);
-        if (!(d2 > 0.0)) continue;
-        const Vec3 w = to / std::sqrt(d2);
-        const double cos_theta = dot(w, normal);
-        const double cos_port = std::fabs(dot(w, port.normal));
-        if (!(cos_theta > 0.0) || !(cos_port > 0.0)) continue;
-        const int p = sources.find(w);
-        if (p < 0 || sources[static_cast<std::size_t>(p)].solid_angle_sr < PortSampledMinimumSolidAngle_sr) continue;
-        const Vec3 t = sky_transmittance(scene, materials, origin, w);
-        if (t.x == 0.0 && t.y == 0.0 && t.z == 0.0) continue;
-        // This port's own density analytically (the point lies on it by construction).
-        const double density = n_a / sources[static_cast<std::size_t>(p)].solid_angle_sr +
-                               n_b * d2 / (side.area_m2 * cos_port) +
-                               port_density(ports, sides, origin, w, n_b, piece.port);
-        row[static_cast<std::size_t>(p)] += source_value(t, w, cos_theta, radiance) * (1.0 / density);
+        Vec3 value;
+        const int p = sample(u1, u2, value);
+        if (p >= 0) row[static_cast<std::size_t>(p)] += value;
+        if (variance_row) strata.add(p, luminance_of(value));
       }
     }
   }
@@ -290,16 +309,16 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
 void integrate_sensor(const Scene& scene, const std::vector<Material>& materials,
                       const SourceSet& sources, const Vec3& origin, const Vec3& normal,
                       const DirectOptions& options, std::uint64_t sensor_index,
-                      const std::function<Vec3(const Vec3&)>* radiance, Vec3* row) {
+                      const std::function<Vec3(const Vec3&)>* radiance, Vec3* row, double* variance_row) {
   const int k = strata_per_axis(options.samples_per_source);
   if (options.port_sampling && !scene.ports().empty()) {
     integrate_sensor_mis(scene, materials, sources, origin, normal, k, PortStrataFactor * k, options.seed,
-                         sensor_index, radiance, row);
+                         sensor_index, radiance, row, variance_row);
     return;
   }
   for (std::size_t p = 0; p < sources.size(); ++p)
     row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, options.seed,
-                                              sensor_index, radiance, nullptr);
+                                              sensor_index, radiance, nullptr, variance_row ? variance_row + p : nullptr);
 }
 
 }  // namespace
@@ -342,7 +361,7 @@ Vec3 sky_transmittance(const Scene& scene, const std::vector<Material>& material
 std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Material>& materials,
                                       const SourceSet& sources,
                                       const std::vector<SensorPoint>& sensors,
-                                      const DirectOptions& options) {
+                                      const DirectOptions& options, std::vector<double>* variance) {
   check_materials(scene, materials);
   (void)strata_per_axis(options.samples_per_source);  // validates the count
   std::vector<Vec3> normals;
@@ -351,6 +370,7 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
 
   const std::size_t n_sources = sources.size();
   std::vector<Vec3> result(sensors.size() * n_sources);
+  if (variance) variance->assign(sensors.size() * n_sources, 0.0);
   // One sensor per task item: each writes only its own row, and its random numbers depend
   // on (seed, source, sensor) alone, so the partition into threads changes nothing.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sensors.size()),
@@ -359,7 +379,8 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
                         const Vec3 origin = sensors[s].position +
                                             normals[s] * scene.ray_epsilon_m();
                         integrate_sensor(scene, materials, sources, origin, normals[s], options, s,
-                                         nullptr, result.data() + s * n_sources);
+                                         nullptr, result.data() + s * n_sources,
+                                         variance ? variance->data() + s * n_sources : nullptr);
                       }
                     });
   return result;
@@ -378,7 +399,7 @@ Vec3 direct_irradiance(const Scene& scene, const std::vector<Material>& material
   const Vec3 normal = checked_unit_normal(sensor);
   const Vec3 origin = sensor.position + normal * scene.ray_epsilon_m();
   std::vector<Vec3> row(sources.size());
-  integrate_sensor(scene, materials, sources, origin, normal, options, 0, &radiance, row.data());
+  integrate_sensor(scene, materials, sources, origin, normal, options, 0, &radiance, row.data(), nullptr);
   Vec3 sum;
   for (const Vec3& v : row) sum += v;
   return sum;

@@ -4,15 +4,18 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "bsdf_frame.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/density_estimate.h"
+#include "dayphoton/engine/estimate_variance.h"
 #include "dayphoton/engine/random.h"
 
 namespace dayphoton::engine {
@@ -27,11 +30,126 @@ constexpr std::uint8_t AllPathClasses = path_class_bit(PathClass::Direct) | Indi
 double max_component(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
 Vec3 clamp_non_negative(const Vec3& v) { return {std::max(0.0, v.x), std::max(0.0, v.y), std::max(0.0, v.z)}; }
 
+/// Sums and sums of squares over a sparse set of indices, reset as they are read.
+class SparseSums {
+ public:
+  void resize(std::size_t n) {
+    m_sum.assign(n, 0.0);
+    m_square.assign(n, 0.0);
+    m_marked.assign(n, 0);
+    m_touched.clear();
+  }
+  void add(std::size_t i, double value) {
+    if (!m_marked[i]) {
+      m_marked[i] = 1;
+      m_touched.push_back(static_cast<std::uint32_t>(i));
+    }
+    m_sum[i] += value;
+    m_square[i] += value * value;
+  }
+  /// f(index, sum, sum of squares) for every index added to since the last drain, in the
+  /// order first added (deterministic), then reset.
+  template <class F>
+  void drain(F f) {
+    for (const std::uint32_t i : m_touched) {
+      f(i, m_sum[i], m_square[i]);
+      m_sum[i] = m_square[i] = 0.0;
+      m_marked[i] = 0;
+    }
+    m_touched.clear();
+  }
+
+ private:
+  std::vector<double> m_sum, m_square;
+  std::vector<char> m_marked;
+  std::vector<std::uint32_t> m_touched;
+};
+
+/// Collapsed-strata variance of a group of g values with this sum and sum of squares
+/// (estimate_variance.h); a lone stratum gives its square.
+double group_variance(double g, double sum, double square) {
+  return g <= 1 ? square : g / (g - 1) * (square - sum * sum / g);
+}
+
+/// The variance bookkeeping of one sensor's gather (final_gather.h, "Variance"). Rays are
+/// reported in stratum order (rows of k), each through add_photon / add_path and end_ray.
+class GatherVariance {
+ public:
+  GatherVariance(const PhotonGroups& groups, std::size_t sources, int k) : m_groups(groups), m_k(k) {
+    m_ray_source.resize(sources);
+    m_strata_source.resize(sources);
+    m_rays.resize(sources);
+    m_per_source.resize(sources);
+    m_ray_group.resize(groups.source_of.size());
+    m_strata_group.resize(groups.source_of.size());
+    m_sensor_group.resize(groups.source_of.size());
+  }
+  /// A lookup term of luminance y from photon `photon` (tree order) of `source`.
+  void add_photon(std::uint32_t photon, std::uint32_t source, double y) {
+    m_ray_source.add(source, y);
+    m_ray_group.add(m_groups.group_of[photon], y);
+  }
+  /// A specular path reaching `source` with luminance y (no photon: rays' variance only).
+  void add_path(std::uint32_t source, double y) { m_ray_source.add(source, y); }
+  void end_ray() {
+    double total = 0;  // the ray's value over all sources
+    m_ray_source.drain([&](std::size_t p, double z, double) {
+      m_strata_source.add(p, z);
+      total += z;
+    });
+    m_group_sum += total;
+    m_group_square += total * total;
+    m_ray_group.drain([&](std::size_t c, double z, double) { m_strata_group.add(c, z); });
+    ++m_in_group;
+    ++m_in_row;
+    const bool last_of_row = m_in_row == m_k;
+    if (!(last_of_row || (m_in_group == 2 && m_k - m_in_row != 1))) return;
+    const double g = m_in_group;
+    // The rays are shared by the sources (a ray that meets a bright patch of wall reads every
+    // source's photons there), so the strata are taken on the rays' values over all sources
+    // and their variance shared among the sources by their part of the group's values
+    // (StratifiedVariance, estimate_variance.h).
+    const double shared = group_variance(g, m_group_sum, m_group_square);
+    const double values = m_group_sum;
+    m_strata_source.drain([&](std::size_t p, double sum, double) {
+      if (values > 0) m_rays.add(p, shared * sum / values);
+    });
+    m_group_sum = m_group_square = 0;
+    // Less the photon noise the rays' values carry (it is in the photon part).
+    m_strata_group.drain([&](std::size_t c, double sum, double square) {
+      m_rays.add(m_groups.source_of[c], -group_variance(g, sum, square));
+      m_sensor_group.add(c, sum);
+    });
+    m_in_group = 0;
+    if (last_of_row) m_in_row = 0;
+  }
+  /// The sensor's variance per source into `row` (sources entries), and reset.
+  void end_sensor(double* row) {
+    m_sensor_group.drain([&](std::size_t c, double sum, double) { m_per_source.add(m_groups.source_of[c], sum); });
+    m_per_source.drain([&](std::size_t p, double sum, double square) {
+      const double c = p < m_groups.groups_of_source.size() ? m_groups.groups_of_source[p] : 1.0;
+      row[p] += c > 1 ? c / (c - 1) * (square - sum * sum / c) : square;
+    });
+    m_rays.drain([&](std::size_t p, double sum, double) { row[p] += sum; });
+    m_in_group = m_in_row = 0;
+    m_group_sum = m_group_square = 0;
+  }
+
+ private:
+  const PhotonGroups& m_groups;
+  int m_k;
+  int m_in_group = 0, m_in_row = 0;
+  double m_group_sum = 0, m_group_square = 0;  ///< the stratum group's ray totals
+  SparseSums m_ray_source, m_strata_source, m_rays, m_per_source;
+  SparseSums m_ray_group, m_strata_group, m_sensor_group;
+};
+
 /// Add weight (.) sum_j K Phi_j of the disc of `bandwidth` photons at `at` on the side
 /// `side` to per_source[photon source] (the contribution estimate, uniform kernel,
 /// next-neighbour radius: density_estimate.h).
 void add_contributions(const PhotonMap& map, const Vec3& at, const Vec3& side, std::size_t bandwidth,
-                       const Vec3& weight, std::vector<NeighbourPhoton>& found, std::vector<Vec3>& per_source) {
+                       const Vec3& weight, std::vector<NeighbourPhoton>& found, std::vector<Vec3>& per_source,
+                       GatherVariance* variance) {
   PhotonFilter filter;
   filter.path_classes = AllPathClasses;
   filter.check_normal = true;
@@ -47,13 +165,16 @@ void add_contributions(const PhotonMap& map, const Vec3& at, const Vec3& side, s
     if (ph.source >= per_source.size())
       throw std::invalid_argument("final gather: a photon of source " + std::to_string(ph.source) + " but " +
                                   std::to_string(per_source.size()) + " sources");
-    per_source[ph.source] += mul(weight, ph.flux_rgb()) * k;
+    const Vec3 term = mul(weight, ph.flux_rgb()) * k;
+    per_source[ph.source] += term;
+    if (variance) variance->add_photon(found[j].index, ph.source, luminance_of(term));
   }
 }
 
 struct SensorSums {
   std::vector<Vec3> caustic, global;
   std::vector<NeighbourPhoton> found;
+  GatherVariance* variance = nullptr;
 };
 
 /// One gather path from `origin` along `direction`, weight `weight` (1 / N per channel).
@@ -68,7 +189,10 @@ void gather_path(const Scene& scene, const std::vector<Material>& materials, con
       // Unit radiance over the hemisphere: pi / N per ray, the 1 / N being in `weight`.
       if (through_port && specular) {
         const int p = sources.find(direction);
-        if (p >= 0) sums.caustic[static_cast<std::size_t>(p)] += weight * Pi;
+        if (p >= 0) {
+          sums.caustic[static_cast<std::size_t>(p)] += weight * Pi;
+          if (sums.variance) sums.variance->add_path(static_cast<std::uint32_t>(p), luminance_of(weight * Pi));
+        }
       }
       return;
     }
@@ -85,9 +209,11 @@ void gather_path(const Scene& scene, const std::vector<Material>& materials, con
     const Vec3 rho_d = diffuse_reflectance(material.spec());
     const Vec3 tau_d = diffuse_transmittance(material.spec());
     if (max_component(rho_d) > 0)
-      add_contributions(map, hit->position, side, options.bandwidth, mul(weight, rho_d), sums.found, sums.global);
+      add_contributions(map, hit->position, side, options.bandwidth, mul(weight, rho_d), sums.found, sums.global,
+                        sums.variance);
     if (max_component(tau_d) > 0)
-      add_contributions(map, hit->position, side * -1.0, options.bandwidth, mul(weight, tau_d), sums.found, sums.global);
+      add_contributions(map, hit->position, side * -1.0, options.bandwidth, mul(weight, tau_d), sums.found,
+                        sums.global, sums.variance);
     // Specular, glossy and straight parts: follow one sampled event (the diffuse parts are in
     // the lookups above). Reciprocity lets the backward path use the forward sampling.
     const double u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
@@ -127,10 +253,41 @@ void gather_path(const Scene& scene, const std::vector<Material>& materials, con
 
 }  // namespace
 
+PhotonGroups PhotonGroups::consecutive(const std::vector<Photon>& photons, std::size_t sources,
+                                       std::size_t group_size) {
+  if (group_size == 0) throw std::invalid_argument("photon groups: a group needs at least one photon");
+  PhotonGroups g;
+  g.groups_of_source.assign(sources, 0);
+  g.group_of.resize(photons.size());
+  std::size_t in_group = 0;
+  for (std::size_t i = 0; i < photons.size(); ++i) {
+    const std::uint32_t source = photons[i].source;
+    if (source >= sources)
+      throw std::invalid_argument("photon groups: a photon of source " + std::to_string(source) + " but " +
+                                  std::to_string(sources) + " sources");
+    if (g.source_of.empty() || g.source_of.back() != source || in_group == group_size) {
+      g.source_of.push_back(source);
+      ++g.groups_of_source[source];
+      in_group = 0;
+    }
+    ++in_group;
+    g.group_of[i] = static_cast<std::uint32_t>(g.source_of.size() - 1);
+  }
+  return g;
+}
+
+void PhotonGroups::to_tree_order(const std::vector<std::uint32_t>& tree_to_input) {
+  if (tree_to_input.size() != group_of.size())
+    throw std::invalid_argument("photon groups: the permutation does not match the photons");
+  std::vector<std::uint32_t> in_tree(group_of.size());
+  for (std::size_t t = 0; t < tree_to_input.size(); ++t) in_tree[t] = group_of[tree_to_input[t]];
+  group_of = std::move(in_tree);
+}
+
 GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::vector<Material>& materials,
                                                 const SourceSet& sources, const PhotonMap& surface_photons,
                                                 const std::vector<SensorPoint>& sensors,
-                                                const GatherOptions& options) {
+                                                const GatherOptions& options, const PhotonGroups* groups) {
   if (options.rays_per_sensor < 1 || options.bandwidth < 1)
     throw std::invalid_argument("final gather: at least 1 ray per sensor and 1 photon per lookup are needed");
   if (materials.size() < scene.description().materials.size())
@@ -144,8 +301,21 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
   GatherOptions effective = options;
   effective.rays_per_sensor = k * k;
   const Vec3 ray_weight = Vec3{1, 1, 1} * (1.0 / (double(k) * k));
+  if (groups) {
+    if (groups->group_of.size() != surface_photons.size())
+      throw std::invalid_argument("final gather: the photon groups are not those of the map");
+    out.variance.assign(sensors.size() * n_src, 0.0);
+  }
+  // Scratch of the variance per thread (sized by the groups, reset after each sensor, so
+  // which thread runs a sensor changes nothing).
+  tbb::enumerable_thread_specific<std::unique_ptr<GatherVariance>> scratch;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sensors.size()), [&](const tbb::blocked_range<std::size_t>& range) {
     SensorSums sums;
+    if (groups) {
+      std::unique_ptr<GatherVariance>& v = scratch.local();
+      if (!v) v = std::make_unique<GatherVariance>(*groups, n_src, k);
+      sums.variance = v.get();
+    }
     for (std::size_t s = range.begin(); s != range.end(); ++s) {
       const double len = length(sensors[s].normal);
       if (!is_finite(sensors[s].normal) || !(len > 0.0) || !is_finite(sensors[s].position))
@@ -166,7 +336,13 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
           const double r = std::sqrt(u1), phi = 2.0 * Pi * u2;
           const Vec3 w = normalize(frame.to_world({r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - u1))}));
           gather_path(scene, materials, sources, surface_photons, effective, origin, w, ray_weight, rng, sums);
+          if (sums.variance) sums.variance->end_ray();
         }
+      if (sums.variance) {
+        double* row = out.variance.data() + s * n_src;
+        sums.variance->end_sensor(row);
+        for (std::size_t p = 0; p < n_src; ++p) row[p] = std::max(0.0, row[p]);
+      }
       std::copy(sums.caustic.begin(), sums.caustic.end(), out.caustic.begin() + static_cast<std::ptrdiff_t>(s * n_src));
       std::copy(sums.global.begin(), sums.global.end(), out.global.begin() + static_cast<std::ptrdiff_t>(s * n_src));
     }

@@ -146,7 +146,14 @@ class Search {
 
 }  // namespace
 
-PhotonMap::PhotonMap(std::vector<Photon> photons) : m_photons(std::move(photons)) {
+PhotonMap::PhotonMap(std::vector<Photon> photons) : m_photons(std::move(photons)) { build(nullptr); }
+
+PhotonMap::PhotonMap(std::vector<Photon> photons, std::vector<std::uint32_t>& input_index)
+    : m_photons(std::move(photons)) {
+  build(&input_index);
+}
+
+void PhotonMap::build(std::vector<std::uint32_t>* input_index) {
   const std::size_t n = m_photons.size();
   if (n > MaxPhotons)
     throw std::length_error("PhotonMap: " + std::to_string(n) + " photons exceed the 32-bit index");
@@ -160,6 +167,10 @@ PhotonMap::PhotonMap(std::vector<Photon> photons) : m_photons(std::move(photons)
   }
   m_axis.assign(n, 0);
   build_range(keys.data(), m_axis.data(), 0, n);
+  if (input_index) {
+    input_index->resize(n);
+    for (std::size_t i = 0; i < n; ++i) (*input_index)[i] = keys[i].index;
+  }
 
   // Permute the photons into tree order in place (cycle by cycle): slot i receives input
   // photon keys[i].index. A finished slot is marked by keys[i].index = i.

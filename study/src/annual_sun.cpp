@@ -218,7 +218,7 @@ RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const engine::SourceSet& sources,
                                     const engine::GridPhotons& photons,
                                     const std::vector<SensorPoint>& sensors,
-                                    const engine::CoefficientOptions& options) {
+                                    const engine::CoefficientOptions& options, std::vector<double>* variance) {
   engine::DaylightCoefficients c;
   c.sensors = sensors.size();
   c.sources = photons.source_count();
@@ -226,6 +226,7 @@ RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
   c.caustic.assign(c.sensors * c.sources, Vec3{});
   c.global.assign(c.sensors * c.sources, Vec3{});
   engine::photon_coefficients(scene, materials, sources, photons, sensors, options, c);
+  if (variance) *variance = c.photon_variance;
   return c.to_matrix();
 }
 

@@ -19,6 +19,8 @@ using engine::SourceTally;
 constexpr std::size_t PhotonBytes = 32;
 constexpr std::size_t TallyBytes = 6 * 8 + 5 * 8 + 8 + 8;
 constexpr std::size_t Vec3Bytes = 24;
+/// Per (sensor, source): direct, caustic, global (Vec3) and the two variances (f64).
+constexpr std::size_t CoefficientPairBytes = 3 * Vec3Bytes + 2 * 8;
 constexpr std::size_t PreambleBytes = 8;  // tag + version
 
 class Writer {
@@ -240,18 +242,21 @@ engine::TracedPhotons decode_photons(const std::string& bytes) {
 std::string encode_coefficients(const engine::DaylightCoefficients& c) {
   const std::size_t n = c.sensors * c.sources;
   if ((c.sources != 0 && n / c.sources != c.sensors) || c.direct.size() != n ||
-      c.caustic.size() != n || c.global.size() != n)
-    throw std::invalid_argument("daylight coefficients: direct/caustic/global must hold " +
+      c.caustic.size() != n || c.global.size() != n || !c.has_variance())
+    throw std::invalid_argument("daylight coefficients: direct/caustic/global and both variances must hold " +
                                 std::to_string(c.sensors) + " x " + std::to_string(c.sources) +
                                 " values (have " + std::to_string(c.direct.size()) + ", " +
                                 std::to_string(c.caustic.size()) + ", " +
-                                std::to_string(c.global.size()) + ")");
-  Writer w(PreambleBytes + 16 + 3 * n * Vec3Bytes);
+                                std::to_string(c.global.size()) + ", " + std::to_string(c.direct_variance.size()) +
+                                ", " + std::to_string(c.photon_variance.size()) + ")");
+  Writer w(PreambleBytes + 16 + n * CoefficientPairBytes);
   w.tag("DCOF", CoefficientLayoutVersion);
   w.u64(c.sensors);
   w.u64(c.sources);
   for (const auto* part : {&c.direct, &c.caustic, &c.global})
     for (const Vec3& v : *part) w.vec3(v);
+  for (const auto* part : {&c.direct_variance, &c.photon_variance})
+    for (const double v : *part) w.f64(v);
   return w.finish();
 }
 
@@ -261,13 +266,13 @@ engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
   engine::DaylightCoefficients c;
   const std::uint64_t sensors = r.u64("sensor count");
   const std::uint64_t sources = r.u64("source count");
-  // The three arrays need 3 x 24 bytes per (sensor, source) pair: check without overflow.
+  // The five arrays need CoefficientPairBytes per (sensor, source) pair: check without overflow.
   const std::size_t remaining = bytes.size() - (PreambleBytes + 16);
-  const std::uint64_t max_pairs = remaining / (3 * Vec3Bytes);
+  const std::uint64_t max_pairs = remaining / CoefficientPairBytes;
   if ((sensors != 0 && sources > max_pairs / sensors) || sensors * sources != max_pairs ||
-      remaining % (3 * Vec3Bytes) != 0)
+      remaining % CoefficientPairBytes != 0)
     r.fail("size mismatch: " + std::to_string(sensors) + " sensors x " + std::to_string(sources) +
-           " sources need " + std::to_string(3 * Vec3Bytes) + " bytes each, " +
+           " sources need " + std::to_string(CoefficientPairBytes) + " bytes each, " +
            std::to_string(remaining) + " bytes remain");
   c.sensors = static_cast<std::size_t>(sensors);
   c.sources = static_cast<std::size_t>(sources);
@@ -275,6 +280,10 @@ engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
   for (auto* part : {&c.direct, &c.caustic, &c.global}) {
     part->resize(n);
     for (Vec3& v : *part) v = r.vec3("coefficient");
+  }
+  for (auto* part : {&c.direct_variance, &c.photon_variance}) {
+    part->resize(n);
+    for (double& v : *part) v = r.f64("variance");
   }
   r.done();
   return c;

@@ -58,6 +58,51 @@ std::vector<double> daylight_factor_percent(const RadianceMatrix& coefficients,
   return df;
 }
 
+std::vector<double> daylight_factor_stderr_percent(const std::vector<double>& variance, std::size_t sensors,
+                                                   const RadianceMatrix& sky_vector,
+                                                   double horizontal_illuminance_lux) {
+  if (!(horizontal_illuminance_lux > 0) || !std::isfinite(horizontal_illuminance_lux))
+    throw std::invalid_argument("daylight factor: the horizontal illuminance must be positive and finite");
+  const std::size_t bins = sky_vector.rows();
+  if (variance.size() != sensors * bins)
+    throw std::invalid_argument("daylight factor uncertainty: " + std::to_string(variance.size()) +
+                                " variances for " + std::to_string(sensors) + " sensors x " + std::to_string(bins) +
+                                " bins");
+  const int nc = sky_vector.components();
+  // The luminance-weighted radiance of each bin (one-component vectors: the value itself).
+  std::vector<double> luminance(bins, 0.0);
+  for (std::size_t p = 0; p < bins; ++p)
+    luminance[p] = nc == 3 ? RgbLuminanceWeights.x * sky_vector.at(p, 0, 0) + RgbLuminanceWeights.y * sky_vector.at(p, 0, 1) +
+                                 RgbLuminanceWeights.z * sky_vector.at(p, 0, 2)
+                           : static_cast<double>(sky_vector.at(p, 0, 0));
+  const double scale = 100.0 * RadianceWhiteEfficacy_lm_per_W / horizontal_illuminance_lux;
+  std::vector<double> out(sensors, 0.0);
+  for (std::size_t s = 0; s < sensors; ++s) {
+    double v = 0;
+    for (std::size_t p = 0; p < bins; ++p) v += luminance[p] * luminance[p] * variance[s * bins + p];
+    out[s] = scale * std::sqrt(std::max(0.0, v));
+  }
+  return out;
+}
+
+DaylightFactorUncertainty daylight_factor_uncertainty(const std::vector<double>& df_percent,
+                                                      const std::vector<double>& stderr_percent) {
+  if (df_percent.size() != stderr_percent.size())
+    throw std::invalid_argument("daylight factor uncertainty: " + std::to_string(df_percent.size()) + " values but " +
+                                std::to_string(stderr_percent.size()) + " standard errors");
+  DaylightFactorUncertainty u;
+  double sum = 0;
+  for (std::size_t s = 0; s < df_percent.size(); ++s) {
+    if (!(df_percent[s] > 0)) continue;
+    const double r = stderr_percent[s] / df_percent[s];
+    sum += r * r;
+    u.max_relative_stderr_percent = std::max(u.max_relative_stderr_percent, 100.0 * r);
+    ++u.sensors_with_light;
+  }
+  if (u.sensors_with_light > 0) u.rms_relative_stderr_percent = 100.0 * std::sqrt(sum / double(u.sensors_with_light));
+  return u;
+}
+
 GridStatistics grid_statistics(const std::vector<double>& values, const std::vector<double>& thresholds) {
   if (values.empty()) throw std::invalid_argument("grid statistics of an empty set of sensors");
   for (double v : values)

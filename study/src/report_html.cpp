@@ -715,6 +715,19 @@ std::string grid_section(const GridData& g, PageIds& page) {
     for (const json& a : st.value("area_at_or_above", json::array()))
       rows.emplace_back("area with DF &#8805; " + json_scalar(a.value("threshold_percent", json())) + " %",
                         json_scalar(a.value("area_percent", json())) + " %");
+    // The Monte Carlo uncertainty (docs/outputs.md, daylight_factor.csv): relative standard
+    // error of DF over the sensors with daylight.
+    const json u = g.summary.value("uncertainty", json::object());
+    if (u.contains("df_rms_relative_stderr_percent")) {
+      rows.emplace_back("standard error of DF, RMS over sensors (relative)",
+                        json_scalar(u.value("df_rms_relative_stderr_percent", json())) + " %");
+      rows.emplace_back("standard error of DF, largest (relative)",
+                        json_scalar(u.value("df_max_relative_stderr_percent", json())) + " %");
+    }
+    // The annual verdicts within two standard errors (docs/metrics.md).
+    if (u.contains("da_verdicts_within_2_sigma"))
+      rows.emplace_back("sensors whose DA verdict could flip within 2 standard errors",
+                        json_scalar(u.value("da_verdicts_within_2_sigma", json())));
     s << key_value_table(rows);
   } else {
     s << "<p class=\"na\">daylight_factor.csv not found: the daylight factor was not computed.</p>";

@@ -104,11 +104,17 @@ std::vector<SensorPoint> read_sensors_csv(const std::string& path) {
 }
 
 void write_daylight_factor_csv(const std::vector<SensorPoint>& sensors, const std::vector<double>& df_percent,
-                               const std::string& path) {
+                               const std::string& path, const std::vector<double>& stderr_percent) {
   check_count(sensors.size(), df_percent.size(), path);
+  const bool with_stderr = !stderr_percent.empty();
+  if (with_stderr) check_count(sensors.size(), stderr_percent.size(), path);
   write_file_atomically(path, [&](std::ostream& out) {
-    out << "index,x,y,z,df_percent\n";
-    for (std::size_t i = 0; i < sensors.size(); ++i) out << index_xyz(i, sensors[i]) << ',' << fixed(df_percent[i], 4) << '\n';
+    out << "index,x,y,z,df_percent" << (with_stderr ? ",df_stderr_percent" : "") << '\n';
+    for (std::size_t i = 0; i < sensors.size(); ++i) {
+      out << index_xyz(i, sensors[i]) << ',' << fixed(df_percent[i], 4);
+      if (with_stderr) out << ',' << fixed(stderr_percent[i], 4);
+      out << '\n';
+    }
   });
 }
 

@@ -42,6 +42,7 @@
 #include "dayphoton/study/report_html.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/sun_site.h"
+#include "dayphoton/study/verdict_uncertainty.h"
 #include "dayphoton/weather/hourly_weather.h"
 #include "dayphoton/weather/site_clock.h"
 #include "dayphoton/metrics/annual_metrics.h"
@@ -212,6 +213,24 @@ std::string nothing_stored_note(const engine::TracedPhotons& photons, const std:
   return "";
 }
 
+/// Each coefficient's variance, direct and photon parts together (sensors x sources).
+std::vector<double> sky_variance_of(const engine::DaylightCoefficients& c) {
+  std::vector<double> v(c.sensors * c.sources);
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = c.direct_variance[i] + c.photon_variance[i];
+  return v;
+}
+
+/// summary.json `uncertainty` of a grid, the annual part (docs/metrics.md, "Uncertainty of
+/// the verdicts"). ASE comes from the exact direct sun, whose shadow rays' variance is not
+/// estimated: its count is null.
+void add_verdict_uncertainty(nlohmann::json& grid, const VerdictUncertainty& u, bool ase) {
+  nlohmann::json& j = grid["uncertainty"];
+  j["da_verdicts_within_2_sigma"] = u.da_verdicts_uncertain;
+  j["illuminance_rms_stderr_lux"] = u.mean_occupied_stderr_lux;
+  j["ase_verdicts_within_2_sigma"] = nullptr;
+  if (ase) j["ase_note"] = "the exact direct sun's standard error is not estimated";
+}
+
 /// What every case (the base project and each variant) of one run shares.
 struct RunContext {
   const RunSettings& settings;
@@ -352,6 +371,7 @@ const SkyAndSuns& sky_and_suns(const project::Project& project, const sky::Patch
 /// The sun side of one grid in the sun-bins mode.
 struct GridSun {
   RadianceMatrix bin_coefficients;  ///< sensors x sun bins x RGB, caustic + global
+  std::vector<double> bin_variance;  ///< sensors x sun bins, of each entry's luminance
   RadianceMatrix direct;            ///< sensors x suns x RGB, exact direct sun
 };
 
@@ -406,11 +426,16 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   for (std::size_t g = 0; g < n_grids; ++g) {
     grid_keys[g] = sun_coefficients_key(keys, SunBinMinimumBoundFraction, description.grids[g], estimating);
     if (!ctx.settings.force) {
-      if (auto bytes = ctx.store.read("sun-coefficients", grid_keys[g])) {
+      const auto bytes = ctx.store.read("sun-coefficients", grid_keys[g]);
+      const auto variance = ctx.store.read("sun-coefficients-variance", grid_keys[g]);
+      if (bytes && variance) {
         try {
           result[g].bin_coefficients = decode_matrix(*bytes);
+          const RadianceMatrix v = decode_matrix(*variance);
+          result[g].bin_variance.assign(v.data().begin(), v.data().end());
           have[g] = result[g].bin_coefficients.rows() == description.grids[g].points.size() &&
-                    result[g].bin_coefficients.columns() == bins.size();
+                    result[g].bin_coefficients.columns() == bins.size() &&
+                    result[g].bin_variance.size() == description.grids[g].points.size() * bins.size();
         } catch (const std::exception&) {
           // damaged: recompute
         }
@@ -476,8 +501,15 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
       const engine::GridPhotons grid_photons =
           grid_photons_for(plane_of_grid[g], planes, photons, bins.size(), sim.point_estimate);
       result[g].bin_coefficients =
-          sun_bin_coefficients(scene, materials, sources, grid_photons, grid.points, estimating);
+          sun_bin_coefficients(scene, materials, sources, grid_photons, grid.points, estimating, &result[g].bin_variance);
       ctx.store.write("sun-coefficients", grid_keys[g], encode_matrix(result[g].bin_coefficients));
+      // The variances as the cache keeps them (single precision), so a cached run gives the
+      // same verdicts.
+      RadianceMatrix variance(grid.points.size(), bins.size(), 1);
+      for (std::size_t i = 0; i < result[g].bin_variance.size(); ++i)
+        variance.data()[i] = static_cast<float>(result[g].bin_variance[i]);
+      result[g].bin_variance.assign(variance.data().begin(), variance.data().end());
+      ctx.store.write("sun-coefficients-variance", grid_keys[g], encode_matrix(variance));
       progress.advance(grid.points.size());
       progress.end();
       log.line(prefix + "sun coefficients " + grid.name + ": estimated at " +
@@ -761,7 +793,13 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     }
     if (project.outputs.daylight_factor) {
       const std::vector<double> df = daylight_factor_percent(c, overcast_vector, OvercastHorizontalLux);
-      write_daylight_factor_csv(grid.points, df, join(folder, "daylight_factor.csv"));
+      // The Monte Carlo standard error beside each value (engine/estimate_variance.h).
+      const engine::DaylightCoefficients& dc = *coefficients[g];
+      std::vector<double> variance(dc.sensors * dc.sources);
+      for (std::size_t i = 0; i < variance.size(); ++i) variance[i] = dc.direct_variance[i] + dc.photon_variance[i];
+      const std::vector<double> df_stderr =
+          daylight_factor_stderr_percent(variance, dc.sensors, overcast_vector, OvercastHorizontalLux);
+      write_daylight_factor_csv(grid.points, df, join(folder, "daylight_factor.csv"), df_stderr);
       ctx.outputs.record(join(folder, "daylight_factor.csv"));
       const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent);
       nlohmann::json areas = nlohmann::json::array();
@@ -770,6 +808,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       gj["daylight_factor_percent"] = {{"mean", st.mean}, {"median", st.median}, {"min", st.min},
                                        {"max", st.max}, {"uniformity", st.uniformity},
                                        {"area_at_or_above", areas}};
+      const DaylightFactorUncertainty u = daylight_factor_uncertainty(df, df_stderr);
+      gj["uncertainty"] = {{"df_rms_relative_stderr_percent", u.rms_relative_stderr_percent},
+                           {"df_max_relative_stderr_percent", u.max_relative_stderr_percent},
+                           {"sensors_with_daylight", u.sensors_with_light}};
     }
     grids_json.push_back(gj);
   }
@@ -814,6 +856,11 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       if (keep) keep->grids.push_back({grid.name, grid.points, study.illuminance, direct});
+      const SunBinVariance sun_variance{&sun[g].bin_variance, &bins, &ss.suns};
+      add_verdict_uncertainty(grids_json[g],
+                              verdict_uncertainty(study, ss.sky, sky_variance_of(*coefficients[g]), &sun_variance,
+                                                  annual_settings),
+                              true);
       progress.advance(ss.sky.steps.size());
       progress.end();
       grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
@@ -827,6 +874,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       const AnnualStudy study = compute_annual_study(coefficient_matrices[g], sky, annual_settings);
       log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
+      add_verdict_uncertainty(
+          grids_json[g], verdict_uncertainty(study, sky, sky_variance_of(*coefficients[g]), nullptr, annual_settings),
+          false);
       progress.advance(sky.steps.size());
       progress.end();
       grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));

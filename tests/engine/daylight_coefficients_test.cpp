@@ -243,15 +243,34 @@ TEST(DaylightCoefficients, LinearInTheSkyAndIndependentOfThreads) {
   co.density.bandwidth = 60;
   co.direct.samples_per_source = 16;
   const std::vector<SensorPoint> sensors = {{{1.5, 3.0, 0.8}, {0, 0, 1}}, {{1.0, 2.0, 0.8}, {0, 0, 1}}};
+  // The variances too (estimate_variance.h), on the receiver plane and by final gather.
+  std::vector<double> variance[2], gather_variance[2];
   auto run = [&](int threads) {
     tbb::global_control c(tbb::global_control::max_allowed_parallelism, threads);
     const TracedPhotons traced = trace_photons(scene, materials, sources, {plane}, o);
     const GridPhotons grid = GridPhotons::for_plane(plane, traced.planes[0], sources.size());
-    return daylight_coefficients(scene, materials, sources, grid, sensors, co).to_matrix();
+    const DaylightCoefficients dc = daylight_coefficients(scene, materials, sources, grid, sensors, co);
+    EXPECT_TRUE(dc.has_variance());
+    variance[threads - 1] = dc.photon_variance;
+    variance[threads - 1].insert(variance[threads - 1].end(), dc.direct_variance.begin(), dc.direct_variance.end());
+    CoefficientOptions gathering = co;
+    gathering.gather.rays_per_sensor = 64;
+    const GridPhotons gather = GridPhotons::for_gather(traced.surface, sources.size());
+    DaylightCoefficients g;
+    g.sensors = sensors.size();
+    g.sources = sources.size();
+    photon_coefficients(scene, materials, sources, gather, sensors, gathering, g);
+    gather_variance[threads - 1] = g.photon_variance;
+    return dc.to_matrix();
   };
   const RadianceMatrix one = run(1), two = run(2);
   ASSERT_EQ(one.rows(), two.rows());
   EXPECT_EQ(one.data(), two.data());
+  EXPECT_EQ(variance[0], variance[1]);
+  EXPECT_EQ(gather_variance[0], gather_variance[1]);
+  double gathered = 0;
+  for (const double v : gather_variance[0]) gathered += v;
+  EXPECT_GT(gathered, 0.0);
 
   // Brute force of the uniform sky, everything recorded, estimated at the sensors with the
   // same kernel. Reference noise from kNN with N = 2000 photons: 1/sqrt(2000) = 2.2 %;

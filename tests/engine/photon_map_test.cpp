@@ -179,6 +179,12 @@ TEST(PhotonMap, BuildIsAPermutationOfTheInput) {
     EXPECT_EQ(p.path_class, original.path_class);
   }
   EXPECT_GE(map.memory_bytes(), photons.size() * sizeof(Photon));
+  // The second constructor reports the permutation: tree slot -> input index.
+  std::vector<std::uint32_t> input_index;
+  const PhotonMap with_index(photons, input_index);
+  ASSERT_EQ(input_index.size(), photons.size());
+  for (std::size_t t = 0; t < input_index.size(); ++t)
+    EXPECT_EQ(static_cast<std::size_t>(with_index.photons()[t].flux[0]), input_index[t]);
 }
 
 TEST(PhotonMap, RandomVolumeMatchesBruteForce) {

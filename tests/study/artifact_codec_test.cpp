@@ -114,6 +114,8 @@ engine::DaylightCoefficients sample_coefficients(std::size_t sensors, std::size_
   for (auto* part : {&c.direct, &c.caustic, &c.global})
     for (std::size_t i = 0; i < sensors * sources; ++i) part->push_back({u(rng), u(rng) * 1e-9, -u(rng)});
   if (!c.direct.empty()) c.direct[0] = {-0.0, std::numeric_limits<double>::denorm_min(), std::nan("7")};
+  for (auto* part : {&c.direct_variance, &c.photon_variance})
+    for (std::size_t i = 0; i < sensors * sources; ++i) part->push_back(u(rng) * 1e-7);
   return c;
 }
 
@@ -177,11 +179,16 @@ TEST(ArtifactCodec, CoefficientsRoundTripBitExact) {
   EXPECT_TRUE(same_bits(out.direct.data(), in.direct.data(), in.direct.size() * sizeof(Vec3)));
   EXPECT_TRUE(same_bits(out.caustic.data(), in.caustic.data(), in.caustic.size() * sizeof(Vec3)));
   EXPECT_TRUE(same_bits(out.global.data(), in.global.data(), in.global.size() * sizeof(Vec3)));
+  EXPECT_TRUE(out.direct_variance == in.direct_variance);
+  EXPECT_TRUE(out.photon_variance == in.photon_variance);
 }
 
 TEST(ArtifactCodec, InconsistentCoefficientsAreRefusedWhenEncoding) {
   engine::DaylightCoefficients c = sample_coefficients(2, 3);
   c.global.pop_back();
+  EXPECT_THROW(encode_coefficients(c), std::invalid_argument);
+  c = sample_coefficients(2, 3);
+  c.photon_variance.clear();  // without its variance a coefficient artefact is incomplete
   EXPECT_THROW(encode_coefficients(c), std::invalid_argument);
 }
 

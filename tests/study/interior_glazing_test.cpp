@@ -309,9 +309,13 @@ project::Project df_project(bool one_room, unsigned long long seed) {
 std::vector<double> read_df(const fs::path& csv) {
   std::ifstream in(csv);
   std::string line;
-  std::getline(in, line);  // index,x,y,z,df_percent
+  std::getline(in, line);  // index,x,y,z,df_percent,df_stderr_percent: the fifth column
   std::vector<double> df;
-  while (std::getline(in, line)) df.push_back(std::stod(line.substr(line.rfind(',') + 1)));
+  while (std::getline(in, line)) {
+    std::size_t at = 0;
+    for (int comma = 0; comma < 4; ++comma) at = line.find(',', at) + 1;
+    df.push_back(std::stod(line.substr(at, line.find(',', at) - at)));
+  }
   return df;
 }
 

@@ -77,6 +77,14 @@ TEST(ResultFiles, DaylightFactorCsv) {
   EXPECT_EQ(lines[1], "0,0.5,1.25,0.8,2.7183");
   EXPECT_EQ(lines[2], "1,-2,3.123457,0.8,0.0000");
   EXPECT_THROW(write_daylight_factor_csv(Sensors, {1.0}, path), std::invalid_argument);
+  // With the standard errors: a sixth column, df_stderr_percent (docs/outputs.md).
+  write_daylight_factor_csv(Sensors, {2.71828, 0.0}, path, {0.012345, 0.0});
+  const auto with_stderr = lines_of(path);
+  fs::remove(path);
+  ASSERT_EQ(with_stderr.size(), 3u);
+  EXPECT_EQ(with_stderr[0], "index,x,y,z,df_percent,df_stderr_percent");
+  EXPECT_EQ(with_stderr[1], "0,0.5,1.25,0.8,2.7183,0.0123");
+  EXPECT_THROW(write_daylight_factor_csv(Sensors, {1.0, 2.0}, path, {1.0}), std::invalid_argument);
 }
 
 TEST(ResultFiles, MetricsCsvHeaderFollowsTheSettings) {

@@ -99,10 +99,23 @@ struct CoefficientOptions {
 struct DaylightCoefficients {
   std::size_t sensors = 0, sources = 0;
   std::vector<Vec3> direct, caustic, global;
+  /// The Monte Carlo variance of each entry's luminance (estimate_variance.h), same layout:
+  /// of the direct part (shadow rays) and of the photon part (caustic + global). The sources
+  /// are independent, so the variance of any sky-weighted sum at a sensor is
+  /// sum_p L_p^2 variance(s, p). Empty when not estimated.
+  std::vector<double> direct_variance, photon_variance;
 
   Vec3 total(std::size_t s, std::size_t p) const {
     const std::size_t i = s * sources + p;
     return direct[i] + caustic[i] + global[i];
+  }
+  bool has_variance() const {
+    return direct_variance.size() == sensors * sources && photon_variance.size() == sensors * sources;
+  }
+  /// Variance of total(s, p)'s luminance: the two parts are independent.
+  double variance(std::size_t s, std::size_t p) const {
+    const std::size_t i = s * sources + p;
+    return direct_variance[i] + photon_variance[i];
   }
   /// rows = sensors, columns = sources, 3 components (RADIANCE matrix layout).
   RadianceMatrix to_matrix() const;
@@ -123,6 +136,8 @@ class GridPhotons {
   bool gather() const { return m_gather; }
   const ReceiverPlane* plane() const { return m_plane ? &*m_plane : nullptr; }
   const PhotonMap& all() const { return m_all; }
+  /// Gather photons: which of all() come from the same paths (final_gather.h, "Variance").
+  const PhotonGroups& groups() const { return m_groups; }
   const PhotonMap& of_source(std::size_t p) const { return m_by_source[p]; }
   std::size_t source_count() const { return m_source_count; }
   /// PerSource bandwidth of `source`: `bandwidth` x (its photon count / the median count
@@ -147,6 +162,7 @@ class GridPhotons {
   bool m_gather = false;
   std::size_t m_source_count = 0;
   PhotonMap m_all;
+  PhotonGroups m_groups;  ///< gather photons only
   std::vector<PhotonMap> m_by_source;
   std::size_t m_typical_count = 0;
   std::vector<std::size_t> m_class_counts[2];   ///< per source: caustic [0], global [1]
@@ -156,7 +172,9 @@ class GridPhotons {
 
 /// Photon part (caustic, global) of the coefficients at `sensors` from receiver-plane or
 /// surface photons; parallel over sensors, deterministic. `out` must be sized (sensors x
-/// sources) in caustic/global. Throws std::invalid_argument for gather photons (they need
+/// sources) in caustic/global; its photon_variance is filled (estimate_variance.h: the sum
+/// of the squared luminance terms of the photons each estimate sums, through the
+/// local-linear fit's weights on a receiver plane). Throws std::invalid_argument for gather photons (they need
 /// the scene: daylight_coefficients or photon_coefficients).
 void estimate_photon_coefficients(const GridPhotons& photons,
                                   const std::vector<SensorPoint>& sensors,

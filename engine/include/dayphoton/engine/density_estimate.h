@@ -57,6 +57,9 @@ struct DensityEstimate {
   Vec3 irradiance;                ///< W/m^2 per unit source radiance, RGB
   double radius_m = 0;            ///< kernel radius used
   std::size_t photon_count = 0;   ///< photons inside the kernel
+  /// Sum of the squared luminance terms (K Phi_j), the estimate's variance
+  /// (estimate_variance.h); times the square of any factor the caller applies.
+  double luminance_variance = 0;
 };
 
 /// The disc an estimate uses, by the rules above, from a neighbour list sorted by distance
@@ -75,7 +78,8 @@ KernelDisc kernel_disc(const std::vector<NeighbourPhoton>& sorted, std::size_t b
 /// for a disc of radius 0 that holds photons (see above).
 Vec3 accumulate_disc(const PhotonMap& map, const std::vector<NeighbourPhoton>& sorted,
                      const KernelDisc& disc, KernelType kernel,
-                     std::vector<Vec3>* per_source = nullptr);
+                     std::vector<Vec3>* per_source = nullptr, double* luminance_variance = nullptr,
+                     std::vector<double>* per_source_variance = nullptr);
 
 /// Irradiance from the photons passing `filter`. Throws std::invalid_argument for
 /// bandwidth 0 or a max radius that is not positive.
@@ -91,7 +95,8 @@ DensityEstimate estimate_irradiance(const PhotonMap& map, const Vec3& point,
 DensityEstimate estimate_contributions(const PhotonMap& map, const Vec3& point,
                                        const PhotonFilter& filter,
                                        const DensityEstimateOptions& options,
-                                       std::vector<Vec3>& per_source);
+                                       std::vector<Vec3>& per_source,
+                                       std::vector<double>* per_source_variance = nullptr);
 
 /// Bias-compensating operator (seeds/000 chapter 5, Alg. 5.1; digest sections 4.3, 4.6,
 /// 4.7): binary search on the bandwidth between n_min and n_max, accepting larger
@@ -122,6 +127,7 @@ DensityEstimate estimate_contributions_bias_compensated(const PhotonMap& map,
                                                         const Vec3& point,
                                                         const PhotonFilter& filter,
                                                         const BiasCompensationOptions& options,
-                                                        std::vector<Vec3>& per_source);
+                                                        std::vector<Vec3>& per_source,
+                                                        std::vector<double>* per_source_variance = nullptr);
 
 }  // namespace dayphoton::engine

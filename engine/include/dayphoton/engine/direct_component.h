@@ -120,11 +120,15 @@ SkyPath trace_to_sky(const Scene& scene, const std::vector<Material>& materials,
 /// RGB, W/m^2 per unit radiance (W/m^2/sr). Parallel over sensors (oneTBB); every entry
 /// depends only on (scene, materials, source p, sensor s, options), so the result is
 /// identical for any thread count. Throws std::invalid_argument for samples_per_source < 1,
-/// a sensor normal that is zero or not finite, or too few materials.
+/// a sensor normal that is zero or not finite, or too few materials. `variance`, if given,
+/// receives the same layout: the collapsed-strata variance of each entry's luminance
+/// (estimate_variance.h), both strategies' strata added (they are independent); the
+/// estimates themselves do not change.
 std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Material>& materials,
                                       const SourceSet& sources,
                                       const std::vector<SensorPoint>& sensors,
-                                      const DirectOptions& options);
+                                      const DirectOptions& options,
+                                      std::vector<double>* variance = nullptr);
 
 /// Direct irradiance at one sensor from a continuous sky radiance function
 /// (direction toward the sky -> RGB radiance), integrated over the sources of `sources`

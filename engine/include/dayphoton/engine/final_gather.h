@@ -44,6 +44,20 @@
 // gets that beam with high variance. Surfaces receive it through their caustic photons
 // (a sensor on a surface, or a receiver plane, resolves it).
 //
+// Variance (estimate_variance.h). The estimate F = sum_h Z_h over the gather rays h has two
+// random parts, the photons and the rays. Given the rays, F is linear in the photons, but one
+// photon (and one light path, whose photons were stored one after the other on several
+// surfaces) reaches the sensor along many rays: its terms are summed over all rays first, and
+// the photons are grouped by path (PhotonGroups: runs of PathGroupPhotons consecutive
+// photons of a source in tracing order; the groups are independent draws), so the photon part
+// is the batch-means variance of the groups' sums, C/(C-1) (sum_c S_c^2 - S^2/C) with C the
+// source's groups. The rays' part (the sampling of the directions, and of the specular paths
+// to the sources: the caustic part) is the collapsed-strata variance (pairs of neighbouring
+// strata) of the rays' values over all sources, shared among the sources by their part of
+// each pair's values (a ray is shared by the sources: estimate_variance.h), less the photon
+// noise those values carry, which the same formula applied to each group's per-ray sums S_hc
+// estimates (that noise is in the photon part already). Their sum is clamped at 0.
+//
 // Determinism: gather ray i of sensor s uses Rng(seed, s, i, RandomStream::Gather); sensors
 // are independent, so the result is identical for any thread count.
 #pragma once
@@ -60,6 +74,25 @@
 
 namespace dayphoton::engine {
 
+/// Consecutive stored photons of one source grouped for the gather's variance (header
+/// comment): a path's photons are stored one after the other, so a group of this many holds
+/// whole paths except at its ends.
+constexpr std::size_t PathGroupPhotons = 64;
+
+/// Which photons of a map come from the same paths (header comment, "Variance").
+struct PhotonGroups {
+  std::vector<std::uint32_t> group_of;          ///< per photon of the map (tree order)
+  std::vector<std::uint32_t> source_of;         ///< per group
+  std::vector<std::uint32_t> groups_of_source;  ///< per source
+  /// Groups of `group_size` consecutive photons of one source, in the tracing order of
+  /// `photons` (a new group also starts where the source changes); group_of in that order.
+  static PhotonGroups consecutive(const std::vector<Photon>& photons, std::size_t sources,
+                                  std::size_t group_size = PathGroupPhotons);
+  /// Put group_of in the map's tree order: `tree_to_input` maps each photon of the built
+  /// map to its index in the photons given to consecutive() (PhotonMap's second constructor).
+  void to_tree_order(const std::vector<std::uint32_t>& tree_to_input);
+};
+
 struct GatherOptions {
   int rays_per_sensor = 1024;       ///< gather rays per sensor, >= 1; rounded up to a square
   std::size_t bandwidth = 32;       ///< photons per lookup at a gather hit (all sources), >= 1
@@ -71,6 +104,8 @@ struct GatherOptions {
 /// [sensor * sources + source], RGB W/m^2 per unit source radiance.
 struct GatheredCoefficients {
   std::vector<Vec3> caustic, global;
+  /// The variance of caustic + global's luminance (header comment), when groups were given.
+  std::vector<double> variance;
 };
 
 /// The gather at every sensor. `surface_photons` is the map of every stored surface photon
@@ -82,6 +117,7 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene,
                                                 const SourceSet& sources,
                                                 const PhotonMap& surface_photons,
                                                 const std::vector<SensorPoint>& sensors,
-                                                const GatherOptions& options);
+                                                const GatherOptions& options,
+                                                const PhotonGroups* groups = nullptr);
 
 }  // namespace dayphoton::engine

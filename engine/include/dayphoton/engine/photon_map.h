@@ -78,6 +78,9 @@ class PhotonMap {
   /// MaxPhotons. Large maps are built with several threads (oneTBB); the result does not
   /// depend on the thread count.
   explicit PhotonMap(std::vector<Photon> photons);
+  /// The same, and `input_index` receives, for every photon in tree order, its index in
+  /// `photons` (the permutation the build applied).
+  PhotonMap(std::vector<Photon> photons, std::vector<std::uint32_t>& input_index);
 
   std::size_t size() const { return m_photons.size(); }
   bool empty() const { return m_photons.empty(); }
@@ -94,6 +97,7 @@ class PhotonMap {
   std::size_t memory_bytes() const;
 
  private:
+  void build(std::vector<std::uint32_t>* input_index);
   std::vector<Photon> m_photons;     ///< in tree order
   std::vector<std::uint8_t> m_axis;  ///< split axis of the node at each mid index (leaves unused)
 };

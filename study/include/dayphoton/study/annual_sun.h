@@ -141,13 +141,15 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
 /// Photon part (caustic + global) of the sun-bin coefficients at `sensors`: sensors x bins x
 /// RGB, W/m^2 per unit disc radiance (what coefficients_sun.mtx holds). `photons` are the
 /// sun bins' photons, source i = bin i = sources[i] (the discs, for a final gather's
-/// specular paths; engine::photon_coefficients).
+/// specular paths; engine::photon_coefficients). `variance`, if given, receives each entry's
+/// variance (sensors x bins, engine/estimate_variance.h).
 RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const std::vector<engine::Material>& materials,
                                     const engine::SourceSet& sources,
                                     const engine::GridPhotons& photons,
                                     const std::vector<SensorPoint>& sensors,
-                                    const engine::CoefficientOptions& options);
+                                    const engine::CoefficientOptions& options,
+                                    std::vector<double>* variance = nullptr);
 
 /// Direct-sun illuminance (lux), steps x sensors: 179 w . C_direct[s][k] L_k for each sun k
 /// at its step, 0 at every other step. `direct` from direct_sun_coefficients.

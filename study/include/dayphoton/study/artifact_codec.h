@@ -15,7 +15,8 @@
 //                 3 x f32 position, 3 x f32 flux, u32 source, 3 x i8 normal, u8 path class
 //                 (checked to be a PathClass).
 //   coefficients: u64 sensors, u64 sources, then direct, caustic, global, each
-//                 sensors x sources Vec3 as 3 x f64.
+//                 sensors x sources Vec3 as 3 x f64, then direct_variance and
+//                 photon_variance, each sensors x sources f64.
 //   matrix:       u64 rows, u64 columns, u32 components (>= 1), u64 header lines, each
 //                 u64 length + bytes, then rows x columns x components f32.
 #pragma once
@@ -32,7 +33,7 @@ namespace dayphoton::study {
 /// Layout versions: bump one whenever its layout changes, so older artefacts are refused
 /// (and recomputed) instead of misread.
 inline constexpr std::uint32_t PhotonLayoutVersion = 3;  // 2: SourceTally::capped; 3: storage_probability_direct, nothing_stores
-inline constexpr std::uint32_t CoefficientLayoutVersion = 1;
+inline constexpr std::uint32_t CoefficientLayoutVersion = 2;  // 2: the variances
 inline constexpr std::uint32_t MatrixLayoutVersion = 1;
 
 std::string encode_photons(const engine::TracedPhotons& photons);

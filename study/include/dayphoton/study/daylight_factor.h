@@ -5,6 +5,7 @@
 // horizontal illuminance of that sky (the nominal value the vector was scaled to).
 #pragma once
 
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -19,6 +20,26 @@ namespace dayphoton::study {
 std::vector<double> daylight_factor_percent(const RadianceMatrix& coefficients,
                                             const RadianceMatrix& sky_vector,
                                             double horizontal_illuminance_lux);
+
+/// The standard error of each sensor's DF in percent (points of DF): the sources are
+/// independent, so Var(DF_s) = (100 x 179 / E_h)^2 sum_p L_p^2 Var(y_sp), y the luminance of
+/// the coefficient and L_p the sky vector's luminance-weighted radiance (exact for a grey sky
+/// such as the CIE overcast one; engine/estimate_variance.h). `variance` is
+/// [sensor x bins + bin] (engine::DaylightCoefficients::variance). Throws
+/// std::invalid_argument on a size mismatch or a non-positive illuminance.
+std::vector<double> daylight_factor_stderr_percent(const std::vector<double>& variance, std::size_t sensors,
+                                                   const RadianceMatrix& sky_vector,
+                                                   double horizontal_illuminance_lux);
+
+/// The uncertainty of a grid's DF (docs/outputs.md, summary.json `uncertainty`).
+struct DaylightFactorUncertainty {
+  /// sqrt(mean over sensors with DF > 0 of (stderr / DF)^2), percent.
+  double rms_relative_stderr_percent = 0;
+  double max_relative_stderr_percent = 0;  ///< the largest stderr / DF over those sensors
+  std::size_t sensors_with_light = 0;      ///< sensors with DF > 0 (the others have no relative error)
+};
+DaylightFactorUncertainty daylight_factor_uncertainty(const std::vector<double>& df_percent,
+                                                      const std::vector<double>& stderr_percent);
 
 /// Grid statistics of a set of values (DF in percent here).
 struct GridStatistics {

@@ -17,9 +17,11 @@ void write_sensors_csv(const std::vector<SensorPoint>& sensors, const std::strin
 /// InputError located file:line:field on a wrong header, a non-number or an index out of
 /// sequence.
 std::vector<SensorPoint> read_sensors_csv(const std::string& path);
-/// daylight_factor.csv: index,x,y,z,df_percent (4 decimals).
+/// daylight_factor.csv: index,x,y,z,df_percent (4 decimals), and df_stderr_percent (the
+/// Monte Carlo standard error of df_percent, 4 decimals) when `stderr_percent` is not empty.
 void write_daylight_factor_csv(const std::vector<SensorPoint>& sensors,
-                               const std::vector<double>& df_percent, const std::string& path);
+                               const std::vector<double>& df_percent, const std::string& path,
+                               const std::vector<double>& stderr_percent = {});
 /// point_in_time.csv: index,x,y,z then one `<case>_lux` column per point-in-time case
 /// (`case_names`, in file order), lux with 1 decimal. `table` has one step per case.
 void write_point_in_time_csv(const std::vector<SensorPoint>& sensors, const std::vector<std::string>& case_names,

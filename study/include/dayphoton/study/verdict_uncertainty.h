@@ -1,0 +1,43 @@
+// Which sensors' annual verdicts the Monte Carlo uncertainty leaves open (docs/metrics.md,
+// "Uncertainty of the verdicts"): the standard error of every hour's illuminance from the
+// coefficients' variances (engine/estimate_variance.h), and the sensors whose DA verdict
+// (DA_X >= the sDA time fraction, the verdict sDA counts) differs between the illuminance
+// lowered and raised by two standard errors in every occupied hour at once. All hours move
+// together because their errors are those of the same coefficients (strongly correlated
+// from hour to hour), which is the widest band the verdict can move in.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/engine/sun_bins.h"
+#include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/study/annual_study.h"
+
+namespace dayphoton::study {
+
+/// The sun bins' part of the variance (sun: bins): the indirect sun interpolated from the
+/// bins, each bin's variance weighted by its stencil weight squared.
+struct SunBinVariance {
+  const std::vector<double>* variance = nullptr;  ///< sensors x bins, luminance (estimate_variance.h)
+  const engine::SunBins* bins = nullptr;
+  const std::vector<sky::SunRecord>* suns = nullptr;
+};
+
+/// Multiplier of the standard error in the verdict test.
+constexpr double VerdictSigmas = 2.0;
+
+struct VerdictUncertainty {
+  std::size_t da_verdicts_uncertain = 0;  ///< sensors whose DA verdict could flip
+  double mean_occupied_stderr_lux = 0;    ///< RMS over sensors and occupied hours of the standard error
+};
+
+/// `study` as computed (its illuminance and sensors), `sky` its sky, `sky_variance` the sky
+/// coefficients' variance (sensors x bins, DaylightCoefficients::variance), `sun` the sun
+/// bins' part or null. Throws std::invalid_argument on a size mismatch.
+VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky& sky,
+                                       const std::vector<double>& sky_variance, const SunBinVariance* sun,
+                                       const AnnualStudySettings& settings);
+
+}  // namespace dayphoton::study

@@ -1,0 +1,155 @@
+// The reported uncertainty is honest: over Seeds independent runs (simulation.seed 1..Seeds)
+// of projects/office and projects/light_shelf, with fewer photons than they ship with (so the
+// test takes tens of seconds), every sensor's observed spread of the daylight factor agrees
+// with the standard error the runs report beside it (daylight_factor.csv, df_stderr_percent).
+//
+// Per sensor s: S_s, the sample standard deviation of DF over the runs, against sigma_s, the
+// mean reported standard error. For normal errors (n - 1) S^2 / sigma^2 ~ chi^2(n - 1), so
+// E[S] = c4(n) sigma (c4 = sqrt(2 / (n - 1)) Gamma(n / 2) / Gamma((n - 1) / 2), 0.987 at
+// n = 20) and the ratio R_s = S_s / (c4 sigma_s) has mean 1. The statistic is the mean of R_s
+// over the sensors. The sensors are NOT independent (neighbouring sensors share photons, and
+// every sensor shares the direct component's sources), so its standard deviation is not
+// sd(R) / sqrt(sensors): by the delta method, Cov(S_s / sigma_s, S_t / sigma_t) =
+// rho_st^2 / (2 (n - 1)) for normal errors of correlation rho_st, so
+//
+//   sd(mean R) = sqrt(mean over s, t of rho_st^2 / (2 (n - 1))),
+//
+// with rho_st^2 estimated by the runs' own sample correlations (biased upward by about
+// 1 / (n - 1) for uncorrelated pairs, so the bound is conservative). The mean ratio must lie
+// within 4 of those standard deviations of 1 (two-sided p = 6e-5 per project), and within
+// the acceptance target 0.8 - 1.25.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "dayphoton/project/project.h"
+#include "dayphoton/study/progress.h"
+#include "dayphoton/study/study_runner.h"
+
+namespace dayphoton::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int Seeds = 20;
+constexpr double Sigmas = 4.0;
+constexpr double TargetLow = 0.8, TargetHigh = 1.25;
+
+/// One run's DF and reported standard error, every sensor of every grid in order.
+struct SensorValues {
+  std::vector<double> df, stderr_percent;
+};
+
+void read_daylight_factor(const fs::path& csv, SensorValues& into) {
+  std::ifstream in(csv);
+  ASSERT_TRUE(in) << csv;
+  std::string line;
+  std::getline(in, line);
+  ASSERT_EQ(line, "index,x,y,z,df_percent,df_stderr_percent") << csv;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::stringstream fields(line);
+    std::string field;
+    while (std::getline(fields, field, ',')) v.push_back(std::stod(field));
+    ASSERT_EQ(v.size(), 6u) << line;
+    into.df.push_back(v[4]);
+    into.stderr_percent.push_back(v[5]);
+  }
+}
+
+double c4(int n) { return std::sqrt(2.0 / (n - 1)) * std::exp(std::lgamma(n / 2.0) - std::lgamma((n - 1) / 2.0)); }
+
+struct Honesty {
+  double mean_ratio = 0, sd_of_mean = 0;
+  std::size_t sensors = 0;
+};
+
+/// Run `project` Seeds times (grids' DF only) and compare the spread with the reported error.
+Honesty honesty(project::Project p, const std::string& name, const std::vector<std::string>& grids) {
+  p.outputs.annual_illuminance = p.outputs.metrics = p.outputs.images = p.outputs.report = false;
+  p.outputs.coefficients = false;
+  p.outputs.daylight_factor = true;
+  std::vector<SensorValues> runs(Seeds);
+  for (int seed = 1; seed <= Seeds; ++seed) {
+    p.simulation.seed = static_cast<std::uint64_t>(seed);
+    const fs::path out = fs::path(::testing::TempDir()) / ("uncertainty_" + name) / std::to_string(seed);
+    fs::remove_all(out);
+    RunSettings settings;
+    settings.output_dir = out.string();
+    std::ostringstream quiet;
+    Progress progress(quiet, ProgressStyle::Quiet);
+    run_study(p, settings, progress);
+    for (const std::string& g : grids) read_daylight_factor(out / g / "daylight_factor.csv", runs[seed - 1]);
+    fs::remove_all(out);
+  }
+  const std::size_t m_all = runs[0].df.size();
+  // Sensors with light and a reported error (a sensor in the dark has neither spread nor error).
+  std::vector<std::size_t> used;
+  std::vector<double> mean(m_all, 0.0), sd(m_all, 0.0), sigma(m_all, 0.0);
+  for (std::size_t s = 0; s < m_all; ++s) {
+    for (const SensorValues& r : runs) {
+      mean[s] += r.df[s] / Seeds;
+      sigma[s] += r.stderr_percent[s] / Seeds;
+    }
+    for (const SensorValues& r : runs) sd[s] += (r.df[s] - mean[s]) * (r.df[s] - mean[s]);
+    sd[s] = std::sqrt(sd[s] / (Seeds - 1));
+    if (mean[s] > 0 && sigma[s] > 0 && sd[s] > 0) used.push_back(s);
+  }
+  Honesty h;
+  h.sensors = used.size();
+  if (used.empty()) return h;
+  double worst_low = 1e30, worst_high = 0;
+  for (const std::size_t s : used) {
+    const double r = sd[s] / (c4(Seeds) * sigma[s]);
+    h.mean_ratio += r / double(used.size());
+    worst_low = std::min(worst_low, r);
+    worst_high = std::max(worst_high, r);
+  }
+  double rho2 = 0;
+  for (const std::size_t s : used)
+    for (const std::size_t t : used) {
+      double cov = 0;
+      for (const SensorValues& r : runs) cov += (r.df[s] - mean[s]) * (r.df[t] - mean[t]);
+      const double rho = cov / ((Seeds - 1) * sd[s] * sd[t]);
+      rho2 += rho * rho;
+    }
+  rho2 /= double(used.size()) * double(used.size());
+  h.sd_of_mean = std::sqrt(rho2 / (2.0 * (Seeds - 1)));
+  std::printf("%s: %zu sensors, mean observed / reported standard error %.4f (sd of the mean %.4f, "
+              "mean rho^2 %.3f; per sensor %.3f .. %.3f)\n",
+              name.c_str(), h.sensors, h.mean_ratio, h.sd_of_mean, rho2, worst_low, worst_high);
+  return h;
+}
+
+void expect_honest(const Honesty& h) {
+  ASSERT_GT(h.sensors, 0u);
+  EXPECT_NEAR(h.mean_ratio, 1.0, Sigmas * h.sd_of_mean);
+  EXPECT_GE(h.mean_ratio, TargetLow);
+  EXPECT_LE(h.mean_ratio, TargetHigh);
+}
+
+TEST(UncertaintyHonesty, OfficeSpreadOverSeedsMatchesTheReportedStandardError) {
+  project::Project p = project::load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/project.yaml");
+  p.simulation.photons_per_bin = 2000;  // the project's 40 000 / 20
+  p.simulation.direct_samples_per_bin = 16;
+  expect_honest(honesty(p, "office", {"workplane"}));
+}
+
+TEST(UncertaintyHonesty, LightShelfSpreadOverSeedsMatchesTheReportedStandardError) {
+  // Receiver-plane estimates on the work plane, final gathers at the ceiling probes (caustic
+  // paths off the shelf), exterior mirror shelf as an outdoor scatterer.
+  project::Project p = project::load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/light_shelf/project.yaml");
+  p.simulation.photons_per_bin = 250;  // the project's 2000 / 8
+  p.simulation.direct_samples_per_bin = 9;
+  p.simulation.gather_rays = 256;
+  expect_honest(honesty(p, "light_shelf", {"workplane", "ceiling_probes"}));
+}
+
+}  // namespace
+}  // namespace dayphoton::study
