@@ -296,7 +296,9 @@ TEST(RadianceScene, RingCylinderAndConeFaceAsRadianceSays) {
 class RadianceXform : public ::testing::Test {
  protected:
   void SetUp() override {
-    m_dir = fs::path(::testing::TempDir()) / "radiance_xform";
+    // A folder per test: ctest runs the tests of this fixture in parallel processes.
+    m_dir = fs::path(::testing::TempDir()) /
+            ("radiance_xform_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(m_dir);
     fs::create_directories(m_dir / "parts");
     write("parts/tri.rad", "grey polygon tri 0 0 9 0 0 0 1 0 0 0 1 0\n");

@@ -228,6 +228,7 @@ TEST(RadianceImportStudy, ImportedOfficeGivesTheOfficesDaylightFactorAndDa300) {
   // Everything but the geometry, its materials and the grid's outline is the office's own.
   imported.site = office.site;
   imported.weather = office.weather;
+  imported.study = project::StudyKind::Annual;  // loaded without weather: a daylight-factor study
   imported.simulation = office.simulation;
   imported.metrics = office.metrics;
   ASSERT_TRUE(imported.geometry.rooms.empty());
