@@ -23,6 +23,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/project/project.h"
+#include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/result_files.h"
@@ -149,6 +150,46 @@ study::AnnualStudySettings annual_settings(const AnnualOptions& o, const project
   return settings;
 }
 
+/// `--sky-vector`: coefficients x one sky column = the illuminance per sensor under that sky
+/// (what dctimestep computes for one sky vector), written as sky_vector_illuminance.csv.
+int sky_vector_illuminance(const AnnualOptions& o, const RadianceMatrix& coefficients,
+                           const std::string& coefficients_path, const std::vector<SensorPoint>& sensors,
+                           std::ostream& out) {
+  MatrixReadOptions read_options;
+  read_options.non_negative = true;
+  read_options.max_values = o.max_matrix_values;
+  const RadianceMatrix vector = study::read_matrix_file(o.sky_vector_path, read_options, o.max_decompressed_bytes);
+  if (vector.columns() != 1)
+    throw InputError(SourceLocation{o.sky_vector_path, 0, 0},
+                     "has " + std::to_string(vector.columns()) +
+                         " columns; --sky-vector takes one sky (one column; --sky-matrix takes an annual matrix)");
+  if (vector.rows() != coefficients.columns() || vector.components() != coefficients.components())
+    throw InputError(SourceLocation{o.sky_vector_path, 0, 0},
+                     "has " + std::to_string(vector.rows()) + " rows x " + std::to_string(vector.components()) +
+                         " components but " + coefficients_path + " has " + std::to_string(coefficients.columns()) +
+                         " bins x " + std::to_string(coefficients.components()));
+  const metrics::IlluminanceTable table = study::annual_illuminance(coefficients, vector, {metrics::TimeStamp{}});
+  const std::string output_dir =
+      o.output_dir.empty() ? (fs::path(o.coefficients_dir) / "annual").string() : o.output_dir;
+  fs::create_directories(output_dir);
+  const std::string path = (fs::path(output_dir) / "sky_vector_illuminance.csv").string();
+  study::write_point_in_time_csv(sensors, {"illuminance"}, table, path);
+  if (!o.quiet) {
+    double sum = 0, low = 0, high = 0;
+    for (std::size_t i = 0; i < table.sensor_count(); ++i) {
+      const double e = table.lux(0, i);
+      sum += e;
+      low = i == 0 ? e : std::min(low, e);
+      high = i == 0 ? e : std::max(high, e);
+    }
+    out << "dayphoton annual: " << sensors.size() << " sensors under the sky of " << o.sky_vector_path << ": mean "
+        << std::fixed << std::setprecision(1) << sum / double(std::max<std::size_t>(1, sensors.size())) << " lux, min "
+        << low << ", max " << high << "\n  wrote " << path << '\n';
+    require_written(out, "the summary");
+  }
+  return ExitOk;
+}
+
 }  // namespace
 
 int run_annual(const AnnualOptions& o, std::ostream& out) {
@@ -190,6 +231,8 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
     throw InputError(SourceLocation{coefficients_path, 0, 0},
                      "has " + std::to_string(coefficients.columns()) + " columns but --basis " + o.basis + " has " +
                          std::to_string(basis.bin_count()) + " bins");
+
+  if (!o.sky_vector_path.empty()) return sky_vector_illuminance(o, coefficients, coefficients_path, sensors, out);
 
   // The project first: its errors are located in it (exit 1), before any matrix is read.
   std::optional<project::Project> project;

@@ -92,6 +92,9 @@ struct AnnualOptions {
   std::string coefficients_dir;  ///< grid folder of `dayphoton run` (coefficients_sky.mtx, sensors.csv)
   std::string weather_path;      ///< EPW or .wea: time stamps, and the sky unless sky_matrix_path is given
   std::string sky_matrix_path;   ///< RADIANCE matrix file (plain or .gz); empty: built from the weather file
+  /// One sky (a one-column RADIANCE matrix, e.g. `dayphoton sky --cie N`): the illuminance
+  /// per sensor under it instead of the annual study; no weather file needed.
+  std::string sky_vector_path;
   std::string output_dir;        ///< empty: <coefficients_dir>/annual
   std::string basis;             ///< empty: from the coefficients' column count
   double ground_reflectance = 0.2;     ///< used if given, else the run's (summary.json), else 0.2

@@ -172,6 +172,10 @@ int main(int argc, char** argv) {
   annual_cmd->add_option("--sky-matrix", annual.sky_matrix_path,
                          "Read the sky matrix from this RADIANCE matrix file (e.g. gendaymtx output, plain or .gz) "
                          "instead of building it from the weather file");
+  annual_cmd->add_option("--sky-vector", annual.sky_vector_path,
+                         "One sky (a one-column RADIANCE matrix, e.g. from `dayphoton sky --cie N`): write the "
+                         "illuminance per sensor under it (sky_vector_illuminance.csv) instead of the annual study")
+      ->excludes("--sky-matrix")->excludes("--weather")->excludes("--project");
   annual_cmd->add_option("-o,--output", annual.output_dir, "Output folder (default: <coefficients>/annual)");
   annual_cmd->add_option("--basis", annual.basis,
                          "tregenza or reinhart:N (default: from the coefficients' column count)");

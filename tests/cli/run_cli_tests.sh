@@ -164,6 +164,23 @@ else
   echo "FAIL run_daylight_factor_study: exit $code"; cat "$scratch/df_study.out" "$scratch/df_study/run.log"; failed=$((failed + 1))
 fi
 
+# annual --sky-vector: the CIE overcast sky of `dayphoton sky` applied to the exported sky
+# coefficients gives DF x E_h / 100 at every sensor (the run's DF sky is the same sky).
+"$bin" sky --cie overcast --illuminance 10000 -o "$scratch/overcast.mtx" &&
+"$bin" annual --coefficients "$scratch/df_study/workplane" --sky-vector "$scratch/overcast.mtx" -o "$scratch/sv" --quiet
+if python3 - "$scratch/df_study/workplane/daylight_factor.csv" "$scratch/sv/sky_vector_illuminance.csv" <<'PY'
+import csv, sys
+df = [float(r["df_percent"]) for r in csv.DictReader(open(sys.argv[1]))]
+lux = [float(r["illuminance_lux"]) for r in csv.DictReader(open(sys.argv[2]))]
+# DF printed with 4 decimals (0.5e-4 % of 10000 lx = 0.005 lx), lux with 1 (0.05 lx).
+sys.exit(0 if len(df) == len(lux) > 0 and all(abs(e - 100 * d) <= 0.06 for d, e in zip(df, lux)) else 1)
+PY
+then
+  echo "ok   annual_sky_vector"; passed=$((passed + 1))
+else
+  echo "FAIL annual_sky_vector"; failed=$((failed + 1))
+fi
+
 # The cache lies beside the output folder, not in it; `clean` keeps what the last run used.
 if [ -d "$scratch/.df_study-cache" ] && [ ! -e "$scratch/df_study/.cache" ] &&
    [ -s "$scratch/.df_study-cache/used-by-last-run.txt" ] &&
