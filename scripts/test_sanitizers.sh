@@ -22,7 +22,10 @@ flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitiz
 
 targets=()
 for s in "${suites[@]}"; do targets+=("${s}_tests"); done
-for h in project epw obj pts matrix; do targets+=("fuzz_replay_$h"); done
+# Every fuzz harness's corpus replay (the list is declared once, in fuzz/harnesses.cmake).
+harnesses=$(sed -n 's/^set(DAYPHOTON_FUZZ_HARNESSES \(.*\))$/\1/p' fuzz/harnesses.cmake)
+[ -n "$harnesses" ] || { echo "test_sanitizers.sh: no DAYPHOTON_FUZZ_HARNESSES in fuzz/harnesses.cmake" >&2; exit 1; }
+for h in $harnesses; do targets+=("fuzz_replay_$h"); done
 cmake --build build-asan -j"$(nproc)" --target "${targets[@]}"
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1}
