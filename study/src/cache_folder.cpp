@@ -19,7 +19,7 @@ std::string default_cache_folder(const std::string& output_dir) {
   const std::string name = out.filename().string();
   if (name.empty() || name == "." || name == "..") {
     out = fs::absolute(out).lexically_normal();
-    if (out.filename().empty()) out = out.parent_path();  // "/work/." -> "/work/" -> "/work"
+    if (out.filename().empty()) out = out.parent_path();  // "<dir>/." -> "<dir>/" -> "<dir>"
   }
   if (out.filename().empty() || out == out.root_path())  // the root: no parent to put it in
     return (fs::path(output_dir) / ".cache").string();

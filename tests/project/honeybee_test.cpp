@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
@@ -457,10 +458,10 @@ TEST(Honeybee, OrphanedFacesAperturesAndDoorsHaveAutoFacingPorts) {
 struct TempDir {
   std::string path;
   TempDir() {
-    char pattern[] = "/tmp/dayphoton_hb_XXXXXX";
-    path = mkdtemp(pattern);
+    std::string pattern = (std::filesystem::temp_directory_path() / "dayphoton_hb_XXXXXX").string();
+    path = mkdtemp(pattern.data());
   }
-  ~TempDir() { std::system(("rm -rf '" + path + "'").c_str()); }
+  ~TempDir() { std::filesystem::remove_all(path); }
   std::string write(const std::string& name, const std::string& text) const {
     std::ofstream(path + "/" + name) << text;
     return path + "/" + name;

@@ -42,7 +42,11 @@ struct Folder {
   std::string project() const { return (dir / "project.yaml").string(); }
 };
 
-std::vector<std::string> errors_of(const std::string& text, const std::string& path = "/tmp/p/project.yaml") {
+/// A project file "written" in a folder that does not exist, so relative paths resolve there.
+const fs::path FakeFolder = fs::temp_directory_path() / "dayphoton_occupancy_no_such_folder";
+const std::string FakeProject = (FakeFolder / "project.yaml").string();
+
+std::vector<std::string> errors_of(const std::string& text, const std::string& path = FakeProject) {
   return test::located_errors([&] { load_project_from_string(Base + text, path); });
 }
 
@@ -62,7 +66,7 @@ TEST(Occupancy, SchoolWeekLoads) {
                                                  "    holiday_hours: [10, 11]\n"
                                                  "    january_1: monday\n"
                                                  "    daylight_saving: eu\n",
-                                             "/tmp/p/project.yaml");
+                                             FakeProject);
   const OccupancySpec& o = p.metrics.occupancy;
   ASSERT_TRUE(o.given);
   EXPECT_EQ(o.location.line, 9);
@@ -83,7 +87,7 @@ TEST(Occupancy, SchoolWeekLoads) {
   EXPECT_EQ(o.january_1, 0);
   EXPECT_EQ(o.daylight_saving, "eu");
   // Without the key: the daily window, the old keys.
-  const Project old = load_project_from_string(Base + "metrics: {occupancy_start: 7}\n", "/tmp/p/project.yaml");
+  const Project old = load_project_from_string(Base + "metrics: {occupancy_start: 7}\n", FakeProject);
   EXPECT_FALSE(old.metrics.occupancy.given);
   EXPECT_EQ(old.metrics.occupancy_start_h, 7);
 }
@@ -94,7 +98,7 @@ TEST(Occupancy, SensorSetsHaveTheirOwn) {
           "sensors:\n"
           "  grids: [{name: a, polygon: [[0, 0, 0], [1, 0, 0], [1, 1, 0]], occupancy: {weekends: [10, 16]}}]\n"
           "  points: [{name: b, points: [[0, 0, 1, 0, 0, 1]], occupancy: {every_day: [0, 24]}}]\n",
-      "/tmp/p/project.yaml");
+      FakeProject);
   EXPECT_FALSE(p.metrics.occupancy.given);
   ASSERT_TRUE(p.sensors.grids[0].occupancy.given);
   EXPECT_EQ(p.sensors.grids[0].occupancy.week[6], (Windows{{10, 16}}));
@@ -145,7 +149,7 @@ TEST(Occupancy, EveryBadValueIsLocated) {
   EXPECT_EQ(errors_of("metrics: {occupancy: {file: missing.csv, weekdays: [8, 18]}}\n"),
             (std::vector<std::string>{
                 "7:42: 'weekdays' cannot be combined with 'file': the CSV gives every hour",
-                "7:29: occupancy schedule 'missing.csv' not found (looked for '/tmp/p/missing.csv')"}));
+                "7:29: occupancy schedule 'missing.csv' not found (looked for '" + (FakeFolder / "missing.csv").string() + "')"}));
 }
 
 TEST(Occupancy, CsvScheduleLoadsAndItsErrorsNameTheCsvLine) {
