@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "fresh_run.h"
 #include "../reference_data.h"
 #include "dayphoton/core/radiance_matrix.h"
 #include "dayphoton/core/units.h"
@@ -80,12 +81,7 @@ TEST(OfficeValidation, DaylightFactorAndBinSumsAgreeWithRadiance) {
   p.outputs.annual_illuminance = p.outputs.metrics = p.outputs.images = p.outputs.report = false;
   p.outputs.coefficients = true;
   const fs::path out = fs::path(::testing::TempDir()) / "office_validation";
-  fs::remove_all(out);
-  RunSettings settings;
-  settings.output_dir = out.string();
-  std::ostringstream quiet;
-  Progress progress(quiet, ProgressStyle::Quiet);
-  run_study(p, settings, progress);
+  test::run_in_fresh_folder(p, out);
 
   const RadianceMatrix c = RadianceMatrix::read_file((out / "workplane" / "coefficients_sky.mtx").string());
   const RadianceMatrix sky = RadianceMatrix::read_file(Radiance + "/skyvec_overcast_m1.vec");

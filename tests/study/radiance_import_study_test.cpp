@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "fresh_run.h"
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/project/project.h"
@@ -164,12 +165,7 @@ StudyResults run_case(project::Project p, unsigned long long seed, const std::st
   p.outputs.daylight_factor = p.outputs.annual_illuminance = p.outputs.metrics = true;
   p.outputs.images = p.outputs.report = p.outputs.coefficients = false;
   const fs::path out = fs::path(::testing::TempDir()) / ("radiance_import_" + label + std::to_string(seed));
-  fs::remove_all(out);
-  RunSettings settings;
-  settings.output_dir = out.string();
-  std::ostringstream quiet;
-  Progress progress(quiet, ProgressStyle::Quiet);
-  run_study(p, settings, progress);
+  test::run_in_fresh_folder(p, out);
   StudyResults r;
   const fs::path grid = out / "workplane";
   r.df_percent = csv_column(grid / "daylight_factor.csv", "df_percent");

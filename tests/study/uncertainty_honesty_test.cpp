@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "fresh_run.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
@@ -79,12 +80,7 @@ Honesty honesty(project::Project p, const std::string& name, const std::vector<s
   for (int seed = 1; seed <= Seeds; ++seed) {
     p.simulation.seed = static_cast<std::uint64_t>(seed);
     const fs::path out = fs::path(::testing::TempDir()) / ("uncertainty_" + name) / std::to_string(seed);
-    fs::remove_all(out);
-    RunSettings settings;
-    settings.output_dir = out.string();
-    std::ostringstream quiet;
-    Progress progress(quiet, ProgressStyle::Quiet);
-    run_study(p, settings, progress);
+    test::run_in_fresh_folder(p, out);
     for (const std::string& g : grids) read_daylight_factor(out / g / "daylight_factor.csv", runs[seed - 1]);
     fs::remove_all(out);
   }
