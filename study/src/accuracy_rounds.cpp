@@ -132,6 +132,8 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     trace_seconds += seconds_since(t);
     for (const auto& r : records) traced_attempts += r.attempts;
   }
+  AccuracyResult result;
+  for (const auto& r : records) result.outcome.pilot_attempts.push_back(r.attempts);
   // Photons at the reference per attempt, from the pilot (fixed from now on, so a source's
   // scale is proportional to its attempts).
   std::vector<double> per_attempt(n, 0.0);
@@ -156,7 +158,6 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
 
   const std::vector<double> luminance = bin_luminance(*c.overcast_vector);
   const double df_scale = 100.0 * RadianceWhiteEfficacy_lm_per_W / c.horizontal_illuminance_lux;
-  AccuracyResult result;
   result.outcome.target_percent = goal.target_percent;
   std::string pending;  // a budget that cut the last round short
   for (std::size_t round = 1;; ++round) {
@@ -286,6 +287,7 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     });
     trace_seconds += seconds_since(t);
   }
+  for (const auto& r : records) result.outcome.final_attempts.push_back(r.attempts);
   log("accuracy: " + result.outcome.stop_reason + " after " + std::to_string(result.outcome.rounds) + " round(s)");
   return result;
 }

@@ -101,6 +101,8 @@ struct AccuracyOutcome {
   std::uint64_t photons = 0;            ///< stored photons of all sky sources
   std::uint64_t attempts = 0;
   std::string stop_reason;  ///< "target met", "photon budget", "time budget", "round limit", "direct component", "no light"
+  /// Attempts per source after the pilot and at the end (of a run that traced; not cached).
+  std::vector<std::uint64_t> pilot_attempts, final_attempts;
 };
 
 /// Everything one case's rounds need.
