@@ -276,9 +276,13 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
                   static_cast<std::uint64_t>(std::floor(share * double(next[p] - records[p].attempts)));
       if (share < 0.05) {
         result.outcome.stop_reason = cut;
+        log("accuracy: no round " + std::to_string(round + 1) + ": the " + cut + " leaves room for " +
+            number(100.0 * share) + " % of it");
         break;
       }
       pending = cut;
+      log("accuracy: round " + std::to_string(round + 1) + " cut to " + number(100.0 * share) + " % of its plan by the " +
+          cut + "; the last round");
     }
     for (std::size_t p = 0; p < n; ++p) traced_attempts += next[p] - records[p].attempts;
     const Clock::time_point t = Clock::now();

@@ -232,7 +232,8 @@ TEST(AccuracyTarget, OneAndTwoThreadsGiveTheSameBytes) {
 }
 
 // A photon budget below the pilot's photons and a time budget shorter than the pilot stop the
-// rounds after the pilot, and the outcome says which.
+// rounds after the pilot, and the outcome says which; a budget between the pilot and the
+// second round's plan cuts that round and stops after it.
 TEST(AccuracyTarget, BudgetsStopTheRoundsWithTheirReason) {
   AccuracyGoal photons;
   photons.target_percent = Target;
@@ -248,6 +249,21 @@ TEST(AccuracyTarget, BudgetsStopTheRoundsWithTheirReason) {
   EXPECT_EQ(s.outcome.stop_reason, "time budget");
   EXPECT_EQ(s.outcome.rounds, 1u);
   EXPECT_EQ(s.outcome.final_attempts, p.outcome.final_attempts);  // both the pilot alone
+
+  // A budget 20 000 photons above the pilot's: round 2 is cut to fit and is the last. Its
+  // photons are planned from each source's yield so far, whose relative error is about
+  // 1 / sqrt(its photons); with at most 16 times a source's photons added, the plan's standard
+  // error is below sqrt(16 x budget), and the test allows 4 of them.
+  AccuracyGoal cut;
+  cut.target_percent = Target;
+  cut.max_photons = p.outcome.photons + 20000;
+  const AccuracyResult c = run(2, cut);
+  EXPECT_EQ(c.outcome.stop_reason, "photon budget");
+  EXPECT_EQ(c.outcome.rounds, 2u);
+  EXPECT_GT(c.outcome.photons, p.outcome.photons);
+  EXPECT_LE(double(c.outcome.photons), double(cut.max_photons) + 4.0 * std::sqrt(16.0 * double(cut.max_photons)));
+  std::printf("photon budget %llu: %llu photons stored\n", static_cast<unsigned long long>(cut.max_photons),
+              static_cast<unsigned long long>(c.outcome.photons));
 }
 
 }  // namespace
