@@ -129,6 +129,23 @@ void GridPhotons::count_classes() {
   }
 }
 
+void GridPhotons::set_source_scale(const std::vector<double>& scale) {
+  auto median_at_reference = [&scale](auto count_of, std::size_t n) -> std::size_t {
+    std::vector<double> counts;
+    for (std::size_t p = 0; p < n; ++p) {
+      const double c = double(count_of(p));
+      if (c > 0) counts.push_back(p < scale.size() && scale[p] > 0 ? c / scale[p] : c);
+    }
+    if (counts.empty()) return 0;
+    std::nth_element(counts.begin(), counts.begin() + counts.size() / 2, counts.end());
+    return static_cast<std::size_t>(std::max(1.0, std::round(counts[counts.size() / 2])));
+  };
+  m_typical_count = median_at_reference([this](std::size_t p) { return m_by_source[p].size(); }, m_by_source.size());
+  for (int c = 0; c < 2; ++c)
+    m_typical_class_count[c] =
+        median_at_reference([this, c](std::size_t p) { return m_class_counts[c][p]; }, m_class_counts[c].size());
+}
+
 std::size_t GridPhotons::median_count(const std::vector<PhotonMap>& maps) {
   std::vector<std::size_t> counts;
   for (const PhotonMap& m : maps)

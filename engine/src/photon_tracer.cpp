@@ -468,6 +468,28 @@ TracedPhotons trace_source_photons(const Scene& scene, const std::vector<Materia
   return out;
 }
 
+TracedPhotons trace_source_attempts(const Scene& scene, const std::vector<Material>& materials,
+                                    const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
+                                    const TracingOptions& options, std::size_t source, std::uint64_t first,
+                                    std::uint64_t last) {
+  SourceResult r;
+  r.planes.resize(planes.size());
+  r.tally.bound_flux = emitter.bound_flux(static_cast<std::uint32_t>(source));
+  if (!can_store_photons(scene, materials, planes)) {
+    r.tally.nothing_stores = true;
+  } else if (r.tally.bound_flux > 0 && last > first) {
+    trace_attempts(scene, materials, planes, emitter, static_cast<std::uint32_t>(source), first, last,
+                   StorageProbabilities{}, options, r);
+    r.tally.prepass_attempts = last - first;
+  }
+  TracedPhotons out;
+  out.surface = std::move(r.surface);
+  out.planes = std::move(r.planes);
+  out.planes.resize(planes.size());
+  out.tallies.push_back(r.tally);
+  return out;
+}
+
 TracedPhotons merge_traced_photons(std::vector<TracedPhotons>&& per_source) {
   TracedPhotons out;
   std::size_t plane_count = 0;

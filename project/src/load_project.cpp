@@ -1268,6 +1268,8 @@ class Loader {
       s.region_of_interest = box;
     }
     if (r.read_integer("max_attempts_per_photon", v)) s.max_attempts_per_photon = v;
+    if (const YamlNode* acc = r.take("accuracy"); acc && expect_map(*acc, "accuracy", m_reporter))
+      read_accuracy(*acc, r);
     std::string estimator;
     if (r.read_choice("estimator", estimator))
       s.estimator = estimator == "contribution" ? Estimator::Contribution : Estimator::PerSource;
@@ -1277,6 +1279,34 @@ class Loader {
     if (r.read_integer("gather_rays", v)) s.gather_rays = static_cast<int>(v);
     if (r.read_integer("gather_bandwidth", v)) s.gather_bandwidth = static_cast<int>(v);
     r.finish();
+  }
+
+  /// simulation.accuracy: a preset or a target, and the budgets. It replaces the photon
+  /// counts, so writing photons_per_bin (or a caustic target) as well is an error.
+  void read_accuracy(const YamlNode& node, ParamReader& simulation) {
+    Simulation& s = m_project.simulation;
+    Simulation::Accuracy a;
+    a.location = node.location;
+    ParamReader r(node, schema_section("accuracy"), m_reporter);
+    const bool target_written = r.has("target_df_relative_stderr_percent");
+    r.read_number("target_df_relative_stderr_percent", a.target_df_relative_stderr_percent);
+    if (r.has("preset") && r.read_choice("preset", a.preset)) {
+      if (target_written)
+        m_reporter.error(r.location_of("preset"),
+                         "give either 'preset' or 'target_df_relative_stderr_percent' in 'accuracy', not both");
+      a.target_df_relative_stderr_percent = a.preset == "draft" ? 5.0 : a.preset == "standard" ? 2.0 : 1.0;
+    }
+    long long v = 0;
+    if (r.read_integer("max_photons", v)) a.max_photons = v;
+    r.read_number("max_seconds", a.max_seconds);
+    r.finish();
+    for (const char* key : {"photons_per_bin", "caustic_photons_per_bin"})
+      if (simulation.has(key))
+        m_reporter.error(simulation.location_of(key),
+                         std::string("'") + key + "' and 'accuracy' exclude each other: the accuracy target chooses "
+                         "the photons of every sky bin (remove one of them)");
+    a.max_photons_location = r.location_of("max_photons");
+    s.accuracy = a;
   }
 
   void read_basis(ParamReader& r) {
@@ -1341,6 +1371,11 @@ class Loader {
   /// bins, against limits.photons; reported at photons_per_bin before anything is traced.
   void check_photon_limit() {
     const Simulation& s = m_project.simulation;
+    if (s.accuracy && s.accuracy->max_photons > 0 &&
+        std::uint64_t(s.accuracy->max_photons) > m_project.limits.photons)
+      m_reporter.error(s.accuracy->max_photons_location,
+                       "accuracy.max_photons " + std::to_string(s.accuracy->max_photons) + " " +
+                           over_limit_text(m_project.limits.photons, "limits.photons"));
     // Bins of the sky basis, ground included: Tregenza 145 patches + 1; Reinhart MF n
     // 144 n^2 + 1 patches + 1 (Reinhart, "Tregenza's and Reinhart's sky subdivisions";
     // RADIANCE's reinhartb.cal).

@@ -415,10 +415,17 @@ std::vector<SectionSchema> build_schema() {
       P("caustic_bandwidth", T::Integer, "photons per caustic estimate, among caustic photons only (0: `bandwidth` if caustic_photons_per_bin > 0, else caustic and global photons share one disc)").at_least(0).def("0"),
       P("region_of_interest", T::Section, "store photons only inside this box; the photon targets count only those (every sensor must lie inside)").section("region of interest"),
       P("max_attempts_per_photon", T::Integer, "low-yield cap: main-pass attempts per target photon of a bin (0 = no cap)").at_least(0).def("256"),
+      P("accuracy", T::Section, "trace the sky bins in rounds until the daylight factors reach a relative standard error, instead of photons_per_bin photons each (not with photons_per_bin or caustic_photons_per_bin)").section("accuracy"),
       P("estimator", T::Choice, "receiver-plane and surface estimates: each source from its own nearest photons, or the nearest photons of all sources binned by source (docs/photon-map.md)").choices({"per_source", "contribution"}).def("per_source"),
       P("point_estimate", T::Choice, "sensors off a receiver plane (points, vertical and tilted grids): a final gather from each sensor, or the surface photons at a sensor lying on a surface").choices({"gather", "surface"}).def("gather"),
       P("gather_rays", T::Integer, "final-gather rays per sensor (rounded up to a square)").range(1, 65536).def("1024"),
       P("gather_bandwidth", T::Integer, "photons per lookup where a gather ray lands (all sources together)").range(1, 10000).def("32"),
+  }});
+  s.push_back({"accuracy", "the accuracy target of simulation.accuracy (docs/photon-tracing.md, \"Accuracy target\")", {
+      P("preset", T::Choice, "a target by name: draft 5 %, standard 2 %, final 1 % (not with target_df_relative_stderr_percent)").choices({"draft", "standard", "final"}),
+      P("target_df_relative_stderr_percent", T::Number, "the 95th percentile of the sensors' relative standard error of DF to reach").unit("%").range(0.05, 50).def("1"),
+      P("max_photons", T::Integer, "photon budget: stored photons of all sky bins (0: limits.photons)").at_least(0).def("0"),
+      P("max_seconds", T::Number, "time budget for tracing and estimating, checked before each round (0: none; a run it stops is not reproducible)").unit("s").at_least(0).def("0"),
   }});
   s.push_back({"region of interest", "a box, model coordinates, where photons are stored", {
       P("origin", T::Vec3, "min corner").unit("m").required(),

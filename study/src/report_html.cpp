@@ -724,6 +724,15 @@ std::string grid_section(const GridData& g, PageIds& page) {
       rows.emplace_back("standard error of DF, largest (relative)",
                         json_scalar(u.value("df_max_relative_stderr_percent", json())) + " %");
     }
+    // The accuracy target (docs/photon-tracing.md, "Accuracy target"): what the rounds reached.
+    const json acc = g.summary.value("accuracy", json::object());
+    if (acc.contains("target_df_relative_stderr_percent"))
+      rows.emplace_back("accuracy target: standard error of DF, 95th percentile of the sensors (relative)",
+                        json_scalar(acc.value("reached_df_relative_stderr_percent", json())) + " % (target " +
+                            json_scalar(acc.value("target_df_relative_stderr_percent", json())) + " %; " +
+                            esc(acc.value("stop_reason", std::string())) + " after " +
+                            json_scalar(acc.value("rounds", json())) + " rounds, " +
+                            json_scalar(acc.value("photons", json())) + " photons)");
     // The annual verdicts within two standard errors (docs/metrics.md).
     if (u.contains("da_verdicts_within_2_sigma"))
       rows.emplace_back("sensors whose DA verdict could flip within 2 standard errors",

@@ -25,6 +25,7 @@
 #include "dayphoton/project/north_rotation.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
+#include "dayphoton/study/accuracy_rounds.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/annual_study.h"
@@ -623,6 +624,54 @@ struct CaseTables {
   std::vector<Grid> grids;
 };
 
+/// The sky coefficients of every grid by the accuracy rounds (accuracy_rounds.h) into
+/// `coefficients`; the rounds' outcome. Replaces the count-controlled photons and estimates.
+AccuracyOutcome accuracy_case(const project::Project& project, const std::string& prefix, const engine::Scene& scene,
+                              const std::vector<engine::Material>& materials, const engine::SourceSet& sources,
+                              const std::vector<engine::ReceiverPlane>& planes, const std::vector<int>& plane_of_grid,
+                              const std::vector<SensorGrid>& grids, const engine::TracingOptions& tracing,
+                              const engine::CoefficientOptions& estimating, const std::vector<std::string>& photon_keys,
+                              std::vector<std::optional<engine::DaylightCoefficients>>& coefficients, RunContext& ctx) {
+  const project::Simulation& sim = project.simulation;
+  const double rho_g = sim.ground_reflectance;
+  const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(OvercastHorizontalLux));
+  const RadianceMatrix overcast_vector = sky::sky_vector(
+      *overcast, basis_of(sim), sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, OvercastHorizontalLux, 0, {0, 0, -1}));
+  AccuracyCase c;
+  c.scene = &scene;
+  c.materials = &materials;
+  c.sources = &sources;
+  c.planes = &planes;
+  c.plane_of_grid = &plane_of_grid;
+  c.grids = &grids;
+  c.gather = sim.point_estimate == project::PointEstimate::Gather;
+  c.tracing = tracing;
+  c.estimating = estimating;
+  c.overcast_vector = &overcast_vector;
+  c.horizontal_illuminance_lux = OvercastHorizontalLux;
+  AccuracyGoal goal;
+  goal.target_percent = sim.accuracy->target_df_relative_stderr_percent;
+  goal.max_photons = sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons;
+  goal.max_seconds = sim.accuracy->max_seconds;
+  ctx.progress.start(prefix + "photons (accuracy rounds)", 1, "runs");
+  CaseAccuracy r = accuracy_coefficients(c, goal, ctx.store, ctx.settings.force, photon_keys,
+                                         [&](const std::string& line) { ctx.log.line(prefix + line); });
+  ctx.progress.advance(1);
+  ctx.progress.end();
+  if (r.cached) {
+    ctx.report.sources_cached += sources.size();
+    ctx.report.grids_cached += grids.size();
+  } else {
+    ctx.report.sources_traced += sources.size();
+    ctx.report.grids_estimated += grids.size();
+  }
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    coefficients[g] = std::move(r.coefficients[g]);
+    ctx.log.line(prefix + "accuracy " + grids[g].name + ": " + accuracy_sentence(r.outcome, g));
+  }
+  return r.outcome;
+}
+
 /// One case: photons, coefficients, daylight factor, annual results, into `dir`/<grid>/.
 /// Returns the grids' part of summary.json. `label` prefixes log lines of variants. `keep`
 /// (optional) receives the annual tables of every grid for the operated result.
@@ -696,10 +745,15 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     all_grids_cached = all_grids_cached && coefficients[g].has_value();
   }
 
-  // 2. Photons (only if some grid needs estimating), one cached artefact per source.
+  // 2. Photons (only if some grid needs estimating), one cached artefact per source; or,
+  // with an accuracy target, rounds until the daylight factors reach it (accuracy_rounds.h).
   report.sources += sources.size();
   engine::TracedPhotons photons;
-  if (all_grids_cached) {
+  std::optional<AccuracyOutcome> accuracy;
+  if (sim.accuracy) {
+    accuracy = accuracy_case(project, prefix, scene, materials, sources, planes, plane_of_grid, description.grids,
+                             tracing, estimating, photon_keys, coefficients, ctx);
+  } else if (all_grids_cached) {
     progress.cached(prefix + "photons");
     report.sources_cached += sources.size();
     log.line(prefix + "photons: traced 0 of " + std::to_string(sources.size()) +
@@ -740,8 +794,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     for (const engine::SourceTally& t : photons.tallies) report.sources_capped += t.capped ? 1 : 0;
   }
 
-  // 3. Coefficients per grid.
-  for (std::size_t g = 0; g < description.grids.size(); ++g) {
+  // 3. Coefficients per grid (the accuracy rounds made them already).
+  for (std::size_t g = 0; !accuracy && g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
     if (coefficients[g]) {
       ++report.grids_cached;
@@ -812,7 +866,16 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       gj["uncertainty"] = {{"df_rms_relative_stderr_percent", u.rms_relative_stderr_percent},
                            {"df_max_relative_stderr_percent", u.max_relative_stderr_percent},
                            {"sensors_with_daylight", u.sensors_with_light}};
+      if (accuracy) gj["uncertainty"]["df_p95_relative_stderr_percent"] = accuracy->reached_percent[g];
     }
+    if (accuracy)
+      gj["accuracy"] = {{"target_df_relative_stderr_percent", accuracy->target_percent},
+                        {"reached_df_relative_stderr_percent", accuracy->reached_percent[g]},
+                        {"measure", "95th percentile (nearest rank) of the sensors' relative standard error of DF"},
+                        {"rounds", accuracy->rounds},
+                        {"photons", accuracy->photons},
+                        {"attempts", accuracy->attempts},
+                        {"stop_reason", accuracy->stop_reason}};
     grids_json.push_back(gj);
   }
 
@@ -1075,6 +1138,13 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
       {"variants", variants},
       {"notes", report.notes}};
   if (!operated.is_null()) summary["operated"] = operated;
+  if (sim.accuracy)
+    summary["simulation"]["accuracy"] = {
+        {"preset", sim.accuracy->preset.empty() ? nlohmann::json() : nlohmann::json(sim.accuracy->preset)},
+        {"target_df_relative_stderr_percent", sim.accuracy->target_df_relative_stderr_percent},
+        {"max_photons", sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons},
+        {"max_seconds", sim.accuracy->max_seconds},
+        {"reference_photons_per_bin", sim.photons_per_bin}};
   if (!annual_study) {
     summary["simulation"].erase("sun");
     summary["simulation"].erase("annual_sky");

@@ -17,6 +17,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/density_estimate.h"
 #include "dayphoton/engine/photon_map.h"
+#include "dayphoton/engine/photon_rounds.h"
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/engine/port_emission.h"
 #include "light_tracing_reference.h"
@@ -557,6 +558,43 @@ TEST(PhotonCap, UncappedSourcesAreBitIdenticalToNoCap) {
   EXPECT_GT(same, 0u);
   if (std::getenv("DAYPHOTON_TEST_VERBOSE"))
     std::cout << "cap 2: " << capped << " sources capped, " << same << " unchanged\n";
+}
+
+
+// ---- accuracy rounds (photon_rounds.h) ----------------------------------------------------
+
+// A round only adds photons: a source traced to 1500 attempts and then extended to 4000 holds
+// exactly the photons (bit for bit, in the same order) and counts of one pass of 4000, for a
+// sky bin in front of the window and for the ground; its scaled flux is bound_flux / 4000.
+TEST(PhotonRounds, ExtendingASourceEqualsOnePassOfAllItsAttempts) {
+  const SceneDescription d = window_room(MaterialType::Glass);
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models_of(d);
+  const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8)};
+  const SourceSet sources = SourceSet::sky_bins(sky::PatchBasis::tregenza());
+  const PortEmitter emitter(scene, sources);
+  TracingOptions o;
+  o.seed = 7;
+  for (const std::size_t source : {std::size_t(0), std::size_t(10)}) {
+    SourcePhotonRecord rounds;
+    extend_source_photons(scene, materials, emitter, planes, o, source, 1500, rounds);
+    extend_source_photons(scene, materials, emitter, planes, o, source, 4000, rounds);
+    SourcePhotonRecord once;
+    extend_source_photons(scene, materials, emitter, planes, o, source, 4000, once);
+    ASSERT_EQ(rounds.attempts, 4000u);
+    ASSERT_GT(once.raw.planes[0].size(), 0u) << "source " << source;
+    ASSERT_EQ(rounds.raw.surface.size(), once.raw.surface.size());
+    ASSERT_EQ(rounds.raw.planes[0].size(), once.raw.planes[0].size());
+    EXPECT_EQ(0, std::memcmp(rounds.raw.surface.data(), once.raw.surface.data(), once.raw.surface.size() * sizeof(Photon)));
+    EXPECT_EQ(0, std::memcmp(rounds.raw.planes[0].data(), once.raw.planes[0].data(),
+                             once.raw.planes[0].size() * sizeof(Photon)));
+    EXPECT_EQ(rounds.raw.tallies[0].rays, once.raw.tallies[0].rays);
+    EXPECT_EQ(rounds.stored(), once.stored());
+    const TracedPhotons scaled = scaled_source_photons(rounds);
+    EXPECT_DOUBLE_EQ(scaled.tallies[0].flux_per_attempt, emitter.bound_flux(std::uint32_t(source)) / 4000.0);
+    EXPECT_FLOAT_EQ(scaled.planes[0][0].flux[1],
+                    once.raw.planes[0][0].flux[1] * float(emitter.bound_flux(std::uint32_t(source)) / 4000.0));
+  }
 }
 
 }  // namespace

@@ -155,6 +155,13 @@ class GridPhotons {
   /// MaxRadiusFactor x sqrt(bandwidth x outline area / (pi x median count)); infinity
   /// elsewhere or without photons.
   double max_radius_m(std::size_t bandwidth) const;
+  /// Accuracy rounds (photon_rounds.h): `scale[p]` is source p's photon count relative to
+  /// the reference count the bandwidth is meant for. The typical counts then become the
+  /// median over sources of (count / scale), the count at the reference, so a source with
+  /// scale 2 gets twice the bandwidth over the same disc (half the variance), and the same
+  /// when every source is scaled alike. Without it (the default) the typical count is the
+  /// median count, and scaling every source alike only shrinks the discs.
+  void set_source_scale(const std::vector<double>& scale);
 
  private:
   static std::size_t median_count(const std::vector<PhotonMap>& maps);

@@ -165,6 +165,18 @@ TracedPhotons trace_source_photons(const Scene& scene, const std::vector<Materia
                                    const std::vector<ReceiverPlane>& planes,
                                    const TracingOptions& options, std::size_t source);
 
+/// Attempts [first, last) of one source with every class stored (no storage probabilities)
+/// and each photon's flux as traced, relative to its attempt's flux (not yet multiplied by
+/// bound_flux / attempts): the building block of the accuracy rounds (photon_rounds.h), which
+/// extend a source's attempts round by round. Attempt i is a pure function of (seed, source,
+/// i), so tracing [0, a) and then [a, b) gives the photons of [0, b) in the same order.
+/// `tallies` has one entry: entered, stored counts, rays and bound_flux of these attempts,
+/// and their number in prepass_attempts; nothing_stores as trace_source_photons.
+TracedPhotons trace_source_attempts(const Scene& scene, const std::vector<Material>& materials,
+                                    const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
+                                    const TracingOptions& options, std::size_t source, std::uint64_t first,
+                                    std::uint64_t last);
+
 /// Concatenate per-source results in order (the layout trace_photons returns).
 TracedPhotons merge_traced_photons(std::vector<TracedPhotons>&& per_source);
 

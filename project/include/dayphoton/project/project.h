@@ -483,6 +483,17 @@ struct Simulation {
   /// default), or the contribution estimate (R. Schregle, "Development and Integration of
   /// the RADIANCE Photon Map Extension", 2015: the N nearest of all sources, binned).
   Estimator estimator = Estimator::PerSource;
+  /// `accuracy`: trace the sky sources in rounds until the daylight factors reach a relative
+  /// standard error (study/accuracy_rounds.h) instead of photons_per_bin photons each.
+  struct Accuracy {
+    std::string preset;  ///< "draft", "standard", "final" or "" (target given or defaulted)
+    double target_df_relative_stderr_percent = 1.0;
+    long long max_photons = 0;  ///< stored photons of all sky sources; 0: limits.photons
+    double max_seconds = 0;     ///< 0: no time budget
+    SourceLocation location;
+    SourceLocation max_photons_location;
+  };
+  std::optional<Accuracy> accuracy;
   int gather_rays = 1024;        ///< final-gather rays per sensor (engine::GatherOptions)
   int gather_bandwidth = 32;     ///< photons per lookup at a gather hit
   SourceLocation location;

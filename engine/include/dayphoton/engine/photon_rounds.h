@@ -1,0 +1,47 @@
+// Photons traced in rounds (the accuracy target, docs/photon-tracing.md "Accuracy target"):
+// each source keeps the attempts [0, A) it has traced, unscaled, and a later round extends
+// them to [0, A') with A' >= A. Attempt i of source p is a pure function of (seed, p, i)
+// (photon_tracer.h), so a round only adds photons: those of earlier rounds are reused as they
+// are, and the photons after any sequence of rounds are those of one pass of A' attempts.
+// Every class is stored with probability 1 and every photon carries bound_flux / A (each
+// attempt is an independent draw carrying that flux, port_emission.h), so the flux is
+// unbiased for any A fixed before the round is traced.
+//
+// The pilot round sizes each source as the pre-pass of the two-pass scheme does (seeds/000
+// Alg. 4.1): attempts doubled until the source stores its pilot target or is found dark; the
+// only data-dependent stopping, as in the pre-pass.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "dayphoton/engine/photon_tracer.h"
+#include "dayphoton/engine/port_emission.h"
+
+namespace dayphoton::engine {
+
+/// One source's attempts [0, attempts), photons unscaled (flux relative to an attempt's).
+struct SourcePhotonRecord {
+  TracedPhotons raw;            ///< one tally: counts and rays of all attempts so far
+  std::uint64_t attempts = 0;
+  std::uint64_t stored() const;  ///< stored photons of every class (kept or only counted)
+};
+
+/// The pilot of one source: attempts doubled from ceil(target / 4) until `target` photons
+/// (global and caustic) are stored, or options.max_prepass_attempts_per_target x target
+/// attempts are made, or 65536 attempts saw nothing enter or 65536 entries stored nothing.
+SourcePhotonRecord pilot_source_photons(const Scene& scene, const std::vector<Material>& materials,
+                                        const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
+                                        const TracingOptions& options, std::size_t source, std::size_t target);
+
+/// Trace attempts [record.attempts, attempts) and append them (nothing if attempts <= record.attempts).
+void extend_source_photons(const Scene& scene, const std::vector<Material>& materials, const PortEmitter& emitter,
+                           const std::vector<ReceiverPlane>& planes, const TracingOptions& options,
+                           std::size_t source, std::uint64_t attempts, SourcePhotonRecord& record);
+
+/// The record's photons with their flux, bound_flux / attempts each; the tally as
+/// trace_source_photons reports it (all attempts in prepass_attempts, storage probabilities 1).
+TracedPhotons scaled_source_photons(const SourcePhotonRecord& record);
+
+}  // namespace dayphoton::engine

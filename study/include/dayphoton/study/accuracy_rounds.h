@@ -1,0 +1,151 @@
+// The accuracy target (`simulation.accuracy`, docs/photon-tracing.md "Accuracy target"):
+// instead of a photon count, the run traces the sky sources in rounds until the daylight
+// factors reach a relative Monte Carlo standard error.
+//
+// Round 1 (the pilot) traces every source to a quarter of the reference count (photons_per_bin,
+// the ground 16 times as many) with engine::pilot_source_photons. After each round the grids'
+// coefficients are estimated with their variances (engine/estimate_variance.h), and each
+// grid's measure is the 95th percentile (nearest rank) of its sensors' relative standard error
+// of DF (sensors with DF > 0): the value that 95 % of the sensors reach. A percentile rather
+// than the RMS, because the dark back of a room (low DF, large relative error) is what a
+// user misses when it is averaged with the bright front; rather than the maximum, because
+// one sensor in a corner would otherwise set the photon count of the whole run.
+//
+// The next round's photons per source follow from the variances (next_round_scale): a
+// source's photon variance at a sensor falls as 1/N_p (its bandwidth grows with its count
+// over a disc of fixed size: engine::GridPhotons::set_source_scale), so for one sensor the
+// cheapest counts meeting its variance budget are Neyman's allocation, N_p proportional to
+// sqrt(variance share / cost per photon) (Cochran, "Sampling Techniques", 3rd ed., 1977,
+// section 5.5); each source takes the largest count any sensor below the percentile asks
+// for. A source that brings no light to a failing sensor gets no photons after the pilot.
+// The direct component's variance (shadow rays) does not fall with photons: a sensor whose
+// direct variance alone exceeds its budget cannot be helped by photons and is left out (the
+// run says so; direct_samples_per_bin lowers it).
+//
+// Rounds stop when every grid meets the target, or at the photon budget (stored photons of
+// all sky sources), the time budget (checked before each round from the time per attempt so
+// far: the one stop that depends on the machine, so not deterministic), the round limit, or
+// when no source can help. Everything else is a pure function of the project and the seed:
+// the same bytes for any number of threads.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/engine/daylight_coefficients.h"
+#include "dayphoton/engine/photon_tracer.h"
+#include "dayphoton/engine/receiver_plane.h"
+#include "dayphoton/engine/scene.h"
+
+namespace dayphoton::study {
+
+/// The percentile of the sensors' relative standard error that must reach the target.
+constexpr double AccuracyPercentile = 95.0;
+/// Rounds at most, the pilot included.
+constexpr std::size_t MaxAccuracyRounds = 8;
+/// The pilot's photons per source, as a fraction of the reference count.
+constexpr double AccuracyPilotFraction = 0.25;
+/// Each round aims below the target by this factor, so that the next measurement (itself an
+/// estimate) passes without a round for the last few per cent.
+constexpr double AccuracyRoundAim = 0.9;
+/// No source's photons grow more than this factor in one round (the variances are measured
+/// again before the next).
+constexpr double AccuracyMaxGrowth = 16.0;
+
+/// Presets of simulation.accuracy.preset: name and target (relative standard error of DF, %).
+struct AccuracyPreset {
+  const char* name;
+  double target_percent;
+};
+constexpr AccuracyPreset AccuracyPresets[] = {{"draft", 5.0}, {"standard", 2.0}, {"final", 1.0}};
+
+struct AccuracyGoal {
+  double target_percent = 1.0;    ///< relative standard error of DF at the percentile, %
+  std::uint64_t max_photons = 0;  ///< stored photons of all sky sources; 0 = no budget
+  double max_seconds = 0;         ///< tracing and estimating; 0 = no budget
+};
+
+/// Nearest-rank percentile of 100 x stderr / DF over the sensors with DF > 0 (0 if none).
+double percentile_relative_stderr_percent(const std::vector<double>& df_percent,
+                                          const std::vector<double>& stderr_percent, double percentile);
+
+/// One grid's variances after a round, in (DF percent)^2.
+struct GridVariance {
+  std::vector<double> df_percent;       ///< per sensor
+  std::vector<double> direct_variance;  ///< per sensor, all sources
+  std::vector<double> photon_variance;  ///< [sensor x sources + source], at the current counts
+};
+
+struct RoundPlan {
+  std::vector<double> scale;        ///< photons per source relative to now (>= 1)
+  std::size_t sensors_constrained = 0;
+  std::size_t sensors_direct_limited = 0;  ///< above their budget by the direct variance alone
+};
+
+/// The next round's photon count of each source as a factor of its current count, for every
+/// grid's sensors at or below the percentile whose relative standard error exceeds `aim_percent`
+/// (header comment). `cost` is the cost of a source's photons so far (rays cast).
+RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::vector<double>& cost,
+                           double aim_percent, double percentile);
+
+/// What the rounds did (summary.json `accuracy` of each grid, docs/outputs.md).
+struct AccuracyOutcome {
+  double target_percent = 0;
+  std::vector<double> reached_percent;  ///< per grid: the percentile after the last round
+  std::size_t rounds = 0;
+  std::uint64_t photons = 0;            ///< stored photons of all sky sources
+  std::uint64_t attempts = 0;
+  std::string stop_reason;  ///< "target met", "photon budget", "time budget", "round limit", "direct component", "no light"
+  /// Attempts per source after the pilot and at the end (of a run that traced; not cached).
+  std::vector<std::uint64_t> pilot_attempts, final_attempts;
+};
+
+/// Everything one case's rounds need.
+struct AccuracyCase {
+  const engine::Scene* scene = nullptr;
+  const std::vector<engine::Material>* materials = nullptr;
+  const engine::SourceSet* sources = nullptr;
+  const std::vector<engine::ReceiverPlane>* planes = nullptr;
+  const std::vector<int>* plane_of_grid = nullptr;  ///< receiver plane of each grid, or -1
+  const std::vector<SensorGrid>* grids = nullptr;
+  bool gather = true;  ///< grids off a plane: final gather (else surface photons)
+  engine::TracingOptions tracing;       ///< seed, region of interest, photons_per_source = the reference count
+  engine::CoefficientOptions estimating;
+  const RadianceMatrix* overcast_vector = nullptr;
+  double horizontal_illuminance_lux = 0;
+};
+
+struct AccuracyResult {
+  std::vector<engine::DaylightCoefficients> coefficients;  ///< per grid
+  AccuracyOutcome outcome;
+};
+
+/// The rounds of one case; `log` receives one line per round and the stop.
+AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
+                                   const std::function<void(const std::string&)>& log);
+
+class ArtifactStore;
+
+/// The case's coefficients and outcome: from the cache (kinds "coefficients" and "accuracy")
+/// when a run with the same inputs, goal and photon keys made them and `force` is false,
+/// else by run_accuracy_rounds, then cached. `photon_keys` are the count-controlled run's keys
+/// of the sources; the goal and the rounds' policy constants are added to them.
+struct CaseAccuracy {
+  std::vector<engine::DaylightCoefficients> coefficients;
+  AccuracyOutcome outcome;
+  bool cached = false;
+};
+CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& goal, const ArtifactStore& store,
+                                   bool force, const std::vector<std::string>& photon_keys,
+                                   const std::function<void(const std::string&)>& log);
+
+/// The sentence of the report and the run log: "DF relative standard error (95th percentile)
+/// 0.93 % <= target 1 %: target met after 3 rounds, 4.1 M photons".
+std::string accuracy_sentence(const AccuracyOutcome& outcome, std::size_t grid);
+
+}  // namespace dayphoton::study

@@ -1,0 +1,372 @@
+// The accuracy target's rounds: see accuracy_rounds.h.
+#include "dayphoton/study/accuracy_rounds.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include <tbb/parallel_for.h>
+
+#include "dayphoton/core/units.h"
+#include "dayphoton/engine/direct_component.h"
+#include "dayphoton/engine/photon_rounds.h"
+#include "dayphoton/engine/port_emission.h"
+#include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/artifact_store.h"
+#include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/daylight_factor.h"
+#include <nlohmann/json.hpp>
+
+namespace dayphoton::study {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string number(double x, const char* format = "%.3g") {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, x);
+  return buffer;
+}
+
+/// The luminance-weighted radiance of each bin of the sky vector (as daylight_factor.cpp).
+std::vector<double> bin_luminance(const RadianceMatrix& sky) {
+  std::vector<double> l(sky.rows());
+  for (std::size_t p = 0; p < l.size(); ++p)
+    l[p] = sky.components() == 3 ? RgbLuminanceWeights.x * sky.at(p, 0, 0) + RgbLuminanceWeights.y * sky.at(p, 0, 1) +
+                                        RgbLuminanceWeights.z * sky.at(p, 0, 2)
+                                  : double(sky.at(p, 0, 0));
+  return l;
+}
+
+/// Indices of the sensors with DF > 0 at or below the percentile (nearest rank), by relative error.
+std::vector<std::size_t> sensors_at_or_below_percentile(const std::vector<double>& relative, const std::vector<double>& df,
+                                                        double percentile) {
+  std::vector<std::size_t> lit;
+  for (std::size_t i = 0; i < df.size(); ++i)
+    if (df[i] > 0) lit.push_back(i);
+  std::stable_sort(lit.begin(), lit.end(), [&](std::size_t a, std::size_t b) { return relative[a] < relative[b]; });
+  const std::size_t keep = static_cast<std::size_t>(std::ceil(percentile / 100.0 * double(lit.size())));
+  lit.resize(std::min(lit.size(), keep));
+  return lit;
+}
+
+}  // namespace
+
+double percentile_relative_stderr_percent(const std::vector<double>& df_percent,
+                                          const std::vector<double>& stderr_percent, double percentile) {
+  std::vector<double> r;
+  for (std::size_t i = 0; i < df_percent.size() && i < stderr_percent.size(); ++i)
+    if (df_percent[i] > 0) r.push_back(100.0 * stderr_percent[i] / df_percent[i]);
+  if (r.empty()) return 0.0;
+  std::sort(r.begin(), r.end());
+  const std::size_t rank = static_cast<std::size_t>(std::ceil(percentile / 100.0 * double(r.size())));
+  return r[std::min(r.size(), std::max<std::size_t>(1, rank)) - 1];
+}
+
+RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::vector<double>& cost,
+                           double aim_percent, double percentile) {
+  const std::size_t n = cost.size();
+  RoundPlan plan;
+  plan.scale.assign(n, 1.0);
+  std::vector<double> a(n), weight(n);
+  for (const GridVariance& g : grids) {
+    const std::size_t sensors = g.df_percent.size();
+    std::vector<double> relative(sensors, 0.0);
+    for (std::size_t i = 0; i < sensors; ++i) {
+      double v = g.direct_variance[i];
+      for (std::size_t p = 0; p < n; ++p) v += g.photon_variance[i * n + p];
+      relative[i] = g.df_percent[i] > 0 ? 100.0 * std::sqrt(std::max(0.0, v)) / g.df_percent[i] : 0.0;
+    }
+    for (std::size_t i : sensors_at_or_below_percentile(relative, g.df_percent, percentile)) {
+      if (!(relative[i] > aim_percent)) continue;
+      ++plan.sensors_constrained;
+      const double allowed = aim_percent / 100.0 * g.df_percent[i];
+      const double budget = allowed * allowed - g.direct_variance[i];
+      if (!(budget > 0)) {
+        ++plan.sensors_direct_limited;
+        continue;
+      }
+      // Neyman: minimise sum_p c_p s_p subject to sum_p a_p / s_p = budget.
+      double sum = 0;
+      for (std::size_t p = 0; p < n; ++p) {
+        a[p] = cost[p] > 0 ? std::max(0.0, g.photon_variance[i * n + p]) : 0.0;
+        sum += std::sqrt(a[p] * cost[p]);
+      }
+      for (std::size_t p = 0; p < n; ++p)
+        if (a[p] > 0) plan.scale[p] = std::max(plan.scale[p], std::sqrt(a[p] / cost[p]) * sum / budget);
+    }
+  }
+  for (double& s : plan.scale) s = std::min(s, AccuracyMaxGrowth);
+  return plan;
+}
+
+AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
+                                   const std::function<void(const std::string&)>& log) {
+  const engine::Scene& scene = *c.scene;
+  const std::vector<engine::Material>& materials = *c.materials;
+  const std::vector<engine::ReceiverPlane>& planes = *c.planes;
+  const std::vector<SensorGrid>& grids = *c.grids;
+  const std::size_t n = c.sources->size();
+  const engine::PortEmitter emitter(scene, *c.sources);
+  const Clock::time_point start = Clock::now();
+  double trace_seconds = 0;
+  std::uint64_t traced_attempts = 0;
+
+  // Round 1, the pilot. The reference count of each source (its photons at photons_per_bin)
+  // fixes the scale the bandwidth is meant for (GridPhotons::set_source_scale).
+  std::vector<engine::SourcePhotonRecord> records(n);
+  std::vector<double> reference(n, 0.0);
+  for (std::size_t p = 0; p < n; ++p) {
+    const double factor = p < c.tracing.source_photon_factor.size() ? c.tracing.source_photon_factor[p] : 1.0;
+    reference[p] = double(c.tracing.photons_per_source) * factor;
+  }
+  {
+    const Clock::time_point t = Clock::now();
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t p) {
+      const auto target = static_cast<std::size_t>(std::max(1.0, std::round(reference[p] * AccuracyPilotFraction)));
+      records[p] = engine::pilot_source_photons(scene, materials, emitter, planes, c.tracing, p, target);
+    });
+    trace_seconds += seconds_since(t);
+    for (const auto& r : records) traced_attempts += r.attempts;
+  }
+  AccuracyResult result;
+  for (const auto& r : records) result.outcome.pilot_attempts.push_back(r.attempts);
+  // Photons at the reference per attempt, from the pilot (fixed from now on, so a source's
+  // scale is proportional to its attempts).
+  std::vector<double> per_attempt(n, 0.0);
+  for (std::size_t p = 0; p < n; ++p) {
+    const engine::SourceTally& t = records[p].raw.tallies[0];
+    const double stored = double(t.stored_global + t.stored_caustic);
+    if (records[p].attempts > 0 && stored > 0) per_attempt[p] = stored / double(records[p].attempts) / reference[p];
+  }
+  auto scales = [&] {
+    std::vector<double> s(n, 1.0);
+    for (std::size_t p = 0; p < n; ++p)
+      if (per_attempt[p] > 0) s[p] = double(records[p].attempts) * per_attempt[p];
+    return s;
+  };
+
+  // The direct component does not change from round to round.
+  std::vector<std::vector<Vec3>> direct(grids.size());
+  std::vector<std::vector<double>> direct_variance(grids.size());
+  for (std::size_t g = 0; g < grids.size(); ++g)
+    direct[g] = engine::direct_coefficients(scene, materials, *c.sources, grids[g].points, c.estimating.direct,
+                                            &direct_variance[g]);
+
+  const std::vector<double> luminance = bin_luminance(*c.overcast_vector);
+  const double df_scale = 100.0 * RadianceWhiteEfficacy_lm_per_W / c.horizontal_illuminance_lux;
+  result.outcome.target_percent = goal.target_percent;
+  std::string pending;  // a budget that cut the last round short
+  for (std::size_t round = 1;; ++round) {
+    // Estimate every grid from the photons so far.
+    const Clock::time_point estimate_start = Clock::now();
+    std::vector<engine::TracedPhotons> scaled(n);
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t p) { scaled[p] = engine::scaled_source_photons(records[p]); });
+    const engine::TracedPhotons photons = engine::merge_traced_photons(std::move(scaled));
+    const std::vector<double> scale = scales();
+    result.coefficients.assign(grids.size(), {});
+    std::vector<GridVariance> variances(grids.size());
+    result.outcome.reached_percent.assign(grids.size(), 0.0);
+    bool met = true;
+    for (std::size_t g = 0; g < grids.size(); ++g) {
+      const int plane = (*c.plane_of_grid)[g];
+      engine::GridPhotons gp =
+          plane >= 0 ? engine::GridPhotons::for_plane(planes[std::size_t(plane)], photons.planes[std::size_t(plane)], n)
+          : c.gather ? engine::GridPhotons::for_gather(photons.surface, n)
+                     : engine::GridPhotons::for_surfaces(photons.surface, n);
+      if (!gp.gather()) gp.set_source_scale(scale);
+      engine::DaylightCoefficients& dc = result.coefficients[g];
+      dc.sensors = grids[g].points.size();
+      dc.sources = n;
+      dc.direct = direct[g];
+      dc.direct_variance = direct_variance[g];
+      dc.caustic.assign(dc.sensors * n, Vec3{0, 0, 0});
+      dc.global.assign(dc.sensors * n, Vec3{0, 0, 0});
+      engine::photon_coefficients(scene, materials, *c.sources, gp, grids[g].points, c.estimating, dc);
+      GridVariance& v = variances[g];
+      v.df_percent = daylight_factor_percent(dc.to_matrix(), *c.overcast_vector, c.horizontal_illuminance_lux);
+      v.direct_variance.assign(dc.sensors, 0.0);
+      v.photon_variance.assign(dc.sensors * n, 0.0);
+      std::vector<double> stderr_percent(dc.sensors, 0.0);
+      for (std::size_t i = 0; i < dc.sensors; ++i) {
+        for (std::size_t p = 0; p < n; ++p) {
+          const double w = df_scale * df_scale * luminance[p] * luminance[p];
+          v.direct_variance[i] += w * dc.direct_variance[i * n + p];
+          v.photon_variance[i * n + p] = w * dc.photon_variance[i * n + p];
+          stderr_percent[i] += w * (dc.direct_variance[i * n + p] + dc.photon_variance[i * n + p]);
+        }
+        stderr_percent[i] = std::sqrt(std::max(0.0, stderr_percent[i]));
+      }
+      result.outcome.reached_percent[g] =
+          percentile_relative_stderr_percent(v.df_percent, stderr_percent, AccuracyPercentile);
+      met = met && result.outcome.reached_percent[g] <= goal.target_percent;
+    }
+    const double estimate_seconds = seconds_since(estimate_start);
+    std::uint64_t stored = 0, attempts = 0;
+    std::vector<double> cost(n, 0.0);
+    for (std::size_t p = 0; p < n; ++p) {
+      stored += records[p].stored();
+      attempts += records[p].attempts;
+      cost[p] = double(records[p].raw.tallies[0].rays);
+    }
+    result.outcome.rounds = round;
+    result.outcome.photons = stored;
+    result.outcome.attempts = attempts;
+    std::string line = "accuracy round " + std::to_string(round) + (round == 1 ? " (pilot)" : "") + ": " +
+                       number(double(stored), "%.0f") + " photons, " + number(double(attempts), "%.0f") +
+                       " attempts; DF relative standard error (" + number(AccuracyPercentile, "%.0f") +
+                       "th percentile)";
+    for (std::size_t g = 0; g < grids.size(); ++g)
+      line += (g ? ", " : " ") + grids[g].name + " " + number(result.outcome.reached_percent[g]) + " %";
+    log(line + " (target " + number(goal.target_percent) + " %)");
+    if (met) {
+      result.outcome.stop_reason = "target met";
+      break;
+    }
+    if (!pending.empty()) {
+      result.outcome.stop_reason = pending;
+      break;
+    }
+    if (round >= MaxAccuracyRounds) {
+      result.outcome.stop_reason = "round limit";
+      break;
+    }
+    const RoundPlan plan = next_round_scale(variances, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+    std::vector<std::uint64_t> next(n);
+    double more_photons = 0, more_attempts = 0;
+    for (std::size_t p = 0; p < n; ++p) {
+      next[p] = plan.scale[p] > 1.0 ? static_cast<std::uint64_t>(std::ceil(double(records[p].attempts) * plan.scale[p]))
+                                    : records[p].attempts;
+      more_attempts += double(next[p] - records[p].attempts);
+      more_photons += double(records[p].stored()) * (plan.scale[p] - 1.0);
+    }
+    if (!(more_attempts > 0)) {
+      result.outcome.stop_reason = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
+      if (plan.sensors_direct_limited > 0)
+        log("accuracy: " + std::to_string(plan.sensors_direct_limited) +
+            " sensor(s) miss the target by their direct component alone, which photons do not reduce "
+            "(more simulation.direct_samples_per_bin would)");
+      break;
+    }
+    // Budgets: the share of the planned increments that fits.
+    double share = 1.0;
+    std::string cut;
+    if (goal.max_photons > 0) {
+      const double room = double(goal.max_photons) - double(stored);
+      if (room < more_photons) {
+        share = std::max(0.0, room / more_photons);
+        cut = "photon budget";
+      }
+    }
+    if (goal.max_seconds > 0) {
+      const double per_attempt_s = traced_attempts > 0 ? trace_seconds / double(traced_attempts) : 0.0;
+      const double room = goal.max_seconds - seconds_since(start) - estimate_seconds;
+      const double need = per_attempt_s * more_attempts;
+      if (room < need && (need > 0 ? std::max(0.0, room / need) : 0.0) < share) {
+        share = need > 0 ? std::max(0.0, room / need) : 0.0;
+        cut = "time budget";
+      }
+    }
+    if (share < 1.0) {
+      for (std::size_t p = 0; p < n; ++p)
+        next[p] = records[p].attempts +
+                  static_cast<std::uint64_t>(std::floor(share * double(next[p] - records[p].attempts)));
+      if (share < 0.05) {
+        result.outcome.stop_reason = cut;
+        log("accuracy: no round " + std::to_string(round + 1) + ": the " + cut + " leaves room for " +
+            number(100.0 * share) + " % of it");
+        break;
+      }
+      pending = cut;
+      log("accuracy: round " + std::to_string(round + 1) + " cut to " + number(100.0 * share) + " % of its plan by the " +
+          cut + "; the last round");
+    }
+    for (std::size_t p = 0; p < n; ++p) traced_attempts += next[p] - records[p].attempts;
+    const Clock::time_point t = Clock::now();
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t p) {
+      engine::extend_source_photons(scene, materials, emitter, planes, c.tracing, p, next[p], records[p]);
+    });
+    trace_seconds += seconds_since(t);
+  }
+  for (const auto& r : records) result.outcome.final_attempts.push_back(r.attempts);
+  log("accuracy: " + result.outcome.stop_reason + " after " + std::to_string(result.outcome.rounds) + " round(s)");
+  return result;
+}
+
+CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& goal, const ArtifactStore& store,
+                                   bool force, const std::vector<std::string>& photon_keys,
+                                   const std::function<void(const std::string&)>& log) {
+  // The goal and the policy are part of every key; the photon keys carry the scene, planes,
+  // basis, seed, reference count and the other tracing options.
+  const std::string rounds = "accuracy:" + number(goal.target_percent, "%.17g") + ":" +
+                             std::to_string(goal.max_photons) + ":" + number(goal.max_seconds, "%.17g") + ":" +
+                             number(AccuracyPercentile, "%.17g") + ":" + std::to_string(MaxAccuracyRounds) + ":" +
+                             number(AccuracyPilotFraction, "%.17g") + ":" + number(AccuracyRoundAim, "%.17g") + ":" +
+                             number(AccuracyMaxGrowth, "%.17g") + ":" + (c.gather ? "gather" : "surface");
+  std::vector<std::string> keys = photon_keys;
+  for (std::string& k : keys) k += "|" + rounds;
+  const std::vector<SensorGrid>& grids = *c.grids;
+  std::vector<std::string> grid_keys;
+  // Every grid's coefficients depend on all grids' variances (the rounds serve them all).
+  std::string all_grids;
+  for (const SensorGrid& g : grids) all_grids += coefficients_key(keys, g, c.estimating) + ";";
+  for (std::string& k : keys) k += "|" + all_grids;
+  for (const SensorGrid& g : grids) grid_keys.push_back(coefficients_key(keys, g, c.estimating));
+  const std::string outcome_key = grid_keys.empty() ? std::string("none") : grid_keys.front();
+  CaseAccuracy out;
+  if (!force) {
+    try {
+      const auto text = store.read("accuracy", outcome_key);
+      bool all = text.has_value();
+      std::vector<engine::DaylightCoefficients> cached;
+      for (std::size_t g = 0; all && g < grids.size(); ++g) {
+        const auto bytes = store.read("coefficients", grid_keys[g]);
+        all = bytes.has_value();
+        if (all) cached.push_back(decode_coefficients(*bytes));
+        all = all && cached.back().sensors == grids[g].points.size();
+      }
+      if (all) {
+        const nlohmann::json j = nlohmann::json::parse(*text);
+        out.outcome.target_percent = j.at("target_percent").get<double>();
+        out.outcome.reached_percent = j.at("reached_percent").get<std::vector<double>>();
+        out.outcome.rounds = j.at("rounds").get<std::size_t>();
+        out.outcome.photons = j.at("photons").get<std::uint64_t>();
+        out.outcome.attempts = j.at("attempts").get<std::uint64_t>();
+        out.outcome.stop_reason = j.at("stop_reason").get<std::string>();
+        out.coefficients = std::move(cached);
+        out.cached = out.outcome.reached_percent.size() == grids.size();
+      }
+    } catch (const std::exception&) {
+      out.cached = false;  // damaged or an older layout: run the rounds again
+    }
+    if (out.cached) {
+      log("accuracy: cached (" + out.outcome.stop_reason + " after " + std::to_string(out.outcome.rounds) +
+          " round(s))");
+      return out;
+    }
+  }
+  AccuracyResult r = run_accuracy_rounds(c, goal, log);
+  for (std::size_t g = 0; g < grids.size(); ++g) store.write("coefficients", grid_keys[g], encode_coefficients(r.coefficients[g]));
+  // Cached as the cache keeps the coefficients, so a later run from the cache writes the same bytes.
+  for (std::size_t g = 0; g < grids.size(); ++g) r.coefficients[g] = decode_coefficients(encode_coefficients(r.coefficients[g]));
+  const nlohmann::json j = {{"target_percent", r.outcome.target_percent}, {"reached_percent", r.outcome.reached_percent},
+                            {"rounds", r.outcome.rounds}, {"photons", r.outcome.photons},
+                            {"attempts", r.outcome.attempts}, {"stop_reason", r.outcome.stop_reason}};
+  store.write("accuracy", outcome_key, j.dump());
+  out.coefficients = std::move(r.coefficients);
+  out.outcome = r.outcome;
+  return out;
+}
+
+std::string accuracy_sentence(const AccuracyOutcome& o, std::size_t grid) {
+  const double reached = grid < o.reached_percent.size() ? o.reached_percent[grid] : 0.0;
+  return "DF relative standard error (" + number(AccuracyPercentile, "%.0f") + "th percentile of the sensors) " +
+         number(reached) + " % " + (reached <= o.target_percent ? "<=" : ">") + " target " +
+         number(o.target_percent) + " %: " + o.stop_reason + " after " + std::to_string(o.rounds) + " round(s), " +
+         number(double(o.photons), "%.0f") + " photons";
+}
+
+}  // namespace dayphoton::study
