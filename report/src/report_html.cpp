@@ -118,6 +118,7 @@ struct GridData {
   const GridResult* grid = nullptr;
   std::string name;
   std::string folder;  ///< relative to the results folder
+  std::string folder_path;  ///< inside the results folder, for the reader
   std::string id;
   std::vector<Vec3> positions;
   std::optional<std::vector<double>> df, da, udi, autonomous;
@@ -158,6 +159,7 @@ GridData load_grid(const std::string& results_dir, const study::CaseResult& c, c
   g.grid = &grid;
   g.name = grid.name;
   g.folder = grid.folder;
+  g.folder_path = (fs::path(results_dir) / grid.folder).string();
   g.id = "grid-" + id_part(c.name.empty() ? g.name : c.name + "--" + g.name);
   g.positions = grid.positions_m;
   g.plan.outline = grid.outline;
@@ -583,8 +585,7 @@ std::string grid_section(const GridData& g, PageIds& page) {
   s << "<section class=\"grid\" id=\"" << g.id << "\"><h2>"
     << (g.case_name.empty() ? "Grid " : operated ? "Operated shading " : "Variant ")
     << esc(g.title()) << "</h2>";
-  s << "<p class=\"meta\">" << g.positions.size() << " sensors; folder <code>" << esc(g.folder.empty() ? "." : g.folder)
-    << "</code>";
+  s << "<p class=\"meta\">" << g.positions.size() << " sensors; folder <code>" << esc(g.folder_path) << "</code>";
   if (!g.changes.empty()) {
     std::string changes;
     for (const std::string& c : g.changes) changes += (changes.empty() ? "" : ", ") + c;
@@ -852,8 +853,8 @@ std::string summary_section(const ResultsModel& m, const std::string& results_di
       {"report written by", std::string("dayphoton ") + DAYPHOTON_VERSION},
       {"OpenEXR", OPENEXR_VERSION_STRING},
       {"libpng", PNG_LIBPNG_VER_STRING},
-      {"run: dayphoton", esc(m.dayphoton_version)},
-      {"run: compiler", esc(m.compiler)}};
+      {"run: compiler", esc(m.compiler)},
+      {"run: dayphoton", esc(m.dayphoton_version)}};
   s << key_value_table(versions);
   // Results are identical whether computed or cached, so results.json holds no times: the
   // run's history is in its log.
