@@ -216,3 +216,32 @@ TEST(ResultsModelBuilder, ElevationsGetOnlyTheWindowsOfTheirWall) {
   }
   EXPECT_TRUE(wall && plane);
 }
+
+// The one typed reader of value tables: the column the model names, for the grid's sensors.
+TEST(ResultsModel, ValuesAreReadFromTheColumnTheModelNames) {
+  const std::string dir = temp_dir("values");
+  fs::create_directories(dir + "/grid");
+  std::ofstream(dir + "/grid/metrics.csv") << "index,x,y,z,da300_percent,other\n0,0,0,0.8,10.5,1\n1,1,0,0.8,20.25,2\n";
+  GridResult g;
+  g.name = "grid";
+  g.folder = "grid";
+  g.positions_m = {{0, 0, 0.8}, {1, 0, 0.8}};
+  SensorQuantity q{"da300", "metrics.csv", "da300_percent", "da", "daylight autonomy (300 lx)", "%",
+                   QuantityScale::Percent, "daylight autonomy"};
+  EXPECT_EQ(read_quantity_values(dir, g, q), (std::vector<double>{10.5, 20.25}));
+  q.column = "da250_percent";  // a column the table does not have
+  try {
+    read_quantity_values(dir, g, q);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no column 'da250_percent'"), std::string::npos) << e.what();
+  }
+  q.column = "da300_percent";
+  g.positions_m.push_back({2, 0, 0.8});  // the model has 3 sensors, the table 2 rows
+  try {
+    read_quantity_values(dir, g, q);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("2 rows for the 3 sensors"), std::string::npos) << e.what();
+  }
+}
