@@ -2,7 +2,7 @@
 // the model lit by a sky (issue 7 item 3). Traces the project's photons with the surface
 // photons kept (the study's receiver-plane pass drops them), then renders by direct
 // visualisation (engine/renderer.h) under the sky of --sky (study/render_sky.h). Writes the
-// radiance as a float EXR and a tone-mapped PNG beside it (study/result_images.h). docs/report.md.
+// radiance as a float EXR and a tone-mapped PNG beside it (study/tone_map.h). docs/report.md.
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -22,7 +22,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/image_files.h"
 #include "dayphoton/study/render_sky.h"
-#include "dayphoton/study/result_images.h"
+#include "dayphoton/study/tone_map.h"
 
 namespace dayphoton::app {
 

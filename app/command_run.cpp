@@ -17,6 +17,7 @@
 #include "commands.h"
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
+#include "dayphoton/report/report_html.h"
 #include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/study_runner.h"
 
@@ -83,6 +84,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     settings.command = "dayphoton run " + proj.path;
     settings.output_dir = folders[i];
     settings.cache_dir = options.cache_dir;
+    settings.write_views = report::write_views;  // images and report.html from results.json's model
     const study::RunReport report = study::run_study(proj, settings, progress);
     progress.print_summary();
     if (!options.quiet) {

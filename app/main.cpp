@@ -197,7 +197,7 @@ int main(int argc, char** argv) {
   ReportOptions report;
   auto* report_cmd = cli.add_subcommand(
       "report", "Write report.html and the result images of a finished run from its output folder");
-  report_cmd->add_option("results", report.results_dir, "Output folder of `dayphoton run` (with summary.json)")
+  report_cmd->add_option("results", report.results_dir, "Output folder of `dayphoton run` (with results.json)")
       ->required();
   report_cmd->add_option("-o,--output", report.output_path, "Report file (default: RESULTS/report.html)");
   report_cmd->add_flag("--no-images", report.no_images, "Only the report: no grid EXR/PNG files, no sky images");

@@ -12,7 +12,7 @@
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/sky/solar_position.h"
-#include "dayphoton/study/result_images.h"
+#include "dayphoton/study/year_hour.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/hourly_weather.h"
 #include "dayphoton/weather/site_clock.h"

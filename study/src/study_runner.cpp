@@ -40,8 +40,8 @@
 #include "dayphoton/study/operated_shading.h"
 #include "dayphoton/study/output_lock.h"
 #include "dayphoton/study/output_manifest.h"
-#include "dayphoton/study/report_html.h"
 #include "dayphoton/study/result_files.h"
+#include "dayphoton/study/results_model_builder.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/study/verdict_uncertainty.h"
 #include "dayphoton/weather/hourly_weather.h"
@@ -244,6 +244,7 @@ struct RunContext {
   std::optional<SkyAndSuns> sky_and_suns;  ///< the same for the sun-bins mode
   const weather::HourlyWeather* weather = nullptr;   ///< the project's weather file, if it has one
   const SunSite* sun_site = nullptr;       ///< the site its sun is computed for (sun_site.h)
+  CaseResult* results = nullptr;  ///< the case being run, in the results model (results_model_builder.h)
 };
 
 /// summary.json `site` (docs/outputs.md): the site the sun is computed for (the project's, or
@@ -603,6 +604,7 @@ void run_points_in_time(const project::Project& project, const std::string& pref
       std::vector<double> values(table.sensor_count());
       for (std::size_t i = 0; i < values.size(); ++i) values[i] = table.lux(k, i);
       const GridStatistics st = grid_statistics(values, {});
+      add_point_in_time(ctx.results->grids[g], cases[k].name, project::point_sky_name(cases[k].sky), st);
       entries.push_back({{"name", cases[k].name}, {"sky", project::point_sky_name(cases[k].sky)},
                          {"illuminance_lux", {{"mean", st.mean}, {"median", st.median}, {"min", st.min},
                                               {"max", st.max}, {"uniformity", st.uniformity}}}});
@@ -702,6 +704,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   for (const MaterialSpec& m : description.materials)
     materials.push_back(engine::Material::from_spec(m));
   const sky::PatchBasis basis = basis_of(sim);
+  set_plan_geometry(*ctx.results, description);
   const engine::SourceSet sources = engine::SourceSet::sky_bins(basis);
   std::vector<engine::ReceiverPlane> planes;
   std::vector<int> plane_of_grid;
@@ -838,6 +841,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     write_sensors_csv(grid.points, join(folder, "sensors.csv"));
     ctx.outputs.record(join(folder, "sensors.csv"));
     nlohmann::json gj = {{"name", grid.name}, {"sensors", grid.points.size()}, {"folder", folder}};
+    ctx.results->grids.push_back(results_grid(grid, relative_folder(report.output_dir, folder), *ctx.results,
+                                              placement.sets[g].dropped ? placement.sets[g].outside : 0,
+                                              placement.sets[g].dropped ? placement.sets[g].inside_solid : 0));
     if (placement.sets[g].dropped)
       gj["dropped_sensors"] = {{"outside_rooms", placement.sets[g].outside},
                                {"inside_solid", placement.sets[g].inside_solid}};
@@ -867,6 +873,11 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
                            {"df_max_relative_stderr_percent", u.max_relative_stderr_percent},
                            {"sensors_with_daylight", u.sensors_with_light}};
       if (accuracy) gj["uncertainty"]["df_p95_relative_stderr_percent"] = accuracy->reached_percent[g];
+      add_daylight_factor(ctx.results->grids.back(), st, u);
+      if (accuracy)
+        ctx.results->grids.back().daylight_factor->accuracy = DaylightFactorSummary::AccuracyReached{
+            accuracy->target_percent, accuracy->reached_percent[g], accuracy->rounds, accuracy->photons,
+            accuracy->stop_reason};
     }
     if (accuracy)
       gj["accuracy"] = {{"target_df_relative_stderr_percent", accuracy->target_percent},
@@ -920,10 +931,11 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       if (keep) keep->grids.push_back({grid.name, grid.points, study.illuminance, direct});
       const SunBinVariance sun_variance{&sun[g].bin_variance, &bins, &ss.suns};
-      add_verdict_uncertainty(grids_json[g],
-                              verdict_uncertainty(study, ss.sky, sky_variance_of(*coefficients[g]), &sun_variance,
-                                                  annual_settings),
-                              true);
+      const VerdictUncertainty verdicts =
+          verdict_uncertainty(study, ss.sky, sky_variance_of(*coefficients[g]), &sun_variance, annual_settings);
+      add_verdict_uncertainty(grids_json[g], verdicts, true);
+      add_annual(ctx.results->grids[g], study, annual_settings, which);
+      add_verdict_uncertainty(ctx.results->grids[g], verdicts);
       progress.advance(ss.sky.steps.size());
       progress.end();
       grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
@@ -937,9 +949,11 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       const AnnualStudy study = compute_annual_study(coefficient_matrices[g], sky, annual_settings);
       log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
-      add_verdict_uncertainty(
-          grids_json[g], verdict_uncertainty(study, sky, sky_variance_of(*coefficients[g]), nullptr, annual_settings),
-          false);
+      const VerdictUncertainty verdicts =
+          verdict_uncertainty(study, sky, sky_variance_of(*coefficients[g]), nullptr, annual_settings);
+      add_verdict_uncertainty(grids_json[g], verdicts, false);
+      add_annual(ctx.results->grids[g], study, annual_settings, which);
+      add_verdict_uncertainty(ctx.results->grids[g], verdicts);
       progress.advance(sky.steps.size());
       progress.end();
       grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
@@ -991,6 +1005,7 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
                  std::to_string(operated.shaded_occupied_hours) + " of " +
                  std::to_string(operated.study.occupied_hours) + " occupied), '" + open_name + "' otherwise");
     ctx.report.grids.push_back({"operated/" + o.name, o.sensors.size(), folder});
+    add_operated_grid(*ctx.results, o.name, relative_folder(ctx.report.output_dir, folder), operated.study, settings, which);
     grids.push_back({{"name", o.name},
                      {"sensors", o.sensors.size()},
                      {"folder", folder},
@@ -1088,6 +1103,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                  weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
   // The project as written is the base case, in <output>/<grid>/; each variant is studied
   // in addition, in <output>/variants/<variant>/<grid>/ (a folder no grid name can clash with).
+  std::vector<CaseResult> cases{results_case("base", "", "", {})};
+  ctx.results = &cases.back();
   nlohmann::json grids = run_case(project, "", report.output_dir, ctx, keep(project::BaseCaseName));
   nlohmann::json variants = nlohmann::json::array();
   for (const project::VariantSpec& v : project.variants) {
@@ -1097,15 +1114,23 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     for (const std::string& c : changes) listed += (listed.empty() ? "" : ", ") + c;
     log.line("variant " + v.name + ": " + listed);
     nlohmann::json vj = {{"name", v.name}, {"folder", dir}, {"changes", changes}};
+    CaseResult variant = results_case("variant", v.name, relative_folder(report.output_dir, dir), changes);
+    ctx.results = &variant;
     vj["grids"] = run_case(project::apply_variant(project, v), v.name, dir, ctx, keep(v.name));
+    cases.push_back(std::move(variant));
     variants.push_back(vj);
   }
   // The operated result, in <output>/operated/<grid>/, from the two cases' tables.
   nlohmann::json operated;
-  if (op && !open_tables.grids.empty() && open_tables.grids.size() == shaded_tables.grids.size())
+  if (op && !open_tables.grids.empty() && open_tables.grids.size() == shaded_tables.grids.size()) {
+    CaseResult shading = operated_case(cases.front(), "operated (" + op->open.value + "/" + op->shaded.value + ")",
+                                       "operated");
+    ctx.results = &shading;
     operated = run_operated(project, *op, open_tables, shaded_tables, join(report.output_dir, "operated"), ctx);
-  else if (op)
+    cases.push_back(std::move(shading));
+  } else if (op) {
     log.line("operated: skipped (no annual results)");
+  }
 
   // 7. summary.json and the run log.
   nlohmann::json summary = {
@@ -1162,13 +1187,15 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                  ", traced " + std::to_string(report.sun_bins_traced));
   log.quiet_line("photon cap: " + std::to_string(report.sources_capped) + " source(s), " +
                  std::to_string(report.sun_bins_capped) + " sun bin(s) capped (of those traced or read in this run)");
-  // 8. Images and report.html from the files just written and the summary (docs/report.md).
-  const std::string summary_text = json_text(summary) + "\n";
-  if (project.outputs.images || project.outputs.report) {
+  // 8. results.json, the typed results model, then the images and report.html made from it
+  // alone (report/, docs/report.md).
+  ResultsModel model = results_model_header(project, settings.version, sun_site ? &*sun_site : nullptr,
+                                            below_horizon ? &*below_horizon : nullptr, summary["simulation"], report.notes);
+  model.cases = std::move(cases);
+  outputs.record(write_results_model(model, report.output_dir));
+  if ((project.outputs.images || project.outputs.report) && settings.write_views) {
     progress.start("images and report", 1, "report");
-    outputs.record(write_images_and_report(report.output_dir,
-                                           ViewOutputs{project.outputs.images, project.outputs.report, {}},
-                                           summary_text));
+    outputs.record(settings.write_views(report.output_dir, model, project.outputs.images, project.outputs.report));
     progress.advance(1);
     progress.end();
   }

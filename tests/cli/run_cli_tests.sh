@@ -236,11 +236,14 @@ else
   echo "FAIL sky_matrix"; failed=$((failed + 1))
 fi
 
-# report: report.html from a finished run's folder (a two-sensor results folder, no images so
-# nothing is written into the source tree); errors are located (exit 1) or usage (exit 2).
+# report: report.html from a finished run's folder (a two-sensor results folder with its
+# results.json, no images so nothing is written into the source tree); errors are located
+# (exit 1) or usage (exit 2).
 check_case report_help 0 report --help
 check_case report_missing_folder 1 report tests/cli/cases/does_not_exist --no-images
 check_case report_bad_sky_hour 2 report tests/cli/cases/report_results --sky-hour 13/1/12
+# A results folder of a dayphoton before results.json: a located error that says to run again.
+check_case report_old_results 1 report tests/cli/cases/report_old_results --no-images
 "$bin" report tests/cli/cases/report_results --no-images -o "$scratch/report.html" --quiet
 if grep -q 'id="grid-grid-df"' "$scratch/report.html" && grep -q 'data-sections="summary overview grid-grid' "$scratch/report.html" &&
    ! ls tests/cli/cases/report_results | grep -q -e report.html -e '\.exr$'; then

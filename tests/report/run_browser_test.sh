@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # report.html in headless chromium (issue 7 acceptance): run the office study (cached after the
-# first time), write the report with `dayphoton report`, then with chromium
+# first time), write the report with `dayphoton report` (also in a copy of the results folder
+# made elsewhere), then with chromium
 #   --screenshot   keep BUILD/report_screenshot.png (a CI artefact; must not be blank)
 #   --dump-dom     the DOM after the page's scripts ran: the page's own self-check (an inline
 #                  script: every listed section present, every plot SVG with drawn content and a
@@ -26,6 +27,14 @@ trap 'rm -rf "$work"' EXIT
 "$bin" run projects/office/project.yaml --output "$results" --quiet || fail "dayphoton run failed"
 "$bin" report "$results" --quiet || fail "dayphoton report failed"
 [ -s "$results/report.html" ] || fail "no report.html"
+# The report needs nothing but the results folder (results.json and the tables it names): a
+# copy elsewhere, with no project file beside it, gives the same report.
+cp -r "$results" "$work/moved"
+rm -f "$work/moved/report.html"
+"$bin" report "$work/moved" --no-images --quiet || fail "dayphoton report of a moved results folder failed"
+[ -s "$work/moved/report.html" ] || fail "no report.html in the moved folder"
+[ "$(grep -o 'data-sections="[^"]*"' "$work/moved/report.html")" = "$(grep -o 'data-sections="[^"]*"' "$results/report.html")" ] ||
+  fail "the moved folder's report has other sections"
 
 flags=(--headless --no-sandbox --disable-gpu --hide-scrollbars --enable-logging=stderr --v=0
        --virtual-time-budget=10000 --user-data-dir="$work/profile")

@@ -11,6 +11,7 @@
 //    report, which say the same sentence about the sun's site;
 //  - the cache keeps the sky of each site apart.
 // Runs use the office at reduced photon counts (the sky, not the photons, is under test).
+#include "dayphoton/report/report_html.h"
 #include "dayphoton/study/cache_folder.h"
 #include "dayphoton/study/sun_site.h"
 
@@ -103,6 +104,7 @@ void run_into(const project::Project& p, const fs::path& folder, const fs::path&
   }
   RunSettings settings;
   settings.output_dir = folder.string();
+  settings.write_views = report::write_views;  // report.html, whose sentences are checked below
   std::ostringstream quiet;
   Progress progress(quiet, ProgressStyle::Quiet);
   run_study(p, settings, progress);

@@ -23,8 +23,10 @@
 //                   the open case (LM-83 blinds rule, operated_shading.h), into
 //                   <output>/operated/<grid>/; computed from the two cases' annual tables,
 //                   whose inputs come from the cache as above
-//   7. files       : per grid folder, images and report.html, then summary.json last, with
-//                   the size and SHA-256 of every output (result_files.h, docs/outputs.md)
+//   7. files       : results.json (the typed results model, results_model.h), then per grid
+//                   folder images and report.html (RunSettings::write_views, made from the
+//                   model), then summary.json last, with the size and SHA-256 of every output
+//                   (result_files.h, docs/outputs.md)
 // Before step 1 the run takes the output folder's lock (output_lock.h; OutputFolderBusy when
 // another run holds it), deletes temporaries of killed writers and the previous run's outputs,
 // and marks the folder INCOMPLETE until summary.json is written (output_manifest.h).
@@ -32,11 +34,13 @@
 // was computed or taken from the cache, e.g. "photons: traced 0 of 146 sources (146 cached)".
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/progress.h"
+#include "dayphoton/study/results_model.h"
 
 namespace dayphoton::study {
 
@@ -46,6 +50,14 @@ struct RunSettings {
   bool force = false;      ///< ignore the cache (recompute and overwrite)
   std::string version;     ///< dayphoton's version, recorded in summary.json
   std::string command;     ///< the command line, recorded in the output folder's lock file
+  /// Writes the views of a finished run (images if `images`, report.html if `report`) from
+  /// its results model and returns the paths written; called after results.json and before
+  /// summary.json when the project asks for images or a report. The app sets it to the report
+  /// library's writer (report/); empty: no images and no report (the study library does not
+  /// depend on the report).
+  std::function<std::vector<std::string>(const std::string& output_dir, const ResultsModel& model, bool images,
+                                         bool report)>
+      write_views;
 };
 
 struct GridReport {

@@ -1,7 +1,7 @@
-// report.html from a results folder; see report_html.h for the sections and docs/report.md for
+// report.html from a results model; see report_html.h for the sections and docs/report.md for
 // what each plot shows. Everything is drawn here as inline SVG (plots, legends, axes) or as a
 // PNG data: URI inside an SVG (the temporal map and the sky, one pixel per value).
-#include "dayphoton/study/report_html.h"
+#include "dayphoton/report/report_html.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,32 +14,30 @@
 #include <sstream>
 
 #include <OpenEXRConfig.h>
-#include <nlohmann/json.hpp>
 #include <png.h>
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
-#include "dayphoton/core/polygon.h"
-#include "dayphoton/core/input_file.h"
 #include "dayphoton/core/units.h"
-#include "dayphoton/project/path_name.h"
-#include "dayphoton/project/project.h"
+#include "dayphoton/report/colour_scale.h"
 #include "dayphoton/study/annual_illuminance.h"
-#include "dayphoton/study/colour_scale.h"
 #include "dayphoton/study/image_files.h"
-#include "dayphoton/study/result_files.h"
-#include "dayphoton/study/result_tables.h"
 
 #ifndef DAYPHOTON_VERSION
 #define DAYPHOTON_VERSION "unknown"
 #endif
 
-namespace dayphoton::study {
+namespace dayphoton::report {
 
 namespace {
 
 namespace fs = std::filesystem;
-using json = nlohmann::json;
+using study::AnnualSummary;
+using study::GridResult;
+using study::ResultsModel;
+using study::base64;
+using study::encode_png;
+using study::read_exr;
 
 std::string join(const std::string& dir, const std::string& name) { return (fs::path(dir) / name).string(); }
 
@@ -98,12 +96,6 @@ std::string key_number(double v) {
   return s;
 }
 
-/// "100_2000" (a range in a column name) as "100&#8211;2000".
-std::string range_text(std::string s) {
-  for (std::size_t i = s.find('_'); i != std::string::npos; i = s.find('_')) s.replace(i, 1, "&#8211;");
-  return s;
-}
-
 /// Element ids: letters, digits, '-' and '_' only.
 std::string id_part(const std::string& s) {
   std::string out;
@@ -117,27 +109,25 @@ std::string id_part(const std::string& s) {
 struct PlanGeometry {
   std::vector<Vec3> outline;
   std::vector<std::vector<Vec3>> windows;
-  std::string note;  ///< why something is missing
 };
 
 struct GridData {
-  std::string case_name;  ///< "" for the base case, else the variant
-  std::vector<std::string> changes;  ///< a variant's: what it changes (summary.json)
+  std::string case_kind;  ///< "base", "variant", "operated"
+  std::string case_name;  ///< "" for the base case, else the variant or "operated (open/shaded)"
+  std::vector<std::string> changes;  ///< a variant's: what it changes
+  const GridResult* grid = nullptr;
   std::string name;
-  std::string folder;
+  std::string folder;  ///< relative to the results folder
+  std::string folder_path;  ///< inside the results folder, for the reader
   std::string id;
-  json summary;  ///< the grid's object in summary.json
-  std::vector<SensorPoint> sensors;
-  std::optional<SensorTable> df, metrics;
+  std::vector<Vec3> positions;
+  std::optional<std::vector<double>> df, da, udi, autonomous;
   std::optional<metrics::IlluminanceTable> illuminance;
   std::vector<std::string> problems;
   PlanGeometry plan;
 
   std::string title() const { return case_name.empty() ? name : case_name + " / " + name; }
-  const json* annual() const {
-    auto it = summary.find("annual");
-    return it != summary.end() && it->is_object() ? &*it : nullptr;
-  }
+  const AnnualSummary* annual() const { return grid->annual ? &*grid->annual : nullptr; }
 };
 
 /// The EPW LOCATION line as label/value pairs; empty if unreadable.
@@ -159,99 +149,43 @@ std::vector<std::pair<std::string, std::string>> weather_station(const std::stri
           {"elevation (m)", f[9]}};
 }
 
-/// Ports farther than this from a wall or rectangle grid's plane are not drawn on its
-/// elevation: the windows in the wall a grid covers are at its offset, which is small.
-constexpr double ElevationWindowDistance_m = 0.5;
-
-/// The windows drawn on a grid's picture, which is drawn in the plane of its sensors: all
-/// of them for a plan (a horizontal grid, or a point set without an outline); for an
-/// elevation (a wall or rectangle grid) only those parallel to it and within
-/// ElevationWindowDistance_m, since any other port would be projected onto the elevation as
-/// if it were in that wall.
-std::vector<std::vector<Vec3>> windows_on_plan(const SensorGrid& grid, const std::vector<std::vector<Vec3>>& windows) {
-  const Vec3 n = grid.plane_normal;
-  const bool plan = grid.planar || grid.outline.size() < 3 || std::fabs(n.z) > 1 - 1e-9;
-  if (plan) return windows;
-  std::vector<std::vector<Vec3>> kept;
-  for (const auto& w : windows) {
-    if (w.size() < 3 || std::fabs(dot(polygon_normal(w), n)) < 1 - 1e-6) continue;
-    bool near = true;
-    for (const Vec3& p : w) near = near && std::fabs(dot(p - grid.outline[0], n)) <= ElevationWindowDistance_m;
-    if (near) kept.push_back(w);
-  }
-  return kept;
-}
-
-/// Geometry of every grid of the project named in summary.json (by grid name), if it loads.
-/// Plans of every grid, per case: "" the base, else a variant's name (its windows are its own).
-using CasePlans = std::map<std::string, std::map<std::string, PlanGeometry>>;
-
-CasePlans project_geometry(const std::string& project_path, std::string& note) {
-  CasePlans out;
-  if (project_path.empty() || !fs::exists(project_path)) {
-    note = "the project file " + (project_path.empty() ? std::string("(not named)") : project_path) +
-           " is not available: plans show the sensors' extent, without windows";
-    return out;
-  }
-  try {
-    // Only the geometry is read: where the project's results would go does not matter.
-    project::LoadOptions geometry_only;
-    geometry_only.output_folder_overridden = true;
-    const project::Project project = project::load_project(project_path, geometry_only);
-    auto plans = [](const project::Project& p) {
-      const SceneDescription scene = project::build_scene_description(p);
-      std::vector<std::vector<Vec3>> windows;
-      for (const Surface& s : scene.surfaces)
-        // Port candidates of an imported scene (glazing under `ports: auto`) are drawn as
-        // windows: the engine decides which face outdoors, which would need the ray scene here.
-        if (s.port || s.port_if_outdoors) windows.push_back(s.vertices);
-      std::map<std::string, PlanGeometry> grids;
-      for (const SensorGrid& g : scene.grids) grids[g.name] = PlanGeometry{g.outline, windows_on_plan(g, windows), {}};
-      return grids;
-    };
-    out[""] = plans(project);
-    for (const project::VariantSpec& v : project.variants) out[v.name] = plans(project::apply_variant(project, v));
-    note = "room outline and windows from " + project_path + " as it is now";
-  } catch (const std::exception&) {
-    note = "the project file " + project_path +
-           " no longer loads: plans show the sensors' extent, without windows";
-    out.clear();
-  }
-  return out;
-}
-
-GridData load_grid(const std::string& case_name, const json& grid_json, const std::string& folder) {
+/// A grid of the model with the values the report draws, read through the model's typed
+/// reader (study::read_quantity_values); what cannot be read is listed as a problem.
+GridData load_grid(const std::string& results_dir, const study::CaseResult& c, const GridResult& grid) {
   GridData g;
-  g.case_name = case_name;
-  g.summary = grid_json;
-  g.name = grid_json.value("name", std::string("grid"));
-  g.folder = folder;
-  g.id = "grid-" + id_part(case_name.empty() ? g.name : case_name + "--" + g.name);
-  try {
-    g.sensors = read_sensors_csv(join(folder, "sensors.csv"));
-  } catch (const std::exception& e) {
-    g.problems.push_back(e.what());
-  }
-  auto table = [&](const std::string& file, std::optional<SensorTable>& out) {
-    const std::string path = join(folder, file);
-    if (!fs::exists(path)) return;
+  g.case_kind = c.kind;
+  g.case_name = c.name;
+  g.changes = c.changes;
+  g.grid = &grid;
+  g.name = grid.name;
+  g.folder = grid.folder;
+  g.folder_path = (fs::path(results_dir) / grid.folder).string();
+  g.id = "grid-" + id_part(c.name.empty() ? g.name : c.name + "--" + g.name);
+  g.positions = grid.positions_m;
+  g.plan.outline = grid.outline;
+  for (int k : grid.openings_drawn) g.plan.windows.push_back(c.openings.at(static_cast<std::size_t>(k)));
+  auto values = [&](const char* kind, std::optional<std::vector<double>>& out) {
+    const study::SensorQuantity* q = grid.find_quantity(kind);
+    if (!q) return;
     try {
-      out = read_sensor_table(path);
-      if (out->rows.size() != g.sensors.size()) {
-        g.problems.push_back(path + ": " + std::to_string(out->rows.size()) + " rows for " +
-                             std::to_string(g.sensors.size()) + " sensors");
-        out.reset();
-      }
+      out = study::read_quantity_values(results_dir, grid, *q);
     } catch (const std::exception& e) {
       g.problems.push_back(e.what());
     }
   };
-  table("daylight_factor.csv", g.df);
-  table("metrics.csv", g.metrics);
-  const std::string bin = join(folder, "illuminance.bin");
-  if (fs::exists(bin)) {
+  values("daylight_factor", g.df);
+  values("da", g.da);
+  values("udi_achieved", g.udi);
+  values("udi_autonomous", g.autonomous);
+  if (grid.has_illuminance_table) {
     try {
-      g.illuminance = read_illuminance_binary(bin);
+      const std::string bin = (fs::path(study::grid_folder(results_dir, grid)) / "illuminance.bin").string();
+      g.illuminance = study::read_illuminance_binary(bin);
+      if (g.illuminance->sensor_count() != g.positions.size()) {
+        g.problems.push_back(bin + ": " + std::to_string(g.illuminance->sensor_count()) + " sensors, results.json has " +
+                             std::to_string(g.positions.size()));
+        g.illuminance.reset();
+      }
     } catch (const std::exception& e) {
       g.problems.push_back(e.what());
     }
@@ -312,15 +246,15 @@ std::string polygon_points(const Frame& f, const std::vector<Vec3>& poly) {
 
 /// A false-colour plan of per-sensor values with the room outline, windows, north arrow and a
 /// 1 m scale bar; value labels in the cells when they are large enough.
-std::string plan_svg(const GridData& g, const SensorLattice& lattice, const std::vector<double>& values,
+std::string plan_svg(const GridData& g, const study::SensorLattice& lattice, const std::vector<double>& values,
                      const ColourScale& scale, int decimals, const std::string& what) {
   Frame f;
   if (lattice.regular) {
     f.origin = lattice.origin_m;
     f.u = lattice.column_step_m / lattice.spacing_m;
     f.v = lattice.row_step_m / lattice.spacing_m;
-  } else if (!g.sensors.empty()) {
-    f.origin = g.sensors[0].position;
+  } else if (!g.positions.empty()) {
+    f.origin = g.positions[0];
   }
   // Extent over cells, outline and windows.
   const double half = lattice.regular ? 0.5 * lattice.spacing_m : 0.1;
@@ -332,7 +266,7 @@ std::string plan_svg(const GridData& g, const SensorLattice& lattice, const std:
     lo_v = std::min(lo_v, b - pad);
     hi_v = std::max(hi_v, b + pad);
   };
-  for (const SensorPoint& s : g.sensors) extend(s.position, half);
+  for (const Vec3& p : g.positions) extend(p, half);
   for (const Vec3& p : g.plan.outline) extend(p, 0);
   for (const auto& w : g.plan.windows)
     for (const Vec3& p : w) extend(p, 0);
@@ -352,9 +286,9 @@ std::string plan_svg(const GridData& g, const SensorLattice& lattice, const std:
       << "\" fill=\"#f2f2f2\" stroke=\"#222\" stroke-width=\"2\"/>";
   const double cell = lattice.regular ? lattice.spacing_m * f.px_per_m : 0;
   const bool labels = lattice.regular && cell >= 26 && values.size() <= 800;
-  for (std::size_t i = 0; i < values.size() && i < g.sensors.size(); ++i) {
+  for (std::size_t i = 0; i < values.size() && i < g.positions.size(); ++i) {
     const auto c = scale.colour(values[i]);
-    const double cx = f.x(g.sensors[i].position), cy = f.y(g.sensors[i].position);
+    const double cx = f.x(g.positions[i]), cy = f.y(g.positions[i]);
     if (lattice.regular) {
       s << "<rect x=\"" << num(cx - cell / 2, 1) << "\" y=\"" << num(cy - cell / 2, 1) << "\" width=\"" << num(cell, 1)
         << "\" height=\"" << num(cell, 1) << "\" fill=\"" << hex_colour(c) << "\"><title>sensor " << i << ": "
@@ -443,33 +377,20 @@ std::string histogram_svg(const std::vector<double>& values, const std::vector<d
 }
 
 /// Stacked bars of the grid's mean time shares in both UDI conventions.
-std::string udi_bars_svg(const json& mean, const json& thresholds) {
-  const double lo = thresholds.value("udi_lower_lux", 100.0), up1 = thresholds.value("udi_upper_original_lux", 2000.0),
-               x = thresholds.value("da_lux", 300.0), up2 = thresholds.value("udi_upper_revised_lux", 3000.0);
-  auto value = [&](const std::string& prefix) {
-    for (auto it = mean.begin(); it != mean.end(); ++it)
-      if (it.key().rfind(prefix, 0) == 0 && it->is_number()) return it->get<double>();
-    return 0.0;
-  };
-  auto starts_digit_after = [&](const std::string& prefix) {
-    for (auto it = mean.begin(); it != mean.end(); ++it)
-      if (it.key().rfind(prefix, 0) == 0 && it.key().size() > prefix.size() &&
-          std::isdigit(static_cast<unsigned char>(it.key()[prefix.size()])) && it->is_number())
-        return it->get<double>();
-    return 0.0;
-  };
+std::string udi_bars_svg(const AnnualSummary& a) {
+  const double lo = a.udi_lower_lux, up1 = a.udi_upper_original_lux, x = a.da_threshold_lux, up2 = a.udi_upper_revised_lux;
   struct Part {
     std::string label;
     double share;
     const char* colour;
   };
-  const std::vector<Part> original{{"fell short (&lt; " + tick(lo) + " lx)", value("udi_below"), "#9e9ac8"},
-                                   {"achieved (" + tick(lo) + "&#8211;" + tick(up1) + " lx)", starts_digit_after("udi"), "#41ab5d"},
-                                   {"exceeded (&gt; " + tick(up1) + " lx)", value("udi_above" + key_number(up1)), "#fd8d3c"}};
-  const std::vector<Part> revised{{"fell short (&lt; " + tick(lo) + " lx)", value("udi_below"), "#9e9ac8"},
-                                  {"supplementary (" + tick(lo) + "&#8211;" + tick(x) + " lx)", value("udi_supplementary"), "#c7e9c0"},
-                                  {"autonomous (" + tick(x) + "&#8211;" + tick(up2) + " lx)", value("udi_autonomous"), "#41ab5d"},
-                                  {"exceeded (&gt; " + tick(up2) + " lx)", value("udi_above" + key_number(up2)), "#fd8d3c"}};
+  const std::vector<Part> original{{"fell short (&lt; " + tick(lo) + " lx)", a.udi_below_percent, "#9e9ac8"},
+                                   {"achieved (" + tick(lo) + "&#8211;" + tick(up1) + " lx)", a.udi_achieved_percent, "#41ab5d"},
+                                   {"exceeded (&gt; " + tick(up1) + " lx)", a.udi_above_original_percent, "#fd8d3c"}};
+  const std::vector<Part> revised{{"fell short (&lt; " + tick(lo) + " lx)", a.udi_below_percent, "#9e9ac8"},
+                                  {"supplementary (" + tick(lo) + "&#8211;" + tick(x) + " lx)", a.udi_supplementary_percent, "#c7e9c0"},
+                                  {"autonomous (" + tick(x) + "&#8211;" + tick(up2) + " lx)", a.udi_autonomous_percent, "#41ab5d"},
+                                  {"exceeded (&gt; " + tick(up2) + " lx)", a.udi_above_revised_percent, "#fd8d3c"}};
   const double left = 215, w = 420, bar = 26;
   std::ostringstream s;
   s << "<svg class=\"plot udi\" width=\"" << left + w + 20 << "\" height=\"250\" role=\"img\" "
@@ -508,11 +429,11 @@ std::string udi_bars_svg(const json& mean, const json& thresholds) {
   return s.str();
 }
 
-/// The occupancy schedule of a grid_metrics.json `occupancy` object, as " (schedule)" for
-/// weekly and hourly schedules; "" for the daily window (shown on the temporal map).
-std::string occupancy_note(const json& occupancy) {
-  if (!occupancy.is_object() || !occupancy.contains("schedule") || !occupancy["schedule"].is_string()) return "";
-  return " (" + esc(occupancy["schedule"].get<std::string>()) + ")";
+/// The occupancy schedule as " (schedule)" for weekly and hourly schedules; "" for the
+/// daily window (shown on the temporal map).
+std::string occupancy_note(const study::OccupancySummary& occupancy) {
+  if (occupancy.kind == "daily") return "";
+  return " (" + esc(occupancy.description) + ")";
 }
 
 /// Day of year x hour map of the grid's mean illuminance; occupancy window dashed.
@@ -612,67 +533,44 @@ std::string key_value_table(const std::vector<std::pair<std::string, std::string
   return s.str();
 }
 
-std::string json_scalar(const json& v) {
-  if (v.is_string()) return esc(v.get<std::string>());
-  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
-  if (v.is_number_integer() || v.is_number_unsigned()) return v.dump();
-  if (v.is_number()) {
-    std::string t = num(v.get<double>(), 4);
+/// A number as the tables show it: up to 4 decimals, no trailing zeros.
+std::string scalar(double v) {
+  std::string t = num(v, 4);
+  if (t.find('.') != std::string::npos) {
     t.erase(t.find_last_not_of('0') + 1);
     if (t.back() == '.') t.pop_back();
-    return t;
   }
-  if (v.is_null()) return "-";
-  return esc(v.dump());
+  return t;
 }
 
 std::string badge(bool pass, const std::string& text) {
   return std::string("<span class=\"badge ") + (pass ? "pass" : "fail") + "\">" + text + "</span>";
 }
 
-/// Label, description and unit of a grid-mean metric key (metrics.csv column names).
-std::pair<std::string, std::string> describe_metric(const std::string& key) {
-  auto after = [&](const std::string& prefix) {
-    std::string rest = key.substr(prefix.size());
-    const std::string suffix = "_percent";
-    if (rest.size() > suffix.size() && rest.compare(rest.size() - suffix.size(), suffix.size(), suffix) == 0)
-      rest.erase(rest.size() - suffix.size());
-    return range_text(rest);
-  };
-  if (key == "mean_occupied_lux") return {"mean illuminance, occupied hours", "lx"};
-  if (key.rfind("cda", 0) == 0) return {"continuous daylight autonomy cDA" + after("cda") + " (mean of min(1, E/" + after("cda") + " lx))", "%"};
-  if (key.rfind("damax", 0) == 0) return {"DAmax: share of occupied hours above 10 times the DA threshold", "%"};
-  if (key.rfind("da", 0) == 0) return {"daylight autonomy DA" + after("da") + ": E &#8805; " + after("da") + " lx", "%"};
-  if (key.rfind("udi_below", 0) == 0) return {"UDI fell short: E &lt; " + after("udi_below") + " lx", "%"};
-  if (key.rfind("udi_supplementary", 0) == 0) return {"revised UDI supplementary: " + after("udi_supplementary") + " lx", "%"};
-  if (key.rfind("udi_autonomous", 0) == 0) return {"revised UDI autonomous: " + after("udi_autonomous") + " lx", "%"};
-  if (key.rfind("udi_above", 0) == 0) return {"UDI exceeded: E &gt; " + after("udi_above") + " lx", "%"};
-  if (key.rfind("udi", 0) == 0) return {"UDI achieved (original): " + after("udi") + " lx", "%"};
-  if (key == "ase_hours") return {"hours with direct-sun illuminance above the ASE threshold", "h"};
-  return {esc(key), ""};
+/// The grid means of the annual metrics, labelled, in the order of metrics.csv's columns:
+/// (label, value, unit, decimals).
+struct MetricRow {
+  std::string label;
+  double value;
+  std::string unit;
+  int decimals;
+};
+std::vector<MetricRow> metric_rows(const AnnualSummary& a) {
+  const std::string x = key_number(a.da_threshold_lux), low = key_number(a.udi_lower_lux),
+                    up1 = key_number(a.udi_upper_original_lux), up2 = key_number(a.udi_upper_revised_lux);
+  return {{"daylight autonomy DA" + x + ": E &#8805; " + x + " lx", a.da_percent, "%", 1},
+          {"continuous daylight autonomy cDA" + x + " (mean of min(1, E/" + x + " lx))", a.cda_percent, "%", 1},
+          {"DAmax: share of occupied hours above 10 times the DA threshold", a.da_max_percent, "%", 1},
+          {"UDI fell short: E &lt; " + low + " lx", a.udi_below_percent, "%", 1},
+          {"UDI achieved (original): " + low + "&#8211;" + up1 + " lx", a.udi_achieved_percent, "%", 1},
+          {"UDI exceeded: E &gt; " + up1 + " lx", a.udi_above_original_percent, "%", 1},
+          {"revised UDI supplementary: " + low + "&#8211;" + x + " lx", a.udi_supplementary_percent, "%", 1},
+          {"revised UDI autonomous: " + x + "&#8211;" + up2 + " lx", a.udi_autonomous_percent, "%", 1},
+          {"UDI exceeded: E &gt; " + up2 + " lx", a.udi_above_revised_percent, "%", 1},
+          {"mean illuminance, occupied hours", a.mean_occupied_lux, "lx", 0}};
 }
 
-/// Values of a metrics.csv column chosen by name pattern; empty if absent.
-std::vector<double> metric_column(const GridData& g, bool (*match)(const std::string&), std::string& column) {
-  if (!g.metrics) return {};
-  for (const std::string& c : g.metrics->columns)
-    if (match(c)) {
-      column = c;
-      return g.metrics->values(c);
-    }
-  return {};
-}
-
-bool is_da_column(const std::string& c) {
-  return c.rfind("da", 0) == 0 && c.size() > 2 && std::isdigit(static_cast<unsigned char>(c[2])) &&
-         c.find("_percent") != std::string::npos;
-}
-bool is_udi_achieved_column(const std::string& c) {
-  return c.rfind("udi", 0) == 0 && c.size() > 3 && std::isdigit(static_cast<unsigned char>(c[3]));
-}
-bool is_udi_autonomous_column(const std::string& c) { return c.rfind("udi_autonomous", 0) == 0; }
-
-std::string plan_block(const GridData& g, const SensorLattice& lattice, const std::vector<double>& values,
+std::string plan_block(const GridData& g, const study::SensorLattice& lattice, const std::vector<double>& values,
                        const ColourScale& scale, int decimals, const std::string& caption, PageIds& page) {
   std::ostringstream s;
   s << "<figure class=\"planfig\"><div class=\"row\">" << plan_svg(g, lattice, values, scale, decimals, caption)
@@ -683,12 +581,11 @@ std::string plan_block(const GridData& g, const SensorLattice& lattice, const st
 std::string grid_section(const GridData& g, PageIds& page) {
   std::ostringstream s;
   // Variant names are portable folder names, so only the operated case starts with "operated (".
-  const bool operated = g.case_name.rfind("operated (", 0) == 0;
+  const bool operated = g.case_kind == "operated";
   s << "<section class=\"grid\" id=\"" << g.id << "\"><h2>"
     << (g.case_name.empty() ? "Grid " : operated ? "Operated shading " : "Variant ")
     << esc(g.title()) << "</h2>";
-  s << "<p class=\"meta\">" << g.sensors.size() << " sensors; folder <code>" << esc(g.folder) << "</code>";
-  if (!g.plan.note.empty()) s << "; " << esc(g.plan.note);
+  s << "<p class=\"meta\">" << g.positions.size() << " sensors; folder <code>" << esc(g.folder_path) << "</code>";
   if (!g.changes.empty()) {
     std::string changes;
     for (const std::string& c : g.changes) changes += (changes.empty() ? "" : ", ") + c;
@@ -696,47 +593,38 @@ std::string grid_section(const GridData& g, PageIds& page) {
   }
   s << "</p>";
   for (const std::string& p : g.problems) s << "<p class=\"problem\">could not read: " << esc(p) << "</p>";
-  const SensorLattice lattice = sensor_lattice(g.sensors);
-  const json* annual = g.annual();
+  const study::SensorLattice& lattice = g.grid->lattice;
+  const AnnualSummary* annual = g.annual();
 
   // Daylight factor.
   s << "<div class=\"part\" id=\"" << g.id << "-df\"><h3>Daylight factor (CIE overcast sky)</h3>";
-  if (g.df) {
-    const std::vector<double> df = g.df->values("df_percent");
+  if (g.df && g.grid->daylight_factor) {
+    const std::vector<double>& df = *g.df;
     s << plan_block(g, lattice, df, daylight_factor_scale(), 1,
                     "Daylight factor per sensor (%), CIE standard overcast sky, ground included. Windows in blue.", page);
-    const json st = g.summary.value("daylight_factor_percent", json::object());
+    const study::DaylightFactorSummary& st = *g.grid->daylight_factor;
     std::vector<std::pair<std::string, std::string>> rows{
-        {"mean", json_scalar(st.value("mean", json())) + " %"},
-        {"median", json_scalar(st.value("median", json())) + " %"},
-        {"minimum", json_scalar(st.value("min", json())) + " %"},
-        {"maximum", json_scalar(st.value("max", json())) + " %"},
-        {"uniformity (min / mean)", json_scalar(st.value("uniformity", json()))}};
-    for (const json& a : st.value("area_at_or_above", json::array()))
-      rows.emplace_back("area with DF &#8805; " + json_scalar(a.value("threshold_percent", json())) + " %",
-                        json_scalar(a.value("area_percent", json())) + " %");
+        {"mean", scalar(st.mean_percent) + " %"},
+        {"median", scalar(st.median_percent) + " %"},
+        {"minimum", scalar(st.min_percent) + " %"},
+        {"maximum", scalar(st.max_percent) + " %"},
+        {"uniformity (min / mean)", scalar(st.uniformity)}};
+    for (const auto& [threshold, area] : st.area_at_or_above_percent)
+      rows.emplace_back("area with DF &#8805; " + scalar(threshold) + " %", scalar(area) + " %");
     // The Monte Carlo uncertainty (docs/outputs.md, daylight_factor.csv): relative standard
     // error of DF over the sensors with daylight.
-    const json u = g.summary.value("uncertainty", json::object());
-    if (u.contains("df_rms_relative_stderr_percent")) {
-      rows.emplace_back("standard error of DF, RMS over sensors (relative)",
-                        json_scalar(u.value("df_rms_relative_stderr_percent", json())) + " %");
-      rows.emplace_back("standard error of DF, largest (relative)",
-                        json_scalar(u.value("df_max_relative_stderr_percent", json())) + " %");
-    }
+    rows.emplace_back("standard error of DF, RMS over sensors (relative)", scalar(st.rms_relative_stderr_percent) + " %");
+    rows.emplace_back("standard error of DF, largest (relative)", scalar(st.max_relative_stderr_percent) + " %");
     // The accuracy target (docs/photon-tracing.md, "Accuracy target"): what the rounds reached.
-    const json acc = g.summary.value("accuracy", json::object());
-    if (acc.contains("target_df_relative_stderr_percent"))
+    if (const auto& acc = st.accuracy)
       rows.emplace_back("accuracy target: standard error of DF, 95th percentile of the sensors (relative)",
-                        json_scalar(acc.value("reached_df_relative_stderr_percent", json())) + " % (target " +
-                            json_scalar(acc.value("target_df_relative_stderr_percent", json())) + " %; " +
-                            esc(acc.value("stop_reason", std::string())) + " after " +
-                            json_scalar(acc.value("rounds", json())) + " rounds, " +
-                            json_scalar(acc.value("photons", json())) + " photons)");
+                        scalar(acc->reached_percent) + " % (target " + scalar(acc->target_percent) + " %; " +
+                            esc(acc->stop_reason) + " after " + std::to_string(acc->rounds) + " rounds, " +
+                            std::to_string(acc->photons) + " photons)");
     // The annual verdicts within two standard errors (docs/metrics.md).
-    if (u.contains("da_verdicts_within_2_sigma"))
+    if (annual && annual->da_verdicts_within_2_sigma)
       rows.emplace_back("sensors whose DA verdict could flip within 2 standard errors",
-                        json_scalar(u.value("da_verdicts_within_2_sigma", json())));
+                        std::to_string(*annual->da_verdicts_within_2_sigma));
     s << key_value_table(rows);
   } else {
     s << "<p class=\"na\">daylight_factor.csv not found: the daylight factor was not computed.</p>";
@@ -745,10 +633,9 @@ std::string grid_section(const GridData& g, PageIds& page) {
 
   // DA.
   s << "<div class=\"part\" id=\"" << g.id << "-da\"><h3>Daylight autonomy</h3>";
-  std::string da_column;
-  const std::vector<double> da = metric_column(g, is_da_column, da_column);
+  const std::vector<double> da = g.da && annual ? *g.da : std::vector<double>{};
   if (!da.empty()) {
-    const std::string threshold = da_column.substr(2, da_column.find('_') - 2);
+    const std::string threshold = key_number(annual->da_threshold_lux);
     s << plan_block(g, lattice, da, percent_scale("DA" + threshold), 0,
                     "DA" + threshold + ": share of occupied hours with illuminance &#8805; " + threshold + " lx (%).", page);
   } else {
@@ -758,19 +645,20 @@ std::string grid_section(const GridData& g, PageIds& page) {
 
   // UDI.
   s << "<div class=\"part\" id=\"" << g.id << "-udi\"><h3>Useful daylight illuminance</h3>";
-  std::string udi_column, autonomous_column;
-  const std::vector<double> udi = metric_column(g, is_udi_achieved_column, udi_column);
-  const std::vector<double> autonomous = metric_column(g, is_udi_autonomous_column, autonomous_column);
+  const std::vector<double> udi = g.udi ? *g.udi : std::vector<double>{};
+  const std::vector<double> autonomous = g.autonomous ? *g.autonomous : std::vector<double>{};
   if (!udi.empty() && annual) {
     s << "<div class=\"row\">"
       << plan_block(g, lattice, udi, percent_scale("UDI achieved"), 0,
-                    "UDI achieved, original convention (" + range_text(udi_column.substr(3, udi_column.size() - 3 - 8)) +
+                    "UDI achieved, original convention (" + key_number(annual->udi_lower_lux) + "&#8211;" +
+                        key_number(annual->udi_upper_original_lux) +
                         " lx): share of occupied hours (%).", page);
     if (!autonomous.empty())
       s << plan_block(g, lattice, autonomous, percent_scale("UDI autonomous"), 0,
-                      "UDI autonomous, revised convention (" + range_text(autonomous_column.substr(14, autonomous_column.size() - 14 - 8)) +
+                      "UDI autonomous, revised convention (" + key_number(annual->da_threshold_lux) + "&#8211;" +
+                          key_number(annual->udi_upper_revised_lux) +
                           " lx): share of occupied hours (%).", page);
-    s << "</div><figure>" << udi_bars_svg(annual->value("mean", json::object()), annual->value("thresholds", json::object()))
+    s << "</div><figure>" << udi_bars_svg(*annual)
       << "<figcaption>Grid means of the UDI bins in both conventions (each bar sums to 100 %).</figcaption></figure>";
   } else {
     s << "<p class=\"na\">no annual results.</p>";
@@ -780,44 +668,38 @@ std::string grid_section(const GridData& g, PageIds& page) {
   // Compliance.
   s << "<div class=\"part\" id=\"" << g.id << "-compliance\"><h3>sDA, ASE and EN 17037</h3>";
   if (annual) {
-    const double sda = annual->value("sda_percent", 0.0);
-    const json thresholds = annual->value("thresholds", json::object());
-    const std::string da_lux = tick(thresholds.value("da_lux", 300.0));
-    const std::string frac = tick(100 * thresholds.value("sda_time_fraction", 0.5));
+    const double sda = annual->sda_percent;
+    const std::string da_lux = tick(annual->da_threshold_lux);
+    const std::string frac = tick(100 * annual->sda_time_fraction);
     s << "<table class=\"grid-table\"><tr><th>criterion (IES LM-83-12)</th><th>value</th><th>requirement</th><th>result</th></tr>";
     s << "<tr><td>sDA" << da_lux << "/" << frac << "%: share of sensors with DA" << da_lux << " &#8805; " << frac
-      << " %</td><td>" << num(sda, 1) << " % (" << annual->value("sda_sensors", 0) << " of "
-      << annual->value("sensors", 0) << ")</td><td>&#8805; 55 % nominally accepted</td><td>"
-      << badge(sda >= 55, sda >= 55 ? "pass" : "fail") << "</td></tr>";
+      << " %</td><td>" << num(sda, 1) << " % (" << annual->sda_sensors << " of " << annual->sensors
+      << ")</td><td>&#8805; 55 % nominally accepted</td><td>" << badge(sda >= 55, sda >= 55 ? "pass" : "fail")
+      << "</td></tr>";
     s << "<tr><td></td><td></td><td>&#8805; 75 % preferred</td><td>" << badge(sda >= 75, sda >= 75 ? "pass" : "fail")
       << "</td></tr>";
-    const json ase = annual->value("ase_percent", json());
-    s << "<tr><td>ASE" << tick(thresholds.value("ase_threshold_lux", 1000.0)) << ","
-      << tick(thresholds.value("ase_hours", 250.0)) << ": share of sensors with more than "
-      << tick(thresholds.value("ase_hours", 250.0)) << " occupied hours of direct sun &#8805; "
-      << tick(thresholds.value("ase_threshold_lux", 1000.0)) << " lx</td>";
-    if (ase.is_number()) {
-      const double a = ase.get<double>();
+    s << "<tr><td>ASE" << tick(annual->ase_threshold_lux) << "," << tick(annual->ase_hours)
+      << ": share of sensors with more than " << tick(annual->ase_hours) << " occupied hours of direct sun &#8805; "
+      << tick(annual->ase_threshold_lux) << " lx</td>";
+    if (annual->ase_percent) {
+      const double a = *annual->ase_percent;
       s << "<td>" << num(a, 1) << " %</td><td>&#8804; 10 %</td><td>" << badge(a <= 10, a <= 10 ? "pass" : "fail") << "</td>";
     } else {
       s << "<td colspan=\"3\" class=\"na\">not computed: ASE needs a direct-sun-only illuminance table (sun bins); "
            "this run spread the sun into sky patches</td>";
     }
     s << "</tr></table>";
-    const json en = annual->value("en17037", json());
-    if (en.is_object()) {
+    if (!annual->en17037.empty()) {
       s << "<table class=\"grid-table\"><tr><th>EN 17037 level</th><th>target (50 % of the area)</th><th>area reaching it</th>"
            "<th>minimum target (95 % of the area)</th><th>area reaching it</th><th>result</th></tr>";
-      for (const json& level : en.value("levels", json::array())) {
-        const bool passes = level.value("passes", false);
-        s << "<tr><td>" << esc(level.value("level", std::string())) << "</td><td>" << tick(level.value("target_lux", 0.0))
-          << " lx</td><td>" << num(level.value("target_area_percent", 0.0), 1) << " %</td><td>"
-          << tick(level.value("minimum_target_lux", 0.0)) << " lx</td><td>"
-          << num(level.value("minimum_target_area_percent", 0.0), 1) << " %</td><td>"
-          << badge(passes, passes ? "pass" : "fail") << "</td></tr>";
+      for (const study::En17037Level& level : annual->en17037) {
+        s << "<tr><td>" << esc(level.level) << "</td><td>" << tick(level.target_lux) << " lx</td><td>"
+          << num(level.target_area_percent, 1) << " %</td><td>" << tick(level.minimum_target_lux) << " lx</td><td>"
+          << num(level.minimum_target_area_percent, 1) << " %</td><td>" << badge(level.passes, level.passes ? "pass" : "fail")
+          << "</td></tr>";
       }
-      s << "</table><p class=\"note\">EN 17037 daylight provision over " << en.value("daylight_hours", 0)
-        << " daylight hours (half the year, ranked by " << esc(en.value("daylight_hours_source", std::string()))
+      s << "</table><p class=\"note\">EN 17037 daylight provision over " << annual->en17037_daylight_hours
+        << " daylight hours (half the year, ranked by " << esc(annual->en17037_daylight_hours_source)
         << "); a level passes when its target is met on &#8805; 50 % and its minimum target on &#8805; 95 % of the "
            "area, each for &#8805; 50 % of the daylight hours.</p>";
     } else {
@@ -831,11 +713,12 @@ std::string grid_section(const GridData& g, PageIds& page) {
   // Temporal map.
   s << "<div class=\"part\" id=\"" << g.id << "-temporal\"><h3>Temporal map of the mean illuminance</h3>";
   if (g.illuminance && g.illuminance->step_count() > 0) {
-    const json occ = annual ? annual->value("occupancy", json::object()) : json::object();
+    const bool daily = !annual || annual->occupancy.kind == "daily";
     const ColourScale scale = illuminance_scale();
     s << "<figure><div class=\"row\">"
-      << temporal_svg(*g.illuminance, occ.value("start_h", occ.contains("schedule") ? NAN : 8.0),
-                      occ.value("end_h", occ.contains("schedule") ? NAN : 18.0), scale) << legend_svg(scale, page)
+      << temporal_svg(*g.illuminance, daily ? (annual ? annual->occupancy.start_h : 8.0) : NAN,
+                      daily ? (annual ? annual->occupancy.end_h : 18.0) : NAN, scale)
+      << legend_svg(scale, page)
       << "</div><figcaption>Mean illuminance over the grid's " << g.illuminance->sensor_count()
       << " sensors for every hour of the weather year (lx, logarithmic; below 1 lx grey).</figcaption></figure>";
   } else {
@@ -849,7 +732,7 @@ std::string grid_section(const GridData& g, PageIds& page) {
   if (g.df) {
     std::vector<double> edges;
     for (int i = 0; i <= 20; ++i) edges.push_back(0.5 * i);
-    s << "<figure>" << histogram_svg(g.df->values("df_percent"), edges, daylight_factor_scale(), "daylight factor (%)",
+    s << "<figure>" << histogram_svg(*g.df, edges, daylight_factor_scale(), "daylight factor (%)",
                                      "daylight factor histogram")
       << "<figcaption>Daylight factor: share of sensors per 0.5 % bin (last bin: 10 % and above).</figcaption></figure>";
     any = true;
@@ -869,23 +752,16 @@ std::string grid_section(const GridData& g, PageIds& page) {
   s << "<div class=\"part\" id=\"" << g.id << "-metrics\"><h3>Grid metrics</h3>";
   if (annual) {
     s << "<table class=\"grid-table\"><tr><th>metric (grid mean over sensors)</th><th>value</th><th>unit</th></tr>";
-    const json mean = annual->value("mean", json::object());
-    const std::vector<std::string> order = g.metrics ? g.metrics->columns : std::vector<std::string>{};
-    for (const std::string& key : order) {
-      if (!mean.contains(key)) continue;
-      const auto [label, unit] = describe_metric(key);
-      s << "<tr><td>" << label << "</td><td class=\"n\">" << num(mean[key].get<double>(), key == "mean_occupied_lux" ? 0 : 1)
-        << "</td><td>" << unit << "</td></tr>";
-    }
-    s << "<tr><td>sDA (share of sensors)</td><td class=\"n\">" << num(annual->value("sda_percent", 0.0), 1)
-      << "</td><td>%</td></tr>";
-    const json ase = annual->value("ase_percent", json());
-    s << "<tr><td>ASE (share of sensors)</td><td class=\"n\">" << (ase.is_number() ? num(ase.get<double>(), 1) : "-")
-      << "</td><td>%</td></tr>";
-    s << "<tr><td>occupied hours" << occupancy_note(annual->value("occupancy", json::object())) << "</td><td class=\"n\">"
-      << annual->value("occupied_hours", 0) << "</td><td>h</td></tr>";
-    s << "<tr><td>time steps</td><td class=\"n\">" << annual->value("time_steps", 0) << "</td><td></td></tr>";
-    s << "</table><p class=\"note\">Sky: " << esc(annual->value("sky", std::string())) << ".</p>";
+    for (const MetricRow& row : metric_rows(*annual))
+      s << "<tr><td>" << row.label << "</td><td class=\"n\">" << num(row.value, row.decimals) << "</td><td>" << row.unit
+        << "</td></tr>";
+    s << "<tr><td>sDA (share of sensors)</td><td class=\"n\">" << num(annual->sda_percent, 1) << "</td><td>%</td></tr>";
+    s << "<tr><td>ASE (share of sensors)</td><td class=\"n\">"
+      << (annual->ase_percent ? num(*annual->ase_percent, 1) : "-") << "</td><td>%</td></tr>";
+    s << "<tr><td>occupied hours" << occupancy_note(annual->occupancy) << "</td><td class=\"n\">"
+      << annual->occupied_hours << "</td><td>h</td></tr>";
+    s << "<tr><td>time steps</td><td class=\"n\">" << annual->time_steps << "</td><td></td></tr>";
+    s << "</table><p class=\"note\">Sky: " << esc(annual->sky) << ".</p>";
   } else {
     s << "<p class=\"na\">no annual results.</p>";
   }
@@ -947,87 +823,56 @@ const char* const Script = R"JS(
 })();
 )JS";
 
-std::string summary_section(const json& summary, const std::string& results_dir, const std::string& geometry_note) {
+std::string summary_section(const ResultsModel& m, const std::string& results_dir) {
   std::ostringstream s;
-  const json site = summary.value("site", json::object());
-  const json sim = summary.value("simulation", json::object());
   s << "<section id=\"summary\"><h2>Project</h2>";
   std::vector<std::pair<std::string, std::string>> project{
-      {"project file", "<code>" + esc(summary.value("project", std::string())) + "</code>"},
+      {"project file", "<code>" + esc(m.project_file) + "</code>"},
       {"results folder", "<code>" + esc(results_dir) + "</code>"},
-      {"site", esc(site.value("name", std::string()))},
-      {"latitude (deg, north +)", json_scalar(site.value("latitude_deg", json()))},
-      {"longitude (deg, east +)", json_scalar(site.value("longitude_deg", json()))},
-      {"time zone (h from UTC, standard time)", json_scalar(site.value("time_zone_h", json()))}};
+      {"site", esc(m.site_name)},
+      {"latitude (deg, north +)", scalar(m.latitude_deg)},
+      {"longitude (deg, east +)", scalar(m.longitude_deg)},
+      {"time zone (h from UTC, standard time)", scalar(m.time_zone_h)}};
   // Which site the sun is computed for, in the words of check and the run log (sun_site.h).
-  if (site.contains("sun")) {
-    const json sun = site.value("sun", json());
-    project.emplace_back("sun and sky", sun.is_string() ? esc(sun.get<std::string>()) : std::string("daylight-factor study: no sun"));
-  }
-  if (site.contains("station_distance_km"))
-    project.emplace_back("weather station distance (km)", json_scalar(site.value("station_distance_km", json())));
-  if (site.contains("below_horizon_direct")) {
-    const json b = site.value("below_horizon_direct", json::object());
+  project.emplace_back("sun and sky", m.sun_site ? esc(m.sun_sentence) : std::string("daylight-factor study: no sun"));
+  if (m.station_distance_km) project.emplace_back("weather station distance (km)", scalar(*m.station_distance_km));
+  if (m.below_horizon_hours)
     project.emplace_back("hours with direct irradiance and the sun below the horizon",
-                         json_scalar(b.value("hours", json())) + " (their sun " + esc(b.value("their_sun", std::string())) + ")");
-  }
+                         std::to_string(*m.below_horizon_hours) + " (their sun " + esc(m.below_horizon_their_sun) + ")");
   s << "<h3>Site</h3>" << key_value_table(project);
-  const std::string weather = summary.value("weather", std::string());
   s << "<h3 id=\"weather\">Weather</h3>";
   std::vector<std::pair<std::string, std::string>> w;
-  if (weather.empty()) {
+  if (m.weather_file.empty()) {
     w.emplace_back("weather file", "none: a daylight-factor study (CIE overcast sky) needs no weather");
   } else {
-    w.emplace_back("weather file", "<code>" + esc(weather) + "</code>");
-    for (const auto& [k, v] : weather_station(weather)) w.emplace_back(k, esc(v));
+    w.emplace_back("weather file", "<code>" + esc(m.weather_file) + "</code>");
+    for (const auto& [k, v] : weather_station(m.weather_file)) w.emplace_back(k, esc(v));
     if (w.size() == 1) w.emplace_back("station", "the weather file is not readable from here");
   }
   s << key_value_table(w);
   s << "<h3>Simulation settings</h3>";
   std::vector<std::pair<std::string, std::string>> settings;
-  for (auto it = sim.begin(); it != sim.end(); ++it) {
-    std::string key = it.key();
-    std::replace(key.begin(), key.end(), '_', ' ');
-    settings.emplace_back(esc(key), json_scalar(*it));
-  }
+  for (const study::Setting& setting : m.settings) settings.emplace_back(esc(setting.name), esc(setting.value));
   s << key_value_table(settings);
   s << "<h3>Versions</h3>";
   std::vector<std::pair<std::string, std::string>> versions{
       {"report written by", std::string("dayphoton ") + DAYPHOTON_VERSION},
       {"OpenEXR", OPENEXR_VERSION_STRING},
-      {"libpng", PNG_LIBPNG_VER_STRING}};
-  const json v = summary.value("versions", json::object());
-  for (auto it = v.begin(); it != v.end(); ++it) versions.emplace_back("run: " + esc(it.key()), json_scalar(*it));
+      {"libpng", PNG_LIBPNG_VER_STRING},
+      {"run: compiler", esc(m.compiler)},
+      {"run: dayphoton", esc(m.dayphoton_version)}};
   s << key_value_table(versions);
-  s << "<h3 id=\"run-time\">Run time</h3>";
-  if (!summary.contains("timings")) {
-    // Since results are identical whether computed or cached, the run's history is in its log.
-    s << "<p class=\"note\">What this run computed, what came from the cache, and the time of each step: "
-         "<code>run.log</code> in the results folder.</p>";
-  } else {
-  s << "<table class=\"grid-table\"><tr><th>step</th><th>work</th><th>seconds</th><th>source</th></tr>";
-  double total = 0;
-  for (const json& t : summary.value("timings", json::array())) {
-    const double sec = t.value("seconds", 0.0);
-    total += sec;
-    s << "<tr><td>" << esc(t.value("step", std::string())) << "</td><td class=\"n\">" << t.value("work", 0) << ' '
-      << esc(t.value("unit", std::string())) << "</td><td class=\"n\">" << num(sec, 2) << "</td><td>"
-      << (t.value("cached", false) ? "cache" : "computed") << "</td></tr>";
-  }
-  s << "<tr><th>total</th><td></td><td class=\"n\"><b>" << num(total, 2) << "</b></td><td></td></tr></table>";
-  const json cache = summary.value("cache", json::object());
-  if (!cache.empty())
-    s << "<p class=\"note\">Photon sources traced: " << cache.value("sources_traced", 0) << " of "
-      << cache.value("sources", 0) << " (" << cache.value("sources_cached", 0) << " from the cache); grids estimated: "
-      << cache.value("grids_estimated", 0) << ", from the cache: " << cache.value("grids_cached", 0) << ".</p>";
-  }
-  const json notes = summary.value("notes", json::array());
-  if (!notes.empty()) {
+  // Results are identical whether computed or cached, so results.json holds no times: the
+  // run's history is in its log.
+  s << "<h3 id=\"run-time\">Run time</h3><p class=\"note\">What this run computed, what came from the cache, and the "
+       "time of each step: <code>run.log</code> in the results folder.</p>";
+  if (!m.notes.empty()) {
     s << "<h3>Notes</h3><ul>";
-    for (const json& n : notes) s << "<li>" << json_scalar(n) << "</li>";
+    for (const std::string& n : m.notes) s << "<li>" << esc(n) << "</li>";
     s << "</ul>";
   }
-  if (!geometry_note.empty()) s << "<p class=\"note\">Plans: " << esc(geometry_note) << ".</p>";
+  s << "<p class=\"note\">Plans: room outlines, windows and sensor lattices as the run recorded them "
+       "(results.json).</p>";
   s << "</section>";
   return s.str();
 }
@@ -1038,30 +883,19 @@ std::string overview_section(const std::vector<GridData>& grids) {
        "<th>sensors</th><th>mean DF (%)</th><th>area DF &#8805; 2 % (%)</th><th>mean DA (%)</th><th>sDA (%)</th>"
        "<th>ASE (%)</th><th>EN 17037</th></tr>";
   for (const GridData& g : grids) {
-    const json df = g.summary.value("daylight_factor_percent", json::object());
+    const auto& df = g.grid->daylight_factor;
     std::string area = "-";
-    for (const json& a : df.value("area_at_or_above", json::array()))
-      if (a.value("threshold_percent", 0.0) == 2.0) area = num(a.value("area_percent", 0.0), 1);
+    if (df)
+      for (const auto& [threshold, a] : df->area_at_or_above_percent)
+        if (threshold == 2.0) area = num(a, 1);
     s << "<tr><td>" << (g.case_name.empty() ? "base" : esc(g.case_name)) << "</td><td><a href=\"#" << g.id << "\">"
-      << esc(g.name) << "</a></td><td class=\"n\">" << g.sensors.size() << "</td><td class=\"n\">"
-      << (df.contains("mean") ? num(df["mean"].get<double>(), 2) : "-") << "</td><td class=\"n\">" << area << "</td>";
-    const json* annual = g.annual();
-    if (annual) {
-      const json mean = annual->value("mean", json::object());
-      std::string da = "-";
-      for (auto it = mean.begin(); it != mean.end(); ++it)
-        if (is_da_column(it.key())) da = num(it->get<double>(), 1);
-      const json ase = annual->value("ase_percent", json());
-      std::string en = "-";
-      const json e = annual->value("en17037", json());
-      if (e.is_object()) {
-        en = "none";
-        for (const json& level : e.value("levels", json::array()))
-          if (level.value("passes", false)) en = level.value("level", std::string());
-      }
-      s << "<td class=\"n\">" << da << "</td><td class=\"n\">" << num(annual->value("sda_percent", 0.0), 1)
-        << "</td><td class=\"n\">" << (ase.is_number() ? num(ase.get<double>(), 1) : "-") << "</td><td>" << esc(en)
-        << "</td>";
+      << esc(g.name) << "</a></td><td class=\"n\">" << g.positions.size() << "</td><td class=\"n\">"
+      << (df ? num(df->mean_percent, 2) : "-") << "</td><td class=\"n\">" << area << "</td>";
+    if (const AnnualSummary* annual = g.annual()) {
+      const std::string en = annual->en17037_level();
+      s << "<td class=\"n\">" << num(annual->da_percent, 1) << "</td><td class=\"n\">" << num(annual->sda_percent, 1)
+        << "</td><td class=\"n\">" << (annual->ase_percent ? num(*annual->ase_percent, 1) : "-") << "</td><td>"
+        << esc(en.empty() ? "-" : en) << "</td>";
     } else {
       s << "<td>-</td><td>-</td><td>-</td><td>-</td>";
     }
@@ -1113,102 +947,15 @@ std::string sky_section(const std::string& results_dir, std::vector<std::string>
   return s.str();
 }
 
-json read_summary(const std::string& results_dir) {
-  const std::string path = join(results_dir, "summary.json");
-  if (input_file_problem(path) == "not found")
-    throw InputError(SourceLocation{path, 0, 0}, "cannot open the run summary (is this a results folder of `dayphoton run`?)");
-  std::ifstream in = open_input_file(path, "run summary");  // a FIFO or a device is refused, not waited on
-  json summary = json::parse(in, nullptr, false);
-  if (summary.is_discarded() || !summary.is_object()) throw InputError(SourceLocation{path, 0, 0}, "not a JSON object");
-  return summary;
-}
-
-json parse_summary(const std::string& results_dir, const std::string& text) {
-  json summary = json::parse(text, nullptr, false);
-  if (summary.is_discarded() || !summary.is_object())
-    throw InputError(SourceLocation{join(results_dir, "summary.json"), 0, 0}, "not a JSON object");
-  return summary;
-}
-
-std::string report_html_of(const std::string& results_dir, const json& summary);
-
-/// A grid or variant name read back from summary.json, as a folder name: it must pass the
-/// rule `run` applied to it (project/path_name.h), so that a hand-edited summary cannot make
-/// the report read or write outside the results folder.
-std::string folder_name(const std::string& results_dir, const std::string& kind, const std::string& name) {
-  const std::string problem = project::path_name_problem(name);
-  if (!problem.empty())
-    throw InputError(SourceLocation{join(results_dir, "summary.json"), 0, 0},
-                     kind + " name '" + project::printable_name(name) + "' is not a portable folder name: " + problem);
-  return name;
-}
-
-/// Folder of a grid: <case_dir>/<grid>, case_dir being <results> (base), <results>/variants/
-/// <variant> or <results>/operated, as `run` writes them. The absolute folder also recorded in
-/// summary.json is not used: the report stays inside the results folder (moved or not).
-std::string grid_folder_in(const std::string& results_dir, const std::string& case_dir, const json& grid) {
-  return join(case_dir, folder_name(results_dir, "grid", grid.value("name", std::string())));
-}
-
-std::string grid_folder(const std::string& results_dir, const std::string& variant, const json& grid) {
-  return grid_folder_in(results_dir,
-                        variant.empty() ? results_dir
-                                        : join(join(results_dir, "variants"), folder_name(results_dir, "variant", variant)),
-                        grid);
-}
-
-/// The operated result (summary.json `operated`, written by `run` into <results>/operated/):
-/// its case label, e.g. "operated (raised/closed)", and its grids.
-std::string operated_case(const json& summary) {
-  const json op = summary.value("operated", json::object());
-  return "operated (" + op.value("open", std::string()) + "/" + op.value("shaded", std::string()) + ")";
-}
-json operated_grids(const json& summary) {
-  const json op = summary.value("operated", json::object());
-  return op.is_object() ? op.value("grids", json::array()) : json::array();
-}
-
-}  // namespace
-
-std::string report_html(const std::string& results_dir) {
-  return report_html_of(results_dir, read_summary(results_dir));
-}
-
-std::string report_html(const std::string& results_dir, const std::string& summary_json) {
-  return report_html_of(results_dir, parse_summary(results_dir, summary_json));
-}
-
-namespace {
-
-std::string report_html_of(const std::string& results_dir, const json& summary) {
+std::string report_html_of(const std::string& results_dir, const ResultsModel& model) {
   PageIds page;
-  std::string geometry_note;
-  const CasePlans geometry = project_geometry(summary.value("project", std::string()), geometry_note);
-
   std::vector<GridData> grids;
-  for (const json& g : summary.value("grids", json::array()))
-    grids.push_back(load_grid("", g, grid_folder(results_dir, "", g)));
-  for (const json& v : summary.value("variants", json::array()))
-    for (const json& g : v.value("grids", json::array())) {
-      grids.push_back(load_grid(v.value("name", std::string("variant")), g,
-                                grid_folder(results_dir, v.value("name", std::string()), g)));
-      for (const json& c : v.value("changes", json::array()))
-        if (c.is_string()) grids.back().changes.push_back(c.get<std::string>());
-    }
-  for (const json& g : operated_grids(summary))
-    grids.push_back(load_grid(operated_case(summary), g, grid_folder_in(results_dir, join(results_dir, "operated"), g)));
-  for (GridData& g : grids) {
-    // A variant's own windows; the base's for the base and the operated case.
-    const auto plans = geometry.find(geometry.count(g.case_name) ? g.case_name : std::string());
-    if (plans == geometry.end()) continue;
-    auto it = plans->second.find(g.name);
-    if (it != plans->second.end()) g.plan = it->second;
-    else g.plan.note = "grid not in the project file any more: no outline";
-  }
+  for (const study::CaseResult& c : model.cases)
+    for (const GridResult& g : c.grids) grids.push_back(load_grid(results_dir, c, g));
 
   std::vector<std::string> ids{"summary", "overview"};
   std::ostringstream body;
-  body << summary_section(summary, results_dir, geometry_note) << overview_section(grids);
+  body << summary_section(model, results_dir) << overview_section(grids);
   for (const GridData& g : grids) {
     body << grid_section(g, page);
     ids.push_back(g.id);
@@ -1217,20 +964,20 @@ std::string report_html_of(const std::string& results_dir, const json& summary) 
   }
   body << sky_section(results_dir, ids, page);
 
-  const std::string project_name = fs::path(summary.value("project", std::string("project"))).filename().string();
+  const std::string project_name = model.project_name.empty() ? std::string("project") : model.project_name;
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
           "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
           "<meta name=\"generator\" content=\"dayphoton " DAYPHOTON_VERSION "\">"
-       << "<title>dayphoton report: " << esc(summary.value("site", json::object()).value("name", project_name))
+       << "<title>dayphoton report: " << esc(model.site_name.empty() ? project_name : model.site_name)
        << "</title><style>" << Style << "</style></head>\n<body data-sections=\"";
   for (std::size_t i = 0; i < ids.size(); ++i) html << (i ? " " : "") << ids[i];
   html << "\"><svg width=\"0\" height=\"0\" style=\"position:absolute\" aria-hidden=\"true\"><defs>"
           "<marker id=\"arrowhead\" viewBox=\"0 0 10 10\" refX=\"5\" refY=\"5\" markerWidth=\"6\" markerHeight=\"6\" "
           "orient=\"auto-start-reverse\"><path d=\"M 0 0 L 10 5 L 0 10 z\"/></marker></defs></svg>\n";
-  html << "<header><h1>Daylight report: " << esc(summary.value("site", json::object()).value("name", std::string()))
-       << "</h1><p class=\"meta\">" << esc(project_name) << ", " << grids.size()
-       << " grid(s). Written by dayphoton " DAYPHOTON_VERSION " from the files in <code>" << esc(results_dir)
+  html << "<header><h1>Daylight report: " << esc(model.site_name) << "</h1><p class=\"meta\">" << esc(project_name)
+       << ", " << grids.size() << " grid(s). Written by dayphoton " DAYPHOTON_VERSION " from the results model "
+       << "<code>results.json</code> in <code>" << esc(results_dir)
        << "</code>.</p><p id=\"report-check\" data-status=\"pending\">self-check pending (needs JavaScript)</p></header>\n";
   html << "<nav><h2>Contents</h2><ul><li><a href=\"#summary\">Project, weather, settings, run time</a></li>"
           "<li><a href=\"#overview\">Overview</a></li>";
@@ -1242,47 +989,54 @@ std::string report_html_of(const std::string& results_dir, const json& summary) 
 
 }  // namespace
 
+std::string report_html(const std::string& results_dir, const ResultsModel& model) {
+  return report_html_of(results_dir, model);
+}
+
+std::string report_html(const std::string& results_dir) {
+  return report_html_of(results_dir, study::read_results_model(results_dir));
+}
+
 std::string write_report(const std::string& results_dir, const std::string& output_path) {
+  return write_report(results_dir, study::read_results_model(results_dir), output_path);
+}
+
+std::string write_report(const std::string& results_dir, const ResultsModel& model, const std::string& output_path) {
   const std::string path = output_path.empty() ? join(results_dir, "report.html") : output_path;
-  write_file_atomically(path, report_html(results_dir));
+  write_file_atomically(path, report_html_of(results_dir, model));
   return path;
 }
 
 std::vector<std::string> write_images_and_report(const std::string& results_dir, const ViewOutputs& outputs) {
-  const std::string path = join(results_dir, "summary.json");
-  if (input_file_problem(path) == "not found") read_summary(results_dir);  // throws the located error
-  std::ifstream in = open_input_file(path, "run summary");  // a FIFO or a device is refused, not waited on
-  std::ostringstream text;
-  text << in.rdbuf();
-  return write_images_and_report(results_dir, outputs, text.str());
+  return write_images_and_report(results_dir, study::read_results_model(results_dir), outputs);
 }
 
-std::vector<std::string> write_images_and_report(const std::string& results_dir, const ViewOutputs& outputs,
-                                                 const std::string& summary_json) {
+std::vector<std::string> write_images_and_report(const std::string& results_dir, const ResultsModel& model,
+                                                 const ViewOutputs& outputs) {
   std::vector<std::string> written;
-  const json summary = parse_summary(results_dir, summary_json);
   if (outputs.images) {
-    auto grid_images = [&](const std::string& variant, const json& g) {
-      const std::vector<std::string> w = write_grid_images(grid_folder(results_dir, variant, g));
-      written.insert(written.end(), w.begin(), w.end());
-    };
-    for (const json& g : summary.value("grids", json::array())) grid_images("", g);
-    for (const json& v : summary.value("variants", json::array()))
-      for (const json& g : v.value("grids", json::array())) grid_images(v.value("name", std::string()), g);
-    for (const json& g : operated_grids(summary)) {
-      const std::vector<std::string> w = write_grid_images(grid_folder_in(results_dir, join(results_dir, "operated"), g));
-      written.insert(written.end(), w.begin(), w.end());
-    }
-    const std::vector<std::string> w =
-        write_sky_images(results_dir, outputs.sky_hour, summary.dump(), join(results_dir, "summary.json"));
+    for (const study::CaseResult& c : model.cases)
+      for (const GridResult& g : c.grids) {
+        const std::vector<std::string> w = write_grid_images(results_dir, g);
+        written.insert(written.end(), w.begin(), w.end());
+      }
+    const std::vector<std::string> w = write_sky_images(results_dir, model, outputs.sky_hour);
     written.insert(written.end(), w.begin(), w.end());
   }
   if (outputs.report) {
     const std::string path = join(results_dir, "report.html");
-    write_file_atomically(path, report_html_of(results_dir, summary));
+    write_file_atomically(path, report_html_of(results_dir, model));
     written.push_back(path);
   }
   return written;
 }
 
-}  // namespace dayphoton::study
+std::vector<std::string> write_views(const std::string& results_dir, const ResultsModel& model, bool images,
+                                     bool report) {
+  ViewOutputs outputs;
+  outputs.images = images;
+  outputs.report = report;
+  return write_images_and_report(results_dir, model, outputs);
+}
+
+}  // namespace dayphoton::report

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace dayphoton::study {
+namespace dayphoton::report {
 
 struct ColourScale {
   double min = 0, max = 1;
@@ -42,4 +42,4 @@ ColourScale daylight_factor_scale();
 ColourScale percent_scale(const std::string& quantity);
 ColourScale illuminance_scale();
 
-}  // namespace dayphoton::study
+}  // namespace dayphoton::report

@@ -1,11 +1,11 @@
 // Colour scales of the report and images; see colour_scale.h.
-#include "dayphoton/study/colour_scale.h"
+#include "dayphoton/report/colour_scale.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-namespace dayphoton::study {
+namespace dayphoton::report {
 
 namespace {
 
@@ -86,4 +86,4 @@ ColourScale daylight_factor_scale() { return {0, 10, false, "daylight factor", "
 ColourScale percent_scale(const std::string& quantity) { return {0, 100, false, quantity, "%"}; }
 ColourScale illuminance_scale() { return {10, 10000, true, "illuminance", "lx"}; }
 
-}  // namespace dayphoton::study
+}  // namespace dayphoton::report

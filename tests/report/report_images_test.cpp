@@ -1,8 +1,9 @@
-// Result images (study/result_images.h, image_files.h, colour_scale.h): the grid EXR files
-// read back with OpenEXR's own reader equal the CSV tables value for value (issue 7
-// acceptance), lattices of real and rotated grids, the sky fisheye's geometry, PNGs decoded by
-// libpng, the tone mapper, the colour scales and the M/D/H parser.
-#include "dayphoton/study/result_images.h"
+// Result images (report/result_images.h, study/image_files.h, colour_scale.h): the grid EXR
+// files, made from the results model, read back with OpenEXR's own reader equal the CSV tables
+// value for value (issue 7 acceptance), lattices of real and rotated grids (study/
+// sensor_lattice.h, found by the run), the sky fisheye's geometry, PNGs decoded by libpng, the
+// tone mapper, the colour scales and the M/D/H parser.
+#include "dayphoton/report/result_images.h"
 
 #include <gtest/gtest.h>
 
@@ -27,9 +28,13 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/result_tables.h"
+#include "dayphoton/study/results_model_builder.h"
+#include "dayphoton/study/sensor_lattice.h"
+#include "dayphoton/study/tone_map.h"
 
 using namespace dayphoton;
 using namespace dayphoton::study;
+using namespace dayphoton::report;
 namespace fs = std::filesystem;
 
 namespace {
@@ -72,9 +77,24 @@ Vec3 v3(const Imf::Header& h, const char* name) {
   return {v.x, v.y, v.z};
 }
 
+/// The model of a grid in <results>/<name> with the daylight factor and the per-sensor annual
+/// metrics, made by the run's builder (results_model_builder.h).
+GridResult grid_model(const std::string& name, const std::vector<SensorPoint>& sensors) {
+  SensorGrid grid;
+  grid.name = name;
+  grid.points = sensors;
+  GridResult g = results_grid(grid, name, CaseResult{}, 0, 0);
+  add_daylight_factor(g, GridStatistics{}, DaylightFactorUncertainty{});
+  AnnualStudy study;
+  study.sensors.resize(sensors.size());
+  add_annual(g, study, AnnualStudySettings{}, AnnualOutputs{false, true});
+  return g;
+}
+
 /// A grid folder written with the study's own writers: sensors.csv, daylight_factor.csv and
 /// metrics.csv with distinct, irregular values per sensor.
 void write_grid_folder(const std::string& dir, const std::vector<SensorPoint>& sensors) {
+  fs::create_directories(dir);
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<double> df;
@@ -93,16 +113,15 @@ void write_grid_folder(const std::string& dir, const std::vector<SensorPoint>& s
 
 /// Every EXR written for the grid equals its CSV column at the sensor's pixel (positions from
 /// the header's lattice attributes), and has alpha 0 exactly where no sensor is.
-void expect_exr_equals_csv(const std::string& dir, std::size_t sensors, bool regular) {
-  const std::vector<GridQuantity> quantities = grid_quantities(dir);
-  ASSERT_EQ(quantities.size(), 5u);
-  for (const GridQuantity& q : quantities) {
+void expect_exr_equals_csv(const std::string& dir, const GridResult& grid, std::size_t sensors, bool regular) {
+  ASSERT_EQ(grid.quantities.size(), 5u);
+  for (const SensorQuantity& q : grid.quantities) {
     SCOPED_TRACE(q.stem);
-    const SensorTable table = read_sensor_table(dir + "/" + q.table);
+    const SensorTable table = read_sensor_table(dir + "/" + q.file);
     const Exr exr = read_with_openexr(dir + "/" + q.stem + ".exr");
     ASSERT_EQ(exr.header.typedAttribute<Imf::StringAttribute>("quantity").value(), q.quantity);
     ASSERT_EQ(exr.header.typedAttribute<Imf::StringAttribute>("unit").value(), q.unit);
-    ASSERT_EQ(exr.header.typedAttribute<Imf::StringAttribute>("dayphoton:source").value(), q.table + ":" + q.column);
+    ASSERT_EQ(exr.header.typedAttribute<Imf::StringAttribute>("dayphoton:source").value(), q.file + ":" + q.column);
     const std::vector<float>& y = exr.channels.at("Y");
     const std::vector<float>& a = exr.channels.at("A");
     std::vector<int> covered(y.size(), 0);
@@ -162,12 +181,13 @@ TEST(ResultImages, OfficeGridExrEqualsTheCsvTables) {
   const SceneDescription scene = project::build_scene_description(project);
   ASSERT_FALSE(scene.grids.empty());
   const std::vector<SensorPoint>& sensors = scene.grids[0].points;
-  const std::string dir = temp_dir("office") + "/workplane";
+  const std::string results = temp_dir("office"), dir = results + "/workplane";
   fs::create_directories(dir);
   write_grid_folder(dir, sensors);
-  const std::vector<std::string> written = write_grid_images(dir);
+  const GridResult grid = grid_model("workplane", sensors);
+  const std::vector<std::string> written = write_grid_images(results, grid);
   EXPECT_EQ(written.size(), 10u);  // 5 quantities x (EXR + PNG)
-  const SensorLattice lattice = sensor_lattice(read_sensors_csv(dir + "/sensors.csv"));
+  const SensorLattice& lattice = grid.lattice;
   ASSERT_TRUE(lattice.regular);
   EXPECT_EQ(lattice.columns, 11);
   EXPECT_EQ(lattice.rows, 15);
@@ -175,7 +195,7 @@ TEST(ResultImages, OfficeGridExrEqualsTheCsvTables) {
   // Columns run east, rows south: pixel (0, 0) is the north-west sensor.
   EXPECT_NEAR(lattice.column_step_m.x, 0.5, 1e-9);
   EXPECT_NEAR(lattice.row_step_m.y, -0.5, 1e-9);
-  expect_exr_equals_csv(dir, sensors.size(), true);
+  expect_exr_equals_csv(dir, grid, sensors.size(), true);
   // The PNG decodes to 32 px per sensor, opaque.
   std::ifstream in(dir + "/daylight_factor.png", std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -195,13 +215,14 @@ TEST(ResultImages, RotatedLShapedGridKeepsOnePixelPerSensorAndTransparentHoles) 
   for (int j = 0; j < 7; ++j)
     for (int i = 0; i < 9; ++i)
       if (!(i >= 6 && j >= 4)) sensors.push_back({Vec3{10, 20, 0.85} + u * i + v * j, {0, 0, 1}});
-  const std::string dir = temp_dir("rotated");
+  const std::string results = temp_dir("rotated"), dir = results + "/grid";
   write_grid_folder(dir, sensors);
-  write_grid_images(dir);
-  const SensorLattice lattice = sensor_lattice(read_sensors_csv(dir + "/sensors.csv"));
+  const GridResult grid = grid_model("grid", sensors);
+  write_grid_images(results, grid);
+  const SensorLattice& lattice = grid.lattice;
   ASSERT_TRUE(lattice.regular);
   EXPECT_EQ(lattice.columns * lattice.rows, 63);
-  expect_exr_equals_csv(dir, sensors.size(), true);
+  expect_exr_equals_csv(dir, grid, sensors.size(), true);
 }
 
 TEST(ResultImages, PointsOffALatticeGiveOneRowInSensorOrder) {
@@ -210,22 +231,25 @@ TEST(ResultImages, PointsOffALatticeGiveOneRowInSensorOrder) {
   sensors = {{{0, 0, 0.8}, {0, 0, 1}}, {{1, 0, 0.8}, {0, 0, 1}}, {{0, 1, 1.8}, {0, 0, 1}}};  // not on one plane
   EXPECT_FALSE(sensor_lattice(sensors).regular);
   sensors = {{{0, 0, 0.8}, {0, 0, 1}}, {{1, 0, 0.8}, {0, 0, 1}}, {{2.5, 0, 0.8}, {0, 0, 1}}, {{4, 3, 0.8}, {0, 0, 1}}};
-  const std::string dir = temp_dir("points");
+  const std::string results = temp_dir("points"), dir = results + "/grid";
   write_grid_folder(dir, sensors);
-  write_grid_images(dir);
+  const GridResult grid = grid_model("grid", sensors);
+  write_grid_images(results, grid);
   const Exr exr = read_with_openexr(dir + "/daylight_factor.exr");
   EXPECT_EQ(exr.width, 4);
   EXPECT_EQ(exr.height, 1);
   EXPECT_EQ(exr.header.typedAttribute<Imf::StringAttribute>("dayphoton:layout").value(), "sensor order");
-  expect_exr_equals_csv(dir, sensors.size(), false);
+  expect_exr_equals_csv(dir, grid, sensors.size(), false);
 }
 
 TEST(ResultImages, MalformedTablesAreLocatedErrors) {
-  const std::string dir = temp_dir("malformed");
-  write_grid_folder(dir, {{{0, 0, 0.8}, {0, 0, 1}}, {{1, 0, 0.8}, {0, 0, 1}}});
+  const std::string results = temp_dir("malformed"), dir = results + "/grid";
+  const std::vector<SensorPoint> sensors{{{0, 0, 0.8}, {0, 0, 1}}, {{1, 0, 0.8}, {0, 0, 1}}};
+  write_grid_folder(dir, sensors);
   std::ofstream(dir + "/daylight_factor.csv") << "index,x,y,z,df_percent\n0,0,0,0.8,1.5\n1,1,0,0.8,abc\n";
+  const GridResult grid = grid_model("grid", sensors);
   try {
-    write_grid_images(dir);
+    write_grid_images(results, grid);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("daylight_factor.csv:3:"), std::string::npos) << e.what();

@@ -1,0 +1,241 @@
+// The results model: what a run found, typed, written once by `dayphoton run` as results.json
+// in its output folder (docs/outputs.md, "results.json") and read back by the report
+// (report/) and anything else that presents a run. It is filled from the run's data in memory
+// (study/results_model_builder.h), never from the run's own CSV text, and it carries
+// everything a presentation needs that is not a per-sensor value: the project's name, per
+// case (base, variants, operated shading) and grid the sensors with their lattice, the plan
+// geometry, the metric settings and the summary values, and per quantity the file and column
+// that hold its per-sensor values (read with read_quantity_values, one typed reader).
+//
+// The file has a schema version (ResultsSchemaVersion); a reader refuses another version and
+// a results folder without results.json (a run of an older dayphoton) with a located error
+// telling to run again. Results are deterministic: results.json holds no times, no cache
+// history and no absolute output path, so a repeated run writes the same bytes.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/vec3.h"
+
+namespace dayphoton::study {
+
+/// Version of results.json's layout; raised when a field changes meaning or is removed.
+constexpr int ResultsSchemaVersion = 1;
+/// The file's name in the output folder.
+constexpr const char* ResultsFileName = "results.json";
+
+using Polygon3 = std::vector<Vec3>;
+
+/// How a grid's sensors face: up or down (horizontal plane), sideways (a wall), or otherwise.
+enum class GridOrientation { Horizontal, Vertical, Tilted };
+std::string orientation_name(GridOrientation o);
+
+/// Where each sensor sits on the grid's picture: a lattice (one cell per sensor; columns along
+/// the lattice axis closest to east, rows toward the south, or downward on a wall) or, when the
+/// sensors are not on one, one row in sensor order.
+struct SensorLattice {
+  bool regular = false;        ///< false: one row in sensor order
+  int columns = 0, rows = 0;
+  double spacing_m = 0;        ///< regular only
+  Vec3 origin_m;               ///< centre of cell (0, 0)
+  Vec3 column_step_m;          ///< world step per column
+  Vec3 row_step_m;             ///< world step per row
+  std::vector<int> column_of, row_of;  ///< per sensor
+
+  bool operator==(const SensorLattice& o) const;
+};
+
+/// How a quantity is coloured (the report's colour scales).
+enum class QuantityScale { DaylightFactor, Percent, Illuminance };
+
+/// One per-sensor quantity of a grid and where its values are: `column` of the per-sensor
+/// table `file` (relative to the grid's folder; CSV with index,x,y,z first).
+struct SensorQuantity {
+  std::string stem;      ///< image file name without extension, e.g. "daylight_factor", "da300"
+  std::string file;      ///< e.g. "daylight_factor.csv"
+  std::string column;    ///< e.g. "df_percent"
+  std::string kind;      ///< "daylight_factor", "da", "udi_achieved", "udi_autonomous", "mean_occupied_illuminance", "point_in_time"
+  std::string quantity;  ///< words, e.g. "daylight autonomy (300 lx)"
+  std::string unit;      ///< "%", "lx"
+  QuantityScale scale = QuantityScale::Percent;
+  std::string scale_label;  ///< the legend's name, e.g. "UDI achieved"
+
+  bool operator==(const SensorQuantity& o) const;
+};
+
+struct DaylightFactorSummary {
+  double mean_percent = 0, median_percent = 0, min_percent = 0, max_percent = 0;
+  double uniformity = 0;  ///< min / mean
+  std::vector<std::pair<double, double>> area_at_or_above_percent;  ///< (threshold %, area %)
+  /// Monte Carlo standard error of DF relative to DF, over the sensors with daylight.
+  double rms_relative_stderr_percent = 0, max_relative_stderr_percent = 0;
+  std::size_t sensors_with_daylight = 0;
+
+  /// What the accuracy target's rounds reached (docs/photon-tracing.md, "Accuracy target");
+  /// absent when the project gives photon counts instead.
+  struct AccuracyReached {
+    double target_percent = 0;   ///< relative standard error of DF asked for, %
+    double reached_percent = 0;  ///< its 95th percentile over the sensors after the last round, %
+    std::size_t rounds = 0;
+    std::uint64_t photons = 0;   ///< stored photons of all sky sources
+    std::string stop_reason;     ///< "target met", "photon budget", ...
+
+    bool operator==(const AccuracyReached& o) const;
+  };
+  std::optional<AccuracyReached> accuracy;
+
+  bool operator==(const DaylightFactorSummary& o) const;
+};
+
+/// The occupancy the metrics use (docs/metrics.md "Occupancy schedules").
+struct OccupancySummary {
+  std::string kind;           ///< "daily", "weekly", "hourly"
+  double start_h = 8, end_h = 18;  ///< daily only
+  std::string description;    ///< the plan's own words
+
+  bool operator==(const OccupancySummary& o) const;
+};
+
+struct En17037Level {
+  std::string level;  ///< "minimum", "medium", "high"
+  double target_lux = 0, minimum_target_lux = 0;
+  double target_area_percent = 0, minimum_target_area_percent = 0;
+  bool passes = false;
+
+  bool operator==(const En17037Level& o) const;
+};
+
+/// Grid means of the per-sensor annual metrics, with their settings.
+struct AnnualSummary {
+  std::size_t sensors = 0, time_steps = 0, occupied_hours = 0;
+  // Settings.
+  double da_threshold_lux = 300, udi_lower_lux = 100, udi_upper_original_lux = 2000, udi_upper_revised_lux = 3000;
+  double sda_time_fraction = 0.5, ase_threshold_lux = 1000, ase_hours = 250;
+  OccupancySummary occupancy;
+  // Grid means (percent of occupied hours unless lux).
+  double da_percent = 0, cda_percent = 0, da_max_percent = 0;
+  double udi_below_percent = 0, udi_achieved_percent = 0, udi_above_original_percent = 0;
+  double udi_supplementary_percent = 0, udi_autonomous_percent = 0, udi_above_revised_percent = 0;
+  double mean_occupied_lux = 0;
+  double sda_percent = 0;
+  std::size_t sda_sensors = 0;
+  std::optional<double> ase_percent;  ///< none: not computed (sun spread into patches)
+  // EN 17037 daylight provision; empty levels: not computed.
+  std::size_t en17037_daylight_hours = 0;
+  std::string en17037_daylight_hours_source;
+  std::vector<En17037Level> en17037;
+  std::string sky;  ///< where the sky matrix came from
+  /// Sensors whose DA verdict (DA >= sDA fraction) could flip within 2 standard errors.
+  std::optional<std::size_t> da_verdicts_within_2_sigma;
+
+  /// The highest EN 17037 level passed: "none", or "" when not computed.
+  std::string en17037_level() const;
+  bool operator==(const AnnualSummary& o) const;
+};
+
+/// Illuminance statistics of one point-in-time case on a grid.
+struct PointInTimeSummary {
+  std::string name, sky;
+  double mean_lux = 0, median_lux = 0, min_lux = 0, max_lux = 0, uniformity = 0;
+
+  bool operator==(const PointInTimeSummary& o) const;
+};
+
+struct GridResult {
+  std::string name;
+  std::string folder;  ///< relative to the output folder, '/'-separated
+  std::vector<Vec3> positions_m, normals;  ///< per sensor, world coordinates
+  GridOrientation orientation = GridOrientation::Horizontal;
+  bool plan = true;   ///< drawn as a plan (horizontal, or points); else an elevation in its plane
+  SensorLattice lattice;
+  Polygon3 outline;   ///< the room floor, polygon, wall or rectangle the grid covers (may be empty)
+  std::vector<int> openings_drawn;  ///< indices into the case's openings drawn on this grid's picture
+  std::size_t dropped_outside_rooms = 0, dropped_inside_solid = 0;
+  std::vector<SensorQuantity> quantities;   ///< in the report's order
+  std::optional<DaylightFactorSummary> daylight_factor;
+  std::optional<AnnualSummary> annual;
+  std::vector<PointInTimeSummary> points_in_time;
+  bool has_illuminance_table = false;  ///< illuminance.bin in the folder (steps x sensors, lux)
+
+  const SensorQuantity* find_quantity(const std::string& kind) const;
+  bool operator==(const GridResult& o) const;
+};
+
+/// One case: the project as written ("base"), a variant, or the operated-shading result.
+struct CaseResult {
+  std::string kind;   ///< "base", "variant", "operated"
+  std::string name;   ///< "" for the base; the variant's; "operated (open/shaded)"
+  std::string folder; ///< relative to the output folder ("" for the base)
+  std::vector<std::string> changes;  ///< a variant's changes, in words
+  std::vector<Polygon3> openings;    ///< ports (windows, skylights), world coordinates
+  std::vector<Polygon3> systems;     ///< outdoor daylight-system surfaces (shelves, louvres, ...)
+  std::vector<GridResult> grids;
+
+  bool operator==(const CaseResult& o) const;
+};
+
+/// A labelled setting of the run ("photons per bin" -> "20000"), in the run's order.
+struct Setting {
+  std::string name, value;
+  bool operator==(const Setting& o) const { return name == o.name && value == o.value; }
+};
+
+struct ResultsModel {
+  int schema_version = ResultsSchemaVersion;
+  std::string project_name;   ///< the project file's name without folder, e.g. "project.yaml"
+  std::string project_file;   ///< as given to the run (informational; never re-read)
+  std::string dayphoton_version, compiler;
+  std::string study;          ///< "annual" or "daylight_factor"
+  // Site and sun.
+  std::string site_name;
+  double latitude_deg = 0, longitude_deg = 0, time_zone_h = 0, elevation_m = 0;
+  bool sun_from_weather = false;
+  /// The site the sun was computed for (the project's or the weather header's); set for annual studies.
+  std::optional<std::array<double, 4>> sun_site;  ///< latitude, longitude, time zone h, elevation m
+  std::string sun_sentence;   ///< sun_site_sentence()
+  std::optional<double> station_distance_km;
+  std::optional<std::size_t> below_horizon_hours;
+  std::string below_horizon_their_sun;
+  std::string weather_file;   ///< "" for a daylight-factor study
+  // Simulation settings used by the sky images.
+  std::string basis = "tregenza";  ///< "tregenza" or "reinhart"
+  int reinhart_mf = 1;
+  double ground_reflectance = 0.2;
+  std::vector<Setting> settings;   ///< every simulation setting, labelled
+  std::vector<std::string> notes;
+  std::vector<CaseResult> cases;   ///< base first, then variants, then operated
+
+  bool operator==(const ResultsModel& o) const;
+};
+
+/// results.json's text (UTF-8 JSON, 2-space indent, keys as docs/outputs.md lists them).
+std::string results_json(const ResultsModel& model);
+
+/// Parse results.json's text; `path` names it in errors. InputError (located at the path,
+/// naming the key) for text that is not JSON, a missing or mistyped field, or another schema
+/// version.
+ResultsModel parse_results_json(const std::string& text, const std::string& path);
+
+/// Write <output_dir>/results.json atomically; returns its path.
+std::string write_results_model(const ResultsModel& model, const std::string& output_dir);
+
+/// Read <results_dir>/results.json. A folder without it (written by a dayphoton before
+/// results.json existed, or not a results folder) is an InputError telling to run again.
+ResultsModel read_results_model(const std::string& results_dir);
+
+/// The per-sensor values of `quantity` of `grid` (the model's one typed reader of value
+/// tables): column `quantity.column` of <results_dir>/<grid.folder>/<quantity.file>.
+/// InputError (located) for a missing or malformed table, a missing column, or a row count
+/// other than the grid's sensors.
+std::vector<double> read_quantity_values(const std::string& results_dir, const GridResult& grid,
+                                         const SensorQuantity& quantity);
+
+/// The folder of `grid` inside `results_dir`; InputError if the model's relative folder names
+/// lead outside it (an edited results.json must not make a reader write elsewhere).
+std::string grid_folder(const std::string& results_dir, const GridResult& grid);
+
+}  // namespace dayphoton::study

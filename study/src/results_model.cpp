@@ -1,0 +1,620 @@
+// results.json: writer and reader of the results model; see results_model.h and
+// docs/outputs.md ("results.json") for every field.
+#include "dayphoton/study/results_model.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "dayphoton/core/atomic_file.h"
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/input_file.h"
+#include "dayphoton/project/path_name.h"
+#include "dayphoton/study/result_tables.h"
+#include "json_text.h"
+
+namespace dayphoton::study {
+
+namespace {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+json vec(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+json polygon(const Polygon3& p) {
+  json a = json::array();
+  for (const Vec3& v : p) a.push_back(vec(v));
+  return a;
+}
+json polygons(const std::vector<Polygon3>& ps) {
+  json a = json::array();
+  for (const Polygon3& p : ps) a.push_back(polygon(p));
+  return a;
+}
+json optional_number(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+
+const char* scale_name(QuantityScale s) {
+  switch (s) {
+    case QuantityScale::DaylightFactor: return "daylight_factor";
+    case QuantityScale::Percent: return "percent";
+    case QuantityScale::Illuminance: return "illuminance";
+  }
+  return "percent";
+}
+
+json grid_json(const GridResult& g) {
+  json sensors = json::array();
+  for (std::size_t i = 0; i < g.positions_m.size(); ++i) {
+    json s = {{"position_m", vec(g.positions_m[i])}, {"normal", vec(g.normals[i])}};
+    if (i < g.lattice.column_of.size()) {
+      s["column"] = g.lattice.column_of[i];
+      s["row"] = g.lattice.row_of[i];
+    }
+    sensors.push_back(s);
+  }
+  json lattice = {{"regular", g.lattice.regular}, {"columns", g.lattice.columns}, {"rows", g.lattice.rows}};
+  if (g.lattice.regular) {
+    lattice["spacing_m"] = g.lattice.spacing_m;
+    lattice["origin_m"] = vec(g.lattice.origin_m);
+    lattice["column_step_m"] = vec(g.lattice.column_step_m);
+    lattice["row_step_m"] = vec(g.lattice.row_step_m);
+  }
+  json quantities = json::array();
+  for (const SensorQuantity& q : g.quantities)
+    quantities.push_back({{"stem", q.stem}, {"file", q.file}, {"column", q.column}, {"kind", q.kind},
+                          {"quantity", q.quantity}, {"unit", q.unit}, {"scale", scale_name(q.scale)},
+                          {"scale_label", q.scale_label}});
+  json j = {{"name", g.name},
+            {"folder", g.folder},
+            {"orientation", orientation_name(g.orientation)},
+            {"plan", g.plan},
+            {"lattice", lattice},
+            {"sensors", sensors},
+            {"outline", polygon(g.outline)},
+            {"openings_drawn", g.openings_drawn},
+            {"dropped_sensors", {{"outside_rooms", g.dropped_outside_rooms}, {"inside_solid", g.dropped_inside_solid}}},
+            {"quantities", quantities},
+            {"illuminance_table", g.has_illuminance_table},
+            {"daylight_factor", nullptr},
+            {"annual", nullptr}};
+  if (const auto& d = g.daylight_factor) {
+    json areas = json::array();
+    for (const auto& [t, a] : d->area_at_or_above_percent) areas.push_back({{"threshold_percent", t}, {"area_percent", a}});
+    j["daylight_factor"] = {{"mean_percent", d->mean_percent},
+                            {"median_percent", d->median_percent},
+                            {"min_percent", d->min_percent},
+                            {"max_percent", d->max_percent},
+                            {"uniformity", d->uniformity},
+                            {"area_at_or_above", areas},
+                            {"rms_relative_stderr_percent", d->rms_relative_stderr_percent},
+                            {"max_relative_stderr_percent", d->max_relative_stderr_percent},
+                            {"sensors_with_daylight", d->sensors_with_daylight},
+                            {"accuracy", nullptr}};
+    if (const auto& acc = d->accuracy)
+      j["daylight_factor"]["accuracy"] = {{"target_percent", acc->target_percent},
+                                          {"reached_percent", acc->reached_percent},
+                                          {"rounds", acc->rounds},
+                                          {"photons", acc->photons},
+                                          {"stop_reason", acc->stop_reason}};
+  }
+  if (const auto& a = g.annual) {
+    json levels = json::array();
+    for (const En17037Level& l : a->en17037)
+      levels.push_back({{"level", l.level}, {"target_lux", l.target_lux}, {"minimum_target_lux", l.minimum_target_lux},
+                        {"target_area_percent", l.target_area_percent},
+                        {"minimum_target_area_percent", l.minimum_target_area_percent}, {"passes", l.passes}});
+    j["annual"] = {
+        {"sensors", a->sensors},
+        {"time_steps", a->time_steps},
+        {"occupied_hours", a->occupied_hours},
+        {"settings",
+         {{"da_threshold_lux", a->da_threshold_lux},
+          {"udi_lower_lux", a->udi_lower_lux},
+          {"udi_upper_original_lux", a->udi_upper_original_lux},
+          {"udi_upper_revised_lux", a->udi_upper_revised_lux},
+          {"sda_time_fraction", a->sda_time_fraction},
+          {"ase_threshold_lux", a->ase_threshold_lux},
+          {"ase_hours", a->ase_hours}}},
+        {"occupancy",
+         {{"kind", a->occupancy.kind}, {"start_h", a->occupancy.start_h}, {"end_h", a->occupancy.end_h},
+          {"description", a->occupancy.description}}},
+        {"mean",
+         {{"da_percent", a->da_percent},
+          {"cda_percent", a->cda_percent},
+          {"da_max_percent", a->da_max_percent},
+          {"udi_below_percent", a->udi_below_percent},
+          {"udi_achieved_percent", a->udi_achieved_percent},
+          {"udi_above_original_percent", a->udi_above_original_percent},
+          {"udi_supplementary_percent", a->udi_supplementary_percent},
+          {"udi_autonomous_percent", a->udi_autonomous_percent},
+          {"udi_above_revised_percent", a->udi_above_revised_percent},
+          {"mean_occupied_lux", a->mean_occupied_lux}}},
+        {"sda_percent", a->sda_percent},
+        {"sda_sensors", a->sda_sensors},
+        {"ase_percent", optional_number(a->ase_percent)},
+        {"en17037",
+         {{"daylight_hours", a->en17037_daylight_hours},
+          {"daylight_hours_source", a->en17037_daylight_hours_source},
+          {"levels", levels}}},
+        {"sky", a->sky},
+        {"da_verdicts_within_2_sigma",
+         a->da_verdicts_within_2_sigma ? json(*a->da_verdicts_within_2_sigma) : json(nullptr)}};
+  }
+  json points = json::array();
+  for (const PointInTimeSummary& p : g.points_in_time)
+    points.push_back({{"name", p.name}, {"sky", p.sky}, {"mean_lux", p.mean_lux}, {"median_lux", p.median_lux},
+                      {"min_lux", p.min_lux}, {"max_lux", p.max_lux}, {"uniformity", p.uniformity}});
+  j["points_in_time"] = points;
+  return j;
+}
+
+// ---- reading: every field required and typed, errors name the key -----------------------
+
+struct Reader {
+  std::string path;
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw InputError(SourceLocation{path, 0, 0}, "results.json: '" + key + "' " + what);
+  }
+  const json& at(const json& j, const std::string& parent, const char* key) const {
+    if (!j.is_object()) fail(parent, "is not an object");
+    auto it = j.find(key);
+    if (it == j.end()) fail(parent.empty() ? key : parent + "." + key, "is missing");
+    return *it;
+  }
+  std::string name(const std::string& parent, const char* key) const { return parent.empty() ? key : parent + "." + key; }
+  double number(const json& j, const std::string& parent, const char* key) const {
+    const json& v = at(j, parent, key);
+    if (!v.is_number()) fail(name(parent, key), "is not a number");
+    return v.get<double>();
+  }
+  std::optional<double> optional_number(const json& j, const std::string& parent, const char* key) const {
+    const json& v = at(j, parent, key);
+    if (v.is_null()) return std::nullopt;
+    if (!v.is_number()) fail(name(parent, key), "is not a number or null");
+    return v.get<double>();
+  }
+  std::size_t count(const json& j, const std::string& parent, const char* key) const {
+    const json& v = at(j, parent, key);
+    if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<long long>() >= 0))
+      fail(name(parent, key), "is not a count");
+    return v.get<std::size_t>();
+  }
+  int integer(const json& j, const std::string& parent, const char* key) const {
+    const json& v = at(j, parent, key);
+    if (!v.is_number_integer()) fail(name(parent, key), "is not an integer");
+    return v.get<int>();
+  }
+  bool boolean(const json& j, const std::string& parent, const char* key) const {
+    const json& v = at(j, parent, key);
+    if (!v.is_boolean()) fail(name(parent, key), "is not true or false");
+    return v.get<bool>();
+  }
+  std::string text(const json& j, const std::string& parent, const char* key) const {
+    const json& v = at(j, parent, key);
+    if (!v.is_string()) fail(name(parent, key), "is not a string");
+    return v.get<std::string>();
+  }
+  const json& array(const json& j, const std::string& parent, const char* key) const {
+    const json& v = at(j, parent, key);
+    if (!v.is_array()) fail(name(parent, key), "is not an array");
+    return v;
+  }
+  Vec3 vector(const json& v, const std::string& key) const {
+    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number())
+      fail(key, "is not a vector [x, y, z]");
+    return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+  }
+  Polygon3 polygon(const json& v, const std::string& key) const {
+    if (!v.is_array()) fail(key, "is not a list of points");
+    Polygon3 p;
+    for (const json& e : v) p.push_back(vector(e, key));
+    return p;
+  }
+  std::vector<Polygon3> polygons(const json& v, const std::string& key) const {
+    if (!v.is_array()) fail(key, "is not a list of polygons");
+    std::vector<Polygon3> ps;
+    for (const json& e : v) ps.push_back(polygon(e, key));
+    return ps;
+  }
+  std::vector<std::string> texts(const json& j, const std::string& parent, const char* key) const {
+    std::vector<std::string> out;
+    for (const json& e : array(j, parent, key)) {
+      if (!e.is_string()) fail(name(parent, key), "holds a value that is not a string");
+      out.push_back(e.get<std::string>());
+    }
+    return out;
+  }
+
+  GridResult grid(const json& j, const std::string& where) const {
+    GridResult g;
+    g.name = text(j, where, "name");
+    const std::string at_grid = where + "[" + g.name + "]";
+    g.folder = text(j, at_grid, "folder");
+    const std::string o = text(j, at_grid, "orientation");
+    if (o == "horizontal") g.orientation = GridOrientation::Horizontal;
+    else if (o == "vertical") g.orientation = GridOrientation::Vertical;
+    else if (o == "tilted") g.orientation = GridOrientation::Tilted;
+    else fail(at_grid + ".orientation", "is not horizontal, vertical or tilted");
+    g.plan = boolean(j, at_grid, "plan");
+    const std::string lk = at_grid + ".lattice";
+    const json& l = at(j, at_grid, "lattice");
+    g.lattice.regular = boolean(l, lk, "regular");
+    g.lattice.columns = integer(l, lk, "columns");
+    g.lattice.rows = integer(l, lk, "rows");
+    if (g.lattice.regular) {
+      g.lattice.spacing_m = number(l, lk, "spacing_m");
+      g.lattice.origin_m = vector(at(l, lk, "origin_m"), lk + ".origin_m");
+      g.lattice.column_step_m = vector(at(l, lk, "column_step_m"), lk + ".column_step_m");
+      g.lattice.row_step_m = vector(at(l, lk, "row_step_m"), lk + ".row_step_m");
+    }
+    const std::string sk = at_grid + ".sensors";
+    for (const json& s : array(j, at_grid, "sensors")) {
+      g.positions_m.push_back(vector(at(s, sk, "position_m"), sk + ".position_m"));
+      g.normals.push_back(vector(at(s, sk, "normal"), sk + ".normal"));
+      const int c = integer(s, sk, "column"), r = integer(s, sk, "row");
+      if (c < 0 || r < 0 || c >= g.lattice.columns || r >= g.lattice.rows) fail(sk, "has a cell outside the lattice");
+      g.lattice.column_of.push_back(c);
+      g.lattice.row_of.push_back(r);
+    }
+    g.outline = polygon(at(j, at_grid, "outline"), at_grid + ".outline");
+    for (const json& e : array(j, at_grid, "openings_drawn")) {
+      if (!e.is_number_integer() || e.get<int>() < 0) fail(at_grid + ".openings_drawn", "holds a value that is not an index");
+      g.openings_drawn.push_back(e.get<int>());
+    }
+    const json& dropped = at(j, at_grid, "dropped_sensors");
+    g.dropped_outside_rooms = count(dropped, at_grid + ".dropped_sensors", "outside_rooms");
+    g.dropped_inside_solid = count(dropped, at_grid + ".dropped_sensors", "inside_solid");
+    const std::string qk = at_grid + ".quantities";
+    for (const json& q : array(j, at_grid, "quantities")) {
+      SensorQuantity s;
+      s.stem = text(q, qk, "stem");
+      s.file = text(q, qk, "file");
+      s.column = text(q, qk, "column");
+      s.kind = text(q, qk, "kind");
+      s.quantity = text(q, qk, "quantity");
+      s.unit = text(q, qk, "unit");
+      const std::string scale = text(q, qk, "scale");
+      if (scale == "daylight_factor") s.scale = QuantityScale::DaylightFactor;
+      else if (scale == "percent") s.scale = QuantityScale::Percent;
+      else if (scale == "illuminance") s.scale = QuantityScale::Illuminance;
+      else fail(qk + ".scale", "is not daylight_factor, percent or illuminance");
+      s.scale_label = text(q, qk, "scale_label");
+      // Names that become file names must stay inside the grid's folder.
+      for (const std::string* n : {&s.stem, &s.file})
+        if (!project::path_name_problem(*n).empty()) fail(qk, "names '" + project::printable_name(*n) + "', not a plain file name");
+      g.quantities.push_back(s);
+    }
+    g.has_illuminance_table = boolean(j, at_grid, "illuminance_table");
+    const json& df = at(j, at_grid, "daylight_factor");
+    if (!df.is_null()) {
+      const std::string dk = at_grid + ".daylight_factor";
+      DaylightFactorSummary d;
+      d.mean_percent = number(df, dk, "mean_percent");
+      d.median_percent = number(df, dk, "median_percent");
+      d.min_percent = number(df, dk, "min_percent");
+      d.max_percent = number(df, dk, "max_percent");
+      d.uniformity = number(df, dk, "uniformity");
+      for (const json& a : array(df, dk, "area_at_or_above"))
+        d.area_at_or_above_percent.emplace_back(number(a, dk + ".area_at_or_above", "threshold_percent"),
+                                                number(a, dk + ".area_at_or_above", "area_percent"));
+      d.rms_relative_stderr_percent = number(df, dk, "rms_relative_stderr_percent");
+      d.max_relative_stderr_percent = number(df, dk, "max_relative_stderr_percent");
+      d.sensors_with_daylight = count(df, dk, "sensors_with_daylight");
+      const json& acc = at(df, dk, "accuracy");
+      if (!acc.is_null()) {
+        const std::string ck = dk + ".accuracy";
+        DaylightFactorSummary::AccuracyReached r;
+        r.target_percent = number(acc, ck, "target_percent");
+        r.reached_percent = number(acc, ck, "reached_percent");
+        r.rounds = count(acc, ck, "rounds");
+        r.photons = count(acc, ck, "photons");
+        r.stop_reason = text(acc, ck, "stop_reason");
+        d.accuracy = r;
+      }
+      g.daylight_factor = d;
+    }
+    const json& an = at(j, at_grid, "annual");
+    if (!an.is_null()) {
+      const std::string ak = at_grid + ".annual";
+      AnnualSummary a;
+      a.sensors = count(an, ak, "sensors");
+      a.time_steps = count(an, ak, "time_steps");
+      a.occupied_hours = count(an, ak, "occupied_hours");
+      const json& st = at(an, ak, "settings");
+      const std::string stk = ak + ".settings";
+      a.da_threshold_lux = number(st, stk, "da_threshold_lux");
+      a.udi_lower_lux = number(st, stk, "udi_lower_lux");
+      a.udi_upper_original_lux = number(st, stk, "udi_upper_original_lux");
+      a.udi_upper_revised_lux = number(st, stk, "udi_upper_revised_lux");
+      a.sda_time_fraction = number(st, stk, "sda_time_fraction");
+      a.ase_threshold_lux = number(st, stk, "ase_threshold_lux");
+      a.ase_hours = number(st, stk, "ase_hours");
+      const json& oc = at(an, ak, "occupancy");
+      a.occupancy.kind = text(oc, ak + ".occupancy", "kind");
+      a.occupancy.start_h = number(oc, ak + ".occupancy", "start_h");
+      a.occupancy.end_h = number(oc, ak + ".occupancy", "end_h");
+      a.occupancy.description = text(oc, ak + ".occupancy", "description");
+      const json& m = at(an, ak, "mean");
+      const std::string mk = ak + ".mean";
+      a.da_percent = number(m, mk, "da_percent");
+      a.cda_percent = number(m, mk, "cda_percent");
+      a.da_max_percent = number(m, mk, "da_max_percent");
+      a.udi_below_percent = number(m, mk, "udi_below_percent");
+      a.udi_achieved_percent = number(m, mk, "udi_achieved_percent");
+      a.udi_above_original_percent = number(m, mk, "udi_above_original_percent");
+      a.udi_supplementary_percent = number(m, mk, "udi_supplementary_percent");
+      a.udi_autonomous_percent = number(m, mk, "udi_autonomous_percent");
+      a.udi_above_revised_percent = number(m, mk, "udi_above_revised_percent");
+      a.mean_occupied_lux = number(m, mk, "mean_occupied_lux");
+      a.sda_percent = number(an, ak, "sda_percent");
+      a.sda_sensors = count(an, ak, "sda_sensors");
+      a.ase_percent = optional_number(an, ak, "ase_percent");
+      const json& en = at(an, ak, "en17037");
+      const std::string ek = ak + ".en17037";
+      a.en17037_daylight_hours = count(en, ek, "daylight_hours");
+      a.en17037_daylight_hours_source = text(en, ek, "daylight_hours_source");
+      for (const json& lv : array(en, ek, "levels")) {
+        const std::string lk2 = ek + ".levels";
+        a.en17037.push_back({text(lv, lk2, "level"), number(lv, lk2, "target_lux"), number(lv, lk2, "minimum_target_lux"),
+                             number(lv, lk2, "target_area_percent"), number(lv, lk2, "minimum_target_area_percent"),
+                             boolean(lv, lk2, "passes")});
+      }
+      a.sky = text(an, ak, "sky");
+      if (const auto v = optional_number(an, ak, "da_verdicts_within_2_sigma"))
+        a.da_verdicts_within_2_sigma = static_cast<std::size_t>(*v);
+      g.annual = a;
+    }
+    for (const json& p : array(j, at_grid, "points_in_time")) {
+      const std::string pk = at_grid + ".points_in_time";
+      g.points_in_time.push_back({text(p, pk, "name"), text(p, pk, "sky"), number(p, pk, "mean_lux"),
+                                  number(p, pk, "median_lux"), number(p, pk, "min_lux"), number(p, pk, "max_lux"),
+                                  number(p, pk, "uniformity")});
+    }
+    return g;
+  }
+};
+
+}  // namespace
+
+std::string orientation_name(GridOrientation o) {
+  switch (o) {
+    case GridOrientation::Horizontal: return "horizontal";
+    case GridOrientation::Vertical: return "vertical";
+    case GridOrientation::Tilted: return "tilted";
+  }
+  return "tilted";
+}
+
+bool SensorLattice::operator==(const SensorLattice& o) const {
+  return regular == o.regular && columns == o.columns && rows == o.rows && spacing_m == o.spacing_m &&
+         origin_m == o.origin_m && column_step_m == o.column_step_m && row_step_m == o.row_step_m &&
+         column_of == o.column_of && row_of == o.row_of;
+}
+bool SensorQuantity::operator==(const SensorQuantity& o) const {
+  return stem == o.stem && file == o.file && column == o.column && kind == o.kind && quantity == o.quantity &&
+         unit == o.unit && scale == o.scale && scale_label == o.scale_label;
+}
+bool DaylightFactorSummary::operator==(const DaylightFactorSummary& o) const {
+  return mean_percent == o.mean_percent && median_percent == o.median_percent && min_percent == o.min_percent &&
+         max_percent == o.max_percent && uniformity == o.uniformity &&
+         area_at_or_above_percent == o.area_at_or_above_percent &&
+         rms_relative_stderr_percent == o.rms_relative_stderr_percent &&
+         max_relative_stderr_percent == o.max_relative_stderr_percent && sensors_with_daylight == o.sensors_with_daylight &&
+         accuracy == o.accuracy;
+}
+bool DaylightFactorSummary::AccuracyReached::operator==(const AccuracyReached& o) const {
+  return target_percent == o.target_percent && reached_percent == o.reached_percent && rounds == o.rounds &&
+         photons == o.photons && stop_reason == o.stop_reason;
+}
+bool OccupancySummary::operator==(const OccupancySummary& o) const {
+  return kind == o.kind && start_h == o.start_h && end_h == o.end_h && description == o.description;
+}
+bool En17037Level::operator==(const En17037Level& o) const {
+  return level == o.level && target_lux == o.target_lux && minimum_target_lux == o.minimum_target_lux &&
+         target_area_percent == o.target_area_percent && minimum_target_area_percent == o.minimum_target_area_percent &&
+         passes == o.passes;
+}
+bool AnnualSummary::operator==(const AnnualSummary& o) const {
+  return sensors == o.sensors && time_steps == o.time_steps && occupied_hours == o.occupied_hours &&
+         da_threshold_lux == o.da_threshold_lux && udi_lower_lux == o.udi_lower_lux &&
+         udi_upper_original_lux == o.udi_upper_original_lux && udi_upper_revised_lux == o.udi_upper_revised_lux &&
+         sda_time_fraction == o.sda_time_fraction && ase_threshold_lux == o.ase_threshold_lux &&
+         ase_hours == o.ase_hours && occupancy == o.occupancy && da_percent == o.da_percent &&
+         cda_percent == o.cda_percent && da_max_percent == o.da_max_percent &&
+         udi_below_percent == o.udi_below_percent && udi_achieved_percent == o.udi_achieved_percent &&
+         udi_above_original_percent == o.udi_above_original_percent &&
+         udi_supplementary_percent == o.udi_supplementary_percent &&
+         udi_autonomous_percent == o.udi_autonomous_percent && udi_above_revised_percent == o.udi_above_revised_percent &&
+         mean_occupied_lux == o.mean_occupied_lux && sda_percent == o.sda_percent && sda_sensors == o.sda_sensors &&
+         ase_percent == o.ase_percent && en17037_daylight_hours == o.en17037_daylight_hours &&
+         en17037_daylight_hours_source == o.en17037_daylight_hours_source && en17037 == o.en17037 && sky == o.sky &&
+         da_verdicts_within_2_sigma == o.da_verdicts_within_2_sigma;
+}
+std::string AnnualSummary::en17037_level() const {
+  if (en17037.empty()) return "";
+  std::string level = "none";
+  for (const En17037Level& l : en17037)
+    if (l.passes) level = l.level;
+  return level;
+}
+bool PointInTimeSummary::operator==(const PointInTimeSummary& o) const {
+  return name == o.name && sky == o.sky && mean_lux == o.mean_lux && median_lux == o.median_lux &&
+         min_lux == o.min_lux && max_lux == o.max_lux && uniformity == o.uniformity;
+}
+const SensorQuantity* GridResult::find_quantity(const std::string& kind) const {
+  for (const SensorQuantity& q : quantities)
+    if (q.kind == kind) return &q;
+  return nullptr;
+}
+bool GridResult::operator==(const GridResult& o) const {
+  return name == o.name && folder == o.folder && positions_m == o.positions_m && normals == o.normals &&
+         orientation == o.orientation && plan == o.plan && lattice == o.lattice && outline == o.outline &&
+         openings_drawn == o.openings_drawn && dropped_outside_rooms == o.dropped_outside_rooms &&
+         dropped_inside_solid == o.dropped_inside_solid && quantities == o.quantities &&
+         daylight_factor == o.daylight_factor && annual == o.annual && points_in_time == o.points_in_time &&
+         has_illuminance_table == o.has_illuminance_table;
+}
+bool CaseResult::operator==(const CaseResult& o) const {
+  return kind == o.kind && name == o.name && folder == o.folder && changes == o.changes && openings == o.openings &&
+         systems == o.systems && grids == o.grids;
+}
+bool ResultsModel::operator==(const ResultsModel& o) const {
+  return schema_version == o.schema_version && project_name == o.project_name && project_file == o.project_file &&
+         dayphoton_version == o.dayphoton_version && compiler == o.compiler && study == o.study &&
+         site_name == o.site_name && latitude_deg == o.latitude_deg && longitude_deg == o.longitude_deg &&
+         time_zone_h == o.time_zone_h && elevation_m == o.elevation_m && sun_from_weather == o.sun_from_weather &&
+         sun_site == o.sun_site && sun_sentence == o.sun_sentence && station_distance_km == o.station_distance_km &&
+         below_horizon_hours == o.below_horizon_hours && below_horizon_their_sun == o.below_horizon_their_sun &&
+         weather_file == o.weather_file && basis == o.basis && reinhart_mf == o.reinhart_mf &&
+         ground_reflectance == o.ground_reflectance && settings == o.settings && notes == o.notes && cases == o.cases;
+}
+
+std::string results_json(const ResultsModel& m) {
+  json settings = json::array();
+  for (const Setting& s : m.settings) settings.push_back({{"name", s.name}, {"value", s.value}});
+  json cases = json::array();
+  for (const CaseResult& c : m.cases) {
+    json grids = json::array();
+    for (const GridResult& g : c.grids) grids.push_back(grid_json(g));
+    cases.push_back({{"kind", c.kind}, {"name", c.name}, {"folder", c.folder}, {"changes", c.changes},
+                     {"openings", polygons(c.openings)}, {"systems", polygons(c.systems)}, {"grids", grids}});
+  }
+  json site = {{"name", m.site_name}, {"latitude_deg", m.latitude_deg}, {"longitude_deg", m.longitude_deg},
+               {"time_zone_h", m.time_zone_h}, {"elevation_m", m.elevation_m}, {"sun_from_weather", m.sun_from_weather},
+               {"sun_site", nullptr}, {"sun_sentence", m.sun_sentence},
+               {"station_distance_km", optional_number(m.station_distance_km)},
+               {"below_horizon_hours", m.below_horizon_hours ? json(*m.below_horizon_hours) : json(nullptr)},
+               {"below_horizon_their_sun", m.below_horizon_their_sun}};
+  if (m.sun_site)
+    site["sun_site"] = {{"latitude_deg", (*m.sun_site)[0]}, {"longitude_deg", (*m.sun_site)[1]},
+                        {"time_zone_h", (*m.sun_site)[2]}, {"elevation_m", (*m.sun_site)[3]}};
+  const json j = {{"schema_version", m.schema_version},
+                  {"project", {{"name", m.project_name}, {"file", m.project_file}}},
+                  {"versions", {{"dayphoton", m.dayphoton_version}, {"compiler", m.compiler}}},
+                  {"study", m.study},
+                  {"site", site},
+                  {"weather_file", m.weather_file},
+                  {"sky", {{"basis", m.basis}, {"reinhart_mf", m.reinhart_mf}, {"ground_reflectance", m.ground_reflectance}}},
+                  {"settings", settings},
+                  {"notes", m.notes},
+                  {"cases", cases}};
+  return json_text(j) + "\n";
+}
+
+ResultsModel parse_results_json(const std::string& text, const std::string& path) {
+  const Reader r{path};
+  const json j = json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) throw InputError(SourceLocation{path, 0, 0}, "results.json is not a JSON object");
+  ResultsModel m;
+  m.schema_version = r.integer(j, "", "schema_version");
+  if (m.schema_version != ResultsSchemaVersion)
+    throw InputError(SourceLocation{path, 0, 0},
+                     "results.json has schema version " + std::to_string(m.schema_version) + ", this dayphoton reads " +
+                         std::to_string(ResultsSchemaVersion) + ": run the study again with this dayphoton");
+  const json& project = r.at(j, "", "project");
+  m.project_name = r.text(project, "project", "name");
+  m.project_file = r.text(project, "project", "file");
+  const json& versions = r.at(j, "", "versions");
+  m.dayphoton_version = r.text(versions, "versions", "dayphoton");
+  m.compiler = r.text(versions, "versions", "compiler");
+  m.study = r.text(j, "", "study");
+  const json& site = r.at(j, "", "site");
+  m.site_name = r.text(site, "site", "name");
+  m.latitude_deg = r.number(site, "site", "latitude_deg");
+  m.longitude_deg = r.number(site, "site", "longitude_deg");
+  m.time_zone_h = r.number(site, "site", "time_zone_h");
+  m.elevation_m = r.number(site, "site", "elevation_m");
+  m.sun_from_weather = r.boolean(site, "site", "sun_from_weather");
+  const json& sun = r.at(site, "site", "sun_site");
+  if (!sun.is_null())
+    m.sun_site = std::array<double, 4>{r.number(sun, "site.sun_site", "latitude_deg"),
+                                       r.number(sun, "site.sun_site", "longitude_deg"),
+                                       r.number(sun, "site.sun_site", "time_zone_h"),
+                                       r.number(sun, "site.sun_site", "elevation_m")};
+  m.sun_sentence = r.text(site, "site", "sun_sentence");
+  m.station_distance_km = r.optional_number(site, "site", "station_distance_km");
+  if (const auto h = r.optional_number(site, "site", "below_horizon_hours")) m.below_horizon_hours = static_cast<std::size_t>(*h);
+  m.below_horizon_their_sun = r.text(site, "site", "below_horizon_their_sun");
+  m.weather_file = r.text(j, "", "weather_file");
+  const json& sky = r.at(j, "", "sky");
+  m.basis = r.text(sky, "sky", "basis");
+  if (m.basis != "tregenza" && m.basis != "reinhart") r.fail("sky.basis", "is not tregenza or reinhart");
+  m.reinhart_mf = r.integer(sky, "sky", "reinhart_mf");
+  if (m.reinhart_mf < 1) r.fail("sky.reinhart_mf", "is not a positive integer");
+  m.ground_reflectance = r.number(sky, "sky", "ground_reflectance");
+  for (const json& s : r.array(j, "", "settings")) m.settings.push_back({r.text(s, "settings", "name"), r.text(s, "settings", "value")});
+  m.notes = r.texts(j, "", "notes");
+  for (const json& c : r.array(j, "", "cases")) {
+    CaseResult cr;
+    cr.kind = r.text(c, "cases", "kind");
+    if (cr.kind != "base" && cr.kind != "variant" && cr.kind != "operated") r.fail("cases.kind", "is not base, variant or operated");
+    cr.name = r.text(c, "cases", "name");
+    cr.folder = r.text(c, "cases", "folder");
+    cr.changes = r.texts(c, "cases", "changes");
+    cr.openings = r.polygons(r.at(c, "cases", "openings"), "cases.openings");
+    cr.systems = r.polygons(r.at(c, "cases", "systems"), "cases.systems");
+    for (const json& g : r.array(c, "cases", "grids")) {
+      cr.grids.push_back(r.grid(g, "cases[" + cr.name + "].grids"));
+      for (int k : cr.grids.back().openings_drawn)
+        if (static_cast<std::size_t>(k) >= cr.openings.size()) r.fail("cases.grids.openings_drawn", "names an opening that is not listed");
+    }
+    m.cases.push_back(std::move(cr));
+  }
+  return m;
+}
+
+std::string write_results_model(const ResultsModel& model, const std::string& output_dir) {
+  const std::string path = (fs::path(output_dir) / ResultsFileName).string();
+  write_file_atomically(path, results_json(model));
+  return path;
+}
+
+ResultsModel read_results_model(const std::string& results_dir) {
+  const std::string path = (fs::path(results_dir) / ResultsFileName).string();
+  if (input_file_problem(path) == "not found") {
+    const bool old_run = fs::exists(fs::path(results_dir) / "summary.json");
+    throw InputError(SourceLocation{path, 0, 0},
+                     old_run ? "this results folder has no results.json: it was written by an older dayphoton; run the "
+                               "study again (`dayphoton run PROJECT --output " + results_dir + "`) to report on it"
+                             : "cannot open the results model (is this a results folder of `dayphoton run`?)");
+  }
+  std::ifstream in = open_input_file(path, "results model");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_results_json(text.str(), path);
+}
+
+std::string grid_folder(const std::string& results_dir, const GridResult& grid) {
+  // Each '/'-separated part must be a portable folder name ("variants/<name>/<grid>").
+  std::string rest = grid.folder;
+  fs::path out(results_dir);
+  while (!rest.empty()) {
+    const std::size_t slash = rest.find('/');
+    const std::string part = rest.substr(0, slash);
+    const std::string problem = project::path_name_problem(part);
+    if (!problem.empty())
+      throw InputError(SourceLocation{(fs::path(results_dir) / ResultsFileName).string(), 0, 0},
+                       "results.json: grid folder '" + project::printable_name(grid.folder) +
+                           "' is not a path of portable folder names: " + problem);
+    out /= part;
+    rest = slash == std::string::npos ? std::string() : rest.substr(slash + 1);
+  }
+  return out.string();
+}
+
+std::vector<double> read_quantity_values(const std::string& results_dir, const GridResult& grid,
+                                         const SensorQuantity& quantity) {
+  const std::string path = (fs::path(grid_folder(results_dir, grid)) / quantity.file).string();
+  const SensorTable table = read_sensor_table(path);
+  if (table.column(quantity.column) < 0)
+    throw InputError(SourceLocation{path, 1, 0}, "no column '" + quantity.column + "' (results.json names it)");
+  if (table.rows.size() != grid.positions_m.size())
+    throw InputError(SourceLocation{path, 0, 0}, std::to_string(table.rows.size()) + " rows for the " +
+                                                     std::to_string(grid.positions_m.size()) + " sensors of results.json");
+  return table.values(quantity.column);
+}
+
+}  // namespace dayphoton::study

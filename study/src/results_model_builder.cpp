@@ -1,0 +1,267 @@
+// Filling the results model from the run's data in memory; see results_model_builder.h.
+#include "dayphoton/study/results_model_builder.h"
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/polygon.h"
+#include "dayphoton/study/result_files.h"
+#include "dayphoton/study/sensor_lattice.h"
+
+namespace dayphoton::study {
+
+namespace {
+
+/// A setting's value as the report shows it: text as is, booleans yes/no, numbers shortest.
+std::string setting_text(const nlohmann::json& v) {
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
+  if (v.is_number_integer() || v.is_number_unsigned()) return v.dump();
+  if (v.is_number()) return format_number(v.get<double>());
+  return v.dump();
+}
+
+GridOrientation orientation_of(const std::vector<SensorPoint>& points) {
+  bool up = true, side = true;
+  for (const SensorPoint& p : points) {
+    const double z = std::fabs(p.normal.z) / std::max(1e-300, length(p.normal));
+    up = up && z > 1 - 1e-6;
+    side = side && z < 1e-6;
+  }
+  return up ? GridOrientation::Horizontal : side ? GridOrientation::Vertical : GridOrientation::Tilted;
+}
+
+}  // namespace
+
+std::string relative_folder(const std::string& output_dir, const std::string& folder) {
+  const std::string r = std::filesystem::path(folder).lexically_normal().lexically_relative(
+                                                          std::filesystem::path(output_dir).lexically_normal())
+                            .generic_string();
+  return r == "." ? std::string() : r;
+}
+
+ResultsModel results_model_header(const project::Project& project, const std::string& version, const SunSite* sun_site,
+                                  const sky::BelowHorizonDirect* below, const nlohmann::json& simulation,
+                                  const std::vector<std::string>& notes) {
+  ResultsModel m;
+  m.project_file = project.path;
+  m.project_name = std::filesystem::path(project.path).filename().string();
+  m.dayphoton_version = version;
+  m.compiler = __VERSION__;
+  m.study = project::study_kind_name(project.study);
+  const project::Site& ps = project.site;
+  m.site_name = ps.name;
+  const sky::SolarSite solar =
+      sun_site ? sun_site->solar : sky::SolarSite{ps.latitude_deg, ps.longitude_deg, ps.time_zone_h, ps.elevation_m};
+  m.latitude_deg = solar.latitude_deg;
+  m.longitude_deg = solar.longitude_deg;
+  m.time_zone_h = solar.time_zone_h;
+  m.elevation_m = solar.elevation_m;
+  m.sun_from_weather = ps.from_weather;
+  if (sun_site) {
+    m.sun_site = std::array<double, 4>{solar.latitude_deg, solar.longitude_deg, solar.time_zone_h, solar.elevation_m};
+    m.sun_sentence = sun_site_sentence(*sun_site);
+    m.station_distance_km = sun_site->station_distance_km;
+  }
+  if (below) {
+    m.below_horizon_hours = below->records;
+    m.below_horizon_their_sun = project.simulation.sun == project::SunMode::Bins ? "left out"
+                                                                                : "spread into the nearest sky patches";
+  }
+  m.weather_file = project.study == project::StudyKind::Annual ? project.weather.path : std::string();
+  m.basis = project.simulation.basis == project::SkyBasis::Tregenza ? "tregenza" : "reinhart";
+  m.reinhart_mf = project.simulation.basis == project::SkyBasis::Tregenza ? 1 : project.simulation.reinhart_mf;
+  m.ground_reflectance = project.simulation.ground_reflectance;
+  for (auto it = simulation.begin(); it != simulation.end(); ++it) {
+    std::string name = it.key();
+    for (char& c : name)
+      if (c == '_') c = ' ';
+    m.settings.push_back({name, setting_text(*it)});
+  }
+  m.notes = notes;
+  return m;
+}
+
+CaseResult results_case(const std::string& kind, const std::string& name, const std::string& folder,
+                        const std::vector<std::string>& changes) {
+  CaseResult c;
+  c.kind = kind;
+  c.name = name;
+  c.folder = folder;
+  c.changes = changes;
+  return c;
+}
+
+void set_plan_geometry(CaseResult& c, const SceneDescription& scene) {
+  c.openings.clear();
+  c.systems.clear();
+  for (const Surface& s : scene.surfaces) {
+    // Port candidates of an imported scene (glazing under `ports: auto`) count as openings:
+    // which of them face outdoors is decided by the engine's ray scene.
+    if (s.port || s.port_if_outdoors) c.openings.push_back(s.vertices);
+    if (s.outdoor_scatterer) c.systems.push_back(s.vertices);
+  }
+}
+
+CaseResult operated_case(const CaseResult& base, const std::string& name, const std::string& folder) {
+  CaseResult c = base;
+  c.kind = "operated";
+  c.name = name;
+  c.folder = folder;
+  c.changes.clear();
+  for (GridResult& g : c.grids) {
+    g.quantities.clear();
+    g.daylight_factor.reset();
+    g.annual.reset();
+    g.points_in_time.clear();
+    g.has_illuminance_table = false;
+  }
+  return c;
+}
+
+void add_operated_grid(CaseResult& c, const std::string& grid, const std::string& folder, const AnnualStudy& study,
+                       const AnnualStudySettings& settings, const AnnualOutputs& which) {
+  for (GridResult& g : c.grids)
+    if (g.name == grid) {
+      g.folder = folder;
+      add_annual(g, study, settings, which);
+      return;
+    }
+  throw std::logic_error("operated grid '" + grid + "' is not a grid of the base case");
+}
+
+GridResult results_grid(const SensorGrid& grid, const std::string& folder, const CaseResult& c,
+                        std::size_t dropped_outside_rooms, std::size_t dropped_inside_solid) {
+  GridResult g;
+  g.name = grid.name;
+  g.folder = folder;
+  for (const SensorPoint& p : grid.points) {
+    g.positions_m.push_back(p.position);
+    g.normals.push_back(p.normal);
+  }
+  g.orientation = orientation_of(grid.points);
+  g.lattice = sensor_lattice(grid.points);
+  g.outline = grid.outline;
+  g.dropped_outside_rooms = dropped_outside_rooms;
+  g.dropped_inside_solid = dropped_inside_solid;
+  // A plan (a horizontal grid, or a point set without an outline) shows every opening; an
+  // elevation (a wall or rectangle grid) only those in its wall, since any other port would
+  // be projected onto it as if it were in that wall.
+  const Vec3 n = grid.plane_normal;
+  g.plan = grid.planar || grid.outline.size() < 3 || std::fabs(n.z) > 1 - 1e-9;
+  for (std::size_t k = 0; k < c.openings.size(); ++k) {
+    const Polygon3& w = c.openings[k];
+    bool drawn = g.plan;
+    if (!drawn && w.size() >= 3 && std::fabs(dot(polygon_normal(w), n)) >= 1 - 1e-6) {
+      drawn = true;
+      for (const Vec3& p : w) drawn = drawn && std::fabs(dot(p - grid.outline[0], n)) <= ElevationWindowDistance_m;
+    }
+    if (drawn) g.openings_drawn.push_back(static_cast<int>(k));
+  }
+  return g;
+}
+
+void add_daylight_factor(GridResult& grid, const GridStatistics& st, const DaylightFactorUncertainty& u) {
+  DaylightFactorSummary d;
+  d.mean_percent = st.mean;
+  d.median_percent = st.median;
+  d.min_percent = st.min;
+  d.max_percent = st.max;
+  d.uniformity = st.uniformity;
+  d.area_at_or_above_percent = st.area_at_or_above_percent;
+  d.rms_relative_stderr_percent = u.rms_relative_stderr_percent;
+  d.max_relative_stderr_percent = u.max_relative_stderr_percent;
+  d.sensors_with_daylight = u.sensors_with_light;
+  grid.daylight_factor = d;
+  grid.quantities.insert(grid.quantities.begin(),
+                         SensorQuantity{"daylight_factor", "daylight_factor.csv", "df_percent", "daylight_factor",
+                                        "daylight factor", "%", QuantityScale::DaylightFactor, "daylight factor"});
+}
+
+void add_annual(GridResult& grid, const AnnualStudy& study, const AnnualStudySettings& settings,
+                const AnnualOutputs& which) {
+  const metrics::MetricSettings& m = settings.metrics;
+  AnnualSummary a;
+  a.sensors = study.sensors.size();
+  a.time_steps = study.illuminance.step_count();
+  a.occupied_hours = study.occupied_hours;
+  a.da_threshold_lux = m.da_threshold_lux;
+  a.udi_lower_lux = m.udi_lower_lux;
+  a.udi_upper_original_lux = m.udi_upper_original_lux;
+  a.udi_upper_revised_lux = m.udi_upper_revised_lux;
+  a.sda_time_fraction = m.sda_time_fraction;
+  a.ase_threshold_lux = m.ase_threshold_lux;
+  a.ase_hours = m.ase_hours;
+  const metrics::OccupancyPlan& plan = settings.occupancy;
+  switch (plan.kind) {
+    case metrics::OccupancyPlan::Kind::Daily:
+      a.occupancy.kind = "daily";
+      a.occupancy.start_h = plan.daily.start_h;
+      a.occupancy.end_h = plan.daily.end_h;
+      break;
+    case metrics::OccupancyPlan::Kind::Weekly: a.occupancy.kind = "weekly"; break;
+    case metrics::OccupancyPlan::Kind::Hourly: a.occupancy.kind = "hourly"; break;
+  }
+  if (plan.kind != metrics::OccupancyPlan::Kind::Daily) a.occupancy.start_h = a.occupancy.end_h = 0;
+  a.occupancy.description = plan.description();
+  const metrics::SensorMetrics& mean = study.grid.mean;
+  a.da_percent = mean.da_percent;
+  a.cda_percent = mean.cda_percent;
+  a.da_max_percent = mean.da_max_percent;
+  a.udi_below_percent = mean.udi_below_percent;
+  a.udi_achieved_percent = mean.udi_original_percent;
+  a.udi_above_original_percent = mean.udi_above_original_percent;
+  a.udi_supplementary_percent = mean.udi_supplementary_percent;
+  a.udi_autonomous_percent = mean.udi_autonomous_percent;
+  a.udi_above_revised_percent = mean.udi_above_revised_percent;
+  a.mean_occupied_lux = mean.mean_occupied_lux;
+  a.sda_percent = study.grid.sda_percent;
+  for (const metrics::SensorMetrics& s : study.sensors) a.sda_sensors += s.da_percent >= 100.0 * m.sda_time_fraction;
+  if (study.grid.ase_percent >= 0) a.ase_percent = study.grid.ase_percent;
+  if (!study.grid.en17037.empty()) {
+    a.en17037_daylight_hours = study.illuminance.step_count() / 2;
+    a.en17037_daylight_hours_source = study.daylight_hours_source;
+    for (std::size_t i = 0; i < study.grid.en17037.size(); ++i) {
+      const metrics::En17037Result& r = study.grid.en17037[i];
+      a.en17037.push_back({r.level, metrics::En17037Levels[i].target_lux, metrics::En17037Levels[i].minimum_target_lux,
+                           r.target_area_percent, r.minimum_target_area_percent, r.passes});
+    }
+  }
+  a.sky = study.sky_description;
+  grid.annual = a;
+  grid.has_illuminance_table = which.illuminance;
+  if (!which.metrics) return;
+  // The columns of metrics.csv, named once by result_files.h (index,x,y,z first).
+  const std::vector<std::string> c = metrics_csv_columns(m, false);
+  const std::string x = format_number(m.da_threshold_lux), low = format_number(m.udi_lower_lux),
+                    up1 = format_number(m.udi_upper_original_lux), up2 = format_number(m.udi_upper_revised_lux);
+  auto stem = [](const std::string& column) { return column.substr(0, column.size() - std::string("_percent").size()); };
+  grid.quantities.push_back({stem(c[4]), "metrics.csv", c[4], "da", "daylight autonomy (" + x + " lx)", "%",
+                             QuantityScale::Percent, "daylight autonomy"});
+  grid.quantities.push_back({stem(c[8]), "metrics.csv", c[8], "udi_achieved",
+                             "useful daylight illuminance, achieved (" + low + "-" + up1 + " lx)", "%",
+                             QuantityScale::Percent, "UDI achieved"});
+  grid.quantities.push_back({stem(c[11]), "metrics.csv", c[11], "udi_autonomous",
+                             "useful daylight illuminance, autonomous (" + x + "-" + up2 + " lx)", "%",
+                             QuantityScale::Percent, "UDI autonomous"});
+  grid.quantities.push_back({"mean_occupied_illuminance", "metrics.csv", c[13], "mean_occupied_illuminance",
+                             "mean illuminance over the occupied hours", "lx", QuantityScale::Illuminance,
+                             "mean illuminance over the occupied hours"});
+}
+
+void add_verdict_uncertainty(GridResult& grid, const VerdictUncertainty& u) {
+  if (grid.annual) grid.annual->da_verdicts_within_2_sigma = u.da_verdicts_uncertain;
+}
+
+void add_point_in_time(GridResult& grid, const std::string& name, const std::string& sky, const GridStatistics& st) {
+  grid.points_in_time.push_back({name, sky, st.mean, st.median, st.min, st.max, st.uniformity});
+  grid.quantities.push_back({"point_in_time_" + name, "point_in_time.csv", name + "_lux", "point_in_time",
+                             "illuminance at point in time '" + name + "'", "lx", QuantityScale::Illuminance,
+                             "illuminance"});
+}
+
+}  // namespace dayphoton::study

@@ -1,0 +1,247 @@
+// The results model (study/results_model.h): results.json round-trips every field (write ->
+// read -> equal), a missing or mistyped field is an error naming its key, another schema
+// version and a folder without results.json are errors that say to run again, and the
+// builder draws on a wall grid's elevation only the windows of that wall.
+#include "dayphoton/study/results_model.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "dayphoton/core/diagnostics.h"
+#include "dayphoton/project/project.h"
+#include "dayphoton/study/results_model_builder.h"
+
+using namespace dayphoton;
+using namespace dayphoton::study;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A model with every field set to a value other than its default.
+ResultsModel full_model() {
+  ResultsModel m;
+  m.project_name = "project.yaml";
+  m.project_file = "projects/office/project.yaml";
+  m.dayphoton_version = "0.1.0";
+  m.compiler = "13.2";
+  m.study = "annual";
+  m.site_name = "Oakland \"caf\xc3\xa9\"";
+  m.latitude_deg = 37.72;
+  m.longitude_deg = -122.22;
+  m.time_zone_h = -8;
+  m.elevation_m = 2.5;
+  m.sun_from_weather = true;
+  m.sun_site = std::array<double, 4>{37.7, -122.2, -8, 1.25};
+  m.sun_sentence = "the sun is computed for ...";
+  m.station_distance_km = 0.125;
+  m.below_horizon_hours = 7;
+  m.below_horizon_their_sun = "left out";
+  m.weather_file = "w.epw";
+  m.basis = "reinhart";
+  m.reinhart_mf = 2;
+  m.ground_reflectance = 0.15;
+  m.settings = {{"photons per bin", "20000"}, {"sun", "bins"}};
+  m.notes = {"one", "two"};
+  CaseResult c;
+  c.kind = "variant";
+  c.name = "tinted";
+  c.folder = "variants/tinted";
+  c.changes = {"glazing tinted"};
+  c.openings = {{{0, 0, 1}, {1, 0, 1}, {1, 0, 2}}};
+  c.systems = {{{0, -1, 2}, {1, -1, 2}, {1, -0.5, 2}}};
+  GridResult g;
+  g.name = "workplane";
+  g.folder = "variants/tinted/workplane";
+  g.positions_m = {{0.25, 0.25, 0.8}, {0.75, 0.25, 0.8}, {0.25, 0.75, 0.8}};
+  g.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+  g.orientation = GridOrientation::Tilted;
+  g.plan = false;
+  g.lattice.regular = true;
+  g.lattice.columns = 2;
+  g.lattice.rows = 2;
+  g.lattice.spacing_m = 0.5;
+  g.lattice.origin_m = {0.25, 0.75, 0.8};
+  g.lattice.column_step_m = {0.5, 0, 0};
+  g.lattice.row_step_m = {0, -0.5, 0};
+  g.lattice.column_of = {0, 1, 0};
+  g.lattice.row_of = {1, 1, 0};
+  g.outline = {{0, 0, 0.8}, {1, 0, 0.8}, {1, 1, 0.8}};
+  g.openings_drawn = {0};
+  g.dropped_outside_rooms = 3;
+  g.dropped_inside_solid = 1;
+  g.quantities = {{"da300", "metrics.csv", "da300_percent", "da", "daylight autonomy (300 lx)", "%",
+                   QuantityScale::Percent, "daylight autonomy"},
+                  {"daylight_factor", "daylight_factor.csv", "df_percent", "daylight_factor", "daylight factor", "%",
+                   QuantityScale::DaylightFactor, "daylight factor"}};
+  g.daylight_factor = DaylightFactorSummary{1.5, 1.25, 0.1, 3.3, 0.0667, {{2.0, 33.3}, {1.0, 66.7}}, 4.5, 9.25, 3};
+  AnnualSummary a;
+  a.sensors = 3;
+  a.time_steps = 8760;
+  a.occupied_hours = 3650;
+  a.da_threshold_lux = 250.5;
+  a.udi_lower_lux = 99;
+  a.udi_upper_original_lux = 2001;
+  a.udi_upper_revised_lux = 3001;
+  a.sda_time_fraction = 0.4;
+  a.ase_threshold_lux = 999;
+  a.ase_hours = 249;
+  a.occupancy = {"weekly", 0, 0, "weekdays 8-18"};
+  a.da_percent = 1.1;
+  a.cda_percent = 2.2;
+  a.da_max_percent = 3.3;
+  a.udi_below_percent = 4.4;
+  a.udi_achieved_percent = 5.5;
+  a.udi_above_original_percent = 6.6;
+  a.udi_supplementary_percent = 7.7;
+  a.udi_autonomous_percent = 8.8;
+  a.udi_above_revised_percent = 9.9;
+  a.mean_occupied_lux = 432.1;
+  a.sda_percent = 66.7;
+  a.sda_sensors = 2;
+  a.ase_percent = 12.5;
+  a.en17037_daylight_hours = 4380;
+  a.en17037_daylight_hours_source = "diffuse";
+  a.en17037 = {{"minimum", 300, 100, 80, 100, true}, {"medium", 500, 300, 40, 80, false}};
+  a.sky = "Perez";
+  a.da_verdicts_within_2_sigma = 1;
+  g.annual = a;
+  g.points_in_time = {{"noon", "cie_overcast", 500, 450, 100, 900, 0.2}};
+  g.has_illuminance_table = true;
+  c.grids = {g};
+  CaseResult base;
+  base.kind = "base";
+  m.cases = {base, c};
+  return m;
+}
+
+std::string temp_dir(const std::string& name) {
+  const fs::path p = fs::temp_directory_path() / ("dayphoton_results_model_test_" + name);
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p.string();
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_results_json(text, "r/results.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(ResultsModel, RoundTripsEveryField) {
+  const ResultsModel m = full_model();
+  const std::string dir = temp_dir("round_trip");
+  const std::string path = write_results_model(m, dir);
+  EXPECT_EQ(path, (fs::path(dir) / "results.json").string());
+  const ResultsModel back = read_results_model(dir);
+  EXPECT_TRUE(back == m);
+  EXPECT_EQ(results_json(back), results_json(m));  // and the text is stable
+  // Each field matters to the comparison: a changed value is seen.
+  ResultsModel changed = back;
+  changed.cases[1].grids[0].annual->ase_percent.reset();
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].lattice.row_of[2] = 1;
+  EXPECT_FALSE(changed == m);
+  // The empty optional fields round-trip too.
+  ResultsModel bare;
+  bare.cases.push_back(CaseResult{"base", "", "", {}, {}, {}, {}});
+  EXPECT_TRUE(parse_results_json(results_json(bare), "x") == bare);
+}
+
+TEST(ResultsModel, BadFieldsAreErrorsNamingTheKey) {
+  const std::string text = results_json(full_model());
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"sda_percent\": 66.7"), "\"sda_percent\": \"66.7\""))
+                .find("'cases[tinted].grids[workplane].annual.sda_percent' is not a number"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex(",\\s*\"weather_file\": \"w.epw\""), ""))
+                .find("'weather_file' is missing"),
+            std::string::npos);
+  const std::string version = error_of(std::regex_replace(text, std::regex("\"schema_version\": 1"), "\"schema_version\": 2"));
+  EXPECT_NE(version.find("schema version 2"), std::string::npos) << version;
+  EXPECT_NE(version.find("run the study again"), std::string::npos) << version;
+  EXPECT_NE(error_of("[1, 2").find("not a JSON object"), std::string::npos);
+  // A value file named with a folder part would lead out of the grid's folder.
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"file\": \"metrics.csv\""), "\"file\": \"../metrics.csv\""))
+                .find("not a plain file name"),
+            std::string::npos);
+  // A sensor's cell outside the lattice.
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"row\": 1"), "\"row\": 5")).find("outside the lattice"),
+            std::string::npos);
+}
+
+TEST(ResultsModel, AFolderWithoutResultsJsonSaysToRunAgain) {
+  const std::string dir = temp_dir("old_run");
+  std::ofstream(dir + "/summary.json") << "{}";
+  try {
+    read_results_model(dir);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("written by an older dayphoton; run the study again"), std::string::npos)
+        << e.what();
+  }
+}
+
+// A wall grid's picture is an elevation in the wall's plane: the south window of the office
+// must not be drawn on the back (north) wall's picture, while the work plane's plan shows it.
+TEST(ResultsModelBuilder, ElevationsGetOnlyTheWindowsOfTheirWall) {
+  const project::Project project =
+      project::load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/wall_sensors/project.yaml");
+  const SceneDescription scene = project::build_scene_description(project);
+  CaseResult c = results_case("base", "", "", {});
+  set_plan_geometry(c, scene);
+  ASSERT_FALSE(c.openings.empty());
+  bool wall = false, plane = false;
+  for (const SensorGrid& g : scene.grids) {
+    const GridResult r = results_grid(g, g.name, c, 0, 0);
+    if (g.name == "back_wall") {
+      wall = true;
+      EXPECT_EQ(r.orientation, GridOrientation::Vertical);
+      EXPECT_FALSE(r.plan);
+      EXPECT_TRUE(r.openings_drawn.empty());
+      EXPECT_TRUE(r.lattice.regular);
+    } else if (g.name == "workplane") {
+      plane = true;
+      EXPECT_EQ(r.orientation, GridOrientation::Horizontal);
+      EXPECT_TRUE(r.plan);
+      EXPECT_EQ(r.openings_drawn.size(), c.openings.size());
+    }
+  }
+  EXPECT_TRUE(wall && plane);
+}
+
+// The one typed reader of value tables: the column the model names, for the grid's sensors.
+TEST(ResultsModel, ValuesAreReadFromTheColumnTheModelNames) {
+  const std::string dir = temp_dir("values");
+  fs::create_directories(dir + "/grid");
+  std::ofstream(dir + "/grid/metrics.csv") << "index,x,y,z,da300_percent,other\n0,0,0,0.8,10.5,1\n1,1,0,0.8,20.25,2\n";
+  GridResult g;
+  g.name = "grid";
+  g.folder = "grid";
+  g.positions_m = {{0, 0, 0.8}, {1, 0, 0.8}};
+  SensorQuantity q{"da300", "metrics.csv", "da300_percent", "da", "daylight autonomy (300 lx)", "%",
+                   QuantityScale::Percent, "daylight autonomy"};
+  EXPECT_EQ(read_quantity_values(dir, g, q), (std::vector<double>{10.5, 20.25}));
+  q.column = "da250_percent";  // a column the table does not have
+  try {
+    read_quantity_values(dir, g, q);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no column 'da250_percent'"), std::string::npos) << e.what();
+  }
+  q.column = "da300_percent";
+  g.positions_m.push_back({2, 0, 0.8});  // the model has 3 sensors, the table 2 rows
+  try {
+    read_quantity_values(dir, g, q);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("2 rows for the 3 sensors"), std::string::npos) << e.what();
+  }
+}
