@@ -45,6 +45,13 @@ void put_f64(std::string& out, double d) {
   for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
 }
 
+/// A header value on one line (a file name may hold a line break).
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
 std::string gzip(const std::string& data) {
   z_stream z{};
   if (deflateInit2(&z, 6, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
@@ -193,7 +200,7 @@ void write_direct_sun_file(const DirectSunExport& e, const std::string& path) {
          << "\nsuns_basis=every record of the run's weather file whose sun centre is above the horizon at the site"
          << "\nlayout=K x (uint32 step, float32 x y z); per sensor ceil(K/8) bytes bit mask (bit k%8 of byte k/8: "
             "sun k reaches the sensor) then float64 per set bit; little-endian"
-         << "\nsite=" << e.site << "\nweather=" << e.weather << "\n\n";
+         << "\nsite=" << one_line(e.site) << "\nweather=" << one_line(e.weather) << "\n\n";
   std::string data = header.str();
   const std::size_t mask_bytes = (n + 7) / 8;
   data.reserve(data.size() + 16 * n + e.sensors * mask_bytes + 8 * e.lux.size());
