@@ -568,18 +568,24 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
       const std::string other_key =
           direct_sun_key(scene_hash, grid, other_steps, other_directions, SunDirectSamples, sim.seed);
       bool other_cached = false;
-      if (!ctx.settings.force)
-        if (auto bytes = ctx.store.read("sun-direct", other_key)) try {
+      if (!ctx.settings.force) {
+        if (auto bytes = ctx.store.read("sun-direct", other_key)) {
+          try {
             out.direct_other = decode_matrix(*bytes);
             other_cached = out.direct_other.rows() == grid.points.size() &&
                            out.direct_other.columns() == out.other_suns.size();
           } catch (const std::exception&) {
             // damaged: recompute
           }
+        }
+      }
       if (!other_cached) {
+        progress.start(prefix + "direct sun " + grid.name + " (export)", grid.points.size(), "sensors");
         out.direct_other =
             direct_sun_coefficients(scene, materials, grid.points, out.other_suns, SunDirectSamples, sim.seed);
         ctx.store.write("sun-direct", other_key, encode_matrix(out.direct_other));
+        progress.advance(grid.points.size());
+        progress.end();
       }
       log.line(prefix + "direct sun " + grid.name + " for the export: " + std::to_string(out.other_suns.size()) +
                " further daytime sun positions" + (other_cached ? " (cached)" : " traced"));
