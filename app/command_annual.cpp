@@ -15,6 +15,7 @@
 #include <system_error>
 #include <vector>
 #include <iomanip>
+#include <iostream>
 #include <ostream>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +24,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/project/project.h"
+#include "dayphoton/study/annual_exact_sun.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/project_metric_settings.h"
@@ -44,30 +46,47 @@ sky::PatchBasis basis_of_columns(std::size_t columns, const std::string& coeffic
                    std::to_string(columns) + " columns match no sky basis (Tregenza 146, Reinhart MF n 144 n^2 + 2)");
 }
 
-/// The run's summary.json beside the grid folder: its path and text ("" if there is no such
-/// regular file).
-std::pair<std::string, std::string> run_summary(const std::string& grid_dir) {
+/// What `annual` takes from the run that wrote a grid folder. Read in read_run_metadata
+/// alone (today from summary.json; the typed results model will replace it there).
+struct RunMetadata {
+  std::string summary_path;                 ///< "" if no summary.json was found
+  std::optional<double> ground_reflectance;  ///< simulation.ground_reflectance
+  std::optional<study::SunSite> sun_site;    ///< site (study::recorded_sun_site)
+};
+
+/// The run's summary.json: the first regular file of that name in the grid folder's parent
+/// (DIR/<grid>) or above it (DIR/variants/<variant>/<grid>), at most 3 levels up; then the
+/// ground reflectance and the sun site it records (the site for `weather`: InputError for
+/// another clock).
+RunMetadata read_run_metadata(const std::string& grid_dir, const weather::HourlyWeather& weather) {
+  constexpr int MaxLevelsUp = 3;
   fs::path dir = fs::absolute(grid_dir).lexically_normal();
   if (!dir.has_filename()) dir = dir.parent_path();  // "grid/" -> "grid"
-  const fs::path summary = dir.parent_path() / "summary.json";
-  if (!input_file_problem(summary.string()).empty()) return {summary.string(), ""};  // absent, or a FIFO: not waited on
-  std::ifstream in(summary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return {summary.string(), in ? text.str() : std::string()};
-}
-
-/// The ground reflectance the run used, from its summary.json (simulation.ground_reflectance),
-/// so that the rebuilt sky equals the run's; nullopt if there is no such file or key.
-std::optional<double> run_ground_reflectance(const std::string& summary_text) {
-  if (summary_text.empty()) return std::nullopt;
-  const nlohmann::json j = nlohmann::json::parse(summary_text, nullptr, false);
-  if (j.is_discarded() || !j.contains("simulation") || !j["simulation"].is_object()) return std::nullopt;
-  const nlohmann::json& s = j["simulation"];
-  if (!s.contains("ground_reflectance") || !s["ground_reflectance"].is_number()) return std::nullopt;
-  const double rho = s["ground_reflectance"].get<double>();
-  if (!(rho >= 0 && rho <= 1)) return std::nullopt;
-  return rho;
+  RunMetadata m;
+  std::string text;
+  for (int up = 0; up < MaxLevelsUp && dir.has_parent_path() && dir != dir.parent_path(); ++up) {
+    dir = dir.parent_path();
+    const fs::path summary = dir / "summary.json";
+    if (!input_file_problem(summary.string()).empty()) continue;  // absent, or a FIFO: not waited on
+    std::ifstream in(summary);
+    std::ostringstream read;
+    read << in.rdbuf();
+    if (!in) continue;
+    m.summary_path = summary.string();
+    text = read.str();
+    break;
+  }
+  if (text.empty()) return m;
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (!j.is_discarded() && j.contains("simulation") && j["simulation"].is_object()) {
+    const nlohmann::json& s = j["simulation"];
+    if (s.contains("ground_reflectance") && s["ground_reflectance"].is_number()) {
+      const double rho = s["ground_reflectance"].get<double>();
+      if (rho >= 0 && rho <= 1) m.ground_reflectance = rho;
+    }
+  }
+  m.sun_site = study::recorded_sun_site(text, m.summary_path, weather);
+  return m;
 }
 
 std::string percent(double v) {
@@ -76,33 +95,29 @@ std::string percent(double v) {
   return s.str();
 }
 
-/// Folders up to two levels below `dir` that hold a coefficients_sky.mtx (a run's grid
-/// folders: <results>/<grid> and <results>/<variant>/<grid>), sorted, at most 8.
+/// Folders up to three levels below `dir` that hold a coefficients_sky.mtx (a run's grid
+/// folders: <results>/<grid> and <results>/variants/<variant>/<grid>), sorted.
 std::vector<std::string> grid_folders_below(const std::string& dir) {
-  constexpr std::size_t MaxListed = 8;
   std::vector<std::string> found;
   std::error_code ec;
   for (fs::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     if (it.depth() >= 2) it.disable_recursion_pending();
+    if (it->path().filename() == "annual") {  // annual's own output folders
+      it.disable_recursion_pending();
+      continue;
+    }
     if (it->is_directory(ec) && fs::exists(it->path() / "coefficients_sky.mtx", ec)) found.push_back(it->path().string());
   }
   std::sort(found.begin(), found.end());
-  if (found.size() > MaxListed) found.resize(MaxListed);
   return found;
-}
-
-std::string join_names(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
 }
 
 /// The metric settings: the project's (--project) or the defaults, then the command line's
 /// overrides, checked as the project file's keys are (UsageError).
-study::AnnualStudySettings annual_settings(const AnnualOptions& o, const project::Project* project,
-                                           const weather::HourlyWeather& weather) {
+study::AnnualStudySettings annual_settings(const AnnualOptions& o, const std::string& grid_dir,
+                                           const project::Project* project, const weather::HourlyWeather& weather) {
   // The grid folder is named after its sensor set, whose own schedule (if any) applies.
-  fs::path grid = fs::absolute(o.coefficients_dir).lexically_normal();
+  fs::path grid = fs::absolute(grid_dir).lexically_normal();
   if (!grid.has_filename()) grid = grid.parent_path();
   study::AnnualStudySettings settings = project ? study::annual_settings_of(*project, &weather, grid.filename().string())
                                                 : study::AnnualStudySettings{};
@@ -152,9 +167,9 @@ study::AnnualStudySettings annual_settings(const AnnualOptions& o, const project
 
 /// `--sky-vector`: coefficients x one sky column = the illuminance per sensor under that sky
 /// (what dctimestep computes for one sky vector), written as sky_vector_illuminance.csv.
-int sky_vector_illuminance(const AnnualOptions& o, const RadianceMatrix& coefficients,
-                           const std::string& coefficients_path, const std::vector<SensorPoint>& sensors,
-                           std::ostream& out) {
+void sky_vector_illuminance(const AnnualOptions& o, const RadianceMatrix& coefficients,
+                            const std::string& coefficients_path, const std::vector<SensorPoint>& sensors,
+                            const std::string& output_dir, std::ostream& out) {
   MatrixReadOptions read_options;
   read_options.non_negative = true;
   read_options.max_values = o.max_matrix_values;
@@ -169,8 +184,6 @@ int sky_vector_illuminance(const AnnualOptions& o, const RadianceMatrix& coeffic
                          " components but " + coefficients_path + " has " + std::to_string(coefficients.columns()) +
                          " bins x " + std::to_string(coefficients.components()));
   const metrics::IlluminanceTable table = study::annual_illuminance(coefficients, vector, {metrics::TimeStamp{}});
-  const std::string output_dir =
-      o.output_dir.empty() ? (fs::path(o.coefficients_dir) / "annual").string() : o.output_dir;
   fs::create_directories(output_dir);
   const std::string path = (fs::path(output_dir) / "sky_vector_illuminance.csv").string();
   study::write_point_in_time_csv(sensors, {"illuminance"}, table, path);
@@ -185,30 +198,42 @@ int sky_vector_illuminance(const AnnualOptions& o, const RadianceMatrix& coeffic
     out << "dayphoton annual: " << sensors.size() << " sensors under the sky of " << o.sky_vector_path << ": mean "
         << std::fixed << std::setprecision(1) << sum / double(std::max<std::size_t>(1, sensors.size())) << " lux, min "
         << low << ", max " << high << "\n  wrote " << path << '\n';
+    out.unsetf(std::ios::floatfield);
     require_written(out, "the summary");
   }
-  return ExitOk;
 }
 
-}  // namespace
+/// What every grid of one `annual` call shares: the project and the weather file.
+struct AnnualInputs {
+  std::optional<project::Project> project;
+  std::optional<weather::HourlyWeather> weather;
+  std::string weather_path;
+};
 
-int run_annual(const AnnualOptions& o, std::ostream& out) {
-  if (!o.sky_matrix_path.empty() && o.ground_reflectance_given)
-    throw UsageError("--ground-reflectance applies to sky matrices built from the weather file, not to --sky-matrix");
-  if (!fs::is_directory(o.coefficients_dir))
-    throw InputError(SourceLocation{o.coefficients_dir, 0, 0},
-                     "not a folder; --coefficients takes a grid folder written by `dayphoton run`");
-  const std::string coefficients_path = (fs::path(o.coefficients_dir) / "coefficients_sky.mtx").string();
-  if (!fs::exists(coefficients_path)) {
-    // The usual slip: the results folder (or a case's folder) instead of one of its grids.
-    std::vector<std::string> grids = grid_folders_below(o.coefficients_dir);
-    std::string hint = grids.empty() ? std::string("; `dayphoton run` writes it into each grid's folder")
-                                     : "; grid folders below it: " + join_names(grids);
-    throw InputError(SourceLocation{o.coefficients_dir, 0, 0},
-                     "no coefficients_sky.mtx in this folder: --coefficients takes a grid folder written by "
-                     "`dayphoton run`" + hint);
+/// The sun of the annual study: "exact" (the exported direct sun and sun bins of a sun-bins
+/// run), "spread" (the sun spread into the sky patches, sky coefficients only).
+bool use_exact_sun(const AnnualOptions& o, const std::string& grid_dir) {
+  const bool exported = study::has_exact_sun_export(grid_dir);
+  if (o.sun == "spread") return false;
+  if (o.sun == "exact") {
+    if (!o.sky_matrix_path.empty())
+      throw UsageError("--sun exact builds its sky without the sun from the weather file; --sky-matrix gives a whole "
+                       "sky (use --sun spread with it)");
+    if (!exported)
+      throw InputError(SourceLocation{grid_dir, 0, 0},
+                       std::string("--sun exact: no ") + study::DirectSunFileName +
+                           " in this grid folder (a run with `simulation.sun: bins` and outputs.coefficients writes it)");
+    return true;
   }
-  const std::string sensors_path = (fs::path(o.coefficients_dir) / "sensors.csv").string();
+  if (!o.sun.empty()) throw UsageError("--sun takes exact or spread, not '" + o.sun + "'");
+  return exported && o.sky_matrix_path.empty();
+}
+
+/// The annual study of one grid folder into `output_dir`.
+void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const std::string& output_dir,
+                    AnnualInputs& inputs, std::ostream& out) {
+  const std::string coefficients_path = (fs::path(grid_dir) / "coefficients_sky.mtx").string();
+  const std::string sensors_path = (fs::path(grid_dir) / "sensors.csv").string();
   std::optional<sky::PatchBasis> requested_basis;
   if (!o.basis.empty()) requested_basis = parse_basis_option(o.basis);
 
@@ -232,36 +257,45 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
                      "has " + std::to_string(coefficients.columns()) + " columns but --basis " + o.basis + " has " +
                          std::to_string(basis.bin_count()) + " bins");
 
-  if (!o.sky_vector_path.empty()) return sky_vector_illuminance(o, coefficients, coefficients_path, sensors, out);
+  if (!o.sky_vector_path.empty()) {
+    sky_vector_illuminance(o, coefficients, coefficients_path, sensors, output_dir, out);
+    return;
+  }
 
   // The project first: its errors are located in it (exit 1), before any matrix is read.
-  std::optional<project::Project> project;
-  if (!o.project_path.empty()) project = project::load_project(o.project_path);
-  const std::string weather_path = !o.weather_path.empty() ? o.weather_path
-                                   : project                 ? project->weather.path
-                                                             : std::string();
-  if (weather_path.empty())
-    throw UsageError(project ? "the project " + o.project_path + " has no weather file: give --weather"
-                             : std::string("--weather is required (or --project, whose weather file is used)"));
-  // A missing weather file (or a FIFO) is bad input (exit 1): read_epw says so, located.
-  const weather::HourlyWeather weather = weather::read_hourly_weather(weather_path);
+  if (!o.project_path.empty() && !inputs.project) inputs.project = project::load_project(o.project_path);
+  const project::Project* project = inputs.project ? &*inputs.project : nullptr;
+  if (!inputs.weather) {
+    inputs.weather_path = !o.weather_path.empty() ? o.weather_path : project ? project->weather.path : std::string();
+    if (inputs.weather_path.empty())
+      throw UsageError(project ? "the project " + o.project_path + " has no weather file: give --weather"
+                               : std::string("--weather is required (or --project, whose weather file is used)"));
+    // A missing weather file (or a FIFO) is bad input (exit 1): read_epw says so, located.
+    inputs.weather = weather::read_hourly_weather(inputs.weather_path);
+  }
+  const weather::HourlyWeather& weather = *inputs.weather;
+  const std::string& weather_path = inputs.weather_path;
+  const bool exact_sun = use_exact_sun(o, grid_dir);
+
   study::AnnualSky sky;
+  std::optional<study::SkyAndSuns> sky_and_suns;
   std::string site_line;
   if (o.sky_matrix_path.empty()) {
-    const auto [summary_path, summary_text] = run_summary(o.coefficients_dir);
+    const RunMetadata run = read_run_metadata(grid_dir, weather);
     double rho = o.ground_reflectance;
-    if (!o.ground_reflectance_given)
-      if (const std::optional<double> from_run = run_ground_reflectance(summary_text)) rho = *from_run;
+    if (!o.ground_reflectance_given && run.ground_reflectance) rho = *run.ground_reflectance;
     // The sun of the run's site (its summary.json), else of the weather file's header.
-    const std::optional<study::SunSite> recorded = study::recorded_sun_site(summary_text, summary_path, weather);
-    const study::SunSite site = recorded ? *recorded : study::header_sun_site(weather);
-    site_line = study::sun_site_sentence(site) +
-                (recorded ? " (the run's, from " + summary_path + ")" : std::string(" (no run summary records a site)"));
+    const study::SunSite site = run.sun_site ? *run.sun_site : study::header_sun_site(weather);
+    site_line = study::sun_site_sentence(site) + (run.sun_site ? " (the run's, from " + run.summary_path + ")"
+                                                               : std::string(" (no run summary records a site)"));
     require_matrix_within_limit("the sky matrix (" + std::to_string(basis.bin_count()) +
                                     " bins, one column per record of " + weather_path + ")",
                                 static_cast<std::uint64_t>(basis.bin_count()), weather.records.size(), 3,
                                 o.max_matrix_values);
-    sky = study::annual_sky_from_weather(weather, site.solar, basis, study::radiance_compatible_sky_options(rho));
+    if (exact_sun)
+      sky_and_suns = study::annual_sky_and_suns(weather, site.solar, basis, study::sun_excluded_sky_options(rho));
+    else
+      sky = study::annual_sky_from_weather(weather, site.solar, basis, study::radiance_compatible_sky_options(rho));
   } else {
     sky = study::annual_sky_from_matrix_file(o.sky_matrix_path, weather, read_options, o.max_decompressed_bytes);
     if (sky.matrix.rows() != coefficients.columns() || sky.matrix.components() != coefficients.components())
@@ -271,14 +305,21 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
                            " has " + std::to_string(coefficients.columns()) + " bins x " +
                            std::to_string(coefficients.components()));
   }
+  const study::AnnualSky& the_sky = sky_and_suns ? sky_and_suns->sky : sky;
 
   require_matrix_within_limit("the illuminance table (" + std::to_string(sensors.size()) + " sensors, one row per record)",
-                              sensors.size(), sky.steps.size(), 1, o.max_matrix_values);
-  const study::AnnualStudySettings settings = annual_settings(o, project ? &*project : nullptr, weather);
-  const study::AnnualStudy result = study::compute_annual_study(coefficients, sky, settings);
-  const std::string output_dir =
-      o.output_dir.empty() ? (fs::path(o.coefficients_dir) / "annual").string() : o.output_dir;
+                              sensors.size(), the_sky.steps.size(), 1, o.max_matrix_values);
+  const study::AnnualStudySettings settings = annual_settings(o, grid_dir, project, weather);
+  study::ExactSunNotes notes;
+  const study::AnnualStudy result =
+      exact_sun ? study::annual_study_exact_sun(
+                      coefficients,
+                      study::read_exact_sun_export(grid_dir, sensors.size(), read_options, o.max_decompressed_bytes),
+                      *sky_and_suns, settings, grid_dir, notes)
+                : study::compute_annual_study(coefficients, sky, settings);
   const std::vector<std::string> written = study::write_annual_outputs(result, sensors, settings, output_dir);
+  // Never silently interpolated: the warnings go to stderr even with --quiet.
+  for (const std::string& w : notes.warnings()) std::cerr << "warning: " << grid_dir << ": " << w << '\n';
 
   if (!o.quiet) {
     const metrics::GridMetrics& g = result.grid;
@@ -289,7 +330,7 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
     const metrics::MetricSettings& ms = settings.metrics;
     for (const metrics::SensorMetrics& m : result.sensors) sda_sensors += m.da_percent >= 100.0 * ms.sda_time_fraction;
     const std::string da = "DA" + format_number(ms.da_threshold_lux);
-    out << "dayphoton annual: " << sensors.size() << " sensors x " << result.illuminance.step_count()
+    out << "dayphoton annual: " << grid_dir << ": " << sensors.size() << " sensors x " << result.illuminance.step_count()
         << " steps, " << result.occupied_hours << " occupied hours (" << settings.occupancy.description() << ")\n"
         << (project ? "  metric settings: " + o.project_path + (overridden ? ", with the command line's overrides" : "") + "\n"
                     : std::string())
@@ -300,15 +341,56 @@ int run_annual(const AnnualOptions& o, std::ostream& out) {
         << sda_sensors << " of " << sensors.size() << " sensors), mean UDI " << format_number(ms.udi_lower_lux) << "-"
         << format_number(ms.udi_upper_original_lux) << " " << percent(g.mean.udi_original_percent) << ", mean occupied illuminance " << std::fixed
         << std::setprecision(0) << g.mean.mean_occupied_lux << " lux\n";
+    out.unsetf(std::ios::floatfield);
+    out << std::setprecision(6);
     if (!g.en17037.empty()) {
       out << "  EN 17037 daylight provision:";
       for (std::size_t i = 0; i < g.en17037.size(); ++i)
         out << (i ? ", " : " ") << g.en17037[i].level << (g.en17037[i].passes ? " passes" : " fails");
       out << '\n';
     }
-    out << "  ASE not computed (needs direct-sun coefficients; sky coefficients only here)\n";
+    if (exact_sun)
+      out << "  sun: exact (" << study::DirectSunFileName << ", coefficients_sun.mtx): " << notes.suns_exact << " of "
+          << notes.suns << " suns at exported positions; ASE" << format_number(ms.ase_threshold_lux) << ","
+          << format_number(ms.ase_hours) << " " << percent(g.ase_percent) << "\n";
+    else
+      out << "  sun: spread into the sky patches; ASE not computed (needs the direct sun: "
+          << study::DirectSunFileName << " of a sun-bins run)\n";
     for (const std::string& path : written) out << "  wrote " << path << '\n';
     require_written(out, "the summary");
+  }
+}
+
+}  // namespace
+
+int run_annual(const AnnualOptions& o, std::ostream& out) {
+  if (!o.sky_matrix_path.empty() && o.ground_reflectance_given)
+    throw UsageError("--ground-reflectance applies to sky matrices built from the weather file, not to --sky-matrix");
+  if (!fs::is_directory(o.coefficients_dir))
+    throw InputError(SourceLocation{o.coefficients_dir, 0, 0},
+                     "not a folder; --coefficients takes a grid folder or the results folder written by `dayphoton run`");
+  AnnualInputs inputs;
+  if (fs::exists(fs::path(o.coefficients_dir) / "coefficients_sky.mtx")) {
+    const std::string output_dir =
+        o.output_dir.empty() ? (fs::path(o.coefficients_dir) / "annual").string() : o.output_dir;
+    annual_of_grid(o, o.coefficients_dir, output_dir, inputs, out);
+    return ExitOk;
+  }
+  // A results folder (or a case's folder): every grid folder below it, each into its own
+  // annual folder (or -o DIR/<the grid's path below the results folder>).
+  const std::vector<std::string> grids = grid_folders_below(o.coefficients_dir);
+  if (grids.empty())
+    throw InputError(SourceLocation{o.coefficients_dir, 0, 0},
+                     "no coefficients_sky.mtx in this folder or in grid folders below it: --coefficients takes a grid "
+                     "folder or the results folder written by `dayphoton run`, which writes it into each grid's folder");
+  if (!o.quiet)
+    out << "dayphoton annual: " << grids.size() << " grid folder" << (grids.size() == 1 ? "" : "s") << " below "
+        << o.coefficients_dir << '\n';
+  for (const std::string& grid : grids) {
+    const std::string output_dir =
+        o.output_dir.empty() ? (fs::path(grid) / "annual").string()
+                             : (fs::path(o.output_dir) / fs::path(grid).lexically_relative(o.coefficients_dir)).string();
+    annual_of_grid(o, grid, output_dir, inputs, out);
   }
   return ExitOk;
 }

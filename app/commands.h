@@ -97,6 +97,9 @@ struct AnnualOptions {
   std::string sky_vector_path;
   std::string output_dir;        ///< empty: <coefficients_dir>/annual
   std::string basis;             ///< empty: from the coefficients' column count
+  /// "exact" (the exported direct sun and sun bins), "spread" (sky coefficients only), or
+  /// empty: exact where the grid folder has direct_sun.bin.gz and no --sky-matrix is given.
+  std::string sun;
   double ground_reflectance = 0.2;     ///< used if given, else the run's (summary.json), else 0.2
   bool ground_reflectance_given = false;
   bool quiet = false;

@@ -137,9 +137,10 @@ int main(int argc, char** argv) {
 
   AnnualOptions annual;
   auto* annual_cmd = cli.add_subcommand(
-      "annual", "Annual illuminance and metrics from the sky coefficients of an earlier run (no tracing)");
+      "annual", "Annual illuminance and metrics from the coefficients of an earlier run (no tracing)");
   annual_cmd->add_option("--coefficients", annual.coefficients_dir,
-                         "Grid folder written by `dayphoton run` (coefficients_sky.mtx, sensors.csv)")
+                         "Grid folder written by `dayphoton run` (coefficients_sky.mtx, sensors.csv), or its "
+                         "results folder: every grid folder below it")
       ->required();
   annual_cmd->add_option("--weather", annual.weather_path,
                          "Weather file (EPW, or .wea by its extension): time stamps, and the sky (default: the --project's weather file)");
@@ -177,6 +178,11 @@ int main(int argc, char** argv) {
                          "illuminance per sensor under it (sky_vector_illuminance.csv) instead of the annual study")
       ->excludes("--sky-matrix")->excludes("--weather")->excludes("--project");
   annual_cmd->add_option("-o,--output", annual.output_dir, "Output folder (default: <coefficients>/annual)");
+  annual_cmd->add_option("--sun", annual.sun,
+                         "exact: the run's exported direct sun (direct_sun.bin.gz), sun bins and ASE, as `run` "
+                         "computes them (the default where the grid folder has them); spread: the sun spread into "
+                         "the sky patches, sky coefficients only")
+      ->check(CLI::IsMember({"exact", "spread"}));
   annual_cmd->add_option("--basis", annual.basis,
                          "tregenza or reinhart:N (default: from the coefficients' column count)");
   annual_cmd->add_option("--ground-reflectance", annual.ground_reflectance,

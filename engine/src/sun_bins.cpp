@@ -92,6 +92,20 @@ SunBins SunBins::for_suns(const std::vector<Vec3>& suns, int mf) {
   return bins;
 }
 
+SunBins SunBins::from_patches(const std::vector<int>& patches, int mf) {
+  SunBins bins(mf);
+  for (const int patch : patches) {
+    if (patch < 1 || patch >= bins.m_basis.bin_count())
+      throw std::invalid_argument("sun bins: patch " + std::to_string(patch) + " is not a sky patch of Reinhart MF " +
+                                  std::to_string(mf) + " (1.." + std::to_string(bins.m_basis.bin_count() - 1) + ")");
+    int& bin = bins.m_bin_of_patch[static_cast<std::size_t>(patch)];
+    if (bin >= 0) throw std::invalid_argument("sun bins: patch " + std::to_string(patch) + " given twice");
+    bin = static_cast<int>(bins.m_patch.size());
+    bins.m_patch.push_back(patch);
+  }
+  return bins;
+}
+
 SourceSet SunBins::sources(double half_angle_rad) const {
   SourceSet set;
   for (int patch : m_patch) set.add_sun_disc(m_basis.centre(patch), half_angle_rad);

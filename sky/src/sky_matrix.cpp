@@ -276,6 +276,20 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
   return result;
 }
 
+std::vector<SunRecord> daytime_sun_positions(const weather::HourlyWeather& weather, const SolarSite& site,
+                                             const SkyMatrixOptions& options) {
+  require_file_clock(weather, site);
+  const weather::SiteClock clock = weather::SiteClock::for_weather(weather);
+  const std::vector<weather::TimeStep> steps = clock.steps(weather.records);
+  const SolarPositionOptions solar = solar_options_for(weather, options);
+  std::vector<SunRecord> suns;
+  for (std::size_t t = 0; t < steps.size(); ++t) {
+    const SolarPosition sun = record_sun(site, clock, steps[t], solar);
+    if (sun.direction.z > 0) suns.push_back(sun_record(t, sun.direction, 0.0));
+  }
+  return suns;
+}
+
 SunRecord sun_record(std::size_t step, const Vec3& direction, double direct_normal_illuminance_lux) {
   SunRecord r;
   r.step = step;

@@ -28,6 +28,7 @@
 #include "dayphoton/study/accuracy_rounds.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/annual_sun.h"
+#include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/artifact_codec.h"
@@ -375,6 +376,10 @@ struct GridSun {
   RadianceMatrix bin_coefficients;  ///< sensors x sun bins x RGB, caustic + global
   std::vector<double> bin_variance;  ///< sensors x sun bins, of each entry's luminance
   RadianceMatrix direct;            ///< sensors x suns x RGB, exact direct sun
+  /// For direct_sun.bin.gz (outputs.coefficients): the direct sun of the other daytime sun
+  /// positions (direct_sun_file.h), sensors x other_suns x RGB.
+  RadianceMatrix direct_other;
+  std::vector<sky::SunRecord> other_suns;
 };
 
 engine::TracingOptions sun_tracing_options(const project::Project& project, bool keep_surface_photons) {
@@ -388,13 +393,14 @@ engine::TracingOptions sun_tracing_options(const project::Project& project, bool
 }
 
 /// Sun bins of one case: choose them for the year's suns, trace (one cached artefact per
-/// bin), estimate per grid, trace the exact direct sun per grid. Every step cached.
+/// bin), estimate per grid, trace the exact direct sun per grid (with `export_direct`, also at
+/// the further daytime positions of direct_sun.bin.gz). Every step cached.
 std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix,
                                   const SceneDescription& description, const engine::Scene& scene,
                                   const std::vector<engine::Material>& materials,
                                   const std::vector<engine::ReceiverPlane>& planes,
                                   const std::vector<int>& plane_of_grid, const SkyAndSuns& ss,
-                                  const engine::SunBins& bins, RunContext& ctx) {
+                                  const engine::SunBins& bins, RunContext& ctx, bool export_direct = false) {
   const project::Simulation& sim = project.simulation;
   Progress& progress = ctx.progress;
   RunLog& log = ctx.log;
@@ -548,6 +554,43 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
       progress.end();
       log.line(prefix + "direct sun " + grid.name + ": traced for " + std::to_string(ss.suns.size()) +
                " sun hours at " + std::to_string(grid.points.size()) + " sensors");
+    }
+    // The export for `annual` (direct_sun.bin.gz): the daytime positions without direct light
+    // in this weather file too, so another file of the site finds every sun it needs.
+    if (export_direct) {
+      GridSun& out = result[g];
+      out.other_suns = daytime_suns_without_direct(*ctx.weather, ctx.sun_site->solar,
+                                                   sun_excluded_sky_options(sim.ground_reflectance), ss.suns);
+      std::vector<std::size_t> other_steps;
+      std::vector<Vec3> other_directions;
+      for (const sky::SunRecord& sun : out.other_suns) {
+        other_steps.push_back(sun.step);
+        other_directions.push_back(sun.direction);
+      }
+      const std::string other_key =
+          direct_sun_key(scene_hash, grid, other_steps, other_directions, SunDirectSamples, sim.seed);
+      bool other_cached = false;
+      if (!ctx.settings.force) {
+        if (auto bytes = ctx.store.read("sun-direct", other_key)) {
+          try {
+            out.direct_other = decode_matrix(*bytes);
+            other_cached = out.direct_other.rows() == grid.points.size() &&
+                           out.direct_other.columns() == out.other_suns.size();
+          } catch (const std::exception&) {
+            // damaged: recompute
+          }
+        }
+      }
+      if (!other_cached) {
+        progress.start(prefix + "direct sun " + grid.name + " (export)", grid.points.size(), "sensors");
+        out.direct_other =
+            direct_sun_coefficients(scene, materials, grid.points, out.other_suns, SunDirectSamples, sim.seed);
+        ctx.store.write("sun-direct", other_key, encode_matrix(out.direct_other));
+        progress.advance(grid.points.size());
+        progress.end();
+      }
+      log.line(prefix + "direct sun " + grid.name + " for the export: " + std::to_string(out.other_suns.size()) +
+               " further daytime sun positions" + (other_cached ? " (cached)" : " traced"));
     }
   }
   return result;
@@ -909,7 +952,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     for (const sky::SunRecord& sun : ss.suns) directions.push_back(sun.direction);
     const engine::SunBins bins = engine::SunBins::for_suns(directions, sim.sun_mf);
     const std::vector<GridSun> sun =
-        run_sun_bins(project, prefix, description, scene, materials, planes, plane_of_grid, ss, bins, ctx);
+        run_sun_bins(project, prefix, description, scene, materials, planes, plane_of_grid, ss, bins, ctx,
+                     project.outputs.coefficients);
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       if (project.outputs.coefficients) {
@@ -919,6 +963,14 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
         c.write_file(join(folders[g], "coefficients_sun.mtx"), matrix_format);
         write_sun_bins_csv(bins, ss.suns, join(folders[g], "sun_bins.csv"));
         ctx.outputs.record({join(folders[g], "coefficients_sun.mtx"), join(folders[g], "sun_bins.csv")});
+        DirectSunExport exported = make_direct_sun_export({{&sun[g].direct, &ss.suns}, {&sun[g].direct_other, &sun[g].other_suns}});
+        exported.sun_bins_mf = bins.multiplication_factor();
+        exported.seed = sim.seed;
+        exported.samples = SunDirectSamples;
+        exported.site = sun_site_sentence(*ctx.sun_site);
+        exported.weather = project.weather.path;
+        write_direct_sun_file(exported, join(folders[g], DirectSunFileName));
+        ctx.outputs.record(join(folders[g], DirectSunFileName));
       }
       if (!annual) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");

@@ -207,7 +207,7 @@ fi
 # annual: recomputes tables and metrics from exported coefficients (a synthetic 2-sensor grid).
 EPW=projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw
 check_case annual_missing_folder 1 annual --coefficients tests/cli/cases/does_not_exist --weather $EPW
-check_case annual_results_root 1 annual --coefficients tests/cli/cases --weather $EPW
+check_case annual_no_grid_folders 1 annual --coefficients tests/cli/cases/school --weather $EPW
 check_case annual_basis_mismatch 1 annual --coefficients tests/cli/cases/annual_grid --weather $EPW --basis reinhart:2
 check_case annual_bad_basis 2 annual --coefficients tests/cli/cases/annual_grid --weather $EPW --basis klems
 check_case annual_sky_matrix_not_a_matrix 1 annual --coefficients tests/cli/cases/annual_grid --weather $EPW --sky-matrix tests/cli/cases/annual_grid/sensors.csv

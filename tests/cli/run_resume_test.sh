@@ -49,7 +49,7 @@ echo "ok   resumed results are byte-identical to an uninterrupted run"
 # 2. Nothing changed: no tracing, no estimating, sky matrix from the cache; same bytes.
 # summary.json and grid_metrics.json included: the run's history (cache counts, timings, "from
 # the cache") is in run.log only.
-outputs="workplane/daylight_factor.csv workplane/coefficients_sky.mtx workplane/coefficients_sun.mtx
+outputs="workplane/daylight_factor.csv workplane/coefficients_sky.mtx workplane/coefficients_sun.mtx workplane/direct_sun.bin.gz
          workplane/illuminance.bin workplane/metrics.csv workplane/grid_metrics.json summary.json"
 mkdir -p "$scratch/first"
 for f in $outputs; do cp "$scratch/b/$f" "$scratch/first/$(basename "$f")"; done  # basenames are unique

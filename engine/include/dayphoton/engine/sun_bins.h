@@ -60,6 +60,11 @@ class SunBins {
   /// std::invalid_argument for a bad mf (see PatchBasis::reinhart) or a bad direction.
   static SunBins for_suns(const std::vector<Vec3>& suns, int mf);
 
+  /// The bins of these patches of Reinhart MF `mf`, in this order (a set written out by an
+  /// earlier run: sun_bins.csv). Throws std::invalid_argument for a bad mf, a patch outside
+  /// 1 .. bin_count - 1, or a patch given twice.
+  static SunBins from_patches(const std::vector<int>& patches, int mf);
+
   int multiplication_factor() const { return m_basis.multiplication_factor(); }
   const sky::PatchBasis& basis() const { return m_basis; }
   std::size_t size() const { return m_patch.size(); }

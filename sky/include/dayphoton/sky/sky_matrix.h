@@ -109,6 +109,16 @@ SolarSite solar_site_of(const weather::HourlyWeather& weather);
 SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSite& site, const PatchBasis& basis,
                            const SkyMatrixOptions& options);
 
+/// The sun of every record whose sun centre is above the horizon at `site`, whatever the
+/// record's irradiance (direct normal illuminance and disc radiance 0): the positions, at the
+/// same instants and by the same formulas (options.solar) as build_sky_matrix's suns, so
+/// every SkyMatrix::suns direction of a weather file on this clock is among them. For
+/// engines that prepare the direct sun of any weather file of the site (a night record, or
+/// one without direct light in this file, may have it in another). Throws as build_sky_matrix
+/// for a site on another clock.
+std::vector<SunRecord> daytime_sun_positions(const weather::HourlyWeather& weather, const SolarSite& site,
+                                             const SkyMatrixOptions& options);
+
 /// BelowHorizonDirect of build_sky_matrix(weather, site, basis, options) without building the
 /// matrix (the sun positions alone: milliseconds for a year). Same time-zone rule.
 BelowHorizonDirect below_horizon_direct(const weather::HourlyWeather& weather, const SolarSite& site,
