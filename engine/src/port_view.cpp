@@ -36,7 +36,17 @@ double port_view_pad_m(const Scene& scene, const std::vector<Material>& material
 }
 
 PortView::PortView(const Scene& scene, const Vec3& origin, double pad) {
-  for (const Port& port : scene.ports().ports())
+  for (const Port& port : scene.ports().ports()) {
+    PortCone cone;
+    cone.first = m_triangles.size();
+    double radius = 0;
+    for (const std::array<Vec3, 3>& tri : port.triangles)
+      for (const Vec3& v : tri) radius = std::max(radius, length(v - port.centroid));
+    radius += pad;
+    const Vec3 to_centre = port.centroid - origin;
+    const double distance = length(to_centre);
+    cone.axis = distance > 0 ? to_centre / distance : Vec3{0, 0, 1};
+    cone.half_angle_rad = distance > radius ? std::asin(radius / distance) : Pi;
     for (const std::array<Vec3, 3>& tri : port.triangles) {
       Triangle t;
       const Vec3 a[3] = {tri[0] - origin, tri[1] - origin, tri[2] - origin};
@@ -56,10 +66,24 @@ PortView::PortView(const Scene& scene, const Vec3& origin, double pad) {
       }
       m_triangles.push_back(t);
     }
+    cone.last = m_triangles.size();
+    m_ports.push_back(cone);
+  }
 }
 
 bool PortView::may_cross_port(const Vec3& direction, double half_angle_rad) const {
-  for (const Triangle& t : m_triangles) {
+  for (const PortCone& port : m_ports) {
+    const double reach = port.half_angle_rad + half_angle_rad;
+    // Farther from the axis than `reach` (cos below cos(reach)): the port is missed.
+    if (reach < Pi && dot(direction, port.axis) < std::cos(reach)) continue;
+    if (may_cross(port, direction, half_angle_rad)) return true;
+  }
+  return false;
+}
+
+bool PortView::may_cross(const PortCone& port, const Vec3& direction, double half_angle_rad) const {
+  for (std::size_t i = port.first; i < port.last; ++i) {
+    const Triangle& t = m_triangles[i];
     const double widened = half_angle_rad + t.margin_rad;
     if (!(widened < 0.5 * Pi)) return true;
     const double limit = -std::sin(widened);

@@ -15,7 +15,9 @@
 // when a non-port surface of the scene transmits light straight through (an interior
 // window), the sideways offset of each crossing before a port (2 ray epsilons per crossing,
 // up to MaxShadowRayCrossings). A triangle whose plane passes within the margin of o is never
-// ruled out.
+// ruled out. Each port is first tested as a whole against the cone that holds its bounding
+// sphere, so the cost per query grows with the ports near the direction, not with all their
+// triangles.
 #pragma once
 
 #include <array>
@@ -43,7 +45,18 @@ class PortView {
     std::array<Vec3, 3> edge_normals;  ///< unit m_e, pointing into the triangle's cone
     double margin_rad = 0;             ///< asin(pad / d), or >= pi/2: never ruled out
   };
+  /// A port's triangles [first, last) and the cone about `axis` that holds all of them
+  /// (their bounding sphere, widened by the pad, seen from the origin): a cone of directions
+  /// farther than half_angle_rad from the axis misses the port without a triangle test.
+  struct PortCone {
+    Vec3 axis;
+    double half_angle_rad = 0;  ///< >= pi: the origin is inside the sphere
+    std::size_t first = 0, last = 0;
+  };
+  bool may_cross(const PortCone& port, const Vec3& direction, double half_angle_rad) const;
+
   std::vector<Triangle> m_triangles;
+  std::vector<PortCone> m_ports;
 };
 
 /// The margin of the header comment for `scene`, metres.
