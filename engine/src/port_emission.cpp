@@ -15,7 +15,8 @@ namespace {
 // Grid used to bound max(-d . n) over a source. -d . n is 1-Lipschitz in the angle of d, and
 // every direction of the source lies within one grid spacing (in each of the two parameter
 // directions) of a grid node, so the sampled maximum plus twice the largest angle between
-// neighbouring nodes is a true bound.
+// neighbouring nodes is a true bound. The same holds in each cell of a source (below) with the
+// nodes on and inside the cell's border, since cell borders fall on grid lines.
 constexpr int BoundGrid = 48;
 /// Cells per axis of a large source (each its own bound; BoundGrid must be a multiple).
 constexpr int MaxCells = 8;
@@ -139,8 +140,8 @@ PortEmitter::PortEmitter(const Scene& scene, const SourceSet& sources)
       }
     }
     m_bound_total[p] = running;
-    // Guide table (the cutpoint method; Devroye, "Non-Uniform Random Variate Generation",
-    // section III.2.4): guide[m] is the first entry whose running sum exceeds a value a
+    // Guide table (Chen and Asau, "On generating random variates from an empirical
+    // distribution", AIIE Transactions 6(2), 1974): guide[m] is the first entry whose running sum exceeds a value a
     // little below m / M of the total, so the search from there finds what upper_bound over
     // the whole table finds, in about one step. The slack covers the rounding of u * M and
     // u * total (a few ulps).
