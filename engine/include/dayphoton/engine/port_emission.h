@@ -30,15 +30,14 @@
 // rejected too (that surface takes it, if it is a scatterer or a port). Light reflected by
 // other outdoor surfaces (ground excepted: it is a source) is still not modelled.
 //
-// Cells: a large source is split into C x C cells of equal solid angle (its map from (u1,
-// u2) to directions preserves solid angle, so a cell is a square of [0, 1)^2), each with its
-// own bound c_pkc over the cell's grid nodes; the attempt picks (port, cell) with probability
-// proportional to B_pkc = A_k (Omega_p / C^2) c_pkc and a direction uniform in that cell.
-// The accepted density stays A_k max(0, -d . n_k) per unit bound, so nothing above changes
-// but the number of rejections: a bin cut by a window's plane (half of it behind) or the
-// zenith cap above a vertical window accepted 1 attempt in 5 with one bound, and cells
-// wholly behind the port are never drawn. C = 8 for sources of 1e-3 sr or more (sky bins),
-// fewer when sites x C^2 would exceed 4096 (many slats), 1 for sun discs.
+// Cells (implemented, OFF: one cell): a large source can be split into C x C cells of equal
+// solid angle (its map from (u1, u2) to directions preserves solid angle, so a cell is a
+// square of [0, 1)^2), each with its own bound c_pkc over the cell's grid nodes; the attempt
+// then picks (port, cell) with probability proportional to B_pkc = A_k (Omega_p / C^2) c_pkc
+// and a direction uniform in that cell. The accepted density stays A_k max(0, -d . n_k) per
+// unit bound; only rejections change (on the office 1 attempt in 1.45 enters instead of 1 in
+// 3.0). It is off because replicate daylight factors spread wider with it (port_emission.cpp,
+// MaxCells); with one cell every random number maps exactly as the single-bound emission.
 //
 // Set-up cost: the cosine bound of a site depends on its inward normal only; each source's
 // direction grid is sampled once and the bound is computed once per distinct normal (the

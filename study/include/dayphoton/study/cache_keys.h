@@ -39,9 +39,8 @@ namespace dayphoton::study {
 
 /// Bumped whenever the engine's output for the same inputs changes (invalidates old caches).
 /// 4: photons outdoors after leaving through a port are no longer stored (photon_tracer.h,
-/// "Indoors and outdoors"). 5: port emission draws each large source cell by cell
-/// (port_emission.h, "Cells"), so the photons of a seed differ.
-constexpr int EngineCacheVersion = 5;
+/// "Indoors and outdoors").
+constexpr int EngineCacheVersion = 4;
 
 ContentHash scene_key(const SceneDescription& scene);
 ContentHash planes_key(const std::vector<SensorGrid>& grids);
