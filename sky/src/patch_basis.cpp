@@ -56,6 +56,10 @@ PatchBasis::PatchBasis(int mf) : m_mf(mf) {
   m_bin_row.push_back(sky_rows);
   m_rows.push_back(cap);
   m_bin_count = next_bin;
+  for (int bin = 0; bin < m_bin_count; ++bin) {
+    const PatchBounds b = bounds(bin);
+    m_sampling.push_back({b, std::sin(b.altitude_min_rad), std::sin(b.altitude_max_rad)});
+  }
 }
 
 void PatchBasis::check_bin(int bin) const {
@@ -135,8 +139,10 @@ Vec3 PatchBasis::centre(int bin) const {
 }
 
 Vec3 PatchBasis::sample_direction(int bin, double u1, double u2) const {
-  const PatchBounds b = bounds(bin);
-  const double z0 = std::sin(b.altitude_min_rad), z1 = std::sin(b.altitude_max_rad);
+  check_bin(bin);
+  const SamplingBounds& s = m_sampling[static_cast<std::size_t>(bin)];
+  const PatchBounds& b = s.bounds;
+  const double z0 = s.sin_altitude_min, z1 = s.sin_altitude_max;
   const double z = z0 + u1 * (z1 - z0);
   const double az = b.azimuth_min_rad + u2 * (b.azimuth_max_rad - b.azimuth_min_rad);
   const double r = std::sqrt(std::max(0.0, 1.0 - z * z));

@@ -14,6 +14,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/distant_source.h"
+#include "dayphoton/engine/port_view.h"
 #include "dayphoton/engine/random.h"
 #include "dayphoton/metrics/annual_metrics.h"
 #include "dayphoton/metrics/occupancy.h"
@@ -181,6 +182,7 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
   for (const sky::SunRecord& s : suns) discs.add_sun_disc(s.direction, sky::SunHalfAngle_rad);
   const double weight = discs.size() ? discs[0].solid_angle_sr / (double(k) * k) : 0.0;
 
+  const double pad_m = engine::port_view_pad_m(scene, materials);
   RadianceMatrix result(sensors.size(), suns.size(), 3);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sensors.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
@@ -190,11 +192,15 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
         throw std::invalid_argument("direct sun: a sensor needs a finite position and a non-zero normal");
       const Vec3 normal = sensors[s].normal / len;
       const Vec3 origin = sensors[s].position + normal * scene.ray_epsilon_m();
+      const engine::PortView ports(scene, origin, pad_m);
       for (std::size_t i = 0; i < suns.size(); ++i) {
         Vec3 sum;
         // A disc wholly behind the sensor's plane contributes nothing (its angular radius
-        // is far below any cos margin that matters, checked per sample below anyway).
-        if (dot(suns[i].direction, normal) > -std::sin(sky::SunHalfAngle_rad)) {
+        // is far below any cos margin that matters, checked per sample below anyway), nor
+        // does one whose every ray misses every port (engine/port_view.h: each of its rays
+        // would have zero sky transmittance, so skipping them changes no value).
+        if (dot(suns[i].direction, normal) > -std::sin(sky::SunHalfAngle_rad) &&
+            ports.may_cross_port(suns[i].direction, sky::SunHalfAngle_rad)) {
           engine::Rng rng(seed, suns[i].step, s, engine::RandomStream::Direct);
           for (int a = 0; a < k; ++a)
             for (int b = 0; b < k; ++b) {

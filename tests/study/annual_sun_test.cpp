@@ -15,8 +15,10 @@
 
 #include "../engine/test_scenes.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/engine/port_emission.h"
+#include "dayphoton/engine/random.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sun_bins.h"
 #include "dayphoton/metrics/annual_metrics.h"
@@ -158,6 +160,67 @@ TEST(DirectSun, EachSunsRaysDependOnItsStepOnlyAndNotOnThreads) {
   double lit = 0;
   for (float v : all.data()) lit += v;
   EXPECT_GT(lit, 0.0);  // some sensors are in the sun
+}
+
+TEST(DirectSun, SkippingDiscsThatMissThePortsChangesNoValue) {
+  // direct_sun_coefficients skips a disc whose every ray misses every port (engine/port_view.h).
+  // Against the plain loop (every sample's sky_transmittance, same strata and numbers) over
+  // suns all around the sky, sensors near and far from the window, facing up and toward it,
+  // in the office with an overhang outside (rays through the window that are then blocked):
+  // every value must be identical, and most discs must be skipped for the test to mean
+  // anything (counted as the zero rows of the plain loop, which the skip must reproduce).
+  SceneDescription d = engine::test::office_room();
+  engine::test::add_surface(d, "overhang", 1, {{0, 0, 2.6}, {6, 0, 2.6}, {6, -1, 2.6}, {0, -1, 2.6}});
+  const engine::Scene scene = engine::Scene::build(d);
+  const std::vector<engine::Material> materials = models_of(d);
+  std::vector<SensorPoint> sensors;
+  for (double y : {0.05, 0.5, 2.0, 6.0})
+    for (double x : {0.5, 1.02, 3.0}) {
+      sensors.push_back({{x, y, 0.8}, {0, 0, 1}});
+      sensors.push_back({{x, y, 1.5}, {0, -1, 0}});
+    }
+  std::vector<sky::SunRecord> suns;
+  for (int alt = 2; alt < 90; alt += 6)
+    for (int az = 0; az < 360; az += 9) {
+      sky::SunRecord r;
+      r.step = suns.size();
+      r.direction = from_angles(alt, az);
+      r.disc_radiance = 1;
+      suns.push_back(r);
+    }
+  const RadianceMatrix fast = direct_sun_coefficients(scene, materials, sensors, suns, SunDirectSamples, 3);
+  // The plain loop, as direct_sun_coefficients is documented (annual_sun.h).
+  const engine::SourceSet discs = [&] {
+    engine::SourceSet s;
+    for (const sky::SunRecord& r : suns) s.add_sun_disc(r.direction, sky::SunHalfAngle_rad);
+    return s;
+  }();
+  const int k = 4;  // SunDirectSamples = 16 = k^2
+  ASSERT_EQ(SunDirectSamples, k * k);
+  const double weight = discs[0].solid_angle_sr / (k * k);
+  std::size_t lit = 0, dark = 0;
+  for (std::size_t s = 0; s < sensors.size(); ++s) {
+    const Vec3 n = sensors[s].normal;
+    const Vec3 origin = sensors[s].position + n * scene.ray_epsilon_m();
+    for (std::size_t i = 0; i < suns.size(); ++i) {
+      Vec3 sum;
+      if (dot(suns[i].direction, n) > -std::sin(sky::SunHalfAngle_rad)) {
+        engine::Rng rng(3, suns[i].step, s, engine::RandomStream::Direct);
+        for (int a = 0; a < k; ++a)
+          for (int b = 0; b < k; ++b) {
+            const double u1 = std::min((a + rng.uniform()) / k, 0x1.fffffffffffffp-1);
+            const double u2 = std::min((b + rng.uniform()) / k, 0x1.fffffffffffffp-1);
+            const Vec3 w = discs.sample_direction(i, u1, u2);
+            const double c = dot(w, n);
+            if (c > 0.0) sum += engine::sky_transmittance(scene, materials, origin, w) * c;
+          }
+      }
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(fast.at(s, i, c), static_cast<float>(sum[c] * weight)) << s << " " << i;
+      (sum.y > 0 ? lit : dark)++;
+    }
+  }
+  EXPECT_GT(lit, 100u);
+  EXPECT_GT(dark, 5 * lit);
 }
 
 TEST(AnnualSunTables, HourlyTablesAndTheAnnualStudyAddUpByHand) {

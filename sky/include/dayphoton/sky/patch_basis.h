@@ -85,6 +85,13 @@ class PatchBasis {
   double m_row_height_rad = 0.0;
   std::vector<PatchRow> m_rows;
   std::vector<int> m_bin_row;  ///< row of each bin (-1 for ground)
+  /// Per bin: bounds(bin) and the sines of its altitude limits, so that sample_direction (on
+  /// every photon emission) needs no sine but the azimuth's.
+  struct SamplingBounds {
+    PatchBounds bounds;
+    double sin_altitude_min = 0, sin_altitude_max = 0;
+  };
+  std::vector<SamplingBounds> m_sampling;
 };
 
 }  // namespace dayphoton::sky
