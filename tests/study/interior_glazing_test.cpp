@@ -40,6 +40,7 @@
 #include <string>
 #include <vector>
 
+#include "fresh_run.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/distant_source.h"
@@ -334,12 +335,7 @@ TEST(InteriorGlazing, CorridorDaylightFactorEqualsOneRoomWithAGlassPartition) {
   for (int model = 0; model < 2; ++model)
     for (int r = 0; r < Replicates; ++r) {
       const fs::path out = fs::path(::testing::TempDir()) / ("interior_glazing_" + std::to_string(model) + "_" + std::to_string(r));
-      fs::remove_all(out);
-      RunSettings settings;
-      settings.output_dir = out.string();
-      std::ostringstream quiet;
-      Progress progress(quiet, ProgressStyle::Quiet);
-      run_study(df_project(model == 1, 1 + static_cast<unsigned long long>(r)), settings, progress);
+      dayphoton::test::run_in_fresh_folder(df_project(model == 1, 1 + static_cast<unsigned long long>(r)), out);
       office[model].push_back(grid_mean(read_df(out / "office" / "daylight_factor.csv")));
       corridor[model].push_back(grid_mean(read_df(out / "corridor" / "daylight_factor.csv")));
       fs::remove_all(out);
