@@ -15,7 +15,7 @@ direction's patch (propagation-direction rule) and side give
 The result is a plausible blind BSDF for tests and examples, not a measured product: its
 statistical noise is that of RAYS rays per patch, and T + R = 1 - absorbed exactly per ray.
 
-Usage: python3 scripts/make_blind_bsdf.py > tests/data/bsdf/blind_45deg.xml
+Usage: python3 scripts/make_blind_bsdf.py > projects/bsdf_blind/blind_45deg.xml
 (the committed file was written with the defaults below; deterministic: fixed seed).
 """
 import math

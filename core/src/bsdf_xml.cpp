@@ -21,6 +21,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/input_file.h"
+#include "dayphoton/core/sha256.h"
 #include "dayphoton/core/units.h"
 
 namespace dayphoton {
@@ -264,6 +265,7 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml(const std::string& path, cons
 
   auto data = std::make_shared<KlemsBsdfData>();
   data->file = shown_as;
+  data->content_sha256 = sha256_hex(r.text());
   const char* const direction_names[] = {"Transmission Front", "Transmission Back", "Reflection Front",
                                          "Reflection Back"};
   std::vector<double>* matrices[] = {&data->transmission_front, &data->transmission_back, &data->reflection_front,

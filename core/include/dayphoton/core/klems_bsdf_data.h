@@ -35,6 +35,7 @@ constexpr double BsdfAlbedoTolerance = 0.01;
 
 struct KlemsBsdfData {
   std::string file;  ///< the file as written in the project (for messages)
+  std::string content_sha256;  ///< of the file's bytes (for cache keys)
   KlemsBasis basis;
   std::vector<double> transmission_front, transmission_back, reflection_front, reflection_back;
 
