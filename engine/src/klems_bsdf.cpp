@@ -114,4 +114,14 @@ double KlemsBsdf::albedo(const Vec3& incoming, const Vec3& normal) const {
   return m_cumulative[side][i * 2 * n + 2 * n - 1];
 }
 
+double KlemsBsdf::transmittance(const Vec3& incoming, const Vec3& normal) const {
+  const Frame f = frame(normal);
+  const Vec3 d = f.to_local(incoming);
+  const int side = side_of(d);
+  if (side < 0) return 0.0;
+  const std::size_t n = static_cast<std::size_t>(m_n);
+  const std::size_t i = static_cast<std::size_t>(m_data->basis.patch(d));
+  return m_cumulative[side][i * 2 * n + n - 1];
+}
+
 }  // namespace dayphoton::engine

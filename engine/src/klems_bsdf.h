@@ -46,6 +46,8 @@ class KlemsBsdf {
   double eval(const Vec3& incoming, const Vec3& outgoing, const Vec3& normal) const;
   double pdf(const Vec3& incoming, const Vec3& outgoing, const Vec3& normal) const;
   double albedo(const Vec3& incoming, const Vec3& normal) const;
+  /// The transmitted part of albedo(): sum_j T(i, j) Lambda_j of the side hit.
+  double transmittance(const Vec3& incoming, const Vec3& normal) const;
 
   const KlemsBsdfData& data() const { return *m_data; }
 
