@@ -72,6 +72,8 @@ TEST(KlemsBsdf, FurnaceAlbedoIsTheMatrixSumOfTheSideHit) {
         const double expected = front ? d->hemispherical(d->transmission_front, i) + d->hemispherical(d->reflection_front, i)
                                       : d->hemispherical(d->transmission_back, i) + d->hemispherical(d->reflection_back, i);
         EXPECT_NEAR(m.albedo(in, Normal), expected, 1e-12) << theta << " " << phi << " " << back;
+        EXPECT_NEAR(m.transmittance(in, Normal),
+                    d->hemispherical(front ? d->transmission_front : d->transmission_back, i), 1e-12);
         EXPECT_LT(m.albedo(in, Normal), 1.0);
         EXPECT_NEAR(lambertian.albedo(in, Normal), front ? 0.85 : 0.6, 1e-12);
         // And the same sum through eval() at a direction inside every outgoing patch.
