@@ -165,7 +165,6 @@ struct Block {
 void read_values(Reader& r, const pugi::xml_node& data, int n, bool rows_are_incoming, std::vector<double>& values) {
   const pugi::xml_node text_node = data.first_child();
   const std::size_t expected = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-  values.assign(expected, 0.0);
   if (!text_node || (text_node.type() != pugi::node_pcdata && text_node.type() != pugi::node_cdata)) {
     r.error(data, "<ScatteringData> holds no values (" + std::to_string(expected) + " expected: " +
                       std::to_string(n) + " x " + std::to_string(n) + ")");
@@ -173,37 +172,47 @@ void read_values(Reader& r, const pugi::xml_node& data, int n, bool rows_are_inc
   }
   const std::string_view text = text_node.value();
   const std::ptrdiff_t base = text_node.offset_debug();
-  std::size_t count = 0, i = 0;
   auto separator = [](char c) { return std::isspace(static_cast<unsigned char>(c)) || c == ','; };
+  // Count first, so that a short text claiming a large basis allocates nothing.
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < text.size();) {
+    while (i < text.size() && separator(text[i])) ++i;
+    if (i >= text.size()) break;
+    ++count;
+    while (i < text.size() && !separator(text[i])) ++i;
+  }
+  if (count != expected) {
+    r.error(data, "<ScatteringData> holds " + std::to_string(count) + " values, not " + std::to_string(expected) +
+                      " (" + std::to_string(n) + " x " + std::to_string(n) + " for the angle basis' " +
+                      std::to_string(n) + " patches)");
+    return;
+  }
+  values.assign(expected, 0.0);
+  count = 0;
+  std::size_t i = 0;
   while (i < text.size()) {
     while (i < text.size() && separator(text[i])) ++i;
     if (i >= text.size()) break;
     std::size_t j = i;
     while (j < text.size() && !separator(text[j])) ++j;
     const std::string token(text.substr(i, j - i));
-    if (count < expected) {
-      char* end = nullptr;
-      errno = 0;
-      const double v = std::strtod(token.c_str(), &end);
-      const SourceLocation loc = r.at_offset(base + static_cast<std::ptrdiff_t>(i));
-      if (*end != '\0' || token.empty())
-        r.error(loc, "BSDF value '" + token.substr(0, 40) + "' is not a number");
-      else if (!std::isfinite(v) || errno == ERANGE)
-        r.error(loc, "BSDF value '" + token.substr(0, 40) + "' is not finite");
-      else if (v < 0)
-        r.error(loc, "BSDF value " + token + " is negative (a BSDF is >= 0)");
-      const std::size_t row = count / static_cast<std::size_t>(n), column = count % static_cast<std::size_t>(n);
-      const std::size_t incoming = rows_are_incoming ? row : column, outgoing = rows_are_incoming ? column : row;
-      values[incoming * static_cast<std::size_t>(n) + outgoing] = v;
-    }
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(token.c_str(), &end);
+    const SourceLocation loc = r.at_offset(base + static_cast<std::ptrdiff_t>(i));
+    if (*end != '\0' || token.empty())
+      r.error(loc, "BSDF value '" + token.substr(0, 40) + "' is not a number");
+    else if (!std::isfinite(v) || errno == ERANGE)
+      r.error(loc, "BSDF value '" + token.substr(0, 40) + "' is not finite");
+    else if (v < 0)
+      r.error(loc, "BSDF value " + token.substr(0, 40) + " is negative (a BSDF is >= 0)");
+    const std::size_t row = count / static_cast<std::size_t>(n), column = count % static_cast<std::size_t>(n);
+    const std::size_t incoming = rows_are_incoming ? row : column, outgoing = rows_are_incoming ? column : row;
+    values[incoming * static_cast<std::size_t>(n) + outgoing] = v;
     ++count;
     i = j;
     if (r.diagnostics().at_cap()) return;
   }
-  if (count != expected)
-    r.error(data, "<ScatteringData> holds " + std::to_string(count) + " values, not " + std::to_string(expected) +
-                      " (" + std::to_string(n) + " x " + std::to_string(n) + " for the angle basis' " +
-                      std::to_string(n) + " patches)");
 }
 
 }  // namespace
@@ -216,7 +225,11 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml(const std::string& path, cons
     throw InputError(referenced_from, "BSDF file '" + shown_as + "' is " + std::to_string(size) +
                                           " bytes, more than the " + std::to_string(MaxBsdfFileBytes) +
                                           " a BSDF file may have");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return read_bsdf_xml_text(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()),
+                            shown_as);
+}
+
+std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const std::string& shown_as) {
   Reader r(shown_as, std::move(text));
 
   pugi::xml_document doc;
@@ -228,6 +241,7 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml(const std::string& path, cons
     throw InputError(loc, std::string("not well-formed XML: ") + parsed.description(), r.line_text(loc.line));
   }
   const pugi::xml_node root = doc.document_element();
+  if (!root) throw InputError(r.at_offset(0), "no XML element (an LBNL WINDOW / IGSDB BSDF file has <WindowElement>)");
   if (local_name(root) != "WindowElement")
     r.fail(root, "the root element is <" + std::string(local_name(root)) +
                      ">, not <WindowElement> (an LBNL WINDOW / IGSDB BSDF file)");

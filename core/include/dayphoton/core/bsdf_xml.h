@@ -24,11 +24,14 @@ namespace dayphoton {
 /// Largest BSDF file read (a Klems full file with solar and visible data is ~2 MB).
 constexpr std::uint64_t MaxBsdfFileBytes = 256ULL << 20;
 /// Most patches an angle basis may have (the Klems full basis has 145).
-constexpr int MaxKlemsPatches = 2048;
+constexpr int MaxKlemsPatches = 1024;
 
 /// Read `path` (opened as given). `shown_as` is the name errors print (the path as written
 /// in the project); `referenced_from` locates "file not found". Throws InputError.
 std::shared_ptr<const KlemsBsdfData> read_bsdf_xml(const std::string& path, const std::string& shown_as,
                                                    const SourceLocation& referenced_from);
+
+/// The same from the file's text (the fuzz harness; errors name `shown_as`).
+std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const std::string& shown_as);
 
 }  // namespace dayphoton
