@@ -9,6 +9,7 @@
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/engine/material_registry.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sensor_support.h"
@@ -109,10 +110,13 @@ std::string describe_pane(const GlazingPaneSpec& p) {
 // Glass and glazing (and openings with a window's frame and maintenance factors): the
 // transmittance for light from outside at the listed angles, with the window's factors.
 void describe_glazing(const MaterialSpec& spec, MaterialArea& out) {
+  const bool registered_glazing =
+      spec.type == MaterialType::Registered && engine::material_model_of(spec).takes_transmittance_factor;
   const bool glazed = spec.type == MaterialType::Glass || spec.type == MaterialType::Glazing ||
-                      (spec.type == MaterialType::Opening && spec.transmittance_factor != 1.0);
+                      (spec.type == MaterialType::Opening && spec.transmittance_factor != 1.0) ||
+                      registered_glazing;
   if (!glazed) return;
-  out.glazing = material_type_name(spec.type);
+  out.glazing = registered_glazing ? spec.model : material_type_name(spec.type);
   if (spec.type == MaterialType::Glazing)
     out.glazing += ", " + std::to_string(spec.panes.size()) + (spec.panes.size() == 1 ? " pane" : " panes");
   if (spec.transmittance_factor != 1.0) out.glazing += ", x " + format_number(spec.transmittance_factor);
@@ -148,6 +152,10 @@ ModelSummary summarize_model(const project::Project& proj) {
     s.materials[i].name = spec.name;
     s.materials[i].type = material_type_as_written(spec);
     describe_glazing(spec, s.materials[i]);
+    if (spec.type == MaterialType::Registered) {
+      const engine::MaterialModelEntry& model = engine::material_model_of(spec);
+      if (model.summary) s.materials[i].description = model.summary(spec);
+    }
   }
   s.surface_count = s.scene.surfaces.size();
   for (const Surface& surface : s.scene.surfaces) {
@@ -280,7 +288,8 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
       << std::right << std::setw(9) << "surfaces" << std::setw(12) << "area_m2" << '\n';
   for (const MaterialArea& m : s.materials)
     out << "  " << std::left << std::setw(name_width) << m.name << std::setw(13) << m.type << std::right
-        << std::setw(9) << m.surfaces << std::setw(12) << fixed(m.area_m2, 2) << '\n';
+        << std::setw(9) << m.surfaces << std::setw(12) << fixed(m.area_m2, 2) << '\n'
+        << (m.description.empty() ? "" : "    " + m.description + "\n");
   bool glazing_header = false;
   for (const MaterialArea& m : s.materials) {
     if (m.transmittance.empty()) continue;

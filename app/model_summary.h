@@ -25,6 +25,8 @@ struct MaterialArea {
   std::vector<double> transmittance;
   /// Glazing: one line per pane (thickness, normal transmittance or absorption, index, coating).
   std::vector<std::string> panes;
+  /// A registered material model's summary line (its registry entry's `summary`), or empty.
+  std::string description;
 };
 
 /// Angles of incidence at which `check` lists each glazing's transmittance.

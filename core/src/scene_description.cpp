@@ -12,12 +12,15 @@ const char* material_type_name(MaterialType type) {
     case MaterialType::Translucent: return "translucent";
     case MaterialType::Opening: return "opening";
     case MaterialType::Glazing: return "glazing";
+    case MaterialType::Registered: return "registered";
   }
   return "unknown";
 }
 
 std::string material_type_as_written(const MaterialSpec& material) {
-  return material.type_as_written.empty() ? material_type_name(material.type) : material.type_as_written;
+  if (!material.type_as_written.empty()) return material.type_as_written;
+  if (material.type == MaterialType::Registered) return material.model;
+  return material_type_name(material.type);
 }
 
 const char* port_facing_name(PortFacing facing) {

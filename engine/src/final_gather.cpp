@@ -200,14 +200,14 @@ void gather_path(const Scene& scene, const std::vector<Material>& materials, con
     // landed on it straight from the sources); anything else blocks the sky.
     if ((through_port && hit->scatterer < 0) || event > options.max_specular_events) return;
     const Material& material = materials[static_cast<std::size_t>(hit->material)];
-    if (!hit->front_face && material.type() == MaterialType::Dielectric) {
+    if (!hit->front_face && material.absorbs_inside()) {
       const Vec3 tpm = material.interior_transmittance_per_m();
       weight = mul(weight, {std::pow(tpm.x, hit->t), std::pow(tpm.y, hit->t), std::pow(tpm.z, hit->t)});
     }
     // The side the gather ray arrives on: light reflected toward the sensor leaves from there.
     const Vec3 side = hit->front_face ? hit->normal : hit->normal * -1.0;
-    const Vec3 rho_d = diffuse_reflectance(material.spec());
-    const Vec3 tau_d = diffuse_transmittance(material.spec());
+    const Vec3 rho_d = material.diffuse_reflectance();
+    const Vec3 tau_d = material.diffuse_transmittance();
     if (max_component(rho_d) > 0)
       add_contributions(map, hit->position, side, options.bandwidth, mul(weight, rho_d), sums.found, sums.global,
                         sums.variance);

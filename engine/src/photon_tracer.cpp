@@ -187,7 +187,7 @@ bool trace_path(const Scene& scene, const std::vector<Material>& materials,
     }
     if (!hit) return was_indoors;
     const Material& material = materials[static_cast<std::size_t>(hit->material)];
-    if (!hit->front_face && material.type() == MaterialType::Dielectric) {
+    if (!hit->front_face && material.absorbs_inside()) {
       // The segment ran inside the dielectric: Beer-Lambert attenuation per metre.
       const Vec3 tpm = material.interior_transmittance_per_m();
       flux = mul(flux, {std::pow(tpm.x, hit->t), std::pow(tpm.y, hit->t), std::pow(tpm.z, hit->t)});

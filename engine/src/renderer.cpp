@@ -180,15 +180,15 @@ Vec3 PhotonRenderer::radiance(const Ray& first, Rng& rng) const {
       break;
     }
     const Material& material = (*m_materials)[static_cast<std::size_t>(hit->material)];
-    if (!hit->front_face && material.type() == MaterialType::Dielectric) {
+    if (!hit->front_face && material.absorbs_inside()) {
       // The segment ran inside the dielectric: Beer-Lambert, as the photon tracer does.
       const Vec3 tpm = material.interior_transmittance_per_m();
       throughput = mul(throughput, {std::pow(tpm.x, hit->t), std::pow(tpm.y, hit->t), std::pow(tpm.z, hit->t)});
     }
     // The side the ray arrives on: reflected light leaves toward the camera from there.
     const Vec3 side = hit->front_face ? hit->normal : hit->normal * -1.0;
-    const Vec3 rho_d = diffuse_reflectance(material.spec());
-    const Vec3 tau_d = diffuse_transmittance(material.spec());
+    const Vec3 rho_d = material.diffuse_reflectance();
+    const Vec3 tau_d = material.diffuse_transmittance();
     if (max_component(rho_d) > 0)
       result += mul(mul(throughput, rho_d), surface_irradiance(hit->position, side, rng)) * (1.0 / Pi);
     if (max_component(tau_d) > 0)

@@ -24,6 +24,7 @@
 #include "dayphoton/project/honeybee_model.h"
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/core/input_file.h"
+#include "dayphoton/engine/material_registry.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/project/project_schema.h"
 #include "dayphoton/project/site_geodesy.h"
@@ -497,10 +498,43 @@ class Loader {
       r.read_rgb("transmittance", m.transmittance);
     } else if (type == "opening") {
       m.type = MaterialType::Opening;
+    } else if (const engine::MaterialModelEntry* model = engine::find_material_model(type); model && model->parse) {
+      // A registered model reads its own keys (material_registry.h).
+      m.type = MaterialType::Registered;
+      m.model = type;
+      MaterialKeys keys(r, *this);
+      m.parameters = model->parse(keys, m);
+      r.finish();
+      return m.parameters != nullptr;
     }
     r.finish();
     return true;
   }
+
+  /// A registered material model's view of its map (engine::MaterialKeyReader): the
+  /// loader's own reader, so that its keys are checked and located like every other key.
+  class MaterialKeys final : public engine::MaterialKeyReader {
+   public:
+    MaterialKeys(ParamReader& reader, Loader& loader) : m_reader(reader), m_loader(loader) {}
+    bool has(const std::string& key) const override { return m_reader.has(key); }
+    bool read_number(const std::string& key, double& out) override { return m_reader.read_number(key, out); }
+    bool read_rgb(const std::string& key, Vec3& out) override { return m_reader.read_rgb(key, out); }
+    bool read_string(const std::string& key, std::string& out) override { return m_reader.read_string(key, out); }
+    bool read_path(const std::string& key, std::string& resolved_path) override {
+      std::string written;
+      if (!m_reader.has(key)) return m_reader.read_string(key, written);  // reports it if required
+      if (!m_reader.read_string(key, written)) return false;
+      return m_loader.existing_file(key, written, m_reader.location_of(key), resolved_path);
+    }
+    SourceLocation location_of(const std::string& key) const override { return m_reader.location_of(key); }
+    void error(const SourceLocation& at, const std::string& message) override {
+      m_reader.reporter().error(at, message);
+    }
+
+   private:
+    ParamReader& m_reader;
+    Loader& m_loader;
+  };
 
   /// One pane of a glazing: exactly one of transmittance, absorption (with thickness) and
   /// coating; a coated pane's optics are its coating's, so it takes no refractive index.

@@ -10,6 +10,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/resource_limits.h"
+#include "dayphoton/engine/material_registry.h"
 
 namespace dayphoton::project {
 
@@ -36,12 +37,37 @@ struct P {
 
 using T = ParamType;
 
-const std::vector<std::string> MaterialTypes = {"lambertian", "plastic", "metal", "mirror",
-                                                "glass", "glazing", "dielectric", "translucent",
-                                                "opening"};
+// The built-in material types, then the models registered after them (material_registry.h).
+std::vector<std::string> material_types() {
+  std::vector<std::string> types = {"lambertian", "plastic", "metal", "mirror", "glass",
+                                    "glazing", "dielectric", "translucent", "opening"};
+  for (const engine::MaterialModelEntry& e : engine::material_models())
+    if (e.parse) types.push_back(e.type_name);
+  return types;
+}
 
 ParamSchema material_type() {
-  return P("type", T::Choice, "material model").required().choices(MaterialTypes);
+  return P("type", T::Choice, "material model").required().choices(material_types());
+}
+
+// A registered material model's keys, from its registry entry.
+SectionSchema registered_material_section(const engine::MaterialModelEntry& e) {
+  SectionSchema section{e.type_name + " material", e.help, {material_type()}};
+  for (const engine::MaterialParameterSchema& k : e.parameters) {
+    using Kind = engine::MaterialParameterSchema::Kind;
+    const ParamType type = k.kind == Kind::Number ? T::Number
+                           : k.kind == Kind::Rgb  ? T::Rgb
+                           : k.kind == Kind::Path ? T::Path
+                                                  : T::String;
+    P p(k.key, type, k.help);
+    p.unit(k.unit);
+    p.s.min = k.min;
+    p.s.max = k.max;
+    if (k.required) p.required();
+    if (!k.default_text.empty()) p.def(k.default_text);
+    section.params.push_back(p);
+  }
+  return section;
 }
 ParamSchema reflectance(const char* help) {
   return P("reflectance", T::Rgb, help).range(0, 1).required();
@@ -160,6 +186,8 @@ std::vector<SectionSchema> build_schema() {
   s.push_back({"opening material", "fully transparent aperture: an open window or an invisible photon port", {
       material_type(),
   }});
+  for (const engine::MaterialModelEntry& e : engine::material_models())
+    if (e.parse) s.push_back(registered_material_section(e));
   s.push_back({"geometry", "the building and its surroundings (model coordinates, metres)", {
       P("rooms", T::SectionList, "box-shaped rooms with windows").section("room"),
       P("polygons", T::SectionList, "planar polygons").section("polygon"),

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "dayphoton/engine/material_registry.h"
 #include "geometry_generators.h"
 
 namespace dayphoton::project::detail {
@@ -42,8 +43,9 @@ int window_material(const WindowSpec& w, const std::string& what, MaterialLookup
     return -1;
   }
   const MaterialSpec& spec = materials.spec(index);
-  const MaterialType t = spec.type;
-  if (t != MaterialType::Glass && t != MaterialType::Glazing && t != MaterialType::Opening) {
+  const engine::MaterialModelEntry* model = engine::find_material_model(
+      spec.type == MaterialType::Registered ? spec.model : material_type_name(spec.type));
+  if (!model || !model->takes_transmittance_factor) {
     report(diag, w.location,
            what + ": frame_factor and maintenance_factor scale straight-through transmission; material '" +
                w.material + "' is " + material_type_as_written(spec) + " (use glass, glazing or opening)");

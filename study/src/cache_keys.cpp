@@ -2,6 +2,8 @@
 // source locations (which do not change results) are not.
 #include "dayphoton/study/cache_keys.h"
 
+#include "dayphoton/engine/material_registry.h"
+
 namespace dayphoton::study {
 
 ContentHash scene_key(const SceneDescription& scene) {
@@ -20,6 +22,13 @@ ContentHash scene_key(const SceneDescription& scene) {
       }
     }
     if (m.transmittance_factor != 1.0) h.text("transmittance factor").number(m.transmittance_factor);
+    // A registered model's own parameters, as its registry entry writes them.
+    if (m.type == MaterialType::Registered) {
+      std::string parameters;
+      const engine::MaterialModelEntry& model = engine::material_model_of(m);
+      if (model.cache_key) model.cache_key(m, parameters);
+      h.text("model").text(m.model).text(parameters);
+    }
   }
   h.integer(static_cast<std::int64_t>(scene.surfaces.size()));
   for (const Surface& s : scene.surfaces) {

@@ -6,6 +6,7 @@
 // that errors found later (e.g. by geometry validation) can still name the input line.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,10 @@ enum class MaterialType {
   Translucent,  ///< RADIANCE trans: plastic with diffuse/specular transmission
   Opening,      ///< fully transparent aperture (an "invisible" photon port); no scattering
   Glazing,      ///< glazing system: panes combined by the multi-layer formulas (docs/materials.md)
+  /// Any other model: named by MaterialSpec::model, its parameters in
+  /// MaterialSpec::parameters, everything else from its entry in the material registry
+  /// (engine/material_registry.h). New models use this; they add nothing to this enum.
+  Registered,
 };
 
 /// Name used in project files and messages ("lambertian", "metal", ...).
@@ -53,6 +58,17 @@ struct GlazingPaneSpec {
   bool coating_on_inner_face = false;
 };
 
+/// The parameters of a MaterialType::Registered model, as its registry entry's parser made
+/// them from the project file. Each model derives its own struct from this one and reads it
+/// back with dynamic_cast in its factory; immutable once made (shared by copies of a spec).
+struct MaterialParameters {
+  virtual ~MaterialParameters() = default;
+};
+
+/// A scene material. The built-in models (every MaterialType but Registered) keep their
+/// parameters in the flat fields below, which several of them share; a registered model
+/// keeps its own in `parameters`. The fields common to every model are the name, the type,
+/// the location and `transmittance_factor`.
 struct MaterialSpec {
   std::string name;
   MaterialType type = MaterialType::Lambertian;
@@ -83,6 +99,11 @@ struct MaterialSpec {
   /// The type as the project file wrote it when it differs from material_type_name(type)
   /// ("plastic" is a Lambertian with a specular lobe); empty otherwise.
   std::string type_as_written;
+  /// MaterialType::Registered: the model's type name in the material registry (as the
+  /// project file writes it); empty for the built-in models.
+  std::string model;
+  /// MaterialType::Registered: the model's parameters, made by its registry entry's parser.
+  std::shared_ptr<const MaterialParameters> parameters;
 };
 
 /// Which side of a port is the room (the engine's Port::normal points into it).
@@ -151,7 +172,7 @@ struct SensorGrid {
 };
 
 /// The type as the project file wrote it ("plastic"), for messages: type_as_written, or
-/// material_type_name(type) when that is empty.
+/// `model` for a registered model, or material_type_name(type).
 std::string material_type_as_written(const MaterialSpec& material);
 
 struct SceneDescription {

@@ -1,41 +1,12 @@
-// Material: the scattering models photons and shadow rays meet (DESIGN.md section 5), built
-// from a MaterialSpec (core/scene_description.h). Each model offers sample / eval / pdf /
-// albedo so that tests can check sampling against evaluation (chi-square, sample/pdf
-// consistency, energy <= 1, reciprocity). Models, parameters, formulas and their RADIANCE
-// counterparts: docs/materials.md. Implementation: engine/src/material.cpp, with
-// fresnel.h, thin_glass_fresnel.h and ward_lobe.h.
-//
-// Direction conventions (the photon tracer's view):
-//   - `incoming` is the PROPAGATION direction of the arriving light (it points at the
-//     surface), unit length;
-//   - `outgoing` is the propagation direction after scattering, unit length;
-//   - `normal` is the surface's geometric normal as in Hit::normal (either side). A hit is
-//     on the front side when dot(incoming, normal) < 0. Reflecting models (Lambertian,
-//     plastic, metal, mirror, translucent) are two-sided: a back-side hit behaves like a
-//     front-side hit with the normal flipped, as in RADIANCE. Thin glass is symmetric; a
-//     glazing system transmits the same both ways but reflects with the side's own
-//     reflectance (pane 1 faces the side the normal points away from).
-//     Dielectric is not: the front side is outside (index 1), the back side inside (index n).
-//
-// eval(incoming, outgoing, normal) returns the BSDF f (1/sr, per RGB channel) of the
-// non-delta components only; pdf() the density (per sr) with which sample() produces
-// `outgoing` through those components, component-selection probability included. For a
-// non-delta sample, weight == eval * |dot(outgoing, normal)| / pdf (the consistency the
-// tests check). Delta events (mirror, smooth specular, glass, refraction, straight
-// transmission) are flagged and covered only by sample(). eval() is reciprocal in
-// propagation-direction form: eval(a, b, n) == eval(-b, -a, n).
-//
-// Component selection: sample() picks a component (diffuse / specular reflection, diffuse /
-// specular transmission) with probability proportional to the mean over RGB of its albedo at
-// this incidence, so that E[weight] = albedo per channel and, for white light, the photon
-// survives Russian roulette with probability equal to the mean albedo. Glossy (Ward) lobes
-// sample the half vector and absorb directions that fall below the surface (sample() returns
-// nothing), which is how their albedo falls below the specular reflectance.
-//
-// Analogue photon transport (seeds/000 section 3.1.1.2; digest section 2.1.4): the tracer
-// multiplies the photon's RGB flux by `weight`, then plays Russian roulette with survival
-// probability P = mean(flux * weight) / mean(flux) and divides the survivor by P, which
-// keeps the flux constant and stays unbiased for coloured light.
+// Material: the value the tracers hold for each scene material: the MaterialSpec it was
+// built from and its scattering model (material_model.h, the interface every model
+// implements; the models are chosen by type name in material_registry.h). Each model offers
+// sample / eval / pdf / albedo so that tests can check sampling against evaluation
+// (chi-square, sample/pdf consistency, energy <= 1, reciprocity). Models, parameters,
+// formulas and their RADIANCE counterparts: docs/materials.md. The built-in models are in
+// engine/src/*_material.cpp, with fresnel.h, thin_glass_fresnel.h, glazing_system.h and
+// ward_lobe.h. The direction conventions and the sampling contract are written once, in
+// material_model.h.
 #pragma once
 
 #include <cstdint>
@@ -44,34 +15,9 @@
 
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/core/vec3.h"
+#include "dayphoton/engine/material_model.h"
 
 namespace dayphoton::engine {
-
-/// What a scattering event did. The photon tracer's path classes (caustic / global) and the
-/// direct component's shadow rays are decided from it.
-enum class ScatterType : std::uint8_t {
-  DiffuseReflection,     ///< Lambertian reflection
-  GlossyReflection,      ///< rough specular lobe (counts as specular for caustics)
-  SpecularReflection,    ///< mirror-like, delta
-  DiffuseTransmission,   ///< Lambertian transmission (translucent)
-  GlossyTransmission,    ///< rough specular transmission (translucent)
-  SpecularTransmission,  ///< refraction through a dielectric interface, delta
-  StraightTransmission,  ///< unrefracted pass-through (thin glass, opening,
-                         ///< translucent's specular part), delta, direction unchanged
-};
-
-/// True for the diffuse events that turn a caustic path into a global one.
-inline bool is_diffuse(ScatterType t) {
-  return t == ScatterType::DiffuseReflection || t == ScatterType::DiffuseTransmission;
-}
-
-struct ScatterSample {
-  Vec3 direction;  ///< outgoing propagation direction, unit
-  Vec3 weight;     ///< per channel: f |cos| / pdf, or for delta events the component's
-                   ///< reflectance/transmittance divided by its selection probability
-  ScatterType type = ScatterType::DiffuseReflection;
-  bool delta = false;  ///< direction drawn from a delta distribution (not in eval/pdf)
-};
 
 class Material {
  public:
@@ -82,16 +28,16 @@ class Material {
   /// does each uncoated pane of a glazing. A transmittance factor other than 1 needs a
   /// glass, glazing or opening material.
   /// Glossy materials tabulate their lobe's albedo here (about 1 ms each).
+  /// The model is the factory registered for the spec's type name (material_registry.h).
   static Material from_spec(const MaterialSpec& spec);
 
-  Material(const Material&);
-  Material& operator=(const Material&);
-  Material(Material&&) noexcept;
-  Material& operator=(Material&&) noexcept;
-  ~Material();
+  /// A material from a model built elsewhere (tests, or a model not in the registry).
+  Material(MaterialSpec spec, std::shared_ptr<const MaterialModel> model);
 
   MaterialType type() const;
   const MaterialSpec& spec() const;
+  /// The scattering model; shared by the copies of this material (models are immutable).
+  const MaterialModel& model() const { return *m_model; }
 
   /// Sample a scattering event for light arriving along `incoming`, from three independent
   /// uniform numbers in [0, 1) (u_component picks the component, u1/u2 the direction).
@@ -128,14 +74,23 @@ class Material {
   /// Dielectric only: per-channel transmission per metre of path inside the material
   /// (the tracer attenuates segments that travel inside); (1, 1, 1) otherwise.
   Vec3 interior_transmittance_per_m() const;
+  /// True if interior_transmittance_per_m() is not (1, 1, 1): the tracers attenuate the
+  /// segments that end on this material's back side.
+  bool absorbs_inside() const;
+
+  /// The Lambertian parts of the reflection and the transmission, per channel
+  /// (MaterialModel::diffuse_reflectance / diffuse_transmittance).
+  Vec3 diffuse_reflectance() const;
+  Vec3 diffuse_transmittance() const;
 
  private:
-  struct Model;
-  explicit Material(std::unique_ptr<Model> model);
-  std::unique_ptr<Model> m_model;
+  MaterialSpec m_spec;
+  std::shared_ptr<const MaterialModel> m_model;
 };
 
-/// The Lambertian part of a material's reflection (RADIANCE's diffuse reflectance: the
+/// Built-in models, from the spec alone (Material::diffuse_reflectance() /
+/// diffuse_transmittance() serve every model, registered ones included):
+/// the Lambertian part of a material's reflection (RADIANCE's diffuse reflectance: the
 /// reflectance less its specular and transmitted fractions), per channel; zero for models
 /// without one (mirror, glass, dielectric, opening).
 Vec3 diffuse_reflectance(const MaterialSpec& spec);
