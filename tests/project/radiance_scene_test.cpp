@@ -131,7 +131,7 @@ TEST(RadianceScene, UnsupportedModifiersAreErrorsOrSkippedOnRequest) {
   const std::string text =
       "void brightfunc dirt 2 dirt dirt.cal 0 0\n"
       "dirt plastic dirty 0 0 5 .5 .5 .5 0 0\n"
-      "void BSDF blind 6 0 blind.xml 0 0 1 . 0 0\n"
+      "void plastic2 blind 4 0 0 1 . 0 6 .5 .5 .5 0 .1 .1\n"
       "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
       "dirty polygon a 0 0 9 0 0 0 1 0 0 0 1 0\n"
       "blind polygon b 0 0 9 0 0 0 1 0 0 0 1 0\n"
@@ -144,8 +144,8 @@ TEST(RadianceScene, UnsupportedModifiersAreErrorsOrSkippedOnRequest) {
                                  "'dirt': patterns"),
               std::string::npos)
         << diag.format();
-    EXPECT_NE(diag.format().find("scene.rad:6:1: error: polygon 'b': BSDF 'blind': measured BSDF not yet "
-                                 "supported (defined at scene.rad:3:11)"),
+    EXPECT_NE(diag.format().find("scene.rad:6:1: error: polygon 'b': plastic2 'blind': anisotropic reflection "
+                                 "is not modelled (use plastic, metal or trans) (defined at scene.rad:3:15)"),
               std::string::npos)
         << diag.format();
   }
@@ -155,7 +155,7 @@ TEST(RadianceScene, UnsupportedModifiersAreErrorsOrSkippedOnRequest) {
     EXPECT_FALSE(diag.has_errors()) << diag.format();
     ASSERT_EQ(scene.surfaces.size(), 1u);
     EXPECT_EQ(scene.surfaces[0].name, "c");
-    EXPECT_NE(diag.format().find("warning: polygon 'b': BSDF 'blind'"), std::string::npos) << diag.format();
+    EXPECT_NE(diag.format().find("warning: polygon 'b': plastic2 'blind'"), std::string::npos) << diag.format();
   }
 }
 
