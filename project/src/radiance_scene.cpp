@@ -517,7 +517,12 @@ class Reader {
     try {
       data = read_bsdf_xml(resolved, resolved, type.location);
     } catch (const InputError& e) {
-      for (const Diagnostic& d : e.diagnostics()) m_diag.error(d.location, d.message, d.source_line);
+      for (const Diagnostic& d : e.diagnostics()) {
+        if (d.source_line.empty())
+          error(d.location, d.message);  // at the modifier: its .rad line
+        else
+          m_diag.error(d.location, d.message, d.source_line);  // in the XML file
+      }
       return false;
     }
     const Vec3 up = m_transform.apply(r.bsdf_up) - m_transform.translate;
