@@ -66,10 +66,12 @@ std::shared_ptr<const MaterialModel> make_bsdf(const MaterialSpec& spec) {
 }
 
 std::shared_ptr<const MaterialParameters> parse_bsdf(MaterialKeyReader& r, const MaterialSpec& spec) {
+  // Every key is read before any early return, so none is reported as unknown.
   std::string path;
-  if (!r.read_path("file", path)) return nullptr;
+  const bool have_file = r.read_path("file", path);
   auto p = std::make_shared<BsdfMaterialParameters>();
   if (r.has("up") && !r.read_rgb("up", p->up)) return nullptr;
+  if (!have_file) return nullptr;
   if (!(length(p->up) > 0)) {
     r.error(r.location_of("up"), "material '" + spec.name + "': the up vector is zero");
     return nullptr;
