@@ -9,6 +9,7 @@
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/engine/bsdf_material.h"
 #include "dayphoton/engine/material_registry.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
@@ -123,6 +124,19 @@ void describe_glazing(const MaterialSpec& spec, MaterialArea& out) {
   // A window's derived material has its base glazing's panes, listed there.
   for (std::size_t i = 0; spec.transmittance_factor == 1.0 && i < spec.panes.size(); ++i)
     out.panes.push_back("pane " + std::to_string(i + 1) + ": " + describe_pane(spec.panes[i]));
+  if (const engine::BsdfMaterialParameters* bsdf = engine::bsdf_parameters(spec)) {
+    // A measured BSDF has no straight part: list its hemispherical transmittance from the
+    // front (outside) instead, for incidence in the plane of its local x axis (along the slats
+    // of a blind whose up vector is vertical).
+    out.glazing += " (hemispherical)";
+    const KlemsBsdfData& d = *bsdf->data;
+    for (double angle_deg : TransmittanceAnglesDeg) {
+      const double a = deg_to_rad(angle_deg);
+      const int patch = d.basis.patch({std::sin(a), 0, std::cos(a)});
+      out.transmittance.push_back(spec.transmittance_factor * d.hemispherical(d.transmission_front, patch));
+    }
+    return;
+  }
   const engine::Material model = engine::Material::from_spec(spec);
   // Pane 1 faces the side the normal points away from: light from outside travels along +n.
   const Vec3 normal{0, 0, 1};

@@ -9,6 +9,7 @@ packages=(
   cmake make g++ pkg-config
   libembree-dev libgeographiclib-dev libopenexr-dev libyaml-cpp-dev nlohmann-json3-dev
   libtbb-dev libcli11-dev libgtest-dev libpng-dev zlib1g-dev
+  libpugixml-dev  # BSDF XML files (docs/architecture.md)
   python3
   clang libfuzzer-14-dev  # the fuzz harnesses (scripts/fuzz.sh, docs/fuzzing.md)
   chromium  # headless browser of the report test (tests/report/)

@@ -21,6 +21,7 @@ MaterialModelEntry builtin(MaterialType type, std::shared_ptr<const MaterialMode
 
 // Entry functions of the models added after the built-ins, each defined in its own file
 // (engine/src/<model>_material.cpp). One declaration here, one line in the list below.
+MaterialModelEntry bsdf_material_entry();
 
 const std::vector<MaterialModelEntry>& material_models() {
   static const std::vector<MaterialModelEntry> models = {
@@ -33,6 +34,7 @@ const std::vector<MaterialModelEntry>& material_models() {
       builtin(MaterialType::Opening, &make_opening_material, true),
       builtin(MaterialType::Glazing, &make_glazing_material, true),
       // Registered models, one line each:
+      bsdf_material_entry(),
   };
   return models;
 }

@@ -13,8 +13,10 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/polygon.h"
+#include "dayphoton/engine/bsdf_material.h"
 #include "dayphoton/engine/port_facing.h"
 #include "embree_accel.h"
+#include "klems_bsdf.h"
 
 namespace dayphoton::engine {
 
@@ -52,6 +54,25 @@ Scene& Scene::operator=(Scene&&) noexcept = default;
 Scene::~Scene() = default;
 
 Scene Scene::build(const SceneDescription& description) {
+  Scene scene = build_surfaces(description);
+  // A measured BSDF's front (WINDOW's exterior) is the side its surface's normal points away
+  // from (docs/materials.md, "Measured BSDF (Klems)"); on a port that side must be outdoors,
+  // i.e. the port's room side must be the winding normal's.
+  Diagnostics diagnostics;
+  for (const Port& port : scene.ports().ports()) {
+    const Surface& s = scene.description().surfaces[static_cast<std::size_t>(port.surface)];
+    const MaterialSpec& m = scene.description().materials[static_cast<std::size_t>(s.material)];
+    if (port.against_winding && bsdf_parameters(m))
+      diagnostics.error(s.location, describe(s, static_cast<std::size_t>(port.surface)) + " is a port of BSDF material '" +
+                                        m.name + "' whose normal points out of the room, so the BSDF's front (WINDOW's "
+                                        "exterior side, the side the normal points away from) would face the room; "
+                                        "reverse the order of its vertices");
+  }
+  diagnostics.throw_if_errors();
+  return scene;
+}
+
+Scene Scene::build_surfaces(const SceneDescription& description) {
   // Port candidates (Surface::port_if_outdoors): build once with every candidate a port
   // facing auto, keep those whose facing test found the sky on one side, and build again
   // with those as ports and the others as ordinary surfaces.
@@ -66,7 +87,7 @@ Scene Scene::build(const SceneDescription& description) {
         s.port = true;
         s.facing = PortFacing::Auto;
       }
-    const Scene tested = build(trial);
+    const Scene tested = build_surfaces(trial);
     SceneDescription resolved = description;
     for (const Port& port : tested.ports().ports()) {
       Surface& s = resolved.surfaces[static_cast<std::size_t>(port.surface)];
@@ -76,7 +97,7 @@ Scene Scene::build(const SceneDescription& description) {
       s.solid_face = false;
     }
     for (Surface& s : resolved.surfaces) s.port_if_outdoors = false;
-    return build(resolved);
+    return build_surfaces(resolved);
   }
   auto impl = std::make_unique<Impl>();
   impl->description = description;
@@ -134,6 +155,18 @@ Scene Scene::build(const SceneDescription& description) {
         << " m^2 (collinear or repeated vertices?)";
       diagnostics.error(s.location, m.str());
       continue;
+    }
+    if (s.material >= 0 && s.material < material_count) {
+      const MaterialSpec& m = impl->description.materials[static_cast<std::size_t>(s.material)];
+      if (const BsdfMaterialParameters* bsdf = bsdf_parameters(m);
+          bsdf && !KlemsBsdf::frame_defined(bsdf->up, polygon_normal(s.vertices))) {
+        std::ostringstream msg;
+        msg << what << ": the up vector (" << bsdf->up.x << ", " << bsdf->up.y << ", " << bsdf->up.z
+            << ") of its BSDF material '" << m.name
+            << "' is parallel to the surface's normal, which leaves the BSDF's orientation undefined; give the "
+               "material an 'up' along the surface (e.g. [0, 1, 0] on a horizontal one)";
+        diagnostics.error(s.location, msg.str());
+      }
     }
     try {
       triangulation[i] = triangulate_polygon(s.vertices);

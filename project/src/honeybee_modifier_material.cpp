@@ -15,6 +15,13 @@ bool honeybee_modifier_material(const RadianceModifier& modifier, const SourceLo
   const RadianceMaterialResult result = radiance_material(modifier.type, modifier.identifier, modifier.args);
   switch (result.role) {
     case RadianceModifierRole::Material:
+      if (!result.bsdf_file.empty()) {
+        // Honeybee carries a BSDF's XML inline (bsdf_data), not as a file beside the model.
+        diag.error(at, what + ": BSDF modifiers of Honeybee models are not supported yet; give the window a "
+                              "project material of type bsdf with the XML file instead",
+                   read_source_line(at.file, at.line));
+        return false;
+      }
       out = result.material;
       out.location = at;
       return true;

@@ -3,6 +3,7 @@
 // and radiance_material.cpp's; this file decides the materials' final indices and the ports.
 #include <algorithm>
 
+#include "dayphoton/engine/bsdf_material.h"
 #include "dayphoton/project/radiance_scene.h"
 #include "geometry_generators.h"
 
@@ -12,6 +13,7 @@ namespace {
 /// Materials whose surfaces `ports: auto` considers glazing: everything that lets light
 /// through (docs/radiance-import.md, "Ports").
 bool transmits(const MaterialSpec& m) {
+  if (engine::bsdf_parameters(m)) return true;  // a measured BSDF (RADIANCE BSDF / aBSDF)
   switch (m.type) {
     case MaterialType::Glass:
     case MaterialType::Glazing:
@@ -23,6 +25,9 @@ bool transmits(const MaterialSpec& m) {
 }
 
 bool same_parameters(const MaterialSpec& a, const MaterialSpec& b) {
+  const engine::BsdfMaterialParameters *bsdf_a = engine::bsdf_parameters(a), *bsdf_b = engine::bsdf_parameters(b);
+  if (bsdf_a || bsdf_b)
+    return bsdf_a && bsdf_b && bsdf_a->data->content_sha256 == bsdf_b->data->content_sha256 && bsdf_a->up == bsdf_b->up;
   return a.type == b.type && a.reflectance == b.reflectance && a.specularity == b.specularity &&
          a.roughness == b.roughness && a.transmittance == b.transmittance &&
          a.refractive_index == b.refractive_index && a.transmissivity == b.transmissivity &&

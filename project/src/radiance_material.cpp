@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 #include "dayphoton/core/diagnostics.h"
@@ -46,6 +47,7 @@ class Mapper {
     if (m_type == "mirror") return mirror();
     if (m_type == "glass") return glass();
     if (m_type == "dielectric") return dielectric();
+    if (m_type == "BSDF" || m_type == "aBSDF") return bsdf();
     if (m_type == "light" || m_type == "glow" || m_type == "spotlight" || m_type == "illum")
       return light_source();
     return unsupported();
@@ -206,6 +208,70 @@ class Mapper {
     return m_result;
   }
 
+  // BSDF: strings thick BSDFfile ux uy uz funcfile [transform ...], reals 0|3|6|9 (extra
+  // diffuse front and back reflectance, diffuse transmittance); aBSDF: the same without
+  // `thick`. The up vector must be given as numbers with funcfile '.' (RADIANCE lets them
+  // name variables of the function file), and no transform; the extra diffuse components
+  // must be zero (or absent). The BSDF file is read by the caller (bsdf_file, bsdf_up): it
+  // knows which folder the name is relative to.
+  RadianceMaterialResult bsdf() {
+    auto bad = [this](const std::string& why) {
+      invalid(why);
+      return failed();
+    };
+    const bool thick = m_type == "BSDF";
+    const std::size_t first = thick ? 1 : 0;  // index of the file name
+    if (m_integers != 0) return bad("takes no integer arguments, got " + std::to_string(m_integers));
+    if (m_strings.size() < first + 5)
+      return bad("takes " + std::to_string(first + 5) + " or more string arguments (" +
+                     (thick ? std::string("thickness, ") : std::string()) +
+                     "BSDF file, up vector x y z, function file), got " + std::to_string(m_strings.size()));
+    if (m_strings.size() > first + 5)
+      return bad("a transform after the function file (string " + std::to_string(first + 6) +
+                     ", '" + m_strings[first + 5] + "') is not supported; apply it to the up vector yourself");
+    if (m_reals.size() != 0 && m_reals.size() != 3 && m_reals.size() != 6 && m_reals.size() != 9)
+      return bad("takes 0, 3, 6 or 9 real arguments (extra diffuse front reflectance, back reflectance, "
+                     "transmittance), got " + std::to_string(m_reals.size()));
+    for (std::size_t i = 0; i < m_reals.size(); ++i)
+      if (m_reals[i] != 0.0)
+        return bad("extra diffuse components (real arguments) are not supported; real argument " +
+                       std::to_string(i + 1) + " is " + format_number(m_reals[i]) +
+                       " (add them to the BSDF file's matrices instead)");
+    if (m_strings[first + 4] != ".")
+      return bad("function file '" + m_strings[first + 4] +
+                     "' is not read: give the up vector as numbers and the function file as '.'");
+    Vec3 up;
+    for (int c = 0; c < 3; ++c) {
+      const std::string& text = m_strings[first + 1 + static_cast<std::size_t>(c)];
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !std::isfinite(v))
+        return bad("up vector component '" + text + "' is not a number (variables of a function file "
+                       "are not read)");
+      up[c] = v;
+    }
+    if (!(length(up) > 0)) return bad("the up vector is zero");
+    if (thick) {
+      char* end = nullptr;
+      const double t = std::strtod(m_strings[0].c_str(), &end);
+      if (m_strings[0].empty() || *end != '\0' || !std::isfinite(t))
+        return bad("thickness '" + m_strings[0] + "' is not a number");
+      if (t != 0.0)
+        m_result.notes.push_back(describe(m_type, m_name) + ": thickness " + format_number(t) +
+                                 " ignored (the BSDF is applied at the surface; RADIANCE uses the "
+                                 "thickness for the proxy geometry behind it)");
+    }
+    if (!thick)
+      m_result.notes.push_back(describe(m_type, m_name) +
+                               ": aBSDF is used as a BSDF (RADIANCE's separate treatment of the "
+                               "through-view peak is a rendering refinement; the matrix is sampled as it is)");
+    m_result.role = Role::Material;
+    m_result.material.name = std::string(m_name);
+    m_result.bsdf_file = m_strings[first];
+    m_result.bsdf_up = up;
+    return m_result;
+  }
+
   RadianceMaterialResult light_source() {
     bool ok = true;
     if (m_type == "light") ok = counts(0, 0, 3, 3, "red green blue radiance");
@@ -231,9 +297,7 @@ class Mapper {
   RadianceMaterialResult unsupported() {
     const std::string t(m_type);
     std::string why;
-    if (t == "BSDF" || t == "aBSDF")
-      why = "measured BSDF not yet supported";
-    else if (t == "plastic2" || t == "metal2" || t == "trans2" || t == "ashik2" || t == "WGMDfunc")
+    if (t == "plastic2" || t == "metal2" || t == "trans2" || t == "ashik2" || t == "WGMDfunc")
       why = "anisotropic reflection is not modelled (use plastic, metal or trans)";
     else if (t == "plasfunc" || t == "metfunc" || t == "transfunc" || t == "BRTDfunc" ||
              t == "plasdata" || t == "metdata" || t == "transdata")

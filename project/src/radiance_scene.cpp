@@ -15,8 +15,10 @@
 #include <map>
 #include <sstream>
 
+#include "dayphoton/core/bsdf_xml.h"
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/engine/bsdf_material.h"
 #include "dayphoton/project/radiance_material.h"
 
 namespace dayphoton::project {
@@ -172,9 +174,13 @@ struct Modifier {
   SourceLocation location;
   bool reported = false;           ///< Unsupported: reported at its first use
   int skipped = 0;                 ///< surfaces left out because of it
+  std::shared_ptr<const MaterialSpec> bsdf;  ///< a BSDF / aBSDF modifier's material (file read)
 };
 
 bool same_material(const MaterialSpec& a, const MaterialSpec& b) {
+  const engine::BsdfMaterialParameters *bsdf_a = engine::bsdf_parameters(a), *bsdf_b = engine::bsdf_parameters(b);
+  if (bsdf_a || bsdf_b)
+    return bsdf_a && bsdf_b && bsdf_a->data->content_sha256 == bsdf_b->data->content_sha256 && bsdf_a->up == bsdf_b->up;
   return a.type == b.type && a.reflectance == b.reflectance && a.specularity == b.specularity &&
          a.roughness == b.roughness && a.transmittance == b.transmittance &&
          a.refractive_index == b.refractive_index && a.transmissivity == b.transmissivity &&
@@ -500,6 +506,30 @@ class Reader {
     store(id.text, m);
   }
 
+  /// A BSDF / aBSDF modifier's material: its file, relative to the folder of the file being
+  /// read, read now (its errors located in the XML file, a missing file at the modifier's
+  /// type), and its up vector turned by the xform of that file. False after an error.
+  bool bsdf_material(const RadianceMaterialResult& r, const Token& type, const Token& id, Modifier& m) {
+    const fs::path folder = m_files.empty() ? fs::path() : fs::path(m_files.back()).parent_path();
+    const std::string resolved =
+        (fs::path(r.bsdf_file).is_absolute() ? fs::path(r.bsdf_file) : folder / r.bsdf_file).lexically_normal().string();
+    std::shared_ptr<const KlemsBsdfData> data;
+    try {
+      data = read_bsdf_xml(resolved, resolved, type.location);
+    } catch (const InputError& e) {
+      for (const Diagnostic& d : e.diagnostics()) {
+        if (d.source_line.empty())
+          error(d.location, d.message);  // at the modifier: its .rad line
+        else
+          m_diag.error(d.location, d.message, d.source_line);  // in the XML file
+      }
+      return false;
+    }
+    const Vec3 up = m_transform.apply(r.bsdf_up) - m_transform.translate;
+    m.bsdf = std::make_shared<MaterialSpec>(engine::bsdf_material_spec(id.text, std::move(data), up));
+    return true;
+  }
+
   void define_modifier(const Token& modifier, const Token& type, const Token& id,
                        const std::vector<double>& reals, const std::vector<std::string>& strings,
                        std::size_t integers) {
@@ -527,8 +557,9 @@ class Reader {
                    "': patterns, textures and mixtures are not supported (dayphoton's materials are uniform)";
       }
     }
+    if (m.role == Role::Material && !r.bsdf_file.empty() && !bsdf_material(r, type, id, m)) m.role = Role::Invalid;
     if (m.role == Role::Material) {
-      MaterialSpec spec = r.material;
+      MaterialSpec spec = m.bsdf ? *m.bsdf : r.material;
       spec.location = id.location;
       m.material = add_material(spec);
       m.material_modifier = id.text;

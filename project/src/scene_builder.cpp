@@ -21,6 +21,7 @@
 #include <stdexcept>
 
 #include "dayphoton/core/polygon.h"
+#include "dayphoton/engine/bsdf_material.h"
 #include "dayphoton/project/north_rotation.h"
 #include "geometry_generators.h"
 #include "system_generators.h"
@@ -145,6 +146,13 @@ void rotate_scene(SceneDescription& scene, double north_deg) {
     g.plane_normal = model_to_world(g.plane_normal, north_deg);
     // A rotation about the origin keeps the plane's distance along its (rotated) normal.
   }
+  // A measured BSDF's up vector is a direction of the model, turned with its geometry.
+  for (MaterialSpec& m : scene.materials)
+    if (const engine::BsdfMaterialParameters* bsdf = engine::bsdf_parameters(m)) {
+      auto turned = std::make_shared<engine::BsdfMaterialParameters>(*bsdf);
+      turned->up = model_to_world(bsdf->up, north_deg);
+      m.parameters = std::move(turned);
+    }
 }
 
 }  // namespace

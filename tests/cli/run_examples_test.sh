@@ -3,7 +3,7 @@
 # runs in CI in under a minute at reduced photon counts"). For each projects/*/project.yaml,
 # `dayphoton run` into a fresh folder must succeed within MAX_SECONDS (default 60) and write
 # summary.json and, for the base case and every variant, each grid's daylight_factor.csv and
-# metrics.csv with finite, non-negative values (the index and x,y,z columns excepted). Prints
+# (unless the study is daylight-factor only) metrics.csv with finite, non-negative values (the index and x,y,z columns excepted). Prints
 # each project's wall time. The example projects keep their own photon counts small enough
 # for this (docs/daylight-systems.md, "Examples").
 # Usage: DAYPHOTON=path/to/dayphoton bash run_examples_test.sh [name ...]  (from the
@@ -30,11 +30,13 @@ problems = []
 with open(os.path.join(out, "summary.json")) as f:
     summary = json.load(f)
 cases = [("base", summary["grids"])] + [(v["name"], v["grids"]) for v in summary["variants"]]
+# A daylight-factor-only study (study: daylight_factor) writes no annual metrics.
+outputs = ("daylight_factor.csv",) if summary.get("study") == "daylight_factor" else ("daylight_factor.csv", "metrics.csv")
 for case, grids in cases:
     if not grids:
         problems.append(f"{case}: no grids")
     for g in grids:
-        for name in ("daylight_factor.csv", "metrics.csv"):
+        for name in outputs:
             path = os.path.join(g["folder"], name)
             if not os.path.isfile(path):
                 problems.append(f"{case}/{g['name']}: no {name}")

@@ -111,7 +111,7 @@ std::vector<BadCase> bad_cases() {
        "geometry: {}\n"
        "simulation: {sun: sunny, basis: treganza}\n",
        {"4:13: unknown value 'lambertain' for 'type': expected one of lambertian, plastic, metal, "
-        "mirror, glass, glazing, dielectric, translucent, opening (did you mean 'lambertian'?)",
+        "mirror, glass, glazing, dielectric, translucent, opening, bsdf (did you mean 'lambertian'?)",
         "6:33: unknown value 'treganza' for 'basis': expected tregenza, reinhart:N or "
         "{reinhart: N} (did you mean 'tregenza'?)",
         "6:19: unknown value 'sunny' for 'sun': expected one of bins, spread"}},

@@ -141,10 +141,50 @@ TEST(RadianceMaterial, VoidIsInvisibleAndEmittersAreSources) {
   EXPECT_EQ(radiance_material("illum", "i", {1, 1, 1}, {"void"}).alternate_material, "");
 }
 
+TEST(RadianceMaterial, BsdfNamesItsFileAndUpVector) {
+  // BSDF: thick file ux uy uz funcfile; the file is read by the caller.
+  const auto r = radiance_material("BSDF", "blind", {}, {"0", "blind.xml", "0", "0.1", "1", "."});
+  ASSERT_EQ(r.role, Role::Material) << r.reason;
+  EXPECT_EQ(r.bsdf_file, "blind.xml");
+  EXPECT_EQ(r.bsdf_up, Vec3(0, 0.1, 1));
+  EXPECT_TRUE(r.notes.empty());
+  // Zero extra diffuse components are accepted; a thickness is ignored with a note; aBSDF
+  // (no thickness) is read as BSDF with a note.
+  EXPECT_EQ(radiance_material("BSDF", "b", {0, 0, 0, 0, 0, 0}, {"0", "f.xml", "0", "0", "1", "."}).role, Role::Material);
+  const auto thick = radiance_material("BSDF", "b", {}, {"0.05", "f.xml", "0", "0", "1", "."});
+  ASSERT_EQ(thick.notes.size(), 1u);
+  EXPECT_NE(thick.notes[0].find("thickness 0.05 ignored"), std::string::npos) << thick.notes[0];
+  const auto a = radiance_material("aBSDF", "b", {}, {"f.xml", "1", "0", "0", "."});
+  ASSERT_EQ(a.role, Role::Material) << a.reason;
+  EXPECT_EQ(a.bsdf_file, "f.xml");
+  EXPECT_EQ(a.bsdf_up, Vec3(1, 0, 0));
+  EXPECT_EQ(a.notes.size(), 1u);
+}
+
+TEST(RadianceMaterial, BsdfArgumentsItCannotReadAreRefused) {
+  const std::vector<std::string> good = {"0", "f.xml", "0", "0", "1", "."};
+  auto reason = [](const std::vector<double>& reals, const std::vector<std::string>& strings) {
+    const auto r = radiance_material("BSDF", "blind", reals, strings);
+    EXPECT_EQ(r.role, Role::Invalid);
+    EXPECT_TRUE(r.bsdf_file.empty());
+    return r.reason;
+  };
+  EXPECT_NE(reason({}, {"0", "f.xml", "0", "0", "1"}).find("takes 6 or more string arguments"), std::string::npos);
+  EXPECT_NE(reason({}, {"0", "f.xml", "0", "0", "1", ".", "-rz", "90"}).find("a transform after the function file"),
+            std::string::npos);
+  EXPECT_NE(reason({}, {"0", "f.xml", "Ux", "Uy", "Uz", "up.cal"}).find("function file 'up.cal' is not read"),
+            std::string::npos);
+  EXPECT_NE(reason({}, {"0", "f.xml", "Ux", "0", "1", "."}).find("up vector component 'Ux' is not a number"),
+            std::string::npos);
+  EXPECT_NE(reason({}, {"0", "f.xml", "0", "0", "0", "."}).find("the up vector is zero"), std::string::npos);
+  EXPECT_NE(reason({0.1, 0.1, 0.1}, good).find("extra diffuse components (real arguments) are not supported"),
+            std::string::npos);
+  EXPECT_NE(reason({0, 0}, good).find("takes 0, 3, 6 or 9 real arguments"), std::string::npos);
+  EXPECT_NE(reason({}, {"thick", "f.xml", "0", "0", "1", "."}).find("thickness 'thick' is not a number"),
+            std::string::npos);
+}
+
 TEST(RadianceMaterial, UnsupportedTypesSayWhy) {
-  const auto bsdf = radiance_material("BSDF", "blind", {});
-  EXPECT_EQ(bsdf.role, Role::Unsupported);
-  EXPECT_NE(bsdf.reason.find("measured BSDF not yet supported"), std::string::npos);
   for (const char* type : {"brightfunc", "colorpict", "texfunc", "mixfunc", "antimatter",
                            "plastic2", "interface", "mist", "prism1", "plasfunc", "alias"}) {
     const auto r = radiance_material(type, "x", {});

@@ -10,6 +10,7 @@
 
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/engine/bsdf_material.h"
 
 namespace dayphoton::project {
 namespace {
@@ -131,7 +132,7 @@ TEST(RadianceScene, UnsupportedModifiersAreErrorsOrSkippedOnRequest) {
   const std::string text =
       "void brightfunc dirt 2 dirt dirt.cal 0 0\n"
       "dirt plastic dirty 0 0 5 .5 .5 .5 0 0\n"
-      "void BSDF blind 6 0 blind.xml 0 0 1 . 0 0\n"
+      "void plastic2 blind 4 0 0 1 . 0 6 .5 .5 .5 0 .1 .1\n"
       "void plastic grey 0 0 5 .5 .5 .5 0 0\n"
       "dirty polygon a 0 0 9 0 0 0 1 0 0 0 1 0\n"
       "blind polygon b 0 0 9 0 0 0 1 0 0 0 1 0\n"
@@ -144,8 +145,8 @@ TEST(RadianceScene, UnsupportedModifiersAreErrorsOrSkippedOnRequest) {
                                  "'dirt': patterns"),
               std::string::npos)
         << diag.format();
-    EXPECT_NE(diag.format().find("scene.rad:6:1: error: polygon 'b': BSDF 'blind': measured BSDF not yet "
-                                 "supported (defined at scene.rad:3:11)"),
+    EXPECT_NE(diag.format().find("scene.rad:6:1: error: polygon 'b': plastic2 'blind': anisotropic reflection "
+                                 "is not modelled (use plastic, metal or trans) (defined at scene.rad:3:15)"),
               std::string::npos)
         << diag.format();
   }
@@ -155,7 +156,7 @@ TEST(RadianceScene, UnsupportedModifiersAreErrorsOrSkippedOnRequest) {
     EXPECT_FALSE(diag.has_errors()) << diag.format();
     ASSERT_EQ(scene.surfaces.size(), 1u);
     EXPECT_EQ(scene.surfaces[0].name, "c");
-    EXPECT_NE(diag.format().find("warning: polygon 'b': BSDF 'blind'"), std::string::npos) << diag.format();
+    EXPECT_NE(diag.format().find("warning: polygon 'b': plastic2 'blind'"), std::string::npos) << diag.format();
   }
 }
 
@@ -362,6 +363,36 @@ TEST_F(RadianceXform, AnythingButPlainXformIsRefused) {
     read_main("!xform -t 1 0 0 parts/missing.rad\n", diag);
     EXPECT_NE(first_error(diag).find("main.rad:2:1: error: RADIANCE scene file"), std::string::npos)
         << first_error(diag);
+  }
+}
+
+}  // namespace
+}  // namespace dayphoton::project
+
+namespace dayphoton::project {
+namespace {
+
+TEST_F(RadianceXform, BsdfModifiersReadTheirFileAndTurnTheirUpVector) {
+  // The file is relative to the .rad file that names it; the up vector turns with the xform
+  // of that file (-rz 90: x -> y); surfaces of a BSDF are port candidates under ports: auto.
+  fs::copy_file(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/bsdf_blind/blind_45deg.xml", m_dir / "parts/blind.xml");
+  write("parts/window.rad", "void BSDF blind 6 0 blind.xml 1 0 0 . 0 0\nblind polygon w 0 0 9 0 0 0 1 0 0 1 0 1\n");
+  Diagnostics diag;
+  const RadianceScene scene = read_main("!xform -rz 90 parts/window.rad\n", diag);
+  ASSERT_FALSE(diag.has_errors()) << diag.format();
+  ASSERT_EQ(scene.surfaces.size(), 1u);
+  const MaterialSpec& m = scene.materials.at(static_cast<std::size_t>(scene.surfaces[0].material));
+  const engine::BsdfMaterialParameters* bsdf = engine::bsdf_parameters(m);
+  ASSERT_NE(bsdf, nullptr);
+  EXPECT_EQ(bsdf->data->basis.size(), 145);
+  EXPECT_NEAR(length(bsdf->up - Vec3(0, 1, 0)), 0, 1e-12);
+  {
+    // A missing file is an error at the modifier; an error inside the file is located there.
+    write("bad.xml", "<WindowElement><Optical></Optical></WindowElement>\n");
+    Diagnostics d2;
+    read_main("void BSDF gone 6 0 missing.xml 0 0 1 . 0 0\nvoid BSDF bad 6 0 bad.xml 0 0 1 . 0 0\n", d2);
+    EXPECT_NE(d2.format().find("main.rad:2:6: error: BSDF file '"), std::string::npos) << d2.format();
+    EXPECT_NE(d2.format().find("bad.xml:1:16: error: <Optical> has no <Layer>"), std::string::npos) << d2.format();
   }
 }
 

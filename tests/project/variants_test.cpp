@@ -249,7 +249,7 @@ std::vector<BadCase> variant_cases() {
        "      glazing: {type: glas, transmittance: 0.4}\n",
        {"10:46: 'reflectance' must be in [0, 1], got 1.5",
         "11:23: unknown value 'glas' for 'type': expected one of lambertian, plastic, metal, "
-        "mirror, glass, glazing, dielectric, translucent, opening (did you mean 'glass'?)"}},
+        "mirror, glass, glazing, dielectric, translucent, opening, bsdf (did you mean 'glass'?)"}},
       {"variants_not_a_list",
        "variants: {name: a}\n",
        {"7:11: expected a list for 'variants', got a map"}},

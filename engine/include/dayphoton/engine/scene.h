@@ -115,6 +115,9 @@ class Scene {
  private:
   struct Impl;
   explicit Scene(std::unique_ptr<Impl> impl);
+  /// build() without its last check (a BSDF port's front must face outdoors), which only the
+  /// final scene gets: the trial build of port candidates makes every candidate a port.
+  static Scene build_surfaces(const SceneDescription& description);
   std::unique_ptr<Impl> m_impl;
 };
 

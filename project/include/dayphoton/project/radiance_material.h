@@ -20,6 +20,9 @@
 //                                        (default 1.52)
 //   dielectric rtn gtn btn n hc          dielectric: transmission per metre (the scene's
 //                                        unit is taken as the metre), index n; hc ignored
+//   BSDF thick file ux uy uz . [0|3|6|9 zeros]   bsdf: a Klems BSDF file (read by the caller:
+//   aBSDF     file ux uy uz . [...]      bsdf_file, bsdf_up), up vector ux uy uz; a non-zero
+//                                        thickness is ignored (warning); aBSDF is used as BSDF
 //   void                                 Invisible: RADIANCE traces straight through
 //   light R G B, glow R G B maxrad,      LightSource: emitters; the sky and the sun are
 //   spotlight R G B angle dx dy dz,      dayphoton's only sources
@@ -74,6 +77,11 @@ struct RadianceMaterialResult {
   /// mirror and illum with one string argument: the alternate material it names (RADIANCE
   /// uses it for rays that are not source samples); empty if none or "void".
   std::string alternate_material;
+  /// BSDF and aBSDF: the BSDF file as the modifier names it (relative to the folder of the
+  /// file that defines it) and the up vector; `material` is completed by the caller, which
+  /// reads the file (core/bsdf_xml.h) and makes the `bsdf` material. Empty otherwise.
+  std::string bsdf_file;
+  Vec3 bsdf_up{0, 0, 1};
 
   bool mapped() const { return role == RadianceModifierRole::Material; }
 };

@@ -1,0 +1,50 @@
+// KlemsBsdfData: a measured or computed BSDF on a Klems basis, as an LBNL WINDOW / IGSDB BSDF
+// XML file gives it (read by project/bsdf_xml.h, used by the engine's `bsdf` material,
+// docs/materials.md "Measured BSDF (Klems)"). Visible (photopic) values only: the engine
+// applies them to all three RGB channels.
+//
+// Orientation (the one RADIANCE's BSDF primitive uses, and LBNL WINDOW's): the local frame
+// has z along the surface's normal, y along the "up" vector projected onto the surface and
+// x = y x z. WINDOW's FRONT side (the exterior of a window) is the side the normal points
+// AWAY from (local -z), its BACK side (the room) the side the normal points to; so
+// "Transmission Front" is light that arrives from -z and leaves into +z. (RADIANCE's bsdf_m.c
+// reads the XML's "Front" blocks as its back-side data for this reason.)
+//
+// Patch of a direction: for incoming and outgoing light alike, the Klems patch of the
+// PROPAGATION direction v in the local frame, theta = acos |v.z|, azimuth atan2(v.y, v.x)
+// (KlemsBasis::patch). Under this rule the straight-through direction and the mirror
+// direction of incoming patch i are both in outgoing patch i, so a clear pane's matrices are
+// diagonal (WINDOW's convention; G. Ward, "Radiance BSDF support", bsdf_m.c: incoming
+// vectors are the outgoing basis' vectors with x and y negated and pointing at the source).
+//
+// Values: f(i, j), 1/sr, stored [incoming * size + outgoing]. The reader has checked every
+// value finite and >= 0, and sum_j (T + R)(i, j) Lambda_j <= 1 + BsdfAlbedoTolerance per
+// incoming patch and side.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/klems_basis.h"
+
+namespace dayphoton {
+
+/// How far above 1 the hemispherical T + R of an incoming patch may be (measurement and
+/// rounding noise of real files); RADIANCE's bsdf_m.c accepts up to 1.01 too.
+constexpr double BsdfAlbedoTolerance = 0.01;
+
+struct KlemsBsdfData {
+  std::string file;  ///< the file as written in the project (for messages)
+  std::string content_sha256;  ///< of the file's bytes (for cache keys)
+  KlemsBasis basis;
+  std::vector<double> transmission_front, transmission_back, reflection_front, reflection_back;
+
+  double value(const std::vector<double>& matrix, int incoming, int outgoing) const {
+    return matrix[static_cast<std::size_t>(incoming) * static_cast<std::size_t>(basis.size()) +
+                  static_cast<std::size_t>(outgoing)];
+  }
+  /// Hemispherical transmittance and reflectance of incoming patch i, front or back.
+  double hemispherical(const std::vector<double>& matrix, int incoming) const;
+};
+
+}  // namespace dayphoton
