@@ -17,7 +17,8 @@ using namespace dayphoton;
 namespace {
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + name;
+  // One file per test: CTest runs the tests of this suite in parallel processes.
+  const std::string path = testing::TempDir() + testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
   std::ofstream(path, std::ios::binary) << text;
   return path;
 }
