@@ -11,6 +11,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/report/image_legend.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/weather/hourly_weather.h"
 
@@ -57,6 +58,48 @@ RgbaImage false_colour_image(const SensorLattice& lattice, const std::vector<dou
   return image;
 }
 
+void outline_sensor_cells(RgbaImage& image, const SensorLattice& lattice, int pixels_per_cell) {
+  const int k = pixels_per_cell;
+  if (!lattice.regular || k < 4) return;
+  std::vector<char> has(static_cast<std::size_t>(lattice.columns) * static_cast<std::size_t>(lattice.rows), 0);
+  const auto index = [&](int c, int r) { return static_cast<std::size_t>(r) * lattice.columns + c; };
+  for (std::size_t i = 0; i < lattice.column_of.size(); ++i) has[index(lattice.column_of[i], lattice.row_of[i])] = 1;
+  const auto sensor_at = [&](int c, int r) {
+    return c >= 0 && r >= 0 && c < lattice.columns && r < lattice.rows && has[index(c, r)];
+  };
+  const std::array<std::uint8_t, 4> ink{OutlineGrey, OutlineGrey, OutlineGrey, 255};
+  for (int r = 0; r < lattice.rows; ++r)
+    for (int c = 0; c < lattice.columns; ++c) {
+      if (!sensor_at(c, r)) continue;
+      const int x0 = c * k, y0 = r * k;
+      for (int t = 0; t < k; ++t) {
+        if (!sensor_at(c, r - 1)) image.at(x0 + t, y0) = ink;
+        if (!sensor_at(c, r + 1)) image.at(x0 + t, y0 + k - 1) = ink;
+        if (!sensor_at(c - 1, r)) image.at(x0, y0 + t) = ink;
+        if (!sensor_at(c + 1, r)) image.at(x0 + k - 1, y0 + t) = ink;
+      }
+    }
+}
+
+std::string legend_title(const study::SensorQuantity& quantity) {
+  std::string title = quantity.quantity;
+  if (!title.empty() && title[0] >= 'a' && title[0] <= 'z') title[0] = static_cast<char>(title[0] - 'a' + 'A');
+  // The percent scale is the one of the time metrics (DA, UDI): shares of the occupied hours.
+  const std::string unit = quantity.scale == study::QuantityScale::Percent && quantity.unit == "%"
+                               ? "% of occupied hours"
+                               : quantity.unit;
+  return unit.empty() ? title : title + ", " + unit;
+}
+
+RgbaImage grid_png(const SensorLattice& lattice, const std::vector<double>& values,
+                   const study::SensorQuantity& quantity, int pixels_per_cell) {
+  RgbaImage plan = false_colour_image(lattice, values, scale_of(quantity), pixels_per_cell);
+  outline_sensor_cells(plan, lattice, pixels_per_cell);
+  const std::string note = lattice.regular ? "1 cell = " + format_number(lattice.spacing_m) + " m"
+                                           : "one cell per sensor, in sensor order";
+  return with_legend(plan, scale_of(quantity), legend_title(quantity), note).image;
+}
+
 ColourScale scale_of(const study::SensorQuantity& quantity) {
   switch (quantity.scale) {
     case study::QuantityScale::DaylightFactor: return daylight_factor_scale();
@@ -84,7 +127,7 @@ std::vector<std::string> write_grid_images(const std::string& results_dir, const
     study::write_exr(exr, q.quantity, q.unit, exr_path);
     written.push_back(exr_path);
     const std::string png_path = join(grid_dir, q.stem + ".png");
-    study::write_png(false_colour_image(lattice, values, scale_of(q), pixels_per_cell), png_path);
+    study::write_png(grid_png(lattice, values, q, pixels_per_cell), png_path);
     written.push_back(png_path);
   }
   return written;

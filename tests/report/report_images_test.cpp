@@ -4,6 +4,7 @@
 // sensor_lattice.h, found by the run), the sky fisheye's geometry, PNGs decoded by libpng, the
 // tone mapper, the colour scales and the M/D/H parser.
 #include "dayphoton/report/result_images.h"
+#include "dayphoton/report/image_legend.h"
 
 #include <gtest/gtest.h>
 
@@ -196,15 +197,37 @@ TEST(ResultImages, OfficeGridExrEqualsTheCsvTables) {
   EXPECT_NEAR(lattice.column_step_m.x, 0.5, 1e-9);
   EXPECT_NEAR(lattice.row_step_m.y, -0.5, 1e-9);
   expect_exr_equals_csv(dir, grid, sensors.size(), true);
-  // The PNG decodes to 32 px per sensor, opaque.
+  // The PNG decodes to the plan (32 px per sensor) with the outline and the legend below it:
+  // the image grid_png makes, opaque.
   std::ifstream in(dir + "/daylight_factor.png", std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   int w = 0, h = 0;
   const std::vector<std::uint8_t> pixels = decode_png(bytes, w, h);
   ASSERT_FALSE(pixels.empty());
-  EXPECT_EQ(w, 11 * 32);
-  EXPECT_EQ(h, 15 * 32);
-  EXPECT_EQ(pixels[3], 255);
+  const LegendImage layout = with_legend(RgbaImage(11 * 32, 15 * 32), daylight_factor_scale(), "Daylight factor, %",
+                                         "1 cell = 0.5 m");
+  ASSERT_EQ(w, layout.image.width);
+  ASSERT_EQ(h, layout.image.height);
+  EXPECT_GT(w, 11 * 32);
+  EXPECT_GT(h, 15 * 32 + 60);
+  const auto px = [&](int x, int y) {
+    const std::size_t k = static_cast<std::size_t>(y * w + x) * 4;
+    return std::array<std::uint8_t, 4>{pixels[k], pixels[k + 1], pixels[k + 2], pixels[k + 3]};
+  };
+  for (int y = 0; y < h; y += 5)
+    for (int x = 0; x < w; x += 5) ASSERT_EQ(px(x, y)[3], 255);
+  // The outline: the north-west corner and the east edge of the plan are dark, the edge
+  // between two sensors is not.
+  const int x0 = layout.plan_x, y0 = layout.plan_y;
+  EXPECT_EQ(px(x0, y0), (std::array<std::uint8_t, 4>{OutlineGrey, OutlineGrey, OutlineGrey, 255}));
+  EXPECT_EQ(px(x0 + 11 * 32 - 1, y0 + 100)[0], OutlineGrey);
+  EXPECT_EQ(px(x0 + 31, y0 + 16), px(x0 + 16, y0 + 16));
+  EXPECT_NE(px(x0 + 16, y0 + 16)[0], OutlineGrey);
+  // The legend's bar ends: the colours of 0 % and 10 % daylight factor.
+  const auto lo = viridis(0), hi = viridis(1);
+  EXPECT_EQ(px(layout.bar_x, layout.bar_y + 2), (std::array<std::uint8_t, 4>{lo[0], lo[1], lo[2], 255}));
+  EXPECT_EQ(px(layout.bar_x + layout.bar_width - 1, layout.bar_y + 2),
+            (std::array<std::uint8_t, 4>{hi[0], hi[1], hi[2], 255}));
 }
 
 TEST(ResultImages, RotatedLShapedGridKeepsOnePixelPerSensorAndTransparentHoles) {

@@ -16,6 +16,7 @@
 // plus "quantity", "unit", "dayphoton:grid" and "dayphoton:source" (the CSV file and column).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -42,10 +43,29 @@ FloatImage sensor_value_image(const SensorLattice& lattice, const std::vector<do
 RgbaImage false_colour_image(const SensorLattice& lattice, const std::vector<double>& values,
                              const ColourScale& scale, int pixels_per_cell);
 
+/// Grey level of the outline of the sensor area (dark on every colour of the viridis scale).
+inline constexpr std::uint8_t OutlineGrey = 20;
+
+/// Outline of the lattice cells that hold a sensor in a false_colour_image: every cell side
+/// facing a cell without a sensor (or the lattice's edge) becomes a 1-pixel line of
+/// OutlineGrey, drawn on the cell's own edge pixels. Nothing for sensors not on a lattice or
+/// fewer than 4 pixels per cell.
+void outline_sensor_cells(RgbaImage& image, const SensorLattice& lattice, int pixels_per_cell);
+
+/// "<Quantity>, <unit>" for a legend, from the model's typed fields; the percent scale's unit
+/// reads "% of occupied hours" (e.g. "Daylight autonomy (300 lx), % of occupied hours").
+std::string legend_title(const study::SensorQuantity& quantity);
+
+/// The standalone PNG of one quantity: the outlined false-colour plan with its legend
+/// (image_legend.h) and the cell size ("1 cell = 0.5 m") as the note.
+RgbaImage grid_png(const SensorLattice& lattice, const std::vector<double>& values,
+                   const study::SensorQuantity& quantity, int pixels_per_cell);
+
 /// The colour scale of a quantity of the model (colour_scale.h).
 ColourScale scale_of(const study::SensorQuantity& quantity);
 
-/// Write <stem>.exr and <stem>.png (32 px per sensor, at least 256 px wide) for every
+/// Write <stem>.exr and <stem>.png (grid_png: 32 px per sensor, the plan at least 256 px
+/// wide, with outline and legend) for every
 /// quantity the model lists for `grid` into its folder; returns the paths written. InputError
 /// (located) if a value table is missing or malformed.
 std::vector<std::string> write_grid_images(const std::string& results_dir, const study::GridResult& grid);
