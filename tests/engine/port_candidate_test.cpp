@@ -38,7 +38,9 @@ TEST(PortCandidate, OutdoorGlazingBecomesAPortTheRestStaysGlazing) {
   EXPECT_EQ(decided.surfaces[test::OfficeWindowSurface].facing, PortFacing::Auto);
   for (std::size_t i = 0; i < decided.surfaces.size(); ++i) {
     EXPECT_FALSE(decided.surfaces[i].port_if_outdoors);
-    if (static_cast<int>(i) != test::OfficeWindowSurface) EXPECT_FALSE(decided.surfaces[i].port);
+    if (static_cast<int>(i) != test::OfficeWindowSurface) {
+      EXPECT_FALSE(decided.surfaces[i].port);
+    }
   }
   EXPECT_FALSE(scene.is_port(static_cast<int>(decided.surfaces.size()) - 1));
 }

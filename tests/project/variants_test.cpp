@@ -450,13 +450,13 @@ TEST(ProjectVariants, ApplyVariantOnHandMadeVariants) {
   expect_same_material(p.materials[0], glazing);
   expect_same_material(p.materials[1], walls);
   // No replacement: the base itself.
-  const Project same = apply_variant(base, VariantSpec{"none", {}, {}, {}});
+  const Project same = apply_variant(base, VariantSpec{"none", {}, {}, {}, {}, {}});
   for (std::size_t i = 0; i < base.materials.size(); ++i)
     expect_same_material(same.materials[i], base.materials[i]);
   // A material the base does not have cannot be replaced.
   MaterialSpec stray;
   stray.name = "roof";
-  EXPECT_THROW(apply_variant(base, VariantSpec{"stray", {stray}, {}, {}}), std::invalid_argument);
+  EXPECT_THROW(apply_variant(base, VariantSpec{"stray", {stray}, {}, {}, {}, {}}), std::invalid_argument);
 }
 
 TEST(ProjectVariants, OfficeVariantsExample) {

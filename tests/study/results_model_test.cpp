@@ -76,7 +76,7 @@ ResultsModel full_model() {
                    QuantityScale::Percent, "daylight autonomy"},
                   {"daylight_factor", "daylight_factor.csv", "df_percent", "daylight_factor", "daylight factor", "%",
                    QuantityScale::DaylightFactor, "daylight factor"}};
-  g.daylight_factor = DaylightFactorSummary{1.5, 1.25, 0.1, 3.3, 0.0667, {{2.0, 33.3}, {1.0, 66.7}}, 4.5, 9.25, 3};
+  g.daylight_factor = DaylightFactorSummary{1.5, 1.25, 0.1, 3.3, 0.0667, {{2.0, 33.3}, {1.0, 66.7}}, 4.5, 9.25, 3, std::nullopt};
   AnnualSummary a;
   a.sensors = 3;
   a.time_steps = 8760;
