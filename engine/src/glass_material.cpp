@@ -18,7 +18,7 @@ namespace {
 
 using namespace detail;
 
-class GlassMaterial final : public MaterialModel {
+class GlassMaterial final : public PaneModel<GlassMaterial> {
  public:
   explicit GlassMaterial(const MaterialSpec& spec)
       : m_refractive_index(spec.refractive_index), m_transmittance_factor(spec.transmittance_factor) {
@@ -34,26 +34,8 @@ class GlassMaterial final : public MaterialModel {
     }
   }
 
-  std::optional<ScatterSample> sample(const Vec3& incoming, const Vec3& normal, double u_component, double,
-                                      double) const override {
-    Vec3 t, r;
-    response(dot(incoming, normal), t, r);
-    return sample_pane(incoming, normal, u_component, t, r);
-  }
-  Vec3 eval(const Vec3&, const Vec3&, const Vec3&) const override { return {0, 0, 0}; }
-  double pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0.0; }
-  Vec3 albedo(const Vec3& incoming, const Vec3& normal) const override {
-    Vec3 t, r;
-    response(dot(incoming, normal), t, r);
-    return t + r;
-  }
-  Vec3 straight_transmittance(const Vec3& incoming, const Vec3& normal) const override {
-    Vec3 t, r;
-    response(dot(incoming, normal), t, r);
-    return t;
-  }
-
  private:
+  friend class PaneModel<GlassMaterial>;
   ThinGlassResponse channel(double cos_i, int c) const {
     return thin_glass_response(cos_i, m_refractive_index, m_transmissivity[c]);
   }

@@ -18,7 +18,7 @@ namespace {
 
 using namespace detail;
 
-class GlazingMaterial final : public MaterialModel {
+class GlazingMaterial final : public PaneModel<GlazingMaterial> {
  public:
   explicit GlazingMaterial(const MaterialSpec& spec) : m_transmittance_factor(spec.transmittance_factor) {
     try {
@@ -29,26 +29,8 @@ class GlazingMaterial final : public MaterialModel {
     m_grey_panes = is_grey(m_panes);
   }
 
-  std::optional<ScatterSample> sample(const Vec3& incoming, const Vec3& normal, double u_component, double,
-                                      double) const override {
-    Vec3 t, r;
-    response(dot(incoming, normal), t, r);
-    return sample_pane(incoming, normal, u_component, t, r);
-  }
-  Vec3 eval(const Vec3&, const Vec3&, const Vec3&) const override { return {0, 0, 0}; }
-  double pdf(const Vec3&, const Vec3&, const Vec3&) const override { return 0.0; }
-  Vec3 albedo(const Vec3& incoming, const Vec3& normal) const override {
-    Vec3 t, r;
-    response(dot(incoming, normal), t, r);
-    return t + r;
-  }
-  Vec3 straight_transmittance(const Vec3& incoming, const Vec3& normal) const override {
-    Vec3 t, r;
-    response(dot(incoming, normal), t, r);
-    return t;
-  }
-
  private:
+  friend class PaneModel<GlazingMaterial>;
   // Transmittance (times the window's transmittance factor) and the reflectance of the side
   // the light arrives from. Light with dot(incoming, normal) > 0 (arriving against the back
   // of the surface) meets pane 1 first.

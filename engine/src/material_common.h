@@ -41,16 +41,42 @@ inline void check_unit_range(const MaterialSpec& spec, const char* what, const V
   for (int c = 0; c < 3; ++c) check_unit_range(spec, what, rgb[c]);
 }
 
-// Glass and glazing: choose delta reflection with probability mean(r) / (mean(t) + mean(r)),
-// straight transmission otherwise, each weighted by its value over its probability.
-inline std::optional<ScatterSample> sample_pane(const Vec3& incoming, const Vec3& normal, double u_component,
-                                                const Vec3& t, const Vec3& r) {
-  const double total = mean(t) + mean(r);
-  if (!(total > 0)) return std::nullopt;
-  const double p_reflect = mean(r) / total;
-  if (u_component < p_reflect)
-    return ScatterSample{reflect(incoming, normal), r / p_reflect, ScatterType::SpecularReflection, true};
-  return ScatterSample{incoming, t / (1.0 - p_reflect), ScatterType::StraightTransmission, true};
-}
+// Glass and glazing: delta reflection about the normal and straight transmission, both from
+// one per-channel response. `Pane` provides `void response(double cos_in, Vec3& t, Vec3& r)`
+// (transmittance and the reflectance of the side the light arrives from, for light whose
+// propagation direction has cosine cos_in to the normal); it is called directly, not through
+// a virtual, because it lies on every photon's path through a port. sample() chooses
+// reflection with probability mean(r) / (mean(t) + mean(r)), transmission otherwise, each
+// weighted by its value over its probability.
+template <class Pane>
+class PaneModel : public MaterialModel {
+ public:
+  std::optional<ScatterSample> sample(const Vec3& incoming, const Vec3& normal, double u_component, double,
+                                      double) const final {
+    Vec3 t, r;
+    pane().response(dot(incoming, normal), t, r);
+    const double total = mean(t) + mean(r);
+    if (!(total > 0)) return std::nullopt;
+    const double p_reflect = mean(r) / total;
+    if (u_component < p_reflect)
+      return ScatterSample{reflect(incoming, normal), r / p_reflect, ScatterType::SpecularReflection, true};
+    return ScatterSample{incoming, t / (1.0 - p_reflect), ScatterType::StraightTransmission, true};
+  }
+  Vec3 eval(const Vec3&, const Vec3&, const Vec3&) const final { return {0, 0, 0}; }
+  double pdf(const Vec3&, const Vec3&, const Vec3&) const final { return 0.0; }
+  Vec3 albedo(const Vec3& incoming, const Vec3& normal) const final {
+    Vec3 t, r;
+    pane().response(dot(incoming, normal), t, r);
+    return t + r;
+  }
+  Vec3 straight_transmittance(const Vec3& incoming, const Vec3& normal) const final {
+    Vec3 t, r;
+    pane().response(dot(incoming, normal), t, r);
+    return t;
+  }
+
+ private:
+  const Pane& pane() const { return static_cast<const Pane&>(*this); }
+};
 
 }  // namespace dayphoton::engine::detail
