@@ -2,7 +2,7 @@
 # distribute_jobs under Open MPI's mpirun (tests/dist/mpi/distribute_jobs_check.cpp):
 #  1. the bytes delivered (to rank 0, and to every rank) are identical without mpirun and with
 #     -np 1, 2 and 3 (3 oversubscribes a 2-core machine);
-#  2. a job throwing on rank 1 ends every rank with "rank 1, job J (job J): deliberate failure
+#  2. a job throwing on rank 1 of 3 ends every rank with "rank 1, job J (job J): deliberate failure
 #     on rank 1" and mpirun exits non-zero;
 #  3. a rank killed by SIGKILL makes mpirun exit non-zero promptly, not hang (time-out 60 s).
 # Usage: run_mpi_test.sh PROGRAM MPIEXEC
@@ -34,7 +34,7 @@ for np in 1 2 3; do
     { echo "np $np: not every rank got the serial run's bytes ($every)"; cat "$tmp/np$np.out"; fail=1; }
 done
 
-for np in 2 3; do
+for np in 3; do
   timeout 60 "$mpiexec" -np "$np" "${mpiexec_options[@]}" "$program" throw > "$tmp/throw$np.out" 2>&1
   rc=$?
   if [ $rc -eq 0 ] || [ $rc -eq 124 ]; then echo "throw, np $np: exit $rc, expected a failure"; fail=1; fi
