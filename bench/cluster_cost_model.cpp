@@ -207,7 +207,8 @@ int main(int argc, char** argv) {
   const double b_sun_map = bytes_of("sun-photons") / sun_bins;
   const double b_results_sensor = results_bytes / sensors;
 
-  std::printf("measured on %s (%d threads): %.0f s wall, %.1f s CPU\n", fs::path(measured_path).parent_path().filename().c_str(),
+  std::printf("measured on %s (%d threads): %.0f s wall, %.1f s CPU\n",
+              fs::path(measured_path).parent_path().filename().c_str(),
               int(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism)), wall, cpu);
   std::printf("  %.0f sensors, %.0f sky sources x %.0f photons, %.0f sun bins x %.0f photons\n", sensors, sky_sources,
               photons_per_bin, sun_bins, sun_photons_per_bin);
@@ -242,12 +243,13 @@ int main(int argc, char** argv) {
     std::string name;
     double network_bytes_per_s, storage_bytes_per_s;
   };
-  const std::vector<Cluster> clusters = {{"100 Gb/s network, 2 GB/s parallel file system (assumed)", 12.5e9, 2e9},
-                                         {"10 Gb/s network (assumed), this machine's disk (measured)", 1.25e9,
-                                          disk_bytes_per_s}};
-  std::printf("\npredictions (ranks of one core of this machine; sources per floor %.0f sky x %.0f photons, "
-              "%.0f sun bins x %.0f photons):\n",
-              sky_sources, floor_ppb, sun_bins, floor_sun_ppb);
+  const std::vector<Cluster> clusters = {
+      {"100 Gb/s network, 2 GB/s parallel file system (assumed)", 12.5e9, 2e9},
+      {"10 Gb/s network (assumed), this machine's disk (measured)", 1.25e9, disk_bytes_per_s}};
+  std::printf(
+      "\npredictions (ranks of one core of this machine; sources per floor %.0f sky x %.0f photons, "
+      "%.0f sun bins x %.0f photons):\n",
+      sky_sources, floor_ppb, sun_bins, floor_sun_ppb);
   for (const Target& t : targets) {
     const double n = t.floors * t.sensors_per_floor;
     const double floor_map_bytes = (sky_sources * b_sky_map + sun_bins * b_sun_map) * (floor_ppb / photons_per_bin);
@@ -292,8 +294,9 @@ int main(int argc, char** argv) {
           total += phases[i];
           if (phases[i] > phases[top]) top = i;
         }
-        std::printf("    %5d %9.3g %9.3g %9.3g %9.3g %9.3g %9.3g %9.3g %9.3g  %s (%.0f %%)\n", ranks, phases[0], phases[1],
-                    phases[2], phases[3], phases[4], phases[5], phases[6], total, names[top], 100 * phases[top] / total);
+        std::printf("    %5d %9.3g %9.3g %9.3g %9.3g %9.3g %9.3g %9.3g %9.3g  %s (%.0f %%)\n", ranks, phases[0],
+                    phases[1], phases[2], phases[3], phases[4], phases[5], phases[6], total, names[top],
+                    100 * phases[top] / total);
       }
     }
   }

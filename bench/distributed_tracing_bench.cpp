@@ -127,8 +127,9 @@ int run(dist::Communicator& comm, std::size_t photons, bool pilot) {
   std::printf("  delivered %llu bytes, digest %016llx\n", static_cast<unsigned long long>(delivered_bytes),
               static_cast<unsigned long long>(digest));
   std::printf("  costs: %s%s; LPT makespan %.4g of %.4g: predicted speed-up over one rank %.2f\n",
-              pilot ? "rays of a pilot pass" : "photon targets", pilot ? (", pilot " + std::to_string(pilot_wall) + " s wall").c_str() : "",
-              a.makespan(), total_cost, total_cost / a.makespan());
+              pilot ? "rays of a pilot pass" : "photon targets",
+              pilot ? (", pilot " + std::to_string(pilot_wall) + " s wall").c_str() : "", a.makespan(), total_cost,
+              total_cost / a.makespan());
   return 0;
 }
 

@@ -6,12 +6,12 @@
 // Job 7's result is larger than one message (MaxChunkBytes), so chunking is exercised.
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -99,7 +99,8 @@ int run(Communicator& comm, const std::string& mode) {
   try {
     tbb::task_arena arena(2);
     arena.execute([&] { distribute_jobs(comm, jobs); });
-    if (comm.rank() == RootRank) std::printf("root digest %016llx in_order %d\n", (unsigned long long)digest.h, in_order);
+    if (comm.rank() == RootRank)
+      std::printf("root digest %016llx in_order %d\n", (unsigned long long)digest.h, in_order);
     digest = Digest{};
     next = 0;
     jobs.delivery = Delivery::every_rank;
