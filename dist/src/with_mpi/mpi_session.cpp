@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
-#include <iostream>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -137,7 +137,10 @@ class MpiCommunicator final : public Communicator {
   }
 
   [[noreturn]] void abort_all(const std::string& message, int exit_code) override {
-    std::cerr << "dayphoton: rank " << m_rank << ": " << message << std::endl;
+    // One write: mpirun interleaves the ranks' output at each write.
+    const std::string line = "dayphoton: rank " + std::to_string(m_rank) + ": " + message + "\n";
+    std::fwrite(line.data(), 1, line.size(), stderr);
+    std::fflush(stderr);
     MPI_Abort(m_comm, exit_code == 0 ? 1 : exit_code);
     std::abort();  // MPI_Abort does not return
   }

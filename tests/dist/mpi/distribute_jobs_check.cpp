@@ -108,7 +108,11 @@ int run(Communicator& comm, const std::string& mode) {
     std::printf("every-rank digest %016llx in_order %d\n", (unsigned long long)digest.h, in_order);
     std::fflush(stdout);
   } catch (const DistributedJobError& e) {
-    std::cerr << "error: " << e.what() << std::endl;
+    // One write per line: mpirun forwards the ranks' streams as they come, so a line written in
+    // pieces could interleave with another rank's.
+    const std::string line = std::string("error: ") + e.what() + "\n";
+    std::fwrite(line.data(), 1, line.size(), stderr);
+    std::fflush(stderr);
     return 3;
   }
   comm.barrier();
