@@ -7,9 +7,13 @@
 #include <cstdlib>
 #include <iostream>
 #include <limits>
+#include <memory>
+#include <optional>
 
 #include "commands.h"
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/dist/launcher.h"
+#include "dayphoton/dist/mpi_session.h"
 #include "dayphoton/study/output_lock.h"
 #include "dayphoton/core/terminal_text.h"
 
@@ -55,9 +59,8 @@ constexpr long long Unbounded = std::numeric_limits<long long>::max();
 // More worker threads than this is a typo, not a machine.
 constexpr long long MaxThreads = 4096;
 
-}  // namespace
-
-int main(int argc, char** argv) {
+/// Parses the command line and runs the command: the whole program of an ordinary run.
+int run_command_line(int argc, char** argv) {
   using namespace dayphoton::app;
   CLI::App cli{"dayphoton: climate-based daylight modelling with contribution photon maps"};
   cli.name("dayphoton");
@@ -292,4 +295,46 @@ int main(int argc, char** argv) {
     return ExitInternalError;
   }
   return ExitUsageError;
+}
+
+/// A process started by mpirun or srun: MPI for the process's lifetime. No command distributes
+/// its work over the ranks yet (docs/cluster.md): rank 0 runs the command, the others wait for
+/// it (asleep, at a barrier) so that the job ends with rank 0's exit code and one set of outputs.
+int run_as_mpi_rank(int argc, char** argv, const dayphoton::dist::LauncherInfo& launcher) {
+  using namespace dayphoton::app;
+  using namespace dayphoton::dist;
+  std::optional<MpiSession> session;
+  try {
+    session.emplace(&argc, &argv);
+  } catch (const MpiUnavailable& e) {
+    // One copy of a build without MPI is an ordinary run; several would race for one output folder.
+    if (launcher.process_count == 1) return run_command_line(argc, argv);
+    std::cerr << "dayphoton: error: " << e.what() << " (" << launcher.variable << " is set)\n";
+    return ExitUsageError;
+  } catch (const std::exception& e) {
+    std::cerr << "dayphoton: error: " << e.what() << '\n';
+    return ExitInternalError;
+  }
+  int code = ExitOk;
+  {
+    const std::unique_ptr<Communicator> world = session->world();
+    if (world->rank() == RootRank) {
+      if (world->size() > 1)
+        std::cerr << "dayphoton: note: started as " << world->size()
+                  << " MPI processes; commands do not distribute their work yet, rank 0 runs this one "
+                     "alone (docs/cluster.md)\n";
+      code = run_command_line(argc, argv);
+    }
+    world->barrier();
+  }
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // Only a process started by a parallel launcher touches MPI (dist/launcher.h).
+  const auto launcher = dayphoton::dist::detect_launcher([](const char* name) { return std::getenv(name); });
+  if (!launcher) return run_command_line(argc, argv);
+  return run_as_mpi_rank(argc, argv, *launcher);
 }

@@ -10,6 +10,7 @@ packages=(
   libembree-dev libgeographiclib-dev libopenexr-dev libyaml-cpp-dev nlohmann-json3-dev
   libtbb-dev libcli11-dev libgtest-dev libpng-dev zlib1g-dev
   libpugixml-dev  # BSDF XML files (docs/architecture.md)
+  openmpi-bin libopenmpi-dev  # runs over MPI ranks (dist/, docs/cluster.md); the build also works without
   python3
   clang libfuzzer-14-dev  # the fuzz harnesses (scripts/fuzz.sh, docs/fuzzing.md)
   chromium  # headless browser of the report test (tests/report/)
