@@ -217,6 +217,13 @@ std::string write_results(const std::string& name) {
   return dir;
 }
 
+/// One results folder and its report for the tests that only read the page (written once:
+/// the year of hourly illuminance makes each folder take a tenth of a second).
+const std::string& shared_report() {
+  static const std::string html = report_html(write_results("shared"));
+  return html;
+}
+
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
@@ -269,7 +276,7 @@ TEST(ReportHtml, EverySectionIsPresentListedAndDrawn) {
 }
 
 TEST(ReportHtml, TitleIsTheProjectsNameAndTheSummaryComesFirst) {
-  const std::string html = report_html(write_results("summary"));
+  const std::string& html = shared_report();
   EXPECT_NE(html.find("<title>Daylight report: Riverside &lt;School&gt;</title>"), std::string::npos);
   EXPECT_NE(html.find("<h1>Daylight report: Riverside &lt;School&gt;</h1>"), std::string::npos);
   EXPECT_EQ(html.find("<h1>Daylight report: Test"), std::string::npos);  // not the site or station
@@ -304,7 +311,7 @@ TEST(ReportHtml, TitleIsTheProjectsNameAndTheSummaryComesFirst) {
 }
 
 TEST(ReportHtml, VerdictsWithTheirRequirements) {
-  const std::string html = report_html(write_results("verdicts"));
+  const std::string& html = shared_report();
   const std::size_t at = html.find("id=\"verdicts\"");
   const std::string part = html.substr(at, html.find("id=\"building\"") - at);
   EXPECT_NE(part.find("<td>IES LM-83-12</td><td>sDA300/50%</td><td>&gt;= 55 % of the area (nominally accepted), "
@@ -326,7 +333,7 @@ TEST(ReportHtml, VerdictsWithTheirRequirements) {
 }
 
 TEST(ReportHtml, BuildingMaterialsAndGridTables) {
-  const std::string html = report_html(write_results("building"));
+  const std::string& html = shared_report();
   const std::size_t at = html.find("id=\"building\"");
   const std::string part = html.substr(at, html.find("id=\"variants\"") - at);
   // 4 x 3 x 3 m, floor 12 m2, window 2 m2, window-to-wall 2 / 12, glazing-to-floor 2 / 12.
@@ -353,7 +360,7 @@ TEST(ReportHtml, BuildingMaterialsAndGridTables) {
 }
 
 TEST(ReportHtml, VariantsSideBySideWithDifferences) {
-  const std::string html = report_html(write_results("variants"));
+  const std::string& html = shared_report();
   const std::size_t at = html.find("id=\"variants\"");
   ASSERT_NE(at, std::string::npos);
   const std::string part = html.substr(at, html.find("id=\"grid-north_wing\"") - at);
@@ -382,7 +389,7 @@ TEST(ReportHtml, VariantsSideBySideWithDifferences) {
 }
 
 TEST(ReportHtml, MethodsValidationAndUncertainty) {
-  const std::string html = report_html(write_results("methods"));
+  const std::string& html = shared_report();
   const std::size_t at = html.find("id=\"methods\"");
   const std::string part = html.substr(at, html.find("id=\"appendix\"") - at);
   EXPECT_NE(part.find("contribution photon map"), std::string::npos);
@@ -417,7 +424,7 @@ TEST(ReportHtml, ValidationFiguresAreTheOnesDocsValidationMdStates) {
 }
 
 TEST(ReportHtml, AppendixHoldsSettingsAndNoZeroTimes) {
-  const std::string html = report_html(write_results("appendix"));
+  const std::string& html = shared_report();
   const std::size_t at = html.find("id=\"appendix\"");
   const std::string part = html.substr(at);
   EXPECT_NE(part.find("<tr><th>photons per bin</th><td>1000</td></tr>"), std::string::npos);
@@ -429,7 +436,7 @@ TEST(ReportHtml, AppendixHoldsSettingsAndNoZeroTimes) {
 }
 
 TEST(ReportHtml, PrintStylesBreakBetweenSectionsAndHideTheNavigation) {
-  const std::string html = report_html(write_results("print"));
+  const std::string& html = shared_report();
   const std::size_t print = html.find("@media print{");
   ASSERT_NE(print, std::string::npos);
   const std::string css = html.substr(print, html.find("</style>") - print);
