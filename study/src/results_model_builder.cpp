@@ -132,6 +132,14 @@ void set_building(CaseResult& c, const project::Project& project, const SceneDes
     if (t > 0) m.transmittance = t;
     c.materials.push_back(m);
   }
+  // Windows between two rooms are listed but are not openings to the outside: they count in
+  // neither the window area nor the window-to-wall ratio.
+  const std::vector<project::InteriorWindow> interior = project::interior_windows(project.geometry);
+  auto is_interior = [&](const std::string& room, const std::string& window) {
+    for (const project::InteriorWindow& w : interior)
+      if (w.room == room && w.window == window) return true;
+    return false;
+  };
   for (const project::RoomSpec& r : project.geometry.rooms) {
     RoomSummary room;
     room.name = r.name;
@@ -142,8 +150,10 @@ void set_building(CaseResult& c, const project::Project& project, const SceneDes
     bool glazed[4] = {false, false, false, false};
     for (const project::WindowSpec& w : r.windows) {
       const double a = w.width_m * w.height_m;
-      room.windows.push_back({w.name, project::wall_name(w.wall), w.width_m, w.height_m, w.sill_m, a, w.material,
-                              w.frame_factor, w.maintenance_factor});
+      const bool inner = is_interior(r.name, w.name);
+      room.windows.push_back({w.name, std::string(project::wall_name(w.wall)) + (inner ? " (interior)" : ""), w.width_m,
+                              w.height_m, w.sill_m, a, w.material, w.frame_factor, w.maintenance_factor});
+      if (inner) continue;
       room.window_area_m2 += a;
       glazed[static_cast<int>(w.wall)] = true;
     }

@@ -185,3 +185,35 @@ TEST(ResultsModelBuilder, BuildingTablesFromTheProjectAndTheScene) {
   EXPECT_EQ(project_title("projects/office/project.yaml"), "office");
   EXPECT_EQ(project_title("studies/riverside_school.yaml"), "riverside_school");
 }
+
+TEST(ResultsModelBuilder, InteriorWindowsAreListedButNotOpenings) {
+  project::Project p;
+  project::RoomSpec office, corridor;
+  office.name = "office";
+  office.size_m = {4, 3, 3};
+  corridor.name = "corridor";
+  corridor.origin = {0, 3, 0};
+  corridor.size_m = {4, 2, 3};
+  project::WindowSpec outside;
+  outside.name = "south";
+  outside.wall = project::Wall::South;
+  outside.width_m = 2;
+  outside.height_m = 1;
+  outside.sill_m = 1;
+  outside.material = "glazing";
+  project::WindowSpec inside = outside;
+  inside.name = "to_corridor";
+  inside.wall = project::Wall::North;
+  office.windows = {outside, inside};
+  p.geometry.rooms = {office, corridor};
+  ASSERT_EQ(project::interior_windows(p.geometry).size(), 1u);
+  CaseResult c;
+  set_building(c, p, SceneDescription{});
+  ASSERT_EQ(c.rooms.size(), 2u);
+  const RoomSummary& r = c.rooms[0];
+  ASSERT_EQ(r.windows.size(), 2u);
+  EXPECT_EQ(r.windows[1].wall, "north (interior)");
+  EXPECT_EQ(r.window_area_m2, 2);           // the south window only
+  EXPECT_EQ(r.glazed_wall_area_m2, 4 * 3);  // the south wall only
+  EXPECT_TRUE(c.rooms[1].windows.empty());
+}
