@@ -13,15 +13,14 @@
 #include <optional>
 #include <sstream>
 
-#include <OpenEXRConfig.h>
-#include <png.h>
-
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/report/colour_scale.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/image_files.h"
+#include "dayphoton/report/report_format.h"
+#include "report_sections.h"
 
 #ifndef DAYPHOTON_VERSION
 #define DAYPHOTON_VERSION "unknown"
@@ -40,22 +39,6 @@ using study::encode_png;
 using study::read_exr;
 
 std::string join(const std::string& dir, const std::string& name) { return (fs::path(dir) / name).string(); }
-
-std::string esc(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string num(double v, int decimals) {
   if (!std::isfinite(v)) return "-";
@@ -130,25 +113,6 @@ struct GridData {
   const AnnualSummary* annual() const { return grid->annual ? &*grid->annual : nullptr; }
 };
 
-/// The EPW LOCATION line as label/value pairs; empty if unreadable.
-std::vector<std::pair<std::string, std::string>> weather_station(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  if (!in || !std::getline(in, line)) return {};
-  if (!line.empty() && line.back() == '\r') line.pop_back();
-  std::vector<std::string> f;
-  std::stringstream ss(line);
-  for (std::string s; std::getline(ss, s, ',');) f.push_back(s);
-  if (f.size() < 10 || f[0] != "LOCATION") return {};
-  return {{"station", f[1] + (f[2].empty() || f[2] == "-" ? "" : ", " + f[2]) + ", " + f[3]},
-          {"data source", f[4]},
-          {"WMO station number", f[5]},
-          {"station latitude (deg, north +)", f[6]},
-          {"station longitude (deg, east +)", f[7]},
-          {"time zone (h from UTC)", f[8]},
-          {"elevation (m)", f[9]}};
-}
-
 /// A grid of the model with the values the report draws, read through the model's typed
 /// reader (study::read_quantity_values); what cannot be read is listed as a problem.
 GridData load_grid(const std::string& results_dir, const study::CaseResult& c, const GridResult& grid) {
@@ -160,7 +124,7 @@ GridData load_grid(const std::string& results_dir, const study::CaseResult& c, c
   g.name = grid.name;
   g.folder = grid.folder;
   g.folder_path = (fs::path(results_dir) / grid.folder).string();
-  g.id = "grid-" + id_part(c.name.empty() ? g.name : c.name + "--" + g.name);
+  g.id = grid_section_id(c, grid);
   g.positions = grid.positions_m;
   g.plan.outline = grid.outline;
   for (int k : grid.openings_drawn) g.plan.windows.push_back(c.openings.at(static_cast<std::size_t>(k)));
@@ -247,7 +211,7 @@ std::string polygon_points(const Frame& f, const std::vector<Vec3>& poly) {
 /// A false-colour plan of per-sensor values with the room outline, windows, north arrow and a
 /// 1 m scale bar; value labels in the cells when they are large enough.
 std::string plan_svg(const GridData& g, const study::SensorLattice& lattice, const std::vector<double>& values,
-                     const ColourScale& scale, int decimals, const std::string& what) {
+                     const ColourScale& scale, Precision precision, const std::string& what) {
   Frame f;
   if (lattice.regular) {
     f.origin = lattice.origin_m;
@@ -292,14 +256,14 @@ std::string plan_svg(const GridData& g, const study::SensorLattice& lattice, con
     if (lattice.regular) {
       s << "<rect x=\"" << num(cx - cell / 2, 1) << "\" y=\"" << num(cy - cell / 2, 1) << "\" width=\"" << num(cell, 1)
         << "\" height=\"" << num(cell, 1) << "\" fill=\"" << hex_colour(c) << "\"><title>sensor " << i << ": "
-        << num(values[i], decimals) << ' ' << esc(scale.unit) << "</title></rect>";
+        << format_value(values[i], precision) << ' ' << esc(scale.unit) << "</title></rect>";
       if (labels)
         s << "<text x=\"" << num(cx, 1) << "\" y=\"" << num(cy + 3.5, 1) << "\" class=\"cv\" fill=\""
-          << (scale.position(values[i]) > 0.62 ? "#000" : "#fff") << "\">" << num(values[i], decimals)
+          << (scale.position(values[i]) > 0.62 ? "#000" : "#fff") << "\">" << format_value(values[i], precision)
           << "</text>";
     } else {
       s << "<circle cx=\"" << num(cx, 1) << "\" cy=\"" << num(cy, 1) << "\" r=\"5\" fill=\"" << hex_colour(c)
-        << "\" stroke=\"#333\" stroke-width=\"0.5\"><title>sensor " << i << ": " << num(values[i], decimals) << ' '
+        << "\" stroke=\"#333\" stroke-width=\"0.5\"><title>sensor " << i << ": " << format_value(values[i], precision) << ' '
         << esc(scale.unit) << "</title></circle>";
     }
   }
@@ -360,7 +324,7 @@ std::string histogram_svg(const std::vector<double>& values, const std::vector<d
       << num(bw - 2, 1) << "\" height=\"" << num(std::max(bh, 0.0), 1) << "\" fill=\""
       << hex_colour(scale.colour(centre)) << "\"><title>" << tick(edges[b])
       << (b + 1 < bins ? "&#8211;" + tick(edges[b + 1]) : std::string(" and above")) << ' ' << esc(scale.unit) << ": "
-      << num(counts[b], 1) << " % of sensors</title></rect>";
+      << format_value(counts[b], Precision::Percent) << " % of sensors</title></rect>";
   }
   const std::size_t label_every = bins > 12 ? 2 : 1;
   for (std::size_t b = 0; b < bins; b += label_every)
@@ -401,10 +365,10 @@ std::string udi_bars_svg(const AnnualSummary& a) {
     for (const Part& p : parts) {
       const double pw = w * std::clamp(p.share, 0.0, 100.0) / 100;
       s << "<rect x=\"" << num(at, 1) << "\" y=\"" << y << "\" width=\"" << num(pw, 1) << "\" height=\"" << bar
-        << "\" fill=\"" << p.colour << "\"><title>" << p.label << ": " << num(p.share, 1) << " %</title></rect>";
+        << "\" fill=\"" << p.colour << "\"><title>" << p.label << ": " << format_value(p.share, Precision::Percent) << " %</title></rect>";
       if (pw > 34)
         s << "<text x=\"" << num(at + pw / 2, 1) << "\" y=\"" << y + 17 << "\" class=\"cv\" fill=\"#000\">"
-          << num(p.share, 1) << "</text>";
+          << format_value(p.share, Precision::Percent) << "</text>";
       at += pw;
     }
   };
@@ -533,47 +497,33 @@ std::string key_value_table(const std::vector<std::pair<std::string, std::string
   return s.str();
 }
 
-/// A number as the tables show it: up to 4 decimals, no trailing zeros.
-std::string scalar(double v) {
-  std::string t = num(v, 4);
-  if (t.find('.') != std::string::npos) {
-    t.erase(t.find_last_not_of('0') + 1);
-    if (t.back() == '.') t.pop_back();
-  }
-  return t;
-}
-
-std::string badge(bool pass, const std::string& text) {
-  return std::string("<span class=\"badge ") + (pass ? "pass" : "fail") + "\">" + text + "</span>";
-}
-
 /// The grid means of the annual metrics, labelled, in the order of metrics.csv's columns:
-/// (label, value, unit, decimals).
+/// (label, value, unit, precision).
 struct MetricRow {
   std::string label;
   double value;
   std::string unit;
-  int decimals;
+  Precision precision;
 };
 std::vector<MetricRow> metric_rows(const AnnualSummary& a) {
   const std::string x = key_number(a.da_threshold_lux), low = key_number(a.udi_lower_lux),
                     up1 = key_number(a.udi_upper_original_lux), up2 = key_number(a.udi_upper_revised_lux);
-  return {{"daylight autonomy DA" + x + ": E &#8805; " + x + " lx", a.da_percent, "%", 1},
-          {"continuous daylight autonomy cDA" + x + " (mean of min(1, E/" + x + " lx))", a.cda_percent, "%", 1},
-          {"DAmax: share of occupied hours above 10 times the DA threshold", a.da_max_percent, "%", 1},
-          {"UDI fell short: E &lt; " + low + " lx", a.udi_below_percent, "%", 1},
-          {"UDI achieved (original): " + low + "&#8211;" + up1 + " lx", a.udi_achieved_percent, "%", 1},
-          {"UDI exceeded: E &gt; " + up1 + " lx", a.udi_above_original_percent, "%", 1},
-          {"revised UDI supplementary: " + low + "&#8211;" + x + " lx", a.udi_supplementary_percent, "%", 1},
-          {"revised UDI autonomous: " + x + "&#8211;" + up2 + " lx", a.udi_autonomous_percent, "%", 1},
-          {"UDI exceeded: E &gt; " + up2 + " lx", a.udi_above_revised_percent, "%", 1},
-          {"mean illuminance, occupied hours", a.mean_occupied_lux, "lx", 0}};
+  return {{"daylight autonomy DA" + x + ": E &#8805; " + x + " lx", a.da_percent, "%", Precision::Percent},
+          {"continuous daylight autonomy cDA" + x + " (mean of min(1, E/" + x + " lx))", a.cda_percent, "%", Precision::Percent},
+          {"DAmax: share of occupied hours above 10 times the DA threshold", a.da_max_percent, "%", Precision::Percent},
+          {"UDI fell short: E &lt; " + low + " lx", a.udi_below_percent, "%", Precision::Percent},
+          {"UDI achieved (original): " + low + "&#8211;" + up1 + " lx", a.udi_achieved_percent, "%", Precision::Percent},
+          {"UDI exceeded: E &gt; " + up1 + " lx", a.udi_above_original_percent, "%", Precision::Percent},
+          {"revised UDI supplementary: " + low + "&#8211;" + x + " lx", a.udi_supplementary_percent, "%", Precision::Percent},
+          {"revised UDI autonomous: " + x + "&#8211;" + up2 + " lx", a.udi_autonomous_percent, "%", Precision::Percent},
+          {"UDI exceeded: E &gt; " + up2 + " lx", a.udi_above_revised_percent, "%", Precision::Percent},
+          {"mean illuminance, occupied hours", a.mean_occupied_lux, "lx", Precision::Illuminance}};
 }
 
 std::string plan_block(const GridData& g, const study::SensorLattice& lattice, const std::vector<double>& values,
-                       const ColourScale& scale, int decimals, const std::string& caption, PageIds& page) {
+                       const ColourScale& scale, Precision precision, const std::string& caption, PageIds& page) {
   std::ostringstream s;
-  s << "<figure class=\"planfig\"><div class=\"row\">" << plan_svg(g, lattice, values, scale, decimals, caption)
+  s << "<figure class=\"planfig\"><div class=\"row\">" << plan_svg(g, lattice, values, scale, precision, caption)
     << legend_svg(scale, page) << "</div><figcaption>" << caption << "</figcaption></figure>";
   return s.str();
 }
@@ -585,7 +535,10 @@ std::string grid_section(const GridData& g, PageIds& page) {
   s << "<section class=\"grid\" id=\"" << g.id << "\"><h2>"
     << (g.case_name.empty() ? "Grid " : operated ? "Operated shading " : "Variant ")
     << esc(g.title()) << "</h2>";
-  s << "<p class=\"meta\">" << g.positions.size() << " sensors; folder <code>" << esc(g.folder_path) << "</code>";
+  const double spacing = g.grid->spacing_m > 0 ? g.grid->spacing_m : g.grid->lattice.regular ? g.grid->lattice.spacing_m : 0;
+  s << "<p class=\"meta\">" << g.positions.size() << " sensors"
+    << (spacing > 0 ? ", spacing " + format_value(spacing, Precision::Length) + " m" : std::string()) << ", "
+    << study::orientation_name(g.grid->orientation);
   if (!g.changes.empty()) {
     std::string changes;
     for (const std::string& c : g.changes) changes += (changes.empty() ? "" : ", ") + c;
@@ -600,30 +553,25 @@ std::string grid_section(const GridData& g, PageIds& page) {
   s << "<div class=\"part\" id=\"" << g.id << "-df\"><h3>Daylight factor (CIE overcast sky)</h3>";
   if (g.df && g.grid->daylight_factor) {
     const std::vector<double>& df = *g.df;
-    s << plan_block(g, lattice, df, daylight_factor_scale(), 1,
+    s << plan_block(g, lattice, df, daylight_factor_scale(), Precision::DaylightFactor,
                     "Daylight factor per sensor (%), CIE standard overcast sky, ground included. Windows in blue.", page);
     const study::DaylightFactorSummary& st = *g.grid->daylight_factor;
+    auto df_text = [](double v) { return format_value(v, Precision::DaylightFactor) + " %"; };
     std::vector<std::pair<std::string, std::string>> rows{
-        {"mean", scalar(st.mean_percent) + " %"},
-        {"median", scalar(st.median_percent) + " %"},
-        {"minimum", scalar(st.min_percent) + " %"},
-        {"maximum", scalar(st.max_percent) + " %"},
-        {"uniformity (min / mean)", scalar(st.uniformity)}};
+        {"mean", df_text(st.mean_percent)},
+        {"median", df_text(st.median_percent)},
+        {"minimum", df_text(st.min_percent)},
+        {"maximum", df_text(st.max_percent)},
+        {"uniformity (min / mean)", format_value(st.uniformity, Precision::Ratio)}};
     for (const auto& [threshold, area] : st.area_at_or_above_percent)
-      rows.emplace_back("area with DF &#8805; " + scalar(threshold) + " %", scalar(area) + " %");
+      rows.emplace_back("area with DF &#8805; " + format_value(threshold, Precision::DaylightFactor) + " %",
+                        format_value(area, Precision::Percent) + " %");
     // The Monte Carlo uncertainty (docs/outputs.md, daylight_factor.csv): relative standard
-    // error of DF over the sensors with daylight.
-    rows.emplace_back("standard error of DF, RMS over sensors (relative)", scalar(st.rms_relative_stderr_percent) + " %");
-    rows.emplace_back("standard error of DF, largest (relative)", scalar(st.max_relative_stderr_percent) + " %");
-    // The accuracy target (docs/photon-tracing.md, "Accuracy target"): what the rounds reached.
-    if (const auto& acc = st.accuracy)
-      rows.emplace_back("accuracy target: standard error of DF, 95th percentile of the sensors (relative)",
-                        scalar(acc->reached_percent) + " % (target " + scalar(acc->target_percent) + " %; " +
-                            esc(acc->stop_reason) + " after " + std::to_string(acc->rounds) + " rounds, " +
-                            std::to_string(acc->photons) + " photons)");
-    // The annual verdicts within two standard errors (docs/metrics.md).
+    // error of DF over the sensors with daylight; the methods section tables it for every grid.
+    rows.emplace_back("standard error of DF, RMS over sensors (relative)", df_text(st.rms_relative_stderr_percent));
+    rows.emplace_back("standard error of DF, largest (relative)", df_text(st.max_relative_stderr_percent));
     if (annual && annual->da_verdicts_within_2_sigma)
-      rows.emplace_back("sensors whose DA verdict could flip within 2 standard errors",
+      rows.emplace_back("sensors whose DA verdict could change within 2 standard errors",
                         std::to_string(*annual->da_verdicts_within_2_sigma));
     s << key_value_table(rows);
   } else {
@@ -636,7 +584,7 @@ std::string grid_section(const GridData& g, PageIds& page) {
   const std::vector<double> da = g.da && annual ? *g.da : std::vector<double>{};
   if (!da.empty()) {
     const std::string threshold = key_number(annual->da_threshold_lux);
-    s << plan_block(g, lattice, da, percent_scale("DA" + threshold), 0,
+    s << plan_block(g, lattice, da, percent_scale("DA" + threshold), Precision::Percent,
                     "DA" + threshold + ": share of occupied hours with illuminance &#8805; " + threshold + " lx (%).", page);
   } else {
     s << "<p class=\"na\">metrics.csv not found: no annual results.</p>";
@@ -649,12 +597,12 @@ std::string grid_section(const GridData& g, PageIds& page) {
   const std::vector<double> autonomous = g.autonomous ? *g.autonomous : std::vector<double>{};
   if (!udi.empty() && annual) {
     s << "<div class=\"row\">"
-      << plan_block(g, lattice, udi, percent_scale("UDI achieved"), 0,
+      << plan_block(g, lattice, udi, percent_scale("UDI achieved"), Precision::Percent,
                     "UDI achieved, original convention (" + key_number(annual->udi_lower_lux) + "&#8211;" +
                         key_number(annual->udi_upper_original_lux) +
                         " lx): share of occupied hours (%).", page);
     if (!autonomous.empty())
-      s << plan_block(g, lattice, autonomous, percent_scale("UDI autonomous"), 0,
+      s << plan_block(g, lattice, autonomous, percent_scale("UDI autonomous"), Precision::Percent,
                       "UDI autonomous, revised convention (" + key_number(annual->da_threshold_lux) + "&#8211;" +
                           key_number(annual->udi_upper_revised_lux) +
                           " lx): share of occupied hours (%).", page);
@@ -665,48 +613,38 @@ std::string grid_section(const GridData& g, PageIds& page) {
   }
   s << "</div>";
 
-  // Compliance.
-  s << "<div class=\"part\" id=\"" << g.id << "-compliance\"><h3>sDA, ASE and EN 17037</h3>";
-  if (annual) {
-    const double sda = annual->sda_percent;
-    const std::string da_lux = tick(annual->da_threshold_lux);
-    const std::string frac = tick(100 * annual->sda_time_fraction);
-    s << "<table class=\"grid-table\"><tr><th>criterion (IES LM-83-12)</th><th>value</th><th>requirement</th><th>result</th></tr>";
-    s << "<tr><td>sDA" << da_lux << "/" << frac << "%: share of sensors with DA" << da_lux << " &#8805; " << frac
-      << " %</td><td>" << num(sda, 1) << " % (" << annual->sda_sensors << " of " << annual->sensors
-      << ")</td><td>&#8805; 55 % nominally accepted</td><td>" << badge(sda >= 55, sda >= 55 ? "pass" : "fail")
-      << "</td></tr>";
-    s << "<tr><td></td><td></td><td>&#8805; 75 % preferred</td><td>" << badge(sda >= 75, sda >= 75 ? "pass" : "fail")
-      << "</td></tr>";
-    s << "<tr><td>ASE" << tick(annual->ase_threshold_lux) << "," << tick(annual->ase_hours)
-      << ": share of sensors with more than " << tick(annual->ase_hours) << " occupied hours of direct sun &#8805; "
-      << tick(annual->ase_threshold_lux) << " lx</td>";
-    if (annual->ase_percent) {
-      const double a = *annual->ase_percent;
-      s << "<td>" << num(a, 1) << " %</td><td>&#8804; 10 %</td><td>" << badge(a <= 10, a <= 10 ? "pass" : "fail") << "</td>";
-    } else {
-      s << "<td colspan=\"3\" class=\"na\">not computed: ASE needs a direct-sun-only illuminance table (sun bins); "
-           "this run spread the sun into sky patches</td>";
+  // Compliance: the model's verdicts (study/compliance_verdicts.h), with the values they test.
+  s << "<div class=\"part\" id=\"" << g.id << "-compliance\"><h3>Compliance</h3>";
+  if (!g.grid->verdicts.empty()) {
+    s << "<table class=\"grid-table\"><tr><th>standard</th><th>criterion</th><th>requirement</th><th>value</th>"
+         "<th>result</th><th>remark</th></tr>";
+    for (const study::Verdict& v : g.grid->verdicts) {
+      std::string value = "-";
+      if (v.value)
+        value = v.unit == "level" ? format_value(*v.value, Precision::Length) + " of 3"
+                : v.standard.rfind("BREEAM", 0) == 0 ? format_value(*v.value, Precision::DaylightFactor) + " %"
+                                                     : format_value(*v.value, Precision::Percent) + " " + esc(v.unit);
+      s << "<tr><td>" << esc(v.standard) << "</td><td>" << esc(v.criterion) << "</td><td>" << esc(v.requirement)
+        << "</td><td class=\"n\">" << value << "</td><td>" << verdict_badge(v.outcome, v.outcome) << "</td><td>"
+        << esc(v.reason) << "</td></tr>";
     }
-    s << "</tr></table>";
-    if (!annual->en17037.empty()) {
-      s << "<table class=\"grid-table\"><tr><th>EN 17037 level</th><th>target (50 % of the area)</th><th>area reaching it</th>"
-           "<th>minimum target (95 % of the area)</th><th>area reaching it</th><th>result</th></tr>";
-      for (const study::En17037Level& level : annual->en17037) {
-        s << "<tr><td>" << esc(level.level) << "</td><td>" << tick(level.target_lux) << " lx</td><td>"
-          << num(level.target_area_percent, 1) << " %</td><td>" << tick(level.minimum_target_lux) << " lx</td><td>"
-          << num(level.minimum_target_area_percent, 1) << " %</td><td>" << badge(level.passes, level.passes ? "pass" : "fail")
-          << "</td></tr>";
-      }
-      s << "</table><p class=\"note\">EN 17037 daylight provision over " << annual->en17037_daylight_hours
-        << " daylight hours (half the year, ranked by " << esc(annual->en17037_daylight_hours_source)
-        << "); a level passes when its target is met on &#8805; 50 % and its minimum target on &#8805; 95 % of the "
-           "area, each for &#8805; 50 % of the daylight hours.</p>";
-    } else {
-      s << "<p class=\"na\">EN 17037 not computed (the weather file lacks diffuse illuminance values).</p>";
-    }
+    s << "</table>";
   } else {
-    s << "<p class=\"na\">no annual results.</p>";
+    s << "<p class=\"na\">no verdicts recorded.</p>";
+  }
+  if (annual && !annual->en17037.empty() && g.grid->orientation == study::GridOrientation::Horizontal) {
+    s << "<table class=\"grid-table\"><tr><th>EN 17037 level</th><th>target (50 % of the area)</th><th>area reaching it</th>"
+         "<th>minimum target (95 % of the area)</th><th>area reaching it</th><th>result</th></tr>";
+    for (const study::En17037Level& level : annual->en17037)
+      s << "<tr><td>" << esc(level.level) << "</td><td>" << format_value(level.target_lux, Precision::Illuminance)
+        << " lx</td><td>" << format_value(level.target_area_percent, Precision::Percent) << " %</td><td>"
+        << format_value(level.minimum_target_lux, Precision::Illuminance) << " lx</td><td>"
+        << format_value(level.minimum_target_area_percent, Precision::Percent) << " %</td><td>"
+        << verdict_badge(level.passes ? "pass" : "fail", level.passes ? "pass" : "fail") << "</td></tr>";
+    s << "</table><p class=\"note\">EN 17037 daylight provision over " << annual->en17037_daylight_hours
+      << " daylight hours (half the year, ranked by " << esc(annual->en17037_daylight_hours_source)
+      << "); a level passes when its target is met on &#8805; 50 % and its minimum target on &#8805; 95 % of the "
+         "area, each for &#8805; 50 % of the daylight hours.</p>";
   }
   s << "</div>";
 
@@ -753,11 +691,11 @@ std::string grid_section(const GridData& g, PageIds& page) {
   if (annual) {
     s << "<table class=\"grid-table\"><tr><th>metric (grid mean over sensors)</th><th>value</th><th>unit</th></tr>";
     for (const MetricRow& row : metric_rows(*annual))
-      s << "<tr><td>" << row.label << "</td><td class=\"n\">" << num(row.value, row.decimals) << "</td><td>" << row.unit
+      s << "<tr><td>" << row.label << "</td><td class=\"n\">" << format_value(row.value, row.precision) << "</td><td>" << row.unit
         << "</td></tr>";
-    s << "<tr><td>sDA (share of sensors)</td><td class=\"n\">" << num(annual->sda_percent, 1) << "</td><td>%</td></tr>";
+    s << "<tr><td>sDA (share of sensors)</td><td class=\"n\">" << format_value(annual->sda_percent, Precision::Percent) << "</td><td>%</td></tr>";
     s << "<tr><td>ASE (share of sensors)</td><td class=\"n\">"
-      << (annual->ase_percent ? num(*annual->ase_percent, 1) : "-") << "</td><td>%</td></tr>";
+      << format_value(annual->ase_percent, Precision::Percent) << "</td><td>%</td></tr>";
     s << "<tr><td>occupied hours" << occupancy_note(annual->occupancy) << "</td><td class=\"n\">"
       << annual->occupied_hours << "</td><td>h</td></tr>";
     s << "<tr><td>time steps</td><td class=\"n\">" << annual->time_steps << "</td><td></td></tr>";
@@ -775,12 +713,16 @@ h1{font-size:1.6em;margin-bottom:0.2em}h2{border-bottom:2px solid #333;margin-to
 table{border-collapse:collapse;margin:0.5em 0}th,td{border:1px solid #bbb;padding:3px 8px;text-align:left;vertical-align:top}
 th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}table.kv th{width:18em}
 .row{display:flex;flex-wrap:wrap;gap:18px;align-items:flex-start}figure{margin:0.4em 0}figcaption{font-size:0.85em;color:#333;max-width:560px}
-.lt{font-size:11px;fill:#111}.cv{font-size:9px;text-anchor:middle}.badge{padding:1px 8px;border-radius:3px;font-weight:bold}
-.pass{background:#c7e9c0;color:#00441b}.fail{background:#fcbba1;color:#67000d}.na,.note{color:#444;font-size:0.9em}
+.lt{font-size:11px;fill:#111}.cv{font-size:9px;text-anchor:middle}.badge{padding:1px 8px;border-radius:3px;font-weight:bold;white-space:nowrap}
+.pass{background:#c7e9c0;color:#00441b}.fail{background:#fcbba1;color:#67000d}.na-badge{background:#e5e5e5;color:#333;font-weight:normal}
+.na,.note{color:#444;font-size:0.9em}.lead{font-size:1.1em}.delta{color:#555;font-size:0.9em}
+table.summary-table th,table.summary-table td{padding:3px 6px}
 .problem{color:#a00}nav ul{columns:2}code{font-size:0.9em}.meta{color:#333}
-#report-check{font-size:0.8em;color:#555}
-@media print{body{max-width:none;margin:0;font-size:10pt}nav,#report-check{display:none}
-.part,figure,table{break-inside:avoid;page-break-inside:avoid}section.grid{break-before:page;page-break-before:always}
+#report-check{display:none}
+@media print{body{max-width:none;margin:0;font-size:9.5pt}nav,#report-check,.screen-only{display:none}
+a{color:inherit;text-decoration:none}
+.part,figure,table,tr{break-inside:avoid;page-break-inside:avoid}h2,h3{break-after:avoid;page-break-after:avoid}
+section{break-before:page;page-break-before:always}section#summary{break-before:auto;page-break-before:auto}
 *{-webkit-print-color-adjust:exact;print-color-adjust:exact}}
 )CSS";
 
@@ -813,7 +755,7 @@ const char* const Script = R"JS(
     marker.setAttribute('data-images', String(images.length));
     if (problems.length === 0) {
       marker.setAttribute('data-status', 'ok');
-      marker.textContent = 'self-check: ' + ids.length + ' sections, ' + plots.length + ' plots, ' + images.length + ' images rendered';
+      marker.textContent = 'ok';
     } else {
       marker.setAttribute('data-status', 'failed');
       marker.textContent = 'self-check failed: ' + problems.join('; ');
@@ -822,88 +764,6 @@ const char* const Script = R"JS(
   });
 })();
 )JS";
-
-std::string summary_section(const ResultsModel& m, const std::string& results_dir) {
-  std::ostringstream s;
-  s << "<section id=\"summary\"><h2>Project</h2>";
-  std::vector<std::pair<std::string, std::string>> project{
-      {"project file", "<code>" + esc(m.project_file) + "</code>"},
-      {"results folder", "<code>" + esc(results_dir) + "</code>"},
-      {"site", esc(m.site_name)},
-      {"latitude (deg, north +)", scalar(m.latitude_deg)},
-      {"longitude (deg, east +)", scalar(m.longitude_deg)},
-      {"time zone (h from UTC, standard time)", scalar(m.time_zone_h)}};
-  // Which site the sun is computed for, in the words of check and the run log (sun_site.h).
-  project.emplace_back("sun and sky", m.sun_site ? esc(m.sun_sentence) : std::string("daylight-factor study: no sun"));
-  if (m.station_distance_km) project.emplace_back("weather station distance (km)", scalar(*m.station_distance_km));
-  if (m.below_horizon_hours)
-    project.emplace_back("hours with direct irradiance and the sun below the horizon",
-                         std::to_string(*m.below_horizon_hours) + " (their sun " + esc(m.below_horizon_their_sun) + ")");
-  s << "<h3>Site</h3>" << key_value_table(project);
-  s << "<h3 id=\"weather\">Weather</h3>";
-  std::vector<std::pair<std::string, std::string>> w;
-  if (m.weather_file.empty()) {
-    w.emplace_back("weather file", "none: a daylight-factor study (CIE overcast sky) needs no weather");
-  } else {
-    w.emplace_back("weather file", "<code>" + esc(m.weather_file) + "</code>");
-    for (const auto& [k, v] : weather_station(m.weather_file)) w.emplace_back(k, esc(v));
-    if (w.size() == 1) w.emplace_back("station", "the weather file is not readable from here");
-  }
-  s << key_value_table(w);
-  s << "<h3>Simulation settings</h3>";
-  std::vector<std::pair<std::string, std::string>> settings;
-  for (const study::Setting& setting : m.settings) settings.emplace_back(esc(setting.name), esc(setting.value));
-  s << key_value_table(settings);
-  s << "<h3>Versions</h3>";
-  std::vector<std::pair<std::string, std::string>> versions{
-      {"report written by", std::string("dayphoton ") + DAYPHOTON_VERSION},
-      {"OpenEXR", OPENEXR_VERSION_STRING},
-      {"libpng", PNG_LIBPNG_VER_STRING},
-      {"run: compiler", esc(m.compiler)},
-      {"run: dayphoton", esc(m.dayphoton_version)}};
-  s << key_value_table(versions);
-  // Results are identical whether computed or cached, so results.json holds no times: the
-  // run's history is in its log.
-  s << "<h3 id=\"run-time\">Run time</h3><p class=\"note\">What this run computed, what came from the cache, and the "
-       "time of each step: <code>run.log</code> in the results folder.</p>";
-  if (!m.notes.empty()) {
-    s << "<h3>Notes</h3><ul>";
-    for (const std::string& n : m.notes) s << "<li>" << esc(n) << "</li>";
-    s << "</ul>";
-  }
-  s << "<p class=\"note\">Plans: room outlines, windows and sensor lattices as the run recorded them "
-       "(results.json).</p>";
-  s << "</section>";
-  return s.str();
-}
-
-std::string overview_section(const std::vector<GridData>& grids) {
-  std::ostringstream s;
-  s << "<section id=\"overview\"><h2>Overview</h2><table class=\"grid-table\"><tr><th>case</th><th>grid</th>"
-       "<th>sensors</th><th>mean DF (%)</th><th>area DF &#8805; 2 % (%)</th><th>mean DA (%)</th><th>sDA (%)</th>"
-       "<th>ASE (%)</th><th>EN 17037</th></tr>";
-  for (const GridData& g : grids) {
-    const auto& df = g.grid->daylight_factor;
-    std::string area = "-";
-    if (df)
-      for (const auto& [threshold, a] : df->area_at_or_above_percent)
-        if (threshold == 2.0) area = num(a, 1);
-    s << "<tr><td>" << (g.case_name.empty() ? "base" : esc(g.case_name)) << "</td><td><a href=\"#" << g.id << "\">"
-      << esc(g.name) << "</a></td><td class=\"n\">" << g.positions.size() << "</td><td class=\"n\">"
-      << (df ? num(df->mean_percent, 2) : "-") << "</td><td class=\"n\">" << area << "</td>";
-    if (const AnnualSummary* annual = g.annual()) {
-      const std::string en = annual->en17037_level();
-      s << "<td class=\"n\">" << num(annual->da_percent, 1) << "</td><td class=\"n\">" << num(annual->sda_percent, 1)
-        << "</td><td class=\"n\">" << (annual->ase_percent ? num(*annual->ase_percent, 1) : "-") << "</td><td>"
-        << esc(en.empty() ? "-" : en) << "</td>";
-    } else {
-      s << "<td>-</td><td>-</td><td>-</td><td>-</td>";
-    }
-    s << "</tr>";
-  }
-  s << "</table><p class=\"note\">EN 17037: the highest level passed. ASE \"-\": not computed.</p></section>";
-  return s.str();
-}
 
 std::string sky_section(const std::string& results_dir, std::vector<std::string>& ids, PageIds& page) {
   std::ostringstream s;
@@ -940,8 +800,8 @@ std::string sky_section(const std::string& results_dir, std::vector<std::string>
     s << "<figure><div class=\"row\">" << sky_svg(image, scale, stem == "sky_mean" ? "annual mean sky" : "sky of one hour")
       << legend_svg(scale, page) << "</div><figcaption>" << (stem == "sky_mean" ? "Annual mean sky" : "One hour")
       << ": " << esc(time) << ". Luminance of the sky patches (cd/m&#178;, logarithmic), angular fisheye seen from "
-                              "below (east left); the sun is spread into its patches as in the annual sky matrix. "
-      << "File <code>" << stem << ".exr</code>.</figcaption></figure>";
+                              "below (east left); the sun is spread into its patches as in the annual sky matrix."
+      << "</figcaption></figure>";
   }
   s << "</div></section>";
   return s.str();
@@ -953,9 +813,14 @@ std::string report_html_of(const std::string& results_dir, const ResultsModel& m
   for (const study::CaseResult& c : model.cases)
     for (const GridResult& g : c.grids) grids.push_back(load_grid(results_dir, c, g));
 
-  std::vector<std::string> ids{"summary", "overview"};
+  // Client order: the summary first, then what it rests on, the per-grid detail, and the
+  // settings last.
+  std::vector<std::string> ids{"summary", "verdicts", "building"};
   std::ostringstream body;
-  body << summary_section(model, results_dir) << overview_section(grids);
+  body << summary_section(model) << verdicts_section(model) << building_section(model);
+  const std::string variants = variants_section(model);
+  if (!variants.empty()) ids.push_back("variants");
+  body << variants;
   for (const GridData& g : grids) {
     body << grid_section(g, page);
     ids.push_back(g.id);
@@ -963,31 +828,44 @@ std::string report_html_of(const std::string& results_dir, const ResultsModel& m
       ids.push_back(g.id + part);
   }
   body << sky_section(results_dir, ids, page);
+  body << methods_section(model) << appendix_section(model);
+  ids.push_back("methods");
+  ids.push_back("appendix");
 
-  const std::string project_name = model.project_name.empty() ? std::string("project") : model.project_name;
+  const std::string title = model.title.empty() ? model.project_name : model.title;
   std::ostringstream html;
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
           "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
           "<meta name=\"generator\" content=\"dayphoton " DAYPHOTON_VERSION "\">"
-       << "<title>dayphoton report: " << esc(model.site_name.empty() ? project_name : model.site_name)
-       << "</title><style>" << Style << "</style></head>\n<body data-sections=\"";
+       << "<title>Daylight report: " << esc(title) << "</title><style>" << Style << "</style></head>\n<body data-sections=\"";
   for (std::size_t i = 0; i < ids.size(); ++i) html << (i ? " " : "") << ids[i];
   html << "\"><svg width=\"0\" height=\"0\" style=\"position:absolute\" aria-hidden=\"true\"><defs>"
           "<marker id=\"arrowhead\" viewBox=\"0 0 10 10\" refX=\"5\" refY=\"5\" markerWidth=\"6\" markerHeight=\"6\" "
           "orient=\"auto-start-reverse\"><path d=\"M 0 0 L 10 5 L 0 10 z\"/></marker></defs></svg>\n";
-  html << "<header><h1>Daylight report: " << esc(model.site_name) << "</h1><p class=\"meta\">" << esc(project_name)
-       << ", " << grids.size() << " grid(s). Written by dayphoton " DAYPHOTON_VERSION " from the results model "
-       << "<code>results.json</code> in <code>" << esc(results_dir)
-       << "</code>.</p><p id=\"report-check\" data-status=\"pending\">self-check pending (needs JavaScript)</p></header>\n";
-  html << "<nav><h2>Contents</h2><ul><li><a href=\"#summary\">Project, weather, settings, run time</a></li>"
-          "<li><a href=\"#overview\">Overview</a></li>";
+  html << "<header><h1>Daylight report: " << esc(title) << "</h1><p class=\"meta\">"
+       << (model.site_name.empty() ? std::string() : esc(model.site_name) + " &#8212; ")
+       << (model.study == "annual" ? "annual climate-based study" : "daylight-factor study") << ", dayphoton "
+       << esc(model.dayphoton_version)
+       << "</p><p id=\"report-check\" data-status=\"pending\">pending</p></header>\n";
+  html << "<nav class=\"screen-only\"><h2>Contents</h2><ul><li><a href=\"#summary\">Summary</a></li>"
+          "<li><a href=\"#verdicts\">Compliance</a></li><li><a href=\"#building\">Building, materials and "
+          "sensors</a></li>";
+  if (!variants.empty()) html << "<li><a href=\"#variants\">Variants side by side</a></li>";
   for (const GridData& g : grids) html << "<li><a href=\"#" << g.id << "\">" << esc(g.title()) << "</a></li>";
   if (std::find(ids.begin(), ids.end(), "sky") != ids.end()) html << "<li><a href=\"#sky\">Sky</a></li>";
-  html << "</ul></nav>\n" << body.str() << "\n<script>" << Script << "</script>\n</body></html>\n";
+  html << "<li><a href=\"#methods\">Methods, validation, uncertainty</a></li><li><a href=\"#appendix\">Appendix: "
+          "settings and versions</a></li></ul></nav>\n"
+       << body.str() << "\n<script>" << Script << "</script>\n</body></html>\n";
   return html.str();
 }
 
 }  // namespace
+
+std::string grid_section_id(const study::CaseResult& c, const study::GridResult& g) {
+  return "grid-" + id_part(c.name.empty() ? g.name : c.name + "--" + g.name);
+}
+
+std::string case_label(const study::CaseResult& c) { return c.name.empty() ? std::string("base") : c.name; }
 
 std::string report_html(const std::string& results_dir, const ResultsModel& model) {
   return report_html_of(results_dir, model);

@@ -147,7 +147,39 @@ json grid_json(const GridResult& g) {
     points.push_back({{"name", p.name}, {"sky", p.sky}, {"mean_lux", p.mean_lux}, {"median_lux", p.median_lux},
                       {"min_lux", p.min_lux}, {"max_lux", p.max_lux}, {"uniformity", p.uniformity}});
   j["points_in_time"] = points;
+  j["spacing_m"] = g.spacing_m;
+  json verdicts = json::array();
+  for (const Verdict& v : g.verdicts)
+    verdicts.push_back({{"standard", v.standard}, {"criterion", v.criterion}, {"requirement", v.requirement},
+                        {"value", optional_number(v.value)}, {"unit", v.unit}, {"outcome", v.outcome},
+                        {"reason", v.reason}});
+  j["verdicts"] = verdicts;
   return j;
+}
+
+json materials_json(const std::vector<MaterialSummary>& materials) {
+  json a = json::array();
+  for (const MaterialSummary& m : materials)
+    a.push_back({{"name", m.name}, {"type", m.type}, {"reflectance", optional_number(m.reflectance)},
+                 {"transmittance", optional_number(m.transmittance)}, {"specularity", m.specularity},
+                 {"area_m2", m.area_m2}});
+  return a;
+}
+
+json rooms_json(const std::vector<RoomSummary>& rooms) {
+  json a = json::array();
+  for (const RoomSummary& r : rooms) {
+    json windows = json::array();
+    for (const WindowSummary& w : r.windows)
+      windows.push_back({{"name", w.name}, {"wall", w.wall}, {"width_m", w.width_m}, {"height_m", w.height_m},
+                         {"sill_m", w.sill_m}, {"area_m2", w.area_m2}, {"material", w.material},
+                         {"frame_factor", w.frame_factor}, {"maintenance_factor", w.maintenance_factor}});
+    a.push_back({{"name", r.name}, {"width_m", r.width_m}, {"depth_m", r.depth_m}, {"height_m", r.height_m},
+                 {"floor_area_m2", r.floor_area_m2}, {"window_area_m2", r.window_area_m2},
+                 {"glazed_wall_area_m2", r.glazed_wall_area_m2}, {"roof_light_area_m2", r.roof_light_area_m2},
+                 {"windows", windows}});
+  }
+  return a;
 }
 
 // ---- reading: every field required and typed, errors name the key -----------------------
@@ -373,7 +405,66 @@ struct Reader {
                                   number(p, pk, "median_lux"), number(p, pk, "min_lux"), number(p, pk, "max_lux"),
                                   number(p, pk, "uniformity")});
     }
+    g.spacing_m = number(j, at_grid, "spacing_m");
+    const std::string vk = at_grid + ".verdicts";
+    for (const json& v : array(j, at_grid, "verdicts")) {
+      Verdict d;
+      d.standard = text(v, vk, "standard");
+      d.criterion = text(v, vk, "criterion");
+      d.requirement = text(v, vk, "requirement");
+      d.value = optional_number(v, vk, "value");
+      d.unit = text(v, vk, "unit");
+      d.outcome = text(v, vk, "outcome");
+      if (d.outcome != "pass" && d.outcome != "fail" && d.outcome != "not assessed")
+        fail(vk + ".outcome", "is not pass, fail or not assessed");
+      if ((d.outcome == "not assessed") == d.value.has_value())
+        fail(vk + ".value", d.value ? "is given for a criterion not assessed" : "is missing for an assessed criterion");
+      d.reason = text(v, vk, "reason");
+      g.verdicts.push_back(d);
+    }
     return g;
+  }
+
+  std::vector<MaterialSummary> materials(const json& j, const std::string& parent) const {
+    std::vector<MaterialSummary> out;
+    const std::string k = parent + ".materials";
+    for (const json& m : array(j, parent, "materials")) {
+      MaterialSummary s;
+      s.name = text(m, k, "name");
+      s.type = text(m, k, "type");
+      s.reflectance = optional_number(m, k, "reflectance");
+      s.transmittance = optional_number(m, k, "transmittance");
+      s.specularity = number(m, k, "specularity");
+      s.area_m2 = number(m, k, "area_m2");
+      for (const std::optional<double>* f : {&s.reflectance, &s.transmittance})
+        if (*f && !(**f >= 0 && **f <= 1)) fail(k + "[" + s.name + "]", "has a reflectance or transmittance outside [0, 1]");
+      out.push_back(s);
+    }
+    return out;
+  }
+
+  std::vector<RoomSummary> rooms(const json& j, const std::string& parent) const {
+    std::vector<RoomSummary> out;
+    const std::string k = parent + ".rooms";
+    for (const json& r : array(j, parent, "rooms")) {
+      RoomSummary s;
+      s.name = text(r, k, "name");
+      const std::string rk = k + "[" + s.name + "]";
+      s.width_m = number(r, rk, "width_m");
+      s.depth_m = number(r, rk, "depth_m");
+      s.height_m = number(r, rk, "height_m");
+      s.floor_area_m2 = number(r, rk, "floor_area_m2");
+      s.window_area_m2 = number(r, rk, "window_area_m2");
+      s.glazed_wall_area_m2 = number(r, rk, "glazed_wall_area_m2");
+      s.roof_light_area_m2 = number(r, rk, "roof_light_area_m2");
+      const std::string wk = rk + ".windows";
+      for (const json& w : array(r, rk, "windows"))
+        s.windows.push_back({text(w, wk, "name"), text(w, wk, "wall"), number(w, wk, "width_m"), number(w, wk, "height_m"),
+                             number(w, wk, "sill_m"), number(w, wk, "area_m2"), text(w, wk, "material"),
+                             number(w, wk, "frame_factor"), number(w, wk, "maintenance_factor")});
+      out.push_back(s);
+    }
+    return out;
   }
 };
 
@@ -444,6 +535,25 @@ bool PointInTimeSummary::operator==(const PointInTimeSummary& o) const {
   return name == o.name && sky == o.sky && mean_lux == o.mean_lux && median_lux == o.median_lux &&
          min_lux == o.min_lux && max_lux == o.max_lux && uniformity == o.uniformity;
 }
+bool Verdict::operator==(const Verdict& o) const {
+  return standard == o.standard && criterion == o.criterion && requirement == o.requirement && value == o.value &&
+         unit == o.unit && outcome == o.outcome && reason == o.reason;
+}
+bool MaterialSummary::operator==(const MaterialSummary& o) const {
+  return name == o.name && type == o.type && reflectance == o.reflectance && transmittance == o.transmittance &&
+         specularity == o.specularity && area_m2 == o.area_m2;
+}
+bool WindowSummary::operator==(const WindowSummary& o) const {
+  return name == o.name && wall == o.wall && width_m == o.width_m && height_m == o.height_m && sill_m == o.sill_m &&
+         area_m2 == o.area_m2 && material == o.material && frame_factor == o.frame_factor &&
+         maintenance_factor == o.maintenance_factor;
+}
+bool RoomSummary::operator==(const RoomSummary& o) const {
+  return name == o.name && width_m == o.width_m && depth_m == o.depth_m && height_m == o.height_m &&
+         floor_area_m2 == o.floor_area_m2 && window_area_m2 == o.window_area_m2 &&
+         glazed_wall_area_m2 == o.glazed_wall_area_m2 && roof_light_area_m2 == o.roof_light_area_m2 &&
+         windows == o.windows;
+}
 const SensorQuantity* GridResult::find_quantity(const std::string& kind) const {
   for (const SensorQuantity& q : quantities)
     if (q.kind == kind) return &q;
@@ -455,11 +565,12 @@ bool GridResult::operator==(const GridResult& o) const {
          openings_drawn == o.openings_drawn && dropped_outside_rooms == o.dropped_outside_rooms &&
          dropped_inside_solid == o.dropped_inside_solid && quantities == o.quantities &&
          daylight_factor == o.daylight_factor && annual == o.annual && points_in_time == o.points_in_time &&
-         has_illuminance_table == o.has_illuminance_table;
+         has_illuminance_table == o.has_illuminance_table && spacing_m == o.spacing_m && verdicts == o.verdicts;
 }
 bool CaseResult::operator==(const CaseResult& o) const {
   return kind == o.kind && name == o.name && folder == o.folder && changes == o.changes && openings == o.openings &&
-         systems == o.systems && grids == o.grids;
+         systems == o.systems && materials == o.materials && rooms == o.rooms &&
+         opening_area_m2 == o.opening_area_m2 && grids == o.grids;
 }
 bool ResultsModel::operator==(const ResultsModel& o) const {
   return schema_version == o.schema_version && project_name == o.project_name && project_file == o.project_file &&
@@ -469,7 +580,8 @@ bool ResultsModel::operator==(const ResultsModel& o) const {
          sun_site == o.sun_site && sun_sentence == o.sun_sentence && station_distance_km == o.station_distance_km &&
          below_horizon_hours == o.below_horizon_hours && below_horizon_their_sun == o.below_horizon_their_sun &&
          weather_file == o.weather_file && basis == o.basis && reinhart_mf == o.reinhart_mf &&
-         ground_reflectance == o.ground_reflectance && settings == o.settings && notes == o.notes && cases == o.cases;
+         ground_reflectance == o.ground_reflectance && settings == o.settings && notes == o.notes && cases == o.cases &&
+         title == o.title && not_assessed == o.not_assessed;
 }
 
 std::string results_json(const ResultsModel& m) {
@@ -480,7 +592,9 @@ std::string results_json(const ResultsModel& m) {
     json grids = json::array();
     for (const GridResult& g : c.grids) grids.push_back(grid_json(g));
     cases.push_back({{"kind", c.kind}, {"name", c.name}, {"folder", c.folder}, {"changes", c.changes},
-                     {"openings", polygons(c.openings)}, {"systems", polygons(c.systems)}, {"grids", grids}});
+                     {"openings", polygons(c.openings)}, {"systems", polygons(c.systems)},
+                     {"materials", materials_json(c.materials)}, {"rooms", rooms_json(c.rooms)},
+                     {"opening_area_m2", c.opening_area_m2}, {"grids", grids}});
   }
   json site = {{"name", m.site_name}, {"latitude_deg", m.latitude_deg}, {"longitude_deg", m.longitude_deg},
                {"time_zone_h", m.time_zone_h}, {"elevation_m", m.elevation_m}, {"sun_from_weather", m.sun_from_weather},
@@ -492,7 +606,7 @@ std::string results_json(const ResultsModel& m) {
     site["sun_site"] = {{"latitude_deg", (*m.sun_site)[0]}, {"longitude_deg", (*m.sun_site)[1]},
                         {"time_zone_h", (*m.sun_site)[2]}, {"elevation_m", (*m.sun_site)[3]}};
   const json j = {{"schema_version", m.schema_version},
-                  {"project", {{"name", m.project_name}, {"file", m.project_file}}},
+                  {"project", {{"name", m.project_name}, {"title", m.title}, {"file", m.project_file}}},
                   {"versions", {{"dayphoton", m.dayphoton_version}, {"compiler", m.compiler}}},
                   {"study", m.study},
                   {"site", site},
@@ -500,6 +614,7 @@ std::string results_json(const ResultsModel& m) {
                   {"sky", {{"basis", m.basis}, {"reinhart_mf", m.reinhart_mf}, {"ground_reflectance", m.ground_reflectance}}},
                   {"settings", settings},
                   {"notes", m.notes},
+                  {"not_assessed", m.not_assessed},
                   {"cases", cases}};
   return json_text(j) + "\n";
 }
@@ -516,6 +631,7 @@ ResultsModel parse_results_json(const std::string& text, const std::string& path
                          std::to_string(ResultsSchemaVersion) + ": run the study again with this dayphoton");
   const json& project = r.at(j, "", "project");
   m.project_name = r.text(project, "project", "name");
+  m.title = r.text(project, "project", "title");
   m.project_file = r.text(project, "project", "file");
   const json& versions = r.at(j, "", "versions");
   m.dayphoton_version = r.text(versions, "versions", "dayphoton");
@@ -547,6 +663,7 @@ ResultsModel parse_results_json(const std::string& text, const std::string& path
   m.ground_reflectance = r.number(sky, "sky", "ground_reflectance");
   for (const json& s : r.array(j, "", "settings")) m.settings.push_back({r.text(s, "settings", "name"), r.text(s, "settings", "value")});
   m.notes = r.texts(j, "", "notes");
+  m.not_assessed = r.texts(j, "", "not_assessed");
   for (const json& c : r.array(j, "", "cases")) {
     CaseResult cr;
     cr.kind = r.text(c, "cases", "kind");
@@ -556,6 +673,9 @@ ResultsModel parse_results_json(const std::string& text, const std::string& path
     cr.changes = r.texts(c, "cases", "changes");
     cr.openings = r.polygons(r.at(c, "cases", "openings"), "cases.openings");
     cr.systems = r.polygons(r.at(c, "cases", "systems"), "cases.systems");
+    cr.materials = r.materials(c, "cases[" + cr.name + "]");
+    cr.rooms = r.rooms(c, "cases[" + cr.name + "]");
+    cr.opening_area_m2 = r.number(c, "cases", "opening_area_m2");
     for (const json& g : r.array(c, "cases", "grids")) {
       cr.grids.push_back(r.grid(g, "cases[" + cr.name + "].grids"));
       for (int k : cr.grids.back().openings_drawn)

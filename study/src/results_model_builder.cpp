@@ -9,6 +9,8 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/polygon.h"
+#include "dayphoton/core/units.h"
+#include "dayphoton/engine/material.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/sensor_lattice.h"
 
@@ -50,6 +52,7 @@ ResultsModel results_model_header(const project::Project& project, const std::st
   ResultsModel m;
   m.project_file = project.path;
   m.project_name = std::filesystem::path(project.path).filename().string();
+  m.title = project_title(project.path);
   m.dayphoton_version = version;
   m.compiler = __VERSION__;
   m.study = project::study_kind_name(project.study);
@@ -84,6 +87,89 @@ ResultsModel results_model_header(const project::Project& project, const std::st
   }
   m.notes = notes;
   return m;
+}
+
+std::string project_title(const std::string& project_path) {
+  const std::filesystem::path p = std::filesystem::absolute(project_path).lexically_normal();
+  const std::string stem = p.stem().string();
+  if (p.filename() == "project.yaml" && p.has_parent_path() && !p.parent_path().filename().empty())
+    return p.parent_path().filename().string();
+  return stem;
+}
+
+void set_building(CaseResult& c, const project::Project& project, const SceneDescription& scene) {
+  c.materials.clear();
+  c.rooms.clear();
+  c.opening_area_m2 = 0;
+  std::vector<double> area(scene.materials.size(), 0.0);
+  for (const Surface& s : scene.surfaces) {
+    if (s.material >= 0 && static_cast<std::size_t>(s.material) < area.size())
+      area[static_cast<std::size_t>(s.material)] += polygon_area_m2(s.vertices);
+    if (s.port || s.port_if_outdoors) c.opening_area_m2 += polygon_area_m2(s.vertices);
+  }
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    if (area[i] <= 0) continue;  // defined but on no surface of this case
+    const MaterialSpec& spec = scene.materials[i];
+    MaterialSummary m;
+    m.name = spec.name;
+    m.type = material_type_as_written(spec);
+    m.area_m2 = area[i];
+    const engine::Material model = engine::Material::from_spec(spec);
+    switch (spec.type) {
+      case MaterialType::Lambertian:
+      case MaterialType::Metal:
+      case MaterialType::Mirror:
+      case MaterialType::Translucent:
+        m.reflectance = dot(RgbLuminanceWeights, spec.reflectance);
+        m.specularity = spec.type == MaterialType::Mirror ? 1.0 : spec.specularity;
+        break;
+      case MaterialType::Registered: m.reflectance = dot(RgbLuminanceWeights, model.diffuse_reflectance()); break;
+      default: break;
+    }
+    // Light from outside at normal incidence travels along +n (pane 1 faces away from n).
+    const Vec3 n{0, 0, 1};
+    const double t = dot(RgbLuminanceWeights, model.straight_transmittance(n, n) + model.diffuse_transmittance());
+    if (t > 0) m.transmittance = t;
+    c.materials.push_back(m);
+  }
+  // Windows between two rooms are listed but are not openings to the outside: they count in
+  // neither the window area nor the window-to-wall ratio.
+  const std::vector<project::InteriorWindow> interior = project::interior_windows(project.geometry);
+  auto is_interior = [&](const std::string& room, const std::string& window) {
+    for (const project::InteriorWindow& w : interior)
+      if (w.room == room && w.window == window) return true;
+    return false;
+  };
+  for (const project::RoomSpec& r : project.geometry.rooms) {
+    RoomSummary room;
+    room.name = r.name;
+    room.width_m = r.size_m.x;
+    room.depth_m = r.size_m.y;
+    room.height_m = r.size_m.z;
+    room.floor_area_m2 = r.size_m.x * r.size_m.y;
+    bool glazed[4] = {false, false, false, false};
+    for (const project::WindowSpec& w : r.windows) {
+      const double a = w.width_m * w.height_m;
+      const bool inner = is_interior(r.name, w.name);
+      room.windows.push_back({w.name, std::string(project::wall_name(w.wall)) + (inner ? " (interior)" : ""), w.width_m,
+                              w.height_m, w.sill_m, a, w.material, w.frame_factor, w.maintenance_factor});
+      if (inner) continue;
+      room.window_area_m2 += a;
+      glazed[static_cast<int>(w.wall)] = true;
+    }
+    for (int k = 0; k < 4; ++k) {
+      if (!glazed[k]) continue;
+      const project::Wall wall = static_cast<project::Wall>(k);
+      const double length = wall == project::Wall::South || wall == project::Wall::North ? r.size_m.x : r.size_m.y;
+      room.glazed_wall_area_m2 += length * r.size_m.z;
+    }
+    for (const project::RoofLightSpec& l : r.roof_lights) {
+      const double a = l.width_m * l.length_m;
+      room.windows.push_back({l.name, "roof", l.width_m, l.length_m, l.well_depth_m, a, l.material, 1, 1});
+      room.roof_light_area_m2 += a;
+    }
+    c.rooms.push_back(room);
+  }
 }
 
 CaseResult results_case(const std::string& kind, const std::string& name, const std::string& folder,
@@ -146,6 +232,7 @@ GridResult results_grid(const SensorGrid& grid, const std::string& folder, const
   g.orientation = orientation_of(grid.points);
   g.lattice = sensor_lattice(grid.points);
   g.outline = grid.outline;
+  g.spacing_m = grid.spacing_m;
   g.dropped_outside_rooms = dropped_outside_rooms;
   g.dropped_inside_solid = dropped_inside_solid;
   // A plan (a horizontal grid, or a point set without an outline) shows every opening; an

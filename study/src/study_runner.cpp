@@ -42,6 +42,7 @@
 #include "dayphoton/study/output_lock.h"
 #include "dayphoton/study/output_manifest.h"
 #include "dayphoton/study/result_files.h"
+#include "dayphoton/study/compliance_verdicts.h"
 #include "dayphoton/study/results_model_builder.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/study/verdict_uncertainty.h"
@@ -748,6 +749,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     materials.push_back(engine::Material::from_spec(m));
   const sky::PatchBasis basis = basis_of(sim);
   set_plan_geometry(*ctx.results, description);
+  set_building(*ctx.results, project, description);
   const engine::SourceSet sources = engine::SourceSet::sky_bins(basis);
   std::vector<engine::ReceiverPlane> planes;
   std::vector<int> plane_of_grid;
@@ -1244,6 +1246,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   ResultsModel model = results_model_header(project, settings.version, sun_site ? &*sun_site : nullptr,
                                             below_horizon ? &*below_horizon : nullptr, summary["simulation"], report.notes);
   model.cases = std::move(cases);
+  assess_compliance(model);
   outputs.record(write_results_model(model, report.output_dir));
   if ((project.outputs.images || project.outputs.report) && settings.write_views) {
     progress.start("images and report", 1, "report");

@@ -245,7 +245,7 @@ check_case report_bad_sky_hour 2 report tests/cli/cases/report_results --sky-hou
 # A results folder of a dayphoton before results.json: a located error that says to run again.
 check_case report_old_results 1 report tests/cli/cases/report_old_results --no-images
 "$bin" report tests/cli/cases/report_results --no-images -o "$scratch/report.html" --quiet
-if grep -q 'id="grid-grid-df"' "$scratch/report.html" && grep -q 'data-sections="summary overview grid-grid' "$scratch/report.html" &&
+if grep -q 'id="grid-grid-df"' "$scratch/report.html" && grep -q 'data-sections="summary verdicts building variants grid-grid' "$scratch/report.html" &&
    ! ls tests/cli/cases/report_results | grep -q -e report.html -e '\.exr$'; then
   echo "ok   report_html"; passed=$((passed + 1))
 else

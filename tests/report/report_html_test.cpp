@@ -17,6 +17,9 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/metrics/annual_metrics.h"
 #include "dayphoton/study/annual_illuminance.h"
+#include "dayphoton/report/report_format.h"
+#include "dayphoton/report/validation_figures.h"
+#include "dayphoton/study/compliance_verdicts.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/results_model_builder.h"
 
@@ -79,11 +82,17 @@ GridResult grid_model(const CaseResult& c, const std::string& folder, bool annua
   grid.outline = {{0, 0, 0.8}, {4, 0, 0.8}, {4, 3, 0.8}, {0, 3, 0.8}};
   GridResult g = results_grid(grid, folder, c, 0, 0);
   GridStatistics st;
-  st.mean = 3.85;
-  st.median = 3.85;
+  st.mean = annual ? 3.86 : 2.96;  // the variant: 0.9 points lower
+  st.median = 3.24;
+  st.min = 1.0;
   st.max = 7.7;
+  st.uniformity = 0.26;
   st.area_at_or_above_percent = {{2.0, 66.6667}};
-  add_daylight_factor(g, st, DaylightFactorUncertainty{});
+  DaylightFactorUncertainty u;
+  u.rms_relative_stderr_percent = 1.234;
+  u.max_relative_stderr_percent = 4.567;
+  u.sensors_with_light = 12;
+  add_daylight_factor(g, st, u);
   if (!annual) return g;
   AnnualStudy study;
   study.sensors.resize(12);
@@ -102,7 +111,7 @@ GridResult grid_model(const CaseResult& c, const std::string& folder, bool annua
   mean.udi_above_revised_percent = 30;
   mean.mean_occupied_lux = 550;
   study.grid.sda_percent = 60;
-  study.grid.ase_percent = 12.5;
+  study.grid.ase_percent = 12.4;
   study.grid.en17037 = {{"minimum", 80.0, 100.0, true}, {"medium", 40.0, 80.0, false}};
   study.daylight_hours_source = "test";
   study.sky_description = "synthetic";
@@ -110,11 +119,68 @@ GridResult grid_model(const CaseResult& c, const std::string& folder, bool annua
   return g;
 }
 
-/// A results folder: base grid with everything, one variant whose grid lacks metrics; a
-/// south window in the base case only.
+/// The building of a case: a 4 m x 3 m x 3 m classroom with one 2 m x 1 m south window,
+/// walls of reflectance 0.5 and glass of normal transmittance `glass` (as set_building makes it
+/// from a project and its scene).
+void add_building(CaseResult& c, double glass) {
+  project::Project p;
+  project::RoomSpec room;
+  room.name = "classroom";
+  room.size_m = {4, 3, 3};
+  project::WindowSpec w;
+  w.name = "south";
+  w.wall = project::Wall::South;
+  w.width_m = 2;
+  w.height_m = 1;
+  w.sill_m = 0.9;
+  w.material = "glazing";
+  room.windows = {w};
+  p.geometry.rooms = {room};
+  SceneDescription scene;
+  MaterialSpec walls;
+  walls.name = "walls";
+  walls.reflectance = {0.5, 0.5, 0.5};
+  MaterialSpec glazing;
+  glazing.name = "glazing";
+  glazing.type = MaterialType::Glass;
+  glazing.transmittance = {glass, glass, glass};
+  scene.materials = {walls, glazing};
+  Surface wall;
+  wall.material = 0;
+  wall.vertices = {{0, 0, 0}, {4, 0, 0}, {4, 0, 3}, {0, 0, 3}};
+  Surface pane;
+  pane.material = 1;
+  pane.port = true;
+  pane.vertices = {{1, 0, 1}, {3, 0, 1}, {3, 0, 2}, {1, 0, 2}};
+  scene.surfaces = {wall, pane};
+  set_building(c, p, scene);
+}
+
+/// A grid on the east wall (vertical sensors) with daylight factors: no verdict applies.
+GridResult wall_grid(const CaseResult& c) {
+  SensorGrid grid;
+  grid.name = "east_wall";
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i) grid.points.push_back({{4, 0.5 + i, 0.5 + j}, {-1, 0, 0}});
+  grid.plane_normal = {-1, 0, 0};
+  grid.outline = {{4, 0, 0}, {4, 3, 0}, {4, 3, 3}, {4, 0, 3}};
+  grid.spacing_m = 1;
+  GridResult g = results_grid(grid, "east_wall", c, 0, 0);
+  GridStatistics st;
+  st.mean = 1.5;
+  st.median = 1.5;
+  st.max = 3;
+  add_daylight_factor(g, st, DaylightFactorUncertainty{});
+  return g;
+}
+
+/// A results folder: base grid with everything and a wall grid, one variant (tinted glass)
+/// whose grid lacks metrics; a south window in the base case only; the verdicts of
+/// assess_compliance.
 ResultsModel results_model(const std::string& dir) {
   ResultsModel m;
   m.project_name = "project.yaml";
+  m.title = "Riverside <School>";
   m.project_file = "/nonexistent/project.yaml";
   m.study = "annual";
   m.site_name = "Test <site> & co";
@@ -126,11 +192,21 @@ ResultsModel results_model(const std::string& dir) {
   CaseResult base = results_case("base", "", "", {});
   base.openings = {{{1, 0, 1.0}, {3, 0, 1.0}, {3, 0, 2.0}, {1, 0, 2.0}}};
   base.grids.push_back(grid_model(base, "north_wing", true));
+  base.grids.push_back(wall_grid(base));
+  add_building(base, 0.6);
   CaseResult variant = results_case("variant", "tinted", "variants/tinted", {"window south removed"});
   variant.grids.push_back(grid_model(variant, "variants/tinted/north_wing", false));
+  add_building(variant, 0.3);
   m.cases = {base, variant};
+  assess_compliance(m);
   write_grid(dir + "/north_wing", true);
   write_grid(dir + "/variants/tinted/north_wing", false);
+  {
+    fs::create_directories(dir + "/east_wall");
+    std::vector<SensorPoint> sensors;
+    for (const Vec3& p : m.cases[0].grids[1].positions_m) sensors.push_back({p, {-1, 0, 0}});
+    write_daylight_factor_csv(sensors, {1, 1.2, 1.4, 1.6, 1.8, 2}, dir + "/east_wall/daylight_factor.csv");
+  }
   write_results_model(m, dir);
   return m;
 }
@@ -139,6 +215,13 @@ std::string write_results(const std::string& name) {
   const std::string dir = temp_dir(name);
   results_model(dir);
   return dir;
+}
+
+/// One results folder and its report for the tests that only read the page (written once:
+/// the year of hourly illuminance makes each folder take a tenth of a second).
+const std::string& shared_report() {
+  static const std::string html = report_html(write_results("shared"));
+  return html;
 }
 
 std::size_t count(const std::string& text, const std::string& what) {
@@ -154,27 +237,214 @@ TEST(ReportHtml, EverySectionIsPresentListedAndDrawn) {
   const std::string html = report_html(dir);
   std::smatch m;
   ASSERT_TRUE(std::regex_search(html, m, std::regex("data-sections=\"([^\"]*)\"")));
-  const std::string listed = m[1];
+  const std::string listed = " " + std::string(m[1]) + " ";
   for (const std::string id :
-       {"summary", "overview", "grid-north_wing", "grid-north_wing-df", "grid-north_wing-da", "grid-north_wing-udi",
-        "grid-north_wing-compliance", "grid-north_wing-temporal", "grid-north_wing-histograms",
-        "grid-north_wing-metrics", "grid-tinted--north_wing", "grid-tinted--north_wing-df"}) {
-    EXPECT_NE(listed.find(id), std::string::npos) << id;
+       {"summary", "verdicts", "building", "variants", "methods", "appendix", "grid-north_wing", "grid-north_wing-df",
+        "grid-north_wing-da", "grid-north_wing-udi", "grid-north_wing-compliance", "grid-north_wing-temporal",
+        "grid-north_wing-histograms", "grid-north_wing-metrics", "grid-east_wall", "grid-tinted--north_wing",
+        "grid-tinted--north_wing-df"}) {
+    EXPECT_NE(listed.find(" " + id + " "), std::string::npos) << id;
     EXPECT_EQ(count(html, "id=\"" + id + "\""), 1u) << id;
   }
+  // Client order: summary first, settings last.
+  const std::size_t summary = html.find("id=\"summary\""), verdicts = html.find("id=\"verdicts\""),
+                    building = html.find("id=\"building\""), variants = html.find("id=\"variants\""),
+                    grid = html.find("id=\"grid-north_wing\""), methods = html.find("id=\"methods\""),
+                    appendix = html.find("id=\"appendix\"");
+  EXPECT_LT(summary, verdicts);
+  EXPECT_LT(verdicts, building);
+  EXPECT_LT(building, variants);
+  EXPECT_LT(variants, grid);
+  EXPECT_LT(grid, methods);
+  EXPECT_LT(methods, appendix);
+  EXPECT_EQ(html.find("<section", appendix + 1), std::string::npos);  // nothing after the appendix
   // Every plot has drawn elements. Base grid: DF, DA, UDI x 2 plans + legends, UDI bars,
-  // temporal map + legend, 2 histograms; variant: DF plan + legend, DF histogram.
+  // temporal map + legend, 2 histograms; wall grid and variant: DF plan + legend, DF histogram.
   std::size_t plots = 0;
   for (std::size_t at = html.find("<svg class=\"plot"); at != std::string::npos;
        at = html.find("<svg class=\"plot", at + 1), ++plots) {
     const std::string svg = html.substr(at, html.find("</svg>", at) - at);
     EXPECT_TRUE(svg.find("<rect") != std::string::npos || svg.find("<image") != std::string::npos) << svg.substr(0, 200);
   }
-  EXPECT_EQ(plots, 4u * 2 + 1 + 2 + 2 + 2 + 1);
+  EXPECT_EQ(plots, 4u * 2 + 1 + 2 + 2 + 3 + 3);
   EXPECT_EQ(count(html, "href=\"data:image/png;base64,"), 1u);  // the temporal map
-  // The self-check script and its marker.
+  // The self-check script and its marker, hidden from readers (no developer line).
   EXPECT_NE(html.find("id=\"report-check\" data-status=\"pending\""), std::string::npos);
   EXPECT_NE(html.find("marker.setAttribute('data-status', 'ok')"), std::string::npos);
+  EXPECT_NE(html.find("#report-check{display:none}"), std::string::npos);
+  EXPECT_EQ(html.find("self-check:"), std::string::npos);
+}
+
+TEST(ReportHtml, TitleIsTheProjectsNameAndTheSummaryComesFirst) {
+  const std::string& html = shared_report();
+  EXPECT_NE(html.find("<title>Daylight report: Riverside &lt;School&gt;</title>"), std::string::npos);
+  EXPECT_NE(html.find("<h1>Daylight report: Riverside &lt;School&gt;</h1>"), std::string::npos);
+  EXPECT_EQ(html.find("<h1>Daylight report: Test"), std::string::npos);  // not the site or station
+  // No file paths or results folder up front.
+  const std::size_t summary = html.find("id=\"summary\"");
+  EXPECT_EQ(html.substr(0, summary).find("/nonexistent"), std::string::npos);
+  EXPECT_EQ(html.find("dayphoton_report_html_test_summary"), std::string::npos);
+  const std::string part = html.substr(summary, html.find("id=\"verdicts\"") - summary);
+  // Base row: mean DF 3.86 -> 3.9, median 3.24 -> 3.2, sDA 60, ASE 12.4 -> 12, UDI 50, EN 17037
+  // minimum; LM-83 sDA pass, ASE fail, LEED 2 points, BREEAM pass (minimum DF 1.0 >= 0.8 %).
+  const std::string base_row =
+      "<td>base</td><td><a href=\"#grid-north_wing\">north_wing</a></td><td class=\"n\">12</td><td class=\"n\">3.9</td>"
+      "<td class=\"n\">3.2</td><td class=\"n\">60</td><td class=\"n\">12</td><td class=\"n\">50</td><td>minimum</td>";
+  const std::size_t row = part.find(base_row);
+  ASSERT_NE(row, std::string::npos) << part.substr(0, 3000);
+  const std::string cells = part.substr(row, part.find("</tr>", row) - row);
+  EXPECT_EQ(count(cells, "badge pass\">pass<"), 2u) << cells;  // LM-83 sDA, BREEAM
+  EXPECT_EQ(count(cells, "badge fail\">fail<"), 1u) << cells;  // LM-83 ASE
+  EXPECT_NE(cells.find("badge pass\">2 points<"), std::string::npos) << cells;
+  // The wall grid: marked vertical, no verdict, no EN 17037 level.
+  const std::size_t wall = part.find("#grid-east_wall");
+  ASSERT_NE(wall, std::string::npos);
+  const std::string wall_cells = part.substr(wall, part.find("</tr>", wall) - wall);
+  EXPECT_NE(wall_cells.find("(vertical)"), std::string::npos);
+  EXPECT_EQ(wall_cells.find("badge pass"), std::string::npos) << wall_cells;
+  EXPECT_EQ(wall_cells.find("badge fail"), std::string::npos) << wall_cells;
+  EXPECT_EQ(count(wall_cells, ">n/a<"), 4u) << wall_cells;
+  // What was not assessed, named.
+  EXPECT_NE(part.find("id=\"not-assessed\""), std::string::npos);
+  EXPECT_NE(part.find("EN 17037 view out, exposure to sunlight and protection from glare"), std::string::npos);
+  EXPECT_NE(part.find("base / east_wall: LM-83, LEED, EN 17037 and BREEAM verdicts"), std::string::npos);
+}
+
+TEST(ReportHtml, VerdictsWithTheirRequirements) {
+  const std::string& html = shared_report();
+  const std::size_t at = html.find("id=\"verdicts\"");
+  const std::string part = html.substr(at, html.find("id=\"building\"") - at);
+  EXPECT_NE(part.find("<td>IES LM-83-12</td><td>sDA300/50%</td><td>&gt;= 55 % of the area (nominally accepted), "
+                      "&gt;= 75 % preferred</td><td class=\"n\">60 %</td><td><span class=\"badge pass\">pass</span>"),
+            std::string::npos)
+      << part.substr(0, 2000);
+  EXPECT_NE(part.find("<td>ASE1000,250</td><td>&lt;= 10 % of the area</td><td class=\"n\">12 %</td><td><span "
+                      "class=\"badge fail\">fail</span></td><td>LEED v4.1: describe how the design addresses glare"),
+            std::string::npos);
+  EXPECT_NE(part.find("<td class=\"n\">1 of 3</td>"), std::string::npos);           // EN 17037 minimum
+  EXPECT_NE(part.find("<td class=\"n\">3.9 %</td><td><span class=\"badge pass\">pass"), std::string::npos);  // BREEAM
+  EXPECT_NE(part.find("the grid is vertical: these criteria are defined on horizontal work planes"), std::string::npos);
+  // The grid's own compliance part shows the same verdicts and the EN 17037 levels.
+  const std::size_t g = html.find("id=\"grid-north_wing-compliance\"");
+  const std::string grid_part = html.substr(g, html.find("id=\"grid-north_wing-temporal\"") - g);
+  EXPECT_NE(grid_part.find("nominally accepted"), std::string::npos);
+  EXPECT_NE(grid_part.find(">minimum<"), std::string::npos);
+  EXPECT_NE(grid_part.find("<td>80 %</td>"), std::string::npos);  // area reaching the minimum level's target
+}
+
+TEST(ReportHtml, BuildingMaterialsAndGridTables) {
+  const std::string& html = shared_report();
+  const std::size_t at = html.find("id=\"building\"");
+  const std::string part = html.substr(at, html.find("id=\"variants\"") - at);
+  // 4 x 3 x 3 m, floor 12 m2, window 2 m2, window-to-wall 2 / 12, glazing-to-floor 2 / 12.
+  EXPECT_NE(part.find("<td>classroom</td><td class=\"n\">4 x 3 x 3</td><td class=\"n\">12</td><td class=\"n\">2</td>"
+                      "<td class=\"n\">0</td><td class=\"n\">0.17</td><td class=\"n\">0.17</td>"),
+            std::string::npos)
+      << part.substr(0, 2000);
+  EXPECT_NE(part.find("<td>classroom</td><td>south</td><td>south</td><td class=\"n\">2 x 1</td><td class=\"n\">0.9</td>"
+                      "<td class=\"n\">2</td><td>glazing</td><td class=\"n\">1.00</td><td class=\"n\">1.00</td>"),
+            std::string::npos);
+  EXPECT_NE(part.find("<td>walls</td><td>lambertian</td><td class=\"n\">0.50</td><td class=\"n\">0.00</td>"
+                      "<td class=\"n\">-</td><td class=\"n\">12</td>"),
+            std::string::npos);
+  EXPECT_NE(part.find("<td>glazing</td><td>glass</td><td class=\"n\">-</td><td class=\"n\">-</td>"
+                      "<td class=\"n\">0.60</td><td class=\"n\">2</td>"),
+            std::string::npos);
+  // Grids: sensors, spacing, lattice, height; the wall grid vertical without a height.
+  EXPECT_NE(part.find("<td>north_wing</td><td>horizontal</td><td class=\"n\">12</td><td class=\"n\">1</td>"
+                      "<td class=\"n\">4 x 3</td><td class=\"n\">0.8</td>"),
+            std::string::npos)
+      << part.substr(part.find("id=\"grids\""));
+  EXPECT_NE(part.find("<td>east_wall</td><td>vertical</td><td class=\"n\">6</td><td class=\"n\">1</td>"),
+            std::string::npos);
+}
+
+TEST(ReportHtml, VariantsSideBySideWithDifferences) {
+  const std::string& html = shared_report();
+  const std::size_t at = html.find("id=\"variants\"");
+  ASSERT_NE(at, std::string::npos);
+  const std::string part = html.substr(at, html.find("id=\"grid-north_wing\"") - at);
+  EXPECT_NE(part.find("<strong>tinted</strong>: window south removed"), std::string::npos);
+  EXPECT_NE(part.find("<th>metric</th><th>base</th><th>tinted</th>"), std::string::npos);
+  // Mean DF 3.86 -> 2.96: 3.9 and 3.0 (-0.90, 2 significant digits); the median is the same (0, no sign).
+  EXPECT_NE(part.find("<td>mean daylight factor (%)</td><td class=\"n\">3.9</td><td class=\"n\">3.0 <span "
+                      "class=\"delta\">(-0.90)</span></td>"),
+            std::string::npos)
+      << part;
+  EXPECT_NE(part.find("<td>median daylight factor (%)</td><td class=\"n\">3.2</td><td class=\"n\">3.2 <span "
+                      "class=\"delta\">(0)</span></td>"),
+            std::string::npos);
+  // The variant has no annual results: its sDA is "-", the base's shown.
+  EXPECT_NE(part.find("<td>sDA (share of the area) (%)</td><td class=\"n\">60</td><td class=\"n\">-</td>"),
+            std::string::npos);
+  // Its glass differs from the base's.
+  EXPECT_NE(part.find("<td>tinted</td><td>glazing</td><td>glass &#8594; glass</td><td class=\"n\">- &#8594; -</td>"
+                      "<td class=\"n\">0.60 &#8594; 0.30</td>"),
+            std::string::npos);
+  // One case only: no variants section.
+  const std::string dir = write_results("one_case");
+  ResultsModel m = read_results_model(dir);
+  m.cases.pop_back();
+  EXPECT_EQ(report_html(dir, m).find("id=\"variants\""), std::string::npos);
+}
+
+TEST(ReportHtml, MethodsValidationAndUncertainty) {
+  const std::string& html = shared_report();
+  const std::size_t at = html.find("id=\"methods\"");
+  const std::string part = html.substr(at, html.find("id=\"appendix\"") - at);
+  EXPECT_NE(part.find("contribution photon map"), std::string::npos);
+  EXPECT_NE(part.find("Perez all-weather sky model"), std::string::npos);
+  EXPECT_NE(part.find("CIE standard overcast sky"), std::string::npos);
+  EXPECT_NE(part.find("Tregenza basis"), std::string::npos);
+  EXPECT_NE(part.find("Photons per sky patch: 1000"), std::string::npos);
+  // Every validation figure, as declared once.
+  for (const ValidationFigure& f : ValidationFigures) {
+    EXPECT_NE(part.find("<td>" + esc(f.what) + "</td><td class=\"n\">" + f.doc_text + "</td>"),
+              std::string::npos)
+        << f.what;
+  }
+  // The uncertainty the run reached: RMS 1.234 -> 1.2 %, largest 4.567 -> 4.6 %, over 12 sensors.
+  EXPECT_NE(part.find("<td>base</td><td>north_wing</td><td class=\"n\">12</td><td class=\"n\">1.2</td>"
+                      "<td class=\"n\">4.6</td><td>photon counts given by the project</td>"),
+            std::string::npos)
+      << part.substr(part.find("id=\"uncertainty\""));
+}
+
+TEST(ReportHtml, ValidationFiguresAreTheOnesDocsValidationMdStates) {
+  std::ifstream in(std::string(DAYPHOTON_SOURCE_DIR) + "/docs/validation.md");
+  ASSERT_TRUE(in) << "docs/validation.md";
+  const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t begin = doc.find("<!-- office-validation:begin -->"), end = doc.find("<!-- office-validation:end -->");
+  ASSERT_NE(begin, std::string::npos);
+  ASSERT_NE(end, std::string::npos);
+  const std::string table = doc.substr(begin, end - begin);
+  for (const ValidationFigure& f : ValidationFigures)
+    EXPECT_NE(table.find("| " + std::string(f.doc_text)), std::string::npos) << f.doc_text;
+  EXPECT_NE(doc.find("RADIANCE 5.4a"), std::string::npos);
+}
+
+TEST(ReportHtml, AppendixHoldsSettingsAndNoZeroTimes) {
+  const std::string& html = shared_report();
+  const std::size_t at = html.find("id=\"appendix\"");
+  const std::string part = html.substr(at);
+  EXPECT_NE(part.find("<tr><th>photons per bin</th><td>1000</td></tr>"), std::string::npos);
+  EXPECT_NE(part.find("<code>run.log</code>"), std::string::npos);
+  EXPECT_EQ(html.find("0.00 s"), std::string::npos);
+  // Settings appear only in the appendix (and the methods' photons per patch).
+  EXPECT_EQ(html.substr(0, at).find("<th>photons per bin</th>"), std::string::npos);
+  EXPECT_NE(part.find("<code>weather.epw</code>"), std::string::npos);  // the file's name, not its path
+}
+
+TEST(ReportHtml, PrintStylesBreakBetweenSectionsAndHideTheNavigation) {
+  const std::string& html = shared_report();
+  const std::size_t print = html.find("@media print{");
+  ASSERT_NE(print, std::string::npos);
+  const std::string css = html.substr(print, html.find("</style>") - print);
+  EXPECT_NE(css.find("section{break-before:page;page-break-before:always}"), std::string::npos);
+  EXPECT_NE(css.find("section#summary{break-before:auto"), std::string::npos);
+  EXPECT_NE(css.find("nav,#report-check,.screen-only{display:none}"), std::string::npos);
+  EXPECT_NE(css.find("break-inside:avoid"), std::string::npos);
+  EXPECT_NE(html.find("<nav class=\"screen-only\">"), std::string::npos);
 }
 
 TEST(ReportHtml, IsSelfContained) {
@@ -196,31 +466,19 @@ TEST(ReportHtml, ValuesAndVerdictsComeFromTheModel) {
   const std::string html = report_html(dir);
   EXPECT_NE(html.find("Test &lt;site&gt; &amp; co"), std::string::npos);
   EXPECT_EQ(html.find("Test <site>"), std::string::npos);
-  EXPECT_NE(html.find("3.85 %"), std::string::npos);        // DF mean
-  EXPECT_NE(html.find("66.6667 %"), std::string::npos);     // area with DF >= 2 %
-  EXPECT_NE(html.find("60.0 % (7 of 12)"), std::string::npos);  // sDA
-  // sDA 60 %: nominally accepted (>= 55 %) passes, preferred (>= 75 %) fails; ASE 12.5 % fails.
-  const std::size_t compliance = html.find("id=\"grid-north_wing-compliance\"");
-  const std::string part = html.substr(compliance, html.find("id=\"grid-north_wing-temporal\"") - compliance);
-  const std::size_t nominal = part.find("nominally accepted"), preferred = part.find("75 % preferred"),
-                    ase = part.find("12.5 %");
-  ASSERT_NE(nominal, std::string::npos);
-  ASSERT_NE(preferred, std::string::npos);
-  ASSERT_NE(ase, std::string::npos);
-  EXPECT_LT(part.find("badge pass", nominal), preferred);
-  EXPECT_LT(part.find("badge fail", preferred), ase);
-  EXPECT_NE(part.find("badge fail", ase), std::string::npos);
-  EXPECT_NE(part.find(">minimum<"), std::string::npos);
-  // The metric table's labels come from the typed thresholds (DA300, UDI 100-2000 lx).
-  EXPECT_NE(html.find("daylight autonomy DA300: E &#8805; 300 lx</td><td class=\"n\">44.0"), std::string::npos);
-  EXPECT_NE(html.find("UDI achieved (original): 100&#8211;2000 lx</td><td class=\"n\">50.0"), std::string::npos);
+  EXPECT_NE(html.find("<tr><th>mean</th><td>3.9 %</td></tr>"), std::string::npos);        // DF mean, 0.1 %
+  EXPECT_NE(html.find("<th>area with DF &#8805; 2.0 %</th><td>67 %</td>"), std::string::npos);  // whole points
+  EXPECT_EQ(html.find("66.6667"), std::string::npos);  // no false precision
+  // The metric table's labels come from the typed thresholds (DA300, UDI 100-2000 lx); values
+  // in whole points, lux to 3 significant digits.
+  EXPECT_NE(html.find("daylight autonomy DA300: E &#8805; 300 lx</td><td class=\"n\">44<"), std::string::npos);
+  EXPECT_NE(html.find("UDI achieved (original): 100&#8211;2000 lx</td><td class=\"n\">50<"), std::string::npos);
+  EXPECT_NE(html.find("mean illuminance, occupied hours</td><td class=\"n\">550<"), std::string::npos);
   // The variant's grid has no annual results and says so, without failing the report.
   const std::size_t variant = html.find("id=\"grid-tinted--north_wing\"");
   ASSERT_NE(variant, std::string::npos);
   EXPECT_NE(html.find("metrics.csv not found", variant), std::string::npos);
   EXPECT_NE(html.find("changes: window south removed", variant), std::string::npos);
-  // The run's history is in its log (results.json holds no times).
-  EXPECT_NE(html.find("<code>run.log</code>"), std::string::npos);
 }
 
 TEST(ReportHtml, DeterministicAndWrittenAtomically) {
@@ -238,8 +496,9 @@ TEST(ReportHtml, DeterministicAndWrittenAtomically) {
 TEST(ReportHtml, WritesImagesForEveryGridAndVariant) {
   const std::string dir = write_results("images");
   const std::vector<std::string> written = write_images_and_report(dir);
-  // Base grid: DF + 4 metrics x (EXR + PNG); variant: DF x 2; no weather file: no sky; the report.
-  EXPECT_EQ(written.size(), 10u + 2u + 1u);
+  // Base grid: DF + 4 metrics x (EXR + PNG); wall grid and variant: DF x 2; no weather file:
+  // no sky; the report.
+  EXPECT_EQ(written.size(), 10u + 2u + 2u + 1u);
   EXPECT_TRUE(fs::exists(dir + "/variants/tinted/north_wing/daylight_factor.exr"));
   EXPECT_TRUE(fs::exists(dir + "/north_wing/da300.png"));
   EXPECT_TRUE(fs::exists(dir + "/report.html"));
@@ -293,4 +552,34 @@ TEST(ReportHtml, AFolderWithoutResultsJsonIsAnInputErrorThatSaysToRunAgain) {
   }
   std::ofstream(dir + "/results.json") << "[1, 2";
   EXPECT_THROW(report_html(dir), InputError);
+}
+
+TEST(ReportFormat, OnePrecisionPerKindOfNumber) {
+  // DF: 0.1 % from 1 % up, 2 significant digits below.
+  EXPECT_EQ(format_value(2.7268, Precision::DaylightFactor), "2.7");
+  EXPECT_EQ(format_value(12.34, Precision::DaylightFactor), "12.3");
+  EXPECT_EQ(format_value(0.3449, Precision::DaylightFactor), "0.34");
+  EXPECT_EQ(format_value(0.0345678, Precision::DaylightFactor), "0.035");
+  EXPECT_EQ(format_value(0.996, Precision::DaylightFactor), "1.0");
+  EXPECT_EQ(format_value(0.0, Precision::DaylightFactor), "0");
+  // Lux: 3 significant digits.
+  EXPECT_EQ(format_value(548.4, Precision::Illuminance), "548");
+  EXPECT_EQ(format_value(1234.5, Precision::Illuminance), "1230");
+  EXPECT_EQ(format_value(12.345, Precision::Illuminance), "12.3");
+  EXPECT_EQ(format_value(999.7, Precision::Illuminance), "1000");
+  // Shares: whole points; ratios and fractions 2 decimals; lengths and areas trimmed.
+  EXPECT_EQ(format_value(98.1, Precision::Percent), "98");
+  EXPECT_EQ(format_value(-0.2, Precision::Percent), "0");
+  EXPECT_EQ(format_value(0.4149, Precision::Ratio), "0.41");
+  EXPECT_EQ(format_value(0.6, Precision::Fraction), "0.60");
+  EXPECT_EQ(format_value(1.5, Precision::Length), "1.5");
+  EXPECT_EQ(format_value(6.0, Precision::Length), "6");
+  EXPECT_EQ(format_value(48.04, Precision::Area), "48");
+  EXPECT_EQ(format_value(std::optional<double>{}, Precision::Percent), "-");
+  EXPECT_EQ(format_value(std::nan(""), Precision::Percent), "-");
+  // Differences carry a sign unless zero at the shown precision.
+  EXPECT_EQ(format_delta(3.2, Precision::Percent), "+3");
+  EXPECT_EQ(format_delta(-0.94, Precision::DaylightFactor), "-0.94");
+  EXPECT_EQ(format_delta(0.01, Precision::Percent), "0");
+  EXPECT_EQ(esc("<a href='x'>&\""), "&lt;a href=&#39;x&#39;&gt;&amp;&quot;");
 }

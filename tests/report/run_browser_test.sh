@@ -73,7 +73,34 @@ done
 plots=$(grep -o 'data-plots="[0-9]*"' "$work/dom.html" | grep -o '[0-9]*')
 [ "${plots:-0}" -gt 0 ] || fail "no plots counted"
 
-# No console output and no uncaught error.
-if grep -E 'CONSOLE|Uncaught' "$work/shot.log" "$work/dom.log"; then fail "console messages (above)"; fi
+# The client sections (docs/report.md) with their content: the project's name as title, the
+# one-screen summary with verdicts and what was not assessed, the compliance table, rooms,
+# windows, materials and grids, methods with validation and uncertainty, the appendix; no
+# developer line and no zero times.
+for id in summary not-assessed verdicts building rooms materials grids methods validation uncertainty appendix; do
+  grep -q "id=\"$id\"" "$work/dom.html" || fail "section $id missing"
+done
+dom() { grep -q -- "$1" "$work/dom.html" || fail "not in the report: $1"; }
+dom '<h1>Daylight report: office</h1>'
+dom '<td>base</td><td><a href="#grid-workplane">workplane</a></td><td class="n">165</td>'
+dom 'EN 17037 view out, exposure to sunlight and protection from glare'
+dom '<td>office</td><td class="n">6 x 8 x 3</td><td class="n">48</td><td class="n">6</td>'
+dom '<td>glazing</td><td>glass</td><td class="n">-</td><td class="n">-</td><td class="n">0.60</td>'
+dom '<td>workplane</td><td>horizontal</td><td class="n">165</td><td class="n">0.5</td><td class="n">11 x 15</td>'
+dom 'RADIANCE 5.4a'
+if grep -q -e 'self-check:' -e '0\.00 s' "$work/dom.html"; then fail "a developer line or a zero time is shown"; fi
 
-echo "ok   report_browser: $count sections, $plots plots rendered, no console messages; screenshot $screenshot ($size bytes)"
+# A results folder with a variant (tests/cli/cases/report_results, two sensors): the variants
+# section side by side, rendered without console messages either.
+"$bin" report tests/cli/cases/report_results --no-images -o "$work/variants.html" --quiet ||
+  fail "dayphoton report of the variants fixture failed"
+timeout 180 "$chromium" "${flags[@]}" --dump-dom "file://$work/variants.html" >"$work/variants_dom.html" \
+  2>"$work/variants.log" || fail "chromium --dump-dom of the variants report failed"
+grep -q 'id="report-check" data-status="ok"' "$work/variants_dom.html" || fail "variants report: self-check did not pass"
+grep -q '<th>metric</th><th>base</th><th>tinted</th>' "$work/variants_dom.html" || fail "no variants table"
+grep -q 'class="delta">(-0.75)</span>' "$work/variants_dom.html" || fail "no difference from the base case"
+
+# No console output and no uncaught error.
+if grep -E 'CONSOLE|Uncaught' "$work/shot.log" "$work/dom.log" "$work/variants.log"; then fail "console messages (above)"; fi
+
+echo "ok   report_browser: $count sections, $plots plots rendered, client sections and variants checked, no console messages; screenshot $screenshot ($size bytes)"

@@ -45,6 +45,8 @@ ResultsModel full_model() {
   m.ground_reflectance = 0.15;
   m.settings = {{"photons per bin", "20000"}, {"sun", "bins"}};
   m.notes = {"one", "two"};
+  m.title = "Riverside \"school\"";
+  m.not_assessed = {"glare", "view out"};
   CaseResult c;
   c.kind = "variant";
   c.name = "tinted";
@@ -52,6 +54,10 @@ ResultsModel full_model() {
   c.changes = {"glazing tinted"};
   c.openings = {{{0, 0, 1}, {1, 0, 1}, {1, 0, 2}}};
   c.systems = {{{0, -1, 2}, {1, -1, 2}, {1, -0.5, 2}}};
+  c.materials = {{"walls", "plastic", 0.5, std::nullopt, 0.05, 88.5}, {"glazing", "glass", std::nullopt, 0.6, 0, 6}};
+  c.rooms = {{"office", 6, 8, 3, 48, 6, 18, 1.5,
+              {{"south", "south", 4, 1.5, 0.9, 6, "glazing", 0.8, 0.9}, {"top", "roof", 1, 1.5, 0.25, 1.5, "glazing", 1, 1}}}};
+  c.opening_area_m2 = 7.5;
   GridResult g;
   g.name = "workplane";
   g.folder = "variants/tinted/workplane";
@@ -110,6 +116,10 @@ ResultsModel full_model() {
   g.annual = a;
   g.points_in_time = {{"noon", "cie_overcast", 500, 450, 100, 900, 0.2}};
   g.has_illuminance_table = true;
+  g.spacing_m = 0.5;
+  g.verdicts = {{"IES LM-83-12", "sDA300/50%", ">= 55 %", 66.7, "%", "pass", ""},
+                {"EN 17037 daylight provision", "level", "minimum, medium or high", std::nullopt, "", "not assessed",
+                 "the grid is tilted"}};
   c.grids = {g};
   CaseResult base;
   base.kind = "base";
@@ -150,9 +160,25 @@ TEST(ResultsModel, RoundTripsEveryField) {
   changed = back;
   changed.cases[1].grids[0].lattice.row_of[2] = 1;
   EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].materials[1].transmittance = 0.61;
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].rooms[0].windows[0].frame_factor = 0.7;
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].verdicts[0].outcome = "fail";
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.not_assessed.pop_back();
+  EXPECT_FALSE(changed == m);
+  EXPECT_NEAR(back.cases[1].rooms[0].window_to_wall_ratio(), 6.0 / 18, 1e-12);
+  EXPECT_NEAR(back.cases[1].rooms[0].window_to_floor_ratio(), 7.5 / 48, 1e-12);
   // The empty optional fields round-trip too.
   ResultsModel bare;
-  bare.cases.push_back(CaseResult{"base", "", "", {}, {}, {}, {}});
+  CaseResult bare_case;
+  bare_case.kind = "base";
+  bare.cases.push_back(bare_case);
   EXPECT_TRUE(parse_results_json(results_json(bare), "x") == bare);
 }
 
@@ -164,13 +190,25 @@ TEST(ResultsModel, BadFieldsAreErrorsNamingTheKey) {
   EXPECT_NE(error_of(std::regex_replace(text, std::regex(",\\s*\"weather_file\": \"w.epw\""), ""))
                 .find("'weather_file' is missing"),
             std::string::npos);
-  const std::string version = error_of(std::regex_replace(text, std::regex("\"schema_version\": 1"), "\"schema_version\": 2"));
-  EXPECT_NE(version.find("schema version 2"), std::string::npos) << version;
+  const std::string version = error_of(std::regex_replace(text, std::regex("\"schema_version\": 2"), "\"schema_version\": 1"));
+  EXPECT_NE(version.find("schema version 1"), std::string::npos) << version;
   EXPECT_NE(version.find("run the study again"), std::string::npos) << version;
   EXPECT_NE(error_of("[1, 2").find("not a JSON object"), std::string::npos);
   // A value file named with a folder part would lead out of the grid's folder.
   EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"file\": \"metrics.csv\""), "\"file\": \"../metrics.csv\""))
                 .find("not a plain file name"),
+            std::string::npos);
+  // Verdicts: a known outcome, a value exactly when assessed; materials: fractions in [0, 1].
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"outcome\": \"pass\""), "\"outcome\": \"ok\""))
+                .find("is not pass, fail or not assessed"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"value\": 66.7"), "\"value\": null"))
+                .find("is missing for an assessed criterion"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"transmittance\": 0.6"), "\"transmittance\": 1.6"))
+                .find("outside [0, 1]"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex(",\\s*\"title\": [^\\n]*"), "")).find("'project.title' is missing"),
             std::string::npos);
   // A sensor's cell outside the lattice.
   EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"row\": 1"), "\"row\": 5")).find("outside the lattice"),

@@ -24,7 +24,7 @@
 namespace dayphoton::study {
 
 /// Version of results.json's layout; raised when a field changes meaning or is removed.
-constexpr int ResultsSchemaVersion = 1;
+constexpr int ResultsSchemaVersion = 2;
 /// The file's name in the output folder.
 constexpr const char* ResultsFileName = "results.json";
 
@@ -145,6 +145,21 @@ struct PointInTimeSummary {
   bool operator==(const PointInTimeSummary& o) const;
 };
 
+/// One compliance criterion assessed on a grid by assess_compliance (compliance_verdicts.h):
+/// its verdict, or why it was not assessed.
+struct Verdict {
+  std::string standard;     ///< e.g. "IES LM-83-12", "LEED v4.1 EQ Daylight option 1", "EN 17037", "BREEAM UK NC 2014 Hea 01"
+  std::string criterion;    ///< e.g. "sDA300/50%"
+  std::string requirement;  ///< in words, e.g. ">= 55 % of the area (nominally accepted)"
+  std::optional<double> value;  ///< the grid's value the requirement is tested on; none if not assessed
+  std::string unit;         ///< of value: "%", "level"
+  /// "pass", "fail" or "not assessed".
+  std::string outcome;
+  std::string reason;       ///< not assessed: why; otherwise a remark (LEED points, the level reached) or empty
+
+  bool operator==(const Verdict& o) const;
+};
+
 struct GridResult {
   std::string name;
   std::string folder;  ///< relative to the output folder, '/'-separated
@@ -160,9 +175,52 @@ struct GridResult {
   std::optional<AnnualSummary> annual;
   std::vector<PointInTimeSummary> points_in_time;
   bool has_illuminance_table = false;  ///< illuminance.bin in the folder (steps x sensors, lux)
+  double spacing_m = 0;  ///< the grid's sensor spacing as generated; 0 for point sets
+  std::vector<Verdict> verdicts;  ///< assess_compliance's, in its order
 
   const SensorQuantity* find_quantity(const std::string& kind) const;
   bool operator==(const GridResult& o) const;
+};
+
+/// A material of a case's scene as a report's materials table shows it (photometric values:
+/// the RGB values weighted by RADIANCE's luminance weights, core/units.h).
+struct MaterialSummary {
+  std::string name, type;            ///< type as the project wrote it ("lambertian", "glazing", ...)
+  std::optional<double> reflectance;  ///< diffuse + specular reflectance, photometric; none for glass and openings
+  std::optional<double> transmittance;  ///< normal-incidence visible transmittance with the window's factors; none if opaque
+  double specularity = 0;            ///< fraction of the reflection that is specular
+  double area_m2 = 0;                ///< of the scene's surfaces with this material (one side)
+
+  bool operator==(const MaterialSummary& o) const;
+};
+
+/// A window or roof light of a room generator.
+struct WindowSummary {
+  std::string name;
+  std::string wall;    ///< "south", "north", "east", "west" (model directions), or "roof"
+  double width_m = 0, height_m = 0, sill_m = 0;  ///< roof lights: width along x, height = length along y, sill = well depth
+  double area_m2 = 0;  ///< the opening, width x height
+  std::string material;
+  double frame_factor = 1, maintenance_factor = 1;
+
+  bool operator==(const WindowSummary& o) const;
+};
+
+/// A room of the project's room generator (docs/project-format.md, `rooms`) with its openings.
+struct RoomSummary {
+  std::string name;
+  double width_m = 0, depth_m = 0, height_m = 0;  ///< x, y and z extents (model axes)
+  double floor_area_m2 = 0;
+  double window_area_m2 = 0;      ///< windows in the walls
+  double glazed_wall_area_m2 = 0; ///< gross area of the walls that hold a window
+  double roof_light_area_m2 = 0;
+  std::vector<WindowSummary> windows;
+
+  /// Window-to-wall ratio of the walls with windows: window area / their gross area.
+  double window_to_wall_ratio() const { return glazed_wall_area_m2 > 0 ? window_area_m2 / glazed_wall_area_m2 : 0; }
+  /// Glazed openings (windows and roof lights) per floor area.
+  double window_to_floor_ratio() const { return floor_area_m2 > 0 ? (window_area_m2 + roof_light_area_m2) / floor_area_m2 : 0; }
+  bool operator==(const RoomSummary& o) const;
 };
 
 /// One case: the project as written ("base"), a variant, or the operated-shading result.
@@ -173,6 +231,9 @@ struct CaseResult {
   std::vector<std::string> changes;  ///< a variant's changes, in words
   std::vector<Polygon3> openings;    ///< ports (windows, skylights), world coordinates
   std::vector<Polygon3> systems;     ///< outdoor daylight-system surfaces (shelves, louvres, ...)
+  std::vector<MaterialSummary> materials;  ///< materials of the case's surfaces, in the scene's order
+  std::vector<RoomSummary> rooms;    ///< the room generator's rooms (none for polygons, meshes, imports)
+  double opening_area_m2 = 0;        ///< all openings (ports), one side
   std::vector<GridResult> grids;
 
   bool operator==(const CaseResult& o) const;
@@ -187,6 +248,9 @@ struct Setting {
 struct ResultsModel {
   int schema_version = ResultsSchemaVersion;
   std::string project_name;   ///< the project file's name without folder, e.g. "project.yaml"
+  /// The project's name for titles: the project file's folder name when the file is called
+  /// project.yaml (projects/office/project.yaml -> "office"), else its name without extension.
+  std::string title;
   std::string project_file;   ///< as given to the run (informational; never re-read)
   std::string dayphoton_version, compiler;
   std::string study;          ///< "annual" or "daylight_factor"
@@ -207,6 +271,9 @@ struct ResultsModel {
   double ground_reflectance = 0.2;
   std::vector<Setting> settings;   ///< every simulation setting, labelled
   std::vector<std::string> notes;
+  /// What the run did not assess, one sentence each (assess_compliance): criteria the report
+  /// must name as not assessed, e.g. EN 17037's view out.
+  std::vector<std::string> not_assessed;
   std::vector<CaseResult> cases;   ///< base first, then variants, then operated
 
   bool operator==(const ResultsModel& o) const;

@@ -39,6 +39,16 @@ CaseResult results_case(const std::string& kind, const std::string& name, const 
 /// openings, outdoor daylight-system surfaces as systems.
 void set_plan_geometry(CaseResult& c, const SceneDescription& scene);
 
+/// The building of a case for the report's tables: the materials of its scene's surfaces
+/// (photometric reflectance, normal-incidence transmittance, area) and the rooms of the
+/// case's project (the variant's own, e.g. with a window added) with their windows, roof
+/// lights, window-to-wall and window-to-floor areas; the total area of the scene's openings.
+void set_building(CaseResult& c, const project::Project& project, const SceneDescription& scene);
+
+/// The project's name for titles (ResultsModel::title): the folder's name for a file called
+/// project.yaml, else the file's name without extension.
+std::string project_title(const std::string& project_path);
+
 /// The operated-shading case: the geometry and sensors of `base` (the variants share the
 /// sensors), with no results until add_operated_grid.
 CaseResult operated_case(const CaseResult& base, const std::string& name, const std::string& folder);

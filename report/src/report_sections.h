@@ -1,0 +1,45 @@
+// The sections of report.html that are made from the results model alone, one file each
+// (report_html.cpp assembles them with the per-grid sections and the sky). Every function
+// returns a <section> with the id named here; numbers go through report_format.h. Internal
+// to report/.
+#pragma once
+
+#include <string>
+
+#include "dayphoton/study/results_model.h"
+
+namespace dayphoton::report {
+
+/// "summary" (summary_section.cpp): per case and grid mean and median DF, sDA, ASE, UDI,
+/// EN 17037 level and the verdicts, then what was not assessed. The first thing a reader sees.
+std::string summary_section(const study::ResultsModel& model);
+
+/// "verdicts" (summary_section.cpp): every verdict of every grid with its requirement, value
+/// and standard.
+std::string verdicts_section(const study::ResultsModel& model);
+
+/// "building" (building_section.cpp): rooms and windows (dimensions, areas, window-to-wall
+/// and window-to-floor ratios), materials (type, reflectance, transmittance, area), sensor
+/// grids (sensors, spacing, orientation).
+std::string building_section(const study::ResultsModel& model);
+
+/// "variants" (variants_section.cpp): the cases side by side per grid, with the difference
+/// of each from the base case, what each variant changes and its materials that differ.
+/// Empty when the run has one case.
+std::string variants_section(const study::ResultsModel& model);
+
+/// "methods" (methods_section.cpp): what was computed and how, the validation figures
+/// (validation_figures.h) and the uncertainty the run reached per grid.
+std::string methods_section(const study::ResultsModel& model);
+
+/// "appendix" (appendix_section.cpp): site, weather station, simulation settings, versions,
+/// notes and where the run's timings are.
+std::string appendix_section(const study::ResultsModel& model);
+
+/// The element id of a grid's section: "grid-<grid>" or "grid-<case>--<grid>".
+std::string grid_section_id(const study::CaseResult& c, const study::GridResult& g);
+
+/// "base", the variant's name, or the operated case's name.
+std::string case_label(const study::CaseResult& c);
+
+}  // namespace dayphoton::report

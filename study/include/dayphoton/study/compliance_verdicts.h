@@ -1,0 +1,46 @@
+// Compliance verdicts of a run's grids against published daylighting criteria, decided once
+// from the results model's typed summaries (results_model.h) and stored in it
+// (GridResult::verdicts, ResultsModel::not_assessed), so that the report only shows them.
+//
+// Criteria (each threshold a constant below, declared once):
+//  - IES LM-83-12, "Approved Method: IES Spatial Daylight Autonomy (sDA) and Annual Sunlight
+//    Exposure (ASE)", sections 2.1.1 and 2.2.1: sDA300/50% >= 55 % of the area "nominally
+//    accepted", >= 75 % "preferred"; ASE1000,250 <= 10 % (above 10 %: unsatisfactory visual
+//    comfort). Assessed only when the run's settings are LM-83's (300 lx, 50 %, 1000 lx, 250 h).
+//  - USGBC LEED v4.1 BD+C, EQ credit Daylight, option 1 (table 1): sDA300/50% >= 40 % (1 point),
+//    >= 55 % (2), >= 75 % (3); ASE1000,250 above 10 % needs the glare design described.
+//  - EN 17037:2018 (CEN, "Daylight in buildings"), clause 5.1 and annex A table A.1, daylight
+//    provision by the climate-based method: per level the target illuminance on >= 50 % and
+//    the minimum target on >= 95 % of the reference plane for >= 50 % of the daylight hours
+//    (metrics/en17037.h computes them; this only carries the outcome).
+//  - BRE Global, BREEAM UK New Construction 2014, Hea 01 Visual comfort, tables 10 and 11
+//    (office, industrial and "all other building types", occupied spaces): average daylight
+//    factor >= 2 % and criterion (a): uniformity (minimum / average) >= 0.4 or a minimum point
+//    daylight factor >= 0.8 %. Criteria (b) view of sky and (c) room depth are not assessed.
+// All of them are defined on horizontal work planes: a vertical or tilted grid gets "not
+// assessed" with that reason.
+#pragma once
+
+#include "dayphoton/study/results_model.h"
+
+namespace dayphoton::study {
+
+/// IES LM-83-12 thresholds.
+constexpr double Lm83SdaAcceptedPercent = 55, Lm83SdaPreferredPercent = 75, Lm83AseMaxPercent = 10;
+constexpr double Lm83DaThresholdLux = 300, Lm83SdaTimeFraction = 0.5, Lm83AseThresholdLux = 1000, Lm83AseHours = 250;
+/// LEED v4.1 EQ Daylight option 1: sDA300/50% for 1, 2 and 3 points.
+constexpr double LeedSdaPointsPercent[3] = {40, 55, 75};
+/// BREEAM UK NC 2014 Hea 01 (offices and other building types).
+constexpr double BreeamAverageDfPercent = 2.0, BreeamUniformity = 0.4, BreeamMinimumPointDfPercent = 0.8;
+
+/// LEED v4.1 option 1 points (0..3) for a grid's sDA300/50%.
+int leed_v41_points(double sda_percent);
+
+/// The verdicts of one grid (the grid's own summaries; its orientation decides whether any
+/// applies).
+std::vector<Verdict> grid_verdicts(const GridResult& grid);
+
+/// Fill every grid's verdicts and the model's not-assessed statements.
+void assess_compliance(ResultsModel& model);
+
+}  // namespace dayphoton::study

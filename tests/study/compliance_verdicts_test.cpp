@@ -1,0 +1,219 @@
+// Compliance verdicts (study/compliance_verdicts.h) at their thresholds, the conditions that
+// make a criterion "not assessed" (another metric setting, no ASE, a vertical grid, no
+// annual results), and the building tables of the results model builder (set_building,
+// project_title) against hand-computed areas and ratios.
+#include "dayphoton/study/compliance_verdicts.h"
+
+#include <gtest/gtest.h>
+
+#include "dayphoton/study/results_model_builder.h"
+
+using namespace dayphoton;
+using namespace dayphoton::study;
+
+namespace {
+
+GridResult horizontal_grid(double sda, std::optional<double> ase, double mean_df, double min_df, double uniformity) {
+  GridResult g;
+  g.name = "g";
+  g.orientation = GridOrientation::Horizontal;
+  AnnualSummary a;
+  a.sda_percent = sda;
+  a.ase_percent = ase;
+  a.en17037 = {{"minimum", 300, 100, 60, 97, true}, {"medium", 500, 300, 40, 80, false}, {"high", 750, 500, 10, 50, false}};
+  g.annual = a;
+  DaylightFactorSummary d;
+  d.mean_percent = mean_df;
+  d.min_percent = min_df;
+  d.uniformity = uniformity;
+  g.daylight_factor = d;
+  return g;
+}
+
+const Verdict& find(const std::vector<Verdict>& vs, const std::string& standard, const std::string& criterion) {
+  for (const Verdict& v : vs)
+    if (v.standard.rfind(standard, 0) == 0 && v.criterion.rfind(criterion, 0) == 0) return v;
+  throw std::runtime_error("no verdict " + standard + " " + criterion);
+}
+
+}  // namespace
+
+TEST(ComplianceVerdicts, Lm83AndLeedAtTheirThresholds) {
+  EXPECT_EQ(find(grid_verdicts(horizontal_grid(55, 10, 2, 1, 0.5)), "IES", "sDA").outcome, "pass");
+  EXPECT_EQ(find(grid_verdicts(horizontal_grid(54.99, 10, 2, 1, 0.5)), "IES", "sDA").outcome, "fail");
+  EXPECT_EQ(find(grid_verdicts(horizontal_grid(75, 10, 2, 1, 0.5)), "IES", "sDA").reason, "preferred level reached");
+  EXPECT_EQ(find(grid_verdicts(horizontal_grid(55, 10, 2, 1, 0.5)), "IES", "ASE").outcome, "pass");
+  const Verdict ase = find(grid_verdicts(horizontal_grid(55, 10.01, 2, 1, 0.5)), "IES", "ASE");
+  EXPECT_EQ(ase.outcome, "fail");
+  EXPECT_NE(ase.reason.find("glare"), std::string::npos);
+  EXPECT_EQ(leed_v41_points(39.99), 0);
+  EXPECT_EQ(leed_v41_points(40), 1);
+  EXPECT_EQ(leed_v41_points(54.99), 1);
+  EXPECT_EQ(leed_v41_points(55), 2);
+  EXPECT_EQ(leed_v41_points(75), 3);
+  const Verdict leed = find(grid_verdicts(horizontal_grid(60, 5, 2, 1, 0.5)), "LEED", "sDA");
+  EXPECT_EQ(leed.outcome, "pass");
+  EXPECT_EQ(leed.reason, "2 points");
+  EXPECT_EQ(*leed.value, 60);
+  EXPECT_EQ(find(grid_verdicts(horizontal_grid(39, 5, 2, 1, 0.5)), "LEED", "sDA").outcome, "fail");
+}
+
+TEST(ComplianceVerdicts, En17037AndBreeam) {
+  const std::vector<Verdict> v = grid_verdicts(horizontal_grid(60, 5, 2.0, 0.1, 0.4));
+  const Verdict& en = find(v, "EN 17037", "level");
+  EXPECT_EQ(en.outcome, "pass");
+  EXPECT_EQ(*en.value, 1);
+  EXPECT_EQ(en.reason, "minimum level reached");
+  // BREEAM: average >= 2 % and (uniformity >= 0.4 or minimum >= 0.8 %).
+  EXPECT_EQ(find(v, "BREEAM", "").outcome, "pass");
+  EXPECT_EQ(find(grid_verdicts(horizontal_grid(60, 5, 2.0, 0.8, 0.39)), "BREEAM", "").outcome, "pass");
+  EXPECT_EQ(find(grid_verdicts(horizontal_grid(60, 5, 2.0, 0.79, 0.39)), "BREEAM", "").outcome, "fail");
+  EXPECT_EQ(find(grid_verdicts(horizontal_grid(60, 5, 1.99, 1.5, 0.9)), "BREEAM", "").outcome, "fail");
+  GridResult none = horizontal_grid(60, 5, 2, 1, 1);
+  for (En17037Level& l : none.annual->en17037) l.passes = false;
+  const std::vector<Verdict> none_verdicts = grid_verdicts(none);
+  const Verdict& no_level = find(none_verdicts, "EN 17037", "level");
+  EXPECT_EQ(no_level.outcome, "fail");
+  EXPECT_EQ(no_level.reason, "no level reached");
+}
+
+TEST(ComplianceVerdicts, WhatCannotBeAssessedSaysWhy) {
+  // Another DA threshold or time fraction: no LM-83 or LEED sDA verdict.
+  GridResult other = horizontal_grid(80, 5, 3, 1, 0.5);
+  other.annual->da_threshold_lux = 250;
+  EXPECT_EQ(find(grid_verdicts(other), "IES", "sDA").outcome, "not assessed");
+  EXPECT_NE(find(grid_verdicts(other), "LEED", "sDA").reason.find("sDA250/50%"), std::string::npos);
+  // No ASE (spread sun); no EN 17037 levels.
+  GridResult spread = horizontal_grid(80, std::nullopt, 3, 1, 0.5);
+  spread.annual->en17037.clear();
+  EXPECT_EQ(find(grid_verdicts(spread), "IES", "ASE").outcome, "not assessed");
+  EXPECT_EQ(find(grid_verdicts(spread), "EN 17037", "level").outcome, "not assessed");
+  // A vertical grid: nothing assessed, every verdict names the orientation.
+  GridResult wall = horizontal_grid(80, 5, 3, 1, 0.5);
+  wall.orientation = GridOrientation::Vertical;
+  for (const Verdict& v : grid_verdicts(wall)) {
+    EXPECT_EQ(v.outcome, "not assessed") << v.standard;
+    EXPECT_FALSE(v.value.has_value());
+    EXPECT_NE(v.reason.find("vertical"), std::string::npos);
+  }
+  // A daylight-factor study: BREEAM only; the model says what was not assessed.
+  GridResult df_only = horizontal_grid(0, 0, 2.5, 1, 0.5);
+  df_only.annual.reset();
+  EXPECT_EQ(find(grid_verdicts(df_only), "BREEAM", "").outcome, "pass");
+  EXPECT_EQ(find(grid_verdicts(df_only), "IES", "sDA").outcome, "not assessed");
+  ResultsModel m;
+  CaseResult c;
+  c.grids = {df_only};
+  m.cases = {c};
+  assess_compliance(m);
+  EXPECT_EQ(m.cases[0].grids[0].verdicts.size(), grid_verdicts(df_only).size());
+  bool daylight_factor_study = false, view_out = false;
+  for (const std::string& s : m.not_assessed) {
+    daylight_factor_study = daylight_factor_study || s.find("daylight-factor study") != std::string::npos;
+    view_out = view_out || s.find("view out") != std::string::npos;
+  }
+  EXPECT_TRUE(daylight_factor_study);
+  EXPECT_TRUE(view_out);
+}
+
+TEST(ResultsModelBuilder, BuildingTablesFromTheProjectAndTheScene) {
+  project::Project p;
+  project::RoomSpec room;
+  room.name = "classroom";
+  room.size_m = {4, 3, 3};
+  project::WindowSpec w;
+  w.name = "south";
+  w.wall = project::Wall::South;
+  w.width_m = 2;
+  w.height_m = 1;
+  w.sill_m = 0.9;
+  w.material = "glazing";
+  w.frame_factor = 0.8;
+  room.windows = {w};
+  w.name = "east";
+  w.wall = project::Wall::East;
+  room.windows.push_back(w);
+  project::RoofLightSpec light;
+  light.name = "top";
+  light.width_m = 1;
+  light.length_m = 0.5;
+  light.material = "glazing";
+  room.roof_lights = {light};
+  p.geometry.rooms = {room};
+  SceneDescription scene;
+  MaterialSpec walls;
+  walls.name = "walls";
+  walls.reflectance = {0.5, 0.5, 0.5};
+  MaterialSpec glazing;
+  glazing.name = "glazing";
+  glazing.type = MaterialType::Glass;
+  glazing.transmittance = {0.6, 0.6, 0.6};
+  MaterialSpec unused = walls;
+  unused.name = "unused";
+  scene.materials = {walls, glazing, unused};
+  Surface wall;
+  wall.material = 0;
+  wall.vertices = {{0, 0, 0}, {4, 0, 0}, {4, 0, 3}, {0, 0, 3}};
+  Surface pane;
+  pane.material = 1;
+  pane.port = true;
+  pane.vertices = {{1, 0, 1}, {3, 0, 1}, {3, 0, 2}, {1, 0, 2}};
+  scene.surfaces = {wall, pane};
+  CaseResult c;
+  set_building(c, p, scene);
+  ASSERT_EQ(c.materials.size(), 2u);  // the unused material is left out
+  EXPECT_EQ(c.materials[0].name, "walls");
+  EXPECT_EQ(c.materials[0].type, "lambertian");
+  EXPECT_NEAR(*c.materials[0].reflectance, 0.5, 1e-12);
+  EXPECT_FALSE(c.materials[0].transmittance.has_value());
+  EXPECT_NEAR(c.materials[0].area_m2, 12, 1e-12);
+  EXPECT_FALSE(c.materials[1].reflectance.has_value());
+  EXPECT_NEAR(*c.materials[1].transmittance, 0.6, 1e-6);  // normal-incidence transmittance of the glass
+  EXPECT_NEAR(c.opening_area_m2, 2, 1e-12);
+  ASSERT_EQ(c.rooms.size(), 1u);
+  const RoomSummary& r = c.rooms[0];
+  EXPECT_EQ(r.floor_area_m2, 12);
+  EXPECT_EQ(r.window_area_m2, 4);
+  EXPECT_EQ(r.glazed_wall_area_m2, 4 * 3 + 3 * 3);  // the south and east walls
+  EXPECT_EQ(r.roof_light_area_m2, 0.5);
+  EXPECT_NEAR(r.window_to_wall_ratio(), 4.0 / 21, 1e-12);
+  EXPECT_NEAR(r.window_to_floor_ratio(), 4.5 / 12, 1e-12);
+  ASSERT_EQ(r.windows.size(), 3u);
+  EXPECT_EQ(r.windows[1].wall, "east");
+  EXPECT_EQ(r.windows[0].frame_factor, 0.8);
+  EXPECT_EQ(r.windows[2].wall, "roof");
+  EXPECT_EQ(project_title("projects/office/project.yaml"), "office");
+  EXPECT_EQ(project_title("studies/riverside_school.yaml"), "riverside_school");
+}
+
+TEST(ResultsModelBuilder, InteriorWindowsAreListedButNotOpenings) {
+  project::Project p;
+  project::RoomSpec office, corridor;
+  office.name = "office";
+  office.size_m = {4, 3, 3};
+  corridor.name = "corridor";
+  corridor.origin = {0, 3, 0};
+  corridor.size_m = {4, 2, 3};
+  project::WindowSpec outside;
+  outside.name = "south";
+  outside.wall = project::Wall::South;
+  outside.width_m = 2;
+  outside.height_m = 1;
+  outside.sill_m = 1;
+  outside.material = "glazing";
+  project::WindowSpec inside = outside;
+  inside.name = "to_corridor";
+  inside.wall = project::Wall::North;
+  office.windows = {outside, inside};
+  p.geometry.rooms = {office, corridor};
+  ASSERT_EQ(project::interior_windows(p.geometry).size(), 1u);
+  CaseResult c;
+  set_building(c, p, SceneDescription{});
+  ASSERT_EQ(c.rooms.size(), 2u);
+  const RoomSummary& r = c.rooms[0];
+  ASSERT_EQ(r.windows.size(), 2u);
+  EXPECT_EQ(r.windows[1].wall, "north (interior)");
+  EXPECT_EQ(r.window_area_m2, 2);           // the south window only
+  EXPECT_EQ(r.glazed_wall_area_m2, 4 * 3);  // the south wall only
+  EXPECT_TRUE(c.rooms[1].windows.empty());
+}
