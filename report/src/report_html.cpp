@@ -1017,7 +1017,7 @@ std::vector<std::string> write_images_and_report(const std::string& results_dir,
   if (outputs.images) {
     for (const study::CaseResult& c : model.cases)
       for (const GridResult& g : c.grids) {
-        const std::vector<std::string> w = write_grid_images(results_dir, g);
+        const std::vector<std::string> w = write_grid_images(results_dir, c, g);
         written.insert(written.end(), w.begin(), w.end());
       }
     const std::vector<std::string> w = write_sky_images(results_dir, model, outputs.sky_hour);

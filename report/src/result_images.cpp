@@ -92,9 +92,8 @@ std::string legend_title(const study::SensorQuantity& quantity) {
 }
 
 RgbaImage grid_png(const SensorLattice& lattice, const std::vector<double>& values,
-                   const study::SensorQuantity& quantity, int pixels_per_cell) {
-  RgbaImage plan = false_colour_image(lattice, values, scale_of(quantity), pixels_per_cell);
-  outline_sensor_cells(plan, lattice, pixels_per_cell);
+                   const study::SensorQuantity& quantity, int pixels_per_cell, const PlanGeometry& geometry) {
+  const RgbaImage plan = plan_picture(lattice, values, scale_of(quantity), pixels_per_cell, geometry).image;
   const std::string note = lattice.regular ? "1 cell = " + format_number(lattice.spacing_m) + " m"
                                            : "one cell per sensor, in sensor order";
   return with_legend(plan, scale_of(quantity), legend_title(quantity), note).image;
@@ -109,7 +108,8 @@ ColourScale scale_of(const study::SensorQuantity& quantity) {
   return percent_scale(quantity.scale_label);
 }
 
-std::vector<std::string> write_grid_images(const std::string& results_dir, const study::GridResult& grid) {
+std::vector<std::string> write_grid_images(const std::string& results_dir, const study::CaseResult& c,
+                                           const study::GridResult& grid) {
   std::vector<std::string> written;
   if (grid.quantities.empty()) return written;
   const std::string grid_dir = study::grid_folder(results_dir, grid);
@@ -117,6 +117,7 @@ std::vector<std::string> write_grid_images(const std::string& results_dir, const
   const int pixels_per_cell =
       std::max(1, std::min(std::max(32, (256 + lattice.columns - 1) / std::max(1, lattice.columns)),
                            4096 / std::max(1, std::max(lattice.columns, lattice.rows))));
+  const PlanGeometry geometry = plan_geometry(c, grid);
   for (const study::SensorQuantity& q : grid.quantities) {
     const std::vector<double> values = study::read_quantity_values(results_dir, grid, q);
     FloatImage exr = sensor_value_image(lattice, values);
@@ -127,7 +128,7 @@ std::vector<std::string> write_grid_images(const std::string& results_dir, const
     study::write_exr(exr, q.quantity, q.unit, exr_path);
     written.push_back(exr_path);
     const std::string png_path = join(grid_dir, q.stem + ".png");
-    study::write_png(grid_png(lattice, values, q, pixels_per_cell), png_path);
+    study::write_png(grid_png(lattice, values, q, pixels_per_cell, geometry), png_path);
     written.push_back(png_path);
   }
   return written;
