@@ -12,6 +12,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/report/image_legend.h"
+#include "dayphoton/report/sky_picture.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/weather/hourly_weather.h"
 
@@ -240,7 +241,7 @@ std::vector<std::string> write_sky_images(const std::string& results_dir, const 
     throw InputError(SourceLocation{weather, 0, 0}, "no record for " + hour.text() + " (month/day/hour) in the weather file");
 
   std::vector<std::string> written;
-  const auto write_one = [&](int c, const std::string& stem, const std::string& time) {
+  const auto write_one = [&](int c, const std::string& stem, const std::string& time, const std::string& note) {
     FloatImage image = sky_fisheye(sky.matrix, c, basis, size);
     image.string_attributes["dayphoton:weather"] = weather;
     image.string_attributes["dayphoton:time"] = time;
@@ -249,14 +250,17 @@ std::vector<std::string> write_sky_images(const std::string& results_dir, const 
     study::write_exr(image, "sky radiance", "W/(sr m2)", exr);
     written.push_back(exr);
     const std::string png = join(results_dir, stem + ".png");
-    study::write_png(luminance_false_colour(image, luminance_scale_for(image)), png);
+    study::write_png(sky_png(image, luminance_scale_for(image), note), png);
     written.push_back(png);
   };
-  write_one(-1, "sky_mean", "mean over all " + std::to_string(sky.steps.size()) + " records of the weather file");
+  write_one(-1, "sky_mean", "mean over all " + std::to_string(sky.steps.size()) + " records of the weather file",
+            "annual mean, seen from below (east left)");
   std::ostringstream time;
   time << hour.month << '/' << hour.day << " record of EPW hour " << static_cast<int>(stamp + 0.5) << " (sky at "
        << stamp << " h local standard time)";
-  write_one(column, "sky_hour", time.str());
+  std::ostringstream note;
+  note << hour.month << '/' << hour.day << ' ' << stamp << " h, seen from below (east left)";
+  write_one(column, "sky_hour", time.str(), note.str());
   return written;
 }
 
