@@ -13,6 +13,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/report/image_legend.h"
 #include "dayphoton/report/sky_picture.h"
+#include "dayphoton/report/temporal_map.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/weather/hourly_weather.h"
 
@@ -112,7 +113,6 @@ ColourScale scale_of(const study::SensorQuantity& quantity) {
 std::vector<std::string> write_grid_images(const std::string& results_dir, const study::CaseResult& c,
                                            const study::GridResult& grid) {
   std::vector<std::string> written;
-  if (grid.quantities.empty()) return written;
   const std::string grid_dir = study::grid_folder(results_dir, grid);
   const SensorLattice& lattice = grid.lattice;
   const int pixels_per_cell =
@@ -132,6 +132,7 @@ std::vector<std::string> write_grid_images(const std::string& results_dir, const
     study::write_png(grid_png(lattice, values, q, pixels_per_cell, geometry), png_path);
     written.push_back(png_path);
   }
+  if (const std::string temporal = write_temporal_map(results_dir, grid); !temporal.empty()) written.push_back(temporal);
   return written;
 }
 

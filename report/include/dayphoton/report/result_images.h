@@ -69,7 +69,8 @@ ColourScale scale_of(const study::SensorQuantity& quantity);
 /// Write <stem>.exr and <stem>.png (grid_png: 32 px per sensor, the plan at least 256 px
 /// wide, with outline, the geometry `c` records for the grid (plan_geometry), scale bar,
 /// north arrow and legend) for every quantity the model lists for `grid` (a grid of case `c`)
-/// into its folder; returns the paths written. InputError (located) if a value table is
+/// into its folder, and temporal_map.png (temporal_map.h) if the grid has an illuminance
+/// table; returns the paths written. InputError (located) if a value table is
 /// missing or malformed.
 std::vector<std::string> write_grid_images(const std::string& results_dir, const study::CaseResult& c,
                                            const study::GridResult& grid);
