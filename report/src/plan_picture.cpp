@@ -132,11 +132,12 @@ PlanGeometry plan_geometry(const study::CaseResult& c, const study::GridResult& 
   std::vector<study::Polygon3> openings;
   for (int k : grid.openings_drawn)
     if (k >= 0 && static_cast<std::size_t>(k) < c.openings.size()) openings.push_back(c.openings[static_cast<std::size_t>(k)]);
-  if (!grid.lattice.regular || !grid.plan) {
+  if (!grid.lattice.regular) {
     g.openings = openings;
     return g;
   }
-  // On a plan, only what is near the grid: its cells and outline, within SystemReach_m.
+  // Only what is near the grid: its cells and outline, within SystemReach_m; systems on a
+  // plan only.
   const Axes f = axes_of(grid.lattice);
   Box near;
   for (const Vec3& p : grid.positions_m) near.add(f.a(p), f.b(p));
@@ -145,8 +146,9 @@ PlanGeometry plan_geometry(const study::CaseResult& c, const study::GridResult& 
     if (box_of(f, o).near(near, SystemReach_m)) g.openings.push_back(o);
   for (const study::Polygon3& o : g.openings)
     for (const Vec3& p : o) near.add(f.a(p), f.b(p));
-  for (const study::Polygon3& s : c.systems)
-    if (box_of(f, s).near(near, SystemReach_m)) g.systems.push_back(s);
+  if (grid.plan)
+    for (const study::Polygon3& s : c.systems)
+      if (box_of(f, s).near(near, SystemReach_m)) g.systems.push_back(s);
   return g;
 }
 

@@ -20,7 +20,7 @@ namespace {
 
 /// A room of 2.5 x 1.5 m (x -0.5..2, y 0..1.5), sensors every 0.5 m from (0.25, 0.25), turned by
 /// `turn_deg` counter-clockwise about the origin; a window in the south wall (y = 0, x 0.5..1.5,
-/// z 1..2), a light shelf outside it (y -0.6..0, z 2) and a panel 20 m away.
+/// z 1..2), a light shelf outside it (y -0.6..0, z 2), and a window and a panel 20 m away.
 struct Room {
   study::CaseResult c;
   study::GridResult grid;
@@ -52,7 +52,10 @@ Room room(double turn_deg) {
     r.grid.outline.push_back(turn(p, turn_deg));
   r.c.openings.push_back({turn({0.5, 0, 1}, turn_deg), turn({1.5, 0, 1}, turn_deg), turn({1.5, 0, 2}, turn_deg),
                           turn({0.5, 0, 2}, turn_deg)});
-  r.grid.openings_drawn = {0};
+  // Another room's window 20 m away.
+  r.c.openings.push_back({turn({20, 0, 1}, turn_deg), turn({21, 0, 1}, turn_deg), turn({21, 0, 2}, turn_deg),
+                          turn({20, 0, 2}, turn_deg)});
+  r.grid.openings_drawn = {0, 1};
   r.c.systems.push_back({turn({0.5, -0.6, 2}, turn_deg), turn({1.5, -0.6, 2}, turn_deg), turn({1.5, 0, 2}, turn_deg),
                          turn({0.5, 0, 2}, turn_deg)});
   r.c.systems.push_back({turn({20, 20, 2}, turn_deg), turn({21, 20, 2}, turn_deg), turn({21, 21, 2}, turn_deg)});
@@ -69,8 +72,8 @@ bool ink(const study::RgbaImage& im, double x, double y) {
 TEST(PlanPicture, NorthArrowPointsUpOnAnAxisAlignedPlan) {
   const Room r = room(0);
   const PlanGeometry g = plan_geometry(r.c, r.grid);
-  ASSERT_EQ(g.openings.size(), 1u);
-  ASSERT_EQ(g.systems.size(), 1u);  // the shelf; the panel 20 m away is left out
+  ASSERT_EQ(g.openings.size(), 1u);  // the south window; the one 20 m away is left out
+  ASSERT_EQ(g.systems.size(), 1u);   // the shelf; the panel 20 m away is left out
   const PlanPicture p = plan_picture(r.grid.lattice, std::vector<double>(12, 5.0), daylight_factor_scale(), 32, g);
   ASSERT_TRUE(p.north_arrow);
   EXPECT_NEAR(p.arrow_direction[0], 0, 1e-12);

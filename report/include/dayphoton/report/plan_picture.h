@@ -8,8 +8,9 @@
 //     projected onto the plan, half-transparent grey with a dark edge; on a plan only, and only
 //     those near the grid (within SystemReach_m of its cells, outline and windows), since
 //     another room's shelf would widen the picture without explaining this grid;
-//   - the openings drawn on the grid (`openings_drawn`): a window in a wall is seen edge-on as a
-//     thick blue line, a skylight as a light-blue polygon with a blue edge;
+//   - the openings drawn on the grid (`openings_drawn`) within SystemReach_m of it: a window in
+//     a wall is seen edge-on as a thick blue line, a skylight as a light-blue polygon with a
+//     blue edge (on an elevation the windows in its wall, face-on);
 //   - above the picture a band with a scale bar (a round length, 1-2-5 steps, labelled in
 //     metres) and, on a plan, a north arrow: world +Y (true north: the run's world coordinates
 //     are already turned by the site's north angle, docs/project-format.md "North and UTM
@@ -27,7 +28,8 @@
 
 namespace dayphoton::report {
 
-/// Systems farther than this from a plan's cells, outline and windows are not drawn on it.
+/// Openings farther than this from a grid's cells and outline, and systems farther than this
+/// from a plan's cells, outline and windows, are not drawn on its picture.
 inline constexpr double SystemReach_m = 3.0;
 
 /// What is drawn around the cells, world coordinates.
