@@ -2,11 +2,15 @@
 // fisheyes) of a finished `dayphoton run`, from its results model (results.json) and the value
 // tables it names; the project file is never read (report/report_html.h; docs/report.md). A
 // results folder of an older dayphoton, without results.json, is an input error that says to
-// run the study again.
+// run the study again. With --pdf the written report is printed to a PDF beside it (same
+// name, extension .pdf) by headless Chromium (report/report_pdf.h); without Chromium that is
+// a usage error naming the package, after report.html was written.
+#include <filesystem>
 #include <ostream>
 
 #include "commands.h"
 #include "dayphoton/report/report_html.h"
+#include "dayphoton/report/report_pdf.h"
 
 namespace dayphoton::app {
 
@@ -21,7 +25,20 @@ int run_report(const ReportOptions& options, std::ostream& out) {
   }
   const study::ResultsModel model = study::read_results_model(options.results_dir);
   std::vector<std::string> written = report::write_images_and_report(options.results_dir, model, which);
-  written.push_back(report::write_report(options.results_dir, model, options.output_path));
+  const std::string html = report::write_report(options.results_dir, model, options.output_path);
+  written.push_back(html);
+  if (options.pdf) {
+    report::PdfSettings settings;
+    settings.timeout_s = options.pdf_timeout_s;
+    const std::string pdf = std::filesystem::path(html).replace_extension(".pdf").string();
+    try {
+      written.push_back(report::print_pdf(html, pdf, settings));
+    } catch (const report::PdfPrinterMissing& e) {
+      if (!options.quiet)
+        for (const std::string& p : written) out << "wrote " << p << "\n";
+      throw UsageError(std::string("--pdf: ") + e.what());
+    }
+  }
   if (!options.quiet)
     for (const std::string& p : written) out << "wrote " << p << "\n";
   require_written(out, "standard output");

@@ -121,6 +121,8 @@ struct ReportOptions {
   std::string output_path;   ///< empty: <results_dir>/report.html
   bool no_images = false;    ///< only report.html (no grid EXR/PNG, no sky fisheyes)
   std::string sky_hour = "6/21/12.5";  ///< M/D/H of sky_hour.exr
+  bool pdf = false;          ///< also print the report to a PDF beside it (report/report_pdf.h)
+  double pdf_timeout_s = 120;  ///< Chromium's time limit
   bool quiet = false;
 };
 int run_report(const ReportOptions& options, std::ostream& out);

@@ -212,6 +212,10 @@ int run_command_line(int argc, char** argv) {
   report_cmd->add_flag("--no-images", report.no_images, "Only the report: no grid EXR/PNG files, no sky images");
   report_cmd->add_option("--sky-hour", report.sky_hour,
                          "M/D/H of the one-hour sky image, H in local standard time (default 6/21/12.5)");
+  report_cmd->add_flag("--pdf", report.pdf,
+                       "Also print the report to a PDF beside it (report.pdf) with headless Chromium");
+  report_cmd->add_option("--pdf-timeout", report.pdf_timeout_s, "Seconds Chromium may take to print (default 120)")
+      ->check(FiniteNumber)->check(CLI::Range(1.0, 3600.0));
   report_cmd->add_flag("-q,--quiet", report.quiet, "Print errors only");
 
   RenderOptions render;

@@ -17,7 +17,6 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/report/colour_scale.h"
-#include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/image_files.h"
 #include "dayphoton/report/report_format.h"
 #include "report_sections.h"
@@ -143,13 +142,7 @@ GridData load_grid(const std::string& results_dir, const study::CaseResult& c, c
   values("udi_autonomous", g.autonomous);
   if (grid.has_illuminance_table) {
     try {
-      const std::string bin = (fs::path(study::grid_folder(results_dir, grid)) / "illuminance.bin").string();
-      g.illuminance = study::read_illuminance_binary(bin);
-      if (g.illuminance->sensor_count() != g.positions.size()) {
-        g.problems.push_back(bin + ": " + std::to_string(g.illuminance->sensor_count()) + " sensors, results.json has " +
-                             std::to_string(g.positions.size()));
-        g.illuminance.reset();
-      }
+      g.illuminance = study::read_illuminance_table(results_dir, grid);  // checks the sensor count
     } catch (const std::exception& e) {
       g.problems.push_back(e.what());
     }
@@ -659,6 +652,9 @@ std::string grid_section(const GridData& g, PageIds& page) {
       << legend_svg(scale, page)
       << "</div><figcaption>Mean illuminance over the grid's " << g.illuminance->sensor_count()
       << " sensors for every hour of the weather year (lx, logarithmic; below 1 lx grey).</figcaption></figure>";
+    if (fs::exists(join(g.folder_path, "temporal_map.png")))  // report/temporal_map.h
+      s << "<p class=\"note\">As a picture: <a href=\"" << esc(g.folder) << "/temporal_map.png\">" << esc(g.folder)
+        << "/temporal_map.png</a>.</p>";
   } else {
     s << "<p class=\"na\">illuminance.bin not found: no annual illuminance.</p>";
   }
@@ -895,7 +891,7 @@ std::vector<std::string> write_images_and_report(const std::string& results_dir,
   if (outputs.images) {
     for (const study::CaseResult& c : model.cases)
       for (const GridResult& g : c.grids) {
-        const std::vector<std::string> w = write_grid_images(results_dir, g);
+        const std::vector<std::string> w = write_grid_images(results_dir, c, g);
         written.insert(written.end(), w.begin(), w.end());
       }
     const std::vector<std::string> w = write_sky_images(results_dir, model, outputs.sky_hour);

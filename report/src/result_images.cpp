@@ -12,6 +12,8 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/report/image_legend.h"
+#include "dayphoton/report/sky_picture.h"
+#include "dayphoton/report/temporal_map.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/weather/hourly_weather.h"
 
@@ -92,9 +94,8 @@ std::string legend_title(const study::SensorQuantity& quantity) {
 }
 
 RgbaImage grid_png(const SensorLattice& lattice, const std::vector<double>& values,
-                   const study::SensorQuantity& quantity, int pixels_per_cell) {
-  RgbaImage plan = false_colour_image(lattice, values, scale_of(quantity), pixels_per_cell);
-  outline_sensor_cells(plan, lattice, pixels_per_cell);
+                   const study::SensorQuantity& quantity, int pixels_per_cell, const PlanGeometry& geometry) {
+  const RgbaImage plan = plan_picture(lattice, values, scale_of(quantity), pixels_per_cell, geometry).image;
   const std::string note = lattice.regular ? "1 cell = " + format_number(lattice.spacing_m) + " m"
                                            : "one cell per sensor, in sensor order";
   return with_legend(plan, scale_of(quantity), legend_title(quantity), note).image;
@@ -109,14 +110,15 @@ ColourScale scale_of(const study::SensorQuantity& quantity) {
   return percent_scale(quantity.scale_label);
 }
 
-std::vector<std::string> write_grid_images(const std::string& results_dir, const study::GridResult& grid) {
+std::vector<std::string> write_grid_images(const std::string& results_dir, const study::CaseResult& c,
+                                           const study::GridResult& grid) {
   std::vector<std::string> written;
-  if (grid.quantities.empty()) return written;
   const std::string grid_dir = study::grid_folder(results_dir, grid);
   const SensorLattice& lattice = grid.lattice;
   const int pixels_per_cell =
       std::max(1, std::min(std::max(32, (256 + lattice.columns - 1) / std::max(1, lattice.columns)),
                            4096 / std::max(1, std::max(lattice.columns, lattice.rows))));
+  const PlanGeometry geometry = plan_geometry(c, grid);
   for (const study::SensorQuantity& q : grid.quantities) {
     const std::vector<double> values = study::read_quantity_values(results_dir, grid, q);
     FloatImage exr = sensor_value_image(lattice, values);
@@ -127,9 +129,10 @@ std::vector<std::string> write_grid_images(const std::string& results_dir, const
     study::write_exr(exr, q.quantity, q.unit, exr_path);
     written.push_back(exr_path);
     const std::string png_path = join(grid_dir, q.stem + ".png");
-    study::write_png(grid_png(lattice, values, q, pixels_per_cell), png_path);
+    study::write_png(grid_png(lattice, values, q, pixels_per_cell, geometry), png_path);
     written.push_back(png_path);
   }
+  if (const std::string temporal = write_temporal_map(results_dir, grid); !temporal.empty()) written.push_back(temporal);
   return written;
 }
 
@@ -239,7 +242,7 @@ std::vector<std::string> write_sky_images(const std::string& results_dir, const 
     throw InputError(SourceLocation{weather, 0, 0}, "no record for " + hour.text() + " (month/day/hour) in the weather file");
 
   std::vector<std::string> written;
-  const auto write_one = [&](int c, const std::string& stem, const std::string& time) {
+  const auto write_one = [&](int c, const std::string& stem, const std::string& time, const std::string& note) {
     FloatImage image = sky_fisheye(sky.matrix, c, basis, size);
     image.string_attributes["dayphoton:weather"] = weather;
     image.string_attributes["dayphoton:time"] = time;
@@ -248,14 +251,17 @@ std::vector<std::string> write_sky_images(const std::string& results_dir, const 
     study::write_exr(image, "sky radiance", "W/(sr m2)", exr);
     written.push_back(exr);
     const std::string png = join(results_dir, stem + ".png");
-    study::write_png(luminance_false_colour(image, luminance_scale_for(image)), png);
+    study::write_png(sky_png(image, luminance_scale_for(image), note), png);
     written.push_back(png);
   };
-  write_one(-1, "sky_mean", "mean over all " + std::to_string(sky.steps.size()) + " records of the weather file");
+  write_one(-1, "sky_mean", "mean over all " + std::to_string(sky.steps.size()) + " records of the weather file",
+            "annual mean, seen from below (east left)");
   std::ostringstream time;
   time << hour.month << '/' << hour.day << " record of EPW hour " << static_cast<int>(stamp + 0.5) << " (sky at "
        << stamp << " h local standard time)";
-  write_one(column, "sky_hour", time.str());
+  std::ostringstream note;
+  note << hour.month << '/' << hour.day << ' ' << stamp << " h, seen from below (east left)";
+  write_one(column, "sky_hour", time.str(), note.str());
   return written;
 }
 

@@ -12,6 +12,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/project/path_name.h"
+#include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/result_tables.h"
 #include "json_text.h"
 
@@ -735,6 +736,23 @@ std::vector<double> read_quantity_values(const std::string& results_dir, const G
     throw InputError(SourceLocation{path, 0, 0}, std::to_string(table.rows.size()) + " rows for the " +
                                                      std::to_string(grid.positions_m.size()) + " sensors of results.json");
   return table.values(quantity.column);
+}
+
+metrics::IlluminanceTable read_illuminance_table(const std::string& results_dir, const GridResult& grid) {
+  const std::string path = (fs::path(grid_folder(results_dir, grid)) / "illuminance.bin").string();
+  if (!grid.has_illuminance_table)
+    throw InputError(SourceLocation{path, 0, 0}, "results.json says grid '" + grid.name +
+                                                     "' has no annual illuminance (illuminance_table: false)");
+  metrics::IlluminanceTable table;
+  try {
+    table = read_illuminance_binary(path);
+  } catch (const std::runtime_error& e) {
+    throw InputError(SourceLocation{path, 0, 0}, e.what());
+  }
+  if (table.sensor_count() != grid.positions_m.size())
+    throw InputError(SourceLocation{path, 0, 0}, std::to_string(table.sensor_count()) + " sensors, results.json has " +
+                                                     std::to_string(grid.positions_m.size()));
+  return table;
 }
 
 }  // namespace dayphoton::study

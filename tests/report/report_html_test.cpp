@@ -496,9 +496,12 @@ TEST(ReportHtml, DeterministicAndWrittenAtomically) {
 TEST(ReportHtml, WritesImagesForEveryGridAndVariant) {
   const std::string dir = write_results("images");
   const std::vector<std::string> written = write_images_and_report(dir);
-  // Base grid: DF + 4 metrics x (EXR + PNG); wall grid and variant: DF x 2; no weather file:
-  // no sky; the report.
-  EXPECT_EQ(written.size(), 10u + 2u + 2u + 1u);
+  // Base grid: DF + 4 metrics x (EXR + PNG) and the temporal map of its illuminance table;
+  // wall grid and variant: DF x 2; no weather file: no sky; the report.
+  EXPECT_EQ(written.size(), 10u + 1u + 2u + 2u + 1u);
+  EXPECT_TRUE(fs::exists(dir + "/north_wing/temporal_map.png"));
+  // The report links the picture in its temporal section (written after the images).
+  EXPECT_NE(report_html(dir).find("<a href=\"north_wing/temporal_map.png\">"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir + "/variants/tinted/north_wing/daylight_factor.exr"));
   EXPECT_TRUE(fs::exists(dir + "/north_wing/da300.png"));
   EXPECT_TRUE(fs::exists(dir + "/report.html"));

@@ -186,7 +186,7 @@ TEST(ResultImages, OfficeGridExrEqualsTheCsvTables) {
   fs::create_directories(dir);
   write_grid_folder(dir, sensors);
   const GridResult grid = grid_model("workplane", sensors);
-  const std::vector<std::string> written = write_grid_images(results, grid);
+  const std::vector<std::string> written = write_grid_images(results, CaseResult{}, grid);
   EXPECT_EQ(written.size(), 10u);  // 5 quantities x (EXR + PNG)
   const SensorLattice& lattice = grid.lattice;
   ASSERT_TRUE(lattice.regular);
@@ -197,15 +197,17 @@ TEST(ResultImages, OfficeGridExrEqualsTheCsvTables) {
   EXPECT_NEAR(lattice.column_step_m.x, 0.5, 1e-9);
   EXPECT_NEAR(lattice.row_step_m.y, -0.5, 1e-9);
   expect_exr_equals_csv(dir, grid, sensors.size(), true);
-  // The PNG decodes to the plan (32 px per sensor) with the outline and the legend below it:
-  // the image grid_png makes, opaque.
+  // The PNG decodes to the plan (32 px per sensor) with the outline, the band of the scale bar
+  // and north arrow above it and the legend below it: the image grid_png makes, opaque.
   std::ifstream in(dir + "/daylight_factor.png", std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   int w = 0, h = 0;
   const std::vector<std::uint8_t> pixels = decode_png(bytes, w, h);
   ASSERT_FALSE(pixels.empty());
-  const LegendImage layout = with_legend(RgbaImage(11 * 32, 15 * 32), daylight_factor_scale(), "Daylight factor, %",
-                                         "1 cell = 0.5 m");
+  const PlanPicture picture = plan_picture(lattice, std::vector<double>(sensors.size(), 1.0), daylight_factor_scale(),
+                                           32, plan_geometry(CaseResult{}, grid));
+  EXPECT_TRUE(picture.north_arrow);
+  const LegendImage layout = with_legend(picture.image, daylight_factor_scale(), "Daylight factor, %", "1 cell = 0.5 m");
   ASSERT_EQ(w, layout.image.width);
   ASSERT_EQ(h, layout.image.height);
   EXPECT_GT(w, 11 * 32);
@@ -218,7 +220,7 @@ TEST(ResultImages, OfficeGridExrEqualsTheCsvTables) {
     for (int x = 0; x < w; x += 5) ASSERT_EQ(px(x, y)[3], 255);
   // The outline: the north-west corner and the east edge of the plan are dark, the edge
   // between two sensors is not.
-  const int x0 = layout.plan_x, y0 = layout.plan_y;
+  const int x0 = layout.plan_x + picture.cells_x, y0 = layout.plan_y + picture.cells_y;
   EXPECT_EQ(px(x0, y0), (std::array<std::uint8_t, 4>{OutlineGrey, OutlineGrey, OutlineGrey, 255}));
   EXPECT_EQ(px(x0 + 11 * 32 - 1, y0 + 100)[0], OutlineGrey);
   EXPECT_EQ(px(x0 + 31, y0 + 16), px(x0 + 16, y0 + 16));
@@ -241,7 +243,7 @@ TEST(ResultImages, RotatedLShapedGridKeepsOnePixelPerSensorAndTransparentHoles) 
   const std::string results = temp_dir("rotated"), dir = results + "/grid";
   write_grid_folder(dir, sensors);
   const GridResult grid = grid_model("grid", sensors);
-  write_grid_images(results, grid);
+  write_grid_images(results, CaseResult{}, grid);
   const SensorLattice& lattice = grid.lattice;
   ASSERT_TRUE(lattice.regular);
   EXPECT_EQ(lattice.columns * lattice.rows, 63);
@@ -257,7 +259,7 @@ TEST(ResultImages, PointsOffALatticeGiveOneRowInSensorOrder) {
   const std::string results = temp_dir("points"), dir = results + "/grid";
   write_grid_folder(dir, sensors);
   const GridResult grid = grid_model("grid", sensors);
-  write_grid_images(results, grid);
+  write_grid_images(results, CaseResult{}, grid);
   const Exr exr = read_with_openexr(dir + "/daylight_factor.exr");
   EXPECT_EQ(exr.width, 4);
   EXPECT_EQ(exr.height, 1);
@@ -272,7 +274,7 @@ TEST(ResultImages, MalformedTablesAreLocatedErrors) {
   std::ofstream(dir + "/daylight_factor.csv") << "index,x,y,z,df_percent\n0,0,0,0.8,1.5\n1,1,0,0.8,abc\n";
   const GridResult grid = grid_model("grid", sensors);
   try {
-    write_grid_images(results, grid);
+    write_grid_images(results, CaseResult{}, grid);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("daylight_factor.csv:3:"), std::string::npos) << e.what();

@@ -1,7 +1,8 @@
 // BitmapFont: a tiny built-in 5 x 7 pixel font for the text of the standalone PNG images
-// (legend titles, tick values), so that no font library is needed. Upper-case letters, digits
-// and the punctuation of quantity names and numbers; lower-case letters are drawn as capitals,
-// any other character as '?'. Each glyph sits in a 6 x 9 cell (one column and two rows of
+// (legend titles, tick values), so that no font library is needed. Upper- and lower-case
+// letters (so that units read right: "m" is not "M", mega), digits and the punctuation of
+// quantity names and numbers; any other character is drawn as '?'. Lower-case letters with a
+// descender (g, j, p, q, y) are raised to fit the 7 rows, as on dot-matrix displays. Each glyph sits in a 6 x 9 cell (one column and two rows of
 // spacing) and is scaled by a whole factor.
 #pragma once
 

@@ -23,6 +23,7 @@
 #include "dayphoton/core/radiance_matrix.h"
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/report/colour_scale.h"
+#include "dayphoton/report/plan_picture.h"
 #include "dayphoton/study/image_files.h"
 #include "dayphoton/study/results_model.h"
 #include "dayphoton/study/year_hour.h"
@@ -56,19 +57,23 @@ void outline_sensor_cells(RgbaImage& image, const SensorLattice& lattice, int pi
 /// reads "% of occupied hours" (e.g. "Daylight autonomy (300 lx), % of occupied hours").
 std::string legend_title(const study::SensorQuantity& quantity);
 
-/// The standalone PNG of one quantity: the outlined false-colour plan with its legend
-/// (image_legend.h) and the cell size ("1 cell = 0.5 m") as the note.
+/// The standalone PNG of one quantity: the outlined false-colour plan with the building
+/// around it, scale bar and north arrow (plan_picture.h), and its legend (image_legend.h)
+/// with the cell size ("1 cell = 0.5 m") as the note.
 RgbaImage grid_png(const SensorLattice& lattice, const std::vector<double>& values,
-                   const study::SensorQuantity& quantity, int pixels_per_cell);
+                   const study::SensorQuantity& quantity, int pixels_per_cell, const PlanGeometry& geometry);
 
 /// The colour scale of a quantity of the model (colour_scale.h).
 ColourScale scale_of(const study::SensorQuantity& quantity);
 
 /// Write <stem>.exr and <stem>.png (grid_png: 32 px per sensor, the plan at least 256 px
-/// wide, with outline and legend) for every
-/// quantity the model lists for `grid` into its folder; returns the paths written. InputError
-/// (located) if a value table is missing or malformed.
-std::vector<std::string> write_grid_images(const std::string& results_dir, const study::GridResult& grid);
+/// wide, with outline, the geometry `c` records for the grid (plan_geometry), scale bar,
+/// north arrow and legend) for every quantity the model lists for `grid` (a grid of case `c`)
+/// into its folder, and temporal_map.png (temporal_map.h) if the grid has an illuminance
+/// table; returns the paths written. InputError (located) if a value table is
+/// missing or malformed.
+std::vector<std::string> write_grid_images(const std::string& results_dir, const study::CaseResult& c,
+                                           const study::GridResult& grid);
 
 /// Angular (equidistant) fisheye of the upper hemisphere of one sky column (`column` >= 0)
 /// or of the mean over all columns (`column` = -1) of a sky matrix (bins x steps x RGB,

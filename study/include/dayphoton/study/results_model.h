@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "dayphoton/core/vec3.h"
+#include "dayphoton/metrics/illuminance_table.h"
 
 namespace dayphoton::study {
 
@@ -300,6 +301,12 @@ ResultsModel read_results_model(const std::string& results_dir);
 /// other than the grid's sensors.
 std::vector<double> read_quantity_values(const std::string& results_dir, const GridResult& grid,
                                          const SensorQuantity& quantity);
+
+/// The annual illuminance of `grid` (illuminance.bin in its folder: steps x sensors, lux; the
+/// model's one typed reader of it). InputError (located at the file) if the model says the grid
+/// has none (`illuminance_table` false), or the file is missing, malformed
+/// (study/annual_illuminance.h) or holds another number of sensors than the grid.
+metrics::IlluminanceTable read_illuminance_table(const std::string& results_dir, const GridResult& grid);
 
 /// The folder of `grid` inside `results_dir`; InputError if the model's relative folder names
 /// lead outside it (an edited results.json must not make a reader write elsewhere).
