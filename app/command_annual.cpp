@@ -3,8 +3,10 @@
 // (DIR/coefficients_sky.mtx, DIR/sensors.csv), without any tracing (issue 5 item 6). The sky
 // matrix is built from the weather file in the RADIANCE-compatible mode (gendaymtx -m MF, sun
 // spread into patches) or read from a RADIANCE matrix file (--sky-matrix, e.g. gendaymtx
-// output, plain or .gz); the weather file always gives the time stamps. The sun is computed for the site the
-// run's summary.json records (study/sun_site.h), else for the weather file header's site.
+// output, plain or .gz); the weather file always gives the time stamps. The run's results.json
+// (study/recorded_metric_settings.h) gives the grid's metric settings, the site the sun is
+// computed for (else the weather file header's) and the ground reflectance; --project and the
+// command line's options override the settings.
 // See docs/outputs.md and docs/cli.md.
 #include <algorithm>
 #include <filesystem>
@@ -18,8 +20,6 @@
 #include <iostream>
 #include <ostream>
 
-#include <nlohmann/json.hpp>
-
 #include "commands.h"
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/input_file.h"
@@ -28,6 +28,7 @@
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/project_metric_settings.h"
+#include "dayphoton/study/recorded_metric_settings.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/hourly_weather.h"
@@ -44,49 +45,6 @@ sky::PatchBasis basis_of_columns(std::size_t columns, const std::string& coeffic
     if (static_cast<std::size_t>(144 * mf * mf + 2) == columns) return sky::PatchBasis::reinhart(mf);
   throw InputError(SourceLocation{coefficients_path, 0, 0},
                    std::to_string(columns) + " columns match no sky basis (Tregenza 146, Reinhart MF n 144 n^2 + 2)");
-}
-
-/// What `annual` takes from the run that wrote a grid folder. Read in read_run_metadata
-/// alone (today from summary.json; the typed results model will replace it there).
-struct RunMetadata {
-  std::string summary_path;                 ///< "" if no summary.json was found
-  std::optional<double> ground_reflectance;  ///< simulation.ground_reflectance
-  std::optional<study::SunSite> sun_site;    ///< site (study::recorded_sun_site)
-};
-
-/// The run's summary.json: the first regular file of that name in the grid folder's parent
-/// (DIR/<grid>) or above it (DIR/variants/<variant>/<grid>), at most 3 levels up; then the
-/// ground reflectance and the sun site it records (the site for `weather`: InputError for
-/// another clock).
-RunMetadata read_run_metadata(const std::string& grid_dir, const weather::HourlyWeather& weather) {
-  constexpr int MaxLevelsUp = 3;
-  fs::path dir = fs::absolute(grid_dir).lexically_normal();
-  if (!dir.has_filename()) dir = dir.parent_path();  // "grid/" -> "grid"
-  RunMetadata m;
-  std::string text;
-  for (int up = 0; up < MaxLevelsUp && dir.has_parent_path() && dir != dir.parent_path(); ++up) {
-    dir = dir.parent_path();
-    const fs::path summary = dir / "summary.json";
-    if (!input_file_problem(summary.string()).empty()) continue;  // absent, or a FIFO: not waited on
-    std::ifstream in(summary);
-    std::ostringstream read;
-    read << in.rdbuf();
-    if (!in) continue;
-    m.summary_path = summary.string();
-    text = read.str();
-    break;
-  }
-  if (text.empty()) return m;
-  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-  if (!j.is_discarded() && j.contains("simulation") && j["simulation"].is_object()) {
-    const nlohmann::json& s = j["simulation"];
-    if (s.contains("ground_reflectance") && s["ground_reflectance"].is_number()) {
-      const double rho = s["ground_reflectance"].get<double>();
-      if (rho >= 0 && rho <= 1) m.ground_reflectance = rho;
-    }
-  }
-  m.sun_site = study::recorded_sun_site(text, m.summary_path, weather);
-  return m;
 }
 
 std::string percent(double v) {
@@ -112,15 +70,26 @@ std::vector<std::string> grid_folders_below(const std::string& dir) {
   return found;
 }
 
-/// The metric settings: the project's (--project) or the defaults, then the command line's
-/// overrides, checked as the project file's keys are (UsageError).
+/// The metric settings, in increasing precedence: the run's (its results model's record of
+/// this grid), the project's (--project), the command line's overrides, checked as the
+/// project file's keys are (UsageError). `source` receives where the base settings came from.
 study::AnnualStudySettings annual_settings(const AnnualOptions& o, const std::string& grid_dir,
-                                           const project::Project* project, const weather::HourlyWeather& weather) {
+                                           const project::Project* project,
+                                           const std::optional<study::RecordedGrid>& recorded,
+                                           const weather::HourlyWeather& weather, std::string& source) {
   // The grid folder is named after its sensor set, whose own schedule (if any) applies.
   fs::path grid = fs::absolute(grid_dir).lexically_normal();
   if (!grid.has_filename()) grid = grid.parent_path();
-  study::AnnualStudySettings settings = project ? study::annual_settings_of(*project, &weather, grid.filename().string())
-                                                : study::AnnualStudySettings{};
+  study::AnnualStudySettings settings;
+  if (project) {
+    settings = study::annual_settings_of(*project, &weather, grid.filename().string());
+    source = o.project_path;
+  } else if (recorded && recorded->grid && recorded->grid->annual) {
+    settings = study::recorded_annual_settings(*recorded->grid->annual, SourceLocation{recorded->results_path, 0, 0});
+    source = "the run's, from " + recorded->results_path;
+  } else {
+    source = "the defaults (no --project, and no results.json above the grid folder records its metrics)";
+  }
   settings.calendar = study::weather_calendar(weather);
   metrics::MetricSettings& m = settings.metrics;
   if (o.da_threshold_lux) m.da_threshold_lux = *o.da_threshold_lux;
@@ -128,8 +97,16 @@ study::AnnualStudySettings annual_settings(const AnnualOptions& o, const std::st
   if (o.udi_upper_original_lux) m.udi_upper_original_lux = *o.udi_upper_original_lux;
   if (o.udi_upper_revised_lux) m.udi_upper_revised_lux = *o.udi_upper_revised_lux;
   if (o.sda_time_fraction) {
-    if (!(*o.sda_time_fraction > 0)) throw UsageError("--sda-time-fraction must be in (0, 1]");
+    if (!(*o.sda_time_fraction > 0 && *o.sda_time_fraction <= 1)) throw UsageError("--sda-time-fraction must be in (0, 1]");
     m.sda_time_fraction = *o.sda_time_fraction;
+  }
+  if (o.ase_threshold_lux) {
+    if (!(*o.ase_threshold_lux > 0)) throw UsageError("--ase-threshold must be positive (lx)");
+    m.ase_threshold_lux = *o.ase_threshold_lux;
+  }
+  if (o.ase_hours) {
+    if (!(*o.ase_hours >= 0)) throw UsageError("--ase-hours must not be negative");
+    m.ase_hours = *o.ase_hours;
   }
   if (!(m.udi_upper_original_lux > m.udi_lower_lux))
     throw UsageError("the UDI upper limit (" + format_number(m.udi_upper_original_lux) +
@@ -277,17 +254,20 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
   const std::string& weather_path = inputs.weather_path;
   const bool exact_sun = use_exact_sun(o, grid_dir);
 
+  // The run's record of this grid (results.json above the folder), if any.
+  const std::optional<study::RecordedGrid> recorded = study::find_recorded_grid(grid_dir);
   study::AnnualSky sky;
   std::optional<study::SkyAndSuns> sky_and_suns;
   std::string site_line;
   if (o.sky_matrix_path.empty()) {
-    const RunMetadata run = read_run_metadata(grid_dir, weather);
+    const std::optional<study::SunSite> run_site =
+        recorded ? study::recorded_sun_site(recorded->model, recorded->results_path, weather) : std::nullopt;
     double rho = o.ground_reflectance;
-    if (!o.ground_reflectance_given && run.ground_reflectance) rho = *run.ground_reflectance;
-    // The sun of the run's site (its summary.json), else of the weather file's header.
-    const study::SunSite site = run.sun_site ? *run.sun_site : study::header_sun_site(weather);
-    site_line = study::sun_site_sentence(site) + (run.sun_site ? " (the run's, from " + run.summary_path + ")"
-                                                               : std::string(" (no run summary records a site)"));
+    if (!o.ground_reflectance_given && recorded) rho = recorded->model.ground_reflectance;
+    // The sun of the run's site (its results.json), else of the weather file's header.
+    const study::SunSite site = run_site ? *run_site : study::header_sun_site(weather);
+    site_line = study::sun_site_sentence(site) + (run_site ? " (the run's, from " + recorded->results_path + ")"
+                                                           : std::string(" (no results.json records a site)"));
     require_matrix_within_limit("the sky matrix (" + std::to_string(basis.bin_count()) +
                                     " bins, one column per record of " + weather_path + ")",
                                 static_cast<std::uint64_t>(basis.bin_count()), weather.records.size(), 3,
@@ -309,7 +289,8 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
 
   require_matrix_within_limit("the illuminance table (" + std::to_string(sensors.size()) + " sensors, one row per record)",
                               sensors.size(), the_sky.steps.size(), 1, o.max_matrix_values);
-  const study::AnnualStudySettings settings = annual_settings(o, grid_dir, project, weather);
+  std::string settings_source;
+  const study::AnnualStudySettings settings = annual_settings(o, grid_dir, project, recorded, weather, settings_source);
   study::ExactSunNotes notes;
   const study::AnnualStudy result =
       exact_sun ? study::annual_study_exact_sun(
@@ -318,6 +299,10 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
                       *sky_and_suns, settings, grid_dir, notes)
                 : study::compute_annual_study(coefficients, sky, settings);
   const std::vector<std::string> written = study::write_annual_outputs(result, sensors, settings, output_dir);
+  if (!project && !(recorded && recorded->grid && recorded->grid->annual))
+    std::cerr << "warning: " << grid_dir
+              << ": no results.json above the grid folder records its metric settings and no --project is given: "
+                 "the default thresholds and occupancy (08:00-18:00 every day) apply\n";
   // Never silently interpolated: the warnings go to stderr even with --quiet.
   for (const std::string& w : notes.warnings()) std::cerr << "warning: " << grid_dir << ": " << w << '\n';
 
@@ -326,14 +311,13 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
     std::size_t sda_sensors = 0;
     const bool overridden = !o.occupancy_hours.empty() || !o.daylight_saving.empty() || !o.january_1.empty() ||
                             o.da_threshold_lux || o.udi_lower_lux || o.udi_upper_original_lux ||
-                            o.udi_upper_revised_lux || o.sda_time_fraction;
+                            o.udi_upper_revised_lux || o.sda_time_fraction || o.ase_threshold_lux || o.ase_hours;
     const metrics::MetricSettings& ms = settings.metrics;
     for (const metrics::SensorMetrics& m : result.sensors) sda_sensors += m.da_percent >= 100.0 * ms.sda_time_fraction;
     const std::string da = "DA" + format_number(ms.da_threshold_lux);
     out << "dayphoton annual: " << grid_dir << ": " << sensors.size() << " sensors x " << result.illuminance.step_count()
         << " steps, " << result.occupied_hours << " occupied hours (" << settings.occupancy.description() << ")\n"
-        << (project ? "  metric settings: " + o.project_path + (overridden ? ", with the command line's overrides" : "") + "\n"
-                    : std::string())
+        << "  metric settings: " << settings_source << (overridden ? ", with the command line's overrides" : "") << "\n"
         << "  sky: " << result.sky_description << "\n"
         << (site_line.empty() ? std::string() : "  site: " + site_line + "\n")
         << "  mean " << da << " " << percent(g.mean.da_percent) << ", s" << da << "/"

@@ -100,19 +100,20 @@ struct AnnualOptions {
   /// "exact" (the exported direct sun and sun bins), "spread" (sky coefficients only), or
   /// empty: exact where the grid folder has direct_sun.bin.gz and no --sky-matrix is given.
   std::string sun;
-  double ground_reflectance = 0.2;     ///< used if given, else the run's (summary.json), else 0.2
+  double ground_reflectance = 0.2;     ///< used if given, else the run's (results.json), else 0.2
   bool ground_reflectance_given = false;
   bool quiet = false;
   std::uint64_t max_matrix_values = ResourceLimits{}.matrix_values;            ///< each matrix and the table
   std::uint64_t max_decompressed_bytes = ResourceLimits{}.decompressed_bytes;  ///< a .gz sky matrix
-  /// Metric settings (thresholds, occupancy) and the default weather file from this project.
+  /// Metric settings (thresholds, occupancy) and the default weather file from this project
+  /// (default: the settings the run recorded in results.json).
   std::string project_path;
   /// Overrides of the metric settings (docs/cli.md); each unset when empty.
   std::vector<double> occupancy_hours;  ///< START END: every day, replaces the schedule
   std::string daylight_saving;          ///< none, eu, us
   std::string january_1;                ///< weekday of 1 January
   std::optional<double> da_threshold_lux, udi_lower_lux, udi_upper_original_lux, udi_upper_revised_lux,
-      sda_time_fraction;
+      sda_time_fraction, ase_threshold_lux, ase_hours;
 };
 int run_annual(const AnnualOptions& options, std::ostream& out);
 

@@ -148,11 +148,11 @@ int run_command_line(int argc, char** argv) {
   annual_cmd->add_option("--weather", annual.weather_path,
                          "Weather file (EPW, or .wea by its extension): time stamps, and the sky (default: the --project's weather file)");
   annual_cmd->add_option("--project", annual.project_path,
-                         "Project file: its metric settings (thresholds, occupancy schedule) and weather file, so "
-                         "that the metrics are the run's");
+                         "Project file: its metric settings (thresholds, occupancy schedule) and weather file "
+                         "(default: the settings the run recorded in results.json above the grid folder)");
   annual_cmd->add_option("--occupancy-hours", annual.occupancy_hours,
                          "START END: occupied every day from START to END (hours, local standard time; "
-                         "replaces the project's schedule; default 8 18)")
+                         "replaces the run's or project's schedule; default 8 18)")
       ->expected(2)->check(FiniteNumber)->check(CLI::Range(0.0, 24.0));
   annual_cmd->add_option("--daylight-saving", annual.daylight_saving,
                          "none, eu or us: the occupied hours are clock time with that daylight saving time")
@@ -173,6 +173,13 @@ int run_command_line(int argc, char** argv) {
   annual_cmd->add_option("--sda-time-fraction", annual.sda_time_fraction,
                          "sDA: fraction of occupied hours at or above the DA threshold (default 0.5)")
       ->check(FiniteNumber)->check(CLI::Range(0.0, 1.0));
+  annual_cmd->add_option("--ase-threshold", annual.ase_threshold_lux,
+                         "ASE: direct-sun illuminance counted (lx, default 1000)")
+      ->check(FiniteNumber)->check(CLI::PositiveNumber);
+  annual_cmd->add_option("--ase-hours", annual.ase_hours,
+                         "ASE: a sensor counts with more than this many occupied hours at or above the threshold "
+                         "(default 250)")
+      ->check(FiniteNumber)->check(CLI::NonNegativeNumber);
   annual_cmd->add_option("--sky-matrix", annual.sky_matrix_path,
                          "Read the sky matrix from this RADIANCE matrix file (e.g. gendaymtx output, plain or .gz) "
                          "instead of building it from the weather file");
@@ -190,7 +197,7 @@ int run_command_line(int argc, char** argv) {
                          "tregenza or reinhart:N (default: from the coefficients' column count)");
   annual_cmd->add_option("--ground-reflectance", annual.ground_reflectance,
                          "Ground reflectance of the sky built from the weather file (default: the run's, from "
-                         "summary.json beside the grid folder, else 0.2)")
+                         "results.json above the grid folder, else 0.2)")
       ->check(FiniteNumber)->check(CLI::Range(0.0, 1.0));
   annual_cmd->add_flag("-q,--quiet", annual.quiet, "Print errors only");
   annual_cmd->add_option("--max-matrix-values", annual.max_matrix_values,

@@ -3,6 +3,8 @@
 // 4.4 (the sun spread over the 4 nearest patches with weights 1/(1.002 - cos)).
 #include "dayphoton/sky/sky_matrix.h"
 
+#include "dayphoton/sky/spread_sun.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -39,34 +41,15 @@ double projected_solid_angle_sr(const PatchBasis& basis, int bin) {
   return (b.azimuth_max_rad - b.azimuth_min_rad) * (s1 * s1 - s0 * s0) / 2.0;
 }
 
-/// Add the sun to the 4 sky patches nearest to it, as gendaymtx does: weights
-/// w = 1/(1.002 - cos angle), patch radiance += w/sum(w) * E_nv / (179 Omega).
+/// Add the sun to the 4 sky patches nearest to it, as gendaymtx does (spread_sun.h):
+/// patch radiance += w E_nv / (179 Omega).
 void spread_sun(const PatchBasis& basis, const Vec3& sun, double direct_normal_lux, RadianceMatrix& m,
                 std::size_t column) {
-  constexpr int N = 4;
-  std::array<int, N> best{};
-  std::array<double, N> best_cos{};
-  best.fill(-1);
-  best_cos.fill(-2.0);
-  for (int bin = 1; bin < basis.bin_count(); ++bin) {
-    const double c = dot(basis.centre(bin), sun);
-    for (int k = 0; k < N; ++k)
-      if (c > best_cos[k]) {
-        for (int j = N - 1; j > k; --j) {
-          best[j] = best[j - 1];
-          best_cos[j] = best_cos[j - 1];
-        }
-        best[k] = bin;
-        best_cos[k] = c;
-        break;
-      }
-  }
-  double weight_sum = 0;
-  for (int k = 0; k < N; ++k) weight_sum += 1.0 / (1.002 - best_cos[k]);
-  for (int k = 0; k < N; ++k) {
-    const double w = 1.0 / (1.002 - best_cos[k]) / weight_sum;
-    const double add = w * direct_normal_lux / (RadianceWhiteEfficacy_lm_per_W * basis.solid_angle_sr(best[k]));
-    for (int c = 0; c < 3; ++c) m.at(best[k], column, c) += static_cast<float>(add);
+  const SpreadSunPatches spread = spread_sun_patches(basis, sun);
+  for (int k = 0; k < SpreadSunPatches::Count; ++k) {
+    const double add =
+        spread.weight[k] * direct_normal_lux / (RadianceWhiteEfficacy_lm_per_W * basis.solid_angle_sr(spread.bin[k]));
+    for (int c = 0; c < 3; ++c) m.at(spread.bin[k], column, c) += static_cast<float>(add);
   }
 }
 
@@ -288,6 +271,33 @@ std::vector<SunRecord> daytime_sun_positions(const weather::HourlyWeather& weath
     if (sun.direction.z > 0) suns.push_back(sun_record(t, sun.direction, 0.0));
   }
   return suns;
+}
+
+double sun_disc_solid_angle_sr() { return SunDiscSolidAngle_sr; }
+
+SpreadSunPatches spread_sun_patches(const PatchBasis& basis, const Vec3& sun) {
+  constexpr int N = SpreadSunPatches::Count;
+  SpreadSunPatches r;
+  std::array<double, N> best_cos{};
+  r.bin.fill(-1);
+  best_cos.fill(-2.0);
+  for (int bin = 1; bin < basis.bin_count(); ++bin) {
+    const double c = dot(basis.centre(bin), sun);
+    for (int k = 0; k < N; ++k)
+      if (c > best_cos[k]) {
+        for (int j = N - 1; j > k; --j) {
+          r.bin[j] = r.bin[j - 1];
+          best_cos[j] = best_cos[j - 1];
+        }
+        r.bin[k] = bin;
+        best_cos[k] = c;
+        break;
+      }
+  }
+  double weight_sum = 0;
+  for (int k = 0; k < N; ++k) weight_sum += 1.0 / (1.002 - best_cos[k]);
+  for (int k = 0; k < N; ++k) r.weight[k] = 1.0 / (1.002 - best_cos[k]) / weight_sum;
+  return r;
 }
 
 SunRecord sun_record(std::size_t step, const Vec3& direction, double direct_normal_illuminance_lux) {

@@ -11,6 +11,7 @@
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/input_file.h"
+#include "dayphoton/metrics/calendar.h"
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/result_tables.h"
@@ -43,6 +44,31 @@ const char* scale_name(QuantityScale s) {
     case QuantityScale::Illuminance: return "illuminance";
   }
   return "percent";
+}
+
+json windows_json(const OccupancySummary::Windows& windows) {
+  json a = json::array();
+  for (const auto& [start, end] : windows) a.push_back({start, end});
+  return a;
+}
+
+json occupancy_json(const OccupancySummary& o) {
+  json week = json::array();
+  for (const OccupancySummary::Windows& day : o.week) week.push_back(windows_json(day));
+  json holidays = json::array();
+  for (const OccupancySummary::Holiday& h : o.holidays)
+    holidays.push_back({{"from", {h.from_month, h.from_day}}, {"to", {h.to_month, h.to_day}}});
+  return {{"kind", o.kind},
+          {"start_h", o.start_h},
+          {"end_h", o.end_h},
+          {"description", o.description},
+          {"week", week},
+          {"holiday_hours", windows_json(o.holiday_hours)},
+          {"holidays", holidays},
+          {"january_1", o.january_1.empty() ? json(nullptr) : json(o.january_1)},
+          {"daylight_saving", o.daylight_saving},
+          {"hourly", o.hourly},
+          {"hourly_source", o.hourly_source}};
 }
 
 json grid_json(const GridResult& g) {
@@ -118,9 +144,7 @@ json grid_json(const GridResult& g) {
           {"sda_time_fraction", a->sda_time_fraction},
           {"ase_threshold_lux", a->ase_threshold_lux},
           {"ase_hours", a->ase_hours}}},
-        {"occupancy",
-         {{"kind", a->occupancy.kind}, {"start_h", a->occupancy.start_h}, {"end_h", a->occupancy.end_h},
-          {"description", a->occupancy.description}}},
+        {"occupancy", occupancy_json(a->occupancy)},
         {"mean",
          {{"da_percent", a->da_percent},
           {"cda_percent", a->cda_percent},
@@ -261,6 +285,55 @@ struct Reader {
     return out;
   }
 
+  OccupancySummary::Windows windows(const json& v, const std::string& key) const {
+    if (!v.is_array()) fail(key, "is not a list of [start_h, end_h] windows");
+    OccupancySummary::Windows w;
+    for (const json& e : v) {
+      if (!e.is_array() || e.size() != 2 || !e[0].is_number() || !e[1].is_number())
+        fail(key, "holds a window that is not [start_h, end_h]");
+      const double start = e[0].get<double>(), end = e[1].get<double>();
+      if (!(start >= 0 && start < end && end <= 24)) fail(key, "holds a window outside 0 <= start < end <= 24");
+      w.emplace_back(start, end);
+    }
+    return w;
+  }
+  std::pair<int, int> month_day(const json& v, const std::string& key) const {
+    if (!v.is_array() || v.size() != 2 || !v[0].is_number_integer() || !v[1].is_number_integer())
+      fail(key, "is not [month, day]");
+    const int month = v[0].get<int>(), day = v[1].get<int>();
+    if (month < 1 || month > 12 || day < 1 || day > 31) fail(key, "is not a date [month, day]");
+    return {month, day};
+  }
+  OccupancySummary occupancy(const json& oc, const std::string& ok) const {
+    OccupancySummary o;
+    o.kind = text(oc, ok, "kind");
+    if (o.kind != "daily" && o.kind != "weekly" && o.kind != "hourly") fail(ok + ".kind", "is not daily, weekly or hourly");
+    o.start_h = number(oc, ok, "start_h");
+    o.end_h = number(oc, ok, "end_h");
+    o.description = text(oc, ok, "description");
+    const json& week = array(oc, ok, "week");
+    if (!week.empty() && week.size() != 7) fail(ok + ".week", "has neither 0 nor 7 days");
+    for (std::size_t d = 0; d < week.size(); ++d) o.week[d] = windows(week[d], ok + ".week");
+    o.holiday_hours = windows(at(oc, ok, "holiday_hours"), ok + ".holiday_hours");
+    for (const json& h : array(oc, ok, "holidays")) {
+      const auto [from_month, from_day] = month_day(at(h, ok + ".holidays", "from"), ok + ".holidays.from");
+      const auto [to_month, to_day] = month_day(at(h, ok + ".holidays", "to"), ok + ".holidays.to");
+      o.holidays.push_back({from_month, from_day, to_month, to_day});
+    }
+    const json& j1 = at(oc, ok, "january_1");
+    if (!j1.is_null()) {
+      if (!j1.is_string() || !metrics::parse_weekday(j1.get<std::string>())) fail(ok + ".january_1", "is not a weekday or null");
+      o.january_1 = j1.get<std::string>();
+    }
+    o.daylight_saving = text(oc, ok, "daylight_saving");
+    if (!metrics::parse_daylight_saving(o.daylight_saving)) fail(ok + ".daylight_saving", "is not none, eu or us");
+    o.hourly = text(oc, ok, "hourly");
+    if (o.hourly.find_first_not_of("01") != std::string::npos) fail(ok + ".hourly", "holds a character other than 0 and 1");
+    if (o.kind == "hourly" && o.hourly.empty()) fail(ok + ".hourly", "is empty for an hourly schedule");
+    o.hourly_source = text(oc, ok, "hourly_source");
+    return o;
+  }
+
   GridResult grid(const json& j, const std::string& where) const {
     GridResult g;
     g.name = text(j, where, "name");
@@ -365,11 +438,7 @@ struct Reader {
       a.sda_time_fraction = number(st, stk, "sda_time_fraction");
       a.ase_threshold_lux = number(st, stk, "ase_threshold_lux");
       a.ase_hours = number(st, stk, "ase_hours");
-      const json& oc = at(an, ak, "occupancy");
-      a.occupancy.kind = text(oc, ak + ".occupancy", "kind");
-      a.occupancy.start_h = number(oc, ak + ".occupancy", "start_h");
-      a.occupancy.end_h = number(oc, ak + ".occupancy", "end_h");
-      a.occupancy.description = text(oc, ak + ".occupancy", "description");
+      a.occupancy = occupancy(at(an, ak, "occupancy"), ak + ".occupancy");
       const json& m = at(an, ak, "mean");
       const std::string mk = ak + ".mean";
       a.da_percent = number(m, mk, "da_percent");
@@ -502,7 +571,9 @@ bool DaylightFactorSummary::AccuracyReached::operator==(const AccuracyReached& o
          photons == o.photons && stop_reason == o.stop_reason;
 }
 bool OccupancySummary::operator==(const OccupancySummary& o) const {
-  return kind == o.kind && start_h == o.start_h && end_h == o.end_h && description == o.description;
+  return kind == o.kind && start_h == o.start_h && end_h == o.end_h && description == o.description &&
+         week == o.week && holiday_hours == o.holiday_hours && holidays == o.holidays && january_1 == o.january_1 &&
+         daylight_saving == o.daylight_saving && hourly == o.hourly && hourly_source == o.hourly_source;
 }
 bool En17037Level::operator==(const En17037Level& o) const {
   return level == o.level && target_lux == o.target_lux && minimum_target_lux == o.minimum_target_lux &&

@@ -295,6 +295,27 @@ void add_annual(GridResult& grid, const AnnualStudy& study, const AnnualStudySet
   }
   if (plan.kind != metrics::OccupancyPlan::Kind::Daily) a.occupancy.start_h = a.occupancy.end_h = 0;
   a.occupancy.description = plan.description();
+  // The definition (what recorded_annual_settings rebuilds the plan from).
+  auto windows = [](const metrics::DayHours& hours) {
+    OccupancySummary::Windows w;
+    for (const metrics::HourWindow& h : hours) w.emplace_back(h.start_h, h.end_h);
+    return w;
+  };
+  if (plan.kind == metrics::OccupancyPlan::Kind::Weekly) {
+    for (std::size_t d = 0; d < 7; ++d) a.occupancy.week[d] = windows(plan.week[d]);
+    a.occupancy.holiday_hours = windows(plan.holiday_hours);
+    for (const metrics::DateRange& h : plan.holidays)
+      a.occupancy.holidays.push_back({h.from_month, h.from_day, h.to_month, h.to_day});
+  }
+  if (plan.january_1) a.occupancy.january_1 = metrics::weekday_name(*plan.january_1);
+  a.occupancy.daylight_saving = plan.daylight_saving == metrics::DaylightSaving::Eu   ? "eu"
+                                : plan.daylight_saving == metrics::DaylightSaving::Us ? "us"
+                                                                                        : "none";
+  if (plan.kind == metrics::OccupancyPlan::Kind::Hourly) {
+    a.occupancy.hourly.reserve(plan.hourly.size());
+    for (bool occupied : plan.hourly) a.occupancy.hourly += occupied ? '1' : '0';
+    a.occupancy.hourly_source = plan.hourly_source;
+  }
   const metrics::SensorMetrics& mean = study.grid.mean;
   a.da_percent = mean.da_percent;
   a.cda_percent = mean.cda_percent;

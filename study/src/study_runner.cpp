@@ -29,6 +29,7 @@
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/direct_sun_file.h"
+#include "dayphoton/study/radiance_sun_matrix.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/artifact_codec.h"
@@ -973,6 +974,14 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
         exported.weather = project.weather.path;
         write_direct_sun_file(exported, join(folders[g], DirectSunFileName));
         ctx.outputs.record(join(folders[g], DirectSunFileName));
+        // The same sun on RADIANCE's patch basis, for gendaymtx -d (radiance_sun_matrix.h).
+        std::vector<sky::SunRecord> daytime = ss.suns;
+        daytime.insert(daytime.end(), sun[g].other_suns.begin(), sun[g].other_suns.end());
+        const std::string d_path = join(folders[g], radiance_sun_matrix_name(bins.multiplication_factor()));
+        log.line(prefix + write_radiance_sun_matrix(scene, materials, grid, scene_key(description), bins,
+                                                    sun[g].bin_coefficients, daytime, SunDirectSamples, sim.seed,
+                                                    ctx.store, d_path, matrix_format));
+        ctx.outputs.record(d_path);
       }
       if (!annual) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");

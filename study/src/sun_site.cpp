@@ -150,6 +150,11 @@ std::optional<SunSite> recorded_sun_site(const std::string& summary_text, const 
   p.longitude_deg = site["longitude_deg"].get<double>();
   p.time_zone_h = site["time_zone_h"].get<double>();
   p.elevation_m = site["elevation_m"].get<double>();
+  return recorded_sun_site(p, summary_path, weather);
+}
+
+SunSite recorded_sun_site(const project::Site& p, const std::string& summary_path, const weather::HourlyWeather& weather) {
+  if (p.from_weather) return header_sun_site(weather);
   if (!(std::abs(p.latitude_deg) <= 90 && std::abs(p.longitude_deg) <= 180 && std::abs(p.time_zone_h) <= 15 &&
         std::isfinite(p.elevation_m)))
     throw InputError(SourceLocation{summary_path, 0, 0}, "site: a latitude, longitude, time zone or elevation out of range");

@@ -3,10 +3,11 @@
 # (tests/cli/cases/exact_sun: two grids, one with its own schedule, and a variant): from the
 # exported coefficients_sky.mtx, coefficients_sun.mtx, sun_bins.csv and direct_sun.bin.gz,
 # metrics.csv must be byte-identical to the run's, grid_metrics.json's sDA, ASE and EN 17037
-# equal and its means within the 7 digits of the ascii coefficients, for one grid folder and for the whole results folder (every grid, the variant's
-# too). Then: --sun spread is the old sky-only result (no ASE, other numbers); another
+# equal and its means within the 7 digits of the ascii coefficients, for one grid folder
+# and for the whole results folder (every grid, the variant's too), without the project: the
+# metric settings, each grid's own schedule and the site come from the run's results.json. Command-line thresholds override the run's. Then: --sun spread is the old sky-only result (no ASE, other numbers); another
 # weather file of the same site (the Oakland irradiance shifted by a day) runs with every
-# sun at an exported position; a site moved by 0.05 deg (in summary.json) warns that the
+# sun at an exported position; a site moved by 0.05 deg (in results.json) warns that the
 # direct sun is interpolated; moved by 5 deg it is a located error; a damaged
 # direct_sun.bin.gz is a located error.
 set -u
@@ -23,15 +24,35 @@ for g in desks club variants/dark_glass/desks variants/dark_glass/club; do
   [ -s "$run/$g/direct_sun.bin.gz" ] || fail "run wrote no $g/direct_sun.bin.gz"
 done
 
-# One grid folder.
-"$bin" annual --coefficients "$run/desks" --project "$project" -o "$scratch/one" >"$scratch/one.out" 2>"$scratch/one.err" ||
-  fail "annual exited $?: $(cat "$scratch/one.out" "$scratch/one.err")"
-cmp -s "$run/desks/metrics.csv" "$scratch/one/metrics.csv" || fail "desks: metrics.csv of annual differs from run's"
-[ ! -s "$scratch/one.err" ] || fail "annual with the run's weather warns: $(cat "$scratch/one.err")"
+# One grid folder, no project: everything from the run's results.json.
+for g in desks club variants/dark_glass/club; do
+  "$bin" annual --coefficients "$run/$g" --weather projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw \
+    -o "$scratch/one/$g" >"$scratch/one.out" 2>"$scratch/one.err" ||
+    fail "annual $g without the project exited $?: $(cat "$scratch/one.out" "$scratch/one.err")"
+  cmp -s "$run/$g/metrics.csv" "$scratch/one/$g/metrics.csv" || fail "$g: metrics.csv of annual without the project differs from run's"
+  [ ! -s "$scratch/one.err" ] || fail "annual $g with the run's weather warns: $(cat "$scratch/one.err")"
+  grep -q "metric settings: the run's, from .*results.json$" "$scratch/one.out" || fail "$g: settings not the run's: $(cat "$scratch/one.out")"
+done
 grep -q "sun: exact .* suns at exported positions; ASE1000,250 " "$scratch/one.out" || fail "no exact-sun line: $(cat "$scratch/one.out")"
 
-# The results folder: every grid, into -o DIR/<its path below the results folder>.
-"$bin" annual --coefficients "$run" --project "$project" -o "$scratch/all" --quiet || fail "annual on the results folder exited $?"
+# Command-line thresholds override the run's: DA500, ASE at 800 lx.
+"$bin" annual --coefficients "$run/desks" --weather projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw \
+  --da-threshold 500 --ase-threshold 800 --ase-hours 100 -o "$scratch/override" >"$scratch/override.out" ||
+  fail "annual with overrides exited $?"
+grep -q "metric settings: the run's, from .*results.json, with the command line's overrides$" "$scratch/override.out" ||
+  fail "override line: $(cat "$scratch/override.out")"
+python3 - "$run/desks/grid_metrics.json" "$scratch/override/grid_metrics.json" <<'PY' || exit 1
+import json, sys
+run, o = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+assert o["thresholds"]["da_lux"] == 500 and "da500_percent" in o["mean"], o["thresholds"]
+assert o["thresholds"]["ase_threshold_lux"] == 800 and o["thresholds"]["ase_hours"] == 100, o["thresholds"]
+assert o["occupancy"] == run["occupancy"] and o["occupied_hours"] == run["occupied_hours"]
+assert o["ase_percent"] >= run["ase_percent"], (o["ase_percent"], run["ase_percent"])
+PY
+
+# The results folder without the project: every grid, into -o DIR/<its path below the results folder>.
+"$bin" annual --coefficients "$run" --weather projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw -o "$scratch/all" --quiet ||
+  fail "annual on the results folder exited $?"
 for g in desks club variants/dark_glass/desks variants/dark_glass/club; do
   cmp -s "$run/$g/metrics.csv" "$scratch/all/$g/metrics.csv" || fail "$g: metrics.csv of annual on the results folder differs"
 done
@@ -79,10 +100,10 @@ cmp -s "$run/desks/metrics.csv" "$scratch/shifted/metrics.csv" && fail "another 
 for dlat in 0.05 5; do
   mkdir -p "$scratch/moved$dlat"
   cp -r "$run/desks" "$scratch/moved$dlat/desks"
-  python3 - "$run/summary.json" "$scratch/moved$dlat/summary.json" "$dlat" <<'PY'
+  python3 - "$run/results.json" "$scratch/moved$dlat/results.json" "$dlat" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
-s["site"]["latitude_deg"] += float(sys.argv[3])
+s["site"]["sun_site"]["latitude_deg"] += float(sys.argv[3])
 json.dump(s, open(sys.argv[2], "w"))
 PY
 done

@@ -3,8 +3,8 @@
 # week with a lunch break, a free Wednesday afternoon, holidays and US daylight saving time;
 # sun spread into the sky patches, so the exported sky coefficients hold the whole result).
 # The run and annual must give the same occupied hours, the same mean DA500 and a
-# byte-identical metrics.csv; annual without the project's settings (the LM-83 default) and
-# with --occupancy-hours / --da-threshold overrides must differ as the settings say.
+# byte-identical metrics.csv, also without the project (the schedule recorded in results.json);
+# annual with --occupancy-hours / --da-threshold overrides must differ as the settings say.
 set -u
 cd "$(dirname "$0")/../.."
 bin=${DAYPHOTON:?set DAYPHOTON to the dayphoton executable}
@@ -30,6 +30,10 @@ assert run["occupancy"] == ann["occupancy"] and run["thresholds"] == ann["thresh
 assert ann["occupancy"]["january_1"]["weekday"] == "Sunday"  # the EPW's DATA PERIODS
 assert 0 < ann["occupied_hours"] < 3650
 PY
+# Without the project: the school's week, holidays and DST as the run recorded them in results.json.
+"$bin" annual --coefficients "$scratch/run/desks" --weather projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw \
+  -o "$scratch/recorded" --quiet || fail "annual without the project exited $?"
+cmp -s "$scratch/run/desks/metrics.csv" "$scratch/recorded/metrics.csv" || fail "metrics.csv of annual from results.json differs from run's"
 # The grid with its own schedule (every day, clock time): annual takes it from the folder's name.
 grep -q "^occupancy club: Monday-Sunday 08:00-18:00; local clock time with US daylight saving time; 3650 occupied hours of 8760$" \
   "$scratch/run/run.log" || fail "run.log: $(grep "occupancy club" "$scratch/run/run.log")"

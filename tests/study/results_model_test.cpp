@@ -94,7 +94,17 @@ ResultsModel full_model() {
   a.sda_time_fraction = 0.4;
   a.ase_threshold_lux = 999;
   a.ase_hours = 249;
-  a.occupancy = {"weekly", 0, 0, "weekdays 8-18"};
+  a.occupancy.kind = "weekly";
+  a.occupancy.start_h = a.occupancy.end_h = 0;
+  a.occupancy.description = "weekdays 8-18";
+  a.occupancy.week[0] = {{8, 12}, {13, 17.5}};
+  a.occupancy.week[4] = {{9, 12}};
+  a.occupancy.holiday_hours = {{10, 11}};
+  a.occupancy.holidays = {{12, 24, 1, 2}, {8, 1, 8, 15}};
+  a.occupancy.january_1 = "Sunday";
+  a.occupancy.daylight_saving = "eu";
+  a.occupancy.hourly = "0110";
+  a.occupancy.hourly_source = "schedule.csv";
   a.da_percent = 1.1;
   a.cda_percent = 2.2;
   a.da_max_percent = 3.3;
@@ -192,8 +202,20 @@ TEST(ResultsModel, BadFieldsAreErrorsNamingTheKey) {
             std::string::npos);
   const std::string version = error_of(std::regex_replace(text, std::regex("\"schema_version\": 2"), "\"schema_version\": 1"));
   EXPECT_NE(version.find("schema version 1"), std::string::npos) << version;
+  const std::string version3 = error_of(std::regex_replace(text, std::regex("\"schema_version\": 2"), "\"schema_version\": 3"));
+  EXPECT_NE(version3.find("schema version 3"), std::string::npos) << version3;
   EXPECT_NE(version.find("run the study again"), std::string::npos) << version;
   EXPECT_NE(error_of("[1, 2").find("not a JSON object"), std::string::npos);
+  // The occupancy's definition is checked as it is read.
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"daylight_saving\": \"eu\""), "\"daylight_saving\": \"uk\""))
+                .find("annual.occupancy.daylight_saving' is not none, eu or us"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"hourly\": \"0110\""), "\"hourly\": \"01x0\""))
+                .find("annual.occupancy.hourly' holds a character other than 0 and 1"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"january_1\": \"Sunday\""), "\"january_1\": \"Sun day\""))
+                .find("annual.occupancy.january_1' is not a weekday"),
+            std::string::npos);
   // A value file named with a folder part would lead out of the grid's folder.
   EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"file\": \"metrics.csv\""), "\"file\": \"../metrics.csv\""))
                 .find("not a plain file name"),

@@ -92,11 +92,31 @@ struct DaylightFactorSummary {
   bool operator==(const DaylightFactorSummary& o) const;
 };
 
-/// The occupancy the metrics use (docs/metrics.md "Occupancy schedules").
+/// The occupancy the metrics use (docs/metrics.md "Occupancy schedules"): its words and its
+/// whole definition, so that `dayphoton annual` rebuilds the same plan from results.json alone
+/// (study/recorded_metric_settings.h).
 struct OccupancySummary {
   std::string kind;           ///< "daily", "weekly", "hourly"
   double start_h = 8, end_h = 18;  ///< daily only
   std::string description;    ///< the plan's own words
+
+  /// [start_h, end_h) windows of local clock time.
+  using Windows = std::vector<std::pair<double, double>>;
+  struct Holiday {
+    int from_month = 1, from_day = 1, to_month = 1, to_day = 1;
+    bool operator==(const Holiday& o) const {
+      return from_month == o.from_month && from_day == o.from_day && to_month == o.to_month && to_day == o.to_day;
+    }
+  };
+  // Weekly only (empty otherwise).
+  std::array<Windows, 7> week;  ///< Monday .. Sunday; empty: closed
+  Windows holiday_hours;
+  std::vector<Holiday> holidays;
+  std::string january_1;        ///< "Monday" .. "Sunday" as the plan gives it; "": the weather file's
+  std::string daylight_saving = "none";  ///< "none", "eu", "us" (weekly and daily)
+  // Hourly only.
+  std::string hourly;           ///< one '0' or '1' per weather record
+  std::string hourly_source;    ///< the CSV file the run read (informational)
 
   bool operator==(const OccupancySummary& o) const;
 };

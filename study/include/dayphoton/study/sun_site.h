@@ -81,6 +81,11 @@ std::string below_horizon_note(const sky::BelowHorizonDirect& below, bool sun_bi
 std::optional<SunSite> recorded_sun_site(const std::string& summary_text, const std::string& summary_path,
                                          const weather::HourlyWeather& weather);
 
+/// The same from a typed record (the results model's `site.sun_site`, `sun_from_weather`):
+/// the header's site when `site.from_weather`, else the recorded position, checked as above
+/// (InputError naming `path`).
+SunSite recorded_sun_site(const project::Site& site, const std::string& path, const weather::HourlyWeather& weather);
+
 /// The recorded sun site, or the header's (solar_site_of) when there is none.
 SunSite recorded_or_header_sun_site(const std::string& summary_text, const std::string& summary_path,
                                     const weather::HourlyWeather& weather);
