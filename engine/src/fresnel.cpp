@@ -15,8 +15,12 @@ double refracted_cosine(double cos_incident_in, double relative_index) {
 }
 
 FresnelReflectance fresnel_dielectric(double cos_incident_in, double relative_index) {
+  return fresnel_dielectric(cos_incident_in, relative_index, refracted_cosine(cos_incident_in, relative_index));
+}
+
+FresnelReflectance fresnel_dielectric(double cos_incident_in, double relative_index, double cos_transmitted) {
   const double cos_i = std::clamp(cos_incident_in, 0.0, 1.0);
-  const double cos_t = refracted_cosine(cos_i, relative_index);
+  const double cos_t = cos_transmitted;
   if (cos_t < 0) return {1.0, 1.0};
   const double eta = relative_index;
   // Amplitude ratios (Born & Wolf eqs. 1.5 (21a), (21b) in cosine form); at cos_i = 0 both

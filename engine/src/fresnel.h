@@ -27,5 +27,9 @@ double refracted_cosine(double cos_incident_in, double relative_index);
 /// interface with relative index n_transmitted / n_incident. Total internal reflection gives
 /// s = p = 1.
 FresnelReflectance fresnel_dielectric(double cos_incident_in, double relative_index);
+/// The same with the refracted cosine already known: `cos_transmitted` must be
+/// refracted_cosine(cos_incident_in, relative_index) (one square root fewer on a path that
+/// needs both, e.g. the thin-pane series at every port passage; identical results).
+FresnelReflectance fresnel_dielectric(double cos_incident_in, double relative_index, double cos_transmitted);
 
 }  // namespace dayphoton::engine

@@ -359,9 +359,9 @@ SourceResult trace_source(const Scene& scene, const std::vector<Material>& mater
     // fraction of the entering flux is below 5e-5 (95 % confidence: 3 / 65536); stop.
     if (tally.entered >= NothingStoredEntries && tally.stored_global + tally.stored_caustic + tally.stored_direct == 0)
       break;
-    // Nothing entered at all: the ports do not see this source (its emission bound is a
-    // little above zero for bins just behind a port's plane, see port_emission.cpp) or it
-    // is blocked. After 2^16 attempts its flux is below 5e-5 of the bound (95 %
+    // Nothing entered at all: the ports do not see this source (a sun disc's emission bound
+    // is a little above zero just behind a port's plane; a sky bin's is exact, see
+    // port_emission.h) or it is blocked. After 2^16 attempts its flux is below 5e-5 of the bound (95 %
     // confidence: 3 / 65536) and is dropped.
     if (tally.entered == 0 && prepass >= 65536) break;
     prepass *= 2;

@@ -1,6 +1,7 @@
 // PortEmitter: see port_emission.h for the method and why it is exact.
 #include "dayphoton/engine/port_emission.h"
 
+#include "dayphoton/engine/patch_cosine_bound.h"
 #include "dayphoton/engine/scatterer_sides.h"
 
 #include <algorithm>
@@ -18,20 +19,23 @@ namespace {
 // neighbouring nodes is a true bound. The same holds in each cell of a source (below) with the
 // nodes on and inside the cell's border, since cell borders fall on grid lines.
 constexpr int BoundGrid = 48;
-/// Cells per axis of a large source (each its own bound; BoundGrid must be a multiple).
-/// 1: OFF. With 8 the office's attempts per entering photon fell from 3.0 to 1.45 and the
-/// forward pass's CPU time by 22 %, but the daylight factors of InteriorGlazing's eight
-/// replicate runs spread 1.6 times wider (standard error of the mean DF 0.0025 against
-/// 0.0015 % in the corridor, 0.0036 against 0.0021 % in the office), which the accepted
-/// density (the same per direction) does not explain; until that is understood, one cell,
-/// which is exactly the former single-bound emission.
-constexpr int MaxCells = 1;
+/// Cells per axis of a large source (each its own bound; BoundGrid must be a multiple). On the
+/// office 8 x 8 cells with the exact bounds of sky bins take the attempts per entering photon
+/// from 2.70 to 1.17 (docs/photon-tracing.md). An earlier note blamed cells for a wider
+/// spread of InteriorGlazing's eight replicate daylight factors; 16 and 32 replicates with
+/// other seeds show the same spread with and without cells (standard errors of the mean DF
+/// within 10 % of each other), so it was the eight seeds' luck, not the emission.
+constexpr int MaxCells = 8;
 /// Sources smaller than this get one cell: their cosine varies too little to matter.
 constexpr double CellMinimumSolidAngle_sr = 1e-3;
 /// Largest sites x cells per source (the per-source tables' length).
 constexpr std::size_t CellEntryBudget = 4096;
 static_assert(BoundGrid % MaxCells == 0, "cells must split the bound grid evenly");
 
+/// Added to the exact per-cell cosine bound of a sky bin to cover rounding (of the bound and
+/// of the sampled direction, a few ulps each); a cell whose largest cosine is at most this is
+/// given no attempts: it could send at most 1e-9 A Omega, a billionth of a frontal cell.
+constexpr double CosineRounding = 1e-9;
 /// Largest double below 1 (a cell coordinate must stay inside the source's map).
 constexpr double OneMinusEpsilon = 0x1.fffffffffffffp-1;
 
@@ -89,6 +93,26 @@ std::vector<double> cell_cos_bounds(const SourceGrid& grid, const Vec3& n, int c
   return bounds;
 }
 
+/// Per-cell bounds c_pkc for inward normal n of a sky bin of the basis: the exact largest
+/// -d . n over each cell (patch_cosine_bound.h; a cell of a bin is a rectangle in (sin
+/// altitude, azimuth) because the bin's map is linear in both), plus CosineRounding; 0 for
+/// a cell whose largest cosine is at most CosineRounding (behind the port's plane, or
+/// touching it along an edge: a bin whose edge lies in the plane of a window).
+std::vector<double> patch_cell_cos_bounds(const sky::PatchBasis& basis, int bin, const Vec3& n, int cells) {
+  const sky::PatchBounds b = basis.bounds(bin);
+  const double z0 = std::sin(b.altitude_min_rad), z1 = std::sin(b.altitude_max_rad);
+  const double dz = (z1 - z0) / cells, da = (b.azimuth_max_rad - b.azimuth_min_rad) / cells;
+  std::vector<double> bounds(static_cast<std::size_t>(cells * cells), 0.0);
+  for (int ci = 0; ci < cells; ++ci)
+    for (int cj = 0; cj < cells; ++cj) {
+      const double top = ci + 1 == cells ? z1 : z0 + (ci + 1) * dz;
+      const double right = cj + 1 == cells ? b.azimuth_max_rad : b.azimuth_min_rad + (cj + 1) * da;
+      const double c = max_cosine_over_patch(n * -1.0, z0 + ci * dz, top, b.azimuth_min_rad + cj * da, right);
+      bounds[static_cast<std::size_t>(ci * cells + cj)] = c > CosineRounding ? std::min(1.0, c + CosineRounding) : 0.0;
+    }
+  return bounds;
+}
+
 /// Cells per axis of source `p` (port_emission.h, "Cells"): 1 for a small source, else as
 /// many as the entry budget allows for `sites` sites, at most MaxCells.
 int cells_for(const SourceSet& sources, std::size_t p, std::size_t sites) {
@@ -124,7 +148,9 @@ PortEmitter::PortEmitter(const Scene& scene, const SourceSet& sources)
   m_guide.assign(sources.size(), {});
   for (std::size_t p = 0; p < sources.size(); ++p) {
     const DistantSource& src = sources[p];
-    const SourceGrid grid = source_grid(sources, p);
+    // Sky bins: the exact bound per cell; sun discs: the bound from the direction grid.
+    const bool patch = src.kind == SourceKind::SkyBin && sources.has_basis();
+    const SourceGrid grid = patch ? SourceGrid{} : source_grid(sources, p);
     const int cells = cells_for(sources, p, m_sites.size());
     const std::size_t per_site = static_cast<std::size_t>(cells * cells);
     m_cells[p] = cells;
@@ -136,7 +162,8 @@ PortEmitter::PortEmitter(const Scene& scene, const SourceSet& sources)
     for (std::size_t k = 0; k < m_sites.size(); ++k) {
       const Vec3& n = m_sites[k].inward;
       const auto [it, fresh] = by_normal.try_emplace({n.x, n.y, n.z});
-      if (fresh) it->second = cell_cos_bounds(grid, n, cells);
+      if (fresh)
+        it->second = patch ? patch_cell_cos_bounds(sources.basis(), src.bin, n, cells) : cell_cos_bounds(grid, n, cells);
       // Each cell covers Omega_p / cells^2: the source maps (u1, u2) area-preservingly.
       const double cell_flux = (*m_sites[k].set)[m_sites[k].index].area_m2 * src.solid_angle_sr / double(per_site);
       for (std::size_t c = 0; c < per_site; ++c) {

@@ -27,10 +27,10 @@ ThinGlassResponse pane_series(double r, double d) {
 ThinGlassResponse thin_glass_response(double cos_incident, double refractive_index,
                                       double transmissivity) {
   const double cos_i = std::fabs(cos_incident);
-  const FresnelReflectance r = fresnel_dielectric(cos_i, refractive_index);
   // Light entering a denser pane always refracts (no total internal reflection inside a
   // plane-parallel pane), so cos_t >= sqrt(1 - 1/n^2) > 0 for n > 1.
   const double cos_t = refracted_cosine(cos_i, refractive_index);
+  const FresnelReflectance r = fresnel_dielectric(cos_i, refractive_index, cos_t);
   const double d = transmissivity > 0 ? std::pow(transmissivity, 1.0 / cos_t) : 0.0;
   const ThinGlassResponse s = pane_series(r.s, d);
   const ThinGlassResponse p = pane_series(r.p, d);

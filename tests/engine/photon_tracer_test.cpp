@@ -224,6 +224,27 @@ TEST(PortEmission, VerticalWindowReceivesHalfFromSkyHalfFromGround) {
   EXPECT_NEAR(emitter.port_flux(0) / (Pi * area / 2), 1.0, 1e-4);
 }
 
+TEST(PortEmission, BinsBehindThePortCostNoAttempts) {
+  // The sky bins of the northern half and those whose edge lies in the plane of the south
+  // window send no light through it: their emission bound is exactly zero (exact per-cell
+  // bounds, port_emission.h), so the tracer spends no attempts on them; every other bin's
+  // bound is at least its flux.
+  const Scene scene = Scene::build(window_room(MaterialType::Opening));
+  const SourceSet sources = SourceSet::sky_bins(sky::PatchBasis::tregenza());
+  const PortEmitter emitter(scene, sources);
+  int dark = 0;
+  for (std::size_t p = 0; p < sources.size(); ++p) {
+    const double flux = emitter.port_flux(p, 32);
+    if (flux == 0) {
+      EXPECT_EQ(emitter.bound_flux(p), 0.0) << "bin " << p;
+      ++dark;
+    } else {
+      EXPECT_GE(emitter.bound_flux(p), flux) << "bin " << p;
+    }
+  }
+  EXPECT_GE(dark, 60);  // 145 sky bins: more than the northern half of each row faces away
+}
+
 TEST(PortEmission, AcceptedAttemptsCarryThePortFlux) {
   // Rejection emission is exact: accepted / attempts * bound = port flux. Binomial standard
   // error sqrt(f (1 - f) / n) * bound; 4 sigma.

@@ -327,10 +327,14 @@ double grid_mean(const std::vector<double>& v) {
 }
 
 TEST(InteriorGlazing, CorridorDaylightFactorEqualsOneRoomWithAGlassPartition) {
-  constexpr int Replicates = 8;
-  // Two comparisons (office and corridor mean DF), each a two-sample t on R = 8 runs per
-  // model (14 degrees of freedom), two-sided 1 - (1 - 1e-3)^(1/2) = 5.0e-4: t = 4.50.
-  constexpr double StudentT = 4.50;
+  // Twelve runs per model: with eight, the power check below sat at its edge (the run-to-run
+  // standard deviation of the corridor's mean DF, 0.0057 % measured over 32 seeds, gives
+  // 4.50 x se = 0.0127 % against the 5 % bound of 0.0130 %), so it passed or failed with
+  // the luck of the eight seeds. Twelve give 0.0095 % at the typical spread.
+  constexpr int Replicates = 12;
+  // Two comparisons (office and corridor mean DF), each a two-sample t on R = 12 runs per
+  // model (22 degrees of freedom), two-sided 1 - (1 - 1e-3)^(1/2) = 5.0e-4: t = 4.08.
+  constexpr double StudentT = 4.08;
   std::vector<double> office[2], corridor[2];
   for (int model = 0; model < 2; ++model)
     for (int r = 0; r < Replicates; ++r) {
