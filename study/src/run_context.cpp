@@ -15,6 +15,13 @@ engine::GridPhotons grid_photons_for(std::size_t g, const CaseLayout& layout, co
                                                     : engine::GridPhotons::for_surfaces(photons.surface, sources);
 }
 
+AnnualOutputs annual_outputs_of(const project::Project& project) {
+  AnnualOutputs which;
+  which.illuminance = project.outputs.annual_illuminance;
+  which.metrics = project.outputs.metrics;
+  return which;
+}
+
 std::string join_path(const std::string& dir, const std::string& name) {
   return (std::filesystem::path(dir) / name).string();
 }

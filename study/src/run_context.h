@@ -89,6 +89,9 @@ struct CaseScene {
 engine::GridPhotons grid_photons_for(std::size_t g, const CaseLayout& layout, const engine::TracedPhotons& photons,
                                      std::size_t sources, project::PointEstimate estimate);
 
+/// Which annual files the project asks for (outputs.annual_illuminance, outputs.metrics).
+AnnualOutputs annual_outputs_of(const project::Project& project);
+
 /// `dir`/`name`.
 std::string join_path(const std::string& dir, const std::string& name);
 

@@ -6,6 +6,8 @@
 #include <optional>
 
 #include "dayphoton/project/north_rotation.h"
+#include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/sky/sky_model.h"
 #include "dayphoton/study/annual_sun.h"
 
 namespace dayphoton::study {
@@ -101,7 +103,15 @@ SimulationPlan SimulationPlan::of(const project::Project& project) {
       std::max(1LL, std::llround(double(sim.photons_per_bin) * SunBinPhotonFraction)));
   p.sun_estimating = p.sky_estimating;
   p.sun_estimating.density.bandwidth = sun_bin_bandwidth(p.sky_estimating.density.bandwidth);
+  p.ground_reflectance = sim.ground_reflectance;
   return p;
+}
+
+RadianceMatrix SimulationPlan::daylight_factor_sky() const {
+  const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(overcast_horizontal_lux));
+  const double rho_g = ground_reflectance;
+  return sky::sky_vector(*overcast, basis,
+                         sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, overcast_horizontal_lux, 0, {0, 0, -1}));
 }
 
 engine::TracingOptions SimulationPlan::tracing_for(const engine::TracingOptions& base, const CaseLayout& layout) const {

@@ -99,4 +99,48 @@ void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, con
   }
 }
 
+AccuracyOutcome accuracy_sky_coefficients(const project::Project& project, const CaseScene& cs,
+                                          const engine::SourceSet& sources, const engine::TracingOptions& tracing,
+                                          const std::vector<std::string>& photon_keys, const std::string& prefix,
+                                          RunContext& ctx,
+                                          std::vector<std::optional<engine::DaylightCoefficients>>& coefficients) {
+  const project::Simulation& sim = project.simulation;
+  const std::vector<SensorGrid>& grids = cs.description.grids;
+  const RadianceMatrix overcast_vector = ctx.plan.daylight_factor_sky();
+  AccuracyCase c;
+  c.scene = &cs.scene;
+  c.materials = &cs.materials;
+  c.sources = &sources;
+  c.planes = &cs.layout.planes;
+  c.plane_of_grid = &cs.layout.plane_of_grid;
+  c.grids = &grids;
+  c.gather = ctx.plan.point_estimate == project::PointEstimate::Gather;
+  c.tracing = tracing;
+  c.estimating = ctx.plan.sky_estimating;
+  c.overcast_vector = &overcast_vector;
+  c.horizontal_illuminance_lux = ctx.plan.overcast_horizontal_lux;
+  AccuracyGoal goal;
+  goal.target_percent = sim.accuracy->target_df_relative_stderr_percent;
+  goal.max_photons = sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons;
+  goal.max_seconds = sim.accuracy->max_seconds;
+  ctx.report.sources += sources.size();
+  ctx.progress.start(prefix + "photons (accuracy rounds)", 1, "runs");
+  CaseAccuracy r = accuracy_coefficients(c, goal, ctx.executor, photon_keys,
+                                         [&](const std::string& line) { ctx.log.line(prefix + line); });
+  ctx.progress.advance(1);
+  ctx.progress.end();
+  if (r.cached) {
+    ctx.report.sources_cached += sources.size();
+    ctx.report.grids_cached += grids.size();
+  } else {
+    ctx.report.sources_traced += sources.size();
+    ctx.report.grids_estimated += grids.size();
+  }
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    coefficients[g] = std::move(r.coefficients[g]);
+    ctx.log.line(prefix + "accuracy " + grids[g].name + ": " + accuracy_sentence(r.outcome, g));
+  }
+  return r.outcome;
+}
+
 }  // namespace dayphoton::study

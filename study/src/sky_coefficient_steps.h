@@ -1,7 +1,7 @@
 // The sky side of a case as plan steps: one StepKind::SourcePhotons step per sky source
 // (handed to the executor as one batch: a killed run loses at most the sources in flight) and
 // one StepKind::SkyCoefficients step per grid. The photons are traced only when some grid's
-// coefficients are not cached.
+// coefficients are not cached. With an accuracy target the rounds replace both (one step).
 #pragma once
 
 #include <optional>
@@ -10,6 +10,8 @@
 
 #include "dayphoton/engine/daylight_coefficients.h"
 #include "dayphoton/engine/distant_source.h"
+#include "dayphoton/project/project.h"
+#include "dayphoton/study/accuracy_rounds.h"
 #include "run_context.h"
 
 namespace dayphoton::study {
@@ -24,5 +26,13 @@ std::vector<std::string> sky_photon_keys(const CaseScene& cs, const sky::PatchBa
 void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, const engine::TracingOptions& tracing,
                       const std::vector<std::string>& photon_keys, const std::string& prefix, RunContext& ctx,
                       std::vector<std::optional<engine::DaylightCoefficients>>& coefficients);
+
+/// The same by the accuracy rounds (accuracy_rounds.h), one step: rounds of photons until the
+/// daylight factors reach the project's accuracy target. Returns the rounds' outcome.
+AccuracyOutcome accuracy_sky_coefficients(const project::Project& project, const CaseScene& cs,
+                                          const engine::SourceSet& sources, const engine::TracingOptions& tracing,
+                                          const std::vector<std::string>& photon_keys, const std::string& prefix,
+                                          RunContext& ctx,
+                                          std::vector<std::optional<engine::DaylightCoefficients>>& coefficients);
 
 }  // namespace dayphoton::study

@@ -57,6 +57,13 @@ class LocalExecutor final : public StepExecutor {
 
   std::vector<char> run_batch(const std::vector<Step>& steps, const StepDone& done) override {
     std::vector<char> computed(steps.size(), 0);
+    if (steps.size() == 1) {
+      // A step alone runs in the caller, so its own parallel loops stay at top level
+      // (architecture.md, "Conventions": nested loops and exceptions).
+      computed[0] = run_here(steps[0]) ? 1 : 0;
+      if (done) done(0, computed[0] != 0);
+      return computed;
+    }
     tbb::parallel_for(std::size_t(0), steps.size(), [&](std::size_t i) {
       computed[i] = run_here(steps[i]) ? 1 : 0;
       if (done) done(i, computed[i] != 0);

@@ -2,52 +2,38 @@
 #include "dayphoton/study/study_runner.h"
 
 #include <algorithm>
-#include <cmath>
-#include <filesystem>
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <sstream>
+#include <filesystem>
 
 #include <nlohmann/json.hpp>
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/radiance_matrix.h"
-#include "dayphoton/core/units.h"
 #include "dayphoton/engine/daylight_coefficients.h"
-#include "dayphoton/engine/photon_tracer.h"
-#include "dayphoton/engine/port_emission.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sun_bins.h"
-#include "dayphoton/project/north_rotation.h"
-#include "dayphoton/sky/sky_matrix.h"
-#include "dayphoton/sky/sky_model.h"
+#include "dayphoton/metrics/annual_metrics.h"
 #include "dayphoton/study/accuracy_rounds.h"
-#include "dayphoton/study/annual_illuminance.h"
-#include "dayphoton/study/annual_sun.h"
-#include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/annual_study.h"
-#include "dayphoton/study/project_metric_settings.h"
-#include "dayphoton/study/artifact_codec.h"
-#include "dayphoton/study/artifact_store.h"
+#include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/cache_folder.h"
 #include "dayphoton/study/cache_keys.h"
-#include "dayphoton/study/placement_check.h"
-#include "dayphoton/study/point_in_time.h"
 #include "dayphoton/study/daylight_factor.h"
-#include "dayphoton/study/operated_shading.h"
+#include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/output_lock.h"
 #include "dayphoton/study/output_manifest.h"
+#include "dayphoton/study/placement_check.h"
+#include "dayphoton/study/point_in_time.h"
+#include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/results_model_builder.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/study/verdict_uncertainty.h"
 #include "dayphoton/weather/hourly_weather.h"
-#include "dayphoton/weather/site_clock.h"
-#include "dayphoton/metrics/annual_metrics.h"
 #include "json_text.h"
+#include "operated_case.h"
+#include "points_in_time_case.h"
 #include "run_context.h"
 #include "sky_coefficient_steps.h"
 #include "sky_steps.h"
@@ -104,132 +90,6 @@ nlohmann::json site_json(const project::Site& project_site, const SunSite* sun_s
   return j;
 }
 
-AnnualOutputs annual_outputs_of(const project::Project& project) {
-  AnnualOutputs which;
-  which.illuminance = project.outputs.annual_illuminance;
-  which.metrics = project.outputs.metrics;
-  return which;
-}
-
-/// The point-in-time cases of one case (point_in_time.h) at every grid: point_in_time.csv per
-/// grid and each grid's summary.json `point_in_time` entries (`grids_json[g]`).
-void run_points_in_time(const project::Project& project, const std::string& prefix, const CaseScene& cs,
-                        const std::vector<RadianceMatrix>& sky_coefficients,
-                        const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx) {
-  const project::Simulation& sim = project.simulation;
-  const std::vector<project::PointInTimeSpec>& cases = project.points_in_time;
-  const bool weather_cases = std::any_of(cases.begin(), cases.end(), [](const project::PointInTimeSpec& c) {
-    return c.sky == project::PointSky::Weather;
-  });
-  const SceneDescription& description = cs.description;
-  const sky::PatchBasis& basis = ctx.plan.basis;
-  const SkyAndSuns* annual = weather_cases ? &sky_and_suns(project, ctx) : nullptr;
-  const project::Site& ps = project.site;
-  const sky::SolarSite site = ctx.sun_site ? ctx.sun_site->solar
-                                           : sky::SolarSite{ps.latitude_deg, ps.longitude_deg, ps.time_zone_h,
-                                                            ps.elevation_m};
-  const SkyAndSuns skies = point_in_time_skies(cases, site, basis, sim.ground_reflectance, annual);
-  for (const std::string& line : describe_points_in_time(cases, skies)) ctx.log.line(prefix + "point in time " + line);
-  std::vector<GridSun> sun;
-  std::optional<engine::SunBins> bins;
-  if (!skies.suns.empty()) {
-    std::vector<Vec3> directions;
-    for (const sky::SunRecord& s : skies.suns) directions.push_back(s.direction);
-    bins = engine::SunBins::for_suns(directions, sim.sun_mf);
-    sun = run_sun_bins(project, prefix + "point in time ", cs, skies, *bins, ctx);
-  }
-  std::vector<std::string> names;
-  for (const project::PointInTimeSpec& c : cases) names.push_back(c.name);
-  for (std::size_t g = 0; g < description.grids.size(); ++g) {
-    const SensorGrid& grid = description.grids[g];
-    metrics::IlluminanceTable table = annual_illuminance(sky_coefficients[g], skies.sky.matrix, skies.sky.steps);
-    if (bins) {
-      const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, skies.suns, skies.sky.steps);
-      const metrics::IlluminanceTable indirect =
-          indirect_sun_table(sun[g].bin_coefficients, *bins, skies.suns, skies.sky.steps);
-      for (std::size_t k = 0; k < table.step_count(); ++k)
-        for (std::size_t i = 0; i < table.sensor_count(); ++i)
-          table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + double(direct.lux(k, i)) +
-                                               double(indirect.lux(k, i)));
-    }
-    const std::string path = join_path(folders[g], "point_in_time.csv");
-    write_point_in_time_csv(grid.points, names, table, path);
-    ctx.outputs.record(path);
-    nlohmann::json entries = nlohmann::json::array();
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-      std::vector<double> values(table.sensor_count());
-      for (std::size_t i = 0; i < values.size(); ++i) values[i] = table.lux(k, i);
-      const GridStatistics st = grid_statistics(values, {});
-      add_point_in_time(ctx.results->grids[g], cases[k].name, project::point_sky_name(cases[k].sky), st);
-      entries.push_back({{"name", cases[k].name}, {"sky", project::point_sky_name(cases[k].sky)},
-                         {"illuminance_lux", {{"mean", st.mean}, {"median", st.median}, {"min", st.min},
-                                              {"max", st.max}, {"uniformity", st.uniformity}}}});
-    }
-    grids_json[g]["point_in_time"] = entries;
-    ctx.log.line(prefix + "point in time " + grid.name + ": " + std::to_string(cases.size()) + " case(s) at " +
-                 std::to_string(grid.points.size()) + " sensors");
-  }
-}
-
-/// What the operated result takes from one case (sun: bins), per grid in the case's order.
-struct CaseTables {
-  struct Grid {
-    std::string name;
-    std::vector<SensorPoint> sensors;
-    metrics::IlluminanceTable illuminance;  ///< the annual illuminance
-    metrics::IlluminanceTable direct_sun;   ///< direct-sun-only, zero-bounce (ASE's table)
-  };
-  std::vector<Grid> grids;
-};
-
-/// The sky coefficients of every grid by the accuracy rounds (accuracy_rounds.h) into
-/// `coefficients`; the rounds' outcome. Replaces the count-controlled photons and estimates.
-AccuracyOutcome accuracy_case(const project::Project& project, const std::string& prefix, const engine::Scene& scene,
-                              const std::vector<engine::Material>& materials, const engine::SourceSet& sources,
-                              const std::vector<engine::ReceiverPlane>& planes, const std::vector<int>& plane_of_grid,
-                              const std::vector<SensorGrid>& grids, const engine::TracingOptions& tracing,
-                              const engine::CoefficientOptions& estimating, const std::vector<std::string>& photon_keys,
-                              std::vector<std::optional<engine::DaylightCoefficients>>& coefficients, RunContext& ctx) {
-  const project::Simulation& sim = project.simulation;
-  const double rho_g = sim.ground_reflectance;
-  const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(OvercastHorizontalLux));
-  const RadianceMatrix overcast_vector = sky::sky_vector(
-      *overcast, ctx.plan.basis, sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, OvercastHorizontalLux, 0, {0, 0, -1}));
-  AccuracyCase c;
-  c.scene = &scene;
-  c.materials = &materials;
-  c.sources = &sources;
-  c.planes = &planes;
-  c.plane_of_grid = &plane_of_grid;
-  c.grids = &grids;
-  c.gather = sim.point_estimate == project::PointEstimate::Gather;
-  c.tracing = tracing;
-  c.estimating = estimating;
-  c.overcast_vector = &overcast_vector;
-  c.horizontal_illuminance_lux = OvercastHorizontalLux;
-  AccuracyGoal goal;
-  goal.target_percent = sim.accuracy->target_df_relative_stderr_percent;
-  goal.max_photons = sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons;
-  goal.max_seconds = sim.accuracy->max_seconds;
-  ctx.progress.start(prefix + "photons (accuracy rounds)", 1, "runs");
-  CaseAccuracy r = accuracy_coefficients(c, goal, ctx.store, ctx.settings.force, photon_keys,
-                                         [&](const std::string& line) { ctx.log.line(prefix + line); });
-  ctx.progress.advance(1);
-  ctx.progress.end();
-  if (r.cached) {
-    ctx.report.sources_cached += sources.size();
-    ctx.report.grids_cached += grids.size();
-  } else {
-    ctx.report.sources_traced += sources.size();
-    ctx.report.grids_estimated += grids.size();
-  }
-  for (std::size_t g = 0; g < grids.size(); ++g) {
-    coefficients[g] = std::move(r.coefficients[g]);
-    ctx.log.line(prefix + "accuracy " + grids[g].name + ": " + accuracy_sentence(r.outcome, g));
-  }
-  return r.outcome;
-}
-
 /// One case: photons, coefficients, daylight factor, annual results, into `dir`/<grid>/.
 /// Returns the grids' part of summary.json. `label` prefixes log lines of variants. `keep`
 /// (optional) receives the annual tables of every grid for the operated result.
@@ -276,19 +136,13 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   std::vector<std::optional<engine::DaylightCoefficients>> coefficients(description.grids.size());
   std::optional<AccuracyOutcome> accuracy;
   if (sim.accuracy) {
-    report.sources += sources.size();
-    accuracy = accuracy_case(project, prefix, scene, materials, sources, layout.planes, layout.plane_of_grid,
-                             description.grids, tracing, plan.sky_estimating, photon_keys, coefficients, ctx);
+    accuracy = accuracy_sky_coefficients(project, cs, sources, tracing, photon_keys, prefix, ctx, coefficients);
   } else {
     sky_coefficients(cs, sources, tracing, photon_keys, prefix, ctx, coefficients);
   }
 
   // 4. Daylight factor and coefficient export per grid.
-  const auto overcast =
-      sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(OvercastHorizontalLux));
-  const double rho_g = sim.ground_reflectance;
-  const RadianceMatrix overcast_vector = sky::sky_vector(
-      *overcast, basis, sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, OvercastHorizontalLux, 0, {0, 0, -1}));
+  const RadianceMatrix overcast_vector = plan.daylight_factor_sky();
   const MatrixFormat matrix_format = parse_matrix_format(project.outputs.matrix_format);
   nlohmann::json grids_json = nlohmann::json::array();
   std::vector<RadianceMatrix> coefficient_matrices;
@@ -315,13 +169,13 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       ctx.outputs.record(join_path(folder, "coefficients_sky.mtx"));
     }
     if (project.outputs.daylight_factor) {
-      const std::vector<double> df = daylight_factor_percent(c, overcast_vector, OvercastHorizontalLux);
+      const std::vector<double> df = daylight_factor_percent(c, overcast_vector, plan.overcast_horizontal_lux);
       // The Monte Carlo standard error beside each value (engine/estimate_variance.h).
       const engine::DaylightCoefficients& dc = *coefficients[g];
       std::vector<double> variance(dc.sensors * dc.sources);
       for (std::size_t i = 0; i < variance.size(); ++i) variance[i] = dc.direct_variance[i] + dc.photon_variance[i];
       const std::vector<double> df_stderr =
-          daylight_factor_stderr_percent(variance, dc.sensors, overcast_vector, OvercastHorizontalLux);
+          daylight_factor_stderr_percent(variance, dc.sensors, overcast_vector, plan.overcast_horizontal_lux);
       write_daylight_factor_csv(grid.points, df, join_path(folder, "daylight_factor.csv"), df_stderr);
       ctx.outputs.record(join_path(folder, "daylight_factor.csv"));
       const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent);
@@ -433,55 +287,6 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   if (!project.points_in_time.empty())
     run_points_in_time(project, prefix, cs, coefficient_matrices, folders, grids_json, ctx);
   return grids_json;
-}
-
-/// The operated result (operated_shading.h) of every grid into `dir`/<grid>/: the files of an
-/// annual case (sensors, illuminance, metrics) plus shading_schedule.csv and operation.json.
-/// Returns summary.json's `operated` object.
-nlohmann::json run_operated(const project::Project& project, const project::OperationSpec& op,
-                            const CaseTables& open, const CaseTables& shaded, const std::string& dir,
-                            RunContext& ctx) {
-  const SkyAndSuns& ss = *ctx.sky_and_suns;  // both cases' annual step built it
-  const AnnualOutputs which = annual_outputs_of(project);
-  ShadingRule rule;
-  rule.direct_sun_threshold_lux = op.direct_sun_threshold_lux;
-  rule.sunlit_limit_percent = op.sunlit_limit_percent;
-  const std::string open_name = op.open.value, shaded_name = op.shaded.value;
-  nlohmann::json grids = nlohmann::json::array();
-  for (std::size_t g = 0; g < open.grids.size(); ++g) {
-    const CaseTables::Grid& o = open.grids[g];
-    const CaseTables::Grid& c = shaded.grids.at(g);  // the same grids: variants share the sensors
-    const AnnualStudySettings settings = annual_settings_of(project, ctx.weather, o.name);
-    const std::string folder = join_path(dir, o.name);
-    ctx.progress.start("operated " + o.name, o.illuminance.step_count(), "hours");
-    const OperatedStudy operated = compute_operated_study(
-        o.illuminance, c.illuminance, o.direct_sun, rule, settings, ss.sky.daylight_hours_quantity,
-        ss.sky.daylight_hours_source,
-        "operated shading: per hour '" + shaded_name + "' when more than " + format_number(rule.sunlit_limit_percent) +
-            " % of the sensors see direct sun in '" + open_name + "', else '" + open_name + "'; " + ss.sky.description);
-    std::filesystem::create_directories(folder);
-    write_sensors_csv(o.sensors, join_path(folder, "sensors.csv"));
-    ctx.outputs.record(join_path(folder, "sensors.csv"));
-    ctx.outputs.record(write_annual_outputs(operated.study, o.sensors, settings, folder, which));
-    write_shading_schedule_csv(operated, join_path(folder, "shading_schedule.csv"));
-    const std::string operation = operation_json(operated, rule, open_name, shaded_name);
-    write_file_atomically(join_path(folder, "operation.json"), operation + "\n");
-    ctx.outputs.record({join_path(folder, "shading_schedule.csv"), join_path(folder, "operation.json")});
-    ctx.progress.advance(o.illuminance.step_count());
-    ctx.progress.end();
-    ctx.log.line("operated " + o.name + ": '" + shaded_name + "' in " + std::to_string(operated.schedule.shaded_steps()) +
-                 " of " + std::to_string(operated.schedule.shaded.size()) + " hours (" +
-                 std::to_string(operated.shaded_occupied_hours) + " of " +
-                 std::to_string(operated.study.occupied_hours) + " occupied), '" + open_name + "' otherwise");
-    ctx.report.grids.push_back({"operated/" + o.name, o.sensors.size(), folder});
-    add_operated_grid(*ctx.results, o.name, relative_folder(ctx.report.output_dir, folder), operated.study, settings, which);
-    grids.push_back({{"name", o.name},
-                     {"sensors", o.sensors.size()},
-                     {"folder", folder},
-                     {"annual", nlohmann::json::parse(grid_metrics_json(operated.study, settings))},
-                     {"operation", nlohmann::json::parse(operation)}});
-  }
-  return {{"open", open_name}, {"shaded", shaded_name}, {"folder", dir}, {"grids", grids}};
 }
 
 }  // namespace

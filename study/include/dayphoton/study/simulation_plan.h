@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dayphoton/core/radiance_matrix.h"
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/engine/daylight_coefficients.h"
 #include "dayphoton/engine/photon_tracer.h"
@@ -52,8 +53,13 @@ struct SimulationPlan {
   double sun_bin_minimum_bound_fraction = SunBinMinimumBoundFraction;
   double overcast_horizontal_lux = OvercastHorizontalLux;
   double ground_photon_factor = GroundPhotonFactor;
+  double ground_reflectance = 0.2;  ///< simulation.ground_reflectance
 
   static SimulationPlan of(const project::Project& project);
+
+  /// The daylight-factor sky as a vector over the basis: CIE overcast of
+  /// overcast_horizontal_lux, the ground of ground_reflectance (1 x bins x RGB).
+  RadianceMatrix daylight_factor_sky() const;
 
   /// `base` (sky_tracing or sun_tracing) for a case: surface photons kept when some grid is
   /// not planar, and with them the direct hits for a final gather.
