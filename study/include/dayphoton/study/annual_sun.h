@@ -62,7 +62,7 @@ void relabel_photons(engine::TracedPhotons& photons, std::uint32_t source);
 
 /// trace_sun_bin for every bin to trace (parallel over bins), labelled with their bin index;
 /// skipped bins give no photons and a zero tally. The layout of engine::trace_photons. For
-/// tests and benches: the pipeline caches each bin's photons itself (study_runner.cpp).
+/// tests and benches: the pipeline caches each bin's photons itself (sun_bin_steps.cpp).
 engine::TracedPhotons trace_sun_bins(const engine::Scene& scene,
                                      const std::vector<engine::Material>& materials,
                                      const engine::SunBins& bins,
