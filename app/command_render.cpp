@@ -22,15 +22,12 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/image_files.h"
 #include "dayphoton/study/render_sky.h"
+#include "dayphoton/study/simulation_plan.h"
 #include "dayphoton/study/tone_map.h"
 
 namespace dayphoton::app {
 
 namespace {
-
-/// The ground bin's photon share relative to a sky bin, as `dayphoton run` uses it
-/// (study_runner.cpp GroundPhotonFactor; Neyman allocation for the overcast sky).
-constexpr double GroundPhotonFactor = 16.0;
 
 Vec3 parse_vector(const std::string& text, const std::string& option) {
   std::istringstream in(text);
@@ -80,9 +77,7 @@ int run_render(const RenderOptions& options, std::ostream& out) {
   const engine::Scene scene = engine::Scene::build(description);
   std::vector<engine::Material> materials;
   for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
-  const sky::PatchBasis basis = project.simulation.basis == project::SkyBasis::Tregenza
-                                    ? sky::PatchBasis::tregenza()
-                                    : sky::PatchBasis::reinhart(project.simulation.reinhart_mf);
+  const sky::PatchBasis basis = study::basis_of(project.simulation);
   study::RenderSkySettings sky_settings;
   sky_settings.spec = options.sky;
   sky_settings.horizontal_illuminance_lux = options.horizontal_illuminance_lux;
@@ -108,8 +103,8 @@ int run_render(const RenderOptions& options, std::ostream& out) {
   tracing.photons_per_source = static_cast<std::size_t>(
       options.photons_per_bin > 0 ? options.photons_per_bin : project.simulation.photons_per_bin);
   tracing.seed = project.simulation.seed;
-  tracing.source_photon_factor.assign(sources.size(), 1.0);
-  tracing.source_photon_factor[0] = GroundPhotonFactor;
+  // The ground bin's share as `dayphoton run` gives it (study/plan_policy.h).
+  tracing.source_photon_factor = study::sky_photon_factors(sources.size());
   study::add_sun_source(sky.sky, sources, tracing.source_photon_factor);
   tracing.keep_surface_photons = true;
   if (!options.quiet)

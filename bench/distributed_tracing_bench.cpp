@@ -31,6 +31,7 @@
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/plan_policy.h"
 
 using namespace dayphoton;
 
@@ -41,9 +42,6 @@ double cpu_seconds() {
   getrusage(RUSAGE_SELF, &u);
   return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
-
-/// The ground bin gets 16 times the photons of a sky bin (study's policy, docs/photon-tracing.md).
-constexpr double GroundPhotonFactor = 16;
 
 /// Rays cast per source by a pass of photons_per_source / 20 (rank 0 only), as cost estimates.
 std::vector<double> pilot_costs(const engine::Scene& scene, const std::vector<engine::Material>& materials,
@@ -69,7 +67,7 @@ int run(dist::Communicator& comm, std::size_t photons, bool pilot) {
   engine::TracingOptions o;
   o.photons_per_source = photons;
   o.source_photon_factor.assign(sources.size(), 1.0);
-  o.source_photon_factor[0] = GroundPhotonFactor;
+  o.source_photon_factor[0] = study::GroundPhotonFactor;  // the run's policy (plan_policy.h)
 
   double pilot_wall = 0;
   std::vector<double> costs(o.source_photon_factor);

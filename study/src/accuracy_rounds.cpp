@@ -16,6 +16,7 @@
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/step_executor.h"
 #include <nlohmann/json.hpp>
 
 namespace dayphoton::study {
@@ -296,8 +297,8 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   return result;
 }
 
-CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& goal, const ArtifactStore& store,
-                                   bool force, const std::vector<std::string>& photon_keys,
+CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& goal, StepExecutor& executor,
+                                   const std::vector<std::string>& photon_keys,
                                    const std::function<void(const std::string&)>& log) {
   // The goal and the policy are part of every key; the photon keys carry the scene, planes,
   // basis, seed, reference count and the other tracing options.
@@ -316,48 +317,54 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
   for (std::string& k : keys) k += "|" + all_grids;
   for (const SensorGrid& g : grids) grid_keys.push_back(coefficients_key(keys, g, c.estimating));
   const std::string outcome_key = grid_keys.empty() ? std::string("none") : grid_keys.front();
+  // One step (plan_step.h): the coefficients of every grid, then the outcome. Not a pure
+  // function of its inputs when max_seconds stops the rounds, so it always runs where it is
+  // asked (docs/architecture.md, "Plan and executor").
   CaseAccuracy out;
-  if (!force) {
-    try {
-      const auto text = store.read("accuracy", outcome_key);
-      bool all = text.has_value();
-      std::vector<engine::DaylightCoefficients> cached;
-      for (std::size_t g = 0; all && g < grids.size(); ++g) {
-        const auto bytes = store.read("coefficients", grid_keys[g]);
-        all = bytes.has_value();
-        if (all) cached.push_back(decode_coefficients(*bytes));
-        all = all && cached.back().sensors == grids[g].points.size();
-      }
-      if (all) {
-        const nlohmann::json j = nlohmann::json::parse(*text);
-        out.outcome.target_percent = j.at("target_percent").get<double>();
-        out.outcome.reached_percent = j.at("reached_percent").get<std::vector<double>>();
-        out.outcome.rounds = j.at("rounds").get<std::size_t>();
-        out.outcome.photons = j.at("photons").get<std::uint64_t>();
-        out.outcome.attempts = j.at("attempts").get<std::uint64_t>();
-        out.outcome.stop_reason = j.at("stop_reason").get<std::string>();
-        out.coefficients = std::move(cached);
-        out.cached = out.outcome.reached_percent.size() == grids.size();
-      }
-    } catch (const std::exception&) {
-      out.cached = false;  // damaged or an older layout: run the rounds again
+  Step step;
+  step.kind = StepKind::SkyCoefficients;
+  for (const std::string& k : grid_keys) step.outputs.push_back({"coefficients", k});
+  step.outputs.push_back({"accuracy", outcome_key});
+  step.compute = [&]() -> std::vector<std::string> {
+    AccuracyResult r = run_accuracy_rounds(c, goal, log);
+    std::vector<std::string> bytes;
+    for (std::size_t g = 0; g < grids.size(); ++g) bytes.push_back(encode_coefficients(r.coefficients[g]));
+    // Kept as the cache keeps the coefficients, so a later run from the cache writes the same bytes.
+    for (std::size_t g = 0; g < grids.size(); ++g) r.coefficients[g] = decode_coefficients(bytes[g]);
+    const nlohmann::json j = {{"target_percent", r.outcome.target_percent}, {"reached_percent", r.outcome.reached_percent},
+                              {"rounds", r.outcome.rounds}, {"photons", r.outcome.photons},
+                              {"attempts", r.outcome.attempts}, {"stop_reason", r.outcome.stop_reason}};
+    bytes.push_back(j.dump());
+    out.coefficients = std::move(r.coefficients);
+    out.outcome = r.outcome;
+    return bytes;
+  };
+  step.take = [&](const std::vector<std::string>& bytes) {
+    std::vector<engine::DaylightCoefficients> cached;
+    for (std::size_t g = 0; g < grids.size(); ++g) {
+      cached.push_back(decode_coefficients(bytes.at(g)));
+      if (cached.back().sensors != grids[g].points.size()) return false;
     }
-    if (out.cached) {
-      log("accuracy: cached (" + out.outcome.stop_reason + " after " + std::to_string(out.outcome.rounds) +
-          " round(s))");
-      return out;
-    }
+    const nlohmann::json j = nlohmann::json::parse(bytes.at(grids.size()));
+    AccuracyOutcome o;
+    o.target_percent = j.at("target_percent").get<double>();
+    o.reached_percent = j.at("reached_percent").get<std::vector<double>>();
+    o.rounds = j.at("rounds").get<std::size_t>();
+    o.photons = j.at("photons").get<std::uint64_t>();
+    o.attempts = j.at("attempts").get<std::uint64_t>();
+    o.stop_reason = j.at("stop_reason").get<std::string>();
+    if (o.reached_percent.size() != grids.size()) return false;
+    out.coefficients = std::move(cached);
+    out.outcome = std::move(o);
+    return true;
+  };
+  out.cached = executor.lookup(step);
+  if (out.cached) {
+    log("accuracy: cached (" + out.outcome.stop_reason + " after " + std::to_string(out.outcome.rounds) +
+        " round(s))");
+    return out;
   }
-  AccuracyResult r = run_accuracy_rounds(c, goal, log);
-  for (std::size_t g = 0; g < grids.size(); ++g) store.write("coefficients", grid_keys[g], encode_coefficients(r.coefficients[g]));
-  // Cached as the cache keeps the coefficients, so a later run from the cache writes the same bytes.
-  for (std::size_t g = 0; g < grids.size(); ++g) r.coefficients[g] = decode_coefficients(encode_coefficients(r.coefficients[g]));
-  const nlohmann::json j = {{"target_percent", r.outcome.target_percent}, {"reached_percent", r.outcome.reached_percent},
-                            {"rounds", r.outcome.rounds}, {"photons", r.outcome.photons},
-                            {"attempts", r.outcome.attempts}, {"stop_reason", r.outcome.stop_reason}};
-  store.write("accuracy", outcome_key, j.dump());
-  out.coefficients = std::move(r.coefficients);
-  out.outcome = r.outcome;
+  executor.run(step);
   return out;
 }
 

@@ -129,7 +129,7 @@ SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& case
     }
     const sky::SkyScale scale = sky::SkyScale::horizontal_illuminance_lux(c.diffuse_horizontal_illuminance_lux);
     if (c.sky == project::PointSky::CieOvercast) {
-      // As the daylight factor's sky (study_runner.cpp), so E = DF x E_h / 100.
+      // As the daylight factor's sky (SimulationPlan::daylight_factor_sky), so E = DF x E_h / 100.
       const auto overcast = sky::make_cie_overcast_sky(scale);
       const RadianceMatrix v = sky::sky_vector(
           *overcast, basis, sky::ground_radiance_rgb(rho, c.diffuse_horizontal_illuminance_lux, 0, {0, 0, -1}));

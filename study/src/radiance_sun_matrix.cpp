@@ -10,6 +10,7 @@
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/plan_step.h"
 
 namespace dayphoton::study {
 
@@ -77,7 +78,7 @@ std::string write_radiance_sun_matrix(const engine::Scene& scene, const std::vec
                                       const SensorGrid& grid, const ContentHash& scene_hash,
                                       const engine::SunBins& bins, const RadianceMatrix& bin_coefficients,
                                       const std::vector<sky::SunRecord>& daytime_suns, int samples,
-                                      std::uint64_t seed, const ArtifactStore& store, const std::string& path,
+                                      std::uint64_t seed, StepExecutor& executor, const std::string& path,
                                       MatrixFormat format) {
   const std::vector<int> patches = radiance_sun_patches(bins.basis(), daytime_suns);
   const std::vector<sky::SunRecord> suns = patch_centre_suns(bins.basis(), patches);
@@ -89,19 +90,12 @@ std::string write_radiance_sun_matrix(const engine::Scene& scene, const std::vec
   }
   const std::string key = direct_sun_key(scene_hash, grid, steps, directions, samples, seed);
   RadianceMatrix direct;
-  bool cached = false;
-  if (auto bytes = store.read("sun-direct", key)) {
-    try {
-      direct = decode_matrix(*bytes);
-      cached = direct.rows() == grid.points.size() && direct.columns() == suns.size();
-    } catch (const std::exception&) {
-      cached = false;
-    }
-  }
-  if (!cached) {
-    direct = direct_sun_coefficients(scene, materials, grid.points, suns, samples, seed);
-    store.write("sun-direct", key, encode_matrix(direct));
-  }
+  const Step step = make_step(
+      StepKind::DirectSun, 0, ArtifactId{"sun-direct", key}, direct,
+      [&] { return direct_sun_coefficients(scene, materials, grid.points, suns, samples, seed); }, encode_matrix,
+      decode_matrix,
+      [&](const RadianceMatrix& m) { return m.rows() == grid.points.size() && m.columns() == suns.size(); });
+  const bool cached = !executor.run(step);
   RadianceSunMatrix d = radiance_sun_matrix(patches, direct, bins, bin_coefficients);
   const int mf = bins.multiplication_factor();
   d.matrix.header_lines().push_back(

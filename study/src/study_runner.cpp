@@ -2,220 +2,49 @@
 #include "dayphoton/study/study_runner.h"
 
 #include <algorithm>
-#include <cmath>
-#include <filesystem>
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <sstream>
+#include <filesystem>
 
 #include <nlohmann/json.hpp>
-#include <tbb/parallel_for.h>
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/radiance_matrix.h"
-#include "dayphoton/core/units.h"
 #include "dayphoton/engine/daylight_coefficients.h"
-#include "dayphoton/engine/photon_tracer.h"
-#include "dayphoton/engine/port_emission.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sun_bins.h"
-#include "dayphoton/project/north_rotation.h"
-#include "dayphoton/sky/sky_matrix.h"
-#include "dayphoton/sky/sky_model.h"
+#include "dayphoton/metrics/annual_metrics.h"
 #include "dayphoton/study/accuracy_rounds.h"
-#include "dayphoton/study/annual_illuminance.h"
-#include "dayphoton/study/annual_sun.h"
-#include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/radiance_sun_matrix.h"
 #include "dayphoton/study/annual_study.h"
-#include "dayphoton/study/project_metric_settings.h"
-#include "dayphoton/study/artifact_codec.h"
-#include "dayphoton/study/artifact_store.h"
+#include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/cache_folder.h"
 #include "dayphoton/study/cache_keys.h"
-#include "dayphoton/study/placement_check.h"
-#include "dayphoton/study/point_in_time.h"
 #include "dayphoton/study/daylight_factor.h"
-#include "dayphoton/study/operated_shading.h"
+#include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/output_lock.h"
 #include "dayphoton/study/output_manifest.h"
+#include "dayphoton/study/placement_check.h"
+#include "dayphoton/study/point_in_time.h"
+#include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/compliance_verdicts.h"
 #include "dayphoton/study/results_model_builder.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/study/verdict_uncertainty.h"
 #include "dayphoton/weather/hourly_weather.h"
-#include "dayphoton/weather/site_clock.h"
-#include "dayphoton/metrics/annual_metrics.h"
 #include "json_text.h"
+#include "operated_case.h"
+#include "points_in_time_case.h"
+#include "run_context.h"
+#include "sky_coefficient_steps.h"
+#include "sky_steps.h"
+#include "sun_bin_steps.h"
 
 namespace dayphoton::study {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// Photons per source relative to a sky bin for the ground bin 0: Neyman allocation for the
-/// CIE overcast sky (the ground brings ~20 % of the light through a vertical window, a
-/// Tregenza sky bin ~1 %); see engine::TracingOptions::source_photon_factor. Measured on the
-/// office: per-sensor DF RMS 2.95 % -> 1.56 % at +20 % photons (docs/photon-tracing.md).
-constexpr double GroundPhotonFactor = 16.0;
-
-/// DF sky: CIE overcast of this horizontal illuminance (the DF does not depend on it).
-constexpr double OvercastHorizontalLux = 10000.0;
-
-/// The project's region of interest in world coordinates: the axis-aligned box around the
-/// rotated model box (with a north rotation a little larger, which only stores more).
-std::optional<engine::Bounds3> region_of_interest(const project::Project& project) {
-  const auto& roi = project.simulation.region_of_interest;
-  if (!roi) return std::nullopt;
-  const double north = project.site.rotation_to_true_north_deg();
-  engine::Bounds3 b{project::model_to_world(roi->origin_m, north), project::model_to_world(roi->origin_m, north)};
-  for (int corner = 1; corner < 8; ++corner) {
-    const Vec3 c{roi->origin_m.x + ((corner & 1) ? roi->size_m.x : 0), roi->origin_m.y + ((corner & 2) ? roi->size_m.y : 0),
-                 roi->origin_m.z + ((corner & 4) ? roi->size_m.z : 0)};
-    const Vec3 w = project::model_to_world(c, north);
-    for (int k = 0; k < 3; ++k) {
-      b.lower[k] = std::min(b.lower[k], w[k]);
-      b.upper[k] = std::max(b.upper[k], w[k]);
-    }
-  }
-  return b;
-}
-
-/// What the sky and the sun passes share: seed, caustic target, low-yield cap, region of
-/// interest.
-engine::TracingOptions shared_tracing_options(const project::Project& project) {
-  const project::Simulation& sim = project.simulation;
-  engine::TracingOptions o;
-  o.caustic_photons_per_source = static_cast<std::size_t>(sim.caustic_photons_per_bin);
-  o.seed = sim.seed;
-  o.max_mainpass_attempts_per_target = static_cast<std::size_t>(sim.max_attempts_per_photon);
-  o.region_of_interest = region_of_interest(project);
-  return o;
-}
-
-engine::TracingOptions tracing_options(const project::Project& project, std::size_t sources) {
-  engine::TracingOptions o = shared_tracing_options(project);
-  o.photons_per_source = static_cast<std::size_t>(project.simulation.photons_per_bin);
-  o.source_photon_factor.assign(sources, 1.0);
-  if (sources > 0) o.source_photon_factor[0] = GroundPhotonFactor;
-  return o;
-}
-
-engine::CoefficientOptions coefficient_options(const project::Simulation& sim) {
-  engine::CoefficientOptions o;
-  o.density.bandwidth = static_cast<std::size_t>(sim.bandwidth);
-  // Caustic photons with a target of their own are counted unlike the global ones, so they
-  // always get the caustic map (a shared disc would be sized by their count).
-  o.caustic_bandwidth = static_cast<std::size_t>(
-      sim.caustic_bandwidth > 0 ? sim.caustic_bandwidth : (sim.caustic_photons_per_bin > 0 ? sim.bandwidth : 0));
-  o.direct.samples_per_source = sim.direct_samples_per_bin;
-  o.direct.seed = sim.seed;
-  o.estimator = sim.estimator == project::Estimator::Contribution ? engine::PhotonEstimator::Contribution
-                                                                  : engine::PhotonEstimator::PerSource;
-  o.gather.rays_per_sensor = sim.gather_rays;
-  o.gather.bandwidth = static_cast<std::size_t>(sim.gather_bandwidth);
-  o.gather.seed = sim.seed;
-  return o;
-}
-
-/// The photons grid `plane` (its receiver plane, or -1) is estimated from: its plane's
-/// crossings, or the surface photons for a final gather or a surface estimate.
-engine::GridPhotons grid_photons_for(int plane, const std::vector<engine::ReceiverPlane>& planes,
-                                     const engine::TracedPhotons& photons, std::size_t sources,
-                                     project::PointEstimate estimate) {
-  if (plane >= 0)
-    return engine::GridPhotons::for_plane(planes[static_cast<std::size_t>(plane)],
-                                          photons.planes[static_cast<std::size_t>(plane)], sources);
-  return estimate == project::PointEstimate::Gather ? engine::GridPhotons::for_gather(photons.surface, sources)
-                                                    : engine::GridPhotons::for_surfaces(photons.surface, sources);
-}
-
-sky::PatchBasis basis_of(const project::Simulation& sim) {
-  return sim.basis == project::SkyBasis::Tregenza ? sky::PatchBasis::tregenza()
-                                                  : sky::PatchBasis::reinhart(sim.reinhart_mf);
-}
-
-std::string join(const std::string& dir, const std::string& name) {
-  return (fs::path(dir) / name).string();
-}
-
-/// The run log (<output>/run.log): every line also goes to the progress output, and to the
-/// file at once, so an interrupted run's log says how far it got. The run's history (what was
-/// computed or came from the cache, step times) is here, not in the results, so that a
-/// repeated run writes byte-identical results.
-class RunLog {
- public:
-  RunLog(Progress& progress, const std::string& path)
-      : m_progress(progress), m_path(path), m_file(path, std::ios::trunc | std::ios::binary) {
-    if (!m_file) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-  }
-  void line(const std::string& text) {
-    m_progress.note(text);
-    m_file << text << "\n";
-    m_file.flush();
-    if (!m_file) throw std::runtime_error("cannot write " + m_path + ": " + std::strerror(errno));
-  }
-  /// A line for the file only (not shown as progress).
-  void quiet_line(const std::string& text) {
-    m_file << text << "\n";
-    m_file.flush();
-    if (!m_file) throw std::runtime_error("cannot write " + m_path + ": " + std::strerror(errno));
-  }
-
- private:
-  Progress& m_progress;
-  std::string m_path;
-  std::ofstream m_file;
-};
-
-
-/// The run-log note on sources whose main pass hit the low-yield cap
-/// (engine::TracingOptions::max_mainpass_attempts_per_target), or "" if none did. `what`
-/// names the sources ("sources", "sun bins"); the stored share is of the global target.
-std::string capped_note(const engine::TracedPhotons& photons, const engine::TracingOptions& tracing,
-                        const std::string& what) {
-  std::size_t capped = 0;
-  double least = 1, most = 0;
-  for (std::size_t p = 0; p < photons.tallies.size(); ++p) {
-    const engine::SourceTally& t = photons.tallies[p];
-    if (!t.capped) continue;
-    ++capped;
-    const double factor = p < tracing.source_photon_factor.size() ? tracing.source_photon_factor[p] : 1.0;
-    const double share = double(t.stored_global) / (double(tracing.photons_per_source) * factor);
-    least = std::min(least, share);
-    most = std::max(most, share);
-  }
-  if (capped == 0) return "";
-  auto percent = [](double x) { return std::to_string(static_cast<long long>(std::lround(100 * x))); };
-  return std::to_string(capped) + " of " + std::to_string(photons.tallies.size()) + " " + what +
-         " capped at " + std::to_string(tracing.max_mainpass_attempts_per_target) +
-         " main-pass attempts per target photon (low yield): they stored " + percent(least) + "-" +
-         percent(most) + " % of their target; their flux stays unbiased, with more relative noise";
-}
-
-/// Sources whose photon pass stored nothing (engine::trace_source_photons): none traced when
-/// nothing in the scene can store a photon, or stopped after the pre-pass's entries showed
-/// that none is stored. "" when every source stored photons or was not lit.
-std::string nothing_stored_note(const engine::TracedPhotons& photons, const std::string& what) {
-  std::size_t skipped = 0, stopped = 0;
-  for (const engine::SourceTally& t : photons.tallies) {
-    if (t.nothing_stores) ++skipped;
-    else if (t.entered > 0 && t.stored_global + t.stored_caustic + t.stored_direct == 0) ++stopped;
-  }
-  if (skipped > 0)
-    return "not traced: nothing in the scene can store a photon (no surface has a diffuse component, and no sensor "
-           "plane can receive scattered light); the photon part of every " + what.substr(0, what.size() - 1) +
-           " is zero and the results are its direct component alone";
-  if (stopped > 0)
-    return std::to_string(stopped) + " of " + std::to_string(photons.tallies.size()) + " " + what +
-           " stored no photon: their light is absorbed before it reaches anything that stores photons (the pass "
-           "stopped after 65536 entering photons)";
-  return "";
-}
 
 /// Each coefficient's variance, direct and photon parts together (sensors x sources).
 std::vector<double> sky_variance_of(const engine::DaylightCoefficients& c) {
@@ -234,21 +63,6 @@ void add_verdict_uncertainty(nlohmann::json& grid, const VerdictUncertainty& u, 
   j["ase_verdicts_within_2_sigma"] = nullptr;
   if (ase) j["ase_note"] = "the exact direct sun's standard error is not estimated";
 }
-
-/// What every case (the base project and each variant) of one run shares.
-struct RunContext {
-  const RunSettings& settings;
-  Progress& progress;
-  RunLog& log;
-  RunReport& report;
-  const ArtifactStore& store;
-  OutputManifest& outputs;  ///< every output file written, for summary.json `files`
-  std::optional<AnnualSky> sky;  ///< built or loaded once, on first use (sun spread)
-  std::optional<SkyAndSuns> sky_and_suns;  ///< the same for the sun-bins mode
-  const weather::HourlyWeather* weather = nullptr;   ///< the project's weather file, if it has one
-  const SunSite* sun_site = nullptr;       ///< the site its sun is computed for (sun_site.h)
-  CaseResult* results = nullptr;  ///< the case being run, in the results model (results_model_builder.h)
-};
 
 /// summary.json `site` (docs/outputs.md): the site the sun is computed for (the project's, or
 /// the weather file header's with from_weather), the sentence every output prints about it,
@@ -276,447 +90,6 @@ nlohmann::json site_json(const project::Site& project_site, const SunSite* sun_s
                                {"largest_W_m2", below->largest_W_m2},
                                {"their_sun", sun_bins ? "left out" : "spread into the nearest sky patches"}};
   return j;
-}
-
-AnnualOutputs annual_outputs_of(const project::Project& project) {
-  AnnualOutputs which;
-  which.illuminance = project.outputs.annual_illuminance;
-  which.metrics = project.outputs.metrics;
-  return which;
-}
-
-/// The annual sky of the project's weather file, from the cache when the file is unchanged.
-const AnnualSky& annual_sky(const project::Project& project, const sky::PatchBasis& basis,
-                            RunContext& ctx) {
-  if (ctx.sky) return *ctx.sky;
-  const weather::HourlyWeather& weather = *ctx.weather;
-  const sky::SolarSite& site = ctx.sun_site->solar;
-  const double rho_g = project.simulation.ground_reflectance;
-  const std::string key = sky_matrix_key(project.weather.path, site, basis, rho_g, false);
-  AnnualSky sky;
-  bool cached = false;
-  if (!ctx.settings.force) {
-    if (auto bytes = ctx.store.read("sky", key)) {
-      try {
-        sky.matrix = decode_matrix(*bytes);
-        cached = true;
-      } catch (const std::exception&) {
-        // damaged or an older layout: rebuilt below
-      }
-    }
-  }
-  if (cached) {
-    sky.steps = time_stamps(weather);
-    sky.daylight_hours_quantity = daylight_hours_quantity(weather, sky.daylight_hours_source);
-    sky.description = annual_sky_description(weather, basis, radiance_compatible_sky_options(rho_g));
-    ctx.report.sky_matrix_cached = true;
-    ctx.progress.cached("sky matrix");
-    ctx.log.line("sky matrix: cached");
-  } else {
-    ctx.progress.start("sky matrix", weather.records.size(), "hours");
-    sky = annual_sky_from_weather(weather, site, basis, radiance_compatible_sky_options(rho_g));
-    ctx.store.write("sky", key, encode_matrix(sky.matrix));
-    ctx.progress.advance(weather.records.size());
-    ctx.progress.end();
-    ctx.log.line("sky matrix: built from " + project.weather.path);
-  }
-  ctx.sky = std::move(sky);
-  return *ctx.sky;
-}
-
-/// The sun-bins mode's sky (without the sun) and suns, from the cache when the weather file
-/// is unchanged: the matrix under kind "sky" and the suns under kind "suns", same key.
-const SkyAndSuns& sky_and_suns(const project::Project& project, const sky::PatchBasis& basis,
-                               RunContext& ctx) {
-  if (ctx.sky_and_suns) return *ctx.sky_and_suns;
-  const weather::HourlyWeather& weather = *ctx.weather;
-  const sky::SolarSite& site = ctx.sun_site->solar;
-  const double rho_g = project.simulation.ground_reflectance;
-  const std::string key = sky_matrix_key(project.weather.path, site, basis, rho_g, true);
-  SkyAndSuns result;
-  bool cached = false;
-  if (!ctx.settings.force) {
-    const auto matrix = ctx.store.read("sky", key);
-    const auto suns = ctx.store.read("suns", key);
-    if (matrix && suns) {
-      try {
-        result.sky.matrix = decode_matrix(*matrix);
-        result.suns = suns_from_matrix(decode_matrix(*suns));
-        cached = true;
-      } catch (const std::exception&) {
-        // damaged or an older layout: rebuilt below
-      }
-    }
-  }
-  if (cached) {
-    result.sky.steps = time_stamps(weather);
-    result.sky.daylight_hours_quantity = daylight_hours_quantity(weather, result.sky.daylight_hours_source);
-    result.sky.description = sky_and_suns_description(weather, basis);
-    ctx.report.sky_matrix_cached = true;
-    ctx.progress.cached("sky matrix");
-    ctx.log.line("sky matrix: cached");
-  } else {
-    ctx.progress.start("sky matrix", weather.records.size(), "hours");
-    result = annual_sky_and_suns(weather, site, basis, sun_excluded_sky_options(rho_g));
-    const RadianceMatrix suns = suns_to_matrix(result.suns);
-    // Use the suns as the cache stores them (single precision), so that a later run from the
-    // cache gives byte-identical results.
-    result.suns = suns_from_matrix(suns);
-    ctx.store.write("sky", key, encode_matrix(result.sky.matrix));
-    ctx.store.write("suns", key, encode_matrix(suns));
-    ctx.progress.advance(weather.records.size());
-    ctx.progress.end();
-    ctx.log.line("sky matrix: built from " + project.weather.path + " (sun excluded; " +
-                 std::to_string(result.suns.size()) + " sun hours)");
-  }
-  ctx.sky_and_suns = std::move(result);
-  return *ctx.sky_and_suns;
-}
-
-/// The sun side of one grid in the sun-bins mode.
-struct GridSun {
-  RadianceMatrix bin_coefficients;  ///< sensors x sun bins x RGB, caustic + global
-  std::vector<double> bin_variance;  ///< sensors x sun bins, of each entry's luminance
-  RadianceMatrix direct;            ///< sensors x suns x RGB, exact direct sun
-  /// For direct_sun.bin.gz (outputs.coefficients): the direct sun of the other daytime sun
-  /// positions (direct_sun_file.h), sensors x other_suns x RGB.
-  RadianceMatrix direct_other;
-  std::vector<sky::SunRecord> other_suns;
-};
-
-engine::TracingOptions sun_tracing_options(const project::Project& project, bool keep_surface_photons) {
-  engine::TracingOptions o = shared_tracing_options(project);
-  o.photons_per_source = static_cast<std::size_t>(
-      std::max(1LL, std::llround(double(project.simulation.photons_per_bin) * SunBinPhotonFraction)));
-  o.keep_surface_photons = keep_surface_photons;
-  o.store_direct_on_surfaces =
-      keep_surface_photons && project.simulation.point_estimate == project::PointEstimate::Gather;
-  return o;
-}
-
-/// Sun bins of one case: choose them for the year's suns, trace (one cached artefact per
-/// bin), estimate per grid, trace the exact direct sun per grid (with `export_direct`, also at
-/// the further daytime positions of direct_sun.bin.gz). Every step cached.
-std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix,
-                                  const SceneDescription& description, const engine::Scene& scene,
-                                  const std::vector<engine::Material>& materials,
-                                  const std::vector<engine::ReceiverPlane>& planes,
-                                  const std::vector<int>& plane_of_grid, const SkyAndSuns& ss,
-                                  const engine::SunBins& bins, RunContext& ctx, bool export_direct = false) {
-  const project::Simulation& sim = project.simulation;
-  Progress& progress = ctx.progress;
-  RunLog& log = ctx.log;
-  RunReport& report = ctx.report;
-  const std::size_t n_grids = description.grids.size();
-  const bool keep_surface =
-      std::any_of(plane_of_grid.begin(), plane_of_grid.end(), [](int p) { return p < 0; });
-  const engine::TracingOptions tracing = sun_tracing_options(project, keep_surface);
-  engine::CoefficientOptions estimating = coefficient_options(sim);
-  estimating.density.bandwidth = sun_bin_bandwidth(estimating.density.bandwidth);
-  const ContentHash scene_hash = scene_key(description);
-  const ContentHash planes_hash = planes_key(description.grids);
-
-  const engine::SourceSet sources = bins.sources(sky::SunHalfAngle_rad);
-  const std::vector<char> to_trace = sun_bins_to_trace(engine::PortEmitter(scene, sources), bins.size());
-  const std::size_t n_lit = static_cast<std::size_t>(std::count(to_trace.begin(), to_trace.end(), 1));
-  std::vector<std::string> keys(bins.size());
-  for (std::size_t i = 0; i < bins.size(); ++i)
-    keys[i] = sun_photon_key(scene_hash, planes_hash, bins.multiplication_factor(), bins.patch(i),
-                             sky::SunHalfAngle_rad, tracing);
-  log.line(prefix + "sun bins: " + std::to_string(bins.size()) + " on Reinhart MF " +
-           std::to_string(bins.multiplication_factor()) + " for " + std::to_string(ss.suns.size()) +
-           " sun hours; " + std::to_string(n_lit) + " send light through the ports, " +
-           std::to_string(tracing.photons_per_source) + " photons each, bandwidth " +
-           std::to_string(estimating.density.bandwidth));
-
-  std::vector<GridSun> result(n_grids);
-  std::vector<std::string> grid_keys(n_grids);
-  std::vector<char> have(n_grids, 0);
-  bool all_cached = true;
-  for (std::size_t g = 0; g < n_grids; ++g) {
-    grid_keys[g] = sun_coefficients_key(keys, SunBinMinimumBoundFraction, description.grids[g], estimating);
-    if (!ctx.settings.force) {
-      const auto bytes = ctx.store.read("sun-coefficients", grid_keys[g]);
-      const auto variance = ctx.store.read("sun-coefficients-variance", grid_keys[g]);
-      if (bytes && variance) {
-        try {
-          result[g].bin_coefficients = decode_matrix(*bytes);
-          const RadianceMatrix v = decode_matrix(*variance);
-          result[g].bin_variance.assign(v.data().begin(), v.data().end());
-          have[g] = result[g].bin_coefficients.rows() == description.grids[g].points.size() &&
-                    result[g].bin_coefficients.columns() == bins.size() &&
-                    result[g].bin_variance.size() == description.grids[g].points.size() * bins.size();
-        } catch (const std::exception&) {
-          // damaged: recompute
-        }
-      }
-    }
-    all_cached = all_cached && have[g];
-  }
-
-  report.sun_bins += bins.size();
-  report.sun_bins_lit += n_lit;
-  engine::TracedPhotons photons;
-  if (all_cached) {
-    progress.cached(prefix + "sun photons");
-    log.line(prefix + "sun photons: traced 0 of " + std::to_string(n_lit) +
-             " sun bins (not needed: every grid's sun coefficients are cached)");
-  } else {
-    progress.start(prefix + "sun photons", n_lit, "sun bins");
-    std::vector<engine::TracedPhotons> per_bin(bins.size());
-    std::vector<char> traced(bins.size(), 0);
-    tbb::parallel_for(std::size_t(0), bins.size(), [&](std::size_t i) {
-      if (!to_trace[i]) {
-        per_bin[i].planes.resize(planes.size());
-        per_bin[i].tallies.resize(1);
-        return;
-      }
-      bool done = false;
-      if (!ctx.settings.force) {
-        if (auto bytes = ctx.store.read("sun-photons", keys[i])) {
-          try {
-            per_bin[i] = decode_photons(*bytes);
-            done = true;
-          } catch (const std::exception&) {
-            // damaged: trace again
-          }
-        }
-      }
-      if (!done) {
-        per_bin[i] = trace_sun_bin(scene, materials, bins, i, planes, tracing);
-        ctx.store.write("sun-photons", keys[i], encode_photons(per_bin[i]));
-        traced[i] = 1;
-      }
-      relabel_photons(per_bin[i], static_cast<std::uint32_t>(i));
-      progress.advance(1);
-    });
-    progress.end();
-    const std::size_t n_traced = static_cast<std::size_t>(std::count(traced.begin(), traced.end(), 1));
-    report.sun_bins_traced += n_traced;
-    log.line(prefix + "sun photons: traced " + std::to_string(n_traced) + " of " + std::to_string(n_lit) +
-             " sun bins (" + std::to_string(n_lit - n_traced) + " cached)");
-    photons = engine::merge_traced_photons(std::move(per_bin));
-    for (const std::string& note : {capped_note(photons, tracing, "sun bins"), nothing_stored_note(photons, "sun bins")})
-      if (!note.empty()) log.line(prefix + "sun photons: " + note);
-    for (const engine::SourceTally& t : photons.tallies) report.sun_bins_capped += t.capped ? 1 : 0;
-  }
-
-  for (std::size_t g = 0; g < n_grids; ++g) {
-    const SensorGrid& grid = description.grids[g];
-    if (have[g]) {
-      progress.cached(prefix + "sun coefficients " + grid.name);
-      log.line(prefix + "sun coefficients " + grid.name + ": cached");
-    } else {
-      progress.start(prefix + "sun coefficients " + grid.name, grid.points.size(), "sensors");
-      const engine::GridPhotons grid_photons =
-          grid_photons_for(plane_of_grid[g], planes, photons, bins.size(), sim.point_estimate);
-      result[g].bin_coefficients =
-          sun_bin_coefficients(scene, materials, sources, grid_photons, grid.points, estimating, &result[g].bin_variance);
-      ctx.store.write("sun-coefficients", grid_keys[g], encode_matrix(result[g].bin_coefficients));
-      // The variances as the cache keeps them (single precision), so a cached run gives the
-      // same verdicts.
-      RadianceMatrix variance(grid.points.size(), bins.size(), 1);
-      for (std::size_t i = 0; i < result[g].bin_variance.size(); ++i)
-        variance.data()[i] = static_cast<float>(result[g].bin_variance[i]);
-      result[g].bin_variance.assign(variance.data().begin(), variance.data().end());
-      ctx.store.write("sun-coefficients-variance", grid_keys[g], encode_matrix(variance));
-      progress.advance(grid.points.size());
-      progress.end();
-      log.line(prefix + "sun coefficients " + grid.name + ": estimated at " +
-               std::to_string(grid.points.size()) + " sensors");
-    }
-
-    // The exact direct sun of every hour.
-    std::vector<std::size_t> steps;
-    std::vector<Vec3> directions;
-    for (const sky::SunRecord& sun : ss.suns) {
-      steps.push_back(sun.step);
-      directions.push_back(sun.direction);
-    }
-    const std::string key = direct_sun_key(scene_hash, grid, steps, directions, SunDirectSamples, sim.seed);
-    bool cached = false;
-    if (!ctx.settings.force) {
-      if (auto bytes = ctx.store.read("sun-direct", key)) {
-        try {
-          result[g].direct = decode_matrix(*bytes);
-          cached = result[g].direct.rows() == grid.points.size() && result[g].direct.columns() == ss.suns.size();
-        } catch (const std::exception&) {
-          // damaged: recompute
-        }
-      }
-    }
-    if (cached) {
-      progress.cached(prefix + "direct sun " + grid.name);
-      log.line(prefix + "direct sun " + grid.name + ": cached");
-    } else {
-      progress.start(prefix + "direct sun " + grid.name, grid.points.size(), "sensors");
-      result[g].direct = direct_sun_coefficients(scene, materials, grid.points, ss.suns, SunDirectSamples, sim.seed);
-      ctx.store.write("sun-direct", key, encode_matrix(result[g].direct));
-      progress.advance(grid.points.size());
-      progress.end();
-      log.line(prefix + "direct sun " + grid.name + ": traced for " + std::to_string(ss.suns.size()) +
-               " sun hours at " + std::to_string(grid.points.size()) + " sensors");
-    }
-    // The export for `annual` (direct_sun.bin.gz): the daytime positions without direct light
-    // in this weather file too, so another file of the site finds every sun it needs.
-    if (export_direct) {
-      GridSun& out = result[g];
-      out.other_suns = daytime_suns_without_direct(*ctx.weather, ctx.sun_site->solar,
-                                                   sun_excluded_sky_options(sim.ground_reflectance), ss.suns);
-      std::vector<std::size_t> other_steps;
-      std::vector<Vec3> other_directions;
-      for (const sky::SunRecord& sun : out.other_suns) {
-        other_steps.push_back(sun.step);
-        other_directions.push_back(sun.direction);
-      }
-      const std::string other_key =
-          direct_sun_key(scene_hash, grid, other_steps, other_directions, SunDirectSamples, sim.seed);
-      bool other_cached = false;
-      if (!ctx.settings.force) {
-        if (auto bytes = ctx.store.read("sun-direct", other_key)) {
-          try {
-            out.direct_other = decode_matrix(*bytes);
-            other_cached = out.direct_other.rows() == grid.points.size() &&
-                           out.direct_other.columns() == out.other_suns.size();
-          } catch (const std::exception&) {
-            // damaged: recompute
-          }
-        }
-      }
-      if (!other_cached) {
-        progress.start(prefix + "direct sun " + grid.name + " (export)", grid.points.size(), "sensors");
-        out.direct_other =
-            direct_sun_coefficients(scene, materials, grid.points, out.other_suns, SunDirectSamples, sim.seed);
-        ctx.store.write("sun-direct", other_key, encode_matrix(out.direct_other));
-        progress.advance(grid.points.size());
-        progress.end();
-      }
-      log.line(prefix + "direct sun " + grid.name + " for the export: " + std::to_string(out.other_suns.size()) +
-               " further daytime sun positions" + (other_cached ? " (cached)" : " traced"));
-    }
-  }
-  return result;
-}
-
-/// The point-in-time cases of one case (point_in_time.h) at every grid: point_in_time.csv per
-/// grid and each grid's summary.json `point_in_time` entries (`grids_json[g]`).
-void run_points_in_time(const project::Project& project, const std::string& prefix,
-                        const SceneDescription& description, const engine::Scene& scene,
-                        const std::vector<engine::Material>& materials,
-                        const std::vector<engine::ReceiverPlane>& planes, const std::vector<int>& plane_of_grid,
-                        const sky::PatchBasis& basis, const std::vector<RadianceMatrix>& sky_coefficients,
-                        const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx) {
-  const project::Simulation& sim = project.simulation;
-  const std::vector<project::PointInTimeSpec>& cases = project.points_in_time;
-  const bool weather_cases = std::any_of(cases.begin(), cases.end(), [](const project::PointInTimeSpec& c) {
-    return c.sky == project::PointSky::Weather;
-  });
-  const SkyAndSuns* annual = weather_cases ? &sky_and_suns(project, basis, ctx) : nullptr;
-  const project::Site& ps = project.site;
-  const sky::SolarSite site = ctx.sun_site ? ctx.sun_site->solar
-                                           : sky::SolarSite{ps.latitude_deg, ps.longitude_deg, ps.time_zone_h,
-                                                            ps.elevation_m};
-  const SkyAndSuns skies = point_in_time_skies(cases, site, basis, sim.ground_reflectance, annual);
-  for (const std::string& line : describe_points_in_time(cases, skies)) ctx.log.line(prefix + "point in time " + line);
-  std::vector<GridSun> sun;
-  std::optional<engine::SunBins> bins;
-  if (!skies.suns.empty()) {
-    std::vector<Vec3> directions;
-    for (const sky::SunRecord& s : skies.suns) directions.push_back(s.direction);
-    bins = engine::SunBins::for_suns(directions, sim.sun_mf);
-    sun = run_sun_bins(project, prefix + "point in time ", description, scene, materials, planes, plane_of_grid,
-                       skies, *bins, ctx);
-  }
-  std::vector<std::string> names;
-  for (const project::PointInTimeSpec& c : cases) names.push_back(c.name);
-  for (std::size_t g = 0; g < description.grids.size(); ++g) {
-    const SensorGrid& grid = description.grids[g];
-    metrics::IlluminanceTable table = annual_illuminance(sky_coefficients[g], skies.sky.matrix, skies.sky.steps);
-    if (bins) {
-      const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, skies.suns, skies.sky.steps);
-      const metrics::IlluminanceTable indirect =
-          indirect_sun_table(sun[g].bin_coefficients, *bins, skies.suns, skies.sky.steps);
-      for (std::size_t k = 0; k < table.step_count(); ++k)
-        for (std::size_t i = 0; i < table.sensor_count(); ++i)
-          table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + double(direct.lux(k, i)) +
-                                               double(indirect.lux(k, i)));
-    }
-    const std::string path = join(folders[g], "point_in_time.csv");
-    write_point_in_time_csv(grid.points, names, table, path);
-    ctx.outputs.record(path);
-    nlohmann::json entries = nlohmann::json::array();
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-      std::vector<double> values(table.sensor_count());
-      for (std::size_t i = 0; i < values.size(); ++i) values[i] = table.lux(k, i);
-      const GridStatistics st = grid_statistics(values, {});
-      add_point_in_time(ctx.results->grids[g], cases[k].name, project::point_sky_name(cases[k].sky), st);
-      entries.push_back({{"name", cases[k].name}, {"sky", project::point_sky_name(cases[k].sky)},
-                         {"illuminance_lux", {{"mean", st.mean}, {"median", st.median}, {"min", st.min},
-                                              {"max", st.max}, {"uniformity", st.uniformity}}}});
-    }
-    grids_json[g]["point_in_time"] = entries;
-    ctx.log.line(prefix + "point in time " + grid.name + ": " + std::to_string(cases.size()) + " case(s) at " +
-                 std::to_string(grid.points.size()) + " sensors");
-  }
-}
-
-/// What the operated result takes from one case (sun: bins), per grid in the case's order.
-struct CaseTables {
-  struct Grid {
-    std::string name;
-    std::vector<SensorPoint> sensors;
-    metrics::IlluminanceTable illuminance;  ///< the annual illuminance
-    metrics::IlluminanceTable direct_sun;   ///< direct-sun-only, zero-bounce (ASE's table)
-  };
-  std::vector<Grid> grids;
-};
-
-/// The sky coefficients of every grid by the accuracy rounds (accuracy_rounds.h) into
-/// `coefficients`; the rounds' outcome. Replaces the count-controlled photons and estimates.
-AccuracyOutcome accuracy_case(const project::Project& project, const std::string& prefix, const engine::Scene& scene,
-                              const std::vector<engine::Material>& materials, const engine::SourceSet& sources,
-                              const std::vector<engine::ReceiverPlane>& planes, const std::vector<int>& plane_of_grid,
-                              const std::vector<SensorGrid>& grids, const engine::TracingOptions& tracing,
-                              const engine::CoefficientOptions& estimating, const std::vector<std::string>& photon_keys,
-                              std::vector<std::optional<engine::DaylightCoefficients>>& coefficients, RunContext& ctx) {
-  const project::Simulation& sim = project.simulation;
-  const double rho_g = sim.ground_reflectance;
-  const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(OvercastHorizontalLux));
-  const RadianceMatrix overcast_vector = sky::sky_vector(
-      *overcast, basis_of(sim), sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, OvercastHorizontalLux, 0, {0, 0, -1}));
-  AccuracyCase c;
-  c.scene = &scene;
-  c.materials = &materials;
-  c.sources = &sources;
-  c.planes = &planes;
-  c.plane_of_grid = &plane_of_grid;
-  c.grids = &grids;
-  c.gather = sim.point_estimate == project::PointEstimate::Gather;
-  c.tracing = tracing;
-  c.estimating = estimating;
-  c.overcast_vector = &overcast_vector;
-  c.horizontal_illuminance_lux = OvercastHorizontalLux;
-  AccuracyGoal goal;
-  goal.target_percent = sim.accuracy->target_df_relative_stderr_percent;
-  goal.max_photons = sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons;
-  goal.max_seconds = sim.accuracy->max_seconds;
-  ctx.progress.start(prefix + "photons (accuracy rounds)", 1, "runs");
-  CaseAccuracy r = accuracy_coefficients(c, goal, ctx.store, ctx.settings.force, photon_keys,
-                                         [&](const std::string& line) { ctx.log.line(prefix + line); });
-  ctx.progress.advance(1);
-  ctx.progress.end();
-  if (r.cached) {
-    ctx.report.sources_cached += sources.size();
-    ctx.report.grids_cached += grids.size();
-  } else {
-    ctx.report.sources_traced += sources.size();
-    ctx.report.grids_estimated += grids.size();
-  }
-  for (std::size_t g = 0; g < grids.size(); ++g) {
-    coefficients[g] = std::move(r.coefficients[g]);
-    ctx.log.line(prefix + "accuracy " + grids[g].name + ": " + accuracy_sentence(r.outcome, g));
-  }
-  return r.outcome;
 }
 
 /// One case: photons, coefficients, daylight factor, annual results, into `dir`/<grid>/.
@@ -748,144 +121,45 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   std::vector<engine::Material> materials;
   for (const MaterialSpec& m : description.materials)
     materials.push_back(engine::Material::from_spec(m));
-  const sky::PatchBasis basis = basis_of(sim);
+  const SimulationPlan& plan = ctx.plan;
+  const sky::PatchBasis& basis = plan.basis;
   set_plan_geometry(*ctx.results, description);
   set_building(*ctx.results, project, description);
   const engine::SourceSet sources = engine::SourceSet::sky_bins(basis);
-  std::vector<engine::ReceiverPlane> planes;
-  std::vector<int> plane_of_grid;
-  for (const SensorGrid& g : description.grids) {
-    if (g.planar) {
-      plane_of_grid.push_back(static_cast<int>(planes.size()));
-      planes.push_back(engine::ReceiverPlane::from_grid(g));
-    } else {
-      plane_of_grid.push_back(-1);
-    }
-  }
+  const CaseLayout layout = CaseLayout::of(description.grids);
+  const CaseScene cs{description, scene, materials, layout, scene_key(description), planes_key(description.grids)};
   progress.advance(1);
   progress.end();
 
-  // Keys: photons per source, coefficients per grid.
-  engine::TracingOptions tracing = tracing_options(project, sources.size());
-  tracing.keep_surface_photons =
-      std::any_of(plane_of_grid.begin(), plane_of_grid.end(), [](int p) { return p < 0; });
-  tracing.store_direct_on_surfaces =
-      tracing.keep_surface_photons && sim.point_estimate == project::PointEstimate::Gather;
-  const engine::CoefficientOptions estimating = coefficient_options(sim);
-  const ContentHash scene_hash = scene_key(description);
-  const ContentHash planes_hash = planes_key(description.grids);
-  std::vector<std::string> photon_keys(sources.size());
-  for (std::size_t p = 0; p < sources.size(); ++p)
-    photon_keys[p] = photon_source_key(scene_hash, planes_hash, basis, p, tracing);
-  std::vector<std::string> grid_keys;
+  // 2-3. Photons, one cached step per source, and coefficients, one cached step per grid
+  // (sky_coefficient_steps.h); or, with an accuracy target, rounds until the daylight factors
+  // reach it (accuracy_rounds.h).
+  const engine::TracingOptions tracing = plan.tracing_for(plan.sky_tracing, layout);
+  const std::vector<std::string> photon_keys = sky_photon_keys(cs, basis, sources.size(), tracing);
   std::vector<std::optional<engine::DaylightCoefficients>> coefficients(description.grids.size());
-  bool all_grids_cached = true;
-  for (std::size_t g = 0; g < description.grids.size(); ++g) {
-    grid_keys.push_back(coefficients_key(photon_keys, description.grids[g], estimating));
-    if (!ctx.settings.force) {
-      if (auto bytes = ctx.store.read("coefficients", grid_keys[g])) {
-        try {
-          coefficients[g] = decode_coefficients(*bytes);
-        } catch (const std::exception&) {
-          coefficients[g].reset();  // damaged: recompute
-        }
-      }
-    }
-    all_grids_cached = all_grids_cached && coefficients[g].has_value();
-  }
-
-  // 2. Photons (only if some grid needs estimating), one cached artefact per source; or,
-  // with an accuracy target, rounds until the daylight factors reach it (accuracy_rounds.h).
-  report.sources += sources.size();
-  engine::TracedPhotons photons;
   std::optional<AccuracyOutcome> accuracy;
   if (sim.accuracy) {
-    accuracy = accuracy_case(project, prefix, scene, materials, sources, planes, plane_of_grid, description.grids,
-                             tracing, estimating, photon_keys, coefficients, ctx);
-  } else if (all_grids_cached) {
-    progress.cached(prefix + "photons");
-    report.sources_cached += sources.size();
-    log.line(prefix + "photons: traced 0 of " + std::to_string(sources.size()) +
-             " sources (not needed: every grid's coefficients are cached)");
+    accuracy = accuracy_sky_coefficients(project, cs, sources, tracing, photon_keys, prefix, ctx, coefficients);
   } else {
-    progress.start(prefix + "photons", sources.size(), "sources");
-    const engine::PortEmitter emitter(scene, sources);
-    std::vector<engine::TracedPhotons> per_source(sources.size());
-    std::vector<char> traced(sources.size(), 0);
-    tbb::parallel_for(std::size_t(0), sources.size(), [&](std::size_t p) {
-      if (!ctx.settings.force) {
-        if (auto bytes = ctx.store.read("photons", photon_keys[p])) {
-          try {
-            per_source[p] = decode_photons(*bytes);
-            progress.advance(1);
-            return;
-          } catch (const std::exception&) {
-            // damaged: trace again
-          }
-        }
-      }
-      per_source[p] = engine::trace_source_photons(scene, materials, emitter, planes, tracing, p);
-      ctx.store.write("photons", photon_keys[p], encode_photons(per_source[p]));
-      traced[p] = 1;
-      progress.advance(1);
-    });
-    progress.end();
-    std::size_t n_traced = 0;
-    for (char t : traced) n_traced += t ? 1 : 0;
-    report.sources_traced += n_traced;
-    report.sources_cached += sources.size() - n_traced;
-    log.line(prefix + "photons: traced " + std::to_string(n_traced) + " of " +
-             std::to_string(sources.size()) + " sources (" +
-             std::to_string(sources.size() - n_traced) + " cached)");
-    photons = engine::merge_traced_photons(std::move(per_source));
-    for (const std::string& note : {capped_note(photons, tracing, "sources"), nothing_stored_note(photons, "sources")})
-      if (!note.empty()) log.line(prefix + "photons: " + note);
-    for (const engine::SourceTally& t : photons.tallies) report.sources_capped += t.capped ? 1 : 0;
+    sky_coefficients(cs, sources, tracing, photon_keys, prefix, ctx, coefficients);
   }
-
-  // 3. Coefficients per grid (the accuracy rounds made them already).
-  for (std::size_t g = 0; !accuracy && g < description.grids.size(); ++g) {
-    const SensorGrid& grid = description.grids[g];
-    if (coefficients[g]) {
-      ++report.grids_cached;
-      progress.cached(prefix + "coefficients " + grid.name);
-      log.line(prefix + "coefficients " + grid.name + ": cached");
-      continue;
-    }
-    progress.start(prefix + "coefficients " + grid.name, grid.points.size(), "sensors");
-    const engine::GridPhotons grid_photons =
-        grid_photons_for(plane_of_grid[g], planes, photons, sources.size(), sim.point_estimate);
-    coefficients[g] = engine::daylight_coefficients(scene, materials, sources, grid_photons,
-                                                    grid.points, estimating);
-    ctx.store.write("coefficients", grid_keys[g], encode_coefficients(*coefficients[g]));
-    progress.advance(grid.points.size());
-    progress.end();
-    ++report.grids_estimated;
-    log.line(prefix + "coefficients " + grid.name + ": estimated at " +
-             std::to_string(grid.points.size()) + " sensors");
-  }
-  photons = engine::TracedPhotons{};  // no longer needed
 
   // 4. Daylight factor and coefficient export per grid.
-  const auto overcast =
-      sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(OvercastHorizontalLux));
-  const double rho_g = sim.ground_reflectance;
-  const RadianceMatrix overcast_vector = sky::sky_vector(
-      *overcast, basis, sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, OvercastHorizontalLux, 0, {0, 0, -1}));
+  const RadianceMatrix overcast_vector = plan.daylight_factor_sky();
   const MatrixFormat matrix_format = parse_matrix_format(project.outputs.matrix_format);
   nlohmann::json grids_json = nlohmann::json::array();
   std::vector<RadianceMatrix> coefficient_matrices;
   std::vector<std::string> folders;
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
-    const std::string folder = join(dir, grid.name);
+    const std::string folder = join_path(dir, grid.name);
     fs::create_directories(folder);
     folders.push_back(folder);
     report.grids.push_back({label.empty() ? grid.name : label + "/" + grid.name, grid.points.size(), folder});
     coefficient_matrices.push_back(coefficients[g]->to_matrix());
     const RadianceMatrix& c = coefficient_matrices.back();
-    write_sensors_csv(grid.points, join(folder, "sensors.csv"));
-    ctx.outputs.record(join(folder, "sensors.csv"));
+    write_sensors_csv(grid.points, join_path(folder, "sensors.csv"));
+    ctx.outputs.record(join_path(folder, "sensors.csv"));
     nlohmann::json gj = {{"name", grid.name}, {"sensors", grid.points.size()}, {"folder", folder}};
     ctx.results->grids.push_back(results_grid(grid, relative_folder(report.output_dir, folder), *ctx.results,
                                               placement.sets[g].dropped ? placement.sets[g].outside : 0,
@@ -894,19 +168,19 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       gj["dropped_sensors"] = {{"outside_rooms", placement.sets[g].outside},
                                {"inside_solid", placement.sets[g].inside_solid}};
     if (project.outputs.coefficients) {
-      c.write_file(join(folder, "coefficients_sky.mtx"), matrix_format);
-      ctx.outputs.record(join(folder, "coefficients_sky.mtx"));
+      c.write_file(join_path(folder, "coefficients_sky.mtx"), matrix_format);
+      ctx.outputs.record(join_path(folder, "coefficients_sky.mtx"));
     }
     if (project.outputs.daylight_factor) {
-      const std::vector<double> df = daylight_factor_percent(c, overcast_vector, OvercastHorizontalLux);
+      const std::vector<double> df = daylight_factor_percent(c, overcast_vector, plan.overcast_horizontal_lux);
       // The Monte Carlo standard error beside each value (engine/estimate_variance.h).
       const engine::DaylightCoefficients& dc = *coefficients[g];
       std::vector<double> variance(dc.sensors * dc.sources);
       for (std::size_t i = 0; i < variance.size(); ++i) variance[i] = dc.direct_variance[i] + dc.photon_variance[i];
       const std::vector<double> df_stderr =
-          daylight_factor_stderr_percent(variance, dc.sensors, overcast_vector, OvercastHorizontalLux);
-      write_daylight_factor_csv(grid.points, df, join(folder, "daylight_factor.csv"), df_stderr);
-      ctx.outputs.record(join(folder, "daylight_factor.csv"));
+          daylight_factor_stderr_percent(variance, dc.sensors, overcast_vector, plan.overcast_horizontal_lux);
+      write_daylight_factor_csv(grid.points, df, join_path(folder, "daylight_factor.csv"), df_stderr);
+      ctx.outputs.record(join_path(folder, "daylight_factor.csv"));
       const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent);
       nlohmann::json areas = nlohmann::json::array();
       for (const auto& [threshold, area] : st.area_at_or_above_percent)
@@ -950,37 +224,35 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     // Nothing annual: no sky matrix, no sun (the loader turned the annual outputs off).
   } else if (sun_bins && (annual || project.outputs.coefficients)) {
     // Sun bins: sky-only matrix + exact direct sun + interpolated indirect sun.
-    const SkyAndSuns& ss = sky_and_suns(project, basis, ctx);
+    const SkyAndSuns& ss = sky_and_suns(project, ctx);
     std::vector<Vec3> directions;
     for (const sky::SunRecord& sun : ss.suns) directions.push_back(sun.direction);
     const engine::SunBins bins = engine::SunBins::for_suns(directions, sim.sun_mf);
-    const std::vector<GridSun> sun =
-        run_sun_bins(project, prefix, description, scene, materials, planes, plane_of_grid, ss, bins, ctx,
-                     project.outputs.coefficients);
+    const std::vector<GridSun> sun = run_sun_bins(project, prefix, cs, ss, bins, ctx, project.outputs.coefficients);
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       if (project.outputs.coefficients) {
         RadianceMatrix c = sun[g].bin_coefficients;
         c.header_lines().push_back("dayphoton sun-bin coefficients: caustic + global irradiance per unit "
                                    "disc radiance; columns = rows of sun_bins.csv");
-        c.write_file(join(folders[g], "coefficients_sun.mtx"), matrix_format);
-        write_sun_bins_csv(bins, ss.suns, join(folders[g], "sun_bins.csv"));
-        ctx.outputs.record({join(folders[g], "coefficients_sun.mtx"), join(folders[g], "sun_bins.csv")});
+        c.write_file(join_path(folders[g], "coefficients_sun.mtx"), matrix_format);
+        write_sun_bins_csv(bins, ss.suns, join_path(folders[g], "sun_bins.csv"));
+        ctx.outputs.record({join_path(folders[g], "coefficients_sun.mtx"), join_path(folders[g], "sun_bins.csv")});
         DirectSunExport exported = make_direct_sun_export({{&sun[g].direct, &ss.suns}, {&sun[g].direct_other, &sun[g].other_suns}});
         exported.sun_bins_mf = bins.multiplication_factor();
         exported.seed = sim.seed;
-        exported.samples = SunDirectSamples;
+        exported.samples = plan.sun_direct_samples;
         exported.site = sun_site_sentence(*ctx.sun_site);
         exported.weather = project.weather.path;
-        write_direct_sun_file(exported, join(folders[g], DirectSunFileName));
-        ctx.outputs.record(join(folders[g], DirectSunFileName));
+        write_direct_sun_file(exported, join_path(folders[g], DirectSunFileName));
+        ctx.outputs.record(join_path(folders[g], DirectSunFileName));
         // The same sun on RADIANCE's patch basis, for gendaymtx -d (radiance_sun_matrix.h).
         std::vector<sky::SunRecord> daytime = ss.suns;
         daytime.insert(daytime.end(), sun[g].other_suns.begin(), sun[g].other_suns.end());
-        const std::string d_path = join(folders[g], radiance_sun_matrix_name(bins.multiplication_factor()));
-        log.line(prefix + write_radiance_sun_matrix(scene, materials, grid, scene_key(description), bins,
-                                                    sun[g].bin_coefficients, daytime, SunDirectSamples, sim.seed,
-                                                    ctx.store, d_path, matrix_format));
+        const std::string d_path = join_path(folders[g], radiance_sun_matrix_name(bins.multiplication_factor()));
+        log.line(prefix + write_radiance_sun_matrix(scene, materials, grid, cs.scene_hash, bins,
+                                                    sun[g].bin_coefficients, daytime, plan.sun_direct_samples,
+                                                    sim.seed, ctx.executor, d_path, matrix_format));
         ctx.outputs.record(d_path);
       }
       if (!annual) continue;
@@ -1004,7 +276,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
     }
   } else if (annual) {
-    const AnnualSky& sky = annual_sky(project, basis, ctx);
+    const AnnualSky& sky = annual_sky(project, ctx);
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
@@ -1024,58 +296,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   }
   // 7. Point-in-time cases.
   if (!project.points_in_time.empty())
-    run_points_in_time(project, prefix, description, scene, materials, planes, plane_of_grid, basis,
-                       coefficient_matrices, folders, grids_json, ctx);
+    run_points_in_time(project, prefix, cs, coefficient_matrices, folders, grids_json, ctx);
   return grids_json;
-}
-
-/// The operated result (operated_shading.h) of every grid into `dir`/<grid>/: the files of an
-/// annual case (sensors, illuminance, metrics) plus shading_schedule.csv and operation.json.
-/// Returns summary.json's `operated` object.
-nlohmann::json run_operated(const project::Project& project, const project::OperationSpec& op,
-                            const CaseTables& open, const CaseTables& shaded, const std::string& dir,
-                            RunContext& ctx) {
-  const SkyAndSuns& ss = *ctx.sky_and_suns;  // both cases' annual step built it
-  const AnnualOutputs which = annual_outputs_of(project);
-  ShadingRule rule;
-  rule.direct_sun_threshold_lux = op.direct_sun_threshold_lux;
-  rule.sunlit_limit_percent = op.sunlit_limit_percent;
-  const std::string open_name = op.open.value, shaded_name = op.shaded.value;
-  nlohmann::json grids = nlohmann::json::array();
-  for (std::size_t g = 0; g < open.grids.size(); ++g) {
-    const CaseTables::Grid& o = open.grids[g];
-    const CaseTables::Grid& c = shaded.grids.at(g);  // the same grids: variants share the sensors
-    const AnnualStudySettings settings = annual_settings_of(project, ctx.weather, o.name);
-    const std::string folder = join(dir, o.name);
-    ctx.progress.start("operated " + o.name, o.illuminance.step_count(), "hours");
-    const OperatedStudy operated = compute_operated_study(
-        o.illuminance, c.illuminance, o.direct_sun, rule, settings, ss.sky.daylight_hours_quantity,
-        ss.sky.daylight_hours_source,
-        "operated shading: per hour '" + shaded_name + "' when more than " + format_number(rule.sunlit_limit_percent) +
-            " % of the sensors see direct sun in '" + open_name + "', else '" + open_name + "'; " + ss.sky.description);
-    std::filesystem::create_directories(folder);
-    write_sensors_csv(o.sensors, join(folder, "sensors.csv"));
-    ctx.outputs.record(join(folder, "sensors.csv"));
-    ctx.outputs.record(write_annual_outputs(operated.study, o.sensors, settings, folder, which));
-    write_shading_schedule_csv(operated, join(folder, "shading_schedule.csv"));
-    const std::string operation = operation_json(operated, rule, open_name, shaded_name);
-    write_file_atomically(join(folder, "operation.json"), operation + "\n");
-    ctx.outputs.record({join(folder, "shading_schedule.csv"), join(folder, "operation.json")});
-    ctx.progress.advance(o.illuminance.step_count());
-    ctx.progress.end();
-    ctx.log.line("operated " + o.name + ": '" + shaded_name + "' in " + std::to_string(operated.schedule.shaded_steps()) +
-                 " of " + std::to_string(operated.schedule.shaded.size()) + " hours (" +
-                 std::to_string(operated.shaded_occupied_hours) + " of " +
-                 std::to_string(operated.study.occupied_hours) + " occupied), '" + open_name + "' otherwise");
-    ctx.report.grids.push_back({"operated/" + o.name, o.sensors.size(), folder});
-    add_operated_grid(*ctx.results, o.name, relative_folder(ctx.report.output_dir, folder), operated.study, settings, which);
-    grids.push_back({{"name", o.name},
-                     {"sensors", o.sensors.size()},
-                     {"folder", folder},
-                     {"annual", nlohmann::json::parse(grid_metrics_json(operated.study, settings))},
-                     {"operation", nlohmann::json::parse(operation)}});
-  }
-  return {{"open", open_name}, {"shaded", shaded_name}, {"folder", dir}, {"grids", grids}};
 }
 
 }  // namespace
@@ -1113,7 +335,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   const std::string this_run = lock.owner().describe();
   OutputManifest outputs = OutputManifest::begin(report.output_dir, this_run);
   const ArtifactStore store(cache_dir);
-  RunLog log(progress, join(report.output_dir, "run.log"));
+  RunLog log(progress, join_path(report.output_dir, "run.log"));
   log.line("project " + project.path + " -> " + report.output_dir);
   log.quiet_line("run: " + this_run);
   log.quiet_line("cache: " + cache_dir);
@@ -1162,7 +384,11 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     return nullptr;
   };
 
-  RunContext ctx{settings, progress, log, report, store, outputs, std::nullopt, std::nullopt,
+  // The plan, built once (simulation_plan.h), and the executor every cached step goes
+  // through (step_executor.h).
+  const SimulationPlan plan = SimulationPlan::of(project);
+  const std::unique_ptr<StepExecutor> executor = make_local_executor(store, settings.force);
+  RunContext ctx{settings, progress, log, report, store, outputs, plan, *executor, std::nullopt, std::nullopt,
                  weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
   // The project as written is the base case, in <output>/<grid>/; each variant is studied
   // in addition, in <output>/variants/<variant>/<grid>/ (a folder no grid name can clash with).
@@ -1171,7 +397,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   nlohmann::json grids = run_case(project, "", report.output_dir, ctx, keep(project::BaseCaseName));
   nlohmann::json variants = nlohmann::json::array();
   for (const project::VariantSpec& v : project.variants) {
-    const std::string dir = join(join(report.output_dir, "variants"), v.name);
+    const std::string dir = join_path(join_path(report.output_dir, "variants"), v.name);
     const std::vector<std::string> changes = project::variant_changes(v);
     std::string listed;
     for (const std::string& c : changes) listed += (listed.empty() ? "" : ", ") + c;
@@ -1189,7 +415,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     CaseResult shading = operated_case(cases.front(), "operated (" + op->open.value + "/" + op->shaded.value + ")",
                                        "operated");
     ctx.results = &shading;
-    operated = run_operated(project, *op, open_tables, shaded_tables, join(report.output_dir, "operated"), ctx);
+    operated = run_operated(project, *op, open_tables, shaded_tables, join_path(report.output_dir, "operated"), ctx);
     cases.push_back(std::move(shading));
   } else if (op) {
     log.line("operated: skipped (no annual results)");
@@ -1207,7 +433,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
       {"simulation", {{"basis", sim.basis == project::SkyBasis::Tregenza ? "tregenza" : "reinhart"},
                       {"reinhart_mf", sim.basis == project::SkyBasis::Tregenza ? 1 : sim.reinhart_mf},
                       {"photons_per_bin", sim.photons_per_bin},
-                      {"ground_photon_factor", GroundPhotonFactor},
+                      {"ground_photon_factor", plan.ground_photon_factor},
                       {"bandwidth", sim.bandwidth},
                       {"direct_samples_per_bin", sim.direct_samples_per_bin},
                       {"caustic_photons_per_bin", sim.caustic_photons_per_bin},
@@ -1238,9 +464,9 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     summary["simulation"].erase("annual_sky");
   } else if (sim.sun == project::SunMode::Bins) {
     summary["simulation"]["sun_mf"] = sim.sun_mf;
-    summary["simulation"]["sun_photons_per_bin"] = sun_tracing_options(project, true).photons_per_source;
-    summary["simulation"]["sun_bandwidth"] = sun_bin_bandwidth(static_cast<std::size_t>(sim.bandwidth));
-    summary["simulation"]["sun_direct_samples"] = SunDirectSamples;
+    summary["simulation"]["sun_photons_per_bin"] = plan.sun_tracing.photons_per_source;
+    summary["simulation"]["sun_bandwidth"] = plan.sun_estimating.density.bandwidth;
+    summary["simulation"]["sun_direct_samples"] = plan.sun_direct_samples;
   }
   // 7b. The run's history goes to the log only (a repeated run must write the same results).
   log.quiet_line("cache: traced " + std::to_string(report.sources_traced) + " of " + std::to_string(report.sources) +
@@ -1275,7 +501,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     files.push_back({{"path", e.path}, {"bytes", e.bytes}, {"sha256", e.sha256}});
   summary["files"] = files;
   write_used_list(store);  // what `dayphoton clean` keeps (cache_folder.h)
-  write_file_atomically(join(report.output_dir, OutputManifest::SummaryName), json_text(summary) + "\n");
+  write_file_atomically(join_path(report.output_dir, OutputManifest::SummaryName), json_text(summary) + "\n");
   outputs.finish();
   log.quiet_line("complete: " + std::string(OutputManifest::SummaryName) + " lists " + std::to_string(files.size()) +
                  " output files");

@@ -129,19 +129,19 @@ struct AccuracyResult {
 AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
                                    const std::function<void(const std::string&)>& log);
 
-class ArtifactStore;
+class StepExecutor;
 
-/// The case's coefficients and outcome: from the cache (kinds "coefficients" and "accuracy")
-/// when a run with the same inputs, goal and photon keys made them and `force` is false,
-/// else by run_accuracy_rounds, then cached. `photon_keys` are the count-controlled run's keys
+/// The case's coefficients and outcome, one step of the plan (step_executor.h): from the
+/// cache (kinds "coefficients" and "accuracy") when a run with the same inputs, goal and photon
+/// keys made them and the executor does not force, else by run_accuracy_rounds, then cached. `photon_keys` are the count-controlled run's keys
 /// of the sources; the goal and the rounds' policy constants are added to them.
 struct CaseAccuracy {
   std::vector<engine::DaylightCoefficients> coefficients;
   AccuracyOutcome outcome;
   bool cached = false;
 };
-CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& goal, const ArtifactStore& store,
-                                   bool force, const std::vector<std::string>& photon_keys,
+CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& goal, StepExecutor& executor,
+                                   const std::vector<std::string>& photon_keys,
                                    const std::function<void(const std::string&)>& log);
 
 /// The sentence of the report and the run log: "DF relative standard error (95th percentile)

@@ -34,32 +34,13 @@
 #include "dayphoton/metrics/illuminance_table.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/study/annual_study.h"
+#include "dayphoton/study/plan_policy.h"
 #include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::study {
 
-/// Shadow rays per hour and sensor for the direct sun. The disc is 1/800 of a Tregenza
-/// patch, so T cos is constant over it except at a shadow edge; a 4 x 4 stratification puts
-/// the penumbra (about 3 cm wide 3 m behind a window edge) into 4 stripes. A sensor in a
-/// penumbra then errs by at most one stratum's share, 1/4 of the edge strata it crosses.
-constexpr int SunDirectSamples = 16;
-
-/// Stored photons of a sun bin relative to a sky bin (photons_per_bin). The sun bins are
-/// many (about 1000 for MF 6 in the office) and an hour's sun averages up to 4 of them, so
-/// each needs fewer photons than a sky bin for the same hourly noise; the measured trade
-/// of time against the error of the annual illuminance is in docs/sun.md.
-constexpr double SunBinPhotonFraction = 0.1;
-
-/// A sun bin is traced only if its emission bound (engine::PortEmitter::bound_flux, an upper
-/// bound of the flux its disc sends through the ports per unit radiance) is at least this
-/// fraction of the largest bin's. The others get zero coefficients: the light they could
-/// bring in is below 1 % of the brightest bin's, and what they do bring arrives at grazing
-/// incidence. Without the rule, the bins whose disc straddles a window's plane (azimuth
-/// exactly along a facade: bound 2.4e-6 against 2.4e-4, and glass that reflects nearly all of
-/// it) take 10-50 s each in the office: 2e8 emission attempts for 10^4 stored photons.
-constexpr double SunBinMinimumBoundFraction = 0.01;
-
-/// Which bins of `emitter` (built on SunBins::sources) to trace under that rule.
+/// Which bins of `emitter` (built on SunBins::sources) to trace under the rule of
+/// SunBinMinimumBoundFraction (plan_policy.h).
 std::vector<char> sun_bins_to_trace(const engine::PortEmitter& emitter, std::size_t bins);
 
 /// The forward pass of sun bin `bin` ALONE: a set of one disc at its centre, traced with the
@@ -81,24 +62,14 @@ void relabel_photons(engine::TracedPhotons& photons, std::uint32_t source);
 
 /// trace_sun_bin for every bin to trace (parallel over bins), labelled with their bin index;
 /// skipped bins give no photons and a zero tally. The layout of engine::trace_photons. For
-/// tests and benches: the pipeline caches each bin's photons itself (study_runner.cpp).
+/// tests and benches: the pipeline caches each bin's photons itself (sun_bin_steps.cpp).
 engine::TracedPhotons trace_sun_bins(const engine::Scene& scene,
                                      const std::vector<engine::Material>& materials,
                                      const engine::SunBins& bins,
                                      const std::vector<engine::ReceiverPlane>& planes,
                                      const engine::TracingOptions& options);
 
-/// Nearest photons per sun-bin estimate relative to the project's bandwidth (at least
-/// SunBinMinimumBandwidth). A sun bin has a tenth of a sky bin's photons, so with the sky's
-/// bandwidth its kernel would be sqrt(10) times wider; in the office that bias reached +5 %
-/// in the middle of the room and -9 % at the back wall (a convex decay, which a local-linear
-/// fit over a one-sided disc underestimates). A quarter of the bandwidth keeps the kernel
-/// 1.6 times the sky's: per-row bias -2.4 to +3.5 % against 10 times the photons, for
-/// 25 % more noise per hour, which the annual sums average out (docs/sun.md).
-constexpr double SunBinBandwidthFraction = 0.25;
-constexpr std::size_t SunBinMinimumBandwidth = 16;
-
-/// The sun bins' bandwidth for a project bandwidth.
+/// The sun bins' bandwidth for a project bandwidth (SunBinBandwidthFraction, plan_policy.h).
 std::size_t sun_bin_bandwidth(std::size_t bandwidth);
 
 /// The annual sky without the sun and the hourly suns that go with it.

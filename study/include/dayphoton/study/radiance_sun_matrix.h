@@ -31,7 +31,7 @@
 #include "dayphoton/engine/sun_bins.h"
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/sky_matrix.h"
-#include "dayphoton/study/artifact_store.h"
+#include "dayphoton/study/step_executor.h"
 #include "dayphoton/study/content_hash.h"
 
 namespace dayphoton::study {
@@ -66,14 +66,14 @@ RadianceSunMatrix radiance_sun_matrix(const std::vector<int>& patches, const Rad
 
 /// For one grid of a sun-bins run with outputs.coefficients: the patches of the site's daytime
 /// suns (`daytime_suns`: every daytime position, with or without direct light), their direct
-/// sun (cached in `store` as kind "sun-direct"), D, written to `path` in `format` with a
+/// sun (a cached step of the executor, kind "sun-direct"), D, written to `path` in `format` with a
 /// header saying what it is. Returns a line for the run log (patches, how many without a bin,
 /// traced or cached).
 std::string write_radiance_sun_matrix(const engine::Scene& scene, const std::vector<engine::Material>& materials,
                                       const SensorGrid& grid, const ContentHash& scene_hash,
                                       const engine::SunBins& bins, const RadianceMatrix& bin_coefficients,
                                       const std::vector<sky::SunRecord>& daytime_suns, int samples,
-                                      std::uint64_t seed, const ArtifactStore& store, const std::string& path,
+                                      std::uint64_t seed, StepExecutor& executor, const std::string& path,
                                       MatrixFormat format);
 
 }  // namespace dayphoton::study

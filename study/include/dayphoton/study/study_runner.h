@@ -1,7 +1,9 @@
 // run_study: one project from file to results (issue 5; DESIGN.md sections 1, 2 and 6).
 //
-// Steps, each cached in <output>/.cache by the hash of its inputs (cache_keys.h) and each
-// written atomically, so an interrupted run resumes from what it had finished:
+// Steps, each cached in the cache folder by the hash of its inputs (cache_keys.h) and each
+// written atomically, so an interrupted run resumes from what it had finished. The options
+// come from one SimulationPlan (simulation_plan.h) and every cached step goes through one
+// StepExecutor (step_executor.h); docs/architecture.md "Plan and executor":
 //   1. scene      : project -> SceneDescription -> Embree scene, materials, sources
 //   2. photons    : the forward pass, ONE CACHED ARTEFACT PER SOURCE (a killed run loses at
 //                   most the sources in flight)

@@ -1,0 +1,76 @@
+// SimulationPlan: what a run computes and how, built once from the project: the sky basis,
+// the tracing and estimate options of the sky sources and of the sun bins, with every policy
+// constant (plan_policy.h) applied here and nowhere else. `dayphoton run` and `annual` take
+// their options from it (study_runner.cpp and the step files it calls), `dayphoton render`
+// its sky-source photon allocation (sky_photon_factors).
+//
+// A case of the run (the base project, each variant) adds what its scene decides: the
+// receiver planes of its planar grids (CaseLayout), hence whether surface photons are kept,
+// and the cache keys of its steps (cache_keys.h). The steps themselves (plan_step.h) are made
+// by the phase that runs them: sky_coefficient_steps.h (photons of the sky sources, sky
+// coefficients per grid) and sun_bin_steps.h (photons of the sun bins, sun coefficients and
+// direct sun per grid); each phase hands its independent steps to the StepExecutor
+// (step_executor.h) as one batch.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/engine/daylight_coefficients.h"
+#include "dayphoton/engine/photon_tracer.h"
+#include "dayphoton/engine/receiver_plane.h"
+#include "dayphoton/project/project.h"
+#include "dayphoton/sky/patch_basis.h"
+#include "dayphoton/study/plan_policy.h"
+
+namespace dayphoton::study {
+
+/// The receiver planes of a case's grids: planar grids are estimated from their plane's
+/// crossings, the others (walls, points) from the photons stored on surfaces.
+struct CaseLayout {
+  std::vector<engine::ReceiverPlane> planes;
+  std::vector<int> plane_of_grid;  ///< per grid its plane, or -1
+  bool keep_surface_photons = false;  ///< some grid is not planar
+
+  static CaseLayout of(const std::vector<SensorGrid>& grids);
+};
+
+struct SimulationPlan {
+  sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  project::PointEstimate point_estimate = project::PointEstimate::Surface;
+  std::uint64_t seed = 1;
+  /// The sky sources' photons (ground bin GroundPhotonFactor times a sky bin's), for a case
+  /// without surface photons (tracing_for adds them).
+  engine::TracingOptions sky_tracing;
+  engine::CoefficientOptions sky_estimating;
+  /// The sun bins' photons (SunBinPhotonFraction of a sky bin's), without surface photons.
+  engine::TracingOptions sun_tracing;
+  /// The sky's estimate options with the sun bins' bandwidth (SunBinBandwidthFraction).
+  engine::CoefficientOptions sun_estimating;
+  int sun_direct_samples = SunDirectSamples;
+  double sun_bin_minimum_bound_fraction = SunBinMinimumBoundFraction;
+  double overcast_horizontal_lux = OvercastHorizontalLux;
+  double ground_photon_factor = GroundPhotonFactor;
+  double ground_reflectance = 0.2;  ///< simulation.ground_reflectance
+
+  static SimulationPlan of(const project::Project& project);
+
+  /// The daylight-factor sky as a vector over the basis: CIE overcast of
+  /// overcast_horizontal_lux, the ground of ground_reflectance (1 x bins x RGB).
+  RadianceMatrix daylight_factor_sky() const;
+
+  /// `base` (sky_tracing or sun_tracing) for a case: surface photons kept when some grid is
+  /// not planar, and with them the direct hits for a final gather.
+  engine::TracingOptions tracing_for(const engine::TracingOptions& base, const CaseLayout& layout) const;
+};
+
+/// Photons per source relative to a sky bin for the `sources` sources of a sky basis (bin 0
+/// the ground): GroundPhotonFactor for the ground, 1 for the sky.
+std::vector<double> sky_photon_factors(std::size_t sources);
+
+/// The project's sky basis (Tregenza or Reinhart MF).
+sky::PatchBasis basis_of(const project::Simulation& sim);
+
+}  // namespace dayphoton::study

@@ -1,0 +1,66 @@
+// StepExecutor: the one seam through which a run's steps (plan_step.h) meet the cache
+// (artifact_store.h): a step's artefacts are looked up, and only when one is missing,
+// damaged or does not fit is the step computed and its artefacts stored. This is the only
+// place of the pipeline that writes the try-load / decode / recompute / store pattern.
+//
+// Independent steps of a phase (the photons of a case's sources, of its sun bins) are handed
+// over as one BATCH. The local executor runs a batch over its steps with TBB, as the run did
+// before there was a seam; results do not depend on the thread count (each step is a pure
+// function of its inputs, and results are kept per step, in step order).
+//
+// Where a distributed executor plugs in (docs/architecture.md, "Plan and executor"): a
+// subclass overriding run_batch. Rank 0 looks every step up; the misses are shared out over
+// the ranks, each rank runs compute() of its share and sends the returned bytes to rank 0,
+// which take()s them in step order and stores them; the other ranks write nothing.
+// lookup() and store() below are what such an executor reuses.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dayphoton/study/artifact_store.h"
+#include "dayphoton/study/plan_step.h"
+
+namespace dayphoton::study {
+
+class StepExecutor {
+ public:
+  /// `force`: ignore the cache (every step is computed; its artefacts are still stored).
+  StepExecutor(const ArtifactStore& store, bool force) : m_store(store), m_force(force) {}
+  virtual ~StepExecutor() = default;
+  StepExecutor(const StepExecutor&) = delete;
+  StepExecutor& operator=(const StepExecutor&) = delete;
+
+  /// Called once per step of a batch as it finishes, from any thread: its index in the batch
+  /// and whether it was computed (false: it came from the cache).
+  using StepDone = std::function<void(std::size_t index, bool computed)>;
+
+  /// Runs a batch of independent steps: each one's artefacts from the cache when every one
+  /// is intact and the step takes them, else computed and stored. Returns per step whether it
+  /// was computed (1) or cached (0). Throws what a step's compute throws.
+  virtual std::vector<char> run_batch(const std::vector<Step>& steps, const StepDone& done = {}) = 0;
+
+  /// One step (a batch of one); true if it was computed.
+  bool run(const Step& step);
+
+  /// The step's artefacts from the cache, taken by the step: true if every one was intact
+  /// and the step took them. Never computes; always false with `force`.
+  bool lookup(const Step& step) const;
+
+ protected:
+  /// Stores the bytes of a step's outputs (one per output, in order).
+  void store(const Step& step, const std::vector<std::string>& bytes) const;
+  /// lookup, else compute and store: the whole pattern for a step run in this process.
+  bool run_here(const Step& step) const;
+
+  const ArtifactStore& m_store;
+  const bool m_force;
+};
+
+/// The executor of one process: a batch's steps in parallel over this machine's cores (TBB).
+std::unique_ptr<StepExecutor> make_local_executor(const ArtifactStore& store, bool force);
+
+}  // namespace dayphoton::study

@@ -1,0 +1,21 @@
+// The point-in-time cases of one case of a run (point_in_time.h): their skies, the sun bins
+// and direct sun of their suns (sun_bin_steps.h), and per grid point_in_time.csv.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "dayphoton/core/radiance_matrix.h"
+#include "run_context.h"
+
+namespace dayphoton::study {
+
+/// The point-in-time cases of one case (point_in_time.h) at every grid: point_in_time.csv per
+/// grid and each grid's summary.json `point_in_time` entries (`grids_json[g]`).
+void run_points_in_time(const project::Project& project, const std::string& prefix, const CaseScene& cs,
+                        const std::vector<RadianceMatrix>& sky_coefficients,
+                        const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx);
+
+}  // namespace dayphoton::study

@@ -1,0 +1,124 @@
+// SimulationPlan: see simulation_plan.h.
+#include "dayphoton/study/simulation_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "dayphoton/project/north_rotation.h"
+#include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/sky/sky_model.h"
+#include "dayphoton/study/annual_sun.h"
+
+namespace dayphoton::study {
+namespace {
+
+/// The project's region of interest in world coordinates: the axis-aligned box around the
+/// rotated model box (with a north rotation a little larger, which only stores more).
+std::optional<engine::Bounds3> region_of_interest(const project::Project& project) {
+  const auto& roi = project.simulation.region_of_interest;
+  if (!roi) return std::nullopt;
+  const double north = project.site.rotation_to_true_north_deg();
+  engine::Bounds3 b{project::model_to_world(roi->origin_m, north), project::model_to_world(roi->origin_m, north)};
+  for (int corner = 1; corner < 8; ++corner) {
+    const Vec3 c{roi->origin_m.x + ((corner & 1) ? roi->size_m.x : 0), roi->origin_m.y + ((corner & 2) ? roi->size_m.y : 0),
+                 roi->origin_m.z + ((corner & 4) ? roi->size_m.z : 0)};
+    const Vec3 w = project::model_to_world(c, north);
+    for (int k = 0; k < 3; ++k) {
+      b.lower[k] = std::min(b.lower[k], w[k]);
+      b.upper[k] = std::max(b.upper[k], w[k]);
+    }
+  }
+  return b;
+}
+
+/// What the sky and the sun passes share: seed, caustic target, low-yield cap, region of
+/// interest.
+engine::TracingOptions shared_tracing_options(const project::Project& project) {
+  const project::Simulation& sim = project.simulation;
+  engine::TracingOptions o;
+  o.caustic_photons_per_source = static_cast<std::size_t>(sim.caustic_photons_per_bin);
+  o.seed = sim.seed;
+  o.max_mainpass_attempts_per_target = static_cast<std::size_t>(sim.max_attempts_per_photon);
+  o.region_of_interest = region_of_interest(project);
+  return o;
+}
+
+engine::CoefficientOptions coefficient_options(const project::Simulation& sim) {
+  engine::CoefficientOptions o;
+  o.density.bandwidth = static_cast<std::size_t>(sim.bandwidth);
+  // Caustic photons with a target of their own are counted unlike the global ones, so they
+  // always get the caustic map (a shared disc would be sized by their count).
+  o.caustic_bandwidth = static_cast<std::size_t>(
+      sim.caustic_bandwidth > 0 ? sim.caustic_bandwidth : (sim.caustic_photons_per_bin > 0 ? sim.bandwidth : 0));
+  o.direct.samples_per_source = sim.direct_samples_per_bin;
+  o.direct.seed = sim.seed;
+  o.estimator = sim.estimator == project::Estimator::Contribution ? engine::PhotonEstimator::Contribution
+                                                                  : engine::PhotonEstimator::PerSource;
+  o.gather.rays_per_sensor = sim.gather_rays;
+  o.gather.bandwidth = static_cast<std::size_t>(sim.gather_bandwidth);
+  o.gather.seed = sim.seed;
+  return o;
+}
+
+}  // namespace
+
+CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids) {
+  CaseLayout l;
+  for (const SensorGrid& g : grids) {
+    if (g.planar) {
+      l.plane_of_grid.push_back(static_cast<int>(l.planes.size()));
+      l.planes.push_back(engine::ReceiverPlane::from_grid(g));
+    } else {
+      l.plane_of_grid.push_back(-1);
+      l.keep_surface_photons = true;
+    }
+  }
+  return l;
+}
+
+std::vector<double> sky_photon_factors(std::size_t sources) {
+  std::vector<double> f(sources, 1.0);
+  if (sources > 0) f[0] = GroundPhotonFactor;
+  return f;
+}
+
+sky::PatchBasis basis_of(const project::Simulation& sim) {
+  return sim.basis == project::SkyBasis::Tregenza ? sky::PatchBasis::tregenza()
+                                                  : sky::PatchBasis::reinhart(sim.reinhart_mf);
+}
+
+SimulationPlan SimulationPlan::of(const project::Project& project) {
+  const project::Simulation& sim = project.simulation;
+  SimulationPlan p;
+  p.basis = basis_of(sim);
+  p.point_estimate = sim.point_estimate;
+  p.seed = sim.seed;
+  p.sky_tracing = shared_tracing_options(project);
+  p.sky_tracing.photons_per_source = static_cast<std::size_t>(sim.photons_per_bin);
+  p.sky_tracing.source_photon_factor = sky_photon_factors(p.basis.bin_count());
+  p.sky_estimating = coefficient_options(sim);
+  p.sun_tracing = shared_tracing_options(project);
+  p.sun_tracing.photons_per_source = static_cast<std::size_t>(
+      std::max(1LL, std::llround(double(sim.photons_per_bin) * SunBinPhotonFraction)));
+  p.sun_estimating = p.sky_estimating;
+  p.sun_estimating.density.bandwidth = sun_bin_bandwidth(p.sky_estimating.density.bandwidth);
+  p.ground_reflectance = sim.ground_reflectance;
+  return p;
+}
+
+RadianceMatrix SimulationPlan::daylight_factor_sky() const {
+  const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(overcast_horizontal_lux));
+  const double rho_g = ground_reflectance;
+  return sky::sky_vector(*overcast, basis,
+                         sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, overcast_horizontal_lux, 0, {0, 0, -1}));
+}
+
+engine::TracingOptions SimulationPlan::tracing_for(const engine::TracingOptions& base, const CaseLayout& layout) const {
+  engine::TracingOptions o = base;
+  o.keep_surface_photons = layout.keep_surface_photons;
+  o.store_direct_on_surfaces = layout.keep_surface_photons && point_estimate == project::PointEstimate::Gather;
+  return o;
+}
+
+}  // namespace dayphoton::study

@@ -1,0 +1,146 @@
+// The sky side of a case as plan steps: see sky_coefficient_steps.h.
+#include "sky_coefficient_steps.h"
+
+#include "dayphoton/engine/port_emission.h"
+#include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/cache_keys.h"
+#include "photon_pass_notes.h"
+
+namespace dayphoton::study {
+
+std::vector<std::string> sky_photon_keys(const CaseScene& cs, const sky::PatchBasis& basis, std::size_t sources,
+                                         const engine::TracingOptions& tracing) {
+  std::vector<std::string> keys(sources);
+  for (std::size_t p = 0; p < sources; ++p)
+    keys[p] = photon_source_key(cs.scene_hash, cs.planes_hash, basis, p, tracing);
+  return keys;
+}
+
+void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, const engine::TracingOptions& tracing,
+                      const std::vector<std::string>& photon_keys, const std::string& prefix, RunContext& ctx,
+                      std::vector<std::optional<engine::DaylightCoefficients>>& coefficients) {
+  const SimulationPlan& plan = ctx.plan;
+  Progress& progress = ctx.progress;
+  RunReport& report = ctx.report;
+  const std::vector<SensorGrid>& grids = cs.description.grids;
+
+  // The coefficient steps first: the photons are needed only if one of them is missing.
+  engine::TracedPhotons photons;
+  std::vector<Step> grid_steps;
+  bool all_grids_cached = true;
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    const SensorGrid& grid = grids[g];
+    grid_steps.push_back(make_step(
+        StepKind::SkyCoefficients, g, {"coefficients", coefficients_key(photon_keys, grid, plan.sky_estimating)},
+        coefficients[g],
+        [&cs, &sources, &photons, &plan, &grid, g] {
+          const engine::GridPhotons grid_photons =
+              grid_photons_for(g, cs.layout, photons, sources.size(), plan.point_estimate);
+          return std::optional<engine::DaylightCoefficients>(engine::daylight_coefficients(
+              cs.scene, cs.materials, sources, grid_photons, grid.points, plan.sky_estimating));
+        },
+        [](const std::optional<engine::DaylightCoefficients>& c) { return encode_coefficients(*c); },
+        [](const std::string& bytes) { return std::optional<engine::DaylightCoefficients>(decode_coefficients(bytes)); },
+        [](const std::optional<engine::DaylightCoefficients>&) { return true; }));
+    if (!ctx.executor.lookup(grid_steps.back())) coefficients[g].reset();
+    all_grids_cached = all_grids_cached && coefficients[g].has_value();
+  }
+
+  // Photons (only if some grid needs estimating), one step per source, one batch.
+  report.sources += sources.size();
+  if (all_grids_cached) {
+    progress.cached(prefix + "photons");
+    report.sources_cached += sources.size();
+    ctx.log.line(prefix + "photons: traced 0 of " + std::to_string(sources.size()) +
+                 " sources (not needed: every grid's coefficients are cached)");
+  } else {
+    progress.start(prefix + "photons", sources.size(), "sources");
+    const engine::PortEmitter emitter(cs.scene, sources);
+    std::vector<engine::TracedPhotons> per_source(sources.size());
+    std::vector<Step> steps;
+    for (std::size_t p = 0; p < sources.size(); ++p)
+      steps.push_back(make_step(
+          StepKind::SourcePhotons, p, {"photons", photon_keys[p]}, per_source[p],
+          [&cs, &emitter, &tracing, p] {
+            return engine::trace_source_photons(cs.scene, cs.materials, emitter, cs.layout.planes, tracing, p);
+          },
+          encode_photons, decode_photons, [](const engine::TracedPhotons&) { return true; }));
+    const std::vector<char> traced =
+        ctx.executor.run_batch(steps, [&](std::size_t, bool) { progress.advance(1); });
+    progress.end();
+    std::size_t n_traced = 0;
+    for (char t : traced) n_traced += t ? 1 : 0;
+    report.sources_traced += n_traced;
+    report.sources_cached += sources.size() - n_traced;
+    ctx.log.line(prefix + "photons: traced " + std::to_string(n_traced) + " of " + std::to_string(sources.size()) +
+                 " sources (" + std::to_string(sources.size() - n_traced) + " cached)");
+    photons = engine::merge_traced_photons(std::move(per_source));
+    for (const std::string& note : {capped_note(photons, tracing, "sources"), nothing_stored_note(photons, "sources")})
+      if (!note.empty()) ctx.log.line(prefix + "photons: " + note);
+    for (const engine::SourceTally& t : photons.tallies) report.sources_capped += t.capped ? 1 : 0;
+  }
+
+  // Coefficients per grid: the missing ones estimated and stored.
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    const SensorGrid& grid = grids[g];
+    if (coefficients[g]) {
+      ++report.grids_cached;
+      progress.cached(prefix + "coefficients " + grid.name);
+      ctx.log.line(prefix + "coefficients " + grid.name + ": cached");
+      continue;
+    }
+    progress.start(prefix + "coefficients " + grid.name, grid.points.size(), "sensors");
+    ctx.executor.run(grid_steps[g]);
+    progress.advance(grid.points.size());
+    progress.end();
+    ++report.grids_estimated;
+    ctx.log.line(prefix + "coefficients " + grid.name + ": estimated at " + std::to_string(grid.points.size()) +
+                 " sensors");
+  }
+}
+
+AccuracyOutcome accuracy_sky_coefficients(const project::Project& project, const CaseScene& cs,
+                                          const engine::SourceSet& sources, const engine::TracingOptions& tracing,
+                                          const std::vector<std::string>& photon_keys, const std::string& prefix,
+                                          RunContext& ctx,
+                                          std::vector<std::optional<engine::DaylightCoefficients>>& coefficients) {
+  const project::Simulation& sim = project.simulation;
+  const std::vector<SensorGrid>& grids = cs.description.grids;
+  const RadianceMatrix overcast_vector = ctx.plan.daylight_factor_sky();
+  AccuracyCase c;
+  c.scene = &cs.scene;
+  c.materials = &cs.materials;
+  c.sources = &sources;
+  c.planes = &cs.layout.planes;
+  c.plane_of_grid = &cs.layout.plane_of_grid;
+  c.grids = &grids;
+  c.gather = ctx.plan.point_estimate == project::PointEstimate::Gather;
+  c.tracing = tracing;
+  c.estimating = ctx.plan.sky_estimating;
+  c.overcast_vector = &overcast_vector;
+  c.horizontal_illuminance_lux = ctx.plan.overcast_horizontal_lux;
+  AccuracyGoal goal;
+  goal.target_percent = sim.accuracy->target_df_relative_stderr_percent;
+  goal.max_photons = sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons;
+  goal.max_seconds = sim.accuracy->max_seconds;
+  ctx.report.sources += sources.size();
+  ctx.progress.start(prefix + "photons (accuracy rounds)", 1, "runs");
+  CaseAccuracy r = accuracy_coefficients(c, goal, ctx.executor, photon_keys,
+                                         [&](const std::string& line) { ctx.log.line(prefix + line); });
+  ctx.progress.advance(1);
+  ctx.progress.end();
+  if (r.cached) {
+    ctx.report.sources_cached += sources.size();
+    ctx.report.grids_cached += grids.size();
+  } else {
+    ctx.report.sources_traced += sources.size();
+    ctx.report.grids_estimated += grids.size();
+  }
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    coefficients[g] = std::move(r.coefficients[g]);
+    ctx.log.line(prefix + "accuracy " + grids[g].name + ": " + accuracy_sentence(r.outcome, g));
+  }
+  return r.outcome;
+}
+
+}  // namespace dayphoton::study

@@ -1,0 +1,186 @@
+// The sun side of a case as plan steps: see sun_bin_steps.h.
+#include "sun_bin_steps.h"
+
+#include <algorithm>
+
+#include "dayphoton/engine/port_emission.h"
+#include "dayphoton/study/direct_sun_file.h"
+#include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/cache_keys.h"
+#include "photon_pass_notes.h"
+
+namespace dayphoton::study {
+namespace {
+
+/// The exact direct sun of a grid for `suns`, one step.
+Step direct_sun_step(const CaseScene& cs, const SensorGrid& grid, std::size_t g, const std::vector<sky::SunRecord>& suns,
+                     const SimulationPlan& plan, RadianceMatrix& slot) {
+  std::vector<std::size_t> steps;
+  std::vector<Vec3> directions;
+  for (const sky::SunRecord& sun : suns) {
+    steps.push_back(sun.step);
+    directions.push_back(sun.direction);
+  }
+  return make_step(
+      StepKind::DirectSun, g,
+      {"sun-direct", direct_sun_key(cs.scene_hash, grid, steps, directions, plan.sun_direct_samples, plan.seed)}, slot,
+      [&cs, &grid, &suns, &plan] {
+        return direct_sun_coefficients(cs.scene, cs.materials, grid.points, suns, plan.sun_direct_samples, plan.seed);
+      },
+      encode_matrix, decode_matrix,
+      [&grid, &suns](const RadianceMatrix& m) { return m.rows() == grid.points.size() && m.columns() == suns.size(); });
+}
+
+}  // namespace
+
+std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix, const CaseScene& cs,
+                                  const SkyAndSuns& ss, const engine::SunBins& bins, RunContext& ctx,
+                                  bool export_direct) {
+  const project::Simulation& sim = project.simulation;
+  const SimulationPlan& plan = ctx.plan;
+  Progress& progress = ctx.progress;
+  RunLog& log = ctx.log;
+  RunReport& report = ctx.report;
+  const std::vector<SensorGrid>& grids = cs.description.grids;
+  const std::size_t n_grids = grids.size();
+  const engine::TracingOptions tracing = plan.tracing_for(plan.sun_tracing, cs.layout);
+  const engine::CoefficientOptions& estimating = plan.sun_estimating;
+
+  const engine::SourceSet sources = bins.sources(sky::SunHalfAngle_rad);
+  const std::vector<char> to_trace = sun_bins_to_trace(engine::PortEmitter(cs.scene, sources), bins.size());
+  const std::size_t n_lit = static_cast<std::size_t>(std::count(to_trace.begin(), to_trace.end(), 1));
+  std::vector<std::string> keys(bins.size());
+  for (std::size_t i = 0; i < bins.size(); ++i)
+    keys[i] = sun_photon_key(cs.scene_hash, cs.planes_hash, bins.multiplication_factor(), bins.patch(i),
+                             sky::SunHalfAngle_rad, tracing);
+  log.line(prefix + "sun bins: " + std::to_string(bins.size()) + " on Reinhart MF " +
+           std::to_string(bins.multiplication_factor()) + " for " + std::to_string(ss.suns.size()) +
+           " sun hours; " + std::to_string(n_lit) + " send light through the ports, " +
+           std::to_string(tracing.photons_per_source) + " photons each, bandwidth " +
+           std::to_string(estimating.density.bandwidth));
+
+  // The sun-coefficient steps first: the bins' photons are needed only if one is missing.
+  std::vector<GridSun> result(n_grids);
+  engine::TracedPhotons photons;
+  std::vector<Step> grid_steps(n_grids);
+  std::vector<char> have(n_grids, 0);
+  bool all_cached = true;
+  for (std::size_t g = 0; g < n_grids; ++g) {
+    const SensorGrid& grid = grids[g];
+    const std::string key = sun_coefficients_key(keys, plan.sun_bin_minimum_bound_fraction, grid, estimating);
+    GridSun& out = result[g];
+    Step& s = grid_steps[g];
+    s.kind = StepKind::SunCoefficients;
+    s.index = g;
+    s.outputs = {{"sun-coefficients", key}, {"sun-coefficients-variance", key}};
+    s.compute = [&, g]() -> std::vector<std::string> {
+      const engine::GridPhotons grid_photons =
+          grid_photons_for(g, cs.layout, photons, bins.size(), plan.point_estimate);
+      out.bin_coefficients =
+          sun_bin_coefficients(cs.scene, cs.materials, sources, grid_photons, grid.points, estimating, &out.bin_variance);
+      // The variances as the cache keeps them (single precision), so a cached run gives the
+      // same verdicts.
+      RadianceMatrix variance(grid.points.size(), bins.size(), 1);
+      for (std::size_t i = 0; i < out.bin_variance.size(); ++i)
+        variance.data()[i] = static_cast<float>(out.bin_variance[i]);
+      out.bin_variance.assign(variance.data().begin(), variance.data().end());
+      return {encode_matrix(out.bin_coefficients), encode_matrix(variance)};
+    };
+    s.take = [&](const std::vector<std::string>& bytes) {
+      out.bin_coefficients = decode_matrix(bytes.at(0));
+      const RadianceMatrix v = decode_matrix(bytes.at(1));
+      out.bin_variance.assign(v.data().begin(), v.data().end());
+      return out.bin_coefficients.rows() == grid.points.size() && out.bin_coefficients.columns() == bins.size() &&
+             out.bin_variance.size() == grid.points.size() * bins.size();
+    };
+    have[g] = ctx.executor.lookup(s) ? 1 : 0;
+    all_cached = all_cached && have[g];
+  }
+
+  // The lit bins' photons, one step per bin, one batch; the others give no photons.
+  report.sun_bins += bins.size();
+  report.sun_bins_lit += n_lit;
+  if (all_cached) {
+    progress.cached(prefix + "sun photons");
+    log.line(prefix + "sun photons: traced 0 of " + std::to_string(n_lit) +
+             " sun bins (not needed: every grid's sun coefficients are cached)");
+  } else {
+    progress.start(prefix + "sun photons", n_lit, "sun bins");
+    std::vector<engine::TracedPhotons> per_bin(bins.size());
+    std::vector<Step> steps;
+    for (std::size_t i = 0; i < bins.size(); ++i) {
+      if (!to_trace[i]) {
+        per_bin[i].planes.resize(cs.layout.planes.size());
+        per_bin[i].tallies.resize(1);
+        continue;
+      }
+      steps.push_back(make_step(
+          StepKind::SunBinPhotons, i, {"sun-photons", keys[i]}, per_bin[i],
+          [&cs, &bins, &tracing, i] { return trace_sun_bin(cs.scene, cs.materials, bins, i, cs.layout.planes, tracing); },
+          encode_photons, decode_photons, [](const engine::TracedPhotons&) { return true; }));
+    }
+    const std::vector<char> traced = ctx.executor.run_batch(steps, [&](std::size_t k, bool) {
+      const std::size_t bin = steps[k].index;
+      relabel_photons(per_bin[bin], static_cast<std::uint32_t>(bin));
+      progress.advance(1);
+    });
+    progress.end();
+    const std::size_t n_traced = static_cast<std::size_t>(std::count(traced.begin(), traced.end(), 1));
+    report.sun_bins_traced += n_traced;
+    log.line(prefix + "sun photons: traced " + std::to_string(n_traced) + " of " + std::to_string(n_lit) +
+             " sun bins (" + std::to_string(n_lit - n_traced) + " cached)");
+    photons = engine::merge_traced_photons(std::move(per_bin));
+    for (const std::string& note : {capped_note(photons, tracing, "sun bins"), nothing_stored_note(photons, "sun bins")})
+      if (!note.empty()) log.line(prefix + "sun photons: " + note);
+    for (const engine::SourceTally& t : photons.tallies) report.sun_bins_capped += t.capped ? 1 : 0;
+  }
+
+  for (std::size_t g = 0; g < n_grids; ++g) {
+    const SensorGrid& grid = grids[g];
+    if (have[g]) {
+      progress.cached(prefix + "sun coefficients " + grid.name);
+      log.line(prefix + "sun coefficients " + grid.name + ": cached");
+    } else {
+      progress.start(prefix + "sun coefficients " + grid.name, grid.points.size(), "sensors");
+      ctx.executor.run(grid_steps[g]);
+      progress.advance(grid.points.size());
+      progress.end();
+      log.line(prefix + "sun coefficients " + grid.name + ": estimated at " + std::to_string(grid.points.size()) +
+               " sensors");
+    }
+
+    // The exact direct sun of every hour.
+    const Step direct = direct_sun_step(cs, grid, g, ss.suns, plan, result[g].direct);
+    if (ctx.executor.lookup(direct)) {
+      progress.cached(prefix + "direct sun " + grid.name);
+      log.line(prefix + "direct sun " + grid.name + ": cached");
+    } else {
+      progress.start(prefix + "direct sun " + grid.name, grid.points.size(), "sensors");
+      ctx.executor.run(direct);
+      progress.advance(grid.points.size());
+      progress.end();
+      log.line(prefix + "direct sun " + grid.name + ": traced for " + std::to_string(ss.suns.size()) +
+               " sun hours at " + std::to_string(grid.points.size()) + " sensors");
+    }
+    // The export for `annual` (direct_sun.bin.gz): the daytime positions without direct light
+    // in this weather file too, so another file of the site finds every sun it needs.
+    if (export_direct) {
+      GridSun& out = result[g];
+      out.other_suns = daytime_suns_without_direct(*ctx.weather, ctx.sun_site->solar,
+                                                   sun_excluded_sky_options(sim.ground_reflectance), ss.suns);
+      const Step other = direct_sun_step(cs, grid, g, out.other_suns, plan, out.direct_other);
+      const bool other_cached = ctx.executor.lookup(other);
+      if (!other_cached) {
+        progress.start(prefix + "direct sun " + grid.name + " (export)", grid.points.size(), "sensors");
+        ctx.executor.run(other);
+        progress.advance(grid.points.size());
+        progress.end();
+      }
+      log.line(prefix + "direct sun " + grid.name + " for the export: " + std::to_string(out.other_suns.size()) +
+               " further daytime sun positions" + (other_cached ? " (cached)" : " traced"));
+    }
+  }
+  return result;
+}
+
+}  // namespace dayphoton::study

@@ -1,0 +1,35 @@
+// The sun side of a case in the sun-bins mode as plan steps (annual_sun.h): one
+// StepKind::SunBinPhotons step per lit sun bin (one batch), and per grid a
+// StepKind::SunCoefficients step and StepKind::DirectSun steps (the year's suns; with the
+// export, also the further daytime positions of direct_sun.bin.gz). The bins' photons are
+// traced only when some grid's sun coefficients are not cached.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/engine/sun_bins.h"
+#include "run_context.h"
+
+namespace dayphoton::study {
+
+/// The sun side of one grid in the sun-bins mode.
+struct GridSun {
+  RadianceMatrix bin_coefficients;  ///< sensors x sun bins x RGB, caustic + global
+  std::vector<double> bin_variance;  ///< sensors x sun bins, of each entry's luminance
+  RadianceMatrix direct;            ///< sensors x suns x RGB, exact direct sun
+  /// For direct_sun.bin.gz (outputs.coefficients): the direct sun of the other daytime sun
+  /// positions (direct_sun_file.h), sensors x other_suns x RGB.
+  RadianceMatrix direct_other;
+  std::vector<sky::SunRecord> other_suns;
+};
+
+/// Sun bins of one case for the suns of `ss`: trace (one cached artefact per bin), estimate
+/// per grid, trace the exact direct sun per grid (with `export_direct`, also at the further
+/// daytime positions of direct_sun.bin.gz). Every step cached.
+std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix, const CaseScene& cs,
+                                  const SkyAndSuns& ss, const engine::SunBins& bins, RunContext& ctx,
+                                  bool export_direct = false);
+
+}  // namespace dayphoton::study
