@@ -9,6 +9,7 @@
 #include "dayphoton/report/report_html.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -30,8 +31,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// A folder of this test process's own: CTest runs the tests of this file as separate
+/// processes at once, and two of them writing one folder would see each other's files.
 std::string temp_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("dayphoton_report_html_test_" + name);
+  const fs::path p = fs::temp_directory_path() /
+                     ("dayphoton_report_html_test_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(p);
   fs::create_directories(p);
   return p.string();
