@@ -2,6 +2,7 @@
 // only wire the libraries together (all modelling lives in core/ weather/ sky/ project/ engine/).
 #pragma once
 
+#include "dayphoton/dist/communicator.h"
 #include <cstdint>
 #include <iosfwd>
 #include <optional>
@@ -53,6 +54,10 @@ struct RunOptions {
   std::string cache_dir;  ///< empty: beside each output folder (study/cache_folder.h)
   bool force = false;
   bool quiet = false;
+  /// The ranks of an `mpirun`/`srun` job every rank of which runs this command (docs/cluster.md);
+  /// null: one process. Rank 0 writes the outputs and the cache; the others compute their
+  /// share of the steps into a scratch folder they remove.
+  dist::Communicator* ranks = nullptr;
 };
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err);
 

@@ -9,6 +9,8 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <sstream>
+#include <string>
 
 #include "commands.h"
 #include "dayphoton/core/diagnostics.h"
@@ -60,7 +62,7 @@ constexpr long long Unbounded = std::numeric_limits<long long>::max();
 constexpr long long MaxThreads = 4096;
 
 /// Parses the command line and runs the command: the whole program of an ordinary run.
-int run_command_line(int argc, char** argv) {
+int run_command_line(int argc, char** argv, dayphoton::dist::Communicator* ranks = nullptr) {
   using namespace dayphoton::app;
   CLI::App cli{"dayphoton: climate-based daylight modelling with contribution photon maps"};
   cli.name("dayphoton");
@@ -276,7 +278,10 @@ int run_command_line(int argc, char** argv) {
 
   try {
     if (check_cmd->parsed()) return run_check(check, std::cout);
-    if (run_cmd->parsed()) return run_run(run, std::cout, std::cerr);
+    if (run_cmd->parsed()) {
+      run.ranks = ranks;
+      return run_run(run, std::cout, std::cerr);
+    }
     if (clean_cmd->parsed()) return run_clean(clean, std::cout);
     if (sun_cmd->parsed()) return run_sun(sun, std::cout);
     if (sky_cmd->parsed()) {
@@ -308,9 +313,18 @@ int run_command_line(int argc, char** argv) {
   return ExitUsageError;
 }
 
-/// A process started by mpirun or srun: MPI for the process's lifetime. No command distributes
-/// its work over the ranks yet (docs/cluster.md): rank 0 runs the command, the others wait for
-/// it (asleep, at a barrier) so that the job ends with rank 0's exit code and one set of outputs.
+/// The command of a command line: its first argument that is not an option.
+std::string command_of(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (argv[i][0] != '-') return argv[i];
+  return "";
+}
+
+/// A process started by mpirun or srun: MPI for the process's lifetime. `run` is distributed
+/// (docs/cluster.md): every rank runs it, sharing out the steps of the study; rank 0 prints
+/// and writes, the other ranks' output is kept and shown only if they fail alone. Every other
+/// command runs on rank 0 alone while the others wait for it (asleep, at a barrier), so that
+/// the job ends with rank 0's exit code and one set of outputs.
 int run_as_mpi_rank(int argc, char** argv, const dayphoton::dist::LauncherInfo& launcher) {
   using namespace dayphoton::app;
   using namespace dayphoton::dist;
@@ -329,12 +343,30 @@ int run_as_mpi_rank(int argc, char** argv, const dayphoton::dist::LauncherInfo& 
   int code = ExitOk;
   {
     const std::unique_ptr<Communicator> world = session->world();
-    if (world->rank() == RootRank) {
-      if (world->size() > 1)
-        std::cerr << "dayphoton: note: started as " << world->size()
-                  << " MPI processes; commands do not distribute their work yet, rank 0 runs this one "
-                     "alone (docs/cluster.md)\n";
-      code = run_command_line(argc, argv);
+    if (world->size() > 1 && command_of(argc, argv) == "run") {
+      if (world->rank() == RootRank) {
+        code = run_command_line(argc, argv, world.get());
+        // Its message is out; the other ranks may be waiting for it in a step: end them too.
+        if (code != ExitOk) world->abort_all("the run failed on rank 0; every rank is stopped", code);
+      } else {
+        // The same lines as rank 0's, so kept back; a failing rank shows them (prefixed by its
+        // rank) and ends the whole job, which never waits on a rank that stopped.
+        std::ostringstream out, err;
+        std::streambuf* const cout_buffer = std::cout.rdbuf(out.rdbuf());
+        std::streambuf* const cerr_buffer = std::cerr.rdbuf(err.rdbuf());
+        code = run_command_line(argc, argv, world.get());
+        std::cout.rdbuf(cout_buffer);
+        std::cerr.rdbuf(cerr_buffer);
+        if (code != ExitOk) world->abort_all(err.str(), code);
+      }
+    } else {
+      if (world->rank() == RootRank) {
+        if (world->size() > 1)
+          std::cerr << "dayphoton: note: started as " << world->size()
+                    << " MPI processes; only `run` distributes its work, rank 0 runs this one alone "
+                       "(docs/cluster.md)\n";
+        code = run_command_line(argc, argv);
+      }
     }
     world->barrier();
   }

@@ -17,16 +17,17 @@ const AnnualSky& annual_sky(const project::Project& project, RunContext& ctx) {
       StepKind::SkyMatrix, 0, {"sky", sky_matrix_key(project.weather.path, site, basis, rho_g, false)}, sky,
       [&] { return annual_sky_from_weather(weather, site, basis, radiance_compatible_sky_options(rho_g)); },
       [](const AnnualSky& s) { return encode_matrix(s.matrix); },
-      [](const std::string& bytes) {
+      // The matrix from bytes (the cache's, or another rank's), the rest from the weather.
+      [&](const std::string& bytes) {
         AnnualSky s;
         s.matrix = decode_matrix(bytes);
+        s.steps = time_stamps(weather);
+        s.daylight_hours_quantity = daylight_hours_quantity(weather, s.daylight_hours_source);
+        s.description = annual_sky_description(weather, basis, radiance_compatible_sky_options(rho_g));
         return s;
       },
       [](const AnnualSky&) { return true; });
   if (ctx.executor.lookup(step)) {
-    sky.steps = time_stamps(weather);
-    sky.daylight_hours_quantity = daylight_hours_quantity(weather, sky.daylight_hours_source);
-    sky.description = annual_sky_description(weather, basis, radiance_compatible_sky_options(rho_g));
     ctx.report.sky_matrix_cached = true;
     ctx.progress.cached("sky matrix");
     ctx.log.line("sky matrix: cached");
@@ -60,15 +61,16 @@ const SkyAndSuns& sky_and_suns(const project::Project& project, RunContext& ctx)
     result.suns = suns_from_matrix(suns);
     return {encode_matrix(result.sky.matrix), encode_matrix(suns)};
   };
+  // The matrices from bytes (the cache's, or another rank's), the rest from the weather.
   step.take = [&](const std::vector<std::string>& bytes) {
     result.sky.matrix = decode_matrix(bytes.at(0));
     result.suns = suns_from_matrix(decode_matrix(bytes.at(1)));
-    return true;
-  };
-  if (ctx.executor.lookup(step)) {
     result.sky.steps = time_stamps(weather);
     result.sky.daylight_hours_quantity = daylight_hours_quantity(weather, result.sky.daylight_hours_source);
     result.sky.description = sky_and_suns_description(weather, basis);
+    return true;
+  };
+  if (ctx.executor.lookup(step)) {
     ctx.report.sky_matrix_cached = true;
     ctx.progress.cached("sky matrix");
     ctx.log.line("sky matrix: cached");

@@ -387,7 +387,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   // The plan, built once (simulation_plan.h), and the executor every cached step goes
   // through (step_executor.h).
   const SimulationPlan plan = SimulationPlan::of(project);
-  const std::unique_ptr<StepExecutor> executor = make_local_executor(store, settings.force);
+  const std::unique_ptr<StepExecutor> executor =
+      settings.make_executor ? settings.make_executor(store, settings.force) : make_local_executor(store, settings.force);
   RunContext ctx{settings, progress, log, report, store, outputs, plan, *executor, std::nullopt, std::nullopt,
                  weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
   // The project as written is the base case, in <output>/<grid>/; each variant is studied

@@ -48,7 +48,7 @@ class StepExecutor {
 
   /// The step's artefacts from the cache, taken by the step: true if every one was intact
   /// and the step took them. Never computes; always false with `force`.
-  bool lookup(const Step& step) const;
+  virtual bool lookup(const Step& step) const;
 
  protected:
   /// Stores the bytes of a step's outputs (one per output, in order).

@@ -43,6 +43,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/results_model.h"
+#include "dayphoton/study/step_executor.h"
 
 namespace dayphoton::study {
 
@@ -60,6 +61,10 @@ struct RunSettings {
   std::function<std::vector<std::string>(const std::string& output_dir, const ResultsModel& model, bool images,
                                          bool report)>
       write_views;
+  /// The executor every cached step goes through (step_executor.h); empty: this machine's
+  /// (make_local_executor). `dayphoton run` under mpirun gives each rank the distributed one
+  /// (distributed_executor.h).
+  std::function<std::unique_ptr<StepExecutor>(const ArtifactStore& store, bool force)> make_executor;
 };
 
 struct GridReport {

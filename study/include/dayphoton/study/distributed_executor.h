@@ -1,0 +1,31 @@
+// The distributed step executor: a run's steps (plan_step.h) shared out over the ranks of an
+// MPI job (dist/communicator.h), for `mpirun -np N dayphoton run` (docs/cluster.md).
+//
+// Every rank runs the same run_study on the same project (SPMD): every rank builds the same
+// plan and meets the same steps in the same order; only this executor's methods talk. Rank 0
+// alone reads and writes the cache: lookup() and run_batch() broadcast its verdict and the
+// cached bytes, which every rank takes, so every rank follows the same branch and holds the
+// same typed values. The misses of a batch are the jobs of one dist::distribute_jobs call
+// (longest first over the ranks, TBB within a rank); every result is delivered to every rank
+// in step order (each takes it, as if from the cache) and rank 0 stores it. A step's result
+// is a pure function of its inputs and travels as the cache's own bytes, so the outputs are
+// those of a one-process run whose artefacts came from the cache: byte-identical to it.
+//
+// The caller makes sure the other ranks write nothing the user sees (the app gives them a
+// scratch output folder it removes, app/main.cpp).
+#pragma once
+
+#include <memory>
+
+#include "dayphoton/dist/communicator.h"
+#include "dayphoton/study/artifact_store.h"
+#include "dayphoton/study/step_executor.h"
+
+namespace dayphoton::study {
+
+/// An executor over `comm`'s ranks; `comm` must outlive it. With one rank it behaves as the
+/// local executor (same cache use, same results).
+std::unique_ptr<StepExecutor> make_distributed_executor(dist::Communicator& comm, const ArtifactStore& store,
+                                                        bool force);
+
+}  // namespace dayphoton::study

@@ -1,0 +1,155 @@
+// The distributed step executor: see distributed_executor.h.
+#include "dayphoton/study/distributed_executor.h"
+
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dayphoton/dist/distribute_jobs.h"
+
+namespace dayphoton::study {
+namespace {
+
+using dist::ByteBuffer;
+
+// A list of byte strings in one buffer: count, then per string its length and bytes (64-bit
+// little-endian lengths as this machine writes them; every rank runs the same build).
+void put_u64(ByteBuffer& out, std::uint64_t v) {
+  const std::size_t at = out.size();
+  out.resize(at + sizeof v);
+  std::memcpy(out.data() + at, &v, sizeof v);
+}
+
+std::uint64_t get_u64(const ByteBuffer& in, std::size_t& at) {
+  std::uint64_t v = 0;
+  if (in.size() - at < sizeof v) throw std::runtime_error("distributed executor: truncated message");
+  std::memcpy(&v, in.data() + at, sizeof v);
+  at += sizeof v;
+  return v;
+}
+
+void put_strings(ByteBuffer& out, const std::vector<std::string>& strings) {
+  put_u64(out, strings.size());
+  for (const std::string& s : strings) {
+    put_u64(out, s.size());
+    const std::size_t at = out.size();
+    out.resize(at + s.size());
+    if (!s.empty()) std::memcpy(out.data() + at, s.data(), s.size());
+  }
+}
+
+std::vector<std::string> get_strings(const ByteBuffer& in, std::size_t& at) {
+  const std::uint64_t n = get_u64(in, at);
+  if (n > in.size()) throw std::runtime_error("distributed executor: malformed message");
+  std::vector<std::string> strings(n);
+  for (std::string& s : strings) {
+    const std::uint64_t length = get_u64(in, at);
+    if (length > in.size() - at) throw std::runtime_error("distributed executor: truncated message");
+    s.assign(reinterpret_cast<const char*>(in.data() + at), length);
+    at += length;
+  }
+  return strings;
+}
+
+class DistributedExecutor final : public StepExecutor {
+ public:
+  DistributedExecutor(dist::Communicator& comm, const ArtifactStore& store, bool force)
+      : StepExecutor(store, force), m_comm(comm) {}
+
+  /// Rank 0 reads the cache; every rank takes the same bytes (or none).
+  bool lookup(const Step& step) const override {
+    std::vector<std::vector<std::string>> found = cached_on_root({step});
+    return take_everywhere(step, found[0]);
+  }
+
+  std::vector<char> run_batch(const std::vector<Step>& steps, const StepDone& done) override {
+    std::vector<char> computed(steps.size(), 0);
+    const std::vector<std::vector<std::string>> found = cached_on_root(steps);
+    std::vector<std::size_t> misses;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      if (take_everywhere(steps[i], found[i])) {
+        if (done) done(i, false);
+      } else {
+        misses.push_back(i);
+      }
+    }
+    if (misses.empty()) return computed;
+    dist::JobSet jobs;
+    jobs.count = misses.size();
+    // Equal costs: the steps of a batch are of one kind and of similar size (a sky source, a
+    // sun bin); measured costs would balance better (docs/cluster.md).
+    jobs.cost_of = [](std::size_t) { return 1.0; };
+    jobs.compute = [&](std::size_t j) {
+      ByteBuffer out;
+      put_strings(out, steps[misses[j]].compute());
+      return out;
+    };
+    jobs.deliver = [&](std::size_t j, ByteBuffer bytes) {
+      const Step& step = steps[misses[j]];
+      std::size_t at = 0;
+      const std::vector<std::string> artefacts = get_strings(bytes, at);
+      if (!step.take(artefacts))
+        throw std::runtime_error(std::string("distributed executor: a ") + step_kind_name(step.kind) +
+                                 " step's result does not fit it");
+      if (m_comm.rank() == dist::RootRank) store(step, artefacts);
+      computed[misses[j]] = 1;
+      if (done) done(misses[j], true);
+    };
+    jobs.name_of = [&](std::size_t j) {
+      return std::string(step_kind_name(steps[misses[j]].kind)) + " " + std::to_string(steps[misses[j]].index);
+    };
+    jobs.delivery = dist::Delivery::every_rank;
+    dist::distribute_jobs(m_comm, jobs);
+    return computed;
+  }
+
+ private:
+  /// Rank 0: each step's cached artefacts (all of them, or none), broadcast to every rank.
+  std::vector<std::vector<std::string>> cached_on_root(const std::vector<Step>& steps) const {
+    ByteBuffer message;
+    if (m_comm.rank() == dist::RootRank) {
+      for (const Step& step : steps) {
+        std::vector<std::string> bytes;
+        if (!m_force)
+          for (const ArtifactId& a : step.outputs) {
+            auto b = m_store.read(a.kind, a.key);
+            if (!b) {
+              bytes.clear();
+              break;
+            }
+            bytes.push_back(std::move(*b));
+          }
+        put_strings(message, bytes);
+      }
+    }
+    m_comm.broadcast_from_root(message);
+    std::vector<std::vector<std::string>> found(steps.size());
+    std::size_t at = 0;
+    for (std::vector<std::string>& f : found) f = get_strings(message, at);
+    return found;
+  }
+
+  /// Every rank takes the same bytes: the same verdict everywhere (a step that refuses them,
+  /// or a decoder that throws, is computed again, as in the local executor).
+  static bool take_everywhere(const Step& step, const std::vector<std::string>& bytes) {
+    if (bytes.empty() || bytes.size() != step.outputs.size()) return false;
+    try {
+      return step.take(bytes);
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+
+  dist::Communicator& m_comm;
+};
+
+}  // namespace
+
+std::unique_ptr<StepExecutor> make_distributed_executor(dist::Communicator& comm, const ArtifactStore& store,
+                                                        bool force) {
+  return std::make_unique<DistributedExecutor>(comm, store, force);
+}
+
+}  // namespace dayphoton::study

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# `dayphoton run` distributed by mpirun (study/distributed_executor.h, docs/cluster.md): the
+# office (at a fortieth of its photons, which changes nothing but the noise) run by one process
+# and under `mpirun -np 1`, `-np 2` and `-np 3 --oversubscribe`, and the two-variant office by
+# one process and under `-np 3`,
+# every run with a cache of its own. Every file of the results folders must be byte-identical
+# to the one-process run's, apart from run.log (times) and the output folder's name in
+# summary.json; the other ranks leave no scratch
+# folder behind.
+# Usage: run_study_under_mpirun.sh DAYPHOTON MPIEXEC SOURCE_DIR
+set -uo pipefail
+dayphoton=$1
+mpiexec=$2
+source_dir=$3
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export TMPDIR=$tmp  # the other ranks' scratch folders go here
+fail=0
+
+mkdir -p "$tmp/office"
+cp "$source_dir/projects/office/project.yaml" "$source_dir/projects/office/"*.epw "$tmp/office/"
+sed -i 's/^  photons_per_bin: 40000$/  photons_per_bin: 1000/' "$tmp/office/project.yaml"
+grep -q '^  photons_per_bin: 1000$' "$tmp/office/project.yaml" || { echo "office: photons_per_bin not found"; exit 1; }
+mkdir -p "$tmp/office_variants"
+cp "$source_dir/projects/office_variants/project.yaml" "$tmp/office_variants/"
+# Its weather file is ../office/'s, copied above.
+
+for p in office office_variants; do
+  project=$tmp/$p/project.yaml
+  "$dayphoton" run "$project" --output "$tmp/out/$p-serial" --cache "$tmp/cache/$p-serial" --quiet \
+    > /dev/null || { echo "$p: the one-process run failed"; fail=1; continue; }
+  # The office under 1, 2 and 3 ranks; the variants (three cases) under 3, to keep the test short.
+  ranks="1 2 3"
+  [ "$p" = office ] || ranks=3
+  for np in $ranks; do
+    out=$tmp/out/$p-np$np
+    timeout 300 "$mpiexec" -np $np --oversubscribe --bind-to none "$dayphoton" run "$project" --output "$out" \
+      --cache "$tmp/cache/$p-np$np" --quiet > "$tmp/$p-np$np.log" 2>&1
+    rc=$?
+    [ $rc -eq 0 ] || { echo "$p: mpirun -np $np: exit $rc"; cat "$tmp/$p-np$np.log"; fail=1; continue; }
+    if ! diff -r -q -x run.log -x summary.json "$tmp/out/$p-serial" "$out"; then
+      echo "$p: mpirun -np $np wrote other results than the one-process run"
+      fail=1
+    fi
+    # summary.json names the output folder; apart from it, the same bytes.
+    if ! cmp -s <(sed "s|$tmp/out/$p-serial|OUT|g" "$tmp/out/$p-serial/summary.json") \
+                <(sed "s|$out|OUT|g" "$out/summary.json"); then
+      echo "$p: mpirun -np $np wrote another summary.json than the one-process run"
+      fail=1
+    fi
+  done
+done
+leftover=$(find "$tmp" -maxdepth 1 -name 'dayphoton-rank-*' | head -1)
+[ -z "$leftover" ] || { echo "a rank's scratch folder was left behind: $leftover"; fail=1; }
+exit $fail
