@@ -1,10 +1,33 @@
 // The annual sky steps: see sky_steps.h.
 #include "sky_steps.h"
 
+#include <functional>
+#include <string>
+
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
 
 namespace dayphoton::study {
+namespace {
+
+/// The sky matrix step from the cache, or built with its progress bar; `built_line` (called
+/// once the step ran) is the run log's line for a built sky.
+void run_sky_step(const Step& step, std::size_t hours, RunContext& ctx,
+                  const std::function<std::string()>& built_line) {
+  if (ctx.executor.lookup(step)) {
+    ctx.report.sky_matrix_cached = true;
+    ctx.progress.cached("sky matrix");
+    ctx.log.line("sky matrix: cached");
+    return;
+  }
+  ctx.progress.start("sky matrix", hours, "hours");
+  ctx.executor.run(step);
+  ctx.progress.advance(hours);
+  ctx.progress.end();
+  ctx.log.line(built_line());
+}
+
+}  // namespace
 
 const AnnualSky& annual_sky(const project::Project& project, RunContext& ctx) {
   if (ctx.sky) return *ctx.sky;
@@ -27,17 +50,8 @@ const AnnualSky& annual_sky(const project::Project& project, RunContext& ctx) {
         return s;
       },
       [](const AnnualSky&) { return true; });
-  if (ctx.executor.lookup(step)) {
-    ctx.report.sky_matrix_cached = true;
-    ctx.progress.cached("sky matrix");
-    ctx.log.line("sky matrix: cached");
-  } else {
-    ctx.progress.start("sky matrix", weather.records.size(), "hours");
-    ctx.executor.run(step);
-    ctx.progress.advance(weather.records.size());
-    ctx.progress.end();
-    ctx.log.line("sky matrix: built from " + project.weather.path);
-  }
+  run_sky_step(step, weather.records.size(), ctx,
+               [&] { return "sky matrix: built from " + project.weather.path; });
   ctx.sky = std::move(sky);
   return *ctx.sky;
 }
@@ -70,18 +84,10 @@ const SkyAndSuns& sky_and_suns(const project::Project& project, RunContext& ctx)
     result.sky.description = sky_and_suns_description(weather, basis);
     return true;
   };
-  if (ctx.executor.lookup(step)) {
-    ctx.report.sky_matrix_cached = true;
-    ctx.progress.cached("sky matrix");
-    ctx.log.line("sky matrix: cached");
-  } else {
-    ctx.progress.start("sky matrix", weather.records.size(), "hours");
-    ctx.executor.run(step);
-    ctx.progress.advance(weather.records.size());
-    ctx.progress.end();
-    ctx.log.line("sky matrix: built from " + project.weather.path + " (sun excluded; " +
-                 std::to_string(result.suns.size()) + " sun hours)");
-  }
+  run_sky_step(step, weather.records.size(), ctx, [&] {
+    return "sky matrix: built from " + project.weather.path + " (sun excluded; " +
+           std::to_string(result.suns.size()) + " sun hours)";
+  });
   ctx.sky_and_suns = std::move(result);
   return *ctx.sky_and_suns;
 }
