@@ -1,6 +1,8 @@
 // Photon tracer: see photon_tracer.h for the method, its sources and the storage rules.
 #include "dayphoton/engine/photon_tracer.h"
 
+#include "dayphoton/engine/source_passes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,8 +16,6 @@ namespace dayphoton::engine {
 namespace {
 
 constexpr std::uint64_t AttemptsPerBlock = 1024;
-/// Entries without a stored photon after which a pre-pass stops (see trace_source).
-constexpr std::uint64_t NothingStoredEntries = 65536;
 
 double channel_mean(const Vec3& v) { return (v.x + v.y + v.z) / 3.0; }
 
@@ -51,11 +51,6 @@ bool roulette(Vec3& flux, const Vec3& weight, Rng& rng) {
   }
   return true;
 }
-
-/// Main-pass storage probability of each class (1 in the pre-pass).
-struct StorageProbabilities {
-  double global = 1, caustic = 1, direct = 1;
-};
 
 // Collects one block's records, applying the main pass's storage probabilities.
 struct BlockResult {
@@ -221,25 +216,20 @@ bool trace_path(const Scene& scene, const std::vector<Material>& materials,
 
 namespace {
 
-struct SourceResult {
-  std::vector<Photon> surface;
-  std::vector<std::vector<Photon>> planes;
-  SourceTally tally;
-  std::uint64_t scattered_indoors = 0;  ///< BlockResult::scattered_indoors, summed
-};
-
-// Trace attempts [first, last) of `source`, in parallel blocks, appending to `result`.
+// Trace attempts [first, last) of `source`, in parallel blocks, appending to `result` (its
+// counts included). Returns the counts of these attempts.
 // Throws if a block did not run: when this pass runs inside an enclosing parallel loop (one
 // task per source) and another iteration of that loop throws, TBB cancels the whole task
 // group, so this nested loop returns early without having run every block (oneTBB developer
 // guide, "Cancellation and Nested Parallelism"). The enclosing loop then rethrows the first
 // exception; this one only stops a partial pass from being merged.
-void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
-                    const std::vector<ReceiverPlane>& planes, const PortEmitter& emitter,
-                    std::uint32_t source, std::uint64_t first, std::uint64_t last,
-                    const StorageProbabilities& d, const TracingOptions& options,
-                    SourceResult& result) {
-  if (last <= first) return;
+AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& materials,
+                             const std::vector<ReceiverPlane>& planes, const PortEmitter& emitter,
+                             std::uint32_t source, std::uint64_t first, std::uint64_t last,
+                             const StorageProbabilities& d, const TracingOptions& options, AttemptRange& result) {
+  result.planes.resize(planes.size());
+  AttemptCounts c;
+  if (last <= first) return c;
   const std::uint64_t blocks = (last - first + AttemptsPerBlock - 1) / AttemptsPerBlock;
   std::vector<BlockResult> block_results(blocks);
   tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t b) {
@@ -272,165 +262,19 @@ void trace_attempts(const Scene& scene, const std::vector<Material>& materials,
     if (!b.complete)
       throw std::runtime_error("photon tracing was cancelled before every block of source " +
                                std::to_string(source) + " ran");
-  result.planes.resize(planes.size());
   for (BlockResult& b : block_results) {
     result.surface.insert(result.surface.end(), b.surface.begin(), b.surface.end());
     for (std::size_t g = 0; g < planes.size(); ++g)
       result.planes[g].insert(result.planes[g].end(), b.planes[g].begin(), b.planes[g].end());
-    result.tally.entered += b.entered;
-    result.tally.stored_global += b.global;
-    result.tally.stored_caustic += b.caustic;
-    result.tally.stored_direct += b.direct;
-    result.tally.rays += b.rays;
-    result.scattered_indoors += b.scattered_indoors;
+    c.entered += b.entered;
+    c.stored_global += b.global;
+    c.stored_caustic += b.caustic;
+    c.stored_direct += b.direct;
+    c.rays += b.rays;
+    c.scattered_indoors += b.scattered_indoors;
   }
-}
-
-SourceResult trace_source(const Scene& scene, const std::vector<Material>& materials,
-                          const std::vector<ReceiverPlane>& planes, const PortEmitter& emitter,
-                          std::uint32_t source, const TracingOptions& options) {
-  SourceResult result;
-  result.planes.resize(planes.size());
-  SourceTally& tally = result.tally;
-  tally.bound_flux = emitter.bound_flux(source);
-  if (!can_store_photons(scene, materials, planes)) {
-    tally.nothing_stores = true;  // no photon of any source could ever be stored
-    return result;
-  }
-  if (tally.bound_flux <= 0) return result;
-
-  const double factor =
-      source < options.source_photon_factor.size() ? options.source_photon_factor[source] : 1.0;
-  auto scaled = [factor](std::size_t n) {
-    return static_cast<std::size_t>(std::llround(double(n) * std::max(0.0, factor)));
-  };
-  const std::size_t target_g = scaled(options.photons_per_source);
-  const std::size_t target_c = scaled(options.caustic_photons_per_source);
-  // Direct photons on surfaces (for a final gather) get the global photons' target, so that
-  // their count stays bounded however few global photons a dark room stores.
-  const std::size_t target_d = options.store_direct_on_surfaces ? target_g : 0;
-  std::size_t smallest = target_g;
-  if (target_c > 0) smallest = std::min(smallest, target_c);
-  const std::size_t largest = std::max(target_g, target_c);
-  if (largest == 0) return result;
-
-  // Pre-pass (Alg. 4.1), every photon stored. The thesis doubles it while a map is empty;
-  // here it doubles until every targeted class has enough photons for its yield to be
-  // known to ~10 % (min(100, k * target) stored), or, if a class stays empty while another
-  // has enough after 64 doublings' worth of attempts, that class is taken as absent (e.g.
-  // caustics in an all-diffuse room), or the attempts reach the give-up limit (a source the
-  // ports see but whose light is blocked).
-  const std::uint64_t initial = std::max<std::uint64_t>(
-      1, static_cast<std::uint64_t>(std::ceil(options.prepass_fraction * double(smallest))));
-  std::uint64_t prepass = initial;
-  std::uint64_t done = 0;
-  // Attempt limits in port-equivalent attempts (photon_tracer.h, "Outdoor scatterers"): an
-  // attempt on a port counts fully; of the attempts on outdoor scatterers only those whose
-  // light enters a room count (an upper 95 % bound on their share, from the attempts so far).
-  const double port_share = tally.bound_flux > 0 ? emitter.port_bound_flux(source) / tally.bound_flux : 1.0;
-  auto useful_share = [&](std::uint64_t attempts) {
-    if (port_share >= 1.0 || attempts == 0) return 1.0;
-    return std::min(1.0, port_share + (double(result.scattered_indoors) + 3.0) / double(attempts));
-  };
-  auto scaled_limit = [&](std::size_t per_target, std::uint64_t attempts) {
-    return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::ceil(
-                                          double(per_target) * double(largest) * useful_share(attempts))));
-  };
-
-  auto enough = [&](std::size_t target, std::uint64_t stored) {
-    return target == 0 ||
-           double(stored) >= std::min(100.0, std::ceil(options.prepass_fraction * double(target)));
-  };
-  for (;;) {
-    trace_attempts(scene, materials, planes, emitter, source, done, prepass, StorageProbabilities{}, options,
-                   result);
-    done = prepass;
-    const bool g_ok = enough(target_g, tally.stored_global);
-    const bool c_ok = enough(target_c, tally.stored_caustic);
-    const bool d_ok = enough(target_d, tally.stored_direct);
-    const bool g_found = target_g > 0 && tally.stored_global > 0 && g_ok;
-    const bool c_found = target_c > 0 && tally.stored_caustic > 0 && c_ok;
-    const bool d_found = target_d > 0 && tally.stored_direct > 0 && d_ok;
-    if (g_ok && c_ok && d_ok) break;
-    if ((g_found || c_found || d_found) && prepass >= 64 * initial) break;
-    if (prepass >= std::max(initial, scaled_limit(options.max_prepass_attempts_per_target, prepass))) break;
-    // Light enters but nothing is stored (every surface it reaches absorbs it before it
-    // scatters onto anything that stores, e.g. a black room): after 2^16 entries the stored
-    // fraction of the entering flux is below 5e-5 (95 % confidence: 3 / 65536); stop.
-    if (tally.entered >= NothingStoredEntries && tally.stored_global + tally.stored_caustic + tally.stored_direct == 0)
-      break;
-    // Nothing entered at all: the ports do not see this source (a sun disc's emission bound
-    // is a little above zero just behind a port's plane; a sky bin's is exact, see
-    // port_emission.h) or it is blocked. After 2^16 attempts its flux is below 5e-5 of the bound (95 %
-    // confidence: 3 / 65536) and is dropped.
-    if (tally.entered == 0 && prepass >= 65536) break;
-    prepass *= 2;
-  }
-  tally.prepass_attempts = prepass;
-
-  // Main pass (Alg. 4.2, eqs. 4.8-4.10): r_j = n_j / N_j - 1 from the pre-pass yields.
-  auto shortfall = [](std::size_t target, std::uint64_t stored) {
-    if (target == 0 || stored == 0) return 0.0;
-    return std::max(double(target) / double(stored), 1.0) - 1.0;
-  };
-  const double r_g = shortfall(target_g, tally.stored_global);
-  const double r_c = shortfall(target_c, tally.stored_caustic);
-  const double r_d = shortfall(target_d, tally.stored_direct);
-  const double r_max = std::max({r_g, r_c, r_d});
-  if (r_max > 0) {
-    tally.storage_probability_global = r_g / r_max;
-    tally.storage_probability_caustic = target_c > 0 ? r_c / r_max : r_g / r_max;
-    if (target_d > 0) tally.storage_probability_direct = r_d / r_max;
-    const StorageProbabilities d{tally.storage_probability_global, tally.storage_probability_caustic,
-                                 tally.storage_probability_direct};
-    // The low-yield cap (photon_tracer.h): fixed before any of these attempts is traced.
-    const std::uint64_t cap = options.max_mainpass_attempts_per_target == 0
-                                  ? std::numeric_limits<std::uint64_t>::max()
-                                  : scaled_limit(options.max_mainpass_attempts_per_target, prepass);
-    const double planned = std::ceil(double(prepass) * r_max);
-    tally.capped = planned > double(cap);
-    const std::uint64_t main = tally.capped ? cap : static_cast<std::uint64_t>(planned);
-    const std::uint64_t g0 = tally.stored_global, c0 = tally.stored_caustic, d0 = tally.stored_direct;
-    trace_attempts(scene, materials, planes, emitter, source, prepass, prepass + main, d, options,
-                   result);
-    tally.mainpass_attempts = main;
-    // Top-up (not in the thesis): the pre-pass yield has the noise of a few hundred photons,
-    // so the main pass can fall short by several per cent; its own yield (thousands of
-    // photons) sizes one more run of attempts with the same storage probabilities. Every
-    // attempt still carries bound_flux / attempts, so the flux stays unbiased.
-    double extra = 0;
-    auto need = [&](std::size_t target, std::uint64_t stored, std::uint64_t before) {
-      const double yield = double(stored - before) / double(main);
-      if (target == 0 || stored >= target || yield <= 0) return 0.0;
-      return double(target - stored) / yield;
-    };
-    extra = std::max({need(target_g, tally.stored_global, g0), need(target_c, tally.stored_caustic, c0),
-                      need(target_d, tally.stored_direct, d0)});
-    std::uint64_t topup = std::min<std::uint64_t>(main, static_cast<std::uint64_t>(std::ceil(extra)));
-    if (topup > cap - main) {
-      topup = cap - main;
-      tally.capped = true;
-    }
-    if (topup > 0) {
-      trace_attempts(scene, materials, planes, emitter, source, prepass + main,
-                     prepass + main + topup, d, options, result);
-      tally.mainpass_attempts += topup;
-    }
-  }
-
-  // Normalise (eqs. 4.11-4.12, per class: see the header comment).
-  tally.flux_per_attempt =
-      tally.bound_flux / double(tally.prepass_attempts + tally.mainpass_attempts);
-  float scale[3];  // indexed by PathClass
-  for (PathClass c : {PathClass::Direct, PathClass::Caustic, PathClass::Global})
-    scale[static_cast<int>(c)] = static_cast<float>(tally.stored_photon_flux(c));
-  auto rescale = [&scale](std::vector<Photon>& photons) {
-    for (Photon& p : photons)
-      for (float& f : p.flux) f *= scale[static_cast<int>(p.path_class)];
-  };
-  rescale(result.surface);
-  for (auto& plane : result.planes) rescale(plane);
-  return result;
+  result.counts += c;
+  return c;
 }
 
 }  // namespace
@@ -454,39 +298,88 @@ bool can_store_photons(const Scene& scene, const std::vector<Material>& material
   return scatters;
 }
 
+AttemptCounts& AttemptCounts::operator+=(const AttemptCounts& more) {
+  entered += more.entered;
+  stored_global += more.stored_global;
+  stored_caustic += more.stored_caustic;
+  stored_direct += more.stored_direct;
+  rays += more.rays;
+  scattered_indoors += more.scattered_indoors;
+  return *this;
+}
+
+bool operator==(const AttemptCounts& a, const AttemptCounts& b) {
+  return a.entered == b.entered && a.stored_global == b.stored_global && a.stored_caustic == b.stored_caustic &&
+         a.stored_direct == b.stored_direct && a.rays == b.rays && a.scattered_indoors == b.scattered_indoors;
+}
+
+AttemptRange trace_attempt_range(const Scene& scene, const std::vector<Material>& materials,
+                                 const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
+                                 const TracingOptions& options, std::size_t source, std::uint64_t first,
+                                 std::uint64_t last, const StorageProbabilities& storage) {
+  AttemptRange r;
+  trace_attempts(scene, materials, planes, emitter, static_cast<std::uint32_t>(source), first, last, storage,
+                 options, r);
+  return r;
+}
+
+void append_attempt_range(AttemptRange& to, AttemptRange&& more) {
+  if (to.surface.empty()) {
+    to.surface = std::move(more.surface);
+  } else {
+    to.surface.insert(to.surface.end(), more.surface.begin(), more.surface.end());
+  }
+  to.planes.resize(std::max(to.planes.size(), more.planes.size()));
+  for (std::size_t g = 0; g < more.planes.size(); ++g) {
+    if (to.planes[g].empty()) {
+      to.planes[g] = std::move(more.planes[g]);
+    } else {
+      to.planes[g].insert(to.planes[g].end(), more.planes[g].begin(), more.planes[g].end());
+    }
+  }
+  to.counts += more.counts;
+  more = AttemptRange{};
+}
+
 TracedPhotons trace_source_photons(const Scene& scene, const std::vector<Material>& materials,
                                    const PortEmitter& emitter,
                                    const std::vector<ReceiverPlane>& planes,
                                    const TracingOptions& options, std::size_t source) {
-  SourceResult r = trace_source(scene, materials, planes, emitter,
-                                static_cast<std::uint32_t>(source), options);
-  TracedPhotons out;
-  out.surface = std::move(r.surface);
-  out.planes = std::move(r.planes);
-  out.planes.resize(planes.size());
-  out.tallies.push_back(r.tally);
-  return out;
+  // The pass control (source_passes.h) with every pass traced here, into one range.
+  SourcePasses passes(scene, materials, emitter, planes, options, source);
+  AttemptRange photons;
+  photons.planes.resize(planes.size());
+  while (const std::optional<AttemptPass> pass = passes.next())
+    passes.record(trace_attempts(scene, materials, planes, emitter, static_cast<std::uint32_t>(source), pass->first,
+                                 pass->last, pass->storage, options, photons));
+  return passes.finish(std::move(photons));
 }
 
 TracedPhotons trace_source_attempts(const Scene& scene, const std::vector<Material>& materials,
                                     const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
                                     const TracingOptions& options, std::size_t source, std::uint64_t first,
                                     std::uint64_t last) {
-  SourceResult r;
+  AttemptRange r;
   r.planes.resize(planes.size());
-  r.tally.bound_flux = emitter.bound_flux(static_cast<std::uint32_t>(source));
+  SourceTally tally;
+  tally.bound_flux = emitter.bound_flux(static_cast<std::uint32_t>(source));
   if (!can_store_photons(scene, materials, planes)) {
-    r.tally.nothing_stores = true;
-  } else if (r.tally.bound_flux > 0 && last > first) {
+    tally.nothing_stores = true;
+  } else if (tally.bound_flux > 0 && last > first) {
     trace_attempts(scene, materials, planes, emitter, static_cast<std::uint32_t>(source), first, last,
                    StorageProbabilities{}, options, r);
-    r.tally.prepass_attempts = last - first;
+    tally.prepass_attempts = last - first;
+    tally.entered = r.counts.entered;
+    tally.stored_global = r.counts.stored_global;
+    tally.stored_caustic = r.counts.stored_caustic;
+    tally.stored_direct = r.counts.stored_direct;
+    tally.rays = r.counts.rays;
   }
   TracedPhotons out;
   out.surface = std::move(r.surface);
   out.planes = std::move(r.planes);
   out.planes.resize(planes.size());
-  out.tallies.push_back(r.tally);
+  out.tallies.push_back(tally);
   return out;
 }
 

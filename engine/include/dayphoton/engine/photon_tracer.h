@@ -177,6 +177,51 @@ TracedPhotons trace_source_attempts(const Scene& scene, const std::vector<Materi
                                     const TracingOptions& options, std::size_t source, std::uint64_t first,
                                     std::uint64_t last);
 
+// ---- ranges of attempts (the building block of the pass control, source_passes.h) --------
+
+/// Main-pass storage probability of each class (1 in the pre-pass): a record of class j is
+/// kept with probability d_j, drawn from its attempt's own storage stream.
+struct StorageProbabilities {
+  double global = 1, caustic = 1, direct = 1;
+};
+
+/// What the photon-count control reads of a run of attempts. Every field is a sum over the
+/// attempts, so the counts of [a, c) are those of [a, b) plus those of [b, c): a pass traced
+/// in ranges (on several ranks) has exactly the counts of the pass traced at once.
+struct AttemptCounts {
+  std::uint64_t entered = 0;  ///< accepted, unoccluded emissions
+  std::uint64_t stored_global = 0, stored_caustic = 0, stored_direct = 0;  ///< kept or only counted
+  std::uint64_t rays = 0;
+  /// Attempts that landed on an outdoor scatterer and whose path then entered a room.
+  std::uint64_t scattered_indoors = 0;
+
+  AttemptCounts& operator+=(const AttemptCounts& more);
+};
+bool operator==(const AttemptCounts& a, const AttemptCounts& b);
+
+/// Attempts [first, last) of one source: the stored photons in attempt order, each with its
+/// flux relative to its attempt's (not yet scaled: the scale depends on every pass, see
+/// SourceTally::stored_photon_flux), and their counts.
+struct AttemptRange {
+  std::vector<Photon> surface;              ///< kept only with options.keep_surface_photons
+  std::vector<std::vector<Photon>> planes;  ///< per receiver plane
+  AttemptCounts counts;
+};
+
+/// Traces attempts [first, last) of `source` with the storage probabilities `storage`, in
+/// parallel blocks. Attempt i is a pure function of (options.seed, source, i), so the ranges
+/// of any split of [a, b), appended in order (append_attempt_range), give the range [a, b)
+/// byte for byte. Traces whatever it is asked: the pass control (source_passes.h) decides
+/// whether a source is traced at all.
+AttemptRange trace_attempt_range(const Scene& scene, const std::vector<Material>& materials,
+                                 const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
+                                 const TracingOptions& options, std::size_t source, std::uint64_t first,
+                                 std::uint64_t last, const StorageProbabilities& storage);
+
+/// Appends `more`, the attempts right after those of `to`, to `to`: photons concatenated,
+/// counts summed.
+void append_attempt_range(AttemptRange& to, AttemptRange&& more);
+
 /// Concatenate per-source results in order (the layout trace_photons returns).
 TracedPhotons merge_traced_photons(std::vector<TracedPhotons>&& per_source);
 
