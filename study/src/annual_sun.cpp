@@ -98,13 +98,23 @@ engine::TracedPhotons trace_sun_bin(const engine::Scene& scene,
                                     const engine::SunBins& bins, std::size_t bin,
                                     const std::vector<engine::ReceiverPlane>& planes,
                                     const engine::TracingOptions& options) {
+  const engine::SourceSet one = sun_bin_source(bins, bin);
+  const engine::PortEmitter emitter(scene, one);
+  return engine::trace_source_photons(scene, materials, emitter, planes, sun_bin_tracing(options, bins, bin), 0);
+}
+
+engine::SourceSet sun_bin_source(const engine::SunBins& bins, std::size_t bin) {
   engine::SourceSet one;
   one.add_sun_disc(bins.direction(bin), sky::SunHalfAngle_rad);
+  return one;
+}
+
+engine::TracingOptions sun_bin_tracing(const engine::TracingOptions& options, const engine::SunBins& bins,
+                                       std::size_t bin) {
   engine::TracingOptions o = options;
   o.seed = sun_bin_seed(options.seed, bins.multiplication_factor(), bins.patch(bin));
   o.source_photon_factor.clear();
-  const engine::PortEmitter emitter(scene, one);
-  return engine::trace_source_photons(scene, materials, emitter, planes, o, 0);
+  return o;
 }
 
 void relabel_photons(engine::TracedPhotons& photons, std::uint32_t source) {

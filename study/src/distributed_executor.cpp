@@ -1,13 +1,16 @@
 // The distributed step executor: see distributed_executor.h.
 #include "dayphoton/study/distributed_executor.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "dayphoton/dist/distribute_jobs.h"
+#include "split_photon_steps.h"
 
 namespace dayphoton::study {
 namespace {
@@ -76,6 +79,19 @@ class DistributedExecutor final : public StepExecutor {
       }
     }
     if (misses.empty()) return computed;
+    // Big photon sources are traced in attempt ranges over the ranks (split_photon_steps.h).
+    const std::vector<std::size_t> split = photon_steps_to_split(steps, misses, m_comm.size());
+    if (!split.empty()) {
+      run_split_photon_steps(m_comm, steps, split, [&](std::size_t k, const std::vector<std::string>& artefacts) {
+        accept(steps[k], artefacts);
+        computed[k] = 1;
+        if (done) done(k, true);
+      });
+      std::vector<std::size_t> rest;
+      std::set_difference(misses.begin(), misses.end(), split.begin(), split.end(), std::back_inserter(rest));
+      misses = std::move(rest);
+      if (misses.empty()) return computed;
+    }
     dist::JobSet jobs;
     jobs.count = misses.size();
     // Equal costs: the steps of a batch are of one kind and of similar size (a sky source, a
@@ -89,11 +105,7 @@ class DistributedExecutor final : public StepExecutor {
     jobs.deliver = [&](std::size_t j, ByteBuffer bytes) {
       const Step& step = steps[misses[j]];
       std::size_t at = 0;
-      const std::vector<std::string> artefacts = get_strings(bytes, at);
-      if (!step.take(artefacts))
-        throw std::runtime_error(std::string("distributed executor: a ") + step_kind_name(step.kind) +
-                                 " step's result does not fit it");
-      if (m_comm.rank() == dist::RootRank) store(step, artefacts);
+      accept(step, get_strings(bytes, at));
       computed[misses[j]] = 1;
       if (done) done(misses[j], true);
     };
@@ -106,6 +118,14 @@ class DistributedExecutor final : public StepExecutor {
   }
 
  private:
+  /// A computed step's artefacts, on every rank: taken, and stored by rank 0.
+  void accept(const Step& step, const std::vector<std::string>& artefacts) const {
+    if (!step.take(artefacts))
+      throw std::runtime_error(std::string("distributed executor: a ") + step_kind_name(step.kind) +
+                               " step's result does not fit it");
+    if (m_comm.rank() == dist::RootRank) store(step, artefacts);
+  }
+
   /// Rank 0: each step's cached artefacts (all of them, or none), broadcast to every rank.
   std::vector<std::vector<std::string>> cached_on_root(const std::vector<Step>& steps) const {
     ByteBuffer message;

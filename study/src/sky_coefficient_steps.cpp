@@ -4,6 +4,7 @@
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/photon_range_step.h"
 #include "photon_pass_notes.h"
 
 namespace dayphoton::study {
@@ -65,6 +66,8 @@ void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, con
             return engine::trace_source_photons(cs.scene, cs.materials, emitter, cs.layout.planes, tracing, p);
           },
           encode_photons, decode_photons, [](const engine::TracedPhotons&) { return true; }));
+    for (std::size_t p = 0; p < sources.size(); ++p)
+      steps[p].ranges = sky_source_ranges(cs.scene, cs.materials, emitter, cs.layout.planes, tracing, p);
     const std::vector<char> traced =
         ctx.executor.run_batch(steps, [&](std::size_t, bool) { progress.advance(1); });
     progress.end();

@@ -7,6 +7,7 @@
 #include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/photon_range_step.h"
 #include "photon_pass_notes.h"
 
 namespace dayphoton::study {
@@ -118,6 +119,7 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
           StepKind::SunBinPhotons, i, {"sun-photons", keys[i]}, per_bin[i],
           [&cs, &bins, &tracing, i] { return trace_sun_bin(cs.scene, cs.materials, bins, i, cs.layout.planes, tracing); },
           encode_photons, decode_photons, [](const engine::TracedPhotons&) { return true; }));
+      steps.back().ranges = sun_bin_ranges(cs.scene, cs.materials, bins, i, cs.layout.planes, tracing);
     }
     const std::vector<char> traced = ctx.executor.run_batch(steps, [&](std::size_t k, bool) {
       const std::size_t bin = steps[k].index;

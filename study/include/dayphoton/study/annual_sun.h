@@ -53,6 +53,12 @@ engine::TracedPhotons trace_sun_bin(const engine::Scene& scene,
                                     const std::vector<engine::ReceiverPlane>& planes,
                                     const engine::TracingOptions& options);
 
+/// What trace_sun_bin traces: the set of bin `bin`'s one disc, and the options with the
+/// bin's seed and no per-source factors.
+engine::SourceSet sun_bin_source(const engine::SunBins& bins, std::size_t bin);
+engine::TracingOptions sun_bin_tracing(const engine::TracingOptions& options, const engine::SunBins& bins,
+                                       std::size_t bin);
+
 /// The seed of a sun bin's photons: SplitMix64-mixed (seed, mf, patch).
 std::uint64_t sun_bin_seed(std::uint64_t seed, int mf, int patch);
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 namespace dayphoton::study {
 
@@ -50,5 +51,19 @@ constexpr double SunBinMinimumBoundFraction = 0.01;
 /// 25 % more noise per hour, which the annual sums average out (docs/sun.md).
 constexpr double SunBinBandwidthFraction = 0.25;
 constexpr std::size_t SunBinMinimumBandwidth = 16;
+
+/// Under MPI (docs/cluster.md), a missing photon step of a batch is traced in attempt ranges
+/// over the ranks (photon_range_step.h) when its predicted cost exceeds 1/SplitSourceFactor of
+/// one rank's share of the batch: cost x ranks x SplitSourceFactor > the batch's total cost.
+/// The steps left whole are then each at most 1/8 of a rank's share, and a list schedule's
+/// makespan is at most the perfect share plus its largest job (R. L. Graham, "Bounds on
+/// multiprocessing timing anomalies", SIAM J. Appl. Math. 17(2), 1969), so within 12.5 % of
+/// it. This splits every source of a batch with fewer than 8 sources per rank, and the ground
+/// bin (16 sky bins' photons) of the 146 Tregenza sources from 2 ranks on.
+constexpr double SplitSourceFactor = 8.0;
+
+/// The smallest attempt range of a split pass: four of the tracer's 1024-attempt blocks, so a
+/// rank's threads have blocks to share. A pass shorter than two of these is not split.
+constexpr std::uint64_t MinSplitRangeAttempts = 4096;
 
 }  // namespace dayphoton::study

@@ -16,11 +16,14 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace dayphoton::study {
+
+struct PhotonRanges;  // photon_range_step.h
 
 /// What a step computes; its artefacts' cache kinds are in docs/cache.md.
 enum class StepKind {
@@ -52,6 +55,10 @@ struct Step {
   /// into the typed result and checks that they fit the step (dimensions). Returns false or
   /// throws when they do not: a cached artefact is then computed again.
   std::function<bool(const std::vector<std::string>&)> take;
+  /// A photon step's source traced in attempt ranges (photon_range_step.h), which an executor
+  /// may use instead of compute() to share one source over several processes; null for
+  /// every other step. Gives the bytes compute() gives.
+  std::shared_ptr<const PhotonRanges> ranges;
 };
 
 /// A step of one artefact of type T: `compute` returns the value, which is kept in `slot`
