@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "dayphoton/dist/distribute_jobs.h"
-#include "split_photon_steps.h"
+#include "dayphoton/study/plan_policy.h"
+#include "dayphoton/study/split_photon_steps.h"
 
 namespace dayphoton::study {
 namespace {
@@ -86,7 +87,7 @@ class DistributedExecutor final : public StepExecutor {
         accept(steps[k], artefacts);
         computed[k] = 1;
         if (done) done(k, true);
-      });
+      }, MinSplitRangeAttempts);
       std::vector<std::size_t> rest;
       std::set_difference(misses.begin(), misses.end(), split.begin(), split.end(), std::back_inserter(rest));
       misses = std::move(rest);

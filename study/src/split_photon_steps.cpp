@@ -1,5 +1,5 @@
 // Photon steps traced in attempt ranges over the ranks: see split_photon_steps.h.
-#include "split_photon_steps.h"
+#include "dayphoton/study/split_photon_steps.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -112,7 +112,8 @@ std::vector<std::size_t> photon_steps_to_split(const std::vector<Step>& steps, c
 
 void run_split_photon_steps(dist::Communicator& comm, const std::vector<Step>& steps,
                             const std::vector<std::size_t>& split,
-                            const std::function<void(std::size_t, const std::vector<std::string>&)>& deliver) {
+                            const std::function<void(std::size_t, const std::vector<std::string>&)>& deliver,
+                            std::uint64_t min_range_attempts) {
   std::vector<SplitSource> sources(split.size());
   for (std::size_t s = 0; s < split.size(); ++s) {
     const Step& step = steps[split[s]];
@@ -136,9 +137,11 @@ void run_split_photon_steps(dist::Communicator& comm, const std::vector<Step>& s
       if (sources[s].delivered) continue;
       const engine::AttemptPass pass = *sources[s].passes->next();
       const std::uint64_t length = pass.last - pass.first;
-      const std::uint64_t pieces = std::clamp<std::uint64_t>(length / MinSplitRangeAttempts, 1, ranks);
-      for (std::uint64_t i = 0; i < pieces && length > 0; ++i)
-        jobs.push_back({s, pass.first + length * i / pieces, pass.first + length * (i + 1) / pieces, pass.storage});
+      const std::uint64_t pieces = std::clamp<std::uint64_t>(length / std::max<std::uint64_t>(1, min_range_attempts), 1, ranks);
+      for (std::uint64_t i = 0; i < pieces && length > 0; ++i) {
+        const std::uint64_t first = pass.first + length * i / pieces, last = pass.first + length * (i + 1) / pieces;
+        jobs.push_back({s, first, last, pass.storage});
+      }
     }
     bool live = false;
     for (const SplitSource& s : sources) live = live || !s.delivered;
