@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Big photon sources traced in attempt ranges over the ranks (study/split_photon_steps.h,
+# docs/cluster.md "Big sources in attempt ranges"): a daylight-factor study of a small
+# side-lit room under the CIE overcast sky, run by one process and under `mpirun -np 2` and
+# `-np 3 --oversubscribe`, each with a cache of its own. Its ground bin (16 sky bins' photons,
+# GroundPhotonFactor) is more than 1/8 of a rank's share of the 146 sources from 2 ranks on
+# (SplitSourceFactor, plan_policy.h), so its main pass (about 40,000 attempts) is traced in
+# ranges of at least 4,096 attempts on every rank. Every file of the results folders must be
+# byte-identical to the one-process run's, apart from run.log (times) and the output folder's
+# name in summary.json.
+# Usage: run_split_sources_under_mpirun.sh DAYPHOTON MPIEXEC
+set -uo pipefail
+dayphoton=$1
+mpiexec=$2
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export TMPDIR=$tmp  # the other ranks' scratch folders go here
+fail=0
+
+cat > "$tmp/project.yaml" <<'YAML'
+version: 1
+study: daylight_factor
+site: {latitude: 51.5, longitude: -0.12, time_zone: 0}
+materials:
+  walls: {type: lambertian, reflectance: 0.5}
+  glass: {type: glass, transmittance: 0.6}
+geometry:
+  rooms:
+    - name: office
+      size: [4, 5, 3]
+      materials: {floor: walls, ceiling: walls, walls: walls}
+      windows: [{name: w, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]
+sensors:
+  grids:
+    - {name: workplane, room: office, height: 0.8, spacing: 0.5}
+simulation:
+  photons_per_bin: 1000
+outputs:
+  images: false
+  report: false
+YAML
+
+"$dayphoton" run "$tmp/project.yaml" --output "$tmp/out/serial" --cache "$tmp/cache/serial" --quiet > /dev/null ||
+  { echo "the one-process run failed"; exit 1; }
+for np in 2 3; do
+  out=$tmp/out/np$np
+  timeout 120 "$mpiexec" -np $np --oversubscribe --bind-to none "$dayphoton" run "$tmp/project.yaml" --output "$out" \
+    --cache "$tmp/cache/np$np" --quiet > "$tmp/np$np.log" 2>&1
+  rc=$?
+  [ $rc -eq 0 ] || { echo "mpirun -np $np: exit $rc"; cat "$tmp/np$np.log"; fail=1; continue; }
+  if ! diff -r -q -x run.log -x summary.json "$tmp/out/serial" "$out"; then
+    echo "mpirun -np $np wrote other results than the one-process run"
+    fail=1
+  fi
+  if ! cmp -s <(sed "s|$tmp/out/serial|OUT|g" "$tmp/out/serial/summary.json") <(sed "s|$out|OUT|g" "$out/summary.json"); then
+    echo "mpirun -np $np wrote another summary.json than the one-process run"
+    fail=1
+  fi
+  # The photons' cache artefacts themselves: the same bytes (file names are content keys).
+  if ! diff -r -q "$tmp/cache/serial" "$tmp/cache/np$np" > /dev/null; then
+    echo "mpirun -np $np cached other artefacts than the one-process run"
+    diff -r -q "$tmp/cache/serial" "$tmp/cache/np$np" | head -5
+    fail=1
+  fi
+done
+exit $fail
