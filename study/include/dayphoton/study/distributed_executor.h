@@ -11,6 +11,11 @@
 // is a pure function of its inputs and travels as the cache's own bytes, so the outputs are
 // those of a one-process run whose artefacts came from the cache: byte-identical to it.
 //
+// Big photon sources (a step whose predicted cost exceeds 1/SplitSourceFactor of a rank's
+// share of its batch, plan_policy.h) are not one job: their passes are traced in attempt
+// ranges over the ranks, with the passes' counts summed on every rank
+// (split_photon_steps.h); their artefacts are the same bytes.
+//
 // The caller makes sure the other ranks write nothing the user sees (the app gives them a
 // scratch output folder it removes, app/main.cpp).
 #pragma once
