@@ -80,19 +80,8 @@ class DistributedExecutor final : public StepExecutor {
       }
     }
     if (misses.empty()) return computed;
-    // Big photon sources are traced in attempt ranges over the ranks (split_photon_steps.h).
-    const std::vector<std::size_t> split = photon_steps_to_split(steps, misses, m_comm.size());
-    if (!split.empty()) {
-      run_split_photon_steps(m_comm, steps, split, [&](std::size_t k, const std::vector<std::string>& artefacts) {
-        accept(steps[k], artefacts);
-        computed[k] = 1;
-        if (done) done(k, true);
-      }, MinSplitRangeAttempts);
-      std::vector<std::size_t> rest;
-      std::set_difference(misses.begin(), misses.end(), split.begin(), split.end(), std::back_inserter(rest));
-      misses = std::move(rest);
-      if (misses.empty()) return computed;
-    }
+    misses = run_split_sources(steps, misses, computed, done);
+    if (misses.empty()) return computed;
     dist::JobSet jobs;
     jobs.count = misses.size();
     // Equal costs: the steps of a batch are of one kind and of similar size (a sky source, a
@@ -106,7 +95,11 @@ class DistributedExecutor final : public StepExecutor {
     jobs.deliver = [&](std::size_t j, ByteBuffer bytes) {
       const Step& step = steps[misses[j]];
       std::size_t at = 0;
-      accept(step, get_strings(bytes, at));
+      const std::vector<std::string> artefacts = get_strings(bytes, at);
+      if (!step.take(artefacts))
+        throw std::runtime_error(std::string("distributed executor: a ") + step_kind_name(step.kind) +
+                                 " step's result does not fit it");
+      if (m_comm.rank() == dist::RootRank) store(step, artefacts);
       computed[misses[j]] = 1;
       if (done) done(misses[j], true);
     };
@@ -119,12 +112,25 @@ class DistributedExecutor final : public StepExecutor {
   }
 
  private:
-  /// A computed step's artefacts, on every rank: taken, and stored by rank 0.
-  void accept(const Step& step, const std::vector<std::string>& artefacts) const {
-    if (!step.take(artefacts))
-      throw std::runtime_error(std::string("distributed executor: a ") + step_kind_name(step.kind) +
-                               " step's result does not fit it");
-    if (m_comm.rank() == dist::RootRank) store(step, artefacts);
+  /// The big photon sources among `misses`, traced in attempt ranges over the ranks
+  /// (split_photon_steps.h), each taken by every rank and stored by rank 0. Returns the
+  /// misses left to compute whole.
+  std::vector<std::size_t> run_split_sources(const std::vector<Step>& steps, const std::vector<std::size_t>& misses,
+                                             std::vector<char>& computed, const StepDone& done) {
+    const std::vector<std::size_t> split = photon_steps_to_split(steps, misses, m_comm.size());
+    if (split.empty()) return misses;
+    auto deliver = [&](std::size_t k, const std::vector<std::string>& artefacts) {
+      if (!steps[k].take(artefacts))
+        throw std::runtime_error(std::string("distributed executor: a ") + step_kind_name(steps[k].kind) +
+                                 " step's result does not fit it");
+      if (m_comm.rank() == dist::RootRank) store(steps[k], artefacts);
+      computed[k] = 1;
+      if (done) done(k, true);
+    };
+    run_split_photon_steps(m_comm, steps, split, deliver, MinSplitRangeAttempts);
+    std::vector<std::size_t> rest;
+    std::set_difference(misses.begin(), misses.end(), split.begin(), split.end(), std::back_inserter(rest));
+    return rest;
   }
 
   /// Rank 0: each step's cached artefacts (all of them, or none), broadcast to every rank.
