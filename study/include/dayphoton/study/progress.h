@@ -62,9 +62,13 @@ class Progress {
   struct StepTime {
     std::string name, unit;
     std::uint64_t work = 0;
-    double seconds = 0;
+    double seconds = 0;      ///< wall time
+    double cpu_seconds = 0;  ///< CPU time of the whole process (all threads) during the step
     bool cached = false;
   };
+  /// CPU time (user + system) of this process so far, all threads (clock_gettime
+  /// CLOCK_PROCESS_CPUTIME_ID); 0 where the clock is not available.
+  static double process_cpu_seconds();
   /// The steps ended so far, in order (read it when no other thread is using the Progress).
   const std::vector<StepTime>& steps() const { return m_steps; }
   /// End the open step, if any, and print the table of step times (not in Quiet).
@@ -88,6 +92,7 @@ class Progress {
   std::uint64_t m_total = 0;
   std::atomic<std::uint64_t> m_done{0};
   Clock::time_point m_step_start;
+  double m_step_cpu_start = 0;
   /// When the next redraw is due (Clock ticks), read by advance() without the lock.
   std::atomic<Clock::rep> m_next_draw{0};
   bool m_line_drawn = false;             ///< Terminal: a status line is on screen
