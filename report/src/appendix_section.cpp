@@ -103,7 +103,7 @@ std::string run_time_block(const std::string& results_dir) {
       << " took " << (cached == 1 ? "its" : "their") << " results from the cache of an earlier run and computed nothing";
   s << ". The images and this report were made after these times were recorded (<code>run.log</code> has their "
        "time). Times depend on the machine and its load, so they are kept out of the results "
-       "(<code>results.json</code>, <code>summary.json</code>), which a repeated run writes byte for byte.</p>";
+       "(<code>results.json</code> and the tables), which a repeated run writes byte for byte.</p>";
   return s.str();
 }
 

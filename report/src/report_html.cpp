@@ -539,7 +539,7 @@ std::string plan_key_svg(const GridData& g) {
   if (entries.empty()) return "";
   std::ostringstream s;
   const int row = 20;
-  s << "<svg class=\"plot key\" width=\"250\" height=\"" << row * static_cast<int>(entries.size()) + 8
+  s << "<svg class=\"plot key\" width=\"300\" height=\"" << row * static_cast<int>(entries.size()) + 8
     << "\" role=\"img\" aria-label=\"key of the plan\">";
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const int y = row * static_cast<int>(i) + 18;
@@ -747,7 +747,7 @@ const char* const Style = R"CSS(
 body{font-family:"DejaVu Sans",Helvetica,Arial,sans-serif;margin:24px auto;max-width:1180px;color:#111;line-height:1.35;padding:0 16px}
 h1{font-size:1.6em;margin-bottom:0.2em}h2{border-bottom:2px solid #333;margin-top:1.6em}h3{margin-bottom:0.3em}
 table{border-collapse:collapse;margin:0.5em 0}th,td{border:1px solid #bbb;padding:3px 8px;text-align:left;vertical-align:top}
-th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}table.kv th{width:18em}td.cached{color:#555;font-style:italic}.keys{display:flex;flex-direction:column;gap:8px}tr.total th{text-align:left}
+th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}table.kv th{width:18em}td.cached{color:#555;font-style:italic}table.timings td.n{white-space:nowrap}.keys{display:flex;flex-direction:column;gap:8px}tr.total th{text-align:left}
 .row{display:flex;flex-wrap:wrap;gap:18px;align-items:flex-start}figure{margin:0.4em 0}figcaption{font-size:0.85em;color:#333;max-width:560px}
 .lt{font-size:11px;fill:#111}.cv{font-size:9px;text-anchor:middle}.badge{padding:1px 8px;border-radius:3px;font-weight:bold;white-space:nowrap}
 .pass{background:#c7e9c0;color:#00441b}.fail{background:#fcbba1;color:#67000d}.na-badge{background:#e5e5e5;color:#333;font-weight:normal}
