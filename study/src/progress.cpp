@@ -261,7 +261,7 @@ void Progress::print_summary() {
   put("step", "work", "unit", "seconds", "rate /s", "share");
   for (const StepTime& s : m_steps) {
     if (s.cached) {
-      put(s.name, "cached", "", fixed(0.0, "%.2f"), "", share(0));
+      put(s.name, "", "", "from cache", "", "-");  // no time: nothing was computed (never "0.00")
     } else {
       put(s.name, std::to_string(s.work), s.unit, fixed(s.seconds, "%.2f"),
           s.seconds > 0 ? format_amount(double(s.work) / s.seconds) : "-", share(s.seconds));

@@ -10,7 +10,8 @@
 //     and once at each step's end, "photons: done in 12.6 s (2920000 photons, 232 k photons/s)";
 //   - Quiet: nothing.
 // A step served from the cache prints "name: cached". print_summary() prints the table of
-// where the time went (step, work, unit, seconds, rate, share of the total) and a total line.
+// where the time went (step, work, unit, seconds, rate, share of the total; a cached step
+// "from cache" instead of a time) and a total line.
 //
 // Cost for workers: advance() is one relaxed atomic add and a clock read; only when a redraw
 // is due does it try_lock the mutex, and if another thread holds it, it skips the redraw,
