@@ -268,6 +268,12 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
     const study::SunSite site = run_site ? *run_site : study::header_sun_site(weather);
     site_line = study::sun_site_sentence(site) + (run_site ? " (the run's, from " + recorded->results_path + ")"
                                                            : std::string(" (no results.json records a site)"));
+    // A weather file of another station than the run's: its irradiance stands for the site's
+    // sky only where the climates are alike. `run` says so in its log; `annual` on stderr,
+    // even with --quiet (the sun is still the run's site's, so the numbers are what `run`
+    // would compute with this file).
+    if (const std::string w = study::station_distance_warning(site); !w.empty())
+      std::cerr << "warning: " << grid_dir << ": " << (w.rfind("warning: ", 0) == 0 ? w.substr(9) : w) << '\n';
     require_matrix_within_limit("the sky matrix (" + std::to_string(basis.bin_count()) +
                                     " bins, one column per record of " + weather_path + ")",
                                 static_cast<std::uint64_t>(basis.bin_count()), weather.records.size(), 3,

@@ -1,7 +1,8 @@
-// The appendix: site, weather station, simulation settings, versions, notes and where the
-// run's timings are; see report_sections.h.
+// The appendix: site, weather station, simulation settings, the run's times, versions and
+// notes; see report_sections.h.
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -9,7 +10,9 @@
 #include <OpenEXRConfig.h>
 #include <png.h>
 
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/report/report_format.h"
+#include "dayphoton/study/run_timings.h"
 #include "report_sections.h"
 
 #ifndef DAYPHOTON_VERSION
@@ -53,11 +56,62 @@ Rows weather_station(const std::string& path) {
 
 std::string degrees(double v) { return format_value(v, Precision::Ratio); }
 
+std::string seconds_cell(double s) { return "<td class=\"n\">" + esc(format_value(s, Precision::Seconds)) + " s</td>"; }
+
+/// The run's times per step (timings.json): wall and CPU seconds, the work done, or "from
+/// cache" for a step whose results the cache held; the time outside the steps and the total.
+std::string run_time_block(const std::string& results_dir) {
+  std::ostringstream s;
+  s << "<h3 id=\"run-time\">Run time</h3>";
+  std::optional<study::RunTimings> timings;
+  try {
+    timings = study::read_run_timings(results_dir);
+  } catch (const std::exception& e) {
+    s << "<p>The run's times could not be read: " << esc(e.what()) << "</p>";
+    return s.str();
+  }
+  if (!timings) {
+    s << "<p>This results folder has no <code>" << study::TimingsFileName
+      << "</code> (it was written by a dayphoton that did not record the run's times): the time of each step, if "
+         "any, is in <code>run.log</code>.</p>";
+    return s.str();
+  }
+  double steps_wall = 0;
+  std::size_t cached = 0;
+  s << "<table class=\"timings\"><tr><th>step</th><th>time</th><th>CPU time</th><th>work</th></tr>";
+  for (const study::StepTiming& st : timings->steps) {
+    s << "<tr><td>" << esc(st.name) << "</td>";
+    if (st.cached) {
+      ++cached;
+      s << "<td class=\"cached\" colspan=\"3\">from cache</td></tr>";
+      continue;
+    }
+    steps_wall += st.wall_s;
+    s << seconds_cell(st.wall_s) << seconds_cell(st.cpu_s) << "<td class=\"n\">" << st.work << ' ' << esc(st.unit)
+      << "</td></tr>";
+  }
+  const double other = timings->total_wall_s - steps_wall;
+  if (other >= 0.01)
+    s << "<tr><td>between the steps (reading the project and the weather, daylight factors, writing the result files)</td>" << seconds_cell(other)
+      << "<td></td><td></td></tr>";
+  s << "<tr class=\"total\"><th>total, until the results were written</th>" << seconds_cell(timings->total_wall_s)
+    << seconds_cell(timings->total_cpu_s) << "<td></td></tr></table>";
+  s << "<p>Times of this run on " << timings->threads << (timings->threads == 1 ? " thread" : " threads")
+    << " (CPU time: all threads of the process together)";
+  if (cached > 0)
+    s << "; " << cached << (cached == 1 ? " step" : " steps")
+      << " took " << (cached == 1 ? "its" : "their") << " results from the cache of an earlier run and computed nothing";
+  s << ". The images and this report were made after these times were recorded (<code>run.log</code> has their "
+       "time). Times depend on the machine and its load, so they are kept out of the results "
+       "(<code>results.json</code> and the tables), which a repeated run writes byte for byte.</p>";
+  return s.str();
+}
+
 }  // namespace
 
-std::string appendix_section(const study::ResultsModel& m) {
+std::string appendix_section(const study::ResultsModel& m, const std::string& results_dir) {
   std::ostringstream s;
-  s << "<section id=\"appendix\"><h2>Appendix: site, weather, settings and versions</h2>";
+  s << "<section id=\"appendix\"><h2>Appendix: site, weather, settings, run time and versions</h2>";
   Rows site{{"project file", esc(m.project_name)},
             {"site", esc(m.site_name)},
             {"latitude (deg, north +)", degrees(m.latitude_deg)},
@@ -85,9 +139,7 @@ std::string appendix_section(const study::ResultsModel& m) {
   Rows settings;
   for (const study::Setting& setting : m.settings) settings.emplace_back(esc(setting.name), esc(setting.value));
   s << key_value_table(settings);
-  s << "<h3 id=\"run-time\">Run time</h3><p>The time of each step of the run, and which steps came from the cache "
-       "instead of being computed, are in <code>run.log</code> in the results folder. The results model holds no "
-       "times, so that a repeated run (computed or from the cache) gives the same results and the same report.</p>";
+  s << run_time_block(results_dir);
   s << "<h3 id=\"versions\">Versions</h3>";
   Rows versions{{"report written by", std::string("dayphoton ") + DAYPHOTON_VERSION},
                 {"results computed by", "dayphoton " + esc(m.dayphoton_version) + " (" + esc(m.compiler) + ")"},

@@ -50,6 +50,9 @@ std::string format_value(double v, Precision kind) {
     case Precision::Length: return trimmed(v, 2);
     case Precision::Area: return trimmed(v, 1);
     case Precision::Points: return format_delta(v, Precision::Percent);
+    case Precision::Seconds:
+      if (v < 0.01) return "< 0.01";
+      return v < 9.95 ? significant(v, 2) : fixed(v, 0);
   }
   return fixed(v, 2);
 }

@@ -17,6 +17,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/report/colour_scale.h"
+#include "dayphoton/report/plan_picture.h"
 #include "dayphoton/study/image_files.h"
 #include "dayphoton/report/report_format.h"
 #include "report_sections.h"
@@ -87,12 +88,6 @@ std::string id_part(const std::string& s) {
 
 // ---- inputs -----------------------------------------------------------------------------
 
-/// Plan geometry of one grid in world coordinates: outline and window polygons.
-struct PlanGeometry {
-  std::vector<Vec3> outline;
-  std::vector<std::vector<Vec3>> windows;
-};
-
 struct GridData {
   std::string case_kind;  ///< "base", "variant", "operated"
   std::string case_name;  ///< "" for the base case, else the variant or "operated (open/shaded)"
@@ -106,7 +101,7 @@ struct GridData {
   std::optional<std::vector<double>> df, da, udi, autonomous;
   std::optional<metrics::IlluminanceTable> illuminance;
   std::vector<std::string> problems;
-  PlanGeometry plan;
+  PlanGeometry plan;  ///< outline, openings and daylight systems near the grid (plan_picture.h)
 
   std::string title() const { return case_name.empty() ? name : case_name + " / " + name; }
   const AnnualSummary* annual() const { return grid->annual ? &*grid->annual : nullptr; }
@@ -125,8 +120,8 @@ GridData load_grid(const std::string& results_dir, const study::CaseResult& c, c
   g.folder_path = (fs::path(results_dir) / grid.folder).string();
   g.id = grid_section_id(c, grid);
   g.positions = grid.positions_m;
-  g.plan.outline = grid.outline;
-  for (int k : grid.openings_drawn) g.plan.windows.push_back(c.openings.at(static_cast<std::size_t>(k)));
+  // The geometry the grid PNGs draw, chosen by the same rule (what is near the grid).
+  g.plan = plan_geometry(c, grid);
   auto values = [&](const char* kind, std::optional<std::vector<double>>& out) {
     const study::SensorQuantity* q = grid.find_quantity(kind);
     if (!q) return;
@@ -195,6 +190,10 @@ struct Frame {
   double y(const Vec3& p) const { return margin + (dot(p - origin, v) - min_v) * px_per_m; }
 };
 
+/// The grid PNGs' system colours (plan_picture.h) as CSS.
+const std::string SystemFillCss = hex_colour({SystemFill[0], SystemFill[1], SystemFill[2]});
+const std::string SystemEdgeCss = hex_colour({SystemEdge[0], SystemEdge[1], SystemEdge[2]});
+
 std::string polygon_points(const Frame& f, const std::vector<Vec3>& poly) {
   std::ostringstream s;
   for (const Vec3& p : poly) s << num(f.x(p), 1) << ',' << num(f.y(p), 1) << ' ';
@@ -225,7 +224,9 @@ std::string plan_svg(const GridData& g, const study::SensorLattice& lattice, con
   };
   for (const Vec3& p : g.positions) extend(p, half);
   for (const Vec3& p : g.plan.outline) extend(p, 0);
-  for (const auto& w : g.plan.windows)
+  for (const auto& w : g.plan.openings)
+    for (const Vec3& p : w) extend(p, 0);
+  for (const auto& w : g.plan.systems)
     for (const Vec3& p : w) extend(p, 0);
   if (!std::isfinite(lo_u)) lo_u = hi_u = lo_v = hi_v = 0;
   const double span_u = std::max(hi_u - lo_u, 0.5), span_v = std::max(hi_v - lo_v, 0.5);
@@ -262,7 +263,13 @@ std::string plan_svg(const GridData& g, const study::SensorLattice& lattice, con
   }
   if (g.plan.outline.size() >= 3)
     s << "<polygon points=\"" << polygon_points(f, g.plan.outline) << "\" fill=\"none\" stroke=\"#222\" stroke-width=\"2\"/>";
-  for (const auto& w : g.plan.windows)
+  // Outdoor daylight systems (shelves, louvres, panels) projected onto the plan: half-transparent
+  // grey with a dark edge, as on the grid PNGs (plan_picture.h SystemFill, SystemEdge).
+  for (const auto& sys : g.plan.systems)
+    s << "<polygon class=\"system\" points=\"" << polygon_points(f, sys) << "\" fill=\"" << SystemFillCss
+      << "\" fill-opacity=\"" << num(SystemFill[3] / 255.0, 2) << "\" stroke=\"" << SystemEdgeCss
+      << "\" stroke-width=\"1.5\"><title>daylight system</title></polygon>";
+  for (const auto& w : g.plan.openings)
     s << "<polygon class=\"window\" points=\"" << polygon_points(f, w)
       << "\" fill=\"#7fc8ff\" stroke=\"#1565c0\" stroke-width=\"5\" stroke-linejoin=\"round\"><title>window</title></polygon>";
   // North arrow (the world +Y direction in the plan frame), if north lies in the plane.
@@ -513,11 +520,42 @@ std::vector<MetricRow> metric_rows(const AnnualSummary& a) {
           {"mean illuminance, occupied hours", a.mean_occupied_lux, "lx", Precision::Illuminance}};
 }
 
+/// The key of a plan's drawn geometry: one entry per kind of thing the plan shows (the grid's
+/// outline, windows, daylight systems); empty when it shows none.
+std::string plan_key_svg(const GridData& g) {
+  std::vector<std::pair<std::string, std::string>> entries;  // (symbol, label)
+  if (g.plan.outline.size() >= 3)
+    entries.emplace_back("<rect x=\"4\" y=\"-9\" width=\"22\" height=\"12\" fill=\"#f2f2f2\" stroke=\"#222\" "
+                         "stroke-width=\"2\"/>",
+                         g.plan.plan ? "room / grid outline" : "wall / grid outline");
+  if (!g.plan.openings.empty())
+    entries.emplace_back("<line x1=\"4\" y1=\"-3\" x2=\"26\" y2=\"-3\" stroke=\"#1565c0\" stroke-width=\"5\"/>",
+                         "window or opening");
+  if (!g.plan.systems.empty())
+    entries.emplace_back(std::string("<rect x=\"4\" y=\"-9\" width=\"22\" height=\"12\" fill=\"") + SystemFillCss +
+                             "\" fill-opacity=\"" + num(SystemFill[3] / 255.0, 2) + "\" stroke=\"" + SystemEdgeCss +
+                             "\" stroke-width=\"1.5\"/>",
+                         "daylight system (outdoors, seen from above)");
+  if (entries.empty()) return "";
+  std::ostringstream s;
+  const int row = 20;
+  s << "<svg class=\"plot key\" width=\"300\" height=\"" << row * static_cast<int>(entries.size()) + 8
+    << "\" role=\"img\" aria-label=\"key of the plan\">";
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const int y = row * static_cast<int>(i) + 18;
+    s << "<g class=\"key-entry\" transform=\"translate(0," << y << ")\">" << entries[i].first << "<text x=\"34\" y=\"1\" "
+      << "class=\"lt\">" << esc(entries[i].second) << "</text></g>";
+  }
+  s << "</svg>";
+  return s.str();
+}
+
 std::string plan_block(const GridData& g, const study::SensorLattice& lattice, const std::vector<double>& values,
                        const ColourScale& scale, Precision precision, const std::string& caption, PageIds& page) {
   std::ostringstream s;
   s << "<figure class=\"planfig\"><div class=\"row\">" << plan_svg(g, lattice, values, scale, precision, caption)
-    << legend_svg(scale, page) << "</div><figcaption>" << caption << "</figcaption></figure>";
+    << "<div class=\"keys\">" << legend_svg(scale, page) << plan_key_svg(g) << "</div></div><figcaption>" << caption
+    << "</figcaption></figure>";
   return s.str();
 }
 
@@ -547,7 +585,9 @@ std::string grid_section(const GridData& g, PageIds& page) {
   if (g.df && g.grid->daylight_factor) {
     const std::vector<double>& df = *g.df;
     s << plan_block(g, lattice, df, daylight_factor_scale(), Precision::DaylightFactor,
-                    "Daylight factor per sensor (%), CIE standard overcast sky, ground included. Windows in blue.", page);
+                    std::string("Daylight factor per sensor (%), CIE standard overcast sky, ground included. Windows in blue") +
+                        (g.plan.systems.empty() ? "." : ", outdoor daylight systems in grey (see the key)."),
+                    page);
     const study::DaylightFactorSummary& st = *g.grid->daylight_factor;
     auto df_text = [](double v) { return format_value(v, Precision::DaylightFactor) + " %"; };
     std::vector<std::pair<std::string, std::string>> rows{
@@ -707,7 +747,7 @@ const char* const Style = R"CSS(
 body{font-family:"DejaVu Sans",Helvetica,Arial,sans-serif;margin:24px auto;max-width:1180px;color:#111;line-height:1.35;padding:0 16px}
 h1{font-size:1.6em;margin-bottom:0.2em}h2{border-bottom:2px solid #333;margin-top:1.6em}h3{margin-bottom:0.3em}
 table{border-collapse:collapse;margin:0.5em 0}th,td{border:1px solid #bbb;padding:3px 8px;text-align:left;vertical-align:top}
-th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}table.kv th{width:18em}
+th{background:#eee}td.n{text-align:right;font-variant-numeric:tabular-nums}table.kv th{width:18em}td.cached{color:#555;font-style:italic}table.timings td.n{white-space:nowrap}.keys{display:flex;flex-direction:column;gap:8px}tr.total th{text-align:left}
 .row{display:flex;flex-wrap:wrap;gap:18px;align-items:flex-start}figure{margin:0.4em 0}figcaption{font-size:0.85em;color:#333;max-width:560px}
 .lt{font-size:11px;fill:#111}.cv{font-size:9px;text-anchor:middle}.badge{padding:1px 8px;border-radius:3px;font-weight:bold;white-space:nowrap}
 .pass{background:#c7e9c0;color:#00441b}.fail{background:#fcbba1;color:#67000d}.na-badge{background:#e5e5e5;color:#333;font-weight:normal}
@@ -824,7 +864,7 @@ std::string report_html_of(const std::string& results_dir, const ResultsModel& m
       ids.push_back(g.id + part);
   }
   body << sky_section(results_dir, ids, page);
-  body << methods_section(model) << appendix_section(model);
+  body << methods_section(model) << appendix_section(model, results_dir);
   ids.push_back("methods");
   ids.push_back("appendix");
 
@@ -850,7 +890,7 @@ std::string report_html_of(const std::string& results_dir, const ResultsModel& m
   for (const GridData& g : grids) html << "<li><a href=\"#" << g.id << "\">" << esc(g.title()) << "</a></li>";
   if (std::find(ids.begin(), ids.end(), "sky") != ids.end()) html << "<li><a href=\"#sky\">Sky</a></li>";
   html << "<li><a href=\"#methods\">Methods, validation, uncertainty</a></li><li><a href=\"#appendix\">Appendix: "
-          "settings and versions</a></li></ul></nav>\n"
+          "settings, run time and versions</a></li></ul></nav>\n"
        << body.str() << "\n<script>" << Script << "</script>\n</body></html>\n";
   return html.str();
 }

@@ -32,9 +32,10 @@ std::string variants_section(const study::ResultsModel& model);
 /// (validation_figures.h) and the uncertainty the run reached per grid.
 std::string methods_section(const study::ResultsModel& model);
 
-/// "appendix" (appendix_section.cpp): site, weather station, simulation settings, versions,
-/// notes and where the run's timings are.
-std::string appendix_section(const study::ResultsModel& model);
+/// "appendix" (appendix_section.cpp): site, weather station, simulation settings, the run's
+/// times per step (timings.json in `results_dir`, read through study::read_run_timings; a
+/// folder without it says so), versions and notes.
+std::string appendix_section(const study::ResultsModel& model, const std::string& results_dir);
 
 /// The element id of a grid's section: "grid-<grid>" or "grid-<case>--<grid>".
 std::string grid_section_id(const study::CaseResult& c, const study::GridResult& g);

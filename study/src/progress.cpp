@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 
 namespace dayphoton::study {
 
@@ -49,6 +50,12 @@ double seconds_between(std::chrono::steady_clock::time_point a,
 
 }  // namespace
 
+double Progress::process_cpu_seconds() {
+  timespec t{};
+  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t) != 0) return 0;
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
 Progress::Progress(std::ostream& out, ProgressStyle style, double line_interval_s)
     : m_out(out), m_style(style), m_line_interval_s(line_interval_s) {}
 
@@ -78,6 +85,7 @@ void Progress::start(const std::string& name, std::uint64_t total, const std::st
   m_total = total;
   m_done.store(0);
   m_step_start = Clock::now();
+  m_step_cpu_start = process_cpu_seconds();
   m_open = true;
   m_next_draw.store((m_step_start + std::chrono::duration_cast<Clock::duration>(
                                         std::chrono::duration<double>(interval_s())))
@@ -162,6 +170,7 @@ void Progress::end_locked() {
   step.unit = m_unit;
   step.work = m_done.load();
   step.seconds = seconds_between(m_step_start, now);
+  step.cpu_seconds = std::max(0.0, process_cpu_seconds() - m_step_cpu_start);
   m_steps.push_back(step);
   m_open = false;
 
@@ -252,7 +261,7 @@ void Progress::print_summary() {
   put("step", "work", "unit", "seconds", "rate /s", "share");
   for (const StepTime& s : m_steps) {
     if (s.cached) {
-      put(s.name, "cached", "", fixed(0.0, "%.2f"), "", share(0));
+      put(s.name, "", "", "from cache", "", "-");  // no time: nothing was computed (never "0.00")
     } else {
       put(s.name, std::to_string(s.work), s.unit, fixed(s.seconds, "%.2f"),
           s.seconds > 0 ? format_amount(double(s.work) / s.seconds) : "-", share(s.seconds));

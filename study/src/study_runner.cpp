@@ -2,10 +2,12 @@
 #include "dayphoton/study/study_runner.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
@@ -30,6 +32,7 @@
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/compliance_verdicts.h"
 #include "dayphoton/study/results_model_builder.h"
+#include "dayphoton/study/run_timings.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/study/verdict_uncertainty.h"
 #include "dayphoton/weather/hourly_weather.h"
@@ -250,9 +253,12 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
         std::vector<sky::SunRecord> daytime = ss.suns;
         daytime.insert(daytime.end(), sun[g].other_suns.begin(), sun[g].other_suns.end());
         const std::string d_path = join_path(folders[g], radiance_sun_matrix_name(bins.multiplication_factor()));
+        progress.start(prefix + "sun matrix for RADIANCE " + grid.name, grid.points.size(), "sensors");
         log.line(prefix + write_radiance_sun_matrix(scene, materials, grid, cs.scene_hash, bins,
                                                     sun[g].bin_coefficients, daytime, plan.sun_direct_samples,
                                                     sim.seed, ctx.executor, d_path, matrix_format));
+        progress.advance(grid.points.size());
+        progress.end();
         ctx.outputs.record(d_path);
       }
       if (!annual) continue;
@@ -304,6 +310,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
 
 RunReport run_study(const project::Project& project, const RunSettings& settings,
                     Progress& progress) {
+  // The run's own clock, for timings.json (the history of the run, not a result).
+  const auto run_start = std::chrono::steady_clock::now();
+  const double run_cpu_start = Progress::process_cpu_seconds();
   RunReport report;
   const project::Simulation& sim = project.simulation;
   // The weather file and the site of its sun first: a time zone that is not the file's is an
@@ -334,6 +343,9 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   const std::size_t temporaries = remove_dead_temporaries(report.output_dir) + remove_dead_temporaries(cache_dir);
   const std::string this_run = lock.owner().describe();
   OutputManifest outputs = OutputManifest::begin(report.output_dir, this_run);
+  // The previous run's times go with its outputs: a report of this folder must not show them.
+  std::error_code no_timings;
+  fs::remove(join_path(report.output_dir, TimingsFileName), no_timings);
   const ArtifactStore store(cache_dir);
   RunLog log(progress, join_path(report.output_dir, "run.log"));
   log.line("project " + project.path + " -> " + report.output_dir);
@@ -484,6 +496,16 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   model.cases = std::move(cases);
   assess_compliance(model);
   outputs.record(write_results_model(model, report.output_dir));
+  // timings.json (run_timings.h): every step so far, before the report that shows them. Like
+  // run.log it is the run's history, so summary.json does not list it.
+  progress.end();
+  write_run_timings(
+      run_timings_of(progress.steps(),
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count(),
+                     std::max(0.0, Progress::process_cpu_seconds() - run_cpu_start),
+                     static_cast<unsigned>(
+                         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism))),
+      report.output_dir);
   if ((project.outputs.images || project.outputs.report) && settings.write_views) {
     progress.start("images and report", 1, "report");
     outputs.record(settings.write_views(report.output_dir, model, project.outputs.images, project.outputs.report));

@@ -162,7 +162,9 @@ SunSite recorded_sun_site(const project::Site& p, const std::string& summary_pat
     throw InputError(SourceLocation{summary_path, 0, 0},
                      "the run computed the sun on the clock of " + utc_offset_text(p.time_zone_h) + ", but the records of " +
                          weather.source_name + " are local standard time of " +
-                         utc_offset_text(weather.site.time_zone_h) + ": give the run's weather file");
+                         utc_offset_text(weather.site.time_zone_h) +
+                         ": give a weather file on the run's clock (of the run's site), or run the project with this "
+                         "weather file");
   return sun_site_at(p.latitude_deg, p.longitude_deg, p.time_zone_h, p.elevation_m, weather);
 }
 

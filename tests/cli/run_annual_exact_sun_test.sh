@@ -8,7 +8,8 @@
 # metric settings, each grid's own schedule and the site come from the run's results.json. Command-line thresholds override the run's. Then: --sun spread is the old sky-only result (no ASE, other numbers); another
 # weather file of the same site (the Oakland irradiance shifted by a day) runs with every
 # sun at an exported position; a site moved by 0.05 deg (in results.json) warns that the
-# direct sun is interpolated; moved by 5 deg it is a located error; a damaged
+# direct sun is interpolated; moved by 5 deg it is a located error; another station's file on
+# the run's clock warns that it is far, one on another clock is a located error; a damaged
 # direct_sun.bin.gz is a located error.
 set -u
 cd "$(dirname "$0")/../.."
@@ -95,6 +96,26 @@ PY
   >"$scratch/shifted.out" 2>"$scratch/shifted.err" || fail "annual with another weather file exited $?: $(cat "$scratch/shifted.err")"
 grep -q "interpolated" "$scratch/shifted.err" && fail "the same site's suns were not all exported: $(cat "$scratch/shifted.err")"
 cmp -s "$run/desks/metrics.csv" "$scratch/shifted/metrics.csv" && fail "another weather file gives the same metrics"
+
+# A weather file of another station on the run's clock (the shifted file under a Seattle
+# header, 1082 km away): the sun is still the run's site's, as `run` would compute it with this
+# file, and annual warns that the station is far, as run does. Another clock (the header's
+# time zone UTC+1): a located error naming both clocks, never a silent shift of the sun.
+sed '1s/.*/LOCATION,Seattle Tacoma Intl Arpt,WA,USA,TMY3,727930,47.45,-122.31,-8.0,122.0/' "$scratch/shifted.epw" \
+  >"$scratch/seattle.epw"
+"$bin" annual --coefficients "$run/desks" --weather "$scratch/seattle.epw" -o "$scratch/seattle" --quiet \
+  2>"$scratch/seattle.err" || fail "annual with another station's file exited $?: $(cat "$scratch/seattle.err")"
+grep -q "^warning: .*desks: the weather station Seattle Tacoma Intl Arpt, WA, USA (WMO 727930) is 1082 km from the site" \
+  "$scratch/seattle.err" || fail "no distant-station warning: $(cat "$scratch/seattle.err")"
+cmp -s "$scratch/shifted/metrics.csv" "$scratch/seattle/metrics.csv" ||
+  fail "the same irradiance under another station's header gives other metrics (the sun must stay the run's site's)"
+sed '1s/.*/LOCATION,Mannheim,BW,DEU,BBSR,107290,49.52000,8.55000,1.0,96.0/' "$scratch/shifted.epw" >"$scratch/mannheim.epw"
+"$bin" annual --coefficients "$run/desks" --weather "$scratch/mannheim.epw" -o "$scratch/mannheim" --quiet \
+  >/dev/null 2>"$scratch/mannheim.err"
+[ $? -eq 1 ] || fail "a weather file on another clock is not an input error: $(cat "$scratch/mannheim.err")"
+grep -q "results.json: error: the run computed the sun on the clock of UTC-8, but the records of .*mannheim.epw are local standard time of UTC+1" \
+  "$scratch/mannheim.err" || fail "another clock: $(cat "$scratch/mannheim.err")"
+[ ! -e "$scratch/mannheim/metrics.csv" ] || fail "another clock wrote metrics"
 
 # A site 0.05 deg north of the run's: suns near exported ones, a warning; 5 deg: an error.
 for dlat in 0.05 5; do

@@ -203,6 +203,21 @@ if [ "$code" -eq 0 ] && iconv -f UTF-8 -t UTF-8 "$latin1/results/summary.json" >
 else
   echo "FAIL run_folder_name_not_utf8: exit $code"; cat "$scratch/latin1.out"; failed=$((failed + 1))
 fi
+# The same run is a daylight-factor study without a weather file (`check` of it passes:
+# check_daylight_factor_only above): no sky matrix, sun or annual step in its log, and none in
+# its typed step list (timings.json), which has the photons and coefficients.
+if [ "$code" -eq 0 ] && ! grep -qE "^(sky matrix|sun |direct sun|annual|time: (sky matrix|sun|direct sun|annual))" "$latin1/results/run.log" &&
+   python3 - "$latin1/results/timings.json" <<'PY'
+import json, sys
+names = [s["name"] for s in json.load(open(sys.argv[1]))["steps"]]
+assert "photons" in names and "coefficients workplane" in names, names
+assert not [n for n in names if n.startswith(("sky matrix", "sun", "direct sun", "annual"))], names
+PY
+then
+  echo "ok   run_daylight_factor_only_no_sun_step"; passed=$((passed + 1))
+else
+  echo "FAIL run_daylight_factor_only_no_sun_step"; cat "$latin1/results/run.log"; failed=$((failed + 1))
+fi
 
 # annual: recomputes tables and metrics from exported coefficients (a synthetic 2-sensor grid).
 EPW=projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw

@@ -8,7 +8,9 @@
 #     folder has no summary.json, has INCOMPLETE, and holds no output of the earlier run;
 #  3. the re-run completed: only its own outputs (the earlier illuminance.csv is gone), the
 #     temporaries of killed writes removed, the manifest matches;
-#  4. a fully cached re-run writes byte-identical results (the run's history is in run.log);
+#  4. a fully cached re-run writes byte-identical results (the run's history is in run.log and
+#     timings.json, and in report.html's appendix, which shows the times: summary.json differs
+#     only in report.html's hash), its timings.json marks every step "from cache";
 #  5. a second run into a folder that a running run holds fails with exit 5, naming the
 #     holder's pid and start time; after the holder is killed, the next run takes the lock over
 #     and says so in run.log.
@@ -71,9 +73,27 @@ echo "ok   completed re-run: only its own outputs, manifest matches, dead tempor
 cp -r "$out" "$scratch/before"
 "$bin" run "$scratch/office/second.yaml" --output "$out" --quiet || fail "the cached run failed"
 grep -q "photons: traced 0 of 146" "$out/run.log" || fail "cached run: $(grep photons "$out/run.log")"
-diff -r -x run.log "$scratch/before" "$out" >/dev/null ||
-  fail "a fully cached run changed: $(diff -rq -x run.log "$scratch/before" "$out")"
-echo "ok   fully cached re-run: every output byte-identical (summary.json and grid_metrics.json included)"
+history=(-x run.log -x timings.json -x report.html -x summary.json)
+diff -r "${history[@]}" "$scratch/before" "$out" >/dev/null ||
+  fail "a fully cached run changed: $(diff -rq "${history[@]}" "$scratch/before" "$out")"
+python3 - "$scratch/before/summary.json" "$out/summary.json" <<'PY' || fail "summary.json of the cached run differs"
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+for s in (a, b):
+    s["files"] = [f for f in s["files"] if f["path"] != "report.html"]
+sys.exit(0 if a == b else 1)
+PY
+python3 - "$out/timings.json" <<'PY' || fail "timings.json of the cached run: $(head -c 600 "$out/timings.json")"
+import json, sys
+t = json.load(open(sys.argv[1]))
+steps = {s["name"]: s for s in t["steps"]}
+need = ["photons", "coefficients workplane", "sky matrix"]
+sys.exit(0 if all(steps[n]["cached"] and steps[n]["wall_s"] == 0 for n in need) else 1)
+PY
+grep -q '<td>photons</td><td class="cached" colspan="3">from cache</td>' "$out/report.html" ||
+  fail "the report's appendix does not show the cached photons as from cache"
+echo "ok   fully cached re-run: every output byte-identical (summary.json but report.html's hash, and grid_metrics.json);"
+echo "     timings.json and the report's appendix show the cached steps as from cache"
 
 # 5. The lock: a second run into a folder in use fails clearly; a dead holder's lock is taken over.
 "$bin" run "$scratch/office/first.yaml" --output "$out" --quiet --force &

@@ -3,8 +3,10 @@
 // written with the study's own writers. Every section is present and listed for the page's
 // self-check, every plot has drawn content, nothing is fetched from the network, values and
 // pass/fail verdicts come from the model, names are escaped, variants and missing tables are
-// handled, the text is deterministic, windows are the model's, and a folder without
-// results.json (an older run) is an input error that says to run again. (The page is opened in
+// handled, the text is deterministic, windows and daylight systems are the model's (with a key),
+// the run's times come from timings.json (cached steps "from cache", a folder without the file
+// says so), and a folder without results.json (an older run) is an input error that says to
+// run again. (The page is opened in
 // a real browser by run_browser_test.sh.)
 #include "dayphoton/report/report_html.h"
 
@@ -14,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/metrics/annual_metrics.h"
@@ -23,6 +26,7 @@
 #include "dayphoton/study/compliance_verdicts.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/results_model_builder.h"
+#include "dayphoton/study/run_timings.h"
 
 using namespace dayphoton;
 using namespace dayphoton::study;
@@ -263,14 +267,15 @@ TEST(ReportHtml, EverySectionIsPresentListedAndDrawn) {
   EXPECT_LT(methods, appendix);
   EXPECT_EQ(html.find("<section", appendix + 1), std::string::npos);  // nothing after the appendix
   // Every plot has drawn elements. Base grid: DF, DA, UDI x 2 plans + legends, UDI bars,
-  // temporal map + legend, 2 histograms; wall grid and variant: DF plan + legend, DF histogram.
+  // temporal map + legend, 2 histograms; wall grid and variant: DF plan + legend, DF histogram;
+  // each plan's key (outline, windows, systems) beside its legend.
   std::size_t plots = 0;
   for (std::size_t at = html.find("<svg class=\"plot"); at != std::string::npos;
        at = html.find("<svg class=\"plot", at + 1), ++plots) {
     const std::string svg = html.substr(at, html.find("</svg>", at) - at);
     EXPECT_TRUE(svg.find("<rect") != std::string::npos || svg.find("<image") != std::string::npos) << svg.substr(0, 200);
   }
-  EXPECT_EQ(plots, 4u * 2 + 1 + 2 + 2 + 3 + 3);
+  EXPECT_EQ(plots, 4u * 2 + 1 + 2 + 2 + 3 + 3 + 6);
   EXPECT_EQ(count(html, "href=\"data:image/png;base64,"), 1u);  // the temporal map
   // The self-check script and its marker, hidden from readers (no developer line).
   EXPECT_NE(html.find("id=\"report-check\" data-status=\"pending\""), std::string::npos);
@@ -432,11 +437,55 @@ TEST(ReportHtml, AppendixHoldsSettingsAndNoZeroTimes) {
   const std::size_t at = html.find("id=\"appendix\"");
   const std::string part = html.substr(at);
   EXPECT_NE(part.find("<tr><th>photons per bin</th><td>1000</td></tr>"), std::string::npos);
+  // This folder has no timings.json (a run of a dayphoton before it): the appendix says so.
+  EXPECT_NE(part.find("This results folder has no <code>timings.json</code>"), std::string::npos);
   EXPECT_NE(part.find("<code>run.log</code>"), std::string::npos);
   EXPECT_EQ(html.find("0.00 s"), std::string::npos);
   // Settings appear only in the appendix (and the methods' photons per patch).
   EXPECT_EQ(html.substr(0, at).find("<th>photons per bin</th>"), std::string::npos);
   EXPECT_NE(part.find("<code>weather.epw</code>"), std::string::npos);  // the file's name, not its path
+}
+
+// The run's times from timings.json: per step wall and CPU seconds at the report's precision
+// and the work done; a cached step "from cache", never "0.00 s"; the time between the steps
+// and the total. A malformed file is named in the report, which is still written.
+TEST(ReportHtml, AppendixShowsTheRunsTimesWithCachedStepsFromCache) {
+  const std::string dir = write_results("timings");
+  RunTimings t;
+  t.steps = {{"sky matrix", "hours", 0, 0, 0, true},
+             {"photons", "sources", 146, 12.345, 23.4, false},
+             {"coefficients north_wing", "sensors", 12, 0.004, 0.0031, false},
+             {"annual north_wing", "hours", 8760, 1.234, 2.51, false}};
+  t.total_wall_s = 20.0;
+  t.total_cpu_s = 30.2;
+  t.threads = 2;
+  write_run_timings(t, dir);
+  const std::string html = report_html(dir);
+  const std::string part = html.substr(html.find("id=\"run-time\""));
+  EXPECT_NE(part.find("<tr><td>sky matrix</td><td class=\"cached\" colspan=\"3\">from cache</td></tr>"),
+            std::string::npos);
+  EXPECT_NE(part.find("<tr><td>photons</td><td class=\"n\">12 s</td><td class=\"n\">23 s</td>"
+                      "<td class=\"n\">146 sources</td></tr>"),
+            std::string::npos);
+  EXPECT_NE(part.find("<td>coefficients north_wing</td><td class=\"n\">&lt; 0.01 s</td>"), std::string::npos);
+  EXPECT_NE(part.find("<td>annual north_wing</td><td class=\"n\">1.2 s</td><td class=\"n\">2.5 s</td>"),
+            std::string::npos);
+  // 20 - (12.345 + 0.004 + 1.234) = 6.417 s between the steps.
+  EXPECT_NE(part.find("daylight factors, writing the result files)</td><td class=\"n\">6.4 s</td>"), std::string::npos);
+  EXPECT_NE(part.find("<th>total, until the results were written</th><td class=\"n\">20 s</td><td class=\"n\">30 s</td>"),
+            std::string::npos);
+  EXPECT_NE(part.find("on 2 threads"), std::string::npos);
+  EXPECT_NE(part.find("1 step took its results from the cache"), std::string::npos);
+  EXPECT_EQ(html.find("0.00 s"), std::string::npos);
+  EXPECT_EQ(part.find("has no <code>timings.json</code>"), std::string::npos);
+
+  std::ofstream(dir + "/timings.json") << R"({"schema_version": 1, "threads": 2, "total_wall_s": "long",)"
+                                          R"( "total_cpu_s": 1, "steps": []})";
+  const std::string bad = report_html(dir);
+  EXPECT_NE(bad.find("The run's times could not be read"), std::string::npos);
+  EXPECT_NE(bad.find("&#39;total_wall_s&#39; is not a number of seconds"), std::string::npos);
+  EXPECT_NE(bad.find("id=\"versions\""), std::string::npos);  // the rest of the appendix is there
+  fs::remove_all(dir);
 }
 
 TEST(ReportHtml, PrintStylesBreakBetweenSectionsAndHideTheNavigation) {
@@ -524,6 +573,70 @@ TEST(ReportHtml, EachCaseShowsItsOwnWindows) {
   EXPECT_EQ(html.substr(base_at, variant_at - base_at).find("changes:"), std::string::npos);
 }
 
+/// The numbers of the first `points="..."` after `from` in `text` (x, y pairs).
+std::vector<double> svg_points(const std::string& text, std::size_t from) {
+  const std::size_t at = text.find("points=\"", from) + 8;
+  std::stringstream s(text.substr(at, text.find('"', at) - at));
+  std::vector<double> v;
+  for (std::string pair; s >> pair;) {
+    v.push_back(std::stod(pair.substr(0, pair.find(','))));
+    v.push_back(std::stod(pair.substr(pair.find(',') + 1)));
+  }
+  return v;
+}
+
+// The base case's outdoor systems on its inline plans (as on the grid PNGs, plan_picture.h): a
+// shelf outside the south window is drawn on each of its four plans (DF, DA, UDI achieved, UDI
+// autonomous), south of the window and across its width, half-transparent grey, with a key
+// entry; a panel 20 m away is not drawn; the wall grid (an elevation) and the variant (no
+// systems) draw none and their key has no system entry.
+TEST(ReportHtml, PlansDrawTheDaylightSystemsNearTheGridWithAKeyEntry) {
+  const std::string dir = temp_dir("systems");
+  ResultsModel m = results_model(dir);
+  m.cases[0].systems = {{{1, -0.6, 2.1}, {3, -0.6, 2.1}, {3, 0, 2.1}, {1, 0, 2.1}},
+                        {{1, -20, 2.1}, {3, -20, 2.1}, {3, -19, 2.1}, {1, -19, 2.1}}};
+  write_results_model(m, dir);
+  const std::string html = report_html(dir);
+  const std::size_t base_at = html.find("id=\"grid-north_wing\""), wall_at = html.find("id=\"grid-east_wall\""),
+                    variant_at = html.find("id=\"grid-tinted--north_wing\"");
+  ASSERT_NE(base_at, std::string::npos);
+  ASSERT_LT(base_at, wall_at);
+  ASSERT_LT(wall_at, variant_at);
+  const std::string base = html.substr(base_at, wall_at - base_at), wall = html.substr(wall_at, variant_at - wall_at),
+                    variant = html.substr(variant_at, html.find("id=\"methods\"") - variant_at);
+  EXPECT_EQ(count(base, "class=\"system\""), 4u);
+  EXPECT_EQ(count(base, "daylight system (outdoors, seen from above)"), 4u);
+  EXPECT_EQ(count(base, "outdoor daylight systems in grey"), 2u);  // the DF plan's caption and its label
+  EXPECT_NE(base.find("fill=\"#808080\" fill-opacity=\"0.59\" stroke=\"#464646\""), std::string::npos);
+  EXPECT_EQ(count(wall, "class=\"system\""), 0u);
+  EXPECT_EQ(count(variant, "class=\"system\""), 0u);
+  EXPECT_EQ(variant.find("daylight system (outdoors"), std::string::npos);
+  // The shelf: south of the window line (larger y in the picture), as wide as the window, 0.6 m
+  // deep at the plan's scale (x: 2 m of window = 2 m of shelf).
+  const std::size_t plan = base.find("class=\"plot plan\"");
+  const std::vector<double> shelf = svg_points(base, base.find("class=\"system\"", plan));
+  const std::vector<double> window = svg_points(base, base.find("class=\"window\"", plan));
+  ASSERT_EQ(shelf.size(), 8u);
+  ASSERT_EQ(window.size(), 8u);
+  double shelf_x0 = 1e9, shelf_x1 = -1e9, shelf_y0 = 1e9, shelf_y1 = -1e9, window_x0 = 1e9, window_x1 = -1e9, window_y = 0;
+  for (std::size_t i = 0; i < 8; i += 2) {
+    shelf_x0 = std::min(shelf_x0, shelf[i]);
+    shelf_x1 = std::max(shelf_x1, shelf[i]);
+    shelf_y0 = std::min(shelf_y0, shelf[i + 1]);
+    shelf_y1 = std::max(shelf_y1, shelf[i + 1]);
+    window_x0 = std::min(window_x0, window[i]);
+    window_x1 = std::max(window_x1, window[i]);
+    window_y += window[i + 1] / 4;
+  }
+  const double px_per_m = (window_x1 - window_x0) / 2;
+  EXPECT_GT(px_per_m, 10);
+  EXPECT_NEAR(shelf_x0, window_x0, 0.11);
+  EXPECT_NEAR(shelf_x1, window_x1, 0.11);
+  EXPECT_NEAR(shelf_y0, window_y, 0.11);
+  EXPECT_NEAR(shelf_y1 - shelf_y0, 0.6 * px_per_m, 0.2);
+  fs::remove_all(dir);
+}
+
 TEST(ReportHtml, FoldersFromTheModelCannotLeadOutOfTheResultsFolder) {
   // A hand-edited results.json names a grid folder outside the results folder.
   const std::string outside = temp_dir("outside");
@@ -585,6 +698,14 @@ TEST(ReportFormat, OnePrecisionPerKindOfNumber) {
   EXPECT_EQ(format_value(std::optional<double>{}, Precision::Percent), "-");
   EXPECT_EQ(format_value(std::nan(""), Precision::Percent), "-");
   // Differences carry a sign unless zero at the shown precision.
+  // Durations: 2 significant digits below 10 s, whole seconds above, never "0.00".
+  EXPECT_EQ(format_value(0.004, Precision::Seconds), "< 0.01");
+  EXPECT_EQ(format_value(0.0, Precision::Seconds), "< 0.01");
+  EXPECT_EQ(format_value(0.0123, Precision::Seconds), "0.012");
+  EXPECT_EQ(format_value(0.4249, Precision::Seconds), "0.42");
+  EXPECT_EQ(format_value(4.26, Precision::Seconds), "4.3");
+  EXPECT_EQ(format_value(9.96, Precision::Seconds), "10");
+  EXPECT_EQ(format_value(1234.4, Precision::Seconds), "1234");
   EXPECT_EQ(format_delta(3.2, Precision::Percent), "+3");
   EXPECT_EQ(format_delta(-0.94, Precision::DaylightFactor), "-0.94");
   EXPECT_EQ(format_delta(0.01, Precision::Percent), "0");

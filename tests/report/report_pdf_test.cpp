@@ -102,7 +102,7 @@ TEST(ReportPdf, ChromiumPrintsTheReportOnSeveralPages) {
   EXPECT_LE(pages, 40);
   // Nothing else was left in the folder: no profile, no temporary.
   const std::vector<std::string> left =
-      others(out, {"report.html", "report.pdf", "results.json", "summary.json", "run.log", "floor"});
+      others(out, {"report.html", "report.pdf", "results.json", "summary.json", "run.log", "timings.json", "floor"});
   EXPECT_TRUE(left.empty()) << left.front();
 }
 

@@ -88,10 +88,15 @@ dom '<td>office</td><td class="n">6 x 8 x 3</td><td class="n">48</td><td class="
 dom '<td>glazing</td><td>glass</td><td class="n">-</td><td class="n">-</td><td class="n">0.60</td>'
 dom '<td>workplane</td><td>horizontal</td><td class="n">165</td><td class="n">0.5</td><td class="n">11 x 15</td>'
 dom 'RADIANCE 5.4a'
+# The run's times in the appendix, from timings.json (a step computed or "from cache").
+dom '<h3 id="run-time">Run time</h3><table class="timings">'
+dom '<tr><td>photons</td><td'
+dom '<th>total, until the results were written</th>'
 if grep -q -e 'self-check:' -e '0\.00 s' "$work/dom.html"; then fail "a developer line or a zero time is shown"; fi
 
 # A results folder with a variant (tests/cli/cases/report_results, two sensors): the variants
-# section side by side, rendered without console messages either.
+# section side by side, the daylight system on the plan, the missing timings, rendered without
+# console messages either.
 "$bin" report tests/cli/cases/report_results --no-images -o "$work/variants.html" --quiet ||
   fail "dayphoton report of the variants fixture failed"
 timeout 180 "$chromium" "${flags[@]}" --dump-dom "file://$work/variants.html" >"$work/variants_dom.html" \
@@ -99,6 +104,12 @@ timeout 180 "$chromium" "${flags[@]}" --dump-dom "file://$work/variants.html" >"
 grep -q 'id="report-check" data-status="ok"' "$work/variants_dom.html" || fail "variants report: self-check did not pass"
 grep -q '<th>metric</th><th>base</th><th>tinted</th>' "$work/variants_dom.html" || fail "no variants table"
 grep -q 'class="delta">(-0.75)</span>' "$work/variants_dom.html" || fail "no difference from the base case"
+# Its base case has a light shelf outside the window: drawn on the inline plan, with a key entry;
+# the folder has no timings.json (as an older run's), which the appendix says.
+grep -q '<polygon class="system" points=' "$work/variants_dom.html" || fail "no daylight system on the plan"
+grep -q 'daylight system (outdoors, seen from above)</text>' "$work/variants_dom.html" || fail "no key entry of the system"
+grep -q 'This results folder has no <code>timings.json</code>' "$work/variants_dom.html" ||
+  fail "the variants report does not say that it has no timings"
 
 # No console output and no uncaught error.
 if grep -E 'CONSOLE|Uncaught' "$work/shot.log" "$work/dom.log" "$work/variants.log"; then fail "console messages (above)"; fi

@@ -7,6 +7,7 @@
 //   sun, and the others do not.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +19,7 @@
 #include "dayphoton/sky/solar_position.h"
 #include "dayphoton/study/point_in_time.h"
 #include "dayphoton/study/progress.h"
+#include "dayphoton/study/run_timings.h"
 #include "dayphoton/study/study_runner.h"
 
 namespace dayphoton::study {
@@ -142,6 +144,24 @@ TEST_F(PointInTime, TheSunPatchLandsWhereTheGeometrySays) {
   }
   EXPECT_GT(lit, 10);
   EXPECT_GT(dark, 10);
+}
+
+TEST_F(PointInTime, NoSunStepAndTheTimesAreNotAResult) {
+  const std::optional<RunTimings> t = read_run_timings((s_dir / "out").string());
+  ASSERT_TRUE(t);
+  std::vector<std::string> names;
+  for (const StepTiming& st : t->steps) names.push_back(st.name);
+  EXPECT_NE(std::find(names.begin(), names.end(), "photons"), names.end());
+  EXPECT_NE(std::find(names.begin(), names.end(), "coefficients floor"), names.end());
+  for (const std::string& n : names)
+    for (const char* sun_step : {"sky matrix", "sun", "direct sun", "annual"})
+      EXPECT_NE(n.rfind(sun_step, 0), 0u) << "a daylight-factor study ran the step '" << n << "'";
+  EXPECT_GT(t->total_wall_s, 0);
+  std::ifstream summary(s_dir / "out" / "summary.json");
+  std::stringstream text;
+  text << summary.rdbuf();
+  EXPECT_NE(text.str().find("\"results.json\""), std::string::npos);
+  EXPECT_EQ(text.str().find("timings.json"), std::string::npos);
 }
 
 }  // namespace

@@ -19,6 +19,8 @@ enum class Precision {
   Length,          ///< m: up to 2 decimals, no trailing zeros (6, 0.9, 1.25)
   Area,            ///< m2: up to 1 decimal, no trailing zeros (48, 6.5)
   Points,          ///< differences of percentages, signed whole points (+3, -12, 0)
+  Seconds,         ///< durations, s: 2 significant digits below 10 s (0.42, 4.2), whole seconds
+                   ///< above (42, 1234), "< 0.01" below 0.01 s (never "0.00")
 };
 
 /// `value` as text at the precision of `kind`; "-" for a value that is not finite.

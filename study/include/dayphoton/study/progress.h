@@ -10,7 +10,8 @@
 //     and once at each step's end, "photons: done in 12.6 s (2920000 photons, 232 k photons/s)";
 //   - Quiet: nothing.
 // A step served from the cache prints "name: cached". print_summary() prints the table of
-// where the time went (step, work, unit, seconds, rate, share of the total) and a total line.
+// where the time went (step, work, unit, seconds, rate, share of the total; a cached step
+// "from cache" instead of a time) and a total line.
 //
 // Cost for workers: advance() is one relaxed atomic add and a clock read; only when a redraw
 // is due does it try_lock the mutex, and if another thread holds it, it skips the redraw,
@@ -62,9 +63,13 @@ class Progress {
   struct StepTime {
     std::string name, unit;
     std::uint64_t work = 0;
-    double seconds = 0;
+    double seconds = 0;      ///< wall time
+    double cpu_seconds = 0;  ///< CPU time of the whole process (all threads) during the step
     bool cached = false;
   };
+  /// CPU time (user + system) of this process so far, all threads (clock_gettime
+  /// CLOCK_PROCESS_CPUTIME_ID); 0 where the clock is not available.
+  static double process_cpu_seconds();
   /// The steps ended so far, in order (read it when no other thread is using the Progress).
   const std::vector<StepTime>& steps() const { return m_steps; }
   /// End the open step, if any, and print the table of step times (not in Quiet).
@@ -88,6 +93,7 @@ class Progress {
   std::uint64_t m_total = 0;
   std::atomic<std::uint64_t> m_done{0};
   Clock::time_point m_step_start;
+  double m_step_cpu_start = 0;
   /// When the next redraw is due (Clock ticks), read by advance() without the lock.
   std::atomic<Clock::rep> m_next_draw{0};
   bool m_line_drawn = false;             ///< Terminal: a status line is on screen
