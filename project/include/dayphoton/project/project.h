@@ -507,8 +507,8 @@ struct Outputs {
   bool folder_outside_project = false;
   bool daylight_factor = true;
   bool annual_illuminance = true;
-  /// `illuminance_csv`: illuminance.csv beside illuminance.bin (off by default: 10 times its
-  /// size in text; docs/outputs.md "Defaults: binary first").
+  /// `illuminance_csv`: illuminance.csv beside illuminance.bin (off by default: the same table
+  /// written twice; docs/outputs.md "Defaults: binary first").
   bool illuminance_csv = false;
   bool metrics = true;
   bool coefficients = true;
