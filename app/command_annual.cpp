@@ -304,7 +304,9 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
                       study::read_exact_sun_export(grid_dir, sensors.size(), read_options, o.max_decompressed_bytes),
                       *sky_and_suns, settings, grid_dir, notes)
                 : study::compute_annual_study(coefficients, sky, settings);
-  const std::vector<std::string> written = study::write_annual_outputs(result, sensors, settings, output_dir);
+  study::AnnualOutputs which;
+  which.illuminance_csv = o.illuminance_csv;
+  const std::vector<std::string> written = study::write_annual_outputs(result, sensors, settings, output_dir, which);
   if (!project && !(recorded && recorded->grid && recorded->grid->annual))
     std::cerr << "warning: " << grid_dir
               << ": no results.json above the grid folder records its metric settings and no --project is given: "

@@ -108,6 +108,7 @@ struct AnnualOptions {
   double ground_reflectance = 0.2;     ///< used if given, else the run's (results.json), else 0.2
   bool ground_reflectance_given = false;
   bool quiet = false;
+  bool illuminance_csv = false;  ///< illuminance.csv beside illuminance.bin
   std::uint64_t max_matrix_values = ResourceLimits{}.matrix_values;            ///< each matrix and the table
   std::uint64_t max_decompressed_bytes = ResourceLimits{}.decompressed_bytes;  ///< a .gz sky matrix
   /// Metric settings (thresholds, occupancy) and the default weather file from this project

@@ -201,6 +201,8 @@ int run_command_line(int argc, char** argv, dayphoton::dist::Communicator* ranks
                          "Ground reflectance of the sky built from the weather file (default: the run's, from "
                          "results.json above the grid folder, else 0.2)")
       ->check(FiniteNumber)->check(CLI::Range(0.0, 1.0));
+  annual_cmd->add_flag("--illuminance-csv", annual.illuminance_csv,
+                       "Also write the hourly illuminance as text, illuminance.csv (illuminance.bin is always written)");
   annual_cmd->add_flag("-q,--quiet", annual.quiet, "Print errors only");
   annual_cmd->add_option("--max-matrix-values", annual.max_matrix_values,
                          "Most values of each matrix read or built and of the illuminance table (default " +

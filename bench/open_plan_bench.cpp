@@ -4,7 +4,8 @@
 // facades and columns, 10,000 work-plane sensors at 0.5 m. Prints the wall time, each step's
 // time, the peak resident memory, the size of the results and of the cache, and the DF
 // uncertainty the run reports, so that cost per sensor can be read off.
-// Usage: open_plan_bench [threads [photons_per_bin]]
+// Usage: open_plan_bench [threads [photons_per_bin]] (default: the project's 40,000 photons per
+// bin, which reach the 2 % DF uncertainty goal; docs/photon-tracing.md "Scale").
 #include <sys/resource.h>
 #include <tbb/global_control.h>
 
@@ -40,6 +41,22 @@ double peak_rss_mib() {
   return double(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
+/// CPU seconds of the process so far, user + system.
+double cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+/// The 1-minute load average (/proc/loadavg): wall times mean little on a loaded machine.
+std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string one;
+  in >> one;
+  return in ? one : std::string("unknown");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -60,6 +77,7 @@ int main(int argc, char** argv) {
   settings.output_dir = out.string();
   settings.cache_dir = cache.string();
   settings.force = true;
+  const std::string load_at_start = load_average();
   const auto t0 = std::chrono::steady_clock::now();
   const study::RunReport report = study::run_study(proj, settings, progress);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -69,8 +87,10 @@ int main(int argc, char** argv) {
       tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
   std::printf("open-plan floor 50 m x 50 m, %zu sensors, %lld photons per bin, %u threads\n", sensors,
               proj.simulation.photons_per_bin, threads);
-  std::printf("whole annual study: %.1f s wall, %.2f ms wall per sensor\n", seconds,
-              1000.0 * seconds / double(sensors > 0 ? sensors : 1));
+  std::printf("whole annual study: %.1f s wall, %.2f ms wall per sensor; %.1f s CPU (user + system), %.2f ms "
+              "CPU per sensor; load average %s at the start, %s at the end\n",
+              seconds, 1000.0 * seconds / double(sensors > 0 ? sensors : 1), cpu_seconds(),
+              1000.0 * cpu_seconds() / double(sensors > 0 ? sensors : 1), load_at_start.c_str(), load_average().c_str());
   for (const study::Progress::StepTime& s : progress.steps())
     std::printf("  %-28s %8.2f s\n", s.name.c_str(), s.seconds);
   const double results_mib = double(folder_bytes(out)) / (1024.0 * 1024.0);

@@ -388,6 +388,17 @@ TracedPhotons merge_traced_photons(std::vector<TracedPhotons>&& per_source) {
   std::size_t plane_count = 0;
   for (const TracedPhotons& r : per_source) plane_count = std::max(plane_count, r.planes.size());
   out.planes.resize(plane_count);
+  // Reserved at their final sizes: no vector grows to twice what it holds while merging.
+  std::size_t surface_count = 0, tally_count = 0;
+  std::vector<std::size_t> plane_sizes(plane_count, 0);
+  for (const TracedPhotons& r : per_source) {
+    surface_count += r.surface.size();
+    tally_count += r.tallies.size();
+    for (std::size_t g = 0; g < r.planes.size(); ++g) plane_sizes[g] += r.planes[g].size();
+  }
+  out.surface.reserve(surface_count);
+  out.tallies.reserve(tally_count);
+  for (std::size_t g = 0; g < plane_count; ++g) out.planes[g].reserve(plane_sizes[g]);
   for (TracedPhotons& r : per_source) {
     out.surface.insert(out.surface.end(), r.surface.begin(), r.surface.end());
     for (std::size_t g = 0; g < r.planes.size(); ++g)

@@ -375,6 +375,14 @@ class Loader {
   /// without a weather file and without annual outputs is a daylight-factor study.
   void check_study_kind(const YamlNode& root, bool study_written, const YamlNode* weather) {
     Outputs& o = m_project.outputs;
+    if (o.radiance_sun_matrix && !o.coefficients)
+      m_reporter.error(m_radiance_sun_matrix_location,
+                       "outputs.radiance_sun_matrix: true needs outputs.coefficients: true (it is one of the "
+                       "coefficient files)");
+    else if (o.radiance_sun_matrix && m_project.simulation.sun != SunMode::Bins)
+      m_reporter.error(m_radiance_sun_matrix_location,
+                       "outputs.radiance_sun_matrix: true needs simulation.sun: bins (the sun is spread into the "
+                       "sky coefficients otherwise)");
     if (m_project.site.from_weather && !weather)
       m_reporter.error(m_from_weather_location,
                        "site: from_weather: true needs a weather file ('weather'), whose header gives the site");
@@ -1403,7 +1411,15 @@ class Loader {
       if (r.has(key))
         m_annual_outputs_written[key] = {r.location_of(key), key == std::string("metrics") ? o.metrics
                                                                                             : o.annual_illuminance};
+    r.read_bool("illuminance_csv", o.illuminance_csv);
     r.read_bool("coefficients", o.coefficients);
+    r.read_bool("radiance_sun_matrix", o.radiance_sun_matrix);
+    // Outputs of the annual study only (check_study_kind).
+    if (r.has("illuminance_csv")) m_annual_outputs_written["illuminance_csv"] = {r.location_of("illuminance_csv"), o.illuminance_csv};
+    if (r.has("radiance_sun_matrix")) {
+      m_annual_outputs_written["radiance_sun_matrix"] = {r.location_of("radiance_sun_matrix"), o.radiance_sun_matrix};
+      m_radiance_sun_matrix_location = r.location_of("radiance_sun_matrix");
+    }
     r.read_bool("images", o.images);
     r.read_bool("report", o.report);
     r.read_choice("matrix_format", o.matrix_format);
@@ -1733,6 +1749,7 @@ class Loader {
   /// outputs.annual_illuminance and outputs.metrics where written, with their values
   /// (check_study_kind: a daylight-factor study cannot make them).
   std::map<std::string, std::pair<SourceLocation, bool>> m_annual_outputs_written;
+  SourceLocation m_radiance_sun_matrix_location;  ///< of outputs.radiance_sun_matrix, if written
   NameSet m_point_names{"point-in-time case"};
   FolderNames m_point_folders{{}, ""};
   SourceLocation m_from_weather_location;  ///< of site.from_weather (its check needs the weather key)

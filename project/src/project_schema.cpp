@@ -444,12 +444,14 @@ std::vector<SectionSchema> build_schema() {
       P("folder", T::Path, "output folder, relative to the project file; outside the project's folder (absolute, or leaving it with ..) only with folder_outside_project or `run --output`").def("results"),
       P("folder_outside_project", T::Boolean, "allow `folder` outside the project's folder").def("false"),
       P("daylight_factor", T::Boolean, "CIE overcast daylight factors").def("true"),
-      P("annual_illuminance", T::Boolean, "hourly illuminance for the weather year").def("true"),
+      P("annual_illuminance", T::Boolean, "hourly illuminance for the weather year (illuminance.bin, float32)").def("true"),
+      P("illuminance_csv", T::Boolean, "the hourly illuminance also as text, illuminance.csv (the same table rounded to 0.1 lx, written a second time: 400 MiB at 10,000 sensors)").def("false"),
       P("metrics", T::Boolean, "annual metrics (DA, UDI, sDA, ASE, ...)").def("true"),
-      P("coefficients", T::Boolean, "daylight-coefficient matrices (.mtx)").def("true"),
+      P("coefficients", T::Boolean, "daylight-coefficient matrices (.mtx) and the exported direct sun").def("true"),
+      P("radiance_sun_matrix", T::Boolean, "with coefficients and sun: bins, also the sun on RADIANCE's Reinhart patches for gendaymtx -d (coefficients_sun_mf<N>.mtx; traces the direct sun at every patch centre)").def("false"),
       P("images", T::Boolean, "EXR/PNG false-colour images").def("true"),
       P("report", T::Boolean, "report.html").def("true"),
-      P("matrix_format", T::Choice, "encoding of .mtx files").choices({"ascii", "float"}).def("ascii"),
+      P("matrix_format", T::Choice, "encoding of .mtx files: float (RADIANCE's binary float32, FORMAT=float and BigEndian= in the header, as rmtxop and dctimestep read it) or ascii (text, up to 3 times larger)").choices({"ascii", "float"}).def("float"),
   }});
   // Defaults as LM-83 and docs/metrics.md; they mirror metrics::MetricSettings.
   s.push_back({"metrics", "thresholds and occupancy of the daylight-factor statistics and annual metrics", {

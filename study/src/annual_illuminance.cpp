@@ -194,7 +194,7 @@ void write_illuminance_binary(const metrics::IlluminanceTable& table, const std:
   if (n_steps > 0xffffffffu || n_sensors > 0xffffffffu)
     throw std::invalid_argument(path + ": illuminance table too large for the binary layout");
   std::string bytes;
-  bytes.reserve(HeaderBytes + n_steps * (StampBytes + 4 * n_sensors));
+  bytes.reserve(HeaderBytes + n_steps * StampBytes);
   bytes.append(Magic, sizeof Magic);
   put_u32(bytes, static_cast<std::uint32_t>(n_steps));
   put_u32(bytes, static_cast<std::uint32_t>(n_sensors));
@@ -207,27 +207,45 @@ void write_illuminance_binary(const metrics::IlluminanceTable& table, const std:
     put_u16(bytes, 0);
     put_f32(bytes, static_cast<float>(stamp.hour));
   }
-  for (std::size_t t = 0; t < n_steps; ++t)
-    for (std::size_t s = 0; s < n_sensors; ++s) put_f32(bytes, table.lux(t, s));
-  write_file_atomically(path, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); },
-                        true);
+  // The values a row at a time: the file is never held whole in memory.
+  write_file_atomically(path, [&](std::ostream& out) {
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    std::string row;
+    row.reserve(4 * n_sensors);
+    for (std::size_t t = 0; t < n_steps; ++t) {
+      row.clear();
+      for (std::size_t s = 0; s < n_sensors; ++s) put_f32(row, table.lux(t, s));
+      out.write(row.data(), static_cast<std::streamsize>(row.size()));
+    }
+  }, true);
 }
 
 metrics::IlluminanceTable read_illuminance_binary(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open illuminance file");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw std::runtime_error(path + ": read error");
-  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
-  if (bytes.size() < HeaderBytes) layout_error(path, "shorter than its 16-byte header");
-  if (std::memcmp(data, Magic, sizeof Magic) != 0) layout_error(path, "wrong magic (expected DPILLUM1)");
-  const std::uint64_t n_steps = get_u32(data + 8), n_sensors = get_u32(data + 12);
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(0, std::ios::beg);
+  if (size < 0 || in.bad()) throw std::runtime_error(path + ": read error");
+  const std::uint64_t file_bytes = static_cast<std::uint64_t>(size);
+  unsigned char header[HeaderBytes];
+  if (file_bytes < HeaderBytes) layout_error(path, "shorter than its 16-byte header");
+  if (!in.read(reinterpret_cast<char*>(header), HeaderBytes)) throw std::runtime_error(path + ": read error");
+  if (std::memcmp(header, Magic, sizeof Magic) != 0) layout_error(path, "wrong magic (expected DPILLUM1)");
+  const std::uint64_t n_steps = get_u32(header + 8), n_sensors = get_u32(header + 12);
   const std::uint64_t expected = HeaderBytes + n_steps * StampBytes + n_steps * n_sensors * 4;
-  if (bytes.size() != expected)
+  if (file_bytes != expected)
     layout_error(path, std::to_string(n_steps) + " steps x " + std::to_string(n_sensors) + " sensors need " +
-                           std::to_string(expected) + " bytes, the file has " + std::to_string(bytes.size()));
+                           std::to_string(expected) + " bytes, the file has " + std::to_string(file_bytes));
+  // Read a part at a time: the table is the only copy of the values held.
+  std::vector<unsigned char> buffer(std::max<std::uint64_t>(n_steps * StampBytes, n_sensors * 4));
+  auto read = [&](std::size_t n) {
+    if (!in.read(reinterpret_cast<char*>(buffer.data()), static_cast<std::streamsize>(n)))
+      throw std::runtime_error(path + ": read error");
+  };
+  read(static_cast<std::size_t>(n_steps * StampBytes));
   std::vector<metrics::TimeStamp> steps(n_steps);
-  const unsigned char* p = data + HeaderBytes;
+  const unsigned char* p = buffer.data();
   for (std::uint64_t t = 0; t < n_steps; ++t, p += StampBytes) {
     const int month = p[0], day = p[1];
     const unsigned reserved = unsigned(p[2]) | unsigned(p[3]) << 8;
@@ -238,7 +256,9 @@ metrics::IlluminanceTable read_illuminance_binary(const std::string& path) {
     steps[t] = metrics::TimeStamp{month, day, static_cast<double>(hour)};
   }
   metrics::IlluminanceTable table(std::move(steps), n_sensors);
-  for (std::uint64_t t = 0; t < n_steps; ++t)
+  for (std::uint64_t t = 0; t < n_steps; ++t) {
+    read(static_cast<std::size_t>(n_sensors * 4));
+    p = buffer.data();
     for (std::uint64_t s = 0; s < n_sensors; ++s, p += 4) {
       const float lux = get_f32(p);
       if (!std::isfinite(lux))
@@ -246,6 +266,7 @@ metrics::IlluminanceTable read_illuminance_binary(const std::string& path) {
                                " is not finite");
       table.lux(t, s) = lux;
     }
+  }
   return table;
 }
 

@@ -263,8 +263,10 @@ std::vector<std::string> write_annual_outputs(const AnnualStudy& study, const st
   const std::filesystem::path dir(folder);
   std::vector<std::string> written;
   if (outputs.illuminance) {
-    written.push_back((dir / "illuminance.csv").string());
-    write_illuminance_csv(study.illuminance, written.back());
+    if (outputs.illuminance_csv) {
+      written.push_back((dir / "illuminance.csv").string());
+      write_illuminance_csv(study.illuminance, written.back());
+    }
     written.push_back((dir / "illuminance.bin").string());
     write_illuminance_binary(study.illuminance, written.back());
   }

@@ -19,6 +19,7 @@
 #include "dayphoton/metrics/annual_metrics.h"
 #include "dayphoton/metrics/occupancy.h"
 #include "dayphoton/sky/solar_position.h"
+#include "dayphoton/study/annual_illuminance.h"
 
 namespace dayphoton::study {
 namespace {
@@ -183,7 +184,7 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
                                        const std::vector<engine::Material>& materials,
                                        const std::vector<SensorPoint>& sensors,
                                        const std::vector<sky::SunRecord>& suns, int samples,
-                                       std::uint64_t seed) {
+                                       std::uint64_t seed, DirectSunValues values) {
   if (samples < 1) throw std::invalid_argument("direct sun: at least 1 sample per sun is needed");
   int k = static_cast<int>(std::sqrt(double(samples)));
   while (k * k < samples) ++k;
@@ -193,7 +194,8 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
   const double weight = discs.size() ? discs[0].solid_angle_sr / (double(k) * k) : 0.0;
 
   const double pad_m = engine::port_view_pad_m(scene, materials);
-  RadianceMatrix result(sensors.size(), suns.size(), 3);
+  const bool rgb = values == DirectSunValues::Rgb;
+  RadianceMatrix result(sensors.size(), suns.size(), rgb ? 3 : 1);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sensors.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t s = range.begin(); s != range.end(); ++s) {
@@ -222,7 +224,11 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
               sum += engine::sky_transmittance(scene, materials, origin, w) * c;
             }
         }
-        for (int c = 0; c < 3; ++c) result.at(s, i, c) = static_cast<float>(sum[c] * weight);
+        if (rgb) {
+          for (int c = 0; c < 3; ++c) result.at(s, i, c) = static_cast<float>(sum[c] * weight);
+        } else {
+          result.at(s, i, 0) = static_cast<float>(dot(sum, RgbLuminanceWeights) * weight);
+        }
       }
     }
   });
@@ -234,16 +240,37 @@ RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const engine::SourceSet& sources,
                                     const engine::GridPhotons& photons,
                                     const std::vector<SensorPoint>& sensors,
-                                    const engine::CoefficientOptions& options, std::vector<double>* variance) {
-  engine::DaylightCoefficients c;
-  c.sensors = sensors.size();
-  c.sources = photons.source_count();
-  c.direct.assign(c.sensors * c.sources, Vec3{});
-  c.caustic.assign(c.sensors * c.sources, Vec3{});
-  c.global.assign(c.sensors * c.sources, Vec3{});
-  engine::photon_coefficients(scene, materials, sources, photons, sensors, options, c);
-  if (variance) *variance = c.photon_variance;
-  return c.to_matrix();
+                                    const engine::CoefficientOptions& options, std::vector<double>* variance,
+                                    std::size_t block_values) {
+  const std::size_t n_sources = photons.source_count();
+  RadianceMatrix result(sensors.size(), n_sources, 3);
+  if (variance) variance->assign(sensors.size() * n_sources, 0.0);
+  // Estimates on a receiver plane without bias compensation do not depend on the sensor's
+  // index (a final gather's and the bias-compensating operator's random streams do): those
+  // are estimated a block of sensors at a time, so the double-precision parts of only
+  // SunCoefficientBlockValues coefficients are held, whatever the grid's size.
+  const bool blocks = !photons.gather() && !options.bias_compensation;
+  const std::size_t block =
+      blocks ? std::max<std::size_t>(1, block_values / std::max<std::size_t>(1, n_sources)) : sensors.size();
+  for (std::size_t first = 0; first < sensors.size(); first += block) {
+    const std::size_t last = std::min(sensors.size(), first + block);
+    const std::vector<SensorPoint> part(sensors.begin() + static_cast<std::ptrdiff_t>(first),
+                                        sensors.begin() + static_cast<std::ptrdiff_t>(last));
+    engine::DaylightCoefficients c;
+    c.sensors = part.size();
+    c.sources = n_sources;
+    c.caustic.assign(c.sensors * c.sources, Vec3{});
+    c.global.assign(c.sensors * c.sources, Vec3{});
+    engine::photon_coefficients(scene, materials, sources, photons, part, options, c);
+    for (std::size_t s = 0; s < c.sensors; ++s)
+      for (std::size_t p = 0; p < n_sources; ++p) {
+        const std::size_t i = s * n_sources + p;
+        const Vec3 total = Vec3{} + c.caustic[i] + c.global[i];  // DaylightCoefficients::total, no direct part
+        for (int k = 0; k < 3; ++k) result.at(first + s, p, k) = static_cast<float>(total[k]);
+        if (variance) (*variance)[(first + s) * n_sources + p] = c.photon_variance[i];
+      }
+  }
+  return result;
 }
 
 metrics::IlluminanceTable direct_sun_table(const RadianceMatrix& direct,
@@ -321,6 +348,86 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
   if (!sky.daylight_hours_quantity.empty())
     study.grid.en17037 = metrics::en17037_daylight_provision(
         study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity));
+  return study;
+}
+
+AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients, const AnnualSky& sky,
+                                          const GridSunCoefficients& sun, const AnnualStudySettings& settings) {
+  const std::size_t n_steps = sky.steps.size(), n_sensors = sky_coefficients.rows();
+  const RadianceMatrix& direct = *sun.direct;
+  const RadianceMatrix& bin_coefficients = *sun.bin_coefficients;
+  const std::vector<sky::SunRecord>& suns = *sun.suns;
+  const engine::SunBins& bins = *sun.bins;
+  if (direct.columns() != suns.size() || direct.rows() != n_sensors)
+    throw std::invalid_argument("annual sun: a direct sun of " + std::to_string(direct.rows()) + " sensors x " +
+                                std::to_string(direct.columns()) + " suns for " + std::to_string(n_sensors) +
+                                " sensors and " + std::to_string(suns.size()) + " suns");
+  if (bin_coefficients.columns() != bins.size() || bin_coefficients.rows() != n_sensors)
+    throw std::invalid_argument("annual sun: sun-bin coefficients of " + std::to_string(bin_coefficients.rows()) +
+                                " sensors x " + std::to_string(bin_coefficients.columns()) + " bins for " +
+                                std::to_string(n_sensors) + " sensors and " + std::to_string(bins.size()) + " bins");
+  check_suns(suns, n_steps);
+  const metrics::OccupancySchedule occupancy = occupancy_schedule(settings, sky.steps);
+  AnnualStudy study;
+  study.illuminance = annual_illuminance(sky_coefficients, sky.matrix, sky.steps);
+  study.sky_description = sky.description;
+  study.occupied_hours = occupancy.occupied_count();
+  // A step's last sun wins, as in direct_sun_table and indirect_sun_table.
+  std::vector<std::size_t> last(n_steps, suns.size());
+  for (std::size_t i = 0; i < suns.size(); ++i) last[suns[i].step] = i;
+  std::vector<std::size_t> used;
+  std::vector<engine::SunStencil> stencils;
+  for (std::size_t i = 0; i < suns.size(); ++i)
+    if (last[suns[i].step] == i) {
+      used.push_back(i);
+      stencils.push_back(bins.weights(suns[i].direction));
+    }
+  // ASE from the direct sun alone (metrics::ase_hours_per_sensor on the direct-sun table,
+  // which is 0 at every step without a sun).
+  const float zero = 0.0f;
+  const double threshold = settings.metrics.ase_threshold_lux;
+  std::size_t occupied_without_sun = study.occupied_hours;
+  for (std::size_t i : used) occupied_without_sun -= occupancy.occupied(suns[i].step) ? 1 : 0;
+  study.ase_hours.assign(n_sensors, zero >= threshold ? static_cast<int>(occupied_without_sun) : 0);
+  const Vec3 wd = photometric_weights(direct.components());
+  const Vec3 wi = photometric_weights(bin_coefficients.components());
+  // The sun added in place, the three parts summed in double as compute_annual_study_with_sun
+  // of the tables does, each part rounded to float as its table stores it: the same values,
+  // without the two steps x sensors tables.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n_sensors, 64), [&](const tbb::blocked_range<std::size_t>& r) {
+    std::vector<double> lux(bins.size());
+    for (std::size_t s = r.begin(); s != r.end(); ++s) {
+      for (std::size_t j = 0; j < bins.size(); ++j) {
+        double e = 0;
+        for (int c = 0; c < bin_coefficients.components(); ++c) e += wi[c] * double(bin_coefficients.at(s, j, c));
+        lux[j] = e;
+      }
+      for (std::size_t u = 0; u < used.size(); ++u) {
+        const sky::SunRecord& record = suns[used[u]];
+        double ed = 0;
+        for (int c = 0; c < direct.components(); ++c) ed += wd[c] * double(direct.at(s, used[u], c));
+        const float d = static_cast<float>(ed * record.disc_radiance);
+        const engine::SunStencil& st = stencils[u];
+        double ei = 0;
+        for (int k = 0; k < st.count; ++k)
+          ei += st.weight[static_cast<std::size_t>(k)] * lux[static_cast<std::size_t>(st.index[static_cast<std::size_t>(k)])];
+        const float ind = static_cast<float>(ei * record.disc_radiance);
+        float& e = study.illuminance.lux(record.step, s);
+        e = static_cast<float>(double(e) + double(d) + double(ind));
+        if (occupancy.occupied(record.step) && d >= threshold) ++study.ase_hours[s];
+      }
+    }
+  });
+  study.sensors = metrics::compute_sensor_metrics(study.illuminance, occupancy, settings.metrics);
+  study.grid = metrics::summarize_grid(study.sensors, settings.metrics, {}, &study.ase_hours);
+  if (!sky.daylight_hours_quantity.empty()) {
+    if (sky.daylight_hours_quantity.size() != n_steps)
+      throw std::invalid_argument("daylight-hours quantity has " + std::to_string(sky.daylight_hours_quantity.size()) +
+                                  " values for " + std::to_string(n_steps) + " steps");
+    study.grid.en17037 = metrics::en17037_daylight_provision(
+        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity));
+    study.daylight_hours_source = sky.daylight_hours_source;
+  }
   return study;
 }
 

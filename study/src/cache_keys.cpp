@@ -147,9 +147,9 @@ std::string sun_coefficients_key(const std::vector<std::string>& sun_photon_keys
 
 std::string direct_sun_key(const ContentHash& scene, const SensorGrid& grid,
                            const std::vector<std::size_t>& steps, const std::vector<Vec3>& directions,
-                           int samples, std::uint64_t seed) {
+                           int samples, std::uint64_t seed, DirectSunValues values) {
   ContentHash h;
-  h.text("direct sun").hash(scene);
+  h.text(values == DirectSunValues::Rgb ? "direct sun" : "direct sun, luminance").hash(scene);
   add_grid(h, grid);
   h.integer(static_cast<std::int64_t>(steps.size()));
   for (std::size_t i = 0; i < steps.size(); ++i)

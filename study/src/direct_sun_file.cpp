@@ -137,16 +137,19 @@ DirectSunExport make_direct_sun_export(const std::vector<DirectSunPart>& parts) 
     std::size_t column;
   };
   std::vector<Column> columns;
+  int components = 3;  // of every part: RGB, or one luminance value
   DirectSunExport e;
   bool first = true;
   for (const DirectSunPart& p : parts) {
-    if (p.direct->columns() != p.suns->size() || p.direct->components() != 3)
+    if (p.direct->columns() != p.suns->size() || (p.direct->components() != 3 && p.direct->components() != 1) ||
+        (!first && p.direct->components() != components))
       throw std::invalid_argument("direct sun export: " + std::to_string(p.direct->columns()) + " columns x " +
                                   std::to_string(p.direct->components()) + " components for " +
-                                  std::to_string(p.suns->size()) + " suns (RGB expected)");
+                                  std::to_string(p.suns->size()) + " suns (RGB or luminance, alike, expected)");
     if (!first && p.direct->rows() != e.sensors)
       throw std::invalid_argument("direct sun export: parts with different sensor counts");
     e.sensors = p.direct->rows();
+    components = p.direct->components();
     first = false;
     for (std::size_t k = 0; k < p.suns->size(); ++k) columns.push_back({&(*p.suns)[k], p.direct, k});
   }
@@ -160,13 +163,15 @@ DirectSunExport make_direct_sun_export(const std::vector<DirectSunPart>& parts) 
     e.steps.push_back(static_cast<std::uint32_t>(c.sun->step));
     e.directions.push_back(c.sun->direction);
   }
-  // As direct_sun_table (annual_sun.cpp) sums them: 179 w_c C_c in double, c = 0, 1, 2.
-  const Vec3 w = RgbLuminanceWeights * RadianceWhiteEfficacy_lm_per_W;
+  // As direct_sun_table (annual_sun.cpp) sums them: 179 w_c C_c in double, c = 0, 1, 2; a
+  // luminance matrix (one component): 179 C_0.
+  const Vec3 w = components == 3 ? RgbLuminanceWeights * RadianceWhiteEfficacy_lm_per_W
+                                 : Vec3{RadianceWhiteEfficacy_lm_per_W, 0, 0};
   e.row_start.assign(e.sensors + 1, 0);
   for (std::size_t s = 0; s < e.sensors; ++s) {
     for (std::size_t k = 0; k < columns.size(); ++k) {
       double v = 0;
-      for (int c = 0; c < 3; ++c) v += w[c] * double(columns[k].direct->at(s, columns[k].column, c));
+      for (int c = 0; c < components; ++c) v += w[c] * double(columns[k].direct->at(s, columns[k].column, c));
       if (v > 0) {
         e.sun.push_back(static_cast<std::uint32_t>(k));
         e.lux.push_back(v);

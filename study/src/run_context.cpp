@@ -18,6 +18,7 @@ engine::GridPhotons grid_photons_for(std::size_t g, const CaseLayout& layout, co
 AnnualOutputs annual_outputs_of(const project::Project& project) {
   AnnualOutputs which;
   which.illuminance = project.outputs.annual_illuminance;
+  which.illuminance_csv = project.outputs.illuminance_csv;
   which.metrics = project.outputs.metrics;
   return which;
 }

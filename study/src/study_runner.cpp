@@ -152,6 +152,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   const MatrixFormat matrix_format = parse_matrix_format(project.outputs.matrix_format);
   nlohmann::json grids_json = nlohmann::json::array();
   std::vector<RadianceMatrix> coefficient_matrices;
+  std::vector<std::vector<double>> sky_variances;  // sensors x sources per grid (sky_variance_of)
   std::vector<std::string> folders;
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
@@ -211,6 +212,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
                         {"attempts", accuracy->attempts},
                         {"stop_reason", accuracy->stop_reason}};
     grids_json.push_back(gj);
+    // Of the sky coefficients' parts only the matrix and the variances are needed from here on.
+    sky_variances.push_back(sky_variance_of(*coefficients[g]));
+    coefficients[g].reset();
   }
 
   // 5-6. Annual illuminance and metrics.
@@ -249,6 +253,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
         exported.weather = project.weather.path;
         write_direct_sun_file(exported, join_path(folders[g], DirectSunFileName));
         ctx.outputs.record(join_path(folders[g], DirectSunFileName));
+      }
+      if (project.outputs.coefficients && project.outputs.radiance_sun_matrix) {
         // The same sun on RADIANCE's patch basis, for gendaymtx -d (radiance_sun_matrix.h).
         std::vector<sky::SunRecord> daytime = ss.suns;
         daytime.insert(daytime.end(), sun[g].other_suns.begin(), sun[g].other_suns.end());
@@ -263,17 +269,19 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       }
       if (!annual) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
-      const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps);
-      const metrics::IlluminanceTable indirect = indirect_sun_table(sun[g].bin_coefficients, bins, ss.suns, ss.sky.steps);
       const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
-      const AnnualStudy study =
-          compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, direct, indirect, annual_settings);
+      // The sun added to the sky's table in place (no hourly direct and indirect tables held).
+      const AnnualStudy study = compute_annual_study_with_sun(
+          coefficient_matrices[g], ss.sky, GridSunCoefficients{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins},
+          annual_settings);
       log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
-      if (keep) keep->grids.push_back({grid.name, grid.points, study.illuminance, direct});
+      if (keep)  // operated shading picks hours by the direct sun's table
+        keep->grids.push_back(
+            {grid.name, grid.points, study.illuminance, direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps)});
       const SunBinVariance sun_variance{&sun[g].bin_variance, &bins, &ss.suns};
       const VerdictUncertainty verdicts =
-          verdict_uncertainty(study, ss.sky, sky_variance_of(*coefficients[g]), &sun_variance, annual_settings);
+          verdict_uncertainty(study, ss.sky, sky_variances[g], &sun_variance, annual_settings);
       add_verdict_uncertainty(grids_json[g], verdicts, true);
       add_annual(ctx.results->grids[g], study, annual_settings, which);
       add_verdict_uncertainty(ctx.results->grids[g], verdicts);
@@ -291,7 +299,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       const VerdictUncertainty verdicts =
-          verdict_uncertainty(study, sky, sky_variance_of(*coefficients[g]), nullptr, annual_settings);
+          verdict_uncertainty(study, sky, sky_variances[g], nullptr, annual_settings);
       add_verdict_uncertainty(grids_json[g], verdicts, false);
       add_annual(ctx.results->grids[g], study, annual_settings, which);
       add_verdict_uncertainty(ctx.results->grids[g], verdicts);

@@ -24,12 +24,17 @@ Step direct_sun_step(const CaseScene& cs, const SensorGrid& grid, std::size_t g,
   }
   return make_step(
       StepKind::DirectSun, g,
-      {"sun-direct", direct_sun_key(cs.scene_hash, grid, steps, directions, plan.sun_direct_samples, plan.seed)}, slot,
+      {"sun-direct", direct_sun_key(cs.scene_hash, grid, steps, directions, plan.sun_direct_samples, plan.seed,
+                                    DirectSunValues::Luminance)},
+      slot,
       [&cs, &grid, &suns, &plan] {
-        return direct_sun_coefficients(cs.scene, cs.materials, grid.points, suns, plan.sun_direct_samples, plan.seed);
+        return direct_sun_coefficients(cs.scene, cs.materials, grid.points, suns, plan.sun_direct_samples, plan.seed,
+                                       DirectSunValues::Luminance);
       },
       encode_matrix, decode_matrix,
-      [&grid, &suns](const RadianceMatrix& m) { return m.rows() == grid.points.size() && m.columns() == suns.size(); });
+      [&grid, &suns](const RadianceMatrix& m) {
+        return m.rows() == grid.points.size() && m.columns() == suns.size() && m.components() == 1;
+      });
 }
 
 }  // namespace
@@ -77,14 +82,15 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
     s.compute = [&, g]() -> std::vector<std::string> {
       const engine::GridPhotons grid_photons =
           grid_photons_for(g, cs.layout, photons, bins.size(), plan.point_estimate);
+      std::vector<double> bin_variance;
       out.bin_coefficients =
-          sun_bin_coefficients(cs.scene, cs.materials, sources, grid_photons, grid.points, estimating, &out.bin_variance);
+          sun_bin_coefficients(cs.scene, cs.materials, sources, grid_photons, grid.points, estimating, &bin_variance);
       // The variances as the cache keeps them (single precision), so a cached run gives the
       // same verdicts.
       RadianceMatrix variance(grid.points.size(), bins.size(), 1);
-      for (std::size_t i = 0; i < out.bin_variance.size(); ++i)
-        variance.data()[i] = static_cast<float>(out.bin_variance[i]);
-      out.bin_variance.assign(variance.data().begin(), variance.data().end());
+      for (std::size_t i = 0; i < bin_variance.size(); ++i) variance.data()[i] = static_cast<float>(bin_variance[i]);
+      bin_variance = {};
+      out.bin_variance = variance.data();
       return {encode_matrix(out.bin_coefficients), encode_matrix(variance)};
     };
     s.take = [&](const std::vector<std::string>& bytes) {
@@ -150,6 +156,12 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
       log.line(prefix + "sun coefficients " + grid.name + ": estimated at " + std::to_string(grid.points.size()) +
                " sensors");
     }
+  }
+  // The bins' photons are not needed beyond the coefficients: released before the direct sun.
+  photons = engine::TracedPhotons{};
+
+  for (std::size_t g = 0; g < n_grids; ++g) {
+    const SensorGrid& grid = grids[g];
 
     // The exact direct sun of every hour.
     const Step direct = direct_sun_step(cs, grid, g, ss.suns, plan, result[g].direct);

@@ -17,7 +17,7 @@ namespace dayphoton::study {
 /// The sun side of one grid in the sun-bins mode.
 struct GridSun {
   RadianceMatrix bin_coefficients;  ///< sensors x sun bins x RGB, caustic + global
-  std::vector<double> bin_variance;  ///< sensors x sun bins, of each entry's luminance
+  std::vector<float> bin_variance;  ///< sensors x sun bins, of each entry's luminance (as cached: float)
   RadianceMatrix direct;            ///< sensors x suns x RGB, exact direct sun
   /// For direct_sun.bin.gz (outputs.coefficients): the direct sun of the other daytime sun
   /// positions (direct_sun_file.h), sensors x other_suns x RGB.

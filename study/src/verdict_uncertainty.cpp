@@ -1,6 +1,7 @@
 // verdict_uncertainty: see verdict_uncertainty.h.
 #include "dayphoton/study/verdict_uncertainty.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -8,11 +9,14 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/metrics/occupancy.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace dayphoton::study {
 
 VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky& sky,
                                        const std::vector<double>& sky_variance, const SunBinVariance* sun,
-                                       const AnnualStudySettings& settings) {
+                                       const AnnualStudySettings& settings, std::size_t block_values) {
   const std::size_t n_steps = study.illuminance.step_count(), n_sensors = study.illuminance.sensor_count();
   const std::size_t bins = sky.matrix.rows();
   if (sky_variance.size() != n_sensors * bins || sky.matrix.columns() != n_steps)
@@ -20,60 +24,88 @@ VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky
                                 std::to_string(n_sensors) + " sensors x " + std::to_string(bins) + " bins, " +
                                 std::to_string(sky.matrix.columns()) + " sky steps for " + std::to_string(n_steps));
   const double efficacy2 = RadianceWhiteEfficacy_lm_per_W * RadianceWhiteEfficacy_lm_per_W;
-  // Variance (lux^2) of every (step, sensor), occupied steps only.
   const metrics::OccupancySchedule occupancy = occupancy_schedule(settings, sky.steps);
-  std::vector<double> variance(n_steps * n_sensors, 0.0);
-  std::vector<double> radiance2(bins);
+  std::vector<std::size_t> occupied_steps;
+  for (std::size_t t = 0; t < n_steps; ++t)
+    if (occupancy.occupied(t)) occupied_steps.push_back(t);
+  const std::size_t n_occupied = occupied_steps.size();
+  // The squared luminance of every bin in every occupied step (occupied steps x bins).
+  std::vector<double> radiance2(n_occupied * bins);
   const int nc = sky.matrix.components();
-  for (std::size_t t = 0; t < n_steps; ++t) {
-    if (!occupancy.occupied(t)) continue;
+  for (std::size_t j = 0; j < n_occupied; ++j) {
+    const std::size_t t = occupied_steps[j];
     for (std::size_t p = 0; p < bins; ++p) {
       const double l = nc == 3 ? RgbLuminanceWeights.x * sky.matrix.at(p, t, 0) + RgbLuminanceWeights.y * sky.matrix.at(p, t, 1) +
                                      RgbLuminanceWeights.z * sky.matrix.at(p, t, 2)
                                : double(sky.matrix.at(p, t, 0));
-      radiance2[p] = l * l;
-    }
-    for (std::size_t s = 0; s < n_sensors; ++s) {
-      double v = 0;
-      for (std::size_t p = 0; p < bins; ++p) v += radiance2[p] * sky_variance[s * bins + p];
-      variance[t * n_sensors + s] = efficacy2 * v;
+      radiance2[j * bins + p] = l * l;
     }
   }
+  // The suns of the occupied steps, in record order, with their stencils.
+  std::vector<std::vector<std::size_t>> suns_at(n_occupied);
+  std::vector<engine::SunStencil> stencils;
+  std::size_t n_bins = 0;
   if (sun && sun->variance && sun->bins && sun->suns) {
-    const std::size_t n_bins = sun->bins->size();
+    n_bins = sun->bins->size();
     if (sun->variance->size() != n_sensors * n_bins)
       throw std::invalid_argument("verdict uncertainty: the sun bins' variances do not match the sensors");
-    for (const sky::SunRecord& record : *sun->suns) {
-      if (record.step >= n_steps || !occupancy.occupied(record.step)) continue;
-      const engine::SunStencil st = sun->bins->weights(record.direction);
-      for (std::size_t s = 0; s < n_sensors; ++s) {
-        double v = 0;
-        for (int k = 0; k < st.count; ++k) {
-          const double w = st.weight[static_cast<std::size_t>(k)];
-          v += w * w * (*sun->variance)[s * n_bins + static_cast<std::size_t>(st.index[static_cast<std::size_t>(k)])];
-        }
-        variance[record.step * n_sensors + s] += efficacy2 * record.disc_radiance * record.disc_radiance * v;
-      }
+    std::vector<std::size_t> occupied_index(n_steps, n_occupied);
+    for (std::size_t j = 0; j < n_occupied; ++j) occupied_index[occupied_steps[j]] = j;
+    for (std::size_t i = 0; i < sun->suns->size(); ++i) {
+      const sky::SunRecord& record = (*sun->suns)[i];
+      stencils.push_back(sun->bins->weights(record.direction));
+      if (record.step < n_steps && occupied_index[record.step] < n_occupied)
+        suns_at[occupied_index[record.step]].push_back(i);
     }
   }
   VerdictUncertainty out;
-  const std::size_t occupied = occupancy.occupied_count();
-  if (occupied == 0) return out;
+  if (n_occupied == 0) return out;
+  // Variance (lux^2) of every occupied step of a block of sensors, computed in parallel (each
+  // value's sums in the same order as one sensor alone), then the verdicts and the sum of the
+  // variances taken in sensor order, step order: no sensors x hours table is held.
+  const std::size_t block = std::max<std::size_t>(1, block_values / n_occupied);
+  std::vector<double> variance(std::min(block, n_sensors) * n_occupied);
   const double threshold = settings.metrics.da_threshold_lux;
+  const double need = settings.metrics.sda_time_fraction * double(n_occupied);
   double sum_variance = 0;
-  for (std::size_t s = 0; s < n_sensors; ++s) {
-    std::size_t low = 0, high = 0;
-    for (std::size_t t = 0; t < n_steps; ++t) {
-      if (!occupancy.occupied(t)) continue;
-      const double e = study.illuminance.lux(t, s), v = variance[t * n_sensors + s];
-      const double band = VerdictSigmas * std::sqrt(v);
-      low += e - band >= threshold ? 1 : 0;
-      high += e + band >= threshold ? 1 : 0;
-      sum_variance += v;
+  for (std::size_t first = 0; first < n_sensors; first += block) {
+    const std::size_t last = std::min(n_sensors, first + block);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t s = r.begin(); s != r.end(); ++s) {
+        double* row = variance.data() + (s - first) * n_occupied;
+        const double* sv = sky_variance.data() + s * bins;
+        for (std::size_t j = 0; j < n_occupied; ++j) {
+          const double* r2 = radiance2.data() + j * bins;
+          double v = 0;
+          for (std::size_t p = 0; p < bins; ++p) v += r2[p] * sv[p];
+          row[j] = efficacy2 * v;
+          for (const std::size_t i : suns_at[j]) {
+            const sky::SunRecord& record = (*sun->suns)[i];
+            const engine::SunStencil& st = stencils[i];
+            double vs = 0;
+            for (int k = 0; k < st.count; ++k) {
+              const double w = st.weight[static_cast<std::size_t>(k)];
+              vs += w * w * (*sun->variance)[s * n_bins + static_cast<std::size_t>(st.index[static_cast<std::size_t>(k)])];
+            }
+            row[j] += efficacy2 * record.disc_radiance * record.disc_radiance * vs;
+          }
+        }
+      }
+    });
+    for (std::size_t s = first; s < last; ++s) {
+      const double* row = variance.data() + (s - first) * n_occupied;
+      std::size_t low = 0, high = 0;
+      for (std::size_t j = 0; j < n_occupied; ++j) {
+        const double e = study.illuminance.lux(occupied_steps[j], s), v = row[j];
+        const double band = VerdictSigmas * std::sqrt(v);
+        low += e - band >= threshold ? 1 : 0;
+        high += e + band >= threshold ? 1 : 0;
+        sum_variance += v;
+      }
+      if ((double(low) >= need) != (double(high) >= need)) ++out.da_verdicts_uncertain;
     }
-    const double need = settings.metrics.sda_time_fraction * double(occupied);
-    if ((double(low) >= need) != (double(high) >= need)) ++out.da_verdicts_uncertain;
   }
+  const std::size_t occupied = n_occupied;
   out.mean_occupied_stderr_lux = std::sqrt(sum_variance / (double(occupied) * double(n_sensors)));
   return out;
 }

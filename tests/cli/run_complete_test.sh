@@ -6,7 +6,7 @@
 #  2. a re-run with changed inputs (other photon count, no annual illuminance table) killed
 #     with SIGKILL during its photon pass and again after its first new output: each time the
 #     folder has no summary.json, has INCOMPLETE, and holds no output of the earlier run;
-#  3. the re-run completed: only its own outputs (the earlier illuminance.csv is gone), the
+#  3. the re-run completed: only its own outputs (the earlier illuminance.bin is gone), the
 #     temporaries of killed writes removed, the manifest matches;
 #  4. a fully cached re-run writes byte-identical results (the run's history is in run.log and
 #     timings.json, and in report.html's appendix, which shows the times: summary.json differs
@@ -48,7 +48,7 @@ kill_when() {
 # 1. A complete run.
 "$bin" run "$scratch/office/first.yaml" --output "$out" --quiet || fail "the first run failed"
 problems=$(check_complete "$out") || fail "first run: $problems"
-[ -f "$out/workplane/illuminance.csv" ] || fail "first run: no illuminance.csv"
+[ -f "$out/workplane/illuminance.bin" ] || fail "first run: no illuminance.bin"
 echo "ok   complete run: summary.json lists $(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['files']))" "$out/summary.json") outputs, sizes and hashes match"
 
 # 2. The changed re-run killed twice: in its photon pass, and after its first new output.
@@ -63,7 +63,7 @@ echo partial >"$out/summary.json.tmp.$dead"
 echo partial >"$cache/photons-0.bin.tmp.$dead"
 "$bin" run "$scratch/office/second.yaml" --output "$out" --quiet || fail "the completing run failed"
 problems=$(check_complete "$out") || fail "completed re-run: $problems"
-[ -e "$out/workplane/illuminance.csv" ] && fail "the earlier run's illuminance.csv is still there"
+[ -e "$out/workplane/illuminance.bin" ] && fail "the earlier run's illuminance.bin is still there"
 [ -e "$out/summary.json.tmp.$dead" ] || [ -e "$cache/photons-0.bin.tmp.$dead" ] &&
   fail "temporaries of a dead writer were not removed"
 grep -q "removed 2 temporary file" "$out/run.log" || fail "run.log does not report the removed temporaries"

@@ -4,7 +4,7 @@
 # the files alone:
 #  1. operated/workplane/ has the annual files, shading_schedule.csv (8760 rows) and
 #     operation.json; summary.json has `operated`;
-#  2. every row of the operated illuminance.csv is, byte for byte, the closed variant's row
+#  2. every row of the operated illuminance.bin is, byte for byte, the closed variant's row
 #     where the schedule says shaded and the raised variant's row elsewhere;
 #  3. the schedule's `shaded` column is the rule applied to its own counts (100 sunlit > 2 n),
 #     and the shaded-hour counts in operation.json agree with it;
@@ -23,7 +23,7 @@ start=$(date +%s)
 echo "ok   dayphoton run projects/blinds: $(($(date +%s) - start)) s"
 
 op="$out/operated/workplane"
-for f in sensors.csv illuminance.csv illuminance.bin metrics.csv grid_metrics.json shading_schedule.csv operation.json; do
+for f in sensors.csv illuminance.bin metrics.csv grid_metrics.json shading_schedule.csv operation.json; do
   [ -s "$op/$f" ] || fail "missing $op/$f"
 done
 [ "$(wc -l <"$op/shading_schedule.csv")" -eq 8761 ] || fail "shading_schedule.csv: $(wc -l <"$op/shading_schedule.csv") lines"
@@ -32,23 +32,30 @@ echo "ok   operated files and summary"
 
 # 2. Row choice. The schedule's last column is `shaded`.
 check_rows() {
-awk -v sched="$op/shading_schedule.csv" -v raised="$out/variants/raised/workplane/illuminance.csv" \
-    -v closed="$out/variants/closed/workplane/illuminance.csv" -v operated="$op/illuminance.csv" '
-  BEGIN {
-    FS = ","
-    getline s < sched; getline r < raised; getline c < closed; getline o < operated
-    if (o != r) { print "header differs"; exit 1 }
-    n = 0; shaded = 0; differ = 0
-    while ((getline s < sched) > 0) {
-      getline r < raised; getline c < closed; getline o < operated
-      split(s, f, ","); want = (f[7] == 1) ? c : r
-      if (o != want) { print "row " n + 1 " (" s "): operated row is not the " (f[7] == 1 ? "closed" : "raised") " row"; exit 1 }
-      n++; shaded += f[7]; if (r != c) differ++
-    }
-    if (n != 8760) { print n " rows"; exit 1 }
-    if (shaded == 0) { print "no hour shaded: the test would not distinguish the cases"; exit 1 }
-    print "ok   " n " operated rows: " shaded " from closed, " n - shaded " from raised (" differ " rows differ between the cases)"
-  }' || fail "operated table"
+python3 - "$op/shading_schedule.csv" "$out/variants/raised/workplane/illuminance.bin" \
+    "$out/variants/closed/workplane/illuminance.bin" "$op/illuminance.bin" <<'PY' || fail "operated table"
+import struct, sys
+sched, raised, closed, operated = sys.argv[1:5]
+tables = [open(p, "rb").read() for p in (raised, closed, operated)]
+T, S = struct.unpack_from("<II", tables[0], 8)
+if any(t[:16 + 8 * T] != tables[0][:16 + 8 * T] for t in tables):
+    sys.exit("header or time stamps differ")
+row = lambda t, i: t[16 + 8 * T + 4 * S * i:16 + 8 * T + 4 * S * (i + 1)]
+rows = open(sched).read().splitlines()[1:]
+if len(rows) != T or T != 8760:
+    sys.exit(f"{len(rows)} schedule rows, {T} table rows")
+shaded = differ = 0
+for i, line in enumerate(rows):
+    f = line.split(",")
+    want = tables[1] if f[6] == "1" else tables[0]
+    if row(tables[2], i) != row(want, i):
+        sys.exit(f"row {i + 1} ({line}): operated row is not the {'closed' if f[6] == '1' else 'raised'} row")
+    shaded += f[6] == "1"
+    differ += row(tables[0], i) != row(tables[1], i)
+if shaded == 0:
+    sys.exit("no hour shaded: the test would not distinguish the cases")
+print(f"ok   {T} operated rows: {shaded} from closed, {T - shaded} from raised ({differ} rows differ between the cases)")
+PY
 }
 check_rows
 

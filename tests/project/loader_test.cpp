@@ -273,6 +273,21 @@ TEST(ProjectLoader, StudyKindDecidesWhatTheWeatherFileAndTheOutputsMayBe) {
                 "(study: daylight_factor)",
                 "6:12: operation needs the annual study (each hour's direct sun); this project is a "
                 "daylight-factor study (study: daylight_factor)"}));
+  // The sun matrix for gendaymtx -d is one of the coefficient files of the sun-bins mode.
+  const std::string weather = "weather: " + OfficeEpw + "\n";
+  EXPECT_EQ(errors_of(site + weather + "outputs: {radiance_sun_matrix: true, coefficients: false}\n" + rest),
+            std::vector<std::string>{"3:32: outputs.radiance_sun_matrix: true needs outputs.coefficients: true (it is "
+                                     "one of the coefficient files)"});
+  EXPECT_EQ(errors_of(site + weather + "outputs: {radiance_sun_matrix: true}\nsimulation: {sun: spread}\n" + rest),
+            std::vector<std::string>{"3:32: outputs.radiance_sun_matrix: true needs simulation.sun: bins (the sun is "
+                                     "spread into the sky coefficients otherwise)"});
+  EXPECT_EQ(errors_of(site + "study: daylight_factor\noutputs: {illuminance_csv: true}\n" + rest),
+            std::vector<std::string>{"3:28: outputs.illuminance_csv: true needs the annual study; this project is a "
+                                     "daylight-factor study (study: daylight_factor)"});
+  const Project with_csv =
+      load_project_from_string(site + weather + "outputs: {illuminance_csv: true, radiance_sun_matrix: true}\n" + rest,
+                               FakePath);
+  EXPECT_TRUE(with_csv.outputs.illuminance_csv && with_csv.outputs.radiance_sun_matrix);
   const std::vector<std::string> bad_kind = errors_of(site + "study: hourly\n" + rest);
   ASSERT_FALSE(bad_kind.empty());
   EXPECT_EQ(bad_kind[0].rfind("2:8: ", 0), 0u) << bad_kind[0];
@@ -539,7 +554,9 @@ TEST(ProjectLoader, DefaultsComeFromTheSchemaAndMatchTheStructs) {
   EXPECT_EQ(p.outputs.folder, ProjectsDir + "/office/results");
   EXPECT_EQ(p.outputs.folder_as_written, "results");
   EXPECT_TRUE(p.outputs.daylight_factor && p.outputs.coefficients && p.outputs.images && p.outputs.report);
-  EXPECT_EQ(p.outputs.matrix_format, "ascii");
+  EXPECT_EQ(p.outputs.matrix_format, "float");  // binary by default (docs/outputs.md "Defaults")
+  EXPECT_FALSE(p.outputs.illuminance_csv);
+  EXPECT_FALSE(p.outputs.radiance_sun_matrix);
   EXPECT_EQ(p.site.elevation_m, 0);
   EXPECT_EQ(p.site.north_deg, 0);
   EXPECT_EQ(p.site.meridian_convergence_deg, 0);

@@ -318,7 +318,15 @@ TEST(AnnualStudyOutputs, WritesTheFourFilesAndAConsistentJsonFragment) {
   const fs::path dir = fs::temp_directory_path() / "dayphoton_annual_study_outputs";
   fs::remove_all(dir);
   const std::vector<SensorPoint> sensors(3, SensorPoint{{1, 2, 0.8}, {0, 0, 1}});
-  const auto written = write_annual_outputs(study, sensors, settings, (dir / "grid").string());
+  // By default the hourly table in binary only (docs/outputs.md "Defaults"); the CSV on request.
+  const auto binary_only = write_annual_outputs(study, sensors, settings, (dir / "binary").string());
+  ASSERT_EQ(binary_only.size(), 3u);
+  EXPECT_FALSE(fs::exists(dir / "binary" / "illuminance.csv"));
+  for (const char* name : {"illuminance.bin", "metrics.csv", "grid_metrics.json"})
+    EXPECT_TRUE(fs::exists(dir / "binary" / name)) << name;
+  AnnualOutputs with_csv;
+  with_csv.illuminance_csv = true;
+  const auto written = write_annual_outputs(study, sensors, settings, (dir / "grid").string(), with_csv);
   ASSERT_EQ(written.size(), 4u);
   for (const char* name : {"illuminance.csv", "illuminance.bin", "metrics.csv", "grid_metrics.json"})
     EXPECT_TRUE(fs::exists(dir / "grid" / name)) << name;

@@ -298,6 +298,74 @@ TEST(AnnualSunTables, HourlyTablesAndTheAnnualStudyAddUpByHand) {
   EXPECT_THROW(compute_annual_study_with_sun(sky_c, sky, short_table, ind, settings), std::invalid_argument);
 }
 
+/// A random year of 96 steps, 41 sensors, Tregenza sky coefficients, sun bins on MF 2 and 30
+/// suns (two on one step: the later wins); direct sun RGB or one luminance component.
+void expect_in_place_sun_equals_tables(int direct_components) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const sky::PatchBasis treg = sky::PatchBasis::tregenza();
+  const std::size_t n_steps = 96, n_sensors = 41;
+  AnnualSky sky;
+  for (std::size_t t = 0; t < n_steps; ++t) sky.steps.push_back({6, int(1 + t / 24), double(t % 24) + 0.5});
+  sky.matrix = RadianceMatrix(std::size_t(treg.bin_count()), n_steps, 3);
+  for (std::size_t p = 0; p < sky.matrix.rows(); ++p)
+    for (std::size_t t = 0; t < n_steps; ++t)
+      if (t % 24 >= 6 && t % 24 < 20)
+        for (int c = 0; c < 3; ++c) sky.matrix.at(p, t, c) = float(20.0 * u(random));
+  for (std::size_t t = 0; t < n_steps; ++t) sky.daylight_hours_quantity.push_back(double(t % 24 >= 6 && t % 24 < 20) * u(random));
+  RadianceMatrix sky_c(n_sensors, std::size_t(treg.bin_count()), 3);
+  for (float& v : sky_c.data()) v = float(0.02 * u(random));
+  std::vector<sky::SunRecord> suns;
+  for (std::size_t k = 0; k < 30; ++k) {
+    sky::SunRecord sun;
+    sun.step = k == 29 ? suns[10].step : 24 * (k / 10) + 7 + k % 10;
+    const double alt = 0.2 + 1.0 * u(random), az = 6.28 * u(random);
+    sun.direction = Vec3{std::cos(alt) * std::sin(az), std::cos(alt) * std::cos(az), std::sin(alt)};
+    sun.disc_radiance = 1e6 * u(random);
+    suns.push_back(sun);
+  }
+  std::vector<Vec3> directions;
+  for (const sky::SunRecord& s : suns) directions.push_back(s.direction);
+  const engine::SunBins bins = engine::SunBins::for_suns(directions, 2);
+  RadianceMatrix bin_c(n_sensors, bins.size(), 3), direct(n_sensors, suns.size(), direct_components);
+  for (float& v : bin_c.data()) v = float(1e-4 * u(random));
+  for (float& v : direct.data()) v = u(random) < 0.5 ? 0.0f : float(2e-5 * u(random));
+  AnnualStudySettings settings;
+  settings.metrics.ase_threshold_lux = 1000;
+  const AnnualStudy tables = compute_annual_study_with_sun(
+      sky_c, sky, direct_sun_table(direct, suns, sky.steps), indirect_sun_table(bin_c, bins, suns, sky.steps), settings);
+  const AnnualStudy in_place =
+      compute_annual_study_with_sun(sky_c, sky, GridSunCoefficients{&direct, &suns, &bin_c, &bins}, settings);
+  for (std::size_t t = 0; t < n_steps; ++t)
+    for (std::size_t s = 0; s < n_sensors; ++s)
+      ASSERT_EQ(in_place.illuminance.lux(t, s), tables.illuminance.lux(t, s)) << t << " " << s;
+  EXPECT_EQ(in_place.ase_hours, tables.ase_hours);
+  int ase = 0;
+  for (int h : in_place.ase_hours) ase += h;
+  EXPECT_GT(ase, 0);  // the comparison covers sunlit hours
+  ASSERT_EQ(in_place.sensors.size(), n_sensors);
+  for (std::size_t s = 0; s < n_sensors; ++s) {
+    EXPECT_EQ(in_place.sensors[s].da_percent, tables.sensors[s].da_percent);
+    EXPECT_EQ(in_place.sensors[s].mean_occupied_lux, tables.sensors[s].mean_occupied_lux);
+  }
+  EXPECT_EQ(in_place.occupied_hours, tables.occupied_hours);
+  EXPECT_EQ(in_place.grid.ase_percent, tables.grid.ase_percent);
+  EXPECT_EQ(in_place.grid.sda_percent, tables.grid.sda_percent);
+  ASSERT_EQ(in_place.grid.en17037.size(), tables.grid.en17037.size());
+  for (std::size_t i = 0; i < tables.grid.en17037.size(); ++i)
+    EXPECT_EQ(in_place.grid.en17037[i].target_area_percent, tables.grid.en17037[i].target_area_percent);
+  EXPECT_EQ(in_place.daylight_hours_source, tables.daylight_hours_source);
+  EXPECT_EQ(in_place.sky_description, tables.sky_description);
+  RadianceMatrix wrong(n_sensors, suns.size() + 1, direct_components);
+  EXPECT_THROW(compute_annual_study_with_sun(sky_c, sky, GridSunCoefficients{&wrong, &suns, &bin_c, &bins}, settings),
+               std::invalid_argument);
+}
+
+TEST(AnnualSunTables, SunAddedInPlaceEqualsTheHourlyTablesValueForValue) {
+  expect_in_place_sun_equals_tables(3);
+  expect_in_place_sun_equals_tables(1);
+}
+
 TEST(AnnualSunSky, SkyWithoutSunPlusSunsIsTheSpreadSkyOfOakland) {
   // The sun-bins mode's inputs split the RADIANCE-compatible spread-sun matrix exactly: the
   // sky rows are those of gendaymtx -s conventions, and each hour's sun carries the direct
@@ -423,6 +491,18 @@ TEST(SunBinTracing, InterpolatedIndirectSunMatchesTracingEachHoursSun) {
         sun_bin_coefficients(scene, materials, bins.sources(sky::SunHalfAngle_rad),
                              engine::GridPhotons::for_plane(plane, bp.planes[0], bins.size()), grid.points, co);
     const metrics::IlluminanceTable table = indirect_sun_table(bc, bins, hours, steps);
+    if (r == 0) {  // a block of 3 sensors at a time gives the same values and variances
+      std::vector<double> whole_variance, block_variance;
+      const engine::GridPhotons gp = engine::GridPhotons::for_plane(plane, bp.planes[0], bins.size());
+      const engine::SourceSet discs = bins.sources(sky::SunHalfAngle_rad);
+      const RadianceMatrix whole = sun_bin_coefficients(scene, materials, discs, gp, grid.points, co, &whole_variance);
+      const RadianceMatrix blocks =
+          sun_bin_coefficients(scene, materials, discs, gp, grid.points, co, &block_variance, 3 * bins.size());
+      ASSERT_GT(grid.points.size(), 3u);
+      EXPECT_EQ(whole.data(), bc.data());
+      EXPECT_EQ(blocks.data(), whole.data());
+      EXPECT_EQ(block_variance, whole_variance);
+    }
     o.seed = 200 + r;
     const engine::TracedPhotons ep = engine::trace_photons(scene, materials, exact, {plane}, o);
     const RadianceMatrix ec =

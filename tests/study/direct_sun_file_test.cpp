@@ -59,6 +59,36 @@ std::string temp_path(const std::string& name) {
 
 std::vector<metrics::TimeStamp> steps_of(std::size_t n) { return std::vector<metrics::TimeStamp>(n); }
 
+TEST(DirectSunFile, LuminanceMatricesGiveTheRunsTableBitForBit) {
+  // The run keeps a grid's hourly direct sun as one luminance value per sun
+  // (DirectSunValues::Luminance): the export and the run's table agree on it exactly too.
+  const std::vector<sky::SunRecord> lit = path_suns(9, 1), unlit = path_suns(5, 0);
+  const RadianceMatrix rgb_lit = coefficients(4, lit.size(), 1), rgb_unlit = coefficients(4, unlit.size(), 2);
+  auto luminance = [](const RadianceMatrix& rgb) {
+    RadianceMatrix m(rgb.rows(), rgb.columns(), 1);
+    for (std::size_t s = 0; s < rgb.rows(); ++s)
+      for (std::size_t k = 0; k < rgb.columns(); ++k)
+        m.at(s, k, 0) = float(dot(Vec3{rgb.at(s, k, 0), rgb.at(s, k, 1), rgb.at(s, k, 2)}, RgbLuminanceWeights));
+    return m;
+  };
+  const RadianceMatrix c_lit = luminance(rgb_lit), c_unlit = luminance(rgb_unlit);
+  const DirectSunExport e = make_direct_sun_export({{&c_lit, &lit}, {&c_unlit, &unlit}});
+  ASSERT_EQ(e.sun_count(), 14u);
+  ASSERT_FALSE(e.lux.empty());
+  const std::vector<metrics::TimeStamp> steps = steps_of(24);
+  const metrics::IlluminanceTable run = direct_sun_table(c_lit, lit, steps);
+  ExactSunNotes notes;
+  const metrics::IlluminanceTable from_file = exported_direct_sun_table(e, lit, steps, "x", notes);
+  for (std::size_t t = 0; t < steps.size(); ++t)
+    for (std::size_t s = 0; s < 4; ++s) EXPECT_EQ(from_file.lux(t, s), run.lux(t, s)) << t << " " << s;
+  // The same illuminance as the RGB matrix to float precision.
+  const metrics::IlluminanceTable from_rgb = direct_sun_table(rgb_lit, lit, steps);
+  for (std::size_t t = 0; t < steps.size(); ++t)
+    for (std::size_t s = 0; s < 4; ++s) EXPECT_NEAR(run.lux(t, s), from_rgb.lux(t, s), 1e-6 * from_rgb.lux(t, s));
+  // Parts of different kinds are refused.
+  EXPECT_THROW(make_direct_sun_export({{&c_lit, &lit}, {&rgb_unlit, &unlit}}), std::invalid_argument);
+}
+
 TEST(DirectSunFile, RoundTripAndTheRunsTableBitForBit) {
   const std::vector<sky::SunRecord> lit = path_suns(9, 1);     // odd steps: the run's lit suns
   std::vector<sky::SunRecord> unlit = path_suns(5, 0);         // even steps: daytime, no direct light

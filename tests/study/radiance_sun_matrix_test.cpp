@@ -187,7 +187,7 @@ SunComparison compare_with_run(const fs::path& grid, const std::string& epw, int
 TEST(RadianceSunMatrix, TimesTheSunOnlySkyItIsTheRunsSun) {
   const fs::path out = fs::temp_directory_path() / "dayphoton_radiance_sun_matrix_test";
   const std::string text = "site: {from_weather: true}\nweather: " + Epw + R"(
-outputs: {images: false, report: false}
+outputs: {images: false, report: false, radiance_sun_matrix: true}
 materials:
   walls: {type: lambertian, reflectance: 0.5}
   glass: {type: glass, transmittance: 0.6}

@@ -122,7 +122,7 @@ nlohmann::json summary_of(const fs::path& folder) {
 }
 
 /// The files of a grid folder that hold results the sky enters (annual tables, metrics) and the DF.
-const std::vector<std::string> ResultFiles = {"illuminance.csv", "illuminance.bin", "metrics.csv",
+const std::vector<std::string> ResultFiles = {"illuminance.bin", "metrics.csv",
                                               "grid_metrics.json", "daylight_factor.csv"};
 
 /// The output folders of three runs of the office: as shipped, from_weather, and the Mannheim
@@ -193,7 +193,7 @@ void expect_site_equal_to_the_header_gives_the_results_of_from_weather(const Off
 void expect_mannheim_with_the_oakland_file_is_not_the_oakland_result(const OfficeRuns& r) {
   const fs::path &site_dir = r.site_dir, &mannheim_dir = r.mannheim_dir;
   // The sun of Mannheim at Oakland's instants: the annual illuminance is another one.
-  EXPECT_NE(read_text(site_dir / "workplane" / "illuminance.csv"), read_text(mannheim_dir / "workplane" / "illuminance.csv"));
+  EXPECT_NE(read_text(site_dir / "workplane" / "illuminance.bin"), read_text(mannheim_dir / "workplane" / "illuminance.bin"));
   EXPECT_NE(read_text(site_dir / "workplane" / "metrics.csv"), read_text(mannheim_dir / "workplane" / "metrics.csv"));
   const nlohmann::json m = summary_of(mannheim_dir);
   EXPECT_NEAR(m["site"]["latitude_deg"].get<double>(), 49.4875, 1e-12);

@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "dayphoton/core/units.h"
+#include "dayphoton/metrics/occupancy.h"
 
 namespace dayphoton::study {
 namespace {
@@ -47,6 +49,99 @@ TEST(VerdictUncertainty, SensorsWithinTwoSigmaOfTheDaVerdictAreCounted) {
   const VerdictUncertainty half = verdict_uncertainty(study, sky, {v / 4, v / 4, v / 4}, nullptr, settings);
   EXPECT_EQ(half.da_verdicts_uncertain, 0u);
   EXPECT_THROW(verdict_uncertainty(study, sky, {v, v}, nullptr, settings), std::invalid_argument);
+}
+
+
+/// The hourly variance table of every sensor, as the verdicts were first computed (a steps x
+/// sensors table): the reference the blocked computation must equal exactly.
+VerdictUncertainty reference(const AnnualStudy& study, const AnnualSky& sky, const std::vector<double>& sky_variance,
+                             const SunBinVariance& sun, const AnnualStudySettings& settings) {
+  const std::size_t n_steps = study.illuminance.step_count(), n_sensors = study.illuminance.sensor_count();
+  const std::size_t bins = sky.matrix.rows();
+  const double efficacy2 = RadianceWhiteEfficacy_lm_per_W * RadianceWhiteEfficacy_lm_per_W;
+  const metrics::OccupancySchedule occupancy = occupancy_schedule(settings, sky.steps);
+  std::vector<double> variance(n_steps * n_sensors, 0.0), radiance2(bins);
+  for (std::size_t t = 0; t < n_steps; ++t) {
+    if (!occupancy.occupied(t)) continue;
+    for (std::size_t p = 0; p < bins; ++p) {
+      const double l = RgbLuminanceWeights.x * sky.matrix.at(p, t, 0) + RgbLuminanceWeights.y * sky.matrix.at(p, t, 1) +
+                       RgbLuminanceWeights.z * sky.matrix.at(p, t, 2);
+      radiance2[p] = l * l;
+    }
+    for (std::size_t s = 0; s < n_sensors; ++s) {
+      double v = 0;
+      for (std::size_t p = 0; p < bins; ++p) v += radiance2[p] * sky_variance[s * bins + p];
+      variance[t * n_sensors + s] = efficacy2 * v;
+    }
+  }
+  const std::size_t n_bins = sun.bins->size();
+  for (const sky::SunRecord& record : *sun.suns) {
+    if (!occupancy.occupied(record.step)) continue;
+    const engine::SunStencil st = sun.bins->weights(record.direction);
+    for (std::size_t s = 0; s < n_sensors; ++s) {
+      double v = 0;
+      for (int k = 0; k < st.count; ++k)
+        v += st.weight[k] * st.weight[k] * (*sun.variance)[s * n_bins + std::size_t(st.index[k])];
+      variance[record.step * n_sensors + s] += efficacy2 * record.disc_radiance * record.disc_radiance * v;
+    }
+  }
+  VerdictUncertainty out;
+  const std::size_t occupied = occupancy.occupied_count();
+  double sum_variance = 0;
+  for (std::size_t s = 0; s < n_sensors; ++s) {
+    std::size_t low = 0, high = 0;
+    for (std::size_t t = 0; t < n_steps; ++t) {
+      if (!occupancy.occupied(t)) continue;
+      const double e = study.illuminance.lux(t, s), v = variance[t * n_sensors + s];
+      const double band = VerdictSigmas * std::sqrt(v);
+      low += e - band >= settings.metrics.da_threshold_lux ? 1 : 0;
+      high += e + band >= settings.metrics.da_threshold_lux ? 1 : 0;
+      sum_variance += v;
+    }
+    const double need = settings.metrics.sda_time_fraction * double(occupied);
+    if ((double(low) >= need) != (double(high) >= need)) ++out.da_verdicts_uncertain;
+  }
+  out.mean_occupied_stderr_lux = std::sqrt(sum_variance / (double(occupied) * double(n_sensors)));
+  return out;
+}
+
+TEST(VerdictUncertainty, BlocksOfSensorsGiveTheValuesOfTheWholeHourlyTable) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  constexpr std::size_t Steps = 72, Sensors = 53, Bins = 5;
+  AnnualSky sky;
+  sky.matrix = RadianceMatrix(Bins, Steps, 3);
+  for (std::size_t t = 0; t < Steps; ++t) sky.steps.push_back({3, int(1 + t / 24), double(t % 24) + 0.5});
+  for (float& v : sky.matrix.data()) v = float(40.0 * u(random));
+  AnnualStudy study;
+  study.illuminance = metrics::IlluminanceTable(sky.steps, Sensors);
+  for (std::size_t t = 0; t < Steps; ++t)
+    for (std::size_t s = 0; s < Sensors; ++s) study.illuminance.lux(t, s) = float(250.0 + 100.0 * u(random));
+  std::vector<double> sky_variance(Sensors * Bins);
+  for (double& v : sky_variance) v = 1e-3 * u(random);
+  std::vector<sky::SunRecord> suns;
+  std::vector<Vec3> directions;
+  for (std::size_t k = 0; k < 20; ++k) {
+    sky::SunRecord sun;
+    sun.step = 24 * (k / 7) + 8 + k % 7;
+    const double alt = 0.3 + u(random), az = 6.28 * u(random);
+    sun.direction = Vec3{std::cos(alt) * std::sin(az), std::cos(alt) * std::cos(az), std::sin(alt)};
+    sun.disc_radiance = 1e3 * u(random);
+    suns.push_back(sun);
+    directions.push_back(sun.direction);
+  }
+  const engine::SunBins bins = engine::SunBins::for_suns(directions, 1);
+  std::vector<float> sun_variance(Sensors * bins.size());
+  for (float& v : sun_variance) v = float(1e-9 * u(random));
+  const SunBinVariance sun{&sun_variance, &bins, &suns};
+  AnnualStudySettings settings;
+  const VerdictUncertainty expected = reference(study, sky, sky_variance, sun, settings);
+  EXPECT_GT(expected.da_verdicts_uncertain, 0u);
+  for (std::size_t block_values : {std::size_t(1), std::size_t(30 * 7), VerdictSensorBlockValues}) {
+    const VerdictUncertainty got = verdict_uncertainty(study, sky, sky_variance, &sun, settings, block_values);
+    EXPECT_EQ(got.da_verdicts_uncertain, expected.da_verdicts_uncertain) << block_values;
+    EXPECT_EQ(got.mean_occupied_stderr_lux, expected.mean_occupied_stderr_lux) << block_values;
+  }
 }
 
 }  // namespace

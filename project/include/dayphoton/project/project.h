@@ -507,11 +507,16 @@ struct Outputs {
   bool folder_outside_project = false;
   bool daylight_factor = true;
   bool annual_illuminance = true;
+  /// `illuminance_csv`: illuminance.csv beside illuminance.bin (off by default: the same table
+  /// written twice; docs/outputs.md "Defaults: binary first").
+  bool illuminance_csv = false;
   bool metrics = true;
   bool coefficients = true;
+  /// `radiance_sun_matrix`: coefficients_sun_mf<N>.mtx for gendaymtx -d (with coefficients).
+  bool radiance_sun_matrix = false;
   bool images = true;
   bool report = true;
-  std::string matrix_format = "ascii";  ///< "ascii" or "float"
+  std::string matrix_format = "float";  ///< "ascii" or "float"
   SourceLocation location;
 };
 

@@ -122,12 +122,13 @@ std::string grid_metrics_json(const AnnualStudy& study, const AnnualStudySetting
 
 /// Which files write_annual_outputs writes.
 struct AnnualOutputs {
-  bool illuminance = true;  ///< illuminance.csv and illuminance.bin
+  bool illuminance = true;  ///< illuminance.bin
   bool metrics = true;      ///< metrics.csv and grid_metrics.json
+  bool illuminance_csv = false;  ///< with illuminance: illuminance.csv too
 };
 
-/// Write illuminance.csv, illuminance.bin, metrics.csv and grid_metrics.json into `folder`
-/// (created if missing), each atomically. `sensors` gives the coordinates of the rows.
+/// Write illuminance.csv (only with outputs.illuminance_csv), illuminance.bin, metrics.csv and
+/// grid_metrics.json into `folder` (created if missing), each atomically. `sensors` gives the coordinates of the rows.
 /// Returns the paths written, in that order.
 std::vector<std::string> write_annual_outputs(const AnnualStudy& study, const std::vector<SensorPoint>& sensors,
                                               const AnnualStudySettings& settings, const std::string& folder,

@@ -108,25 +108,33 @@ std::vector<sky::SunRecord> suns_from_matrix(const RadianceMatrix& m);
 /// rays (engine::sky_transmittance: straight through the glazing up to the first port,
 /// anything else blocks), the disc sampled as engine::SourceSet does. Sensor s of sun k uses
 /// Rng(seed, step of sun k, s, Direct), so a sun's numbers do not depend on the other suns.
-/// Parallel over sensors, the same for any thread count.
+/// Parallel over sensors, the same for any thread count. With DirectSunValues::Luminance one
+/// component per sun instead of three: (0.265 R + 0.670 G + 0.065 B) of the same sums, the
+/// quantity every illuminance is made of (weight 179 as a one-component matrix), in a third of
+/// the memory (what the pipeline keeps for a grid's hourly suns; docs/photon-tracing.md "Scale").
+enum class DirectSunValues { Rgb, Luminance };
 RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
                                        const std::vector<engine::Material>& materials,
                                        const std::vector<SensorPoint>& sensors,
                                        const std::vector<sky::SunRecord>& suns,
-                                       int samples = SunDirectSamples, std::uint64_t seed = 1);
+                                       int samples = SunDirectSamples, std::uint64_t seed = 1,
+                                       DirectSunValues values = DirectSunValues::Rgb);
 
 /// Photon part (caustic + global) of the sun-bin coefficients at `sensors`: sensors x bins x
 /// RGB, W/m^2 per unit disc radiance (what coefficients_sun.mtx holds). `photons` are the
 /// sun bins' photons, source i = bin i = sources[i] (the discs, for a final gather's
 /// specular paths; engine::photon_coefficients). `variance`, if given, receives each entry's
-/// variance (sensors x bins, engine/estimate_variance.h).
+/// variance (sensors x bins, engine/estimate_variance.h). Receiver-plane estimates are made a
+/// block of sensors at a time (SunCoefficientBlockValues), with the same values.
+constexpr std::size_t SunCoefficientBlockValues = std::size_t(1) << 20;
 RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const std::vector<engine::Material>& materials,
                                     const engine::SourceSet& sources,
                                     const engine::GridPhotons& photons,
                                     const std::vector<SensorPoint>& sensors,
                                     const engine::CoefficientOptions& options,
-                                    std::vector<double>* variance = nullptr);
+                                    std::vector<double>* variance = nullptr,
+                                    std::size_t block_values = SunCoefficientBlockValues);
 
 /// Direct-sun illuminance (lux), steps x sensors: 179 w . C_direct[s][k] L_k for each sun k
 /// at its step, 0 at every other step. `direct` from direct_sun_coefficients.
@@ -151,6 +159,23 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
                                           const metrics::IlluminanceTable& direct_sun,
                                           const metrics::IlluminanceTable& indirect_sun,
                                           const AnnualStudySettings& settings);
+
+/// A grid's sun as the sun-bins mode computes it: the exact direct sun per unit disc radiance
+/// (direct_sun_coefficients: sensors x suns) of the suns `suns`, and the sun bins'
+/// coefficients (sun_bin_coefficients: sensors x bins) on `bins`.
+struct GridSunCoefficients {
+  const RadianceMatrix* direct = nullptr;
+  const std::vector<sky::SunRecord>* suns = nullptr;
+  const RadianceMatrix* bin_coefficients = nullptr;
+  const engine::SunBins* bins = nullptr;
+};
+
+/// The same study as compute_annual_study_with_sun(sky_coefficients, sky,
+/// direct_sun_table(...), indirect_sun_table(...), settings), value for value, with the sun
+/// added in place: it holds one steps x sensors table, not three (docs/photon-tracing.md
+/// "Scale"). Parallel over sensors. Throws std::invalid_argument on shape mismatches.
+AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients, const AnnualSky& sky,
+                                          const GridSunCoefficients& sun, const AnnualStudySettings& settings);
 
 /// sun_bins.csv (docs/outputs.md): `bin,patch,altitude_deg,azimuth_deg,x,y,z,hours`: the
 /// column of coefficients_sun.mtx, the Reinhart patch, the centre direction, and the number

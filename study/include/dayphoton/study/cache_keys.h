@@ -33,6 +33,7 @@
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/solar_position.h"
+#include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/content_hash.h"
 
 namespace dayphoton::study {
@@ -63,9 +64,9 @@ std::string sun_photon_key(const ContentHash& scene, const ContentHash& planes, 
 std::string sun_coefficients_key(const std::vector<std::string>& sun_photon_keys,
                                  double minimum_bound_fraction, const SensorGrid& grid,
                                  const engine::CoefficientOptions& options);
-/// Exact direct sun of a grid for these suns (steps and directions).
+/// Exact direct sun of a grid for these suns (steps and directions), RGB or luminance values.
 std::string direct_sun_key(const ContentHash& scene, const SensorGrid& grid,
                            const std::vector<std::size_t>& steps, const std::vector<Vec3>& directions,
-                           int samples, std::uint64_t seed);
+                           int samples, std::uint64_t seed, DirectSunValues values = DirectSunValues::Rgb);
 
 }  // namespace dayphoton::study

@@ -54,7 +54,8 @@ struct DirectSunExport {
   std::size_t sun_count() const { return steps.size(); }
 };
 
-/// e[s][k] of `direct` (sensors x suns x RGB, direct_sun_coefficients for `suns`) summed as
+/// e[s][k] of `direct` (sensors x suns x RGB, or x 1 luminance component: direct_sun_coefficients
+/// for `suns`) summed as
 /// direct_sun_table sums it, merged over several sets of suns and ordered by step. Every
 /// set's matrix must have the same rows; a step given twice is std::invalid_argument.
 struct DirectSunPart {

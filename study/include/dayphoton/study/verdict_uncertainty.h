@@ -20,13 +20,17 @@ namespace dayphoton::study {
 /// The sun bins' part of the variance (sun: bins): the indirect sun interpolated from the
 /// bins, each bin's variance weighted by its stencil weight squared.
 struct SunBinVariance {
-  const std::vector<double>* variance = nullptr;  ///< sensors x bins, luminance (estimate_variance.h)
+  const std::vector<float>* variance = nullptr;  ///< sensors x bins, luminance (estimate_variance.h)
   const engine::SunBins* bins = nullptr;
   const std::vector<sky::SunRecord>* suns = nullptr;
 };
 
 /// Multiplier of the standard error in the verdict test.
 constexpr double VerdictSigmas = 2.0;
+
+/// The hourly variances are computed for a block of sensors at a time, at most this many
+/// values (16 MiB of doubles) whatever the grid's size: no sensors x hours table is held.
+constexpr std::size_t VerdictSensorBlockValues = std::size_t(1) << 21;
 
 struct VerdictUncertainty {
   std::size_t da_verdicts_uncertain = 0;  ///< sensors whose DA verdict could flip
@@ -35,9 +39,11 @@ struct VerdictUncertainty {
 
 /// `study` as computed (its illuminance and sensors), `sky` its sky, `sky_variance` the sky
 /// coefficients' variance (sensors x bins, DaylightCoefficients::variance), `sun` the sun
-/// bins' part or null. Throws std::invalid_argument on a size mismatch.
+/// bins' part or null. Throws std::invalid_argument on a size mismatch. `block_values`: the
+/// hourly variances held at once (the result does not depend on it).
 VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky& sky,
                                        const std::vector<double>& sky_variance, const SunBinVariance* sun,
-                                       const AnnualStudySettings& settings);
+                                       const AnnualStudySettings& settings,
+                                       std::size_t block_values = VerdictSensorBlockValues);
 
 }  // namespace dayphoton::study
