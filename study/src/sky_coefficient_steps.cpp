@@ -5,6 +5,7 @@
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
 #include "photon_pass_notes.h"
+#include "photon_step_cost.h"
 
 namespace dayphoton::study {
 
@@ -65,6 +66,11 @@ void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, con
             return engine::trace_source_photons(cs.scene, cs.materials, emitter, cs.layout.planes, tracing, p);
           },
           encode_photons, decode_photons, [](const engine::TracedPhotons&) { return true; }));
+    // Costs for an MPI run: a short pilot of each source (photon_step_cost.h).
+    for (std::size_t p = 0; p < sources.size(); ++p)
+      steps[p].cost = [&cs, &emitter, &tracing, p] {
+        return photon_step_cost(cs.scene, cs.materials, emitter, cs.layout.planes, tracing, p);
+      };
     const std::vector<char> traced =
         ctx.executor.run_batch(steps, [&](std::size_t, bool) { progress.advance(1); });
     progress.end();

@@ -52,6 +52,13 @@ struct Step {
   /// into the typed result and checks that they fit the step (dimensions). Returns false or
   /// throws when they do not: a cached artefact is then computed again.
   std::function<bool(const std::vector<std::string>&)> take;
+  /// Optional: an estimate of compute()'s cost, for sharing a batch out over the ranks of an
+  /// MPI run (distributed_executor.h): any unit, the same for the steps of a batch; finite and
+  /// >= 0; a small fraction of compute's own cost (the estimates of a batch are shared out
+  /// with equal costs before the batch). Used only when every missing step of the batch has
+  /// one; empty: equal costs. Pure like compute; it decides where a step runs, never what it
+  /// yields.
+  std::function<double()> cost;
 };
 
 /// A step of one artefact of type T: `compute` returns the value, which is kept in `slot`
