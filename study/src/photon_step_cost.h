@@ -6,10 +6,10 @@
 // a patch near the zenith, against 0.012 s on average), mostly through its yield, the attempts
 // a stored photon takes, which only tracing tells. So the estimate is the rays cast by a pilot
 // pass of the same source with a PilotPhotonDivisor-th of its photon targets (same tracing,
-// same seed). Measured on the office (bench/mpi_strong_scaling): the pilots cost 0.08 s of
-// CPU against 1.7 s for the sources, and the LPT balance of the sky batch (sum over the
-// largest rank) rises from 1.95 to 1.99 of 2 ranks and from 2.6 to 2.9 of 3. The photon
-// targets alone (the ground 16, a sky bin 1) balance worse than equal costs there.
+// same seed). Measured on the office (bench/mpi_strong_scaling): the pilots cost 0.09 s of
+// CPU against 1.6 s for the sources, and the balance of the photon batches (the ranks' CPU
+// over the largest rank's) rises from 1.95 to 1.98 of 2 ranks and from 2.56 to 2.93 of 3.
+// The photon targets alone (the ground 16, a sky bin 1) balance worse than equal costs.
 #pragma once
 
 #include <cstddef>
