@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <iostream>
 #include <ostream>
 #include <string>
@@ -15,6 +16,7 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
+#include "rank_scratch.h"
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/report/report_html.h"
@@ -88,28 +90,20 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     settings.write_views = report::write_views;  // images and report.html from results.json's model
     // Under mpirun every rank runs the study (distributed_executor.h); ranks other than 0
     // write into a scratch folder of their own, removed afterwards, and draw no views.
-    std::string scratch;
+    // (rank_scratch.h: a killed rank's folder is removed by the next distributed run.)
+    std::optional<RankScratch> scratch;
     if (options.ranks && options.ranks->size() > 1) {
       dist::Communicator& ranks = *options.ranks;
       settings.make_executor = [&ranks](const study::ArtifactStore& store, bool force) {
         return study::make_distributed_executor(ranks, store, force);
       };
       if (ranks.rank() != dist::RootRank) {
-        scratch = (std::filesystem::temp_directory_path() /
-                   ("dayphoton-rank-" + std::to_string(ranks.rank()) + "-" + std::to_string(getpid())))
-                      .string();
-        settings.output_dir = scratch + "/results";
-        settings.cache_dir = scratch + "/cache";
+        scratch.emplace(std::filesystem::temp_directory_path().string(), ranks.rank());
+        settings.output_dir = scratch->folder() + "/results";
+        settings.cache_dir = scratch->folder() + "/cache";
         settings.write_views = nullptr;
       }
     }
-    struct RemoveScratch {
-      const std::string& folder;
-      ~RemoveScratch() {
-        std::error_code ignored;
-        if (!folder.empty()) std::filesystem::remove_all(folder, ignored);
-      }
-    } remove_scratch{scratch};
     const study::RunReport report = study::run_study(proj, settings, progress);
     progress.print_summary();
     if (!options.quiet) {

@@ -84,9 +84,8 @@ class DistributedExecutor final : public StepExecutor {
     if (misses.empty()) return computed;
     dist::JobSet jobs;
     jobs.count = misses.size();
-    // Equal costs: the steps of a batch are of one kind and of similar size (a sky source, a
-    // sun bin); measured costs would balance better (docs/cluster.md).
-    jobs.cost_of = [](std::size_t) { return 1.0; };
+    const std::vector<double> costs = estimated_costs(steps, misses);
+    jobs.cost_of = [&costs](std::size_t j) { return costs[j]; };
     jobs.compute = [&](std::size_t j) {
       ByteBuffer out;
       put_strings(out, steps[misses[j]].compute());
@@ -131,6 +130,44 @@ class DistributedExecutor final : public StepExecutor {
     std::vector<std::size_t> rest;
     std::set_difference(misses.begin(), misses.end(), split.begin(), split.end(), std::back_inserter(rest));
     return rest;
+  }
+
+  /// Rank 0: the misses' costs for the assignment (the other ranks: ones, unused). Equal
+  /// costs unless every miss has a Step::cost estimate; the estimates (a pilot pass for a
+  /// sky source) are themselves shared out over the ranks with equal costs and reach rank 0
+  /// in step order. An estimate that fails counts 0: the step's own compute then reports the
+  /// error. Costs decide where a step runs, never its result.
+  std::vector<double> estimated_costs(const std::vector<Step>& steps, const std::vector<std::size_t>& misses) {
+    std::vector<double> costs(misses.size(), 1.0);
+    if (m_comm.size() == 1 || misses.size() < 2) return costs;
+    for (std::size_t i : misses)
+      if (!steps[i].cost) return costs;
+    dist::JobSet estimates;
+    estimates.count = misses.size();
+    estimates.cost_of = [](std::size_t) { return 1.0; };
+    estimates.compute = [&](std::size_t j) {
+      double cost = 0.0;
+      try {
+        cost = steps[misses[j]].cost();
+      } catch (const std::exception&) {
+        cost = 0.0;
+      }
+      if (!(cost >= 0.0 && cost <= 1e300)) cost = 0.0;  // NaN or infinite: no estimate
+      ByteBuffer out(sizeof cost);
+      std::memcpy(out.data(), &cost, sizeof cost);
+      return out;
+    };
+    estimates.deliver = [&](std::size_t j, ByteBuffer bytes) {
+      if (bytes.size() != sizeof(double)) throw std::runtime_error("distributed executor: malformed cost estimate");
+      std::memcpy(&costs[j], bytes.data(), sizeof(double));
+    };
+    estimates.name_of = [&](std::size_t j) {
+      return std::string("cost of ") + step_kind_name(steps[misses[j]].kind) + " " +
+             std::to_string(steps[misses[j]].index);
+    };
+    estimates.delivery = dist::Delivery::root_only;
+    dist::distribute_jobs(m_comm, estimates);
+    return costs;
   }
 
   /// Rank 0: each step's cached artefacts (all of them, or none), broadcast to every rank.

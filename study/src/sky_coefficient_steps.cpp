@@ -6,6 +6,7 @@
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/photon_range_step.h"
 #include "photon_pass_notes.h"
+#include "photon_step_cost.h"
 
 namespace dayphoton::study {
 
@@ -68,6 +69,11 @@ void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, con
           encode_photons, decode_photons, [](const engine::TracedPhotons&) { return true; }));
     for (std::size_t p = 0; p < sources.size(); ++p)
       steps[p].ranges = sky_source_ranges(cs.scene, cs.materials, emitter, cs.layout.planes, tracing, p);
+    // Costs for an MPI run: a short pilot of each source (photon_step_cost.h).
+    for (std::size_t p = 0; p < sources.size(); ++p)
+      steps[p].cost = [&cs, &emitter, &tracing, p] {
+        return photon_step_cost(cs.scene, cs.materials, emitter, cs.layout.planes, tracing, p);
+      };
     const std::vector<char> traced =
         ctx.executor.run_batch(steps, [&](std::size_t, bool) { progress.advance(1); });
     progress.end();

@@ -6,10 +6,11 @@
 // alone reads and writes the cache: lookup() and run_batch() broadcast its verdict and the
 // cached bytes, which every rank takes, so every rank follows the same branch and holds the
 // same typed values. The misses of a batch are the jobs of one dist::distribute_jobs call
-// (longest first over the ranks, TBB within a rank); every result is delivered to every rank
-// in step order (each takes it, as if from the cache) and rank 0 stores it. A step's result
-// is a pure function of its inputs and travels as the cache's own bytes, so the outputs are
-// those of a one-process run whose artefacts came from the cache: byte-identical to it.
+// (longest first over the ranks by the steps' cost estimates, Step::cost, themselves shared
+// out first; TBB within a rank); every result is delivered to every rank in step order (each
+// takes it, as if from the cache) and rank 0 stores it. A step's result is a pure function
+// of its inputs and travels as the cache's own bytes, so the outputs are those of a
+// one-process run whose artefacts came from the cache: byte-identical to it.
 //
 // Big photon sources (a step whose predicted cost exceeds 1/SplitSourceFactor of a rank's
 // share of its batch, plan_policy.h) are not one job: their passes are traced in attempt

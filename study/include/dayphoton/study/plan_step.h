@@ -59,6 +59,13 @@ struct Step {
   /// may use instead of compute() to share one source over several processes; null for
   /// every other step. Gives the bytes compute() gives.
   std::shared_ptr<const PhotonRanges> ranges;
+  /// Optional: an estimate of compute()'s cost, for sharing a batch out over the ranks of an
+  /// MPI run (distributed_executor.h): any unit, the same for the steps of a batch; finite and
+  /// >= 0; a small fraction of compute's own cost (the estimates of a batch are shared out
+  /// with equal costs before the batch). Used only when every missing step of the batch has
+  /// one; empty: equal costs. Pure like compute; it decides where a step runs, never what it
+  /// yields.
+  std::function<double()> cost;
 };
 
 /// A step of one artefact of type T: `compute` returns the value, which is kept in `slot`
