@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/estimate_variance.h"
@@ -163,7 +164,7 @@ GridPhotons GridPhotons::for_plane(const ReceiverPlane& plane, std::vector<Photo
   g.m_by_source = split_by_source(plane_photons, source_count);
   g.m_typical_count = median_count(g.m_by_source);
   g.count_classes();
-  g.m_all = PhotonMap(std::move(plane_photons));
+  g.m_all->photons = std::move(plane_photons);
   return g;
 }
 
@@ -177,7 +178,7 @@ GridPhotons GridPhotons::for_surfaces(std::vector<Photon> surface_photons,
   g.m_by_source = split_by_source(surface_photons, source_count);
   g.m_typical_count = median_count(g.m_by_source);
   g.count_classes();
-  g.m_all = PhotonMap(std::move(surface_photons));
+  g.m_all->photons = std::move(surface_photons);
   return g;
 }
 
@@ -188,9 +189,22 @@ GridPhotons GridPhotons::for_gather(std::vector<Photon> surface_photons, std::si
   // Groups of consecutive photons (tracing order) for the variance, before the build reorders.
   g.m_groups = PhotonGroups::consecutive(surface_photons, source_count);
   std::vector<std::uint32_t> tree_to_input;
-  g.m_all = PhotonMap(std::move(surface_photons), tree_to_input);
+  std::call_once(g.m_all->built,
+                 [&] { g.m_all->map = PhotonMap(std::move(surface_photons), tree_to_input); });
   g.m_groups.to_tree_order(tree_to_input);
   return g;
+}
+
+const PhotonMap& GridPhotons::all() const {
+  // Isolated: the build's own parallel tasks must not pick up an outer task (an estimate
+  // at another sensor) that would wait for this very call_once.
+  std::call_once(m_all->built, [this] {
+    tbb::this_task_arena::isolate([this] {
+      m_all->map = PhotonMap(std::move(m_all->photons));
+      m_all->photons = {};
+    });
+  });
+  return m_all->map;
 }
 
 namespace {

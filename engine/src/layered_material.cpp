@@ -101,6 +101,12 @@ class LayeredMaterial final : public MaterialModel {
       case DiffuseReflect:
         outgoing = sample_cosine(n, u1, u2);
         type = ScatterType::DiffuseReflection;
+        if (w[SpecularReflect] == 0 && w[DiffuseTransmit] == 0 && w[SpecularTransmit] == 0) {
+          // A pure diffuse reflector (the Lambertian walls of most rooms): the mixture's pdf is
+          // the cosine lobe's, so eval |cos| / pdf below is exactly the reflectance.
+          if (!(dot(outgoing, n) > 0)) return std::nullopt;
+          return ScatterSample{outgoing, m_factor[DiffuseReflect], type, false};
+        }
         break;
       case DiffuseTransmit:
         outgoing = sample_cosine(-n, u1, u2);

@@ -66,7 +66,14 @@ class BlockSink final : public PhotonSink {
  public:
   BlockSink(BlockResult& out, const TracingOptions& options, const StorageProbabilities& d)
       : m_out(out), m_options(options), m_d(d) {}
-  void set_rng(Rng* storage) { m_storage = storage; }
+  /// The attempt whose photons follow: their storage stream, made on first use (only the
+  /// main pass's storage probabilities below 1 draw from it).
+  void set_attempt(std::uint64_t seed, std::uint32_t source, std::uint64_t index) {
+    m_seed = seed;
+    m_source = source;
+    m_index = index;
+    m_storage.reset();
+  }
 
   void record(int plane, const Photon& photon) override {
     if (m_options.region_of_interest && !inside(*m_options.region_of_interest, photon.position_m()))
@@ -76,7 +83,10 @@ class BlockSink final : public PhotonSink {
                      : photon.path_class == PathClass::Caustic ? m_d.caustic
                                                                : m_d.direct;
     // Stored or not; the flux is set per class after the passes (stored_photon_flux).
-    if (d < 1 && !(m_storage->uniform() < d)) return;
+    if (d < 1) {
+      if (!m_storage) m_storage.emplace(m_seed, m_source, m_index, RandomStream::Storage);
+      if (!(m_storage->uniform() < d)) return;
+    }
     (photon.path_class == PathClass::Global    ? m_out.global
      : photon.path_class == PathClass::Caustic ? m_out.caustic
                                                : m_out.direct)++;
@@ -91,7 +101,9 @@ class BlockSink final : public PhotonSink {
   BlockResult& m_out;
   const TracingOptions& m_options;
   StorageProbabilities m_d;
-  Rng* m_storage = nullptr;
+  std::optional<Rng> m_storage;
+  std::uint64_t m_seed = 0, m_index = 0;
+  std::uint32_t m_source = 0;
 };
 
 // The first scattering event of a path, at `position` on a surface of `material` (geometric
@@ -123,6 +135,21 @@ std::optional<PathStart> pass_port(const Scene& scene, const std::vector<Materia
   const Port& port = scene.ports()[static_cast<std::size_t>(entry.port)];
   const Material& material =
       materials[static_cast<std::size_t>(scene.description().surfaces[port.surface].material)];
+  const MaterialType type = material.type();
+  if (type == MaterialType::Glass || type == MaterialType::Glazing || type == MaterialType::Opening) {
+    // These transmit only straight through; what they reflect goes back out of the room and is
+    // not followed. So the photon passes with the transmittance as its weight instead of a
+    // sampled event and roulette: the same expected flux, and no entering photon lost at the
+    // pane (docs/photon-tracing.md, "The first scattering event").
+    const Vec3 t = material.straight_transmittance(entry.direction, port.normal);
+    if (!(channel_mean(t) > 0)) return std::nullopt;
+    PathStart start;
+    start.flux = t;
+    start.direction = entry.direction;
+    start.origin = scene.offset_ray_origin(entry.position, port.normal, entry.direction);
+    start.source = source;
+    return start;
+  }
   std::optional<PathStart> start =
       first_event(scene, material, entry.position, port.normal, entry.direction, source, scattering, roulette_rng);
   if (start && dot(start->direction, port.normal) <= 0) return std::nullopt;  // back out of the room
@@ -195,7 +222,14 @@ bool trace_path(const Scene& scene, const std::vector<Material>& materials,
     const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
     const std::optional<ScatterSample> s = material.sample(ray.direction, hit->normal, u0, u1, u2);
     if (!s) return was_indoors;
-    if (!roulette(flux, s->weight, roulette_rng)) return was_indoors;
+    if (!scattered && s->type != ScatterType::StraightTransmission) {
+      // The path's first scattering event in the room: its weight is carried instead of
+      // played by roulette (docs/photon-tracing.md, "The first scattering event").
+      flux = mul(flux, s->weight);
+      if (!(channel_mean(flux) > 0)) return was_indoors;
+    } else if (!roulette(flux, s->weight, roulette_rng)) {
+      return was_indoors;
+    }
     if (hit->port >= 0) {
       // Passing a port (not reflected by it): indoors along its normal, outdoors against it.
       const Vec3& n = scene.ports()[static_cast<std::size_t>(hit->port)].normal;
@@ -245,8 +279,7 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
       ++out.entered;
       Rng scattering(options.seed, source, i, RandomStream::Scattering);
       Rng roulette_rng(options.seed, source, i, RandomStream::Roulette);
-      Rng storage(options.seed, source, i, RandomStream::Storage);
-      sink.set_rng(&storage);
+      sink.set_attempt(options.seed, source, i);
       const std::optional<PathStart> start =
           entry->port >= 0
               ? pass_port(scene, materials, *entry, source, scattering, roulette_rng)
@@ -262,6 +295,17 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
     if (!b.complete)
       throw std::runtime_error("photon tracing was cancelled before every block of source " +
                                std::to_string(source) + " ran");
+  // One allocation per vector (growing by insertion reallocates and copies every photon
+  // several times, and each fresh page costs a page fault).
+  std::size_t surface_total = result.surface.size();
+  std::vector<std::size_t> plane_total(planes.size());
+  for (std::size_t g = 0; g < planes.size(); ++g) plane_total[g] = result.planes[g].size();
+  for (const BlockResult& b : block_results) {
+    surface_total += b.surface.size();
+    for (std::size_t g = 0; g < planes.size(); ++g) plane_total[g] += b.planes[g].size();
+  }
+  result.surface.reserve(surface_total);
+  for (std::size_t g = 0; g < planes.size(); ++g) result.planes[g].reserve(plane_total[g]);
   for (BlockResult& b : block_results) {
     result.surface.insert(result.surface.end(), b.surface.begin(), b.surface.end());
     for (std::size_t g = 0; g < planes.size(); ++g)

@@ -113,6 +113,17 @@ std::vector<double> patch_cell_cos_bounds(const sky::PatchBasis& basis, int bin,
   return bounds;
 }
 
+/// Bound c_pk for inward normal n of a disc source drawn as one cell: the exact largest
+/// -d . n over the cone of half-angle a around the centre c, cos(max(0, angle(c, -n) - a))
+/// (the directions of the cone nearest -n lie on the great circle through c and -n), plus
+/// CosineRounding; 0 when that is at most CosineRounding (the disc is behind the plane).
+std::vector<double> disc_cos_bound(const DistantSource& src, const Vec3& n) {
+  const Vec3 m = n * -1.0;
+  const double apart = std::max(0.0, angle_between(src.direction, m) - src.half_angle_rad);
+  const double c = std::cos(apart);
+  return {c > CosineRounding ? std::min(1.0, c + CosineRounding) : 0.0};
+}
+
 /// Cells per axis of source `p` (port_emission.h, "Cells"): 1 for a small source, else as
 /// many as the entry budget allows for `sites` sites, at most MaxCells.
 int cells_for(const SourceSet& sources, std::size_t p, std::size_t sites) {
@@ -150,8 +161,10 @@ PortEmitter::PortEmitter(const Scene& scene, const SourceSet& sources)
     const DistantSource& src = sources[p];
     // Sky bins: the exact bound per cell; sun discs: the bound from the direction grid.
     const bool patch = src.kind == SourceKind::SkyBin && sources.has_basis();
-    const SourceGrid grid = patch ? SourceGrid{} : source_grid(sources, p);
     const int cells = cells_for(sources, p, m_sites.size());
+    // A sun disc drawn whole: the exact bound of its cone (disc_cos_bound), no grid.
+    const bool disc = src.kind == SourceKind::SunDisc && cells == 1;
+    const SourceGrid grid = patch || disc ? SourceGrid{} : source_grid(sources, p);
     const std::size_t per_site = static_cast<std::size_t>(cells * cells);
     m_cells[p] = cells;
     m_cumulative[p].assign(m_sites.size() * per_site, 0.0);
@@ -163,7 +176,9 @@ PortEmitter::PortEmitter(const Scene& scene, const SourceSet& sources)
       const Vec3& n = m_sites[k].inward;
       const auto [it, fresh] = by_normal.try_emplace({n.x, n.y, n.z});
       if (fresh)
-        it->second = patch ? patch_cell_cos_bounds(sources.basis(), src.bin, n, cells) : cell_cos_bounds(grid, n, cells);
+        it->second = patch  ? patch_cell_cos_bounds(sources.basis(), src.bin, n, cells)
+                     : disc ? disc_cos_bound(src, n)
+                            : cell_cos_bounds(grid, n, cells);
       // Each cell covers Omega_p / cells^2: the source maps (u1, u2) area-preservingly.
       const double cell_flux = (*m_sites[k].set)[m_sites[k].index].area_m2 * src.solid_angle_sr / double(per_site);
       for (std::size_t c = 0; c < per_site; ++c) {

@@ -59,6 +59,7 @@ PatchBasis::PatchBasis(int mf) : m_mf(mf) {
   for (int bin = 0; bin < m_bin_count; ++bin) {
     const PatchBounds b = bounds(bin);
     m_sampling.push_back({b, std::sin(b.altitude_min_rad), std::sin(b.altitude_max_rad)});
+    m_centres.push_back(compute_centre(bin));
   }
 }
 
@@ -129,6 +130,10 @@ PatchBounds PatchBasis::bounds(int bin) const {
 
 Vec3 PatchBasis::centre(int bin) const {
   check_bin(bin);
+  return m_centres[static_cast<std::size_t>(bin)];
+}
+
+Vec3 PatchBasis::compute_centre(int bin) const {
   if (bin == 0) return Vec3{0.0, 0.0, -1.0};
   const int r = m_bin_row[static_cast<std::size_t>(bin)];
   const PatchRow& row = m_rows[static_cast<std::size_t>(r)];

@@ -479,9 +479,10 @@ double stored_flux(const TracedPhotons& t) {
 std::uint64_t attempts_of(const SourceTally& t) { return t.prepass_attempts + t.mainpass_attempts; }
 
 TEST(PhotonCap, BoundsTheAttemptsOfALowYieldSource) {
-  // A 5 cm hole in front of a 2 x 1.2 m window: ~0.1 % of the port is lit, so the source
-  // stores ~1 photon per 1000 attempts and, uncapped, needs ~target / yield attempts.
-  const SceneDescription d = screened_window_room(0.05);
+  // A 3 cm hole in front of a 2 x 1.2 m window: ~0.04 % of the port is lit, so the source
+  // stores ~1 photon per 900 attempts (the first scattering event in the room keeps its
+  // photon, weighted) and, uncapped, needs ~target / yield attempts.
+  const SceneDescription d = screened_window_room(0.03);
   const Scene scene = Scene::build(d);
   const std::vector<Material> materials = models_of(d);
   const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8)};
@@ -558,9 +559,12 @@ TEST(PhotonCap, CappedSourceFluxIsUnbiased) {
 }
 
 TEST(PhotonCap, UncappedSourcesAreBitIdenticalToNoCap) {
-  // A cap of 2 attempts per target photon in the window room: sources of low yield (low
-  // sky bins, the ground through glazing) are capped, the others must not change at all.
-  const SceneDescription d = window_room(MaterialType::Glass);
+  // A cap of 2 attempts per target photon in the window room behind a screen with a 0.5 m
+  // hole: the sky bins that see the port only through the hole store few photons per attempt
+  // and are capped, the others must not change at all. (The bare window room capped 49 of 146
+  // bins at 2 before the pane and the first event were weighted, docs/photon-tracing.md; now
+  // every bin there stores about a photon per attempt or more and none is capped, even at 1.)
+  const SceneDescription d = screened_window_room(0.5);
   const Scene scene = Scene::build(d);
   const std::vector<Material> materials = models_of(d);
   const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8)};

@@ -50,6 +50,8 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "dayphoton/core/radiance_matrix.h"
@@ -135,7 +137,10 @@ class GridPhotons {
   bool planar() const { return m_plane.has_value(); }
   bool gather() const { return m_gather; }
   const ReceiverPlane* plane() const { return m_plane ? &*m_plane : nullptr; }
-  const PhotonMap& all() const { return m_all; }
+  /// The photons of every source in one map (the contribution estimate, the final gather).
+  /// Built on first use for plane and surface photons: the default per-source estimate
+  /// never needs it (thread-safe).
+  const PhotonMap& all() const;
   /// Gather photons: which of all() come from the same paths (final_gather.h, "Variance").
   const PhotonGroups& groups() const { return m_groups; }
   const PhotonMap& of_source(std::size_t p) const { return m_by_source[p]; }
@@ -168,7 +173,13 @@ class GridPhotons {
   std::optional<ReceiverPlane> m_plane;
   bool m_gather = false;
   std::size_t m_source_count = 0;
-  PhotonMap m_all;
+  /// all(): the photons until first use, then their map.
+  struct AllPhotons {
+    std::once_flag built;
+    std::vector<Photon> photons;
+    PhotonMap map;
+  };
+  std::shared_ptr<AllPhotons> m_all = std::make_shared<AllPhotons>();
   PhotonGroups m_groups;  ///< gather photons only
   std::vector<PhotonMap> m_by_source;
   std::size_t m_typical_count = 0;

@@ -5,7 +5,13 @@
 // Transport is analogue (seeds/000 section 3.1.1.2): the material's sample() picks the
 // event and direction, the RGB flux is multiplied by the sample weight and Russian roulette
 // with the FLUX-WEIGHTED survival probability P = mean(flux * weight) / mean(flux) keeps the
-// photon flux constant without biasing coloured light (digest section 2.1.4).
+// photon flux constant without biasing coloured light (digest section 2.1.4). One exception:
+// the first scattering event of a path (its first event other than a straight
+// transmission, usually its first hit in the room) multiplies the flux by the weight and
+// plays no roulette, so a photon that reached a dark floor is not lost with all the rays it cost; its
+// photons then carry that event's reflectance (docs/photon-tracing.md, "The first
+// scattering event": on the office a third of the rays per stored photon, about the same
+// noise per photon).
 //
 // Path classes and storage (digest section 2.1.5):
 //   - a photon that has not scattered since the port (StraightTransmission through glazing

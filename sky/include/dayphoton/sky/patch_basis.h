@@ -92,6 +92,9 @@ class PatchBasis {
     double sin_altitude_min = 0, sin_altitude_max = 0;
   };
   std::vector<SamplingBounds> m_sampling;
+  /// Per bin: centre(bin), computed once (the sun spread looks at every centre for every sun).
+  std::vector<Vec3> m_centres;
+  Vec3 compute_centre(int bin) const;
 };
 
 }  // namespace dayphoton::sky
