@@ -173,7 +173,8 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
                                        const std::vector<engine::Material>& materials,
                                        const std::vector<SensorPoint>& sensors,
                                        const std::vector<sky::SunRecord>& suns, int samples,
-                                       std::uint64_t seed) {
+                                       std::uint64_t seed, engine::SensorRange rows) {
+  rows = rows.within(sensors.size());
   if (samples < 1) throw std::invalid_argument("direct sun: at least 1 sample per sun is needed");
   int k = static_cast<int>(std::sqrt(double(samples)));
   while (k * k < samples) ++k;
@@ -183,8 +184,8 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
   const double weight = discs.size() ? discs[0].solid_angle_sr / (double(k) * k) : 0.0;
 
   const double pad_m = engine::port_view_pad_m(scene, materials);
-  RadianceMatrix result(sensors.size(), suns.size(), 3);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sensors.size()),
+  RadianceMatrix result(rows.size(), suns.size(), 3);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(rows.begin, rows.end),
                     [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t s = range.begin(); s != range.end(); ++s) {
       const double len = length(sensors[s].normal);
@@ -212,7 +213,7 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
               sum += engine::sky_transmittance(scene, materials, origin, w) * c;
             }
         }
-        for (int c = 0; c < 3; ++c) result.at(s, i, c) = static_cast<float>(sum[c] * weight);
+        for (int c = 0; c < 3; ++c) result.at(s - rows.begin, i, c) = static_cast<float>(sum[c] * weight);
       }
     }
   });
@@ -224,14 +225,16 @@ RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const engine::SourceSet& sources,
                                     const engine::GridPhotons& photons,
                                     const std::vector<SensorPoint>& sensors,
-                                    const engine::CoefficientOptions& options, std::vector<double>* variance) {
+                                    const engine::CoefficientOptions& options, std::vector<double>* variance,
+                                    engine::SensorRange rows) {
+  rows = rows.within(sensors.size());
   engine::DaylightCoefficients c;
-  c.sensors = sensors.size();
+  c.sensors = rows.size();
   c.sources = photons.source_count();
   c.direct.assign(c.sensors * c.sources, Vec3{});
   c.caustic.assign(c.sensors * c.sources, Vec3{});
   c.global.assign(c.sensors * c.sources, Vec3{});
-  engine::photon_coefficients(scene, materials, sources, photons, sensors, options, c);
+  engine::photon_coefficients(scene, materials, sources, photons, sensors, options, c, rows);
   if (variance) *variance = c.photon_variance;
   return c.to_matrix();
 }

@@ -30,6 +30,7 @@
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/engine/sensor_range.h"
 #include "dayphoton/engine/sun_bins.h"
 #include "dayphoton/metrics/illuminance_table.h"
 #include "dayphoton/sky/sky_matrix.h"
@@ -102,25 +103,28 @@ std::vector<sky::SunRecord> suns_from_matrix(const RadianceMatrix& m);
 /// rays (engine::sky_transmittance: straight through the glazing up to the first port,
 /// anything else blocks), the disc sampled as engine::SourceSet does. Sensor s of sun k uses
 /// Rng(seed, step of sun k, s, Direct), so a sun's numbers do not depend on the other suns.
-/// Parallel over sensors, the same for any thread count.
+/// Parallel over sensors, the same for any thread count. `rows`: only those sensors' rows
+/// (engine/sensor_range.h; s is the index in the whole of `sensors`).
 RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
                                        const std::vector<engine::Material>& materials,
                                        const std::vector<SensorPoint>& sensors,
                                        const std::vector<sky::SunRecord>& suns,
-                                       int samples = SunDirectSamples, std::uint64_t seed = 1);
+                                       int samples = SunDirectSamples, std::uint64_t seed = 1,
+                                       engine::SensorRange rows = {});
 
 /// Photon part (caustic + global) of the sun-bin coefficients at `sensors`: sensors x bins x
 /// RGB, W/m^2 per unit disc radiance (what coefficients_sun.mtx holds). `photons` are the
 /// sun bins' photons, source i = bin i = sources[i] (the discs, for a final gather's
 /// specular paths; engine::photon_coefficients). `variance`, if given, receives each entry's
-/// variance (sensors x bins, engine/estimate_variance.h).
+/// variance (sensors x bins, engine/estimate_variance.h). `rows`: only those sensors' rows.
 RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const std::vector<engine::Material>& materials,
                                     const engine::SourceSet& sources,
                                     const engine::GridPhotons& photons,
                                     const std::vector<SensorPoint>& sensors,
                                     const engine::CoefficientOptions& options,
-                                    std::vector<double>* variance = nullptr);
+                                    std::vector<double>* variance = nullptr,
+                                    engine::SensorRange rows = {});
 
 /// Direct-sun illuminance (lux), steps x sensors: 179 w . C_direct[s][k] L_k for each sun k
 /// at its step, 0 at every other step. `direct` from direct_sun_coefficients.
