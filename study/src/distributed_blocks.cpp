@@ -13,9 +13,8 @@ bool uses_sensor_blocks(const dist::Communicator& comm, const Step& step, std::s
   return step.blocks && comm.size() > 1 && block_size > 0 && step.blocks->sensors > block_size;
 }
 
-std::vector<std::string> compute_sensor_blocks(dist::Communicator& comm, const Step& step, std::size_t block_size) {
-  if (!step.blocks) throw std::logic_error("compute_sensor_blocks: the step has no sensor blocks");
-  const SensorBlocks& sb = *step.blocks;
+std::vector<std::vector<std::string>> compute_blocks_to_root(dist::Communicator& comm, const SensorBlocks& sb,
+                                                             const std::string& name, std::size_t block_size) {
   const std::vector<engine::SensorRange> blocks = sensor_blocks(sb.sensors, block_size);
   std::vector<std::vector<std::string>> results(blocks.size());  // rank 0's
   dist::JobSet jobs;
@@ -31,11 +30,19 @@ std::vector<std::string> compute_sensor_blocks(dist::Communicator& comm, const S
     results[b] = get_strings(bytes, at);
   };
   jobs.name_of = [&](std::size_t b) {
-    return std::string(step_kind_name(step.kind)) + " " + std::to_string(step.index) + ", sensors " +
-           std::to_string(blocks[b].begin) + " to " + std::to_string(blocks[b].end - 1);
+    return name + ", sensors " + std::to_string(blocks[b].begin) + " to " + std::to_string(blocks[b].end - 1);
   };
   jobs.delivery = dist::Delivery::root_only;
   dist::distribute_jobs(comm, jobs);
+  if (comm.rank() != dist::RootRank) results.clear();
+  return results;
+}
+
+std::vector<std::string> compute_sensor_blocks(dist::Communicator& comm, const Step& step, std::size_t block_size) {
+  if (!step.blocks) throw std::logic_error("compute_sensor_blocks: the step has no sensor blocks");
+  const SensorBlocks& sb = *step.blocks;
+  std::vector<std::vector<std::string>> results = compute_blocks_to_root(
+      comm, sb, std::string(step_kind_name(step.kind)) + " " + std::to_string(step.index), block_size);
 
   // Rank 0 joins the blocks; every rank takes the joined bytes (a join that fails on rank 0
   // is broadcast as such, so every rank throws alike).

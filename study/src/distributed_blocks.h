@@ -16,6 +16,14 @@ namespace dayphoton::study {
 /// and at least two blocks of `block_size` sensors. (Otherwise one rank computes it whole.)
 bool uses_sensor_blocks(const dist::Communicator& comm, const Step& step, std::size_t block_size);
 
+/// Collective: the blocks of `blocks` (sensor_blocks.h, `block_size` sensors each) as the
+/// jobs of one dist::distribute_jobs (longest first by sensor count, TBB within a rank), their
+/// outputs sent to rank 0. Rank 0 returns them in sensor order, the other ranks an empty
+/// vector. A block that throws fails every rank with dist::DistributedJobError naming it
+/// ("`name`, sensors 16 to 31").
+std::vector<std::vector<std::string>> compute_blocks_to_root(dist::Communicator& comm, const SensorBlocks& blocks,
+                                                             const std::string& name, std::size_t block_size);
+
 /// Collective: the blocks of `step` (sensor_blocks.h) as the jobs of one
 /// dist::distribute_jobs (longest first by sensor count, TBB within a rank), their results
 /// sent to rank 0, which joins them in sensor order (SensorBlocks::join) and broadcasts the

@@ -74,6 +74,13 @@ class DistributedExecutor final : public StepExecutor {
     return computed;
   }
 
+  bool shares_sensor_blocks() const override { return m_comm.size() > 1; }
+  bool writes_results() const override { return m_comm.rank() == dist::RootRank; }
+
+  std::vector<std::vector<std::string>> blocks_to_root(const SensorBlocks& blocks, const std::string& name) override {
+    return compute_blocks_to_root(m_comm, blocks, name, m_block_size);
+  }
+
  private:
   /// A grid step by sensor blocks over the ranks (distributed_blocks.h); every rank takes the
   /// joined artefacts, rank 0 stores them.

@@ -33,6 +33,7 @@
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/study/verdict_uncertainty.h"
 #include "dayphoton/weather/hourly_weather.h"
+#include "dayphoton/study/annual_blocks.h"
 #include "json_text.h"
 #include "operated_case.h"
 #include "points_in_time_case.h"
@@ -257,11 +258,26 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       }
       if (!annual) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
-      const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps);
-      const metrics::IlluminanceTable indirect = indirect_sun_table(sun[g].bin_coefficients, bins, ss.suns, ss.sky.steps);
       const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
-      const AnnualStudy study =
-          compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, direct, indirect, annual_settings);
+      metrics::IlluminanceTable direct;
+      std::optional<AnnualStudy> computed;
+      if (ctx.executor.shares_sensor_blocks()) {
+        // By sensor blocks over the ranks; rank 0 alone gets the study and writes it (annual_blocks.h).
+        const AnnualSunParts parts{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins};
+        computed = annual_study_in_blocks(ctx.executor, prefix + grid.name, coefficient_matrices[g], ss.sky,
+                                          annual_settings, &parts);
+        if (computed && keep) direct = direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps);
+      } else {
+        direct = direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps);
+        const metrics::IlluminanceTable indirect =
+            indirect_sun_table(sun[g].bin_coefficients, bins, ss.suns, ss.sky.steps);
+        computed = compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, direct, indirect, annual_settings);
+      }
+      if (!computed) {  // another rank than 0
+        progress.end();
+        continue;
+      }
+      const AnnualStudy& study = *computed;
       log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       if (keep) keep->grids.push_back({grid.name, grid.points, study.illuminance, direct});
@@ -281,7 +297,16 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
       const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
-      const AnnualStudy study = compute_annual_study(coefficient_matrices[g], sky, annual_settings);
+      // By sensor blocks over the ranks of an MPI run; rank 0 alone gets the study and writes it.
+      const std::optional<AnnualStudy> computed =
+          ctx.executor.shares_sensor_blocks()
+              ? annual_study_in_blocks(ctx.executor, prefix + grid.name, coefficient_matrices[g], sky, annual_settings)
+              : std::optional<AnnualStudy>(compute_annual_study(coefficient_matrices[g], sky, annual_settings));
+      if (!computed) {  // another rank than 0
+        progress.end();
+        continue;
+      }
+      const AnnualStudy& study = *computed;
       log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       const VerdictUncertainty verdicts =

@@ -10,12 +10,18 @@
 //   - the distributed executor on 1 to 4 in-process ranks (tests/dist/in_process_ranks.h):
 //     every rank takes the whole grid's bytes, each block computed once, rank 0 alone stores
 //     them; more ranks than blocks, one sensor and no sensor; a failing block fails every
-//     rank with the grid and its sensors named.
+//     rank with the grid and its sensors named;
+//   - the annual multiply by blocks (annual_blocks.h) on 2 and 3 ranks: rank 0's study is the
+//     one-process study byte for byte (table, per-sensor metrics, ASE hours, grid metrics),
+//     with the sun bins and without; the other ranks get none.
 #include "dayphoton/study/sensor_blocks.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstring>
+#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -27,10 +33,12 @@
 #include "dayphoton/dist/distributed_job_error.h"
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/project/project.h"
+#include "dayphoton/study/annual_blocks.h"
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/simulation_plan.h"
+#include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::study {
 namespace {
@@ -313,6 +321,75 @@ TEST(SensorBlocks, AFailingBlockFailsEveryRankNamingTheGridAndItsSensors) {
       ADD_FAILURE() << "not a DistributedJobError: " << x.what();
     }
   }
+}
+
+/// An annual study of the Oakland weather file for synthetic coefficients (20 sensors), with
+/// the sun bins' tables (`with_sun`) or without, one process against blocks of 8 on ranks.
+void expect_annual_blocks_are_the_whole_study(bool with_sun) {
+  SCOPED_TRACE(with_sun ? "sun bins" : "sky alone");
+  const weather::HourlyWeather epw = weather::read_hourly_weather(std::string(DAYPHOTON_SOURCE_DIR) +
+                                                                  "/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw");
+  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  const SkyAndSuns ss = annual_sky_and_suns(epw, sky::solar_site_of(epw), basis, sun_excluded_sky_options(0.2));
+  std::vector<Vec3> directions;
+  for (const sky::SunRecord& sun : ss.suns) directions.push_back(sun.direction);
+  const engine::SunBins bins = engine::SunBins::for_suns(directions, 1);
+  const std::size_t sensors = 20;
+  RadianceMatrix sky_c(sensors, std::size_t(basis.bin_count()), 3), direct(sensors, ss.suns.size(), 3),
+      bin_c(sensors, bins.size(), 3);
+  auto fill = [](RadianceMatrix& m, double scale) {
+    for (std::size_t i = 0; i < m.data().size(); ++i) m.data()[i] = float(scale * double((i * 7919) % 1000) / 1000.0);
+  };
+  fill(sky_c, 0.02);
+  fill(direct, 2e-3);
+  fill(bin_c, 1e-4);
+  AnnualStudySettings settings;
+  AnnualStudy whole;
+  if (with_sun) {
+    const metrics::IlluminanceTable dir = direct_sun_table(direct, ss.suns, ss.sky.steps);
+    const metrics::IlluminanceTable ind = indirect_sun_table(bin_c, bins, ss.suns, ss.sky.steps);
+    whole = compute_annual_study_with_sun(sky_c, ss.sky, dir, ind, settings);
+  } else {
+    whole = compute_annual_study(sky_c, ss.sky, settings);
+  }
+  const AnnualSunParts parts{&direct, &ss.suns, &bin_c, &bins};
+  for (int ranks : {2, 3}) {
+    std::vector<std::optional<AnnualStudy>> got(static_cast<std::size_t>(ranks));
+    const auto errors = dist::test::run_ranks(ranks, [&](dist::Communicator& comm) {
+      const ArtifactStore store(fresh_dir("annual_blocks_rank" + std::to_string(comm.rank())).string());
+      const auto executor = make_distributed_executor(comm, store, false, 8);
+      got[static_cast<std::size_t>(comm.rank())] =
+          annual_study_in_blocks(*executor, "grid", sky_c, ss.sky, settings, with_sun ? &parts : nullptr);
+    });
+    for (const std::exception_ptr& e : errors) ASSERT_FALSE(e);
+    for (int r = 1; r < ranks; ++r) EXPECT_FALSE(got[static_cast<std::size_t>(r)].has_value());
+    ASSERT_TRUE(got[0].has_value());
+    const AnnualStudy& b = *got[0];
+    EXPECT_EQ(b.illuminance.sensor_count(), sensors);
+    EXPECT_TRUE(std::equal(b.illuminance.steps().begin(), b.illuminance.steps().end(), whole.illuminance.steps().begin(),
+                           whole.illuminance.steps().end(), [](const metrics::TimeStamp& x, const metrics::TimeStamp& y) {
+                             return x.month == y.month && x.day == y.day && x.hour == y.hour;
+                           }));
+    bool same_table = true;
+    for (std::size_t t = 0; t < whole.illuminance.step_count(); ++t)
+      for (std::size_t s = 0; s < sensors; ++s) same_table = same_table && b.illuminance.lux(t, s) == whole.illuminance.lux(t, s);
+    EXPECT_TRUE(same_table);
+    ASSERT_EQ(b.sensors.size(), sensors);
+    EXPECT_EQ(std::memcmp(b.sensors.data(), whole.sensors.data(), sensors * sizeof(metrics::SensorMetrics)), 0);
+    EXPECT_EQ(b.ase_hours, whole.ase_hours);
+    EXPECT_EQ(b.occupied_hours, whole.occupied_hours);
+    EXPECT_EQ(grid_metrics_json(b, settings), grid_metrics_json(whole, settings));
+  }
+  // Not a trivial comparison: light, and with the sun some ASE hours.
+  EXPECT_GT(whole.grid.mean.mean_occupied_lux, 10.0);
+  if (with_sun) {
+    EXPECT_GT(*std::max_element(whole.ase_hours.begin(), whole.ase_hours.end()), 0);
+  }
+}
+
+TEST(SensorBlocks, TheAnnualMultiplyByBlocksIsTheWholeStudyOnRankZero) {
+  expect_annual_blocks_are_the_whole_study(true);
+  expect_annual_blocks_are_the_whole_study(false);
 }
 
 }  // namespace
