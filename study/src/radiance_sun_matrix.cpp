@@ -100,6 +100,7 @@ std::string write_radiance_sun_matrix(const engine::Scene& scene, const std::vec
     return direct_sun_coefficients(scene, materials, grid.points, suns, samples, seed, rows);
   });
   const bool cached = !executor.run(step);
+  if (!executor.writes_results()) return {};  // another rank than 0 of an MPI run: rank 0 writes the file
   RadianceSunMatrix d = radiance_sun_matrix(patches, direct, bins, bin_coefficients);
   const int mf = bins.multiplication_factor();
   d.matrix.header_lines().push_back(

@@ -168,7 +168,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     if (placement.sets[g].dropped)
       gj["dropped_sensors"] = {{"outside_rooms", placement.sets[g].outside},
                                {"inside_solid", placement.sets[g].inside_solid}};
-    if (project.outputs.coefficients) {
+    if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
       c.write_file(join_path(folder, "coefficients_sky.mtx"), matrix_format);
       ctx.outputs.record(join_path(folder, "coefficients_sky.mtx"));
     }
@@ -232,7 +232,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     const std::vector<GridSun> sun = run_sun_bins(project, prefix, cs, ss, bins, ctx, project.outputs.coefficients);
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
-      if (project.outputs.coefficients) {
+      if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
         RadianceMatrix c = sun[g].bin_coefficients;
         c.header_lines().push_back("dayphoton sun-bin coefficients: caustic + global irradiance per unit "
                                    "disc radiance; columns = rows of sun_bins.csv");
@@ -247,14 +247,20 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
         exported.weather = project.weather.path;
         write_direct_sun_file(exported, join_path(folders[g], DirectSunFileName));
         ctx.outputs.record(join_path(folders[g], DirectSunFileName));
-        // The same sun on RADIANCE's patch basis, for gendaymtx -d (radiance_sun_matrix.h).
+      }
+      if (project.outputs.coefficients) {
+        // The same sun on RADIANCE's patch basis, for gendaymtx -d (radiance_sun_matrix.h):
+        // its direct sun is a step of every rank, the file rank 0's.
         std::vector<sky::SunRecord> daytime = ss.suns;
         daytime.insert(daytime.end(), sun[g].other_suns.begin(), sun[g].other_suns.end());
         const std::string d_path = join_path(folders[g], radiance_sun_matrix_name(bins.multiplication_factor()));
-        log.line(prefix + write_radiance_sun_matrix(scene, materials, grid, cs.scene_hash, bins,
-                                                    sun[g].bin_coefficients, daytime, plan.sun_direct_samples,
-                                                    sim.seed, ctx.executor, d_path, matrix_format));
-        ctx.outputs.record(d_path);
+        const std::string line = write_radiance_sun_matrix(scene, materials, grid, cs.scene_hash, bins,
+                                                           sun[g].bin_coefficients, daytime, plan.sun_direct_samples,
+                                                           sim.seed, ctx.executor, d_path, matrix_format);
+        if (ctx.executor.writes_results()) {
+          log.line(prefix + line);
+          ctx.outputs.record(d_path);
+        }
       }
       if (!annual) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
