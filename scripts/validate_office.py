@@ -124,7 +124,8 @@ def main():
     # the sky matrix rebuilt from the EPW, against RADIANCE's dctimestep result. (The run's own
     # metrics.csv uses the default exact sun: docs/sun.md.)
     compat_out = os.path.join(work, "annual_compat")
-    run([args.dayphoton, "annual", "--coefficients", grid, "--weather", EPW, "--output", compat_out, "--quiet"])
+    run([args.dayphoton, "annual", "--coefficients", grid, "--weather", EPW, "--sun", "spread", "--output", compat_out,
+         "--quiet"])
     ref_m = read_csv(os.path.join(REF, "office_annual_metrics_classic.csv"))
     ours_m = read_csv(os.path.join(compat_out, "metrics.csv"))
     def col(rows_, key):
@@ -185,7 +186,8 @@ def main():
         shutil.copy(os.path.join(out, "summary.json"), os.path.join(work, "backward"))
         shutil.copy(args.backward, os.path.join(bw_grid, "coefficients_sky.mtx"))
         bw_out = os.path.join(work, "annual_backward")
-        run([args.dayphoton, "annual", "--coefficients", bw_grid, "--weather", EPW, "--output", bw_out, "--quiet"])
+        run([args.dayphoton, "annual", "--coefficients", bw_grid, "--weather", EPW, "--sun", "spread", "--output", bw_out,
+             "--quiet"])
         bw_m = read_csv(os.path.join(bw_out, "metrics.csv"))
         _, _, _, bc = read_matrix(args.backward)
         bw_df = [179.0 * sum(W[k] * bc[(s * cols + p) * 3 + k] * sv[p * 3 + k] for p in range(cols) for k in range(3))

@@ -304,10 +304,18 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
 
 void estimate_photon_coefficients(const GridPhotons& photons,
                                   const std::vector<SensorPoint>& sensors,
-                                  const CoefficientOptions& options, DaylightCoefficients& out) {
+                                  const CoefficientOptions& options, DaylightCoefficients& out,
+                                  SensorRange rows) {
   if (photons.gather())
     throw std::invalid_argument("photon coefficients: gather photons need the scene (photon_coefficients)");
+  rows = rows.within(sensors.size());
   const std::size_t n_src = out.sources;
+  // Row r of `out` is sensor rows.begin + r; random numbers use the sensor's index s in the
+  // whole grid and the whole grid's size (sensor_range.h).
+  const std::size_t grid_pairs = sensors.size() * n_src;
+  if (out.sensors != rows.size() || out.caustic.size() < rows.size() * n_src || out.global.size() < rows.size() * n_src)
+    throw std::invalid_argument("photon coefficients: `out` must hold the " + std::to_string(rows.size()) +
+                                " sensors' rows asked for");
   if (out.photon_variance.size() != out.sensors * n_src) out.photon_variance.assign(out.sensors * n_src, 0.0);
   const ReceiverPlane* plane = photons.plane();
   // The widest disc on a receiver plane (sparse sources, header comment); infinite elsewhere.
@@ -321,8 +329,9 @@ void estimate_photon_coefficients(const GridPhotons& photons,
     }
     return f;
   };
-  tbb::parallel_for(std::size_t(0), sensors.size(), [&](std::size_t s) {
+  tbb::parallel_for(rows.begin, rows.end, [&](std::size_t s) {
     const SensorPoint& sensor = sensors[s];
+    const std::size_t row = s - rows.begin;
     const Vec3 at = plane ? Vec3{sensor.position.x, sensor.position.y, plane->height_m()}
                           : sensor.position;
     if (options.estimator == PhotonEstimator::PerSource) {
@@ -333,14 +342,15 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         // is summed within it. The bandwidth grows with the source's photon count
         // (GridPhotons::bandwidth_of), so a source given more photons (the ground) gets a less
         // noisy estimate, not a smaller kernel.
-        const std::size_t i = s * n_src + p;
+        const std::size_t i = row * n_src + p;  // in `out`
+        const std::size_t stream = s * n_src + p;  // random numbers
         DensityEstimateOptions scaled = options.density;
         scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth);
         scaled.max_radius_m = max_radius_m;
         PhotonFilter both = filter_for(sensor, PathClass::Global);
         both.path_classes = IndirectPathClasses;
         if (options.caustic_bandwidth == 0) {
-          const ClassEstimates e = estimate_classes(map, plane, at, both, scaled, options, i);
+          const ClassEstimates e = estimate_classes(map, plane, at, both, scaled, options, stream);
           out.caustic[i] = e.caustic;
           out.global[i] = e.global;
           out.photon_variance[i] = e.variance;
@@ -351,9 +361,9 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         global_scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth, PathClass::Global);
         caustic_scaled.bandwidth = photons.bandwidth_of(p, options.caustic_bandwidth, PathClass::Caustic);
         const ClassEstimates g =
-            estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global), global_scaled, options, i);
+            estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global), global_scaled, options, stream);
         const ClassEstimates c = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic),
-                                                  caustic_scaled, options, i + out.sensors * n_src);
+                                                  caustic_scaled, options, stream + grid_pairs);
         out.global[i] = g.global;
         out.caustic[i] = c.caustic;
         // Each lookup's photons are of its own class (the filter), so the two are independent.
@@ -376,8 +386,8 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         const double b = options.boundary_correction ? boundary_factor(plane, at, e.radius_m) : 1.0;
         std::vector<Vec3>& part = c == PathClass::Caustic ? out.caustic : out.global;
         for (std::size_t p = 0; p < n_src; ++p) {
-          part[s * n_src + p] = per_source[p] * b;
-          out.photon_variance[s * n_src + p] += per_source_variance[p] * b * b;
+          part[row * n_src + p] = per_source[p] * b;
+          out.photon_variance[row * n_src + p] += per_source_variance[p] * b * b;
         }
       }
     }
@@ -388,27 +398,28 @@ DaylightCoefficients daylight_coefficients(const Scene& scene,
                                            const std::vector<Material>& materials,
                                            const SourceSet& sources, const GridPhotons& photons,
                                            const std::vector<SensorPoint>& sensors,
-                                           const CoefficientOptions& options) {
+                                           const CoefficientOptions& options, SensorRange rows) {
+  rows = rows.within(sensors.size());
   DaylightCoefficients c;
-  c.sensors = sensors.size();
+  c.sensors = rows.size();
   c.sources = sources.size();
   c.caustic.assign(c.sensors * c.sources, Vec3{0, 0, 0});
   c.global.assign(c.sensors * c.sources, Vec3{0, 0, 0});
-  c.direct = direct_coefficients(scene, materials, sources, sensors, options.direct, &c.direct_variance);
-  photon_coefficients(scene, materials, sources, photons, sensors, options, c);
+  c.direct = direct_coefficients(scene, materials, sources, sensors, options.direct, &c.direct_variance, rows);
+  photon_coefficients(scene, materials, sources, photons, sensors, options, c, rows);
   return c;
 }
 
 void photon_coefficients(const Scene& scene, const std::vector<Material>& materials,
                          const SourceSet& sources, const GridPhotons& photons,
                          const std::vector<SensorPoint>& sensors,
-                         const CoefficientOptions& options, DaylightCoefficients& out) {
+                         const CoefficientOptions& options, DaylightCoefficients& out, SensorRange rows) {
   if (!photons.gather()) {
-    estimate_photon_coefficients(photons, sensors, options, out);
+    estimate_photon_coefficients(photons, sensors, options, out, rows);
     return;
   }
-  GatheredCoefficients g =
-      gather_photon_coefficients(scene, materials, sources, photons.all(), sensors, options.gather, &photons.groups());
+  GatheredCoefficients g = gather_photon_coefficients(scene, materials, sources, photons.all(), sensors, options.gather,
+                                                      &photons.groups(), rows);
   out.caustic = std::move(g.caustic);
   out.global = std::move(g.global);
   out.photon_variance = std::move(g.variance);

@@ -361,26 +361,30 @@ Vec3 sky_transmittance(const Scene& scene, const std::vector<Material>& material
 std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Material>& materials,
                                       const SourceSet& sources,
                                       const std::vector<SensorPoint>& sensors,
-                                      const DirectOptions& options, std::vector<double>* variance) {
+                                      const DirectOptions& options, std::vector<double>* variance,
+                                      SensorRange rows) {
   check_materials(scene, materials);
   (void)strata_per_axis(options.samples_per_source);  // validates the count
+  rows = rows.within(sensors.size());
   std::vector<Vec3> normals;
-  normals.reserve(sensors.size());
-  for (const SensorPoint& sensor : sensors) normals.push_back(checked_unit_normal(sensor));
+  normals.reserve(rows.size());
+  for (std::size_t s = rows.begin; s < rows.end; ++s) normals.push_back(checked_unit_normal(sensors[s]));
 
   const std::size_t n_sources = sources.size();
-  std::vector<Vec3> result(sensors.size() * n_sources);
-  if (variance) variance->assign(sensors.size() * n_sources, 0.0);
+  std::vector<Vec3> result(rows.size() * n_sources);
+  if (variance) variance->assign(rows.size() * n_sources, 0.0);
   // One sensor per task item: each writes only its own row, and its random numbers depend
-  // on (seed, source, sensor) alone, so the partition into threads changes nothing.
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sensors.size()),
+  // on (seed, source, sensor index in the whole grid) alone, so neither the partition into
+  // threads nor the rows asked for change anything.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows.size()),
                     [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t s = range.begin(); s != range.end(); ++s) {
+                      for (std::size_t r = range.begin(); r != range.end(); ++r) {
+                        const std::size_t s = rows.begin + r;
                         const Vec3 origin = sensors[s].position +
-                                            normals[s] * scene.ray_epsilon_m();
-                        integrate_sensor(scene, materials, sources, origin, normals[s], options, s,
-                                         nullptr, result.data() + s * n_sources,
-                                         variance ? variance->data() + s * n_sources : nullptr);
+                                            normals[r] * scene.ray_epsilon_m();
+                        integrate_sensor(scene, materials, sources, origin, normals[r], options, s,
+                                         nullptr, result.data() + r * n_sources,
+                                         variance ? variance->data() + r * n_sources : nullptr);
                       }
                     });
   return result;

@@ -287,7 +287,8 @@ void PhotonGroups::to_tree_order(const std::vector<std::uint32_t>& tree_to_input
 GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::vector<Material>& materials,
                                                 const SourceSet& sources, const PhotonMap& surface_photons,
                                                 const std::vector<SensorPoint>& sensors,
-                                                const GatherOptions& options, const PhotonGroups* groups) {
+                                                const GatherOptions& options, const PhotonGroups* groups,
+                                                SensorRange rows) {
   if (options.rays_per_sensor < 1 || options.bandwidth < 1)
     throw std::invalid_argument("final gather: at least 1 ray per sensor and 1 photon per lookup are needed");
   if (materials.size() < scene.description().materials.size())
@@ -295,21 +296,22 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
   int k = static_cast<int>(std::sqrt(static_cast<double>(options.rays_per_sensor)));
   while (k * k < options.rays_per_sensor) ++k;
   const std::size_t n_src = sources.size();
+  rows = rows.within(sensors.size());
   GatheredCoefficients out;
-  out.caustic.assign(sensors.size() * n_src, Vec3{});
-  out.global.assign(sensors.size() * n_src, Vec3{});
+  out.caustic.assign(rows.size() * n_src, Vec3{});
+  out.global.assign(rows.size() * n_src, Vec3{});
   GatherOptions effective = options;
   effective.rays_per_sensor = k * k;
   const Vec3 ray_weight = Vec3{1, 1, 1} * (1.0 / (double(k) * k));
   if (groups) {
     if (groups->group_of.size() != surface_photons.size())
       throw std::invalid_argument("final gather: the photon groups are not those of the map");
-    out.variance.assign(sensors.size() * n_src, 0.0);
+    out.variance.assign(rows.size() * n_src, 0.0);
   }
   // Scratch of the variance per thread (sized by the groups, reset after each sensor, so
   // which thread runs a sensor changes nothing).
   tbb::enumerable_thread_specific<std::unique_ptr<GatherVariance>> scratch;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sensors.size()), [&](const tbb::blocked_range<std::size_t>& range) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(rows.begin, rows.end), [&](const tbb::blocked_range<std::size_t>& range) {
     SensorSums sums;
     if (groups) {
       std::unique_ptr<GatherVariance>& v = scratch.local();
@@ -339,12 +341,13 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
           if (sums.variance) sums.variance->end_ray();
         }
       if (sums.variance) {
-        double* row = out.variance.data() + s * n_src;
+        double* row = out.variance.data() + (s - rows.begin) * n_src;
         sums.variance->end_sensor(row);
         for (std::size_t p = 0; p < n_src; ++p) row[p] = std::max(0.0, row[p]);
       }
-      std::copy(sums.caustic.begin(), sums.caustic.end(), out.caustic.begin() + static_cast<std::ptrdiff_t>(s * n_src));
-      std::copy(sums.global.begin(), sums.global.end(), out.global.begin() + static_cast<std::ptrdiff_t>(s * n_src));
+      const auto at = static_cast<std::ptrdiff_t>((s - rows.begin) * n_src);
+      std::copy(sums.caustic.begin(), sums.caustic.end(), out.caustic.begin() + at);
+      std::copy(sums.global.begin(), sums.global.end(), out.global.begin() + at);
     }
   });
   return out;

@@ -184,7 +184,8 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
                                        const std::vector<engine::Material>& materials,
                                        const std::vector<SensorPoint>& sensors,
                                        const std::vector<sky::SunRecord>& suns, int samples,
-                                       std::uint64_t seed, DirectSunValues values) {
+                                       std::uint64_t seed, DirectSunValues values, engine::SensorRange rows) {
+  rows = rows.within(sensors.size());
   if (samples < 1) throw std::invalid_argument("direct sun: at least 1 sample per sun is needed");
   int k = static_cast<int>(std::sqrt(double(samples)));
   while (k * k < samples) ++k;
@@ -195,8 +196,8 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
 
   const double pad_m = engine::port_view_pad_m(scene, materials);
   const bool rgb = values == DirectSunValues::Rgb;
-  RadianceMatrix result(sensors.size(), suns.size(), rgb ? 3 : 1);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sensors.size()),
+  RadianceMatrix result(rows.size(), suns.size(), rgb ? 3 : 1);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(rows.begin, rows.end),
                     [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t s = range.begin(); s != range.end(); ++s) {
       const double len = length(sensors[s].normal);
@@ -225,9 +226,9 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
             }
         }
         if (rgb) {
-          for (int c = 0; c < 3; ++c) result.at(s, i, c) = static_cast<float>(sum[c] * weight);
+          for (int c = 0; c < 3; ++c) result.at(s - rows.begin, i, c) = static_cast<float>(sum[c] * weight);
         } else {
-          result.at(s, i, 0) = static_cast<float>(dot(sum, RgbLuminanceWeights) * weight);
+          result.at(s - rows.begin, i, 0) = static_cast<float>(dot(sum, RgbLuminanceWeights) * weight);
         }
       }
     }
@@ -241,33 +242,34 @@ RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const engine::GridPhotons& photons,
                                     const std::vector<SensorPoint>& sensors,
                                     const engine::CoefficientOptions& options, std::vector<double>* variance,
-                                    std::size_t block_values) {
+                                    engine::SensorRange rows, std::size_t block_values) {
+  rows = rows.within(sensors.size());
   const std::size_t n_sources = photons.source_count();
-  RadianceMatrix result(sensors.size(), n_sources, 3);
-  if (variance) variance->assign(sensors.size() * n_sources, 0.0);
-  // Estimates on a receiver plane without bias compensation do not depend on the sensor's
-  // index (a final gather's and the bias-compensating operator's random streams do): those
-  // are estimated a block of sensors at a time, so the double-precision parts of only
-  // SunCoefficientBlockValues coefficients are held, whatever the grid's size.
+  RadianceMatrix result(rows.size(), n_sources, 3);
+  if (variance) variance->assign(rows.size() * n_sources, 0.0);
+  // Estimates on a receiver plane without bias compensation are made a block of sensors at a
+  // time, so the double-precision parts of only SunCoefficientBlockValues coefficients are
+  // held, whatever the grid's size; the others in one block. A block's rows are those of the
+  // whole grid (engine/sensor_range.h), so the blocks change no value.
   const bool blocks = !photons.gather() && !options.bias_compensation;
   const std::size_t block =
-      blocks ? std::max<std::size_t>(1, block_values / std::max<std::size_t>(1, n_sources)) : sensors.size();
-  for (std::size_t first = 0; first < sensors.size(); first += block) {
-    const std::size_t last = std::min(sensors.size(), first + block);
-    const std::vector<SensorPoint> part(sensors.begin() + static_cast<std::ptrdiff_t>(first),
-                                        sensors.begin() + static_cast<std::ptrdiff_t>(last));
+      blocks ? std::max<std::size_t>(1, block_values / std::max<std::size_t>(1, n_sources)) : rows.size();
+  for (std::size_t first = rows.begin; first < rows.end; first += block) {
+    const std::size_t last = std::min(rows.end, first + block);
     engine::DaylightCoefficients c;
-    c.sensors = part.size();
+    c.sensors = last - first;
     c.sources = n_sources;
     c.caustic.assign(c.sensors * c.sources, Vec3{});
     c.global.assign(c.sensors * c.sources, Vec3{});
-    engine::photon_coefficients(scene, materials, sources, photons, part, options, c);
+    engine::photon_coefficients(scene, materials, sources, photons, sensors, options, c,
+                                engine::SensorRange{first, last});
+    const std::size_t row0 = first - rows.begin;
     for (std::size_t s = 0; s < c.sensors; ++s)
       for (std::size_t p = 0; p < n_sources; ++p) {
         const std::size_t i = s * n_sources + p;
         const Vec3 total = Vec3{} + c.caustic[i] + c.global[i];  // DaylightCoefficients::total, no direct part
-        for (int k = 0; k < 3; ++k) result.at(first + s, p, k) = static_cast<float>(total[k]);
-        if (variance) (*variance)[(first + s) * n_sources + p] = c.photon_variance[i];
+        for (int k = 0; k < 3; ++k) result.at(row0 + s, p, k) = static_cast<float>(total[k]);
+        if (variance) (*variance)[(row0 + s) * n_sources + p] = c.photon_variance[i];
       }
   }
   return result;

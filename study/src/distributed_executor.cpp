@@ -12,55 +12,18 @@
 #include "dayphoton/dist/distribute_jobs.h"
 #include "dayphoton/study/plan_policy.h"
 #include "dayphoton/study/split_photon_steps.h"
+#include "distributed_blocks.h"
+#include "string_list_wire.h"
 
 namespace dayphoton::study {
 namespace {
 
 using dist::ByteBuffer;
 
-// A list of byte strings in one buffer: count, then per string its length and bytes (64-bit
-// little-endian lengths as this machine writes them; every rank runs the same build).
-void put_u64(ByteBuffer& out, std::uint64_t v) {
-  const std::size_t at = out.size();
-  out.resize(at + sizeof v);
-  std::memcpy(out.data() + at, &v, sizeof v);
-}
-
-std::uint64_t get_u64(const ByteBuffer& in, std::size_t& at) {
-  std::uint64_t v = 0;
-  if (in.size() - at < sizeof v) throw std::runtime_error("distributed executor: truncated message");
-  std::memcpy(&v, in.data() + at, sizeof v);
-  at += sizeof v;
-  return v;
-}
-
-void put_strings(ByteBuffer& out, const std::vector<std::string>& strings) {
-  put_u64(out, strings.size());
-  for (const std::string& s : strings) {
-    put_u64(out, s.size());
-    const std::size_t at = out.size();
-    out.resize(at + s.size());
-    if (!s.empty()) std::memcpy(out.data() + at, s.data(), s.size());
-  }
-}
-
-std::vector<std::string> get_strings(const ByteBuffer& in, std::size_t& at) {
-  const std::uint64_t n = get_u64(in, at);
-  if (n > in.size()) throw std::runtime_error("distributed executor: malformed message");
-  std::vector<std::string> strings(n);
-  for (std::string& s : strings) {
-    const std::uint64_t length = get_u64(in, at);
-    if (length > in.size() - at) throw std::runtime_error("distributed executor: truncated message");
-    s.assign(reinterpret_cast<const char*>(in.data() + at), length);
-    at += length;
-  }
-  return strings;
-}
-
 class DistributedExecutor final : public StepExecutor {
  public:
-  DistributedExecutor(dist::Communicator& comm, const ArtifactStore& store, bool force)
-      : StepExecutor(store, force), m_comm(comm) {}
+  DistributedExecutor(dist::Communicator& comm, const ArtifactStore& store, bool force, std::size_t block_size)
+      : StepExecutor(store, force), m_comm(comm), m_block_size(block_size) {}
 
   /// Rank 0 reads the cache; every rank takes the same bytes (or none).
   bool lookup(const Step& step) const override {
@@ -80,6 +43,12 @@ class DistributedExecutor final : public StepExecutor {
       }
     }
     if (misses.empty()) return computed;
+    if (misses.size() == 1 && uses_sensor_blocks(m_comm, steps[misses[0]], m_block_size)) {
+      run_in_sensor_blocks(steps[misses[0]]);
+      computed[misses[0]] = 1;
+      if (done) done(misses[0], true);
+      return computed;
+    }
     misses = run_split_sources(steps, misses, computed, done);
     if (misses.empty()) return computed;
     dist::JobSet jobs;
@@ -108,6 +77,13 @@ class DistributedExecutor final : public StepExecutor {
     jobs.delivery = dist::Delivery::every_rank;
     dist::distribute_jobs(m_comm, jobs);
     return computed;
+  }
+
+  bool shares_sensor_blocks() const override { return m_comm.size() > 1; }
+  bool writes_results() const override { return m_comm.rank() == dist::RootRank; }
+
+  std::vector<std::vector<std::string>> blocks_to_root(const SensorBlocks& blocks, const std::string& name) override {
+    return compute_blocks_to_root(m_comm, blocks, name, m_block_size);
   }
 
  private:
@@ -170,6 +146,16 @@ class DistributedExecutor final : public StepExecutor {
     return costs;
   }
 
+  /// A grid step by sensor blocks over the ranks (distributed_blocks.h); every rank takes the
+  /// joined artefacts, rank 0 stores them.
+  void run_in_sensor_blocks(const Step& step) {
+    const std::vector<std::string> artefacts = compute_sensor_blocks(m_comm, step, m_block_size);
+    if (!step.take(artefacts))
+      throw std::runtime_error(std::string("distributed executor: the joined sensor blocks of a ") +
+                               step_kind_name(step.kind) + " step do not fit it");
+    if (m_comm.rank() == dist::RootRank) store(step, artefacts);
+  }
+
   /// Rank 0: each step's cached artefacts (all of them, or none), broadcast to every rank.
   std::vector<std::vector<std::string>> cached_on_root(const std::vector<Step>& steps) const {
     ByteBuffer message;
@@ -207,13 +193,14 @@ class DistributedExecutor final : public StepExecutor {
   }
 
   dist::Communicator& m_comm;
+  const std::size_t m_block_size;
 };
 
 }  // namespace
 
 std::unique_ptr<StepExecutor> make_distributed_executor(dist::Communicator& comm, const ArtifactStore& store,
-                                                        bool force) {
-  return std::make_unique<DistributedExecutor>(comm, store, force);
+                                                        bool force, std::size_t block_size) {
+  return std::make_unique<DistributedExecutor>(comm, store, force, block_size);
 }
 
 }  // namespace dayphoton::study

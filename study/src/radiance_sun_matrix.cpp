@@ -9,6 +9,7 @@
 #include "dayphoton/sky/spread_sun.h"
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/sensor_blocks.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/plan_step.h"
 
@@ -90,12 +91,16 @@ std::string write_radiance_sun_matrix(const engine::Scene& scene, const std::vec
   }
   const std::string key = direct_sun_key(scene_hash, grid, steps, directions, samples, seed);
   RadianceMatrix direct;
-  const Step step = make_step(
+  Step step = make_step(
       StepKind::DirectSun, 0, ArtifactId{"sun-direct", key}, direct,
       [&] { return direct_sun_coefficients(scene, materials, grid.points, suns, samples, seed); }, encode_matrix,
       decode_matrix,
       [&](const RadianceMatrix& m) { return m.rows() == grid.points.size() && m.columns() == suns.size(); });
+  step.blocks = matrix_sensor_blocks(grid.points.size(), [&](engine::SensorRange rows) {
+    return direct_sun_coefficients(scene, materials, grid.points, suns, samples, seed, DirectSunValues::Rgb, rows);
+  });
   const bool cached = !executor.run(step);
+  if (!executor.writes_results()) return {};  // another rank than 0 of an MPI run: rank 0 writes the file
   RadianceSunMatrix d = radiance_sun_matrix(patches, direct, bins, bin_coefficients);
   const int mf = bins.multiplication_factor();
   d.matrix.header_lines().push_back(

@@ -1,10 +1,14 @@
 // The sky side of a case as plan steps: see sky_coefficient_steps.h.
 #include "sky_coefficient_steps.h"
 
+#include <memory>
+
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/photon_range_step.h"
+#include "dayphoton/study/sensor_blocks.h"
+#include "lazy_value.h"
 #include "photon_pass_notes.h"
 #include "photon_step_cost.h"
 
@@ -44,6 +48,21 @@ void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, con
         [](const std::optional<engine::DaylightCoefficients>& c) { return encode_coefficients(*c); },
         [](const std::string& bytes) { return std::optional<engine::DaylightCoefficients>(decode_coefficients(bytes)); },
         [](const std::optional<engine::DaylightCoefficients>&) { return true; }));
+    // By sensor blocks over the ranks of an MPI run (plan_step.h); the grid's photon maps
+    // built once on each rank that estimates a block.
+    SensorBlocks blocks;
+    blocks.sensors = grid.points.size();
+    blocks.compute_rows = [&cs, &sources, &photons, &plan, &grid, g,
+                           maps = std::make_shared<LazyValue<engine::GridPhotons>>()](std::size_t begin, std::size_t end) {
+      const engine::GridPhotons& grid_photons = maps->get(
+          [&] { return grid_photons_for(g, cs.layout, photons, sources.size(), plan.point_estimate); });
+      return std::vector<std::string>{encode_coefficients(engine::daylight_coefficients(
+          cs.scene, cs.materials, sources, grid_photons, grid.points, plan.sky_estimating, {begin, end}))};
+    };
+    blocks.join = [](const std::vector<std::vector<std::string>>& b) {
+      return std::vector<std::string>{join_coefficient_blocks(output_of_blocks(b, 0))};
+    };
+    grid_steps.back().blocks = std::move(blocks);
     if (!ctx.executor.lookup(grid_steps.back())) coefficients[g].reset();
     all_grids_cached = all_grids_cached && coefficients[g].has_value();
   }
@@ -100,6 +119,7 @@ void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, con
     }
     progress.start(prefix + "coefficients " + grid.name, grid.points.size(), "sensors");
     ctx.executor.run(grid_steps[g]);
+    grid_steps[g] = Step{};  // frees the photon maps its blocks may have built
     progress.advance(grid.points.size());
     progress.end();
     ++report.grids_estimated;

@@ -21,6 +21,10 @@ const char* step_kind_name(StepKind kind) {
 
 bool StepExecutor::run(const Step& step) { return run_batch({step})[0] != 0; }
 
+std::vector<std::vector<std::string>> StepExecutor::blocks_to_root(const SensorBlocks&, const std::string& name) {
+  throw std::logic_error("blocks_to_root (" + name + ") on an executor of one process");
+}
+
 bool StepExecutor::lookup(const Step& step) const {
   if (m_force) return false;
   std::vector<std::string> bytes;

@@ -36,6 +36,7 @@
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/study/verdict_uncertainty.h"
 #include "dayphoton/weather/hourly_weather.h"
+#include "dayphoton/study/annual_blocks.h"
 #include "json_text.h"
 #include "operated_case.h"
 #include "points_in_time_case.h"
@@ -171,7 +172,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     if (placement.sets[g].dropped)
       gj["dropped_sensors"] = {{"outside_rooms", placement.sets[g].outside},
                                {"inside_solid", placement.sets[g].inside_solid}};
-    if (project.outputs.coefficients) {
+    if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
       c.write_file(join_path(folder, "coefficients_sky.mtx"), matrix_format);
       ctx.outputs.record(join_path(folder, "coefficients_sky.mtx"));
     }
@@ -238,7 +239,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     const std::vector<GridSun> sun = run_sun_bins(project, prefix, cs, ss, bins, ctx, project.outputs.coefficients);
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
-      if (project.outputs.coefficients) {
+      if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
         RadianceMatrix c = sun[g].bin_coefficients;
         c.header_lines().push_back("dayphoton sun-bin coefficients: caustic + global irradiance per unit "
                                    "disc radiance; columns = rows of sun_bins.csv");
@@ -255,25 +256,40 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
         ctx.outputs.record(join_path(folders[g], DirectSunFileName));
       }
       if (project.outputs.coefficients && project.outputs.radiance_sun_matrix) {
-        // The same sun on RADIANCE's patch basis, for gendaymtx -d (radiance_sun_matrix.h).
+        // The same sun on RADIANCE's patch basis, for gendaymtx -d (radiance_sun_matrix.h):
+        // its direct sun is a step of every rank, the file rank 0's.
         std::vector<sky::SunRecord> daytime = ss.suns;
         daytime.insert(daytime.end(), sun[g].other_suns.begin(), sun[g].other_suns.end());
         const std::string d_path = join_path(folders[g], radiance_sun_matrix_name(bins.multiplication_factor()));
         progress.start(prefix + "sun matrix for RADIANCE " + grid.name, grid.points.size(), "sensors");
-        log.line(prefix + write_radiance_sun_matrix(scene, materials, grid, cs.scene_hash, bins,
-                                                    sun[g].bin_coefficients, daytime, plan.sun_direct_samples,
-                                                    sim.seed, ctx.executor, d_path, matrix_format));
+        const std::string line = write_radiance_sun_matrix(scene, materials, grid, cs.scene_hash, bins,
+                                                           sun[g].bin_coefficients, daytime, plan.sun_direct_samples,
+                                                           sim.seed, ctx.executor, d_path, matrix_format);
         progress.advance(grid.points.size());
         progress.end();
-        ctx.outputs.record(d_path);
+        if (ctx.executor.writes_results()) {
+          log.line(prefix + line);
+          ctx.outputs.record(d_path);
+        }
       }
       if (!annual) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
       const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
-      // The sun added to the sky's table in place (no hourly direct and indirect tables held).
-      const AnnualStudy study = compute_annual_study_with_sun(
-          coefficient_matrices[g], ss.sky, GridSunCoefficients{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins},
-          annual_settings);
+      const GridSunCoefficients grid_sun{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins};
+      std::optional<AnnualStudy> computed;
+      if (ctx.executor.shares_sensor_blocks()) {
+        // By sensor blocks over the ranks; rank 0 alone gets the study and writes it (annual_blocks.h).
+        computed = annual_study_in_blocks(ctx.executor, prefix + grid.name, coefficient_matrices[g], ss.sky,
+                                          annual_settings, &grid_sun);
+      } else {
+        // The sun added to the sky's table in place (no hourly direct and indirect tables held).
+        computed = compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, grid_sun, annual_settings);
+      }
+      if (!computed) {  // another rank than 0
+        progress.end();
+        continue;
+      }
+      const AnnualStudy& study = *computed;
       log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       if (keep)  // operated shading picks hours by the direct sun's table
@@ -295,7 +311,16 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
       const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
-      const AnnualStudy study = compute_annual_study(coefficient_matrices[g], sky, annual_settings);
+      // By sensor blocks over the ranks of an MPI run; rank 0 alone gets the study and writes it.
+      const std::optional<AnnualStudy> computed =
+          ctx.executor.shares_sensor_blocks()
+              ? annual_study_in_blocks(ctx.executor, prefix + grid.name, coefficient_matrices[g], sky, annual_settings)
+              : std::optional<AnnualStudy>(compute_annual_study(coefficient_matrices[g], sky, annual_settings));
+      if (!computed) {  // another rank than 0
+        progress.end();
+        continue;
+      }
+      const AnnualStudy& study = *computed;
       log_occupancy(grid.name, study, annual_settings);
       ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
       const VerdictUncertainty verdicts =

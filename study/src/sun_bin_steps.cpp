@@ -2,12 +2,15 @@
 #include "sun_bin_steps.h"
 
 #include <algorithm>
+#include <memory>
 
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/photon_range_step.h"
+#include "dayphoton/study/sensor_blocks.h"
+#include "lazy_value.h"
 #include "photon_pass_notes.h"
 
 namespace dayphoton::study {
@@ -22,7 +25,7 @@ Step direct_sun_step(const CaseScene& cs, const SensorGrid& grid, std::size_t g,
     steps.push_back(sun.step);
     directions.push_back(sun.direction);
   }
-  return make_step(
+  Step step = make_step(
       StepKind::DirectSun, g,
       {"sun-direct", direct_sun_key(cs.scene_hash, grid, steps, directions, plan.sun_direct_samples, plan.seed,
                                     DirectSunValues::Luminance)},
@@ -35,6 +38,11 @@ Step direct_sun_step(const CaseScene& cs, const SensorGrid& grid, std::size_t g,
       [&grid, &suns](const RadianceMatrix& m) {
         return m.rows() == grid.points.size() && m.columns() == suns.size() && m.components() == 1;
       });
+  step.blocks = matrix_sensor_blocks(grid.points.size(), [&cs, &grid, &suns, &plan](engine::SensorRange rows) {
+    return direct_sun_coefficients(cs.scene, cs.materials, grid.points, suns, plan.sun_direct_samples, plan.seed,
+                                   DirectSunValues::Luminance, rows);
+  });
+  return step;
 }
 
 }  // namespace
@@ -93,6 +101,26 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
       out.bin_variance = variance.data();
       return {encode_matrix(out.bin_coefficients), encode_matrix(variance)};
     };
+    // By sensor blocks over the ranks of an MPI run (plan_step.h): the same two matrices.
+    SensorBlocks blocks;
+    blocks.sensors = grid.points.size();
+    blocks.compute_rows = [&, g, maps = std::make_shared<LazyValue<engine::GridPhotons>>()](std::size_t begin,
+                                                                                             std::size_t end) {
+      const engine::GridPhotons& grid_photons =
+          maps->get([&] { return grid_photons_for(g, cs.layout, photons, bins.size(), plan.point_estimate); });
+      std::vector<double> block_variance;
+      const RadianceMatrix c = sun_bin_coefficients(cs.scene, cs.materials, sources, grid_photons, grid.points,
+                                                    estimating, &block_variance, {begin, end});
+      RadianceMatrix variance(end - begin, bins.size(), 1);
+      for (std::size_t i = 0; i < block_variance.size(); ++i)
+        variance.data()[i] = static_cast<float>(block_variance[i]);
+      return std::vector<std::string>{encode_matrix(c), encode_matrix(variance)};
+    };
+    blocks.join = [](const std::vector<std::vector<std::string>>& b) {
+      return std::vector<std::string>{join_matrix_blocks(output_of_blocks(b, 0)),
+                                      join_matrix_blocks(output_of_blocks(b, 1))};
+    };
+    s.blocks = std::move(blocks);
     s.take = [&](const std::vector<std::string>& bytes) {
       out.bin_coefficients = decode_matrix(bytes.at(0));
       const RadianceMatrix v = decode_matrix(bytes.at(1));
@@ -151,6 +179,7 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
     } else {
       progress.start(prefix + "sun coefficients " + grid.name, grid.points.size(), "sensors");
       ctx.executor.run(grid_steps[g]);
+      grid_steps[g] = Step{};  // frees the photon maps its blocks may have built
       progress.advance(grid.points.size());
       progress.end();
       log.line(prefix + "sun coefficients " + grid.name + ": estimated at " + std::to_string(grid.points.size()) +

@@ -497,7 +497,7 @@ TEST(SunBinTracing, InterpolatedIndirectSunMatchesTracingEachHoursSun) {
       const engine::SourceSet discs = bins.sources(sky::SunHalfAngle_rad);
       const RadianceMatrix whole = sun_bin_coefficients(scene, materials, discs, gp, grid.points, co, &whole_variance);
       const RadianceMatrix blocks =
-          sun_bin_coefficients(scene, materials, discs, gp, grid.points, co, &block_variance, 3 * bins.size());
+          sun_bin_coefficients(scene, materials, discs, gp, grid.points, co, &block_variance, {}, 3 * bins.size());
       ASSERT_GT(grid.points.size(), 3u);
       EXPECT_EQ(whole.data(), bc.data());
       EXPECT_EQ(blocks.data(), whole.data());

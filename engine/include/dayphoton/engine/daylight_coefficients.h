@@ -65,6 +65,7 @@
 #include "dayphoton/engine/photon_map.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/engine/sensor_range.h"
 
 namespace dayphoton::engine {
 
@@ -188,6 +189,10 @@ class GridPhotons {
   void count_classes();
 };
 
+/// `rows` (the three functions below): only those sensors' rows are estimated, and `out` holds
+/// rows.size() sensors (sensor_range.h: random numbers by the index in the whole of `sensors`,
+/// so they are the whole grid's rows bit for bit; a block of an MPI rank, docs/cluster.md).
+
 /// Photon part (caustic, global) of the coefficients at `sensors` from receiver-plane or
 /// surface photons; parallel over sensors, deterministic. `out` must be sized (sensors x
 /// sources) in caustic/global; its photon_variance is filled (estimate_variance.h: the sum
@@ -196,19 +201,22 @@ class GridPhotons {
 /// the scene: daylight_coefficients or photon_coefficients).
 void estimate_photon_coefficients(const GridPhotons& photons,
                                   const std::vector<SensorPoint>& sensors,
-                                  const CoefficientOptions& options, DaylightCoefficients& out);
+                                  const CoefficientOptions& options, DaylightCoefficients& out,
+                                  SensorRange rows = {});
 
 /// The photon part for any kind of GridPhotons (a final gather for for_gather photons).
 void photon_coefficients(const Scene& scene, const std::vector<Material>& materials,
                          const SourceSet& sources, const GridPhotons& photons,
                          const std::vector<SensorPoint>& sensors,
-                         const CoefficientOptions& options, DaylightCoefficients& out);
+                         const CoefficientOptions& options, DaylightCoefficients& out,
+                         SensorRange rows = {});
 
 /// Everything: direct by shadow rays plus the photon estimates.
 DaylightCoefficients daylight_coefficients(const Scene& scene,
                                            const std::vector<Material>& materials,
                                            const SourceSet& sources, const GridPhotons& photons,
                                            const std::vector<SensorPoint>& sensors,
-                                           const CoefficientOptions& options);
+                                           const CoefficientOptions& options,
+                                           SensorRange rows = {});
 
 }  // namespace dayphoton::engine

@@ -77,6 +77,7 @@
 #include "dayphoton/engine/distant_source.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/engine/sensor_range.h"
 
 namespace dayphoton::engine {
 
@@ -123,12 +124,14 @@ SkyPath trace_to_sky(const Scene& scene, const std::vector<Material>& materials,
 /// a sensor normal that is zero or not finite, or too few materials. `variance`, if given,
 /// receives the same layout: the collapsed-strata variance of each entry's luminance
 /// (estimate_variance.h), both strategies' strata added (they are independent); the
-/// estimates themselves do not change.
+/// estimates themselves do not change. `rows`: only those sensors' rows (sensor_range.h:
+/// random numbers by the index in the whole of `sensors`, so they equal the whole result's rows).
 std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Material>& materials,
                                       const SourceSet& sources,
                                       const std::vector<SensorPoint>& sensors,
                                       const DirectOptions& options,
-                                      std::vector<double>* variance = nullptr);
+                                      std::vector<double>* variance = nullptr,
+                                      SensorRange rows = {});
 
 /// Direct irradiance at one sensor from a continuous sky radiance function
 /// (direction toward the sky -> RGB radiance), integrated over the sources of `sources`

@@ -71,6 +71,7 @@
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/photon_map.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/engine/sensor_range.h"
 
 namespace dayphoton::engine {
 
@@ -111,13 +112,15 @@ struct GatheredCoefficients {
 /// The gather at every sensor. `surface_photons` is the map of every stored surface photon
 /// of `sources` (Direct included). Parallel over sensors, deterministic. Throws
 /// std::invalid_argument for rays_per_sensor < 1, bandwidth 0, a sensor normal that is zero
-/// or not finite, or a photon whose source is not in `sources`.
+/// or not finite, or a photon whose source is not in `sources`. `rows`: only those sensors'
+/// rows (sensor_range.h: the rays of a sensor are seeded by its index in the whole grid).
 GatheredCoefficients gather_photon_coefficients(const Scene& scene,
                                                 const std::vector<Material>& materials,
                                                 const SourceSet& sources,
                                                 const PhotonMap& surface_photons,
                                                 const std::vector<SensorPoint>& sensors,
                                                 const GatherOptions& options,
-                                                const PhotonGroups* groups = nullptr);
+                                                const PhotonGroups* groups = nullptr,
+                                                SensorRange rows = {});
 
 }  // namespace dayphoton::engine

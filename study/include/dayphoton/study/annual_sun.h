@@ -30,6 +30,7 @@
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/engine/sensor_range.h"
 #include "dayphoton/engine/sun_bins.h"
 #include "dayphoton/metrics/illuminance_table.h"
 #include "dayphoton/sky/sky_matrix.h"
@@ -108,7 +109,8 @@ std::vector<sky::SunRecord> suns_from_matrix(const RadianceMatrix& m);
 /// rays (engine::sky_transmittance: straight through the glazing up to the first port,
 /// anything else blocks), the disc sampled as engine::SourceSet does. Sensor s of sun k uses
 /// Rng(seed, step of sun k, s, Direct), so a sun's numbers do not depend on the other suns.
-/// Parallel over sensors, the same for any thread count. With DirectSunValues::Luminance one
+/// Parallel over sensors, the same for any thread count. `rows`: only those sensors' rows
+/// (engine/sensor_range.h; s is the index in the whole of `sensors`). With DirectSunValues::Luminance one
 /// component per sun instead of three: (0.265 R + 0.670 G + 0.065 B) of the same sums, the
 /// quantity every illuminance is made of (weight 179 as a one-component matrix), in a third of
 /// the memory (what the pipeline keeps for a grid's hourly suns; docs/photon-tracing.md "Scale").
@@ -118,13 +120,15 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
                                        const std::vector<SensorPoint>& sensors,
                                        const std::vector<sky::SunRecord>& suns,
                                        int samples = SunDirectSamples, std::uint64_t seed = 1,
-                                       DirectSunValues values = DirectSunValues::Rgb);
+                                       DirectSunValues values = DirectSunValues::Rgb,
+                                       engine::SensorRange rows = {});
 
 /// Photon part (caustic + global) of the sun-bin coefficients at `sensors`: sensors x bins x
 /// RGB, W/m^2 per unit disc radiance (what coefficients_sun.mtx holds). `photons` are the
 /// sun bins' photons, source i = bin i = sources[i] (the discs, for a final gather's
 /// specular paths; engine::photon_coefficients). `variance`, if given, receives each entry's
-/// variance (sensors x bins, engine/estimate_variance.h). Receiver-plane estimates are made a
+/// variance (sensors x bins, engine/estimate_variance.h). `rows`: only those sensors' rows.
+/// Receiver-plane estimates are made a
 /// block of sensors at a time (SunCoefficientBlockValues), with the same values.
 constexpr std::size_t SunCoefficientBlockValues = std::size_t(1) << 20;
 RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
@@ -134,6 +138,7 @@ RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const std::vector<SensorPoint>& sensors,
                                     const engine::CoefficientOptions& options,
                                     std::vector<double>* variance = nullptr,
+                                    engine::SensorRange rows = {},
                                     std::size_t block_values = SunCoefficientBlockValues);
 
 /// Direct-sun illuminance (lux), steps x sensors: 179 w . C_direct[s][k] L_k for each sun k

@@ -17,21 +17,30 @@
 // ranges over the ranks, with the passes' counts summed on every rank
 // (split_photon_steps.h); their artefacts are the same bytes.
 //
+// A single step that estimates a grid (a grid's sky or sun coefficients, its direct sun) goes
+// by sensor blocks (plan_step.h SensorBlocks) when it has more than `block_size` sensors: the
+// blocks are the jobs of one distribute_jobs, rank 0 joins them in sensor order into the
+// whole grid's artefact (the same bytes, cache key and file as one process makes) and every
+// rank takes it. The accuracy rounds are one step without blocks: one rank runs them.
+//
 // The caller makes sure the other ranks write nothing the user sees (the app gives them a
 // scratch output folder it removes, app/main.cpp).
 #pragma once
 
+#include <cstddef>
 #include <memory>
 
 #include "dayphoton/dist/communicator.h"
 #include "dayphoton/study/artifact_store.h"
+#include "dayphoton/study/plan_policy.h"
 #include "dayphoton/study/step_executor.h"
 
 namespace dayphoton::study {
 
 /// An executor over `comm`'s ranks; `comm` must outlive it. With one rank it behaves as the
-/// local executor (same cache use, same results).
+/// local executor (same cache use, same results). `block_size`: sensors per block of a grid
+/// step (plan_policy.h; tests use smaller ones).
 std::unique_ptr<StepExecutor> make_distributed_executor(dist::Communicator& comm, const ArtifactStore& store,
-                                                        bool force);
+                                                        bool force, std::size_t block_size = SensorBlockSize);
 
 }  // namespace dayphoton::study

@@ -66,4 +66,12 @@ constexpr double SplitSourceFactor = 8.0;
 /// rank's threads have blocks to share. A pass shorter than two of these is not split.
 constexpr std::uint64_t MinSplitRangeAttempts = 4096;
 
+/// Sensors per block when a grid's estimates (sky and sun coefficients, direct sun) are shared
+/// out over the ranks of an MPI run (sensor_blocks.h, docs/cluster.md "Sensor blocks"). Small
+/// enough that the office's 165-sensor grid makes 11 blocks for 2 or 3 ranks to balance
+/// (a rank's share differs from an even one by at most one block), large enough that the
+/// 10,000-sensor open plan makes 625 messages, not 10,000. Changes no result: every block's
+/// rows are those of the whole grid (engine/sensor_range.h), so it is no part of a cache key.
+constexpr std::size_t SensorBlockSize = 16;
+
 }  // namespace dayphoton::study

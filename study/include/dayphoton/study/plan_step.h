@@ -12,11 +12,18 @@
 // make_step closure captures) and returns the encoded bytes for the cache; take() decodes
 // bytes from the cache (or from another process) into the same slot. So a local run never
 // decodes what it has just computed, and a cached one decodes each artefact once.
+//
+// Sensor blocks: a step that estimates a grid (sky or sun coefficients, the direct sun) may
+// also say how to compute its outputs for a range of the grid's sensors and how to join such
+// blocks (SensorBlocks). An executor over several processes then shares the blocks out
+// (distributed_executor.h); the joined bytes are those compute() returns, so the artefact and
+// its key are the same whichever way it was made. The local executor ignores the blocks.
 #pragma once
 
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,6 +51,17 @@ struct ArtifactId {
   std::string key;
 };
 
+/// A grid step split by sensors (header comment).
+struct SensorBlocks {
+  std::size_t sensors = 0;  ///< rows of every output: the grid's sensors
+  /// The outputs' bytes for sensors [begin, end), each encoded as its codec encodes a grid of
+  /// those sensors alone. Pure, as compute is; may run on several threads at once.
+  std::function<std::vector<std::string>(std::size_t begin, std::size_t end)> compute_rows;
+  /// Blocks' outputs in sensor order (each compute_rows' result) joined into the outputs'
+  /// bytes, byte for byte those compute() returns.
+  std::function<std::vector<std::string>(const std::vector<std::vector<std::string>>& blocks)> join;
+};
+
 struct Step {
   StepKind kind = StepKind::SourcePhotons;
   std::size_t index = 0;            ///< the source, sun bin or grid it is for, within its batch
@@ -66,6 +84,8 @@ struct Step {
   /// one; empty: equal costs. Pure like compute; it decides where a step runs, never what it
   /// yields.
   std::function<double()> cost;
+  /// Optional: the step by sensor blocks (header comment).
+  std::optional<SensorBlocks> blocks;
 };
 
 /// A step of one artefact of type T: `compute` returns the value, which is kept in `slot`

@@ -68,7 +68,8 @@ RadianceSunMatrix radiance_sun_matrix(const std::vector<int>& patches, const Rad
 /// suns (`daytime_suns`: every daytime position, with or without direct light), their direct
 /// sun (a cached step of the executor, kind "sun-direct"), D, written to `path` in `format` with a
 /// header saying what it is. Returns a line for the run log (patches, how many without a bin,
-/// traced or cached).
+/// traced or cached). Where the executor does not write results (the ranks other than 0 of an
+/// MPI run) only the step runs: nothing is written, the line is empty.
 std::string write_radiance_sun_matrix(const engine::Scene& scene, const std::vector<engine::Material>& materials,
                                       const SensorGrid& grid, const ContentHash& scene_hash,
                                       const engine::SunBins& bins, const RadianceMatrix& bin_coefficients,

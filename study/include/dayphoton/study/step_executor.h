@@ -50,6 +50,18 @@ class StepExecutor {
   /// and the step took them. Never computes; always false with `force`.
   virtual bool lookup(const Step& step) const;
 
+  /// Whether this executor shares sensor blocks out over several processes (the distributed
+  /// executor with more than one rank): what is computed per grid but not cached (the annual
+  /// multiply, annual_blocks.h) then goes by blocks too, through blocks_to_root.
+  virtual bool shares_sensor_blocks() const { return false; }
+  /// Whether this process writes the run's results: false on the ranks other than 0.
+  virtual bool writes_results() const { return true; }
+  /// Only where shares_sensor_blocks(); collective: the blocks of `blocks` (sensor_blocks.h)
+  /// computed over the processes, nothing cached. Rank 0 returns every block's outputs in
+  /// sensor order, the other ranks an empty vector (`name` names a failing block). Throws
+  /// std::logic_error on an executor of one process.
+  virtual std::vector<std::vector<std::string>> blocks_to_root(const SensorBlocks& blocks, const std::string& name);
+
  protected:
   /// Stores the bytes of a step's outputs (one per output, in order).
   void store(const Step& step, const std::vector<std::string>& bytes) const;
