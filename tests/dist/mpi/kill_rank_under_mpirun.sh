@@ -10,7 +10,7 @@
 #  3. a re-run under `mpirun -np 2` into the same folder and cache takes the stored photons
 #     from the cache (run.log: "photons: traced T of 146 sources (C cached)" with C >= 1, or
 #     none needed), completes the folder, and writes every file byte-identical to an
-#     uninterrupted one-process run (run.log aside; summary.json apart from the folder name);
+#     uninterrupted one-process run (run.log and timings.json aside; summary.json apart from the folder name);
 #  4. no rank's scratch folder is left once the re-run is over (the killed job's are removed
 #     by the re-run's ranks: app/rank_scratch.h).
 # Usage: kill_rank_under_mpirun.sh DAYPHOTON MPIEXEC SOURCE_DIR
@@ -94,7 +94,7 @@ for victim in 1 0; do
     fail "rank $victim: the re-run's photon line is unexpected: $line"
   fi
   [ -e "$out/INCOMPLETE" ] && fail "rank $victim: the re-run left INCOMPLETE"
-  diff -r -q -x run.log -x summary.json "$tmp/reference" "$out" ||
+  diff -r -q -x run.log -x timings.json -x summary.json "$tmp/reference" "$out" ||
     fail "rank $victim: the re-run wrote other results than the uninterrupted run"
   cmp -s <(sed "s|$tmp/reference|OUT|g" "$tmp/reference/summary.json") <(sed "s|$out|OUT|g" "$out/summary.json") ||
     fail "rank $victim: the re-run wrote another summary.json than the uninterrupted run"
