@@ -11,8 +11,8 @@
 // 2. Runs `dayphoton run -j 1` alone and under `mpirun -np 1, 2, 3 --bind-to none
 //    --oversubscribe`, each into a fresh output folder and cache: wall seconds, the CPU
 //    seconds of every rank (this program wraps each rank and reads its rusage), the load
-//    average, and checks the results are byte-identical to the one-process run's (run.log and
-//    summary.json aside).
+//    average, and checks the results are byte-identical to the one-process run's (run.log,
+//    timings.json and summary.json aside).
 // 3. Predicts each run from the costs of 1, with the scheme the distributed executor follows
 //    (study/distributed_executor.h): every rank does the cached run's work; a batch of photon
 //    steps is shared out by dist::assign_jobs on the steps' cost estimates (for sky sources,
@@ -288,13 +288,13 @@ std::string read_file(const fs::path& p) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-/// Files of `b` that differ from `a`'s (run.log and summary.json, which name the run, aside).
+/// Files of `b` that differ from `a`'s (run.log and timings.json, which hold its times, and summary.json, which names the run, aside).
 int differing_files(const fs::path& a, const fs::path& b) {
   int n = 0;
   for (const fs::directory_entry& e : fs::recursive_directory_iterator(a)) {
     if (!e.is_regular_file()) continue;
     const fs::path rel = fs::relative(e.path(), a);
-    if (rel == "run.log" || rel == "summary.json") continue;
+    if (rel == "run.log" || rel == "timings.json" || rel == "summary.json") continue;
     if (!fs::exists(b / rel) || read_file(e.path()) != read_file(b / rel)) ++n;
   }
   return n;
