@@ -14,6 +14,7 @@
 //   - the annual multiply by blocks (annual_blocks.h) on 2 and 3 ranks: rank 0's study is the
 //     one-process study byte for byte (table, per-sensor metrics, ASE hours, grid metrics),
 //     with the sun bins and without; the other ranks get none.
+#include "side_lit_room.h"
 #include "dayphoton/study/sensor_blocks.h"
 
 #include <gtest/gtest.h>
@@ -107,23 +108,7 @@ TEST(SensorBlocks, JoinedMatrixAndCoefficientBlocksAreTheWholeArtefact) {
   EXPECT_THROW(join_coefficient_blocks({coefficients(0, 2, 3), coefficients(2, 7, 4)}), std::invalid_argument);
 }
 
-constexpr const char* RoomYaml = R"(site: {latitude: 51.5, longitude: -0.12, time_zone: 0}
-study: daylight_factor
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glass: {type: glass, transmittance: 0.6}
-geometry:
-  rooms:
-    - name: office
-      size: [6, 8, 3]
-      materials: {floor: walls, ceiling: walls, walls: walls}
-      windows: [{name: w, wall: south, width: 4, height: 1.5, sill: 0.9, material: glass}]
-sensors:
-  grids:
-    - {name: workplane, room: office, height: 0.8, spacing: 1}
-simulation:
-  photons_per_bin: 400
-)";
+const std::string RoomYaml = test::side_lit_room_yaml("[6, 8, 3]", "4", 400);
 
 /// The small room, traced once: its grid and the photons of every sky source.
 struct TracedRoom {

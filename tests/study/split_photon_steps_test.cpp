@@ -3,6 +3,7 @@
 // with MPI's message semantics, tests/dist/in_process_ranks.h) give every rank the bytes the
 // local executor computes, and rank 0 stores them: the split and the rank count change where
 // attempts are traced, never the photons.
+#include "side_lit_room.h"
 #include "dayphoton/study/split_photon_steps.h"
 
 #include <gtest/gtest.h>
@@ -35,23 +36,7 @@ fs::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-const char* RoomYaml = R"(site: {latitude: 51.5, longitude: -0.12, time_zone: 0}
-study: daylight_factor
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glass: {type: glass, transmittance: 0.6}
-geometry:
-  rooms:
-    - name: office
-      size: [4, 5, 3]
-      materials: {floor: walls, ceiling: walls, walls: walls}
-      windows: [{name: w, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]
-sensors:
-  grids:
-    - {name: workplane, room: office, height: 0.8, spacing: 1}
-simulation:
-  photons_per_bin: 1000
-)";
+const std::string RoomYaml = test::side_lit_room_yaml("[4, 5, 3]", "3", 1000);
 
 /// A case as the run sees it (scene, materials, layout, the plan's options) and the photon
 /// steps of a few of its sky sources and of the sun bins of a south sun, with their slots.

@@ -5,6 +5,7 @@
 // results in step order and reports every step once. A batch of real photon steps (a small
 // room's sky sources) gives the same bytes with 1 and 3 threads, and each step's bytes are
 // what its source traced alone gives.
+#include "side_lit_room.h"
 #include "dayphoton/study/step_executor.h"
 
 #include <gtest/gtest.h>
@@ -174,23 +175,7 @@ TEST(StepExecutor, ABatchKeepsStepOrderAndReportsEveryStepOnce) {
 
 // A room with a south window under the plan's options: the photon steps of its first sky
 // sources, as the run makes them.
-const char* RoomYaml = R"(site: {latitude: 51.5, longitude: -0.12, time_zone: 0}
-study: daylight_factor
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glass: {type: glass, transmittance: 0.6}
-geometry:
-  rooms:
-    - name: office
-      size: [6, 8, 3]
-      materials: {floor: walls, ceiling: walls, walls: walls}
-      windows: [{name: w, wall: south, width: 4, height: 1.5, sill: 0.9, material: glass}]
-sensors:
-  grids:
-    - {name: workplane, room: office, height: 0.8, spacing: 1}
-simulation:
-  photons_per_bin: 300
-)";
+const std::string RoomYaml = test::side_lit_room_yaml("[6, 8, 3]", "4", 300);
 
 std::vector<std::string> photon_batch_bytes(int threads, const ArtifactStore& store) {
   tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
