@@ -19,6 +19,7 @@
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/weather/site_clock.h"
 #include "json_text.h"
+#include "json_values.h"
 
 namespace dayphoton::study {
 
@@ -196,7 +197,7 @@ static nlohmann::json occupancy_json(const AnnualStudySettings& settings) {
   return j;
 }
 
-std::string grid_metrics_json(const AnnualStudy& study, const AnnualStudySettings& settings) {
+nlohmann::json grid_metrics_value(const AnnualStudy& study, const AnnualStudySettings& settings) {
   using nlohmann::json;
   const metrics::MetricSettings& m = settings.metrics;
   json j;
@@ -250,7 +251,11 @@ std::string grid_metrics_json(const AnnualStudy& study, const AnnualStudySetting
                     {"levels", levels}};
   }
   j["sky"] = study.sky_description;
-  return json_text(j);
+  return j;
+}
+
+std::string grid_metrics_json(const AnnualStudy& study, const AnnualStudySettings& settings) {
+  return json_text(grid_metrics_value(study, settings));
 }
 
 std::vector<std::string> write_annual_outputs(const AnnualStudy& study, const std::vector<SensorPoint>& sensors,

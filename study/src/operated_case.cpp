@@ -10,6 +10,8 @@
 #include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/results_model_builder.h"
+#include "json_text.h"
+#include "json_values.h"
 
 namespace dayphoton::study {
 
@@ -42,8 +44,8 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
     ctx.outputs.record(join_path(folder, "sensors.csv"));
     ctx.outputs.record(write_annual_outputs(operated.study, o.sensors, settings, folder, which));
     write_shading_schedule_csv(operated, join_path(folder, "shading_schedule.csv"));
-    const std::string operation = operation_json(operated, rule, open_name, shaded_name);
-    write_file_atomically(join_path(folder, "operation.json"), operation + "\n");
+    const nlohmann::json operation = operation_value(operated, rule, open_name, shaded_name);
+    write_file_atomically(join_path(folder, "operation.json"), json_text(operation) + "\n");
     ctx.outputs.record({join_path(folder, "shading_schedule.csv"), join_path(folder, "operation.json")});
     ctx.progress.advance(o.illuminance.step_count());
     ctx.progress.end();
@@ -56,8 +58,8 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
     grids.push_back({{"name", o.name},
                      {"sensors", o.sensors.size()},
                      {"folder", folder},
-                     {"annual", nlohmann::json::parse(grid_metrics_json(operated.study, settings))},
-                     {"operation", nlohmann::json::parse(operation)}});
+                     {"annual", grid_metrics_value(operated.study, settings)},
+                     {"operation", operation}});
   }
   return {{"open", open_name}, {"shaded", shaded_name}, {"folder", dir}, {"grids", grids}};
 }

@@ -10,6 +10,7 @@
 #include "dayphoton/metrics/annual_metrics.h"
 #include "dayphoton/metrics/occupancy.h"
 #include "json_text.h"
+#include "json_values.h"
 
 namespace dayphoton::study {
 
@@ -130,8 +131,8 @@ void write_shading_schedule_csv(const OperatedStudy& operated, const std::string
   });
 }
 
-std::string operation_json(const OperatedStudy& operated, const ShadingRule& rule, const std::string& open_case,
-                           const std::string& shaded_case) {
+nlohmann::json operation_value(const OperatedStudy& operated, const ShadingRule& rule, const std::string& open_case,
+                               const std::string& shaded_case) {
   nlohmann::json j = {{"open", open_case},
                       {"shaded", shaded_case},
                       {"direct_sun_threshold_lux", rule.direct_sun_threshold_lux},
@@ -143,7 +144,12 @@ std::string operation_json(const OperatedStudy& operated, const ShadingRule& rul
                       {"shaded_hours", operated.schedule.shaded_steps()},
                       {"occupied_hours", operated.study.occupied_hours},
                       {"shaded_occupied_hours", operated.shaded_occupied_hours}};
-  return json_text(j);
+  return j;
+}
+
+std::string operation_json(const OperatedStudy& operated, const ShadingRule& rule, const std::string& open_case,
+                           const std::string& shaded_case) {
+  return json_text(operation_value(operated, rule, open_case, shaded_case));
 }
 
 }  // namespace dayphoton::study

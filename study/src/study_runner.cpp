@@ -38,6 +38,7 @@
 #include "dayphoton/weather/hourly_weather.h"
 #include "dayphoton/study/annual_blocks.h"
 #include "json_text.h"
+#include "json_values.h"
 #include "operated_case.h"
 #include "points_in_time_case.h"
 #include "run_context.h"
@@ -303,7 +304,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       add_verdict_uncertainty(ctx.results->grids[g], verdicts);
       progress.advance(ss.sky.steps.size());
       progress.end();
-      grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
+      grids_json[g]["annual"] = grid_metrics_value(study, annual_settings);
     }
   } else if (annual) {
     const AnnualSky& sky = annual_sky(project, ctx);
@@ -330,7 +331,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       add_verdict_uncertainty(ctx.results->grids[g], verdicts);
       progress.advance(sky.steps.size());
       progress.end();
-      grids_json[g]["annual"] = nlohmann::json::parse(grid_metrics_json(study, annual_settings));
+      grids_json[g]["annual"] = grid_metrics_value(study, annual_settings);
     }
   }
   // 7. Point-in-time cases.
