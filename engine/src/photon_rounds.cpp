@@ -12,23 +12,6 @@ namespace {
 /// pre-pass's give-up (photon_tracer.cpp).
 constexpr std::uint64_t DarkSourceAttempts = 65536;
 
-void append(TracedPhotons& to, TracedPhotons&& more) {
-  to.surface.insert(to.surface.end(), more.surface.begin(), more.surface.end());
-  to.planes.resize(std::max(to.planes.size(), more.planes.size()));
-  for (std::size_t g = 0; g < more.planes.size(); ++g)
-    to.planes[g].insert(to.planes[g].end(), more.planes[g].begin(), more.planes[g].end());
-  SourceTally& t = to.tallies.at(0);
-  const SourceTally& m = more.tallies.at(0);
-  t.prepass_attempts += m.prepass_attempts;
-  t.entered += m.entered;
-  t.stored_global += m.stored_global;
-  t.stored_caustic += m.stored_caustic;
-  t.stored_direct += m.stored_direct;
-  t.rays += m.rays;
-  t.bound_flux = m.bound_flux;
-  t.nothing_stores = m.nothing_stores;
-}
-
 }  // namespace
 
 std::uint64_t SourcePhotonRecord::stored() const {
@@ -37,42 +20,78 @@ std::uint64_t SourcePhotonRecord::stored() const {
   return t.stored_global + t.stored_caustic + t.stored_direct;
 }
 
+SourcePhotonRecord empty_source_record(const Scene& scene, const std::vector<Material>& materials,
+                                       const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
+                                       std::size_t source) {
+  SourcePhotonRecord record;
+  record.raw.planes.resize(planes.size());
+  record.raw.tallies.resize(1);
+  record.raw.tallies[0].bound_flux = emitter.bound_flux(static_cast<std::uint32_t>(source));
+  record.raw.tallies[0].nothing_stores = !can_store_photons(scene, materials, planes);
+  return record;
+}
+
+std::optional<std::uint64_t> next_pilot_attempts(const SourcePhotonRecord& record, std::size_t target,
+                                                 std::size_t max_prepass_attempts_per_target) {
+  const SourceTally& t = record.raw.tallies.at(0);
+  if (target == 0 || !(t.bound_flux > 0) || t.nothing_stores) return std::nullopt;
+  if (record.attempts == 0) return std::max<std::uint64_t>(1, (target + 3) / 4);
+  const std::uint64_t limit =
+      std::max<std::uint64_t>(1, std::uint64_t(max_prepass_attempts_per_target) * std::uint64_t(target));
+  const std::uint64_t attempts = record.attempts;
+  if (t.stored_global + t.stored_caustic >= target) return std::nullopt;
+  if (attempts >= limit) return std::nullopt;
+  if (t.entered == 0 && attempts >= DarkSourceAttempts) return std::nullopt;
+  if (t.entered >= DarkSourceAttempts && t.stored_global + t.stored_caustic + t.stored_direct == 0) return std::nullopt;
+  return std::min(limit, attempts * 2);
+}
+
+AttemptRange round_attempt_range(const Scene& scene, const std::vector<Material>& materials,
+                                 const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
+                                 const TracingOptions& options, std::size_t source, std::uint64_t first,
+                                 std::uint64_t last) {
+  if (last > first && emitter.bound_flux(static_cast<std::uint32_t>(source)) > 0 &&
+      can_store_photons(scene, materials, planes))
+    return trace_attempt_range(scene, materials, emitter, planes, options, source, first, last, StorageProbabilities{});
+  AttemptRange none;
+  none.planes.resize(planes.size());
+  return none;
+}
+
+void append_round_range(SourcePhotonRecord& record, std::uint64_t last, AttemptRange&& range) {
+  TracedPhotons& to = record.raw;
+  SourceTally& t = to.tallies.at(0);
+  if (last <= record.attempts) return;
+  to.surface.insert(to.surface.end(), range.surface.begin(), range.surface.end());
+  to.planes.resize(std::max(to.planes.size(), range.planes.size()));
+  for (std::size_t g = 0; g < range.planes.size(); ++g)
+    to.planes[g].insert(to.planes[g].end(), range.planes[g].begin(), range.planes[g].end());
+  if (t.bound_flux > 0 && !t.nothing_stores) t.prepass_attempts += last - record.attempts;
+  t.entered += range.counts.entered;
+  t.stored_global += range.counts.stored_global;
+  t.stored_caustic += range.counts.stored_caustic;
+  t.stored_direct += range.counts.stored_direct;
+  t.rays += range.counts.rays;
+  record.attempts = last;
+  range = AttemptRange{};
+}
+
 void extend_source_photons(const Scene& scene, const std::vector<Material>& materials, const PortEmitter& emitter,
                            const std::vector<ReceiverPlane>& planes, const TracingOptions& options,
                            std::size_t source, std::uint64_t attempts, SourcePhotonRecord& record) {
-  if (record.raw.tallies.empty()) {
-    record.raw.planes.resize(planes.size());
-    record.raw.tallies.resize(1);
-    record.raw.tallies[0].bound_flux = emitter.bound_flux(static_cast<std::uint32_t>(source));
-  }
+  if (record.raw.tallies.empty()) record = empty_source_record(scene, materials, emitter, planes, source);
   if (attempts <= record.attempts) return;
-  append(record.raw,
-         trace_source_attempts(scene, materials, emitter, planes, options, source, record.attempts, attempts));
-  record.attempts = attempts;
+  append_round_range(record, attempts,
+                     round_attempt_range(scene, materials, emitter, planes, options, source, record.attempts, attempts));
 }
 
 SourcePhotonRecord pilot_source_photons(const Scene& scene, const std::vector<Material>& materials,
                                         const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
                                         const TracingOptions& options, std::size_t source, std::size_t target) {
-  SourcePhotonRecord record;
-  extend_source_photons(scene, materials, emitter, planes, options, source, 0, record);
-  const SourceTally& t = record.raw.tallies[0];
-  if (target == 0 || !(t.bound_flux > 0) || !can_store_photons(scene, materials, planes)) {
-    record.raw.tallies[0].nothing_stores = !can_store_photons(scene, materials, planes);
-    return record;
-  }
-  const std::uint64_t limit = std::max<std::uint64_t>(
-      1, std::uint64_t(options.max_prepass_attempts_per_target) * std::uint64_t(target));
-  std::uint64_t attempts = std::max<std::uint64_t>(1, (target + 3) / 4);
-  for (;;) {
-    extend_source_photons(scene, materials, emitter, planes, options, source, attempts, record);
-    const SourceTally& now = record.raw.tallies[0];
-    if (now.stored_global + now.stored_caustic >= target) break;
-    if (attempts >= limit) break;
-    if (now.entered == 0 && attempts >= DarkSourceAttempts) break;
-    if (now.entered >= DarkSourceAttempts && now.stored_global + now.stored_caustic + now.stored_direct == 0) break;
-    attempts = std::min(limit, attempts * 2);
-  }
+  SourcePhotonRecord record = empty_source_record(scene, materials, emitter, planes, source);
+  while (const std::optional<std::uint64_t> next =
+             next_pilot_attempts(record, target, options.max_prepass_attempts_per_target))
+    extend_source_photons(scene, materials, emitter, planes, options, source, *next, record);
   return record;
 }
 

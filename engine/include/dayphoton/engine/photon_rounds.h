@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "dayphoton/engine/photon_tracer.h"
@@ -27,6 +28,30 @@ struct SourcePhotonRecord {
   std::uint64_t attempts = 0;
   std::uint64_t stored() const;  ///< stored photons of every class (kept or only counted)
 };
+
+/// A source's record before its first attempt: its bound flux, whether anything stores.
+SourcePhotonRecord empty_source_record(const Scene& scene, const std::vector<Material>& materials,
+                                       const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
+                                       std::size_t source);
+
+/// The pilot's next step for a source whose record holds its pilot so far (pilot_source_photons):
+/// the attempts to extend the record to, or nothing when the pilot is done. Depends only on
+/// the record's counts, which are sums over attempts: the attempts may be traced in ranges,
+/// anywhere, and the decision is the same.
+std::optional<std::uint64_t> next_pilot_attempts(const SourcePhotonRecord& record, std::size_t target,
+                                                 std::size_t max_prepass_attempts_per_target);
+
+/// Attempts [first, last) of a source as the rounds trace them (every class stored, each
+/// photon's flux relative to its attempt's); an empty range for a source that is not traced
+/// (zero bound flux, nothing stores). Any split of [a, b) appended in order gives [a, b).
+AttemptRange round_attempt_range(const Scene& scene, const std::vector<Material>& materials,
+                                 const PortEmitter& emitter, const std::vector<ReceiverPlane>& planes,
+                                 const TracingOptions& options, std::size_t source, std::uint64_t first,
+                                 std::uint64_t last);
+
+/// Appends `range`, attempts [record.attempts, last) traced by round_attempt_range (in one
+/// piece or several appended in order), to the record.
+void append_round_range(SourcePhotonRecord& record, std::uint64_t last, AttemptRange&& range);
 
 /// The pilot of one source: attempts doubled from ceil(target / 4) until `target` photons
 /// (global and caustic) are stored, or options.max_prepass_attempts_per_target x target
