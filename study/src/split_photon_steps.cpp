@@ -3,82 +3,19 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <optional>
 #include <stdexcept>
-#include <type_traits>
 
 #include "dayphoton/dist/distribute_jobs.h"
 #include "dayphoton/engine/source_passes.h"
 #include "dayphoton/study/photon_range_step.h"
 #include "dayphoton/study/plan_policy.h"
+#include "attempt_range_wire.h"
 
 namespace dayphoton::study {
 namespace {
 
 using dist::ByteBuffer;
-
-// One range's result as a message: its counts, then per photon list (the surface's, then
-// each plane's) the count and the 32-byte records as this build lays them out (every rank
-// runs the same build, as for the rest of the run's messages).
-static_assert(std::is_trivially_copyable_v<engine::Photon>, "photon records travel as bytes");
-
-void put_bytes(ByteBuffer& out, const void* data, std::size_t n) {
-  const std::size_t at = out.size();
-  out.resize(at + n);
-  if (n > 0) std::memcpy(out.data() + at, data, n);
-}
-
-void put_u64(ByteBuffer& out, std::uint64_t v) { put_bytes(out, &v, sizeof v); }
-
-std::uint64_t get_u64(const ByteBuffer& in, std::size_t& at) {
-  std::uint64_t v = 0;
-  if (in.size() - at < sizeof v) throw std::runtime_error("photon range: truncated message");
-  std::memcpy(&v, in.data() + at, sizeof v);
-  at += sizeof v;
-  return v;
-}
-
-void put_photons(ByteBuffer& out, const std::vector<engine::Photon>& photons) {
-  put_u64(out, photons.size());
-  put_bytes(out, photons.data(), photons.size() * sizeof(engine::Photon));
-}
-
-std::vector<engine::Photon> get_photons(const ByteBuffer& in, std::size_t& at) {
-  const std::uint64_t n = get_u64(in, at);
-  if (n > (in.size() - at) / sizeof(engine::Photon)) throw std::runtime_error("photon range: truncated message");
-  std::vector<engine::Photon> photons(n);
-  if (n > 0) std::memcpy(photons.data(), in.data() + at, n * sizeof(engine::Photon));
-  at += n * sizeof(engine::Photon);
-  return photons;
-}
-
-ByteBuffer encode_range(const engine::AttemptRange& r) {
-  ByteBuffer out;
-  const engine::AttemptCounts& c = r.counts;
-  for (std::uint64_t v : {c.entered, c.stored_global, c.stored_caustic, c.stored_direct, c.rays, c.scattered_indoors})
-    put_u64(out, v);
-  put_photons(out, r.surface);
-  put_u64(out, r.planes.size());
-  for (const std::vector<engine::Photon>& plane : r.planes) put_photons(out, plane);
-  return out;
-}
-
-engine::AttemptRange decode_range(const ByteBuffer& in) {
-  engine::AttemptRange r;
-  std::size_t at = 0;
-  engine::AttemptCounts& c = r.counts;
-  for (std::uint64_t* v : {&c.entered, &c.stored_global, &c.stored_caustic, &c.stored_direct, &c.rays,
-                           &c.scattered_indoors})
-    *v = get_u64(in, at);
-  r.surface = get_photons(in, at);
-  const std::uint64_t planes = get_u64(in, at);
-  if (planes > in.size()) throw std::runtime_error("photon range: malformed message");
-  r.planes.resize(planes);
-  for (std::vector<engine::Photon>& plane : r.planes) plane = get_photons(in, at);
-  if (at != in.size()) throw std::runtime_error("photon range: malformed message");
-  return r;
-}
 
 /// One split source between rounds.
 struct SplitSource {
@@ -152,11 +89,11 @@ void run_split_photon_steps(dist::Communicator& comm, const std::vector<Step>& s
     set.cost_of = [&](std::size_t j) { return double(jobs[j].last - jobs[j].first); };
     set.compute = [&](std::size_t j) {
       const RangeJob& job = jobs[j];
-      return encode_range(sources[job.source].ranges->trace(job.first, job.last, job.storage));
+      return encode_attempt_range(sources[job.source].ranges->trace(job.first, job.last, job.storage));
     };
     set.deliver = [&](std::size_t j, ByteBuffer bytes) {
       SplitSource& s = sources[jobs[j].source];
-      engine::AttemptRange range = decode_range(bytes);
+      engine::AttemptRange range = decode_attempt_range(bytes);
       s.pass_counts += range.counts;
       engine::append_attempt_range(s.photons, std::move(range));
     };
