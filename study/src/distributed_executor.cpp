@@ -13,6 +13,7 @@
 #include "dayphoton/study/plan_policy.h"
 #include "dayphoton/study/split_photon_steps.h"
 #include "distributed_blocks.h"
+#include "distributed_round_work.h"
 #include "string_list_wire.h"
 
 namespace dayphoton::study {
@@ -42,6 +43,7 @@ class DistributedExecutor final : public StepExecutor {
         misses.push_back(i);
       }
     }
+    misses = run_collective(steps, misses, computed, done);
     if (misses.empty()) return computed;
     if (misses.size() == 1 && uses_sensor_blocks(m_comm, steps[misses[0]], m_block_size)) {
       run_in_sensor_blocks(steps[misses[0]]);
@@ -86,7 +88,27 @@ class DistributedExecutor final : public StepExecutor {
     return compute_blocks_to_root(m_comm, blocks, name, m_block_size);
   }
 
+  RoundWork& round_work() override { return *m_round_work; }
+
  private:
+  /// The collective steps among `misses` (Step::collective), computed by every rank alike
+  /// (each talks to the others through round_work()); rank 0 stores them. Returns the others.
+  std::vector<std::size_t> run_collective(const std::vector<Step>& steps, const std::vector<std::size_t>& misses,
+                                          std::vector<char>& computed, const StepDone& done) {
+    std::vector<std::size_t> rest;
+    for (std::size_t i : misses) {
+      if (!steps[i].collective) {
+        rest.push_back(i);
+        continue;
+      }
+      const std::vector<std::string> artefacts = steps[i].compute();
+      if (m_comm.rank() == dist::RootRank) store(steps[i], artefacts);
+      computed[i] = 1;
+      if (done) done(i, true);
+    }
+    return rest;
+  }
+
   /// The big photon sources among `misses`, traced in attempt ranges over the ranks
   /// (split_photon_steps.h), each taken by every rank and stored by rank 0. Returns the
   /// misses left to compute whole.
@@ -194,6 +216,7 @@ class DistributedExecutor final : public StepExecutor {
 
   dist::Communicator& m_comm;
   const std::size_t m_block_size;
+  const std::unique_ptr<RoundWork> m_round_work = make_distributed_round_work(m_comm, m_block_size);
 };
 
 }  // namespace

@@ -86,6 +86,10 @@ struct Step {
   std::function<double()> cost;
   /// Optional: the step by sensor blocks (header comment).
   std::optional<SensorBlocks> blocks;
+  /// compute() takes every process of the run (it calls the executor's RoundWork,
+  /// round_work.h: the accuracy rounds): an executor over several processes runs it on every
+  /// process alike, rather than on one; every process then holds its typed result.
+  bool collective = false;
 };
 
 /// A step of one artefact of type T: `compute` returns the value, which is kept in `slot`

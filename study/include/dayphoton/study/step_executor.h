@@ -12,7 +12,9 @@
 // subclass overriding run_batch. Rank 0 looks every step up; the misses are shared out over
 // the ranks, each rank runs compute() of its share and sends the returned bytes to rank 0,
 // which take()s them in step order and stores them; the other ranks write nothing.
-// lookup() and store() below are what such an executor reuses.
+// lookup() and store() below are what such an executor reuses. A collective step
+// (Step::collective, the accuracy rounds) is computed by every process alike, through
+// round_work(); rank 0 stores it.
 #pragma once
 
 #include <cstddef>
@@ -23,6 +25,7 @@
 
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/plan_step.h"
+#include "dayphoton/study/round_work.h"
 
 namespace dayphoton::study {
 
@@ -61,6 +64,9 @@ class StepExecutor {
   /// sensor order, the other ranks an empty vector (`name` names a failing block). Throws
   /// std::logic_error on an executor of one process.
   virtual std::vector<std::vector<std::string>> blocks_to_root(const SensorBlocks& blocks, const std::string& name);
+  /// The work of a collective step (Step::collective), e.g. the accuracy rounds' tracing and
+  /// estimates (round_work.h): this process's alone here, the ranks' in the distributed executor.
+  virtual RoundWork& round_work() { return *m_local_work; }
 
  protected:
   /// Stores the bytes of a step's outputs (one per output, in order).
@@ -70,6 +76,9 @@ class StepExecutor {
 
   const ArtifactStore& m_store;
   const bool m_force;
+
+ private:
+  const std::unique_ptr<RoundWork> m_local_work = make_local_round_work();
 };
 
 /// The executor of one process: a batch's steps in parallel over this machine's cores (TBB).
