@@ -16,7 +16,10 @@
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/round_work.h"
+#include "dayphoton/study/sensor_blocks.h"
 #include "dayphoton/study/step_executor.h"
+#include "lazy_value.h"
 #include <nlohmann/json.hpp>
 
 namespace dayphoton::study {
@@ -52,6 +55,78 @@ std::vector<std::size_t> sensors_at_or_below_percentile(const std::vector<double
   const std::size_t keep = static_cast<std::size_t>(std::ceil(percentile / 100.0 * double(lit.size())));
   lit.resize(std::min(lit.size(), keep));
   return lit;
+}
+
+/// Grid g's coefficients of one round, estimated by sensor blocks through `work` (round_work.h):
+/// the direct part given (`direct`, `direct_variance`, the whole grid's), the photon part from
+/// `photons` with the sources' scales. Every block's rows are the whole grid's (sensor_range.h),
+/// so the joined coefficients are those of the grid estimated at once.
+engine::DaylightCoefficients round_coefficients(const AccuracyCase& c, std::size_t g,
+                                                const engine::TracedPhotons& photons, const std::vector<double>& scale,
+                                                const std::vector<Vec3>& direct,
+                                                const std::vector<double>& direct_variance, RoundWork& work,
+                                                const std::string& name) {
+  const std::size_t n = c.sources->size();
+  const SensorGrid& grid = (*c.grids)[g];
+  LazyValue<engine::GridPhotons> maps;  // built once in a process that estimates some block
+  auto build = [&] {
+    const int plane = (*c.plane_of_grid)[g];
+    engine::GridPhotons gp =
+        plane >= 0 ? engine::GridPhotons::for_plane((*c.planes)[std::size_t(plane)], photons.planes[std::size_t(plane)], n)
+        : c.gather ? engine::GridPhotons::for_gather(photons.surface, n)
+                   : engine::GridPhotons::for_surfaces(photons.surface, n);
+    if (!gp.gather()) gp.set_source_scale(scale);
+    return gp;
+  };
+  const std::vector<std::string> blocks = work.estimate(
+      grid.points.size(),
+      [&](std::size_t begin, std::size_t end) {
+        const engine::GridPhotons& gp = maps.get(build);
+        engine::DaylightCoefficients dc;
+        dc.sensors = end - begin;
+        dc.sources = n;
+        dc.direct.assign(direct.begin() + std::ptrdiff_t(begin * n), direct.begin() + std::ptrdiff_t(end * n));
+        dc.direct_variance.assign(direct_variance.begin() + std::ptrdiff_t(begin * n),
+                                  direct_variance.begin() + std::ptrdiff_t(end * n));
+        dc.caustic.assign(dc.sensors * n, Vec3{0, 0, 0});
+        dc.global.assign(dc.sensors * n, Vec3{0, 0, 0});
+        engine::photon_coefficients(*c.scene, *c.materials, *c.sources, gp, grid.points, c.estimating, dc,
+                                    {begin, end});
+        return encode_coefficients(dc);
+      },
+      name);
+  return decode_coefficients(join_coefficient_blocks(blocks));
+}
+
+/// Grid g's direct component (shadow rays, the same every round) and its variance, by sensor
+/// blocks through `work`.
+void grid_direct(const AccuracyCase& c, std::size_t g, RoundWork& work, std::vector<Vec3>& direct,
+                 std::vector<double>& variance) {
+  const std::size_t n = c.sources->size();
+  const SensorGrid& grid = (*c.grids)[g];
+  const std::vector<std::string> blocks = work.estimate(
+      grid.points.size(),
+      [&](std::size_t begin, std::size_t end) {
+        engine::DaylightCoefficients dc;
+        dc.sensors = end - begin;
+        dc.sources = n;
+        dc.direct = engine::direct_coefficients(*c.scene, *c.materials, *c.sources, grid.points, c.estimating.direct,
+                                                &dc.direct_variance, {begin, end});
+        dc.caustic.assign(dc.sensors * n, Vec3{0, 0, 0});
+        dc.global.assign(dc.sensors * n, Vec3{0, 0, 0});
+        dc.photon_variance.assign(dc.sensors * n, 0.0);
+        return encode_coefficients(dc);
+      },
+      "accuracy rounds: direct component of grid " + grid.name);
+  engine::DaylightCoefficients joined = decode_coefficients(join_coefficient_blocks(blocks));
+  direct = std::move(joined.direct);
+  variance = std::move(joined.direct_variance);
+}
+
+/// Rays per attempt of a source so far, plus one (its emission), for sharing the tracing out:
+/// 1 before its first attempt.
+double cost_per_attempt(const engine::SourcePhotonRecord& r) {
+  return r.attempts > 0 ? 1.0 + double(r.raw.tallies.at(0).rays) / double(r.attempts) : 1.0;
 }
 
 }  // namespace
@@ -106,6 +181,11 @@ RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::ve
 
 AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
                                    const std::function<void(const std::string&)>& log) {
+  return run_accuracy_rounds(c, goal, log, *make_local_round_work());
+}
+
+AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
+                                   const std::function<void(const std::string&)>& log, RoundWork& work) {
   const engine::Scene& scene = *c.scene;
   const std::vector<engine::Material>& materials = *c.materials;
   const std::vector<engine::ReceiverPlane>& planes = *c.planes;
@@ -115,6 +195,22 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   const Clock::time_point start = Clock::now();
   double trace_seconds = 0;
   std::uint64_t traced_attempts = 0;
+  // Extends every source p with next[p] > its attempts to next[p] (one call of the work: the
+  // sources' attempt ranges over the processes); false if none grows.
+  auto extend_to = [&](std::vector<engine::SourcePhotonRecord>& records, const std::vector<std::uint64_t>& next) {
+    std::vector<RoundWork::AttemptRequest> requests;
+    for (std::size_t p = 0; p < n; ++p)
+      if (next[p] > records[p].attempts)
+        requests.push_back({p, records[p].attempts, next[p], cost_per_attempt(records[p])});
+    if (requests.empty()) return false;
+    std::vector<engine::AttemptRange> ranges =
+        work.trace(requests, [&](std::size_t p, std::uint64_t first, std::uint64_t last) {
+          return engine::round_attempt_range(scene, materials, emitter, planes, c.tracing, p, first, last);
+        });
+    for (std::size_t i = 0; i < requests.size(); ++i)
+      engine::append_round_range(records[requests[i].source], requests[i].last, std::move(ranges[i]));
+    return true;
+  };
 
   // Round 1, the pilot. The reference count of each source (its photons at photons_per_bin)
   // fixes the scale the bandwidth is meant for (GridPhotons::set_source_scale).
@@ -126,10 +222,19 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   }
   {
     const Clock::time_point t = Clock::now();
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t p) {
-      const auto target = static_cast<std::size_t>(std::max(1.0, std::round(reference[p] * AccuracyPilotFraction)));
-      records[p] = engine::pilot_source_photons(scene, materials, emitter, planes, c.tracing, p, target);
-    });
+    std::vector<std::size_t> target(n);
+    for (std::size_t p = 0; p < n; ++p) {
+      target[p] = static_cast<std::size_t>(std::max(1.0, std::round(reference[p] * AccuracyPilotFraction)));
+      records[p] = engine::empty_source_record(scene, materials, emitter, planes, p);
+    }
+    // engine::pilot_source_photons of every source, one doubling of each at a time: each
+    // decided from the record's counts, summed over however many ranges traced it.
+    std::vector<std::uint64_t> next(n);
+    do {
+      for (std::size_t p = 0; p < n; ++p)
+        next[p] = engine::next_pilot_attempts(records[p], target[p], c.tracing.max_prepass_attempts_per_target)
+                      .value_or(records[p].attempts);
+    } while (extend_to(records, next));
     trace_seconds += seconds_since(t);
     for (const auto& r : records) traced_attempts += r.attempts;
   }
@@ -153,9 +258,7 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   // The direct component does not change from round to round.
   std::vector<std::vector<Vec3>> direct(grids.size());
   std::vector<std::vector<double>> direct_variance(grids.size());
-  for (std::size_t g = 0; g < grids.size(); ++g)
-    direct[g] = engine::direct_coefficients(scene, materials, *c.sources, grids[g].points, c.estimating.direct,
-                                            &direct_variance[g]);
+  for (std::size_t g = 0; g < grids.size(); ++g) grid_direct(c, g, work, direct[g], direct_variance[g]);
 
   const std::vector<double> luminance = bin_luminance(*c.overcast_vector);
   const double df_scale = 100.0 * RadianceWhiteEfficacy_lm_per_W / c.horizontal_illuminance_lux;
@@ -173,20 +276,9 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     result.outcome.reached_percent.assign(grids.size(), 0.0);
     bool met = true;
     for (std::size_t g = 0; g < grids.size(); ++g) {
-      const int plane = (*c.plane_of_grid)[g];
-      engine::GridPhotons gp =
-          plane >= 0 ? engine::GridPhotons::for_plane(planes[std::size_t(plane)], photons.planes[std::size_t(plane)], n)
-          : c.gather ? engine::GridPhotons::for_gather(photons.surface, n)
-                     : engine::GridPhotons::for_surfaces(photons.surface, n);
-      if (!gp.gather()) gp.set_source_scale(scale);
       engine::DaylightCoefficients& dc = result.coefficients[g];
-      dc.sensors = grids[g].points.size();
-      dc.sources = n;
-      dc.direct = direct[g];
-      dc.direct_variance = direct_variance[g];
-      dc.caustic.assign(dc.sensors * n, Vec3{0, 0, 0});
-      dc.global.assign(dc.sensors * n, Vec3{0, 0, 0});
-      engine::photon_coefficients(scene, materials, *c.sources, gp, grids[g].points, c.estimating, dc);
+      dc = round_coefficients(c, g, photons, scale, direct[g], direct_variance[g], work,
+                              "accuracy round " + std::to_string(round) + ", grid " + grids[g].name);
       GridVariance& v = variances[g];
       v.df_percent = daylight_factor_percent(dc.to_matrix(), *c.overcast_vector, c.horizontal_illuminance_lux);
       v.direct_variance.assign(dc.sensors, 0.0);
@@ -263,8 +355,9 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
       }
     }
     if (goal.max_seconds > 0) {
-      const double per_attempt_s = traced_attempts > 0 ? trace_seconds / double(traced_attempts) : 0.0;
-      const double room = goal.max_seconds - seconds_since(start) - estimate_seconds;
+      // The first process's clock, so that every process cuts the round alike (round_work.h).
+      const double per_attempt_s = traced_attempts > 0 ? work.agreed(trace_seconds) / double(traced_attempts) : 0.0;
+      const double room = goal.max_seconds - work.agreed(seconds_since(start) + estimate_seconds);
       const double need = per_attempt_s * more_attempts;
       if (room < need && (need > 0 ? std::max(0.0, room / need) : 0.0) < share) {
         share = need > 0 ? std::max(0.0, room / need) : 0.0;
@@ -287,9 +380,7 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     }
     for (std::size_t p = 0; p < n; ++p) traced_attempts += next[p] - records[p].attempts;
     const Clock::time_point t = Clock::now();
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t p) {
-      engine::extend_source_photons(scene, materials, emitter, planes, c.tracing, p, next[p], records[p]);
-    });
+    extend_to(records, next);
     trace_seconds += seconds_since(t);
   }
   for (const auto& r : records) result.outcome.final_attempts.push_back(r.attempts);
@@ -318,15 +409,17 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
   for (const SensorGrid& g : grids) grid_keys.push_back(coefficients_key(keys, g, c.estimating));
   const std::string outcome_key = grid_keys.empty() ? std::string("none") : grid_keys.front();
   // One step (plan_step.h): the coefficients of every grid, then the outcome. Not a pure
-  // function of its inputs when max_seconds stops the rounds, so it always runs where it is
-  // asked (docs/architecture.md, "Plan and executor").
+  // function of its inputs when max_seconds stops the rounds; collective, so every process
+  // runs it together (rank 0's clock decides, round_work.h) rather than one process alone.
   CaseAccuracy out;
   Step step;
   step.kind = StepKind::SkyCoefficients;
   for (const std::string& k : grid_keys) step.outputs.push_back({"coefficients", k});
   step.outputs.push_back({"accuracy", outcome_key});
+  // Collective (plan_step.h): every process of the run takes part in the rounds (round_work.h).
+  step.collective = true;
   step.compute = [&]() -> std::vector<std::string> {
-    AccuracyResult r = run_accuracy_rounds(c, goal, log);
+    AccuracyResult r = run_accuracy_rounds(c, goal, log, executor.round_work());
     std::vector<std::string> bytes;
     for (std::size_t g = 0; g < grids.size(); ++g) bytes.push_back(encode_coefficients(r.coefficients[g]));
     // Kept as the cache keeps the coefficients, so a later run from the cache writes the same bytes.

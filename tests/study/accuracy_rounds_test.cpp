@@ -3,13 +3,17 @@
 // (2000 photons per bin, bandwidth 20, 16 direct samples, sensors 1 m apart): the target
 // is met and the spread of three seeds agrees with it, sources that bring nothing get no
 // photons after the pilot, the budgets stop the rounds and say so, and one and two threads
-// give the same bytes.
+// give the same bytes, as do 1 to 3 ranks (in-process, tests/dist/in_process_ranks.h) sharing
+// the rounds' tracing and estimates through the distributed executor's RoundWork.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <exception>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,7 +28,11 @@
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/study/accuracy_rounds.h"
+#include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/distributed_executor.h"
+#include "../dist/in_process_ranks.h"
 
 namespace dayphoton::study {
 namespace {
@@ -229,6 +237,100 @@ TEST(AccuracyTarget, OneAndTwoThreadsGiveTheSameBytes) {
   EXPECT_EQ(0, std::memcmp(x.global.data(), y.global.data(), x.global.size() * sizeof(Vec3)));
   EXPECT_EQ(0, std::memcmp(x.direct.data(), y.direct.data(), x.direct.size() * sizeof(Vec3)));
   EXPECT_EQ(0, std::memcmp(x.photon_variance.data(), y.photon_variance.data(), x.photon_variance.size() * sizeof(double)));
+}
+
+/// A RoundWork that counts the ranges it is asked for and hands them on.
+class CountingWork final : public RoundWork {
+ public:
+  explicit CountingWork(RoundWork& inner) : m_inner(inner) {}
+  std::vector<engine::AttemptRange> trace(const std::vector<AttemptRequest>& requests, const RangeTracer& t) override {
+    ++calls;
+    requests_total += requests.size();
+    return m_inner.trace(requests, [&](std::size_t p, std::uint64_t first, std::uint64_t last) {
+      ++ranges;
+      return t(p, first, last);
+    });
+  }
+  std::vector<std::string> estimate(std::size_t sensors, const RowEstimator& rows, const std::string& name) override {
+    std::vector<std::string> b = m_inner.estimate(sensors, rows, name);
+    blocks += b.size();
+    return b;
+  }
+  double agreed(double value) override { return m_inner.agreed(value); }
+  int calls = 0;
+  std::size_t requests_total = 0;
+  std::atomic<int> ranges{0};
+  std::size_t blocks = 0;
+
+ private:
+  RoundWork& m_inner;
+};
+
+// The rounds on 1, 2 and 3 in-process ranks (the distributed executor's RoundWork, sensor
+// blocks of 8 of the 48 sensors) give every rank the one-process rounds' bytes: outcome,
+// attempts per source, coefficients with their variances. With several ranks the requests
+// go out in more ranges than there are requests (a big source split) and the grid in 6 blocks.
+TEST(AccuracyTarget, OneToThreeRanksGiveTheOneProcessBytes) {
+  AccuracyGoal goal;
+  goal.target_percent = Target;
+  const AccuracyResult one = run(5, goal);
+  ASSERT_GE(one.outcome.rounds, 2u);
+  const std::string expected = encode_coefficients(one.coefficients[0]);
+  const Office office(5);
+  for (int ranks : {1, 2, 3}) {
+    SCOPED_TRACE(std::to_string(ranks) + " ranks");
+    std::vector<AccuracyResult> results(static_cast<std::size_t>(ranks));
+    std::vector<int> calls(results.size()), ranges(results.size());
+    std::vector<std::size_t> requests(results.size());
+    std::vector<std::size_t> blocks(results.size());
+    const auto errors = dist::test::run_ranks(ranks, [&](dist::Communicator& comm) {
+      const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                        ("accuracy_ranks_" + std::to_string(ranks) + "_" + std::to_string(comm.rank()));
+      std::filesystem::remove_all(dir);
+      const ArtifactStore store(dir.string());
+      const auto executor = make_distributed_executor(comm, store, false, 8);
+      CountingWork work(executor->round_work());
+      const auto r = static_cast<std::size_t>(comm.rank());
+      results[r] = run_accuracy_rounds(office.accuracy_case(), goal, [](const std::string&) {}, work);
+      calls[r] = work.calls;
+      requests[r] = work.requests_total;
+      ranges[r] = work.ranges;
+      blocks[r] = work.blocks;
+    });
+    for (const std::exception_ptr& e : errors)
+      if (e) {
+        try {
+          std::rethrow_exception(e);
+        } catch (const std::exception& x) {
+          ADD_FAILURE() << x.what();
+        }
+      }
+    int all_ranges = 0;
+    for (std::size_t r = 0; r < results.size(); ++r) {
+      const AccuracyResult& x = results[r];
+      EXPECT_EQ(x.outcome.rounds, one.outcome.rounds);
+      EXPECT_EQ(x.outcome.photons, one.outcome.photons);
+      EXPECT_EQ(x.outcome.stop_reason, one.outcome.stop_reason);
+      EXPECT_EQ(x.outcome.pilot_attempts, one.outcome.pilot_attempts);
+      EXPECT_EQ(x.outcome.final_attempts, one.outcome.final_attempts);
+      EXPECT_EQ(x.outcome.reached_percent, one.outcome.reached_percent);
+      ASSERT_EQ(x.coefficients.size(), 1u);
+      EXPECT_TRUE(encode_coefficients(x.coefficients[0]) == expected) << "rank " << r;
+      EXPECT_EQ(calls[r], calls[0]);
+      EXPECT_EQ(requests[r], requests[0]);
+      all_ranges += ranges[r];
+    }
+    // Every rank receives every range; each range is traced by one rank only.
+    if (ranks > 1) {
+      EXPECT_GT(ranges[0], 0);
+      EXPECT_LT(ranges[0], all_ranges) << "rank 0 traced every range";
+      EXPECT_GT(std::size_t(all_ranges), requests[0]) << "no request was split";
+      EXPECT_EQ(blocks[0], (1 + one.outcome.rounds) * 6u);  // the direct part, then each round, in 6 blocks
+    } else {
+      EXPECT_EQ(std::size_t(all_ranges), requests[0]);
+      EXPECT_EQ(blocks[0], 1 + one.outcome.rounds);  // one block per grid and round
+    }
+  }
 }
 
 // A photon budget below the pilot's photons and a time budget shorter than the pilot stop the

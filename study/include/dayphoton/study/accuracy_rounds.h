@@ -26,7 +26,11 @@
 // all sky sources), the time budget (checked before each round from the time per attempt so
 // far: the one stop that depends on the machine, so not deterministic), the round limit, or
 // when no source can help. Everything else is a pure function of the project and the seed:
-// the same bytes for any number of threads.
+// the same bytes for any number of threads and of MPI ranks. Under MPI every rank runs the
+// rounds (round_work.h): the attempt ranges of the pilot and of each round are traced over
+// the ranks and summed on every rank, each round's estimates go by sensor blocks over the
+// ranks and are gathered on every rank, and the time budget reads rank 0's clock, so every
+// rank takes the same decisions (docs/cluster.md "Accuracy rounds").
 #pragma once
 
 #include <cstddef>
@@ -41,6 +45,7 @@
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/study/round_work.h"
 
 namespace dayphoton::study {
 
@@ -125,7 +130,13 @@ struct AccuracyResult {
   AccuracyOutcome outcome;
 };
 
-/// The rounds of one case; `log` receives one line per round and the stop.
+/// The rounds of one case; `log` receives one line per round and the stop. The tracing (the
+/// pilot's doublings, each round's extension) and the estimates go through `work`
+/// (round_work.h): collective when it spans several processes, every one of which then runs
+/// these rounds alike and returns the same result.
+AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
+                                   const std::function<void(const std::string&)>& log, RoundWork& work);
+/// The same in this process alone (make_local_round_work).
 AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
                                    const std::function<void(const std::string&)>& log);
 
