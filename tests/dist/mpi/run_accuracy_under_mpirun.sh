@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The accuracy rounds over the ranks (study/round_work.h, docs/cluster.md "Accuracy rounds"):
+# a daylight-factor study of a small side-lit room with `simulation.accuracy` (target 2 %: the
+# pilot reaches about 2.3 %, so a second round is traced), run by one process and under
+# `mpirun -np 1`, `-np 2` and `-np 3 --oversubscribe`, each with a cache of its own. Every
+# rank runs the rounds: the pilot's doublings and round 2's extension traced in attempt ranges
+# over the ranks, the estimates by sensor blocks (80 sensors, blocks of 16). Every file of the
+# results folders must be byte-identical to the one-process run's, apart from run.log and
+# timings.json (times) and the output folder's name in summary.json, and so must the cached
+# artefacts (the rounds' coefficients and outcome); each run's log must show two rounds.
+# Usage: run_accuracy_under_mpirun.sh DAYPHOTON MPIEXEC
+set -uo pipefail
+dayphoton=$1
+mpiexec=$2
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+export TMPDIR=$tmp  # the other ranks' scratch folders go here
+fail=0
+
+cat > "$tmp/project.yaml" <<'YAML'
+version: 1
+study: daylight_factor
+site: {latitude: 51.5, longitude: -0.12, time_zone: 0}
+materials:
+  walls: {type: lambertian, reflectance: 0.5}
+  glass: {type: glass, transmittance: 0.6}
+geometry:
+  rooms:
+    - name: office
+      size: [4, 5, 3]
+      materials: {floor: walls, ceiling: walls, walls: walls}
+      windows: [{name: w, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]
+sensors:
+  grids:
+    - {name: workplane, room: office, height: 0.8, spacing: 0.5}
+simulation:
+  accuracy: {target_df_relative_stderr_percent: 2}
+outputs:
+  images: false
+  report: false
+YAML
+
+two_rounds() { grep -q '^accuracy round 2: ' "$1/run.log" && grep -q '^accuracy: target met after 2 round(s)$' "$1/run.log"; }
+
+"$dayphoton" run "$tmp/project.yaml" --output "$tmp/out/serial" --cache "$tmp/cache/serial" --quiet > /dev/null ||
+  { echo "the one-process run failed"; exit 1; }
+two_rounds "$tmp/out/serial" || { echo "the one-process run did not take two rounds:"; grep accuracy "$tmp/out/serial/run.log"; exit 1; }
+for np in 1 2 3; do
+  out=$tmp/out/np$np
+  timeout 120 "$mpiexec" -np $np --oversubscribe --bind-to none "$dayphoton" run "$tmp/project.yaml" --output "$out" \
+    --cache "$tmp/cache/np$np" --quiet > "$tmp/np$np.log" 2>&1
+  rc=$?
+  [ $rc -eq 0 ] || { echo "mpirun -np $np: exit $rc"; cat "$tmp/np$np.log"; fail=1; continue; }
+  two_rounds "$out" || { echo "mpirun -np $np: not two rounds"; fail=1; }
+  if ! diff -r -q -x run.log -x timings.json -x summary.json "$tmp/out/serial" "$out"; then
+    echo "mpirun -np $np wrote other results than the one-process run"
+    fail=1
+  fi
+  if ! cmp -s <(sed "s|$tmp/out/serial|OUT|g" "$tmp/out/serial/summary.json") <(sed "s|$out|OUT|g" "$out/summary.json"); then
+    echo "mpirun -np $np wrote another summary.json than the one-process run"
+    fail=1
+  fi
+  if ! diff -r -q "$tmp/cache/serial" "$tmp/cache/np$np" > /dev/null; then
+    echo "mpirun -np $np cached other artefacts than the one-process run"
+    diff -r -q "$tmp/cache/serial" "$tmp/cache/np$np" | head -5
+    fail=1
+  fi
+  [ $fail -eq 0 ] && echo "ok   mpirun -np $np: two rounds, results and cache byte-identical to the one-process run"
+done
+exit $fail
