@@ -9,6 +9,7 @@
 #include <exception>
 #include <iostream>
 #include <numeric>
+#include <optional>
 
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -632,6 +633,44 @@ TEST(PhotonRounds, ExtendingASourceEqualsOnePassOfAllItsAttempts) {
     EXPECT_DOUBLE_EQ(scaled.tallies[0].flux_per_attempt, emitter.bound_flux(std::uint32_t(source)) / 4000.0);
     EXPECT_FLOAT_EQ(scaled.planes[0][0].flux[1],
                     once.raw.planes[0][0].flux[1] * float(emitter.bound_flux(std::uint32_t(source)) / 4000.0));
+  }
+}
+
+// The pilot driven step by step (next_pilot_attempts), each doubling traced in three ranges
+// appended in order (as the ranks of an MPI run trace it), holds the photons, counts and
+// attempts of pilot_source_photons, bit for bit.
+TEST(PhotonRounds, ThePilotInRangesEqualsThePilotAtOnce) {
+  const SceneDescription d = window_room(MaterialType::Glass);
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models_of(d);
+  const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8)};
+  const SourceSet sources = SourceSet::sky_bins(sky::PatchBasis::tregenza());
+  const PortEmitter emitter(scene, sources);
+  TracingOptions o;
+  o.seed = 11;
+  const std::size_t target = 2000;
+  for (const std::size_t source : {std::size_t(0), std::size_t(10)}) {
+    const SourcePhotonRecord once = pilot_source_photons(scene, materials, emitter, planes, o, source, target);
+    SourcePhotonRecord ranged = empty_source_record(scene, materials, emitter, planes, source);
+    int doublings = 0;
+    while (const std::optional<std::uint64_t> next = next_pilot_attempts(ranged, target, o.max_prepass_attempts_per_target)) {
+      ++doublings;
+      const std::uint64_t a = ranged.attempts, b = *next;
+      AttemptRange range;
+      for (int k = 0; k < 3; ++k)
+        append_attempt_range(range, round_attempt_range(scene, materials, emitter, planes, o, source, a + (b - a) * k / 3,
+                                                        a + (b - a) * (k + 1) / 3));
+      append_round_range(ranged, b, std::move(range));
+    }
+    EXPECT_GE(doublings, 2) << "source " << source;
+    ASSERT_EQ(ranged.attempts, once.attempts);
+    EXPECT_GE(ranged.raw.tallies[0].stored_global + ranged.raw.tallies[0].stored_caustic, target);
+    ASSERT_EQ(ranged.raw.planes[0].size(), once.raw.planes[0].size());
+    EXPECT_EQ(0, std::memcmp(ranged.raw.planes[0].data(), once.raw.planes[0].data(),
+                             once.raw.planes[0].size() * sizeof(Photon)));
+    EXPECT_EQ(ranged.raw.tallies[0].rays, once.raw.tallies[0].rays);
+    EXPECT_EQ(ranged.raw.tallies[0].entered, once.raw.tallies[0].entered);
+    EXPECT_EQ(ranged.stored(), once.stored());
   }
 }
 
