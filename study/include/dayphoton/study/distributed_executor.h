@@ -21,7 +21,9 @@
 // by sensor blocks (plan_step.h SensorBlocks) when it has more than `block_size` sensors: the
 // blocks are the jobs of one distribute_jobs, rank 0 joins them in sensor order into the
 // whole grid's artefact (the same bytes, cache key and file as one process makes) and every
-// rank takes it. The accuracy rounds are one step without blocks: one rank runs them.
+// rank takes it. The accuracy rounds are a collective step (Step::collective): every rank runs
+// them, sharing their attempt ranges and sensor blocks through round_work()
+// (distributed_round_work.h), and rank 0 stores the result.
 //
 // The caller makes sure the other ranks write nothing the user sees (the app gives them a
 // scratch output folder it removes, app/main.cpp).
