@@ -3,7 +3,8 @@
 // factors reach a relative Monte Carlo standard error.
 //
 // Round 1 (the pilot) traces every source to a quarter of the reference count (photons_per_bin,
-// the ground 16 times as many) with engine::pilot_source_photons. After each round the grids'
+// the ground 16 times as many) as engine::pilot_source_photons does, each doubling decided by
+// engine::next_pilot_attempts. After each round the grids'
 // coefficients are estimated with their variances (engine/estimate_variance.h), and each
 // grid's measure is the 95th percentile (nearest rank) of its sensors' relative standard error
 // of DF (sensors with DF > 0): the value that 95 % of the sensors reach. A percentile rather
