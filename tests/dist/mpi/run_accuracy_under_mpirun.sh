@@ -2,7 +2,8 @@
 # The accuracy rounds over the ranks (study/round_work.h, docs/cluster.md "Accuracy rounds"):
 # a daylight-factor study of a small side-lit room with `simulation.accuracy` (target 2 %: the
 # pilot reaches about 2.3 %, so a second round is traced), run by one process and under
-# `mpirun -np 1`, `-np 2` and `-np 3 --oversubscribe`, each with a cache of its own. Every
+# `mpirun -np 1`, `-np 2` and `-np 3 --oversubscribe` (and `-np 2` with one thread per rank,
+# `--threads 1`), each with a cache of its own. Every
 # rank runs the rounds: the pilot's doublings and round 2's extension traced in attempt ranges
 # over the ranks, the estimates by sensor blocks (80 sensors, blocks of 16). Every file of the
 # results folders must be byte-identical to the one-process run's, apart from run.log and
@@ -46,10 +47,12 @@ two_rounds() { grep -q '^accuracy round 2: ' "$1/run.log" && grep -q '^accuracy:
 "$dayphoton" run "$tmp/project.yaml" --output "$tmp/out/serial" --cache "$tmp/cache/serial" --quiet > /dev/null ||
   { echo "the one-process run failed"; exit 1; }
 two_rounds "$tmp/out/serial" || { echo "the one-process run did not take two rounds:"; grep accuracy "$tmp/out/serial/run.log"; exit 1; }
-for np in 1 2 3; do
+for np in 1 2 3 2t1; do
   out=$tmp/out/np$np
-  timeout 120 "$mpiexec" -np $np --oversubscribe --bind-to none "$dayphoton" run "$tmp/project.yaml" --output "$out" \
-    --cache "$tmp/cache/np$np" --quiet > "$tmp/np$np.log" 2>&1
+  threads=()
+  [ $np = 2t1 ] && threads=(--threads 1)
+  timeout 120 "$mpiexec" -np ${np%t1} --oversubscribe --bind-to none "$dayphoton" run "$tmp/project.yaml" --output "$out" \
+    --cache "$tmp/cache/np$np" --quiet "${threads[@]}" > "$tmp/np$np.log" 2>&1
   rc=$?
   [ $rc -eq 0 ] || { echo "mpirun -np $np: exit $rc"; cat "$tmp/np$np.log"; fail=1; continue; }
   two_rounds "$out" || { echo "mpirun -np $np: not two rounds"; fail=1; }
