@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 #include "dayphoton/dist/distribute_jobs.h"
 #include "dayphoton/engine/source_passes.h"

@@ -25,6 +25,12 @@ std::vector<std::vector<std::string>> StepExecutor::blocks_to_root(const SensorB
   throw std::logic_error("blocks_to_root (" + name + ") on an executor of one process");
 }
 
+RoundWork& StepExecutor::round_work() {
+  // One process's work keeps no state, so every local executor shares one.
+  static const std::unique_ptr<RoundWork> local = make_local_round_work();
+  return *local;
+}
+
 bool StepExecutor::lookup(const Step& step) const {
   if (m_force) return false;
   std::vector<std::string> bytes;

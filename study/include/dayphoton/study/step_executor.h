@@ -66,7 +66,7 @@ class StepExecutor {
   virtual std::vector<std::vector<std::string>> blocks_to_root(const SensorBlocks& blocks, const std::string& name);
   /// The work of a collective step (Step::collective), e.g. the accuracy rounds' tracing and
   /// estimates (round_work.h): this process's alone here, the ranks' in the distributed executor.
-  virtual RoundWork& round_work() { return *m_local_work; }
+  virtual RoundWork& round_work();
 
  protected:
   /// Stores the bytes of a step's outputs (one per output, in order).
@@ -76,9 +76,6 @@ class StepExecutor {
 
   const ArtifactStore& m_store;
   const bool m_force;
-
- private:
-  const std::unique_ptr<RoundWork> m_local_work = make_local_round_work();
 };
 
 /// The executor of one process: a batch's steps in parallel over this machine's cores (TBB).
