@@ -229,7 +229,36 @@ def main():
         print(f"  {name:10s} {100 * share:5.1f} % of the light: {100 * statistics.mean(d):+.3f} %, front "
               f"{100 * statistics.mean(front):+.3f} %, back {100 * statistics.mean(back):+.3f} %, largest "
               f"{100 * max(d, key=abs):+.3f} %")
+
+    print()
+    print("per sensor group: the mean over the seeds vs backward (its standard error), and the ground bin's mean "
+          "difference as a share of the ground bin (its share of the DF)")
+    for name, group in sensor_groups(rows):
+        mm = statistics.mean(m[s] for s in group)
+        se = math.sqrt(sum(noise_in_mean[s] for s in group)) / len(group)
+        ground = statistics.mean((statistics.mean(r["band"][s][0] for r in runs) - bw_band[s][0]) / bw_band[s][0]
+                                 for s in group)
+        share = statistics.mean(bw_band[s][0] / bw[s] for s in group)
+        print(f"  {name:34s} {100 * mm:+.2f} % (+-{100 * se:.2f}); ground bin {100 * ground:+.1f} % "
+              f"({100 * share:.0f} % of the DF)")
     return 0
+
+
+def sensor_groups(rows):
+    """The office grid by distance to the walls: the sensors of the first and last column and
+    row are 0.5 m from a wall, the four corners from two."""
+    last_row, last_col = rows // COLUMNS - 1, COLUMNS - 1
+    col = lambda s: s % COLUMNS  # noqa: E731
+    row = lambda s: s // COLUMNS  # noqa: E731
+    side = lambda s: col(s) in (0, last_col)  # noqa: E731
+    return [
+        ("front half (y < 4.5 m), columns 1-9", [s for s in range(rows) if row(s) < 8 and not side(s)]),
+        ("back half interior (rows 8-13, 1-9)", [s for s in range(rows) if 8 <= row(s) < last_row and not side(s)]),
+        ("side walls, front half (rows 0-7)", [s for s in range(rows) if side(s) and row(s) < 8]),
+        ("side walls, back half (rows 8-13)", [s for s in range(rows) if side(s) and 8 <= row(s) < last_row]),
+        ("back row (y 7.5 m), columns 1-9", [s for s in range(rows) if row(s) == last_row and not side(s)]),
+        ("back corners", [s for s in range(rows) if row(s) == last_row and side(s)]),
+    ]
 
 
 if __name__ == "__main__":
