@@ -162,9 +162,9 @@ def main():
     noise_in_mean = [our_relvar[s] / n + bw_relvar[s] for s in range(rows)]
     bias_ms = statistics.mean(x * x for x in m) - statistics.mean(noise_in_mean)
     print()
-    print(f"{n} runs, seeds {args.first_seed}-{args.first_seed + n - 1}, settings: "
-          + ", ".join(f"{k} {getattr(args, k)}" for k in ("photons", "bandwidth", "accuracy", "direct_samples")
-                      if getattr(args, k) is not None) or "as shipped")
+    changed = ", ".join(f"{k} {getattr(args, k)}" for k in ("photons", "bandwidth", "accuracy", "direct_samples")
+                        if getattr(args, k) is not None)
+    print(f"{n} runs, seeds {args.first_seed}-{args.first_seed + n - 1}, settings: {changed or 'as shipped'}")
     print(f"time per run: wall {statistics.mean(r['wall'] for r in runs):.2f} s (min {min(r['wall'] for r in runs):.2f}),"
           f" CPU {statistics.mean(r['cpu'] for r in runs):.2f} s (min {min(r['cpu'] for r in runs):.2f})")
     print(f"one run vs backward: RMS over runs' mean square {100 * math.sqrt(single_ms):.3f} %")
