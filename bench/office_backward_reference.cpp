@@ -12,14 +12,17 @@
 //
 // Usage: office_backward_reference [paths_per_sensor=200000] [first_row=13] [last_row=14]
 //                                  [our_coefficients=projects/office/results/workplane/coefficients_sky.mtx]
-//                                  [write_matrix=FILE]
+//                                  [write_matrix=FILE] [write_csv=FILE]
 // Rows are the office grid's 15 rows (y = 0.5 + 0.5 r m). For the chosen rows it prints, with
 // RADIANCE's CIE overcast sky vector, the mean DF of this estimate (with its standard error),
 // of our photon-map coefficients, of RADIANCE's rfluxmtx matrix and of rtrace, then the
 // same per 12-degree sky band, so that a difference can be placed in the sky. With all rows
 // (0 14) and write_matrix, it writes its coefficients as a 165 x 146 RADIANCE matrix, which
 // `dayphoton annual --coefficients` turns into annual metrics like any exported matrix
-// (scripts/validate_office.py --backward FILE compares those with RADIANCE's).
+// (scripts/validate_office.py --backward FILE compares those with RADIANCE's). write_csv
+// writes, per traced sensor, its DF under RADIANCE's sky vector with the standard error of
+// the mean (`index,df_radiance_percent,df_radiance_se_percent`), the reference's own noise
+// that a comparison with it has to allow for (scripts/office_df_error.py).
 //
 // Any sensors: office_backward_reference --pts FILE [--paths N=200000] [--seed S=7]
 //                                        [--csv OUT] [--matrix OUT] [--project YAML]
@@ -272,6 +275,7 @@ int main(int argc, char** argv) {
   const std::string ours_path =
       argc > 4 ? argv[4] : source_dir + "/projects/office/results/workplane/coefficients_sky.mtx";
   const std::string write_path = argc > 5 ? argv[5] : "";
+  const std::string csv_path = argc > 6 ? argv[6] : "";
 
   const project::Project proj = project::load_project(source_dir + "/projects/office/project.yaml");
   const SceneDescription description = project::build_scene_description(proj);
@@ -314,6 +318,18 @@ int main(int argc, char** argv) {
     out.header_lines().push_back("office_backward_reference " + std::to_string(paths) + " paths per sensor, rows " +
                                  std::to_string(first_row) + "-" + std::to_string(last_row));
     out.write_file(write_path, MatrixFormat::Float);
+  }
+  if (!csv_path.empty()) {
+    std::ofstream out(csv_path, std::ios::binary);
+    out << "index,df_radiance_percent,df_radiance_se_percent\n" << std::setprecision(6);
+    for (std::size_t k = 0; k < sensors.size(); ++k) {
+      const auto [df, se] = df_percent(sums[k], 0, paths);
+      out << sensors[k] << ',' << df << ',' << se << '\n';
+    }
+    if (!out) {
+      std::fprintf(stderr, "office_backward_reference: cannot write %s\n", csv_path.c_str());
+      return 1;
+    }
   }
   const std::vector<double> ref = test::read_reference_df(shared + "/refdata/results/a_daylight_factor/df_office.csv");
   const RadianceMatrix dc = test::read_gzip_matrix(shared + "/refdata/results/b_dc_classic/office_dc_classic.mtx.gz");
