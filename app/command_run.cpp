@@ -7,7 +7,6 @@
 
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <iostream>
 #include <ostream>
 #include <string>
@@ -16,7 +15,6 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
-#include "rank_scratch.h"
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/report/report_html.h"
@@ -88,21 +86,13 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     settings.output_dir = folders[i];
     settings.cache_dir = options.cache_dir;
     settings.write_views = report::write_views;  // images and report.html from results.json's model
-    // Under mpirun every rank runs the study (distributed_executor.h); ranks other than 0
-    // write into a scratch folder of their own, removed afterwards, and draw no views.
-    // (rank_scratch.h: a killed rank's folder is removed by the next distributed run.)
-    std::optional<RankScratch> scratch;
+    // Under mpirun every rank runs the study (distributed_executor.h); the executor's writer
+    // flag keeps the ranks other than 0 from writing anything (study_runner.h).
     if (options.ranks && options.ranks->size() > 1) {
       dist::Communicator& ranks = *options.ranks;
       settings.make_executor = [&ranks](const study::ArtifactStore& store, bool force) {
         return study::make_distributed_executor(ranks, store, force);
       };
-      if (ranks.rank() != dist::RootRank) {
-        scratch.emplace(std::filesystem::temp_directory_path().string(), ranks.rank());
-        settings.output_dir = scratch->folder() + "/results";
-        settings.cache_dir = scratch->folder() + "/cache";
-        settings.write_views = nullptr;
-      }
     }
     const study::RunReport report = study::run_study(proj, settings, progress);
     progress.print_summary();

@@ -56,7 +56,7 @@ struct RunOptions {
   bool quiet = false;
   /// The ranks of an `mpirun`/`srun` job every rank of which runs this command (docs/cluster.md);
   /// null: one process. Rank 0 writes the outputs and the cache; the others compute their
-  /// share of the steps into a scratch folder they remove.
+  /// share of the steps and write nothing.
   dist::Communicator* ranks = nullptr;
 };
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err);

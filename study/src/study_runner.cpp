@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
@@ -159,13 +161,15 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
     const std::string folder = join_path(dir, grid.name);
-    fs::create_directories(folder);
+    if (ctx.executor.writes_results()) fs::create_directories(folder);  // not by the other ranks of an MPI run
     folders.push_back(folder);
     report.grids.push_back({label.empty() ? grid.name : label + "/" + grid.name, grid.points.size(), folder});
     coefficient_matrices.push_back(coefficients[g]->to_matrix());
     const RadianceMatrix& c = coefficient_matrices.back();
-    write_sensors_csv(grid.points, join_path(folder, "sensors.csv"));
-    ctx.outputs.record(join_path(folder, "sensors.csv"));
+    if (ctx.executor.writes_results()) {
+      write_sensors_csv(grid.points, join_path(folder, "sensors.csv"));
+      ctx.outputs.record(join_path(folder, "sensors.csv"));
+    }
     nlohmann::json gj = {{"name", grid.name}, {"sensors", grid.points.size()}, {"folder", folder}};
     ctx.results->grids.push_back(results_grid(grid, relative_folder(report.output_dir, folder), *ctx.results,
                                               placement.sets[g].dropped ? placement.sets[g].outside : 0,
@@ -185,8 +189,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       for (std::size_t i = 0; i < variance.size(); ++i) variance[i] = dc.direct_variance[i] + dc.photon_variance[i];
       const std::vector<double> df_stderr =
           daylight_factor_stderr_percent(variance, dc.sensors, overcast_vector, plan.overcast_horizontal_lux);
-      write_daylight_factor_csv(grid.points, df, join_path(folder, "daylight_factor.csv"), df_stderr);
-      ctx.outputs.record(join_path(folder, "daylight_factor.csv"));
+      if (ctx.executor.writes_results()) {
+        write_daylight_factor_csv(grid.points, df, join_path(folder, "daylight_factor.csv"), df_stderr);
+        ctx.outputs.record(join_path(folder, "daylight_factor.csv"));
+      }
       const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent);
       nlohmann::json areas = nlohmann::json::array();
       for (const auto& [threshold, area] : st.area_at_or_above_percent)
@@ -366,22 +372,36 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                                        : sky::SolarSite{project.site.latitude_deg, project.site.longitude_deg,
                                                         project.site.time_zone_h, project.site.elevation_m});
   report.output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
-  fs::create_directories(report.output_dir);
-  // One run per folder (output_lock.h); then what earlier runs left: temporaries of killed
-  // writers, and the outputs of the previous run, which this one replaces (output_manifest.h).
-  const OutputLock lock = OutputLock::acquire(report.output_dir, settings.command);
-  // The cache beside the output folder (cache_folder.h); an earlier version's cache inside
-  // it moves there.
+  // The cache beside the output folder (cache_folder.h), and the executor every cached step
+  // goes through (step_executor.h). Neither touches the disk before a step runs.
   const std::string cache_dir = settings.cache_dir.empty() ? default_cache_folder(report.output_dir) : settings.cache_dir;
-  const bool adopted = adopt_legacy_cache(report.output_dir, cache_dir);
-  const std::size_t temporaries = remove_dead_temporaries(report.output_dir) + remove_dead_temporaries(cache_dir);
-  const std::string this_run = lock.owner().describe();
-  OutputManifest outputs = OutputManifest::begin(report.output_dir, this_run);
-  // The previous run's times go with its outputs: a report of this folder must not show them.
-  std::error_code no_timings;
-  fs::remove(join_path(report.output_dir, TimingsFileName), no_timings);
   const ArtifactStore store(cache_dir);
-  RunLog log(progress, join_path(report.output_dir, "run.log"));
+  const std::unique_ptr<StepExecutor> executor =
+      settings.make_executor ? settings.make_executor(store, settings.force) : make_local_executor(store, settings.force);
+  // The writer flag: the ranks other than 0 of an MPI run write nothing at all (no lock, no
+  // manifest, no run.log, no result file, nothing in the cache); they take part in every step.
+  const bool writer = executor->writes_results();
+  std::optional<OutputLock> lock;
+  bool adopted = false;
+  std::size_t temporaries = 0;
+  std::string this_run;
+  if (writer) {
+    fs::create_directories(report.output_dir);
+    // One run per folder (output_lock.h); then what earlier runs left: temporaries of killed
+    // writers, and the outputs of the previous run, which this one replaces (output_manifest.h).
+    lock.emplace(OutputLock::acquire(report.output_dir, settings.command));
+    // An earlier version's cache inside the output folder moves to the cache folder.
+    adopted = adopt_legacy_cache(report.output_dir, cache_dir);
+    temporaries = remove_dead_temporaries(report.output_dir) + remove_dead_temporaries(cache_dir);
+    this_run = lock->owner().describe();
+  }
+  OutputManifest outputs = writer ? OutputManifest::begin(report.output_dir, this_run) : OutputManifest::none(report.output_dir);
+  if (writer) {
+    // The previous run's times go with its outputs: a report of this folder must not show them.
+    std::error_code no_timings;
+    fs::remove(join_path(report.output_dir, TimingsFileName), no_timings);
+  }
+  RunLog log(progress, writer ? join_path(report.output_dir, "run.log") : std::string());
   log.line("project " + project.path + " -> " + report.output_dir);
   log.quiet_line("run: " + this_run);
   log.quiet_line("cache: " + cache_dir);
@@ -390,8 +410,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   // What the weather reader accepted with a warning (ignored fields, filled gaps, variants).
   if (weather)
     for (const Diagnostic& w : weather->warnings) log.line("weather: " + w.format().substr(0, w.format().find('\n')));
-  if (lock.taken_over())
-    log.line("took over the lock of a run that no longer exists: " + lock.taken_over()->describe());
+  if (lock && lock->taken_over())
+    log.line("took over the lock of a run that no longer exists: " + lock->taken_over()->describe());
   if (temporaries > 0)
     log.line("removed " + std::to_string(temporaries) + " temporary file(s) of interrupted writes");
   if (outputs.stale_removed() > 0)
@@ -430,11 +450,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     return nullptr;
   };
 
-  // The plan, built once (simulation_plan.h), and the executor every cached step goes
-  // through (step_executor.h).
+  // The plan, built once (simulation_plan.h).
   const SimulationPlan plan = SimulationPlan::of(project);
-  const std::unique_ptr<StepExecutor> executor =
-      settings.make_executor ? settings.make_executor(store, settings.force) : make_local_executor(store, settings.force);
   RunContext ctx{settings, progress, log, report, store, outputs, plan, *executor, std::nullopt, std::nullopt,
                  weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
   // The project as written is the base case, in <output>/<grid>/; each variant is studied
@@ -464,7 +481,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     ctx.results = &shading;
     operated = run_operated(project, *op, open_tables, shaded_tables, join_path(report.output_dir, "operated"), ctx);
     cases.push_back(std::move(shading));
-  } else if (op) {
+  } else if (op && writer) {  // the other ranks of an MPI run have no annual tables
     log.line("operated: skipped (no annual results)");
   }
 
@@ -523,6 +540,11 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                  ", traced " + std::to_string(report.sun_bins_traced));
   log.quiet_line("photon cap: " + std::to_string(report.sources_capped) + " source(s), " +
                  std::to_string(report.sun_bins_capped) + " sun bin(s) capped (of those traced or read in this run)");
+  // What follows is files only: a process that writes nothing is done.
+  if (!writer) {
+    progress.end();
+    return report;
+  }
   // 8. results.json, the typed results model, then the images and report.html made from it
   // alone (report/, docs/report.md).
   ResultsModel model = results_model_header(project, settings.version, sun_site ? &*sun_site : nullptr,

@@ -23,8 +23,8 @@
 // whole grid's artefact (the same bytes, cache key and file as one process makes) and every
 // rank takes it. The accuracy rounds are one step without blocks: one rank runs them.
 //
-// The caller makes sure the other ranks write nothing the user sees (the app gives them a
-// scratch output folder it removes, app/main.cpp).
+// writes_results() is true on rank 0 alone: run_study's writer flag (study_runner.h), so the
+// other ranks write nothing at all (no output folder, no run.log, no cache).
 #pragma once
 
 #include <cstddef>

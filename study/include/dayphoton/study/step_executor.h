@@ -54,7 +54,9 @@ class StepExecutor {
   /// executor with more than one rank): what is computed per grid but not cached (the annual
   /// multiply, annual_blocks.h) then goes by blocks too, through blocks_to_root.
   virtual bool shares_sensor_blocks() const { return false; }
-  /// Whether this process writes the run's results: false on the ranks other than 0.
+  /// Whether this process writes the run's results: false on the ranks other than 0. It is
+  /// run_study's writer flag (study_runner.h): a process that does not write takes no output
+  /// lock, keeps no manifest or run.log and writes no file, and still runs every step.
   virtual bool writes_results() const { return true; }
   /// Only where shares_sensor_blocks(); collective: the blocks of `blocks` (sensor_blocks.h)
   /// computed over the processes, nothing cached. Rank 0 returns every block's outputs in

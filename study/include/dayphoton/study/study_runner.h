@@ -32,6 +32,9 @@
 // Before step 1 the run takes the output folder's lock (output_lock.h; OutputFolderBusy when
 // another run holds it), deletes temporaries of killed writers and the previous run's outputs,
 // and marks the folder INCOMPLETE until summary.json is written (output_manifest.h).
+// The writer flag is the executor's writes_results() (step_executor.h): false on the ranks
+// other than 0 of an MPI run, which then run every step with the others but take no lock,
+// write no marker, run.log, result file or used-by-last-run.txt, and create no folder.
 // The run log (<output>/run.log, and the progress output) states for every step whether it
 // was computed or taken from the cache, e.g. "photons: traced 0 of 146 sources (146 cached)".
 #pragma once
