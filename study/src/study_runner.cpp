@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -361,16 +362,27 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   std::optional<SunSite> sun_site;
   std::optional<sky::BelowHorizonDirect> below_horizon;
   const bool annual_study = project.study == project::StudyKind::Annual;
-  if (annual_study) {
-    weather = weather::read_hourly_weather(project.weather.path);
-    sun_site = resolve_sun_site(project.site, *weather);
-    below_horizon = annual_below_horizon_direct(*weather, *sun_site);
+  // Operated shading needs each hour's direct sun (the loader says so for project files).
+  const project::OperationSpec* op = project.operation ? &*project.operation : nullptr;
+  std::exception_ptr input_failure;
+  try {
+    if (annual_study) {
+      weather = weather::read_hourly_weather(project.weather.path);
+      sun_site = resolve_sun_site(project.site, *weather);
+      below_horizon = annual_below_horizon_direct(*weather, *sun_site);
+    }
+    // The points in time whose sun needs no tracing are checked before anything is written.
+    check_points_in_time(
+        project.points_in_time, sun_site ? sun_site->solar
+                                         : sky::SolarSite{project.site.latitude_deg, project.site.longitude_deg,
+                                                          project.site.time_zone_h, project.site.elevation_m});
+    if (op && sim.sun != project::SunMode::Bins)
+      throw InputError(op->location, "operation needs the direct sun of every hour: set simulation.sun to 'bins'");
+  } catch (...) {
+    input_failure = std::current_exception();
   }
-  // The points in time whose sun needs no tracing are checked before anything is written.
-  check_points_in_time(
-      project.points_in_time, sun_site ? sun_site->solar
-                                       : sky::SolarSite{project.site.latitude_deg, project.site.longitude_deg,
-                                                        project.site.time_zone_h, project.site.elevation_m});
+  if (settings.inputs_checked) settings.inputs_checked(input_failure);
+  if (input_failure) std::rethrow_exception(input_failure);
   report.output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
   // The cache beside the output folder (cache_folder.h), and the executor every cached step
   // goes through (step_executor.h). Neither touches the disk before a step runs.
@@ -438,10 +450,6 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     report.notes.push_back("system: " + project::describe_system_light(system));
   for (const std::string& n : report.notes) log.line(n);
 
-  // Operated shading needs each hour's direct sun (the loader says so for project files).
-  const project::OperationSpec* op = project.operation ? &*project.operation : nullptr;
-  if (op && sim.sun != project::SunMode::Bins)
-    throw InputError(op->location, "operation needs the direct sun of every hour: set simulation.sun to 'bins'");
   CaseTables open_tables, shaded_tables;
   auto keep = [&](const std::string& name) -> CaseTables* {
     if (!op) return nullptr;

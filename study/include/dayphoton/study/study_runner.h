@@ -39,6 +39,7 @@
 // was computed or taken from the cache, e.g. "photons: traced 0 of 146 sources (146 cached)".
 #pragma once
 
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>
@@ -68,6 +69,11 @@ struct RunSettings {
   /// (make_local_executor). `dayphoton run` under mpirun gives each rank the distributed one
   /// (distributed_executor.h).
   std::function<std::unique_ptr<StepExecutor>(const ArtifactStore& store, bool force)> make_executor;
+  /// Called once the inputs run_study reads itself (the weather file, the site of its sun, the
+  /// points in time, the operation's sun mode) are checked, before anything is written, with
+  /// their failure or null; it throws to end the run. Empty: the failure is rethrown. Under
+  /// mpirun the app makes the ranks agree on it here, so that rank 0 alone prints it.
+  std::function<void(const std::exception_ptr& failure)> inputs_checked;
 };
 
 struct GridReport {
