@@ -102,7 +102,8 @@ class DistributedExecutor final : public StepExecutor {
       computed[k] = 1;
       if (done) done(k, true);
     };
-    run_split_photon_steps(m_comm, steps, split, deliver, MinSplitRangeAttempts);
+    note(split_sources_line(steps, run_split_photon_steps(m_comm, steps, split, deliver, MinSplitRangeAttempts),
+                            m_comm.size()));
     std::vector<std::size_t> rest;
     std::set_difference(misses.begin(), misses.end(), split.begin(), split.end(), std::back_inserter(rest));
     return rest;

@@ -110,6 +110,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   RunLog& log = ctx.log;
   RunReport& report = ctx.report;
   const std::string prefix = label.empty() ? "" : label + ": ";
+  // The executor's notes (split sources) into the log, under this case's label.
+  ctx.executor.set_note_sink([&log, prefix](const std::string& line) { log.line(prefix + line); });
 
   // 1. Scene, materials, sources, receiver planes.
   progress.start(prefix + "scene", 1, "model");

@@ -50,6 +50,11 @@ class StepExecutor {
   /// and the step took them. Never computes; always false with `force`.
   virtual bool lookup(const Step& step) const;
 
+  /// Where the executor's own notes go, a line each (the distributed executor's: which sources
+  /// it split into attempt ranges); run_study sends them to the run log. Empty: dropped.
+  using NoteSink = std::function<void(const std::string& line)>;
+  void set_note_sink(NoteSink sink) { m_note = std::move(sink); }
+
   /// Whether this executor shares sensor blocks out over several processes (the distributed
   /// executor with more than one rank): what is computed per grid but not cached (the annual
   /// multiply, annual_blocks.h) then goes by blocks too, through blocks_to_root.
@@ -70,8 +75,14 @@ class StepExecutor {
   /// lookup, else compute and store: the whole pattern for a step run in this process.
   bool run_here(const Step& step) const;
 
+  /// A note for the run log (set_note_sink).
+  void note(const std::string& line) const {
+    if (m_note) m_note(line);
+  }
+
   const ArtifactStore& m_store;
   const bool m_force;
+  NoteSink m_note;
 };
 
 /// The executor of one process: a batch's steps in parallel over this machine's cores (TBB).
