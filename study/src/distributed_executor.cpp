@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dayphoton/dist/distribute_jobs.h"
+#include "dayphoton/study/case_units.h"
 #include "dayphoton/study/plan_policy.h"
 #include "dayphoton/study/split_photon_steps.h"
 #include "distributed_blocks.h"
@@ -77,6 +78,10 @@ class DistributedExecutor final : public StepExecutor {
     jobs.delivery = dist::Delivery::every_rank;
     dist::distribute_jobs(m_comm, jobs);
     return computed;
+  }
+
+  std::unique_ptr<CaseUnits> case_units(std::size_t cases) override {
+    return make_case_units(m_comm, m_store, m_force, cases);
   }
 
   bool shares_sensor_blocks() const override { return m_comm.size() > 1; }

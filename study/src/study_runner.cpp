@@ -25,6 +25,7 @@
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/cache_folder.h"
 #include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/case_units.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/output_lock.h"
@@ -230,6 +231,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
 
   // 5-6. Annual illuminance and metrics.
   const bool annual = project.outputs.annual_illuminance || project.outputs.metrics;
+  // The annual multiply (not cached) only where its result is kept: not by a unit executor
+  // (case_units.h), which writes nothing and shares no blocks; its steps still run.
+  const bool multiply = annual && (ctx.executor.writes_results() || ctx.executor.shares_sensor_blocks());
   const bool sun_bins = sim.sun == project::SunMode::Bins;
   const AnnualOutputs which = annual_outputs_of(project);
   // The schedule the metrics of each grid use (docs/metrics.md "Occupancy schedules").
@@ -282,7 +286,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
           ctx.outputs.record(d_path);
         }
       }
-      if (!annual) continue;
+      if (!multiply) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
       const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
       const GridSunCoefficients grid_sun{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins};
@@ -317,7 +321,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     }
   } else if (annual) {
     const AnnualSky& sky = annual_sky(project, ctx);
-    for (std::size_t g = 0; g < description.grids.size(); ++g) {
+    for (std::size_t g = 0; g < description.grids.size() && multiply; ++g) {
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
       const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
@@ -464,6 +468,30 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   const SimulationPlan plan = SimulationPlan::of(project);
   RunContext ctx{settings, progress, log, report, store, outputs, plan, *executor, std::nullopt, std::nullopt,
                  weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
+  // With at least as many cases as MPI ranks, whole cases are the units (case_units.h): each
+  // rank first runs the steps of the cases it owns alone, writing nothing (a log to the
+  // progress output only); join() stores them all in rank 0's cache; then every case runs
+  // below as always, its steps from the cache.
+  if (const std::unique_ptr<CaseUnits> units = executor->case_units(1 + project.variants.size())) {
+    OutputManifest unit_outputs = OutputManifest::none(report.output_dir);
+    RunReport unit_report;
+    RunLog unit_log(progress, std::string());
+    RunContext unit_ctx{settings, progress, unit_log, unit_report, store, unit_outputs, plan, units->executor(),
+                        std::nullopt, std::nullopt, weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
+    for (std::size_t c = 0; c <= project.variants.size(); ++c) {
+      if (!units->mine(c)) continue;
+      CaseResult unused = results_case("base", "", "", {});
+      unit_ctx.results = &unused;
+      if (c == 0) {
+        run_case(project, "", report.output_dir, unit_ctx);
+      } else {
+        const project::VariantSpec& v = project.variants[c - 1];
+        run_case(project::apply_variant(project, v), v.name,
+                 join_path(join_path(report.output_dir, "variants"), v.name), unit_ctx);
+      }
+    }
+    log.line(units->join());
+  }
   // The project as written is the base case, in <output>/<grid>/; each variant is studied
   // in addition, in <output>/variants/<variant>/<grid>/ (a folder no grid name can clash with).
   std::vector<CaseResult> cases{results_case("base", "", "", {})};

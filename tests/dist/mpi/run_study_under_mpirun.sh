@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # `dayphoton run` distributed by mpirun (study/distributed_executor.h, docs/cluster.md): the
 # office (at a fortieth of its photons, which changes nothing but the noise) run by one process
-# and under `mpirun -np 1`, `-np 2` and `-np 3 --oversubscribe`, and the two-variant office by
-# one process and under `-np 3`,
-# every run with a cache of its own. Every file of the results folders must be byte-identical
+# and under `mpirun -np 1`, `-np 2` and `-np 3 --oversubscribe`, and the two-variant office
+# likewise, every run with a cache of its own. Every file of the results folders must be byte-identical
 # to the one-process run's, apart from run.log and timings.json (times) and the output folder's
-# name in summary.json. The ranks other than 0 write nothing (the writer flag, study_runner.h):
-# each is started by a wrapper with a TMPDIR that is a file, not a folder, with a working
+# name in summary.json; every cache holds the one-process run's artefacts and list of used
+# ones. The two-variant office (three cases) goes as whole cases over 2 and 3 ranks
+# (study/case_units.h: its run.log says so; the office never). The ranks other than 0 write
+# nothing (the writer flag, study_runner.h): each is started by a wrapper with a TMPDIR that is a file, not a folder, with a working
 # folder of its own and with --output and --cache of its own, none of which may gain a file,
 # so a rank that wrote anything anywhere it could (its results, run.log, the cache, a scratch
 # folder) fails the test. No pictures and no
@@ -72,6 +73,17 @@ for p in office office_variants; do
       echo "$p: mpirun -np $np wrote other results than the one-process run"
       fail=1
     fi
+    # The cache: the same artefacts, and the same list of those the run used.
+    if ! diff -r -q "$tmp/cache/$p-serial" "$tmp/cache/$p-np$np" > /dev/null; then
+      echo "$p: mpirun -np $np cached other artefacts than the one-process run"
+      diff -r -q "$tmp/cache/$p-serial" "$tmp/cache/$p-np$np" | head -5
+      fail=1
+    fi
+    # The variants (three cases) go as units from 2 ranks on (study/case_units.h); the office
+    # (one case) never.
+    units=$(grep -c "^cases as units over $np ranks: rank 0 case" "$out/run.log")
+    if [ "$p" = office_variants ] && [ $np -ge 2 ]; then expected=1; else expected=0; fi
+    [ "$units" -eq $expected ] || { echo "$p: mpirun -np $np: $units line(s) on cases as units, not $expected"; fail=1; }
     # summary.json names the output folder; apart from it, the same bytes.
     if ! cmp -s <(sed "s|$tmp/out/$p-serial|OUT|g" "$tmp/out/$p-serial/summary.json") \
                 <(sed "s|$out|OUT|g" "$out/summary.json"); then

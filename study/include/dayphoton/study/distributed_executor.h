@@ -23,6 +23,10 @@
 // whole grid's artefact (the same bytes, cache key and file as one process makes) and every
 // rank takes it. The accuracy rounds are one step without blocks: one rank runs them.
 //
+// With at least as many cases (the base project and its variants) as ranks, case_units()
+// hands out whole cases (case_units.h): each rank computes its own cases' steps alone, rank 0
+// stores them, and the cases then run through this executor from the cache.
+//
 // writes_results() is true on rank 0 alone: run_study's writer flag (study_runner.h), so the
 // other ranks write nothing at all (no output folder, no run.log, no cache).
 #pragma once

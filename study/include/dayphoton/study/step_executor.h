@@ -26,6 +26,8 @@
 
 namespace dayphoton::study {
 
+class CaseUnits;
+
 class StepExecutor {
  public:
   /// `force`: ignore the cache (every step is computed; its artefacts are still stored).
@@ -54,6 +56,11 @@ class StepExecutor {
   /// it split into attempt ranges); run_study sends them to the run log. Empty: dropped.
   using NoteSink = std::function<void(const std::string& line)>;
   void set_note_sink(NoteSink sink) { m_note = std::move(sink); }
+
+  /// Whole cases (the base project and each variant) as units over the processes, when this
+  /// executor assigns them (the distributed executor with at least as many cases as ranks,
+  /// case_units.h); null: every case's steps go through this executor. Collective.
+  virtual std::unique_ptr<CaseUnits> case_units(std::size_t cases);
 
   /// Whether this executor shares sensor blocks out over several processes (the distributed
   /// executor with more than one rank): what is computed per grid but not cached (the annual
