@@ -32,6 +32,8 @@
 // Before step 1 the run takes the output folder's lock (output_lock.h; OutputFolderBusy when
 // another run holds it), deletes temporaries of killed writers and the previous run's outputs,
 // and marks the folder INCOMPLETE until summary.json is written (output_manifest.h).
+// Under MPI with at least as many cases (base and variants) as ranks, each rank first runs
+// the steps of its own cases alone (case_units.h); the cases then run from the cache.
 // The writer flag is the executor's writes_results() (step_executor.h): false on the ranks
 // other than 0 of an MPI run, which then run every step with the others but take no lock,
 // write no marker, run.log, result file or used-by-last-run.txt, and create no folder.
