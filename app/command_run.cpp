@@ -5,9 +5,9 @@
 // than one project).
 #include <unistd.h>
 
+#include <exception>
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <iostream>
 #include <ostream>
 #include <string>
@@ -16,7 +16,6 @@
 #include <tbb/global_control.h>
 
 #include "commands.h"
-#include "rank_scratch.h"
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/report/report_html.h"
@@ -60,21 +59,34 @@ std::vector<std::string> output_folders(const RunOptions& options) {
 }  // namespace
 
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
-  (void)err;
   std::unique_ptr<tbb::global_control> threads;
   if (options.threads > 0)
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                     static_cast<std::size_t>(options.threads));
+  // Under mpirun the ranks check the same inputs alike: they agree on a failure, which rank 0
+  // alone prints (commands.h agree_on_failure), instead of every rank printing it.
+  dist::Communicator* const ranks = options.ranks && options.ranks->size() > 1 ? options.ranks : nullptr;
+  auto checked = [ranks, &err](const std::exception_ptr& failure) {
+    if (ranks) agree_on_failure(*ranks, failure, err);
+    if (failure) std::rethrow_exception(failure);
+  };
   // Load every project first: a typo in the last one should not wait for the first to run.
   // With --output, outputs.folder is not used and may lie anywhere.
-  const std::vector<std::string> folders = output_folders(options);
-  project::LoadOptions load;
-  load.output_folder_overridden = !options.output_dir.empty();
+  std::vector<std::string> folders;
   std::vector<project::Project> projects;
-  for (const std::string& path : options.project_paths) projects.push_back(project::load_project(path, load));
-  // Geometry and placement (no port, no sensor, sensors outside every room or in a solid,
-  // undecidable ports) of every case, before anything is written.
-  for (const project::Project& proj : projects) study::check_project_placement(proj);
+  std::exception_ptr failure;
+  try {
+    folders = output_folders(options);
+    project::LoadOptions load;
+    load.output_folder_overridden = !options.output_dir.empty();
+    for (const std::string& path : options.project_paths) projects.push_back(project::load_project(path, load));
+    // Geometry and placement (no port, no sensor, sensors outside every room or in a solid,
+    // undecidable ports) of every case, before anything is written.
+    for (const project::Project& proj : projects) study::check_project_placement(proj);
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  checked(failure);
 
   const study::ProgressStyle style =
       study::Progress::choose_style(&out == &std::cout && isatty(STDOUT_FILENO), options.quiet);
@@ -88,22 +100,15 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     settings.output_dir = folders[i];
     settings.cache_dir = options.cache_dir;
     settings.write_views = report::write_views;  // images and report.html from results.json's model
-    // Under mpirun every rank runs the study (distributed_executor.h); ranks other than 0
-    // write into a scratch folder of their own, removed afterwards, and draw no views.
-    // (rank_scratch.h: a killed rank's folder is removed by the next distributed run.)
-    std::optional<RankScratch> scratch;
-    if (options.ranks && options.ranks->size() > 1) {
-      dist::Communicator& ranks = *options.ranks;
-      settings.make_executor = [&ranks](const study::ArtifactStore& store, bool force) {
-        return study::make_distributed_executor(ranks, store, force);
+    // Under mpirun every rank runs the study (distributed_executor.h); the executor's writer
+    // flag keeps the ranks other than 0 from writing anything (study_runner.h).
+    if (ranks) {
+      settings.make_executor = [ranks](const study::ArtifactStore& store, bool force) {
+        return study::make_distributed_executor(*ranks, store, force);
       };
-      if (ranks.rank() != dist::RootRank) {
-        scratch.emplace(std::filesystem::temp_directory_path().string(), ranks.rank());
-        settings.output_dir = scratch->folder() + "/results";
-        settings.cache_dir = scratch->folder() + "/cache";
-        settings.write_views = nullptr;
-      }
     }
+    // The weather file and the points in time, read and checked before anything is written.
+    settings.inputs_checked = checked;
     const study::RunReport report = study::run_study(proj, settings, progress);
     progress.print_summary();
     if (!options.quiet) {

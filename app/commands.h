@@ -4,6 +4,7 @@
 
 #include "dayphoton/dist/communicator.h"
 #include <cstdint>
+#include <exception>
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -31,6 +32,33 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// What the program prints for an exception a command threw, and its exit code (an input
+/// error's located messages as they are, anything else after "dayphoton: error: ").
+struct CommandFailure {
+  int exit_code = ExitInternalError;
+  std::string message;  ///< ends with a line break
+};
+CommandFailure describe_failure(const std::exception_ptr& failure);
+
+/// Thrown on every rank of an MPI job once the ranks agreed that the command failed before any
+/// of them wrote anything, and rank 0 printed why (agree_on_failure): the process exits with
+/// `exit_code` and the job ends without MPI_Abort.
+class AgreedFailure : public std::runtime_error {
+ public:
+  explicit AgreedFailure(int exit_code) : std::runtime_error("failure agreed on by every rank"), m_code(exit_code) {}
+  int exit_code() const { return m_code; }
+
+ private:
+  int m_code;
+};
+
+/// Collective over `ranks`: each rank passes its failure (null if none). If any failed, rank 0
+/// prints the failure of the lowest failing rank to `err` (prefixed by its rank if not 0) and
+/// every rank throws AgreedFailure with its exit code; otherwise returns. For checks that every
+/// rank makes alike before anything is written (the project files, the weather file), so that
+/// their messages appear once, not once per rank.
+void agree_on_failure(dist::Communicator& ranks, const std::exception_ptr& failure, std::ostream& err);
+
 /// Flush `out` and throw if anything written to it was lost (full disk, closed pipe).
 void require_written(std::ostream& out, const std::string& what);
 
@@ -56,7 +84,7 @@ struct RunOptions {
   bool quiet = false;
   /// The ranks of an `mpirun`/`srun` job every rank of which runs this command (docs/cluster.md);
   /// null: one process. Rank 0 writes the outputs and the cache; the others compute their
-  /// share of the steps into a scratch folder they remove.
+  /// share of the steps and write nothing.
   dist::Communicator* ranks = nullptr;
 };
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err);

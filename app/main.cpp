@@ -62,7 +62,8 @@ constexpr long long Unbounded = std::numeric_limits<long long>::max();
 constexpr long long MaxThreads = 4096;
 
 /// Parses the command line and runs the command: the whole program of an ordinary run.
-int run_command_line(int argc, char** argv, dayphoton::dist::Communicator* ranks = nullptr) {
+/// `agreed` (MPI ranks only) is set when the command failed alike on every rank (AgreedFailure).
+int run_command_line(int argc, char** argv, dayphoton::dist::Communicator* ranks = nullptr, bool* agreed = nullptr) {
   using namespace dayphoton::app;
   CLI::App cli{"dayphoton: climate-based daylight modelling with contribution photon maps"};
   cli.name("dayphoton");
@@ -299,18 +300,13 @@ int run_command_line(int argc, char** argv, dayphoton::dist::Communicator* ranks
     }
     if (report_cmd->parsed()) return run_report(report, std::cout);
     if (render_cmd->parsed()) return run_render(render, std::cout);
-  } catch (const dayphoton::study::OutputFolderBusy& e) {
-    std::cerr << "dayphoton: error: " << e.what() << '\n';
-    return ExitOutputBusy;
-  } catch (const dayphoton::InputError& e) {
-    std::cerr << e.what();
-    return ExitInputError;
-  } catch (const UsageError& e) {
-    std::cerr << "dayphoton: error: " << dayphoton::printable_text(e.what()) << '\n';
-    return ExitUsageError;
-  } catch (const std::exception& e) {
-    std::cerr << "dayphoton: error: " << dayphoton::printable_text(e.what()) << '\n';
-    return ExitInternalError;
+  } catch (const AgreedFailure& e) {  // every rank of the job failed alike; rank 0 printed why
+    if (agreed) *agreed = true;
+    return e.exit_code();
+  } catch (...) {
+    const CommandFailure failure = describe_failure(std::current_exception());
+    std::cerr << failure.message;
+    return failure.exit_code;
   }
   return ExitUsageError;
 }
@@ -346,20 +342,23 @@ int run_as_mpi_rank(int argc, char** argv, const dayphoton::dist::LauncherInfo& 
   {
     const std::unique_ptr<Communicator> world = session->world();
     if (world->size() > 1 && command_of(argc, argv) == "run") {
+      // A failure every rank agreed on (the inputs' checks, commands.h agree_on_failure) was
+      // printed once, by rank 0: each rank exits with its code, no rank waits for another.
+      bool agreed = false;
       if (world->rank() == RootRank) {
-        code = run_command_line(argc, argv, world.get());
+        code = run_command_line(argc, argv, world.get(), &agreed);
         // Its message is out; the other ranks may be waiting for it in a step: end them too.
-        if (code != ExitOk) world->abort_all("the run failed on rank 0; every rank is stopped", code);
+        if (code != ExitOk && !agreed) world->abort_all("the run failed on rank 0; every rank is stopped", code);
       } else {
         // The same lines as rank 0's, so kept back; a failing rank shows them (prefixed by its
         // rank) and ends the whole job, which never waits on a rank that stopped.
         std::ostringstream out, err;
         std::streambuf* const cout_buffer = std::cout.rdbuf(out.rdbuf());
         std::streambuf* const cerr_buffer = std::cerr.rdbuf(err.rdbuf());
-        code = run_command_line(argc, argv, world.get());
+        code = run_command_line(argc, argv, world.get(), &agreed);
         std::cout.rdbuf(cout_buffer);
         std::cerr.rdbuf(cerr_buffer);
-        if (code != ExitOk) world->abort_all(err.str(), code);
+        if (code != ExitOk && !agreed) world->abort_all(err.str(), code);
       }
     } else {
       if (world->rank() == RootRank) {

@@ -53,7 +53,8 @@ std::optional<AnnualStudy> annual_study_in_blocks(StepExecutor& executor, const 
   SensorBlocks blocks;
   blocks.sensors = n_sensors;
   blocks.compute_rows = [&](std::size_t begin, std::size_t end) {
-    metrics::IlluminanceTable table = annual_illuminance(matrix_rows(coefficients, begin, end), sky.matrix, sky.steps);
+    metrics::IlluminanceTable table =
+        annual_illuminance(matrix_rows(coefficients, begin, end), sky.matrix, sky.steps, begin);
     std::vector<int> ase;
     if (sun) {
       const metrics::IlluminanceTable direct =

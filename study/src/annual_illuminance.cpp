@@ -114,7 +114,8 @@ bool append_tenths(std::string& out, float v) {
 
 metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
                                              const RadianceMatrix& sky_matrix,
-                                             const std::vector<metrics::TimeStamp>& steps) {
+                                             const std::vector<metrics::TimeStamp>& steps,
+                                             std::size_t first_sensor) {
   if (coefficients.columns() != sky_matrix.rows())
     throw std::invalid_argument("annual illuminance: " + std::to_string(coefficients.columns()) +
                                 " coefficient bins but a sky matrix of " + std::to_string(sky_matrix.rows()) +
@@ -184,7 +185,8 @@ metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
   for (std::size_t t = 0; t < n_steps; ++t)
     for (std::size_t s = 0; s < n_sensors; ++s)
       if (!std::isfinite(table.lux(t, s)))
-        throw std::range_error("annual illuminance: sensor " + std::to_string(s) + " at step " + std::to_string(t) +
+        throw std::range_error("annual illuminance: sensor " + std::to_string(first_sensor + s) + " at step " +
+                               std::to_string(t) +
                                " is not a finite number (the coefficients times the sky matrix overflow a float)");
   return table;
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dayphoton/dist/distribute_jobs.h"
+#include "dayphoton/study/case_units.h"
 #include "dayphoton/study/plan_policy.h"
 #include "dayphoton/study/split_photon_steps.h"
 #include "distributed_blocks.h"
@@ -81,6 +82,10 @@ class DistributedExecutor final : public StepExecutor {
     return computed;
   }
 
+  std::unique_ptr<CaseUnits> case_units(std::size_t cases) override {
+    return make_case_units(m_comm, m_store, m_force, cases);
+  }
+
   bool shares_sensor_blocks() const override { return m_comm.size() > 1; }
   bool writes_results() const override { return m_comm.rank() == dist::RootRank; }
 
@@ -124,7 +129,8 @@ class DistributedExecutor final : public StepExecutor {
       computed[k] = 1;
       if (done) done(k, true);
     };
-    run_split_photon_steps(m_comm, steps, split, deliver, MinSplitRangeAttempts);
+    note(split_sources_line(steps, run_split_photon_steps(m_comm, steps, split, deliver, MinSplitRangeAttempts),
+                            m_comm.size()));
     std::vector<std::size_t> rest;
     std::set_difference(misses.begin(), misses.end(), split.begin(), split.end(), std::back_inserter(rest));
     return rest;

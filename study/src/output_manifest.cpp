@@ -112,7 +112,14 @@ OutputManifest OutputManifest::begin(const std::string& dir, const std::string& 
   return manifest;
 }
 
+OutputManifest OutputManifest::none(const std::string& dir) {
+  OutputManifest manifest(dir, 0);
+  manifest.m_writes = false;
+  return manifest;
+}
+
 void OutputManifest::record(const std::string& path) {
+  if (!m_writes) throw std::logic_error("output " + path + " written by a process that writes nothing");
   const std::string relative = relative_to(fs::path(m_dir), path);
   if (!stays_inside(relative)) throw std::logic_error("output " + path + " is not inside " + m_dir);
   if (!m_recorded.insert(relative).second) return;
@@ -137,6 +144,7 @@ std::vector<ManifestEntry> OutputManifest::entries() const {
 }
 
 void OutputManifest::finish() {
+  if (!m_writes) return;
   m_marker.close();
   std::error_code ec;
   fs::remove(fs::path(m_dir) / MarkerName, ec);

@@ -43,6 +43,8 @@ void run_points_in_time(const project::Project& project, const std::string& pref
     bins = engine::SunBins::for_suns(directions, sim.sun_mf);
     sun = run_sun_bins(project, prefix + "point in time ", cs, skies, *bins, ctx);
   }
+  // The rest makes the files: not on the other ranks of an MPI run (they write nothing).
+  if (!ctx.executor.writes_results()) return;
   std::vector<std::string> names;
   for (const project::PointInTimeSpec& c : cases) names.push_back(c.name);
   for (std::size_t g = 0; g < description.grids.size(); ++g) {

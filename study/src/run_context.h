@@ -33,11 +33,13 @@ namespace dayphoton::study {
 /// The run log (<output>/run.log): every line also goes to the progress output, and to the
 /// file at once, so an interrupted run's log says how far it got. The run's history (what was
 /// computed or came from the cache, step times) is here, not in the results, so that a
-/// repeated run writes byte-identical results.
+/// repeated run writes byte-identical results. An empty path: no file (a process that writes
+/// nothing, the ranks other than 0 of an MPI run), the lines go to the progress output only.
 class RunLog {
  public:
-  RunLog(Progress& progress, const std::string& path)
-      : m_progress(progress), m_path(path), m_file(path, std::ios::trunc | std::ios::binary) {
+  RunLog(Progress& progress, const std::string& path) : m_progress(progress), m_path(path) {
+    if (path.empty()) return;
+    m_file.open(path, std::ios::trunc | std::ios::binary);
     if (!m_file) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
   }
   void line(const std::string& text) {
@@ -46,6 +48,7 @@ class RunLog {
   }
   /// A line for the file only (not shown as progress).
   void quiet_line(const std::string& text) {
+    if (m_path.empty()) return;
     m_file << text << "\n";
     m_file.flush();
     if (!m_file) throw std::runtime_error("cannot write " + m_path + ": " + std::strerror(errno));

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 #include "dayphoton/dist/distribute_jobs.h"
@@ -49,12 +50,13 @@ std::vector<std::size_t> photon_steps_to_split(const std::vector<Step>& steps, c
   return split;
 }
 
-void run_split_photon_steps(dist::Communicator& comm, const std::vector<Step>& steps,
-                            const std::vector<std::size_t>& split,
-                            const std::function<void(std::size_t, const std::vector<std::string>&)>& deliver,
-                            std::uint64_t min_range_attempts) {
+std::vector<SplitSourceRanges> run_split_photon_steps(
+    dist::Communicator& comm, const std::vector<Step>& steps, const std::vector<std::size_t>& split,
+    const std::function<void(std::size_t, const std::vector<std::string>&)>& deliver, std::uint64_t min_range_attempts) {
   std::vector<SplitSource> sources(split.size());
+  std::vector<SplitSourceRanges> traced_in(split.size());
   for (std::size_t s = 0; s < split.size(); ++s) {
+    traced_in[s].step = split[s];
     const Step& step = steps[split[s]];
     if (!step.ranges) throw std::logic_error("run_split_photon_steps: a step without ranges");
     sources[s].step = split[s];
@@ -81,10 +83,15 @@ void run_split_photon_steps(dist::Communicator& comm, const std::vector<Step>& s
         const std::uint64_t first = pass.first + length * i / pieces, last = pass.first + length * (i + 1) / pieces;
         jobs.push_back({s, first, last, pass.storage});
       }
+      if (length > 0) {
+        traced_in[s].ranges += pieces;
+        ++traced_in[s].passes;
+        traced_in[s].attempts += length;
+      }
     }
     bool live = false;
     for (const SplitSource& s : sources) live = live || !s.delivered;
-    if (!live) return;
+    if (!live) return traced_in;
 
     dist::JobSet set;
     set.count = jobs.size();
@@ -114,6 +121,21 @@ void run_split_photon_steps(dist::Communicator& comm, const std::vector<Step>& s
       s.pass_counts = engine::AttemptCounts{};
     }
   }
+}
+
+std::string split_sources_line(const std::vector<Step>& steps, const std::vector<SplitSourceRanges>& split, int ranks) {
+  constexpr std::size_t MostNamed = 8;
+  std::string line = "photons: " + std::to_string(split.size()) + (split.size() == 1 ? " source" : " sources") +
+                     " split into attempt ranges over " + std::to_string(ranks) + " ranks: ";
+  for (std::size_t i = 0; i < split.size() && i < MostNamed; ++i) {
+    const Step& step = steps[split[i].step];
+    line += (i == 0 ? "" : ", ") + std::string(step_kind_name(step.kind)) + " " + std::to_string(step.index) + " (" +
+            std::to_string(split[i].ranges) + (split[i].ranges == 1 ? " range" : " ranges") + " in " +
+            std::to_string(split[i].passes) + (split[i].passes == 1 ? " pass, " : " passes, ") +
+            std::to_string(split[i].attempts) + " attempts)";
+  }
+  if (split.size() > MostNamed) line += " and " + std::to_string(split.size() - MostNamed) + " more";
+  return line;
 }
 
 }  // namespace dayphoton::study

@@ -1,6 +1,8 @@
 // StepExecutor and the local executor (TBB): see step_executor.h.
 #include "dayphoton/study/step_executor.h"
 
+#include "dayphoton/study/case_units.h"
+
 #include <stdexcept>
 
 #include <tbb/parallel_for.h>
@@ -20,6 +22,8 @@ const char* step_kind_name(StepKind kind) {
 }
 
 bool StepExecutor::run(const Step& step) { return run_batch({step})[0] != 0; }
+
+std::unique_ptr<CaseUnits> StepExecutor::case_units(std::size_t) { return nullptr; }
 
 std::vector<std::vector<std::string>> StepExecutor::blocks_to_root(const SensorBlocks&, const std::string& name) {
   throw std::logic_error("blocks_to_root (" + name + ") on an executor of one process");

@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
@@ -22,6 +25,7 @@
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/cache_folder.h"
 #include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/case_units.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/output_lock.h"
@@ -107,6 +111,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   RunLog& log = ctx.log;
   RunReport& report = ctx.report;
   const std::string prefix = label.empty() ? "" : label + ": ";
+  // The executor's notes (split sources) into the log, under this case's label.
+  ctx.executor.set_note_sink([&log, prefix](const std::string& line) { log.line(prefix + line); });
 
   // 1. Scene, materials, sources, receiver planes.
   progress.start(prefix + "scene", 1, "model");
@@ -159,13 +165,15 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
     const std::string folder = join_path(dir, grid.name);
-    fs::create_directories(folder);
+    if (ctx.executor.writes_results()) fs::create_directories(folder);  // not by the other ranks of an MPI run
     folders.push_back(folder);
     report.grids.push_back({label.empty() ? grid.name : label + "/" + grid.name, grid.points.size(), folder});
     coefficient_matrices.push_back(coefficients[g]->to_matrix());
     const RadianceMatrix& c = coefficient_matrices.back();
-    write_sensors_csv(grid.points, join_path(folder, "sensors.csv"));
-    ctx.outputs.record(join_path(folder, "sensors.csv"));
+    if (ctx.executor.writes_results()) {
+      write_sensors_csv(grid.points, join_path(folder, "sensors.csv"));
+      ctx.outputs.record(join_path(folder, "sensors.csv"));
+    }
     nlohmann::json gj = {{"name", grid.name}, {"sensors", grid.points.size()}, {"folder", folder}};
     ctx.results->grids.push_back(results_grid(grid, relative_folder(report.output_dir, folder), *ctx.results,
                                               placement.sets[g].dropped ? placement.sets[g].outside : 0,
@@ -185,8 +193,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       for (std::size_t i = 0; i < variance.size(); ++i) variance[i] = dc.direct_variance[i] + dc.photon_variance[i];
       const std::vector<double> df_stderr =
           daylight_factor_stderr_percent(variance, dc.sensors, overcast_vector, plan.overcast_horizontal_lux);
-      write_daylight_factor_csv(grid.points, df, join_path(folder, "daylight_factor.csv"), df_stderr);
-      ctx.outputs.record(join_path(folder, "daylight_factor.csv"));
+      if (ctx.executor.writes_results()) {
+        write_daylight_factor_csv(grid.points, df, join_path(folder, "daylight_factor.csv"), df_stderr);
+        ctx.outputs.record(join_path(folder, "daylight_factor.csv"));
+      }
       const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent);
       nlohmann::json areas = nlohmann::json::array();
       for (const auto& [threshold, area] : st.area_at_or_above_percent)
@@ -221,6 +231,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
 
   // 5-6. Annual illuminance and metrics.
   const bool annual = project.outputs.annual_illuminance || project.outputs.metrics;
+  // The annual multiply (not cached) only where its result is kept: not by a unit executor
+  // (case_units.h), which writes nothing and shares no blocks; its steps still run.
+  const bool multiply = annual && (ctx.executor.writes_results() || ctx.executor.shares_sensor_blocks());
   const bool sun_bins = sim.sun == project::SunMode::Bins;
   const AnnualOutputs which = annual_outputs_of(project);
   // The schedule the metrics of each grid use (docs/metrics.md "Occupancy schedules").
@@ -273,7 +286,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
           ctx.outputs.record(d_path);
         }
       }
-      if (!annual) continue;
+      if (!multiply) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
       const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
       const GridSunCoefficients grid_sun{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins};
@@ -308,7 +321,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     }
   } else if (annual) {
     const AnnualSky& sky = annual_sky(project, ctx);
-    for (std::size_t g = 0; g < description.grids.size(); ++g) {
+    for (std::size_t g = 0; g < description.grids.size() && multiply; ++g) {
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
       const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
@@ -355,33 +368,58 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   std::optional<SunSite> sun_site;
   std::optional<sky::BelowHorizonDirect> below_horizon;
   const bool annual_study = project.study == project::StudyKind::Annual;
-  if (annual_study) {
-    weather = weather::read_hourly_weather(project.weather.path);
-    sun_site = resolve_sun_site(project.site, *weather);
-    below_horizon = annual_below_horizon_direct(*weather, *sun_site);
+  // Operated shading needs each hour's direct sun (the loader says so for project files).
+  const project::OperationSpec* op = project.operation ? &*project.operation : nullptr;
+  std::exception_ptr input_failure;
+  try {
+    if (annual_study) {
+      weather = weather::read_hourly_weather(project.weather.path);
+      sun_site = resolve_sun_site(project.site, *weather);
+      below_horizon = annual_below_horizon_direct(*weather, *sun_site);
+    }
+    // The points in time whose sun needs no tracing are checked before anything is written.
+    check_points_in_time(
+        project.points_in_time, sun_site ? sun_site->solar
+                                         : sky::SolarSite{project.site.latitude_deg, project.site.longitude_deg,
+                                                          project.site.time_zone_h, project.site.elevation_m});
+    if (op && sim.sun != project::SunMode::Bins)
+      throw InputError(op->location, "operation needs the direct sun of every hour: set simulation.sun to 'bins'");
+  } catch (...) {
+    input_failure = std::current_exception();
   }
-  // The points in time whose sun needs no tracing are checked before anything is written.
-  check_points_in_time(
-      project.points_in_time, sun_site ? sun_site->solar
-                                       : sky::SolarSite{project.site.latitude_deg, project.site.longitude_deg,
-                                                        project.site.time_zone_h, project.site.elevation_m});
+  if (settings.inputs_checked) settings.inputs_checked(input_failure);
+  if (input_failure) std::rethrow_exception(input_failure);
   report.output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
-  fs::create_directories(report.output_dir);
-  // One run per folder (output_lock.h); then what earlier runs left: temporaries of killed
-  // writers, and the outputs of the previous run, which this one replaces (output_manifest.h).
-  const OutputLock lock = OutputLock::acquire(report.output_dir, settings.command);
-  // The cache beside the output folder (cache_folder.h); an earlier version's cache inside
-  // it moves there.
+  // The cache beside the output folder (cache_folder.h), and the executor every cached step
+  // goes through (step_executor.h). Neither touches the disk before a step runs.
   const std::string cache_dir = settings.cache_dir.empty() ? default_cache_folder(report.output_dir) : settings.cache_dir;
-  const bool adopted = adopt_legacy_cache(report.output_dir, cache_dir);
-  const std::size_t temporaries = remove_dead_temporaries(report.output_dir) + remove_dead_temporaries(cache_dir);
-  const std::string this_run = lock.owner().describe();
-  OutputManifest outputs = OutputManifest::begin(report.output_dir, this_run);
-  // The previous run's times go with its outputs: a report of this folder must not show them.
-  std::error_code no_timings;
-  fs::remove(join_path(report.output_dir, TimingsFileName), no_timings);
   const ArtifactStore store(cache_dir);
-  RunLog log(progress, join_path(report.output_dir, "run.log"));
+  const std::unique_ptr<StepExecutor> executor =
+      settings.make_executor ? settings.make_executor(store, settings.force) : make_local_executor(store, settings.force);
+  // The writer flag: the ranks other than 0 of an MPI run write nothing at all (no lock, no
+  // manifest, no run.log, no result file, nothing in the cache); they take part in every step.
+  const bool writer = executor->writes_results();
+  std::optional<OutputLock> lock;
+  bool adopted = false;
+  std::size_t temporaries = 0;
+  std::string this_run;
+  if (writer) {
+    fs::create_directories(report.output_dir);
+    // One run per folder (output_lock.h); then what earlier runs left: temporaries of killed
+    // writers, and the outputs of the previous run, which this one replaces (output_manifest.h).
+    lock.emplace(OutputLock::acquire(report.output_dir, settings.command));
+    // An earlier version's cache inside the output folder moves to the cache folder.
+    adopted = adopt_legacy_cache(report.output_dir, cache_dir);
+    temporaries = remove_dead_temporaries(report.output_dir) + remove_dead_temporaries(cache_dir);
+    this_run = lock->owner().describe();
+  }
+  OutputManifest outputs = writer ? OutputManifest::begin(report.output_dir, this_run) : OutputManifest::none(report.output_dir);
+  if (writer) {
+    // The previous run's times go with its outputs: a report of this folder must not show them.
+    std::error_code no_timings;
+    fs::remove(join_path(report.output_dir, TimingsFileName), no_timings);
+  }
+  RunLog log(progress, writer ? join_path(report.output_dir, "run.log") : std::string());
   log.line("project " + project.path + " -> " + report.output_dir);
   log.quiet_line("run: " + this_run);
   log.quiet_line("cache: " + cache_dir);
@@ -390,8 +428,8 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   // What the weather reader accepted with a warning (ignored fields, filled gaps, variants).
   if (weather)
     for (const Diagnostic& w : weather->warnings) log.line("weather: " + w.format().substr(0, w.format().find('\n')));
-  if (lock.taken_over())
-    log.line("took over the lock of a run that no longer exists: " + lock.taken_over()->describe());
+  if (lock && lock->taken_over())
+    log.line("took over the lock of a run that no longer exists: " + lock->taken_over()->describe());
   if (temporaries > 0)
     log.line("removed " + std::to_string(temporaries) + " temporary file(s) of interrupted writes");
   if (outputs.stale_removed() > 0)
@@ -418,10 +456,6 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     report.notes.push_back("system: " + project::describe_system_light(system));
   for (const std::string& n : report.notes) log.line(n);
 
-  // Operated shading needs each hour's direct sun (the loader says so for project files).
-  const project::OperationSpec* op = project.operation ? &*project.operation : nullptr;
-  if (op && sim.sun != project::SunMode::Bins)
-    throw InputError(op->location, "operation needs the direct sun of every hour: set simulation.sun to 'bins'");
   CaseTables open_tables, shaded_tables;
   auto keep = [&](const std::string& name) -> CaseTables* {
     if (!op) return nullptr;
@@ -430,13 +464,34 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     return nullptr;
   };
 
-  // The plan, built once (simulation_plan.h), and the executor every cached step goes
-  // through (step_executor.h).
+  // The plan, built once (simulation_plan.h).
   const SimulationPlan plan = SimulationPlan::of(project);
-  const std::unique_ptr<StepExecutor> executor =
-      settings.make_executor ? settings.make_executor(store, settings.force) : make_local_executor(store, settings.force);
   RunContext ctx{settings, progress, log, report, store, outputs, plan, *executor, std::nullopt, std::nullopt,
                  weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
+  // With at least as many cases as MPI ranks, whole cases are the units (case_units.h): each
+  // rank first runs the steps of the cases it owns alone, writing nothing (a log to the
+  // progress output only); join() stores them all in rank 0's cache; then every case runs
+  // below as always, its steps from the cache.
+  if (const std::unique_ptr<CaseUnits> units = executor->case_units(1 + project.variants.size())) {
+    OutputManifest unit_outputs = OutputManifest::none(report.output_dir);
+    RunReport unit_report;
+    RunLog unit_log(progress, std::string());
+    RunContext unit_ctx{settings, progress, unit_log, unit_report, store, unit_outputs, plan, units->executor(),
+                        std::nullopt, std::nullopt, weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
+    for (std::size_t c = 0; c <= project.variants.size(); ++c) {
+      if (!units->mine(c)) continue;
+      CaseResult unused = results_case("base", "", "", {});
+      unit_ctx.results = &unused;
+      if (c == 0) {
+        run_case(project, "", report.output_dir, unit_ctx);
+      } else {
+        const project::VariantSpec& v = project.variants[c - 1];
+        run_case(project::apply_variant(project, v), v.name,
+                 join_path(join_path(report.output_dir, "variants"), v.name), unit_ctx);
+      }
+    }
+    log.line(units->join());
+  }
   // The project as written is the base case, in <output>/<grid>/; each variant is studied
   // in addition, in <output>/variants/<variant>/<grid>/ (a folder no grid name can clash with).
   std::vector<CaseResult> cases{results_case("base", "", "", {})};
@@ -464,7 +519,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     ctx.results = &shading;
     operated = run_operated(project, *op, open_tables, shaded_tables, join_path(report.output_dir, "operated"), ctx);
     cases.push_back(std::move(shading));
-  } else if (op) {
+  } else if (op && writer) {  // the other ranks of an MPI run have no annual tables
     log.line("operated: skipped (no annual results)");
   }
 
@@ -523,6 +578,11 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                  ", traced " + std::to_string(report.sun_bins_traced));
   log.quiet_line("photon cap: " + std::to_string(report.sources_capped) + " source(s), " +
                  std::to_string(report.sun_bins_capped) + " sun bin(s) capped (of those traced or read in this run)");
+  // What follows is files only: a process that writes nothing is done.
+  if (!writer) {
+    progress.end();
+    return report;
+  }
   // 8. results.json, the typed results model, then the images and report.html made from it
   // alone (report/, docs/report.md).
   ResultsModel model = results_model_header(project, settings.version, sun_site ? &*sun_site : nullptr,

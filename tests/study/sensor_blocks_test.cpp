@@ -372,6 +372,44 @@ void expect_annual_blocks_are_the_whole_study(bool with_sun) {
   }
 }
 
+TEST(SensorBlocks, AnOverflowInTheAnnualMultiplyNamesTheGridsOwnSensor) {
+  // Sensor 13 (the second block of 8) has a coefficient near the float maximum: its
+  // illuminance overflows a float. One process and the blocks name the same sensor.
+  const weather::HourlyWeather epw = weather::read_hourly_weather(std::string(DAYPHOTON_SOURCE_DIR) +
+                                                                  "/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw");
+  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  const SkyAndSuns ss = annual_sky_and_suns(epw, sky::solar_site_of(epw), basis, sun_excluded_sky_options(0.2));
+  RadianceMatrix sky_c(20, std::size_t(basis.bin_count()), 3);
+  for (std::size_t i = 0; i < sky_c.data().size(); ++i) sky_c.data()[i] = 0.01f;
+  const std::size_t per_row = std::size_t(basis.bin_count()) * 3;
+  for (std::size_t i = 0; i < per_row; ++i) sky_c.data()[13 * per_row + i] = 3e38f;
+  const AnnualStudySettings settings;
+  std::string alone;
+  try {
+    compute_annual_study(sky_c, ss.sky, settings);
+    ADD_FAILURE() << "no overflow in one process";
+  } catch (const std::range_error& e) {
+    alone = e.what();
+  }
+  ASSERT_EQ(alone.rfind("annual illuminance: sensor 13 at step ", 0), 0u) << alone;
+  const auto errors = dist::test::run_ranks(2, [&](dist::Communicator& comm) {
+    const ArtifactStore store(fresh_dir("annual_overflow_rank" + std::to_string(comm.rank())).string());
+    const auto executor = make_distributed_executor(comm, store, false, 8);
+    annual_study_in_blocks(*executor, "grid", sky_c, ss.sky, settings);
+  });
+  for (const std::exception_ptr& e : errors) {
+    ASSERT_TRUE(e);
+    try {
+      std::rethrow_exception(e);
+    } catch (const dist::DistributedJobError& x) {
+      EXPECT_EQ(x.job_message(), alone);
+      EXPECT_NE(std::string(x.what()).find("sensors 8 to 15"), std::string::npos) << x.what();
+    } catch (const std::exception& x) {
+      ADD_FAILURE() << "not a DistributedJobError: " << x.what();
+    }
+  }
+}
+
 TEST(SensorBlocks, TheAnnualMultiplyByBlocksIsTheWholeStudyOnRankZero) {
   expect_annual_blocks_are_the_whole_study(true);
   expect_annual_blocks_are_the_whole_study(false);

@@ -1,11 +1,16 @@
 #!/usr/bin/env bash
 # `dayphoton run` distributed by mpirun (study/distributed_executor.h, docs/cluster.md): the
 # office (at a fortieth of its photons, which changes nothing but the noise) run by one process
-# and under `mpirun -np 1`, `-np 2` and `-np 3 --oversubscribe`, and the two-variant office by
-# one process and under `-np 3`,
-# every run with a cache of its own. Every file of the results folders must be byte-identical
+# and under `mpirun -np 1`, `-np 2` and `-np 3 --oversubscribe`, and the two-variant office
+# likewise, every run with a cache of its own. Every file of the results folders must be byte-identical
 # to the one-process run's, apart from run.log and timings.json (times) and the output folder's
-# name in summary.json; the other ranks leave no scratch folder behind. No pictures and no
+# name in summary.json; every cache holds the one-process run's artefacts and list of used
+# ones. The two-variant office (three cases) goes as whole cases over 2 and 3 ranks
+# (study/case_units.h: its run.log says so; the office never). The ranks other than 0 write
+# nothing (the writer flag, study_runner.h): each is started by a wrapper with a TMPDIR that is a file, not a folder, with a working
+# folder of its own and with --output and --cache of its own, none of which may gain a file,
+# so a rank that wrote anything anywhere it could (its results, run.log, the cache, a scratch
+# folder) fails the test. No pictures and no
 # report: report.html shows the run's times (its appendix), and it is made from results.json,
 # which is compared.
 # Usage: run_study_under_mpirun.sh DAYPHOTON MPIEXEC SOURCE_DIR
@@ -16,8 +21,27 @@ source_dir=$3
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-export TMPDIR=$tmp  # the other ranks' scratch folders go here
 fail=0
+
+# Each rank other than 0: TMPDIR a file (anything that made a temporary folder fails), its own
+# working folder, and "-rank<N>" appended to the folders of --output and --cache.
+echo "not a folder" > "$tmp/not-a-folder"
+cat > "$tmp/rank.sh" <<EOF
+#!/usr/bin/env bash
+rank=\${OMPI_COMM_WORLD_RANK:?not started by mpirun}
+[ "\$rank" = 0 ] && exec "$dayphoton" "\$@"
+export TMPDIR="$tmp/not-a-folder"
+mkdir -p "$tmp/cwd-rank\$rank" && cd "$tmp/cwd-rank\$rank" || exit 3
+args=()
+while [ \$# -gt 0 ]; do
+  case "\$1" in
+    --output|--cache) args+=("\$1" "\$2-rank\$rank"); shift 2 ;;
+    *) args+=("\$1"); shift ;;
+  esac
+done
+exec "$dayphoton" "\${args[@]}"
+EOF
+chmod +x "$tmp/rank.sh"
 
 mkdir -p "$tmp/office"
 cp "$source_dir/projects/office/project.yaml" "$source_dir/projects/office/"*.epw "$tmp/office/"
@@ -41,7 +65,7 @@ for p in office office_variants; do
     > /dev/null || { echo "$p: the one-process run failed"; fail=1; continue; }
   for np in 1 2 3; do
     out=$tmp/out/$p-np$np
-    timeout 300 "$mpiexec" -np $np --oversubscribe --bind-to none "$dayphoton" run "$project" --output "$out" \
+    timeout 300 "$mpiexec" -np $np --oversubscribe --bind-to none "$tmp/rank.sh" run "$project" --output "$out" \
       --cache "$tmp/cache/$p-np$np" --quiet > "$tmp/$p-np$np.log" 2>&1
     rc=$?
     [ $rc -eq 0 ] || { echo "$p: mpirun -np $np: exit $rc"; cat "$tmp/$p-np$np.log"; fail=1; continue; }
@@ -49,6 +73,17 @@ for p in office office_variants; do
       echo "$p: mpirun -np $np wrote other results than the one-process run"
       fail=1
     fi
+    # The cache: the same artefacts, and the same list of those the run used.
+    if ! diff -r -q "$tmp/cache/$p-serial" "$tmp/cache/$p-np$np" > /dev/null; then
+      echo "$p: mpirun -np $np cached other artefacts than the one-process run"
+      diff -r -q "$tmp/cache/$p-serial" "$tmp/cache/$p-np$np" | head -5
+      fail=1
+    fi
+    # The variants (three cases) go as units from 2 ranks on (study/case_units.h); the office
+    # (one case) never.
+    units=$(grep -c "^cases as units over $np ranks: rank 0 case" "$out/run.log")
+    if [ "$p" = office_variants ] && [ $np -ge 2 ]; then expected=1; else expected=0; fi
+    [ "$units" -eq $expected ] || { echo "$p: mpirun -np $np: $units line(s) on cases as units, not $expected"; fail=1; }
     # summary.json names the output folder; apart from it, the same bytes.
     if ! cmp -s <(sed "s|$tmp/out/$p-serial|OUT|g" "$tmp/out/$p-serial/summary.json") \
                 <(sed "s|$out|OUT|g" "$out/summary.json"); then
@@ -57,6 +92,9 @@ for p in office office_variants; do
     fi
   done
 done
-leftover=$(find "$tmp" -maxdepth 1 -name 'dayphoton-rank-*' | head -1)
-[ -z "$leftover" ] || { echo "a rank's scratch folder was left behind: $leftover"; fail=1; }
+# What the ranks other than 0 wrote: nothing, anywhere.
+written=$(find "$tmp/out" "$tmp/cache" -maxdepth 1 -name '*-rank*'; find "$tmp"/cwd-rank* -mindepth 1)
+[ -z "$written" ] || { echo "a rank other than 0 wrote files:"; echo "$written" | head; fail=1; }
+[ "$(cat "$tmp/not-a-folder")" = "not a folder" ] || { echo "the other ranks' TMPDIR changed"; fail=1; }
+ls -d "$tmp"/cwd-rank1 "$tmp"/cwd-rank2 > /dev/null || { echo "the wrapper did not start ranks 1 and 2"; fail=1; }
 exit $fail

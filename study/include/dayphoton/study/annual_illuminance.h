@@ -23,10 +23,14 @@ namespace dayphoton::study {
 
 /// `coefficients`: sensors x bins x 3; `sky_matrix`: bins x steps x 3 (both may instead have
 /// one component, weight 179); `steps` one per column. Parallel over time steps (oneTBB).
-/// Throws std::invalid_argument on size or component mismatches.
+/// Throws std::invalid_argument on size or component mismatches, std::range_error naming the
+/// sensor and step where a value overflows a float. `first_sensor`: the grid's index of the
+/// coefficients' first row, when they are a block of a grid's sensors (annual_blocks.h), so
+/// that the error names the grid's own sensor.
 metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
                                              const RadianceMatrix& sky_matrix,
-                                             const std::vector<metrics::TimeStamp>& steps);
+                                             const std::vector<metrics::TimeStamp>& steps,
+                                             std::size_t first_sensor = 0);
 
 /// Write / read the binary layout above (atomic write; read throws std::runtime_error
 /// naming the file on any layout problem: magic, size, a time stamp outside month 1..12,

@@ -25,8 +25,12 @@
 // them, sharing their attempt ranges and sensor blocks through round_work()
 // (distributed_round_work.h), and rank 0 stores the result.
 //
-// The caller makes sure the other ranks write nothing the user sees (the app gives them a
-// scratch output folder it removes, app/main.cpp).
+// With at least as many cases (the base project and its variants) as ranks, case_units()
+// hands out whole cases (case_units.h): each rank computes its own cases' steps alone, rank 0
+// stores them, and the cases then run through this executor from the cache.
+//
+// writes_results() is true on rank 0 alone: run_study's writer flag (study_runner.h), so the
+// other ranks write nothing at all (no output folder, no run.log, no cache).
 #pragma once
 
 #include <cstddef>

@@ -39,6 +39,11 @@ class OutputManifest {
   /// file when the marker cannot be written.
   static OutputManifest begin(const std::string& dir, const std::string& run);
 
+  /// The manifest of a process that writes nothing into `dir` (the ranks other than 0 of an
+  /// MPI run): no marker, nothing removed, no entries; record() throws std::logic_error, since
+  /// such a process must not have written an output.
+  static OutputManifest none(const std::string& dir);
+
   /// How many files of the previous run begin() removed.
   std::size_t stale_removed() const { return m_stale_removed; }
 
@@ -58,6 +63,7 @@ class OutputManifest {
   OutputManifest(std::string dir, std::size_t stale_removed);
   std::string m_dir;
   std::size_t m_stale_removed = 0;
+  bool m_writes = true;  ///< false: none()
   std::set<std::string> m_recorded;
   std::ofstream m_marker;
 };

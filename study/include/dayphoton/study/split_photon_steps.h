@@ -29,15 +29,29 @@ namespace dayphoton::study {
 std::vector<std::size_t> photon_steps_to_split(const std::vector<Step>& steps, const std::vector<std::size_t>& misses,
                                                int ranks);
 
+/// How one split source was traced: in how many attempt ranges, over how many passes.
+struct SplitSourceRanges {
+  std::size_t step = 0;    ///< index into the batch
+  std::size_t ranges = 0;  ///< attempt ranges over all its passes
+  std::size_t passes = 0;  ///< passes traced (rounds it took part in)
+  std::uint64_t attempts = 0;  ///< attempts over all its passes
+};
+
 /// Traces steps[k] for every k of `split` (each with ranges) over comm's ranks and calls
 /// deliver(k, artefacts) on every rank as each finishes (one artefact: the photons). A pass is
 /// cut into ranges of at least `min_range_attempts` (the executor: MinSplitRangeAttempts,
 /// plan_policy.h), at most one per rank. Collective. A range that throws ends every rank with
-/// the same dist::DistributedJobError.
-void run_split_photon_steps(dist::Communicator& comm, const std::vector<Step>& steps,
+/// the same dist::DistributedJobError. Returns, in the order of `split`, each source's ranges
+/// and passes (the same on every rank).
+std::vector<SplitSourceRanges> run_split_photon_steps(dist::Communicator& comm, const std::vector<Step>& steps,
                             const std::vector<std::size_t>& split,
                             const std::function<void(std::size_t step, const std::vector<std::string>& artefacts)>&
                                 deliver,
                             std::uint64_t min_range_attempts);
+
+/// The run log's line about a batch's split sources (`split` as run_split_photon_steps returned
+/// it): e.g. "photons: 1 source split into attempt ranges over 3 ranks: source photons 0
+/// (7 ranges in 3 passes, 39984 attempts)"; at most 8 sources are named.
+std::string split_sources_line(const std::vector<Step>& steps, const std::vector<SplitSourceRanges>& split, int ranks);
 
 }  // namespace dayphoton::study

@@ -29,6 +29,8 @@
 
 namespace dayphoton::study {
 
+class CaseUnits;
+
 class StepExecutor {
  public:
   /// `force`: ignore the cache (every step is computed; its artefacts are still stored).
@@ -53,11 +55,23 @@ class StepExecutor {
   /// and the step took them. Never computes; always false with `force`.
   virtual bool lookup(const Step& step) const;
 
+  /// Where the executor's own notes go, a line each (the distributed executor's: which sources
+  /// it split into attempt ranges); run_study sends them to the run log. Empty: dropped.
+  using NoteSink = std::function<void(const std::string& line)>;
+  void set_note_sink(NoteSink sink) { m_note = std::move(sink); }
+
+  /// Whole cases (the base project and each variant) as units over the processes, when this
+  /// executor assigns them (the distributed executor with at least as many cases as ranks,
+  /// case_units.h); null: every case's steps go through this executor. Collective.
+  virtual std::unique_ptr<CaseUnits> case_units(std::size_t cases);
+
   /// Whether this executor shares sensor blocks out over several processes (the distributed
   /// executor with more than one rank): what is computed per grid but not cached (the annual
   /// multiply, annual_blocks.h) then goes by blocks too, through blocks_to_root.
   virtual bool shares_sensor_blocks() const { return false; }
-  /// Whether this process writes the run's results: false on the ranks other than 0.
+  /// Whether this process writes the run's results: false on the ranks other than 0. It is
+  /// run_study's writer flag (study_runner.h): a process that does not write takes no output
+  /// lock, keeps no manifest or run.log and writes no file, and still runs every step.
   virtual bool writes_results() const { return true; }
   /// Only where shares_sensor_blocks(); collective: the blocks of `blocks` (sensor_blocks.h)
   /// computed over the processes, nothing cached. Rank 0 returns every block's outputs in
@@ -74,8 +88,14 @@ class StepExecutor {
   /// lookup, else compute and store: the whole pattern for a step run in this process.
   bool run_here(const Step& step) const;
 
+  /// A note for the run log (set_note_sink).
+  void note(const std::string& line) const {
+    if (m_note) m_note(line);
+  }
+
   const ArtifactStore& m_store;
   const bool m_force;
+  NoteSink m_note;
 };
 
 /// The executor of one process: a batch's steps in parallel over this machine's cores (TBB).

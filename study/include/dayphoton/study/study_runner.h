@@ -32,10 +32,16 @@
 // Before step 1 the run takes the output folder's lock (output_lock.h; OutputFolderBusy when
 // another run holds it), deletes temporaries of killed writers and the previous run's outputs,
 // and marks the folder INCOMPLETE until summary.json is written (output_manifest.h).
+// Under MPI with at least as many cases (base and variants) as ranks, each rank first runs
+// the steps of its own cases alone (case_units.h); the cases then run from the cache.
+// The writer flag is the executor's writes_results() (step_executor.h): false on the ranks
+// other than 0 of an MPI run, which then run every step with the others but take no lock,
+// write no marker, run.log, result file or used-by-last-run.txt, and create no folder.
 // The run log (<output>/run.log, and the progress output) states for every step whether it
 // was computed or taken from the cache, e.g. "photons: traced 0 of 146 sources (146 cached)".
 #pragma once
 
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>
@@ -65,6 +71,11 @@ struct RunSettings {
   /// (make_local_executor). `dayphoton run` under mpirun gives each rank the distributed one
   /// (distributed_executor.h).
   std::function<std::unique_ptr<StepExecutor>(const ArtifactStore& store, bool force)> make_executor;
+  /// Called once the inputs run_study reads itself (the weather file, the site of its sun, the
+  /// points in time, the operation's sun mode) are checked, before anything is written, with
+  /// their failure or null; it throws to end the run. Empty: the failure is rethrown. Under
+  /// mpirun the app makes the ranks agree on it here, so that rank 0 alone prints it.
+  std::function<void(const std::exception_ptr& failure)> inputs_checked;
 };
 
 struct GridReport {
