@@ -68,9 +68,8 @@ class BlockSink final : public PhotonSink {
       : m_out(out), m_options(options), m_d(d) {}
   /// The attempt whose photons follow: their storage stream, made on first use (only the
   /// main pass's storage probabilities below 1 draw from it).
-  void set_attempt(std::uint64_t seed, std::uint32_t source, std::uint64_t index) {
-    m_seed = seed;
-    m_source = source;
+  void set_attempt(RngSourceKey key, std::uint64_t index) {
+    m_key = key;
     m_index = index;
     m_storage.reset();
   }
@@ -84,7 +83,7 @@ class BlockSink final : public PhotonSink {
                                                                : m_d.direct;
     // Stored or not; the flux is set per class after the passes (stored_photon_flux).
     if (d < 1) {
-      if (!m_storage) m_storage.emplace(m_seed, m_source, m_index, RandomStream::Storage);
+      if (!m_storage) m_storage.emplace(m_key, m_index, RandomStream::Storage);
       if (!(m_storage->uniform() < d)) return;
     }
     (photon.path_class == PathClass::Global    ? m_out.global
@@ -102,8 +101,8 @@ class BlockSink final : public PhotonSink {
   const TracingOptions& m_options;
   StorageProbabilities m_d;
   std::optional<Rng> m_storage;
-  std::uint64_t m_seed = 0, m_index = 0;
-  std::uint32_t m_source = 0;
+  RngSourceKey m_key{0};
+  std::uint64_t m_index = 0;
 };
 
 // The first scattering event of a path, at `position` on a surface of `material` (geometric
@@ -187,6 +186,7 @@ bool trace_path(const Scene& scene, const std::vector<Material>& materials,
   bool diffuse = start.diffuse_scattered;
   bool outdoors = start.outdoors;
   bool was_indoors = !outdoors;
+  const double epsilon_m = scene.ray_epsilon_m();
   Ray ray{start.origin, start.direction, 0.0, std::numeric_limits<double>::infinity()};
   for (int event = 0; event <= options.max_events; ++event) {
     const PathClass path_class = !scattered ? PathClass::Direct
@@ -242,7 +242,7 @@ bool trace_path(const Scene& scene, const std::vector<Material>& materials,
       scattered = true;
       diffuse = diffuse || is_diffuse(s->type);
     }
-    ray = Ray{scene.offset_ray_origin(hit->position, hit->normal, s->direction), s->direction,
+    ray = Ray{offset_ray_origin(hit->position, hit->normal, s->direction, epsilon_m), s->direction,
               0.0, std::numeric_limits<double>::infinity()};
   }
   return was_indoors;
@@ -266,6 +266,7 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
   if (last <= first) return c;
   const std::uint64_t blocks = (last - first + AttemptsPerBlock - 1) / AttemptsPerBlock;
   std::vector<BlockResult> block_results(blocks);
+  const RngSourceKey key = Rng::source_key(options.seed, source);
   tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t b) {
     BlockResult& out = block_results[b];
     out.planes.resize(planes.size());
@@ -273,13 +274,13 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
     const std::uint64_t begin = first + b * AttemptsPerBlock;
     const std::uint64_t end = std::min(last, begin + AttemptsPerBlock);
     for (std::uint64_t i = begin; i < end; ++i) {
-      Rng emission(options.seed, source, i, RandomStream::Emission);
+      Rng emission(key, i, RandomStream::Emission);
       const std::optional<PortEntry> entry = emitter.attempt(source, emission, &out.rays);
       if (!entry) continue;
       ++out.entered;
-      Rng scattering(options.seed, source, i, RandomStream::Scattering);
-      Rng roulette_rng(options.seed, source, i, RandomStream::Roulette);
-      sink.set_attempt(options.seed, source, i);
+      Rng scattering(key, i, RandomStream::Scattering);
+      Rng roulette_rng(key, i, RandomStream::Roulette);
+      sink.set_attempt(key, i);
       const std::optional<PathStart> start =
           entry->port >= 0
               ? pass_port(scene, materials, *entry, source, scattering, roulette_rng)
