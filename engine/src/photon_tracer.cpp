@@ -125,17 +125,33 @@ std::optional<PathStart> first_event(const Scene& scene, const Material& materia
   return start;
 }
 
+// What pass_port needs of a port: looked up once per pass, not once per photon.
+struct PortPane {
+  const Port* port = nullptr;
+  const Material* material = nullptr;
+  bool straight_only = false;  ///< glass, glazing or opening: transmits only straight through
+};
+
+std::vector<PortPane> port_panes(const Scene& scene, const std::vector<Material>& materials) {
+  std::vector<PortPane> panes;
+  for (const Port& port : scene.ports().ports()) {
+    const Material& material =
+        materials[static_cast<std::size_t>(scene.description().surfaces[static_cast<std::size_t>(port.surface)].material)];
+    const MaterialType type = material.type();
+    panes.push_back(PortPane{&port, &material,
+                             type == MaterialType::Glass || type == MaterialType::Glazing || type == MaterialType::Opening});
+  }
+  return panes;
+}
+
 // The port's own scattering event (seeds/000 section 4.1.3: photons leave the port "as if
 // they had passed through it"). Returns the path start, or nothing if the photon is
 // reflected back out or absorbed.
-std::optional<PathStart> pass_port(const Scene& scene, const std::vector<Material>& materials,
-                                   const PortEntry& entry, std::uint32_t source, Rng& scattering,
-                                   Rng& roulette_rng) {
-  const Port& port = scene.ports()[static_cast<std::size_t>(entry.port)];
-  const Material& material =
-      materials[static_cast<std::size_t>(scene.description().surfaces[port.surface].material)];
-  const MaterialType type = material.type();
-  if (type == MaterialType::Glass || type == MaterialType::Glazing || type == MaterialType::Opening) {
+std::optional<PathStart> pass_port(const Scene& scene, const PortPane& pane, const PortEntry& entry,
+                                   std::uint32_t source, Rng& scattering, Rng& roulette_rng) {
+  const Port& port = *pane.port;
+  const Material& material = *pane.material;
+  if (pane.straight_only) {
     // These transmit only straight through; what they reflect goes back out of the room and is
     // not followed. So the photon passes with the transmittance as its weight instead of a
     // sampled event and roulette: the same expected flux, and no entering photon lost at the
@@ -177,10 +193,14 @@ std::optional<PathStart> land_on_scatterer(const Scene& scene, const std::vector
 
 }  // namespace
 
-bool trace_path(const Scene& scene, const std::vector<Material>& materials,
-                const std::vector<ReceiverPlane>& planes, const PathStart& start,
-                const TracingOptions& options, Rng& scattering, Rng& roulette_rng,
-                PhotonSink& sink, std::uint64_t* rays) {
+namespace {
+
+// trace_path for a sink of type Sink: the tracer's own (final) block sink gets direct calls.
+template <class Sink>
+bool trace_path_to(const Scene& scene, const std::vector<Material>& materials,
+                   const std::vector<ReceiverPlane>& planes, const PathStart& start,
+                   const TracingOptions& options, Rng& scattering, Rng& roulette_rng, Sink& sink,
+                   std::uint64_t* rays) {
   Vec3 flux = start.flux;
   bool scattered = start.scattered;
   bool diffuse = start.diffuse_scattered;
@@ -248,6 +268,15 @@ bool trace_path(const Scene& scene, const std::vector<Material>& materials,
   return was_indoors;
 }
 
+}  // namespace
+
+bool trace_path(const Scene& scene, const std::vector<Material>& materials,
+                const std::vector<ReceiverPlane>& planes, const PathStart& start,
+                const TracingOptions& options, Rng& scattering, Rng& roulette_rng,
+                PhotonSink& sink, std::uint64_t* rays) {
+  return trace_path_to(scene, materials, planes, start, options, scattering, roulette_rng, sink, rays);
+}
+
 namespace {
 
 // Trace attempts [first, last) of `source`, in parallel blocks, appending to `result` (its
@@ -267,6 +296,7 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
   const std::uint64_t blocks = (last - first + AttemptsPerBlock - 1) / AttemptsPerBlock;
   std::vector<BlockResult> block_results(blocks);
   const RngSourceKey key = Rng::source_key(options.seed, source);
+  const std::vector<PortPane> panes = port_panes(scene, materials);
   tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t b) {
     BlockResult& out = block_results[b];
     out.planes.resize(planes.size());
@@ -283,11 +313,11 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
       sink.set_attempt(key, i);
       const std::optional<PathStart> start =
           entry->port >= 0
-              ? pass_port(scene, materials, *entry, source, scattering, roulette_rng)
+              ? pass_port(scene, panes[static_cast<std::size_t>(entry->port)], *entry, source, scattering, roulette_rng)
               : land_on_scatterer(scene, materials, *entry, source, options, scattering, roulette_rng, sink);
       if (!start) continue;
-      const bool indoors = trace_path(scene, materials, planes, *start, options, scattering, roulette_rng,
-                                      sink, &out.rays);
+      const bool indoors = trace_path_to(scene, materials, planes, *start, options, scattering, roulette_rng,
+                                         sink, &out.rays);
       if (entry->scatterer >= 0 && indoors) ++out.scattered_indoors;
     }
     out.complete = true;
