@@ -406,8 +406,9 @@ TEST(PhotonCounts, PhotonsArePinned) {
   // Photon i of a source is a pure function of (seed, source, i): changes made for speed
   // (inlined rounding, hashing the seed and source once per source, the pure diffuse
   // reflector's sampling without the component selection) must leave every byte as it was.
-  // The digests were recorded with the tracer of main c1bb538; a change that alters the
-  // photons on purpose must say why and record new ones. Both grey (glass) and coloured
+  // The digests were recorded with the tracer of main c1bb538 on the project's machine kind
+  // (Debian's glibc libm: another libm may round a sine or a power differently in the last
+  // bit); a change that alters the photons on purpose must say why and record new ones. Both grey (glass) and coloured
   // (plastic with a specular part, sampled through the component selection) rooms.
   const SourceSet sources = SourceSet::sky_bins(sky::PatchBasis::tregenza());
   const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8)};
