@@ -6,7 +6,9 @@
 // on random rays inside the same room, on all cores, and the bytes per stored photon (record
 // + tree). Rates are given per second of wall time and per second of process CPU time; the
 // ratio of the forward pass to the raw rate is taken from CPU time, which other programs
-// sharing the machine do not distort (the wall-time ratio is printed too).
+// sharing the machine do not distort (the wall-time ratio is printed too). Last, a digest of
+// the traced photons (every byte of every record, in order) and of the per-source tallies:
+// a change meant to leave the photons byte-identical must leave it unchanged.
 // Usage: photon_tracing_bench [photons_per_bin (default 20000)]
 #include <tbb/parallel_for.h>
 
@@ -26,6 +28,13 @@ using namespace dayphoton;
 using Clock = std::chrono::steady_clock;
 
 namespace {
+// FNV-1a (Fowler, Noll and Vo), 64-bit, over `bytes` bytes.
+std::uint64_t fnv1a(std::uint64_t hash, const void* data, std::size_t bytes) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (std::size_t i = 0; i < bytes; ++i) hash = (hash ^ p[i]) * 1099511628211ull;
+  return hash;
+}
+
 double cpu_seconds() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
@@ -92,5 +101,14 @@ int main(int argc, char** argv) {
   const engine::PhotonMap map(t.planes[0]);
   std::printf("  memory: %zu bytes per photon record, %.1f bytes per photon in a built map\n",
               sizeof(engine::Photon), double(map.memory_bytes()) / double(map.size()));
+  std::uint64_t digest = 14695981039346656037ull;
+  digest = fnv1a(digest, t.surface.data(), t.surface.size() * sizeof(engine::Photon));
+  for (const auto& p : t.planes) digest = fnv1a(digest, p.data(), p.size() * sizeof(engine::Photon));
+  for (const auto& tally : t.tallies)
+    for (const std::uint64_t v : {tally.prepass_attempts, tally.mainpass_attempts, tally.entered, tally.stored_global,
+                                  tally.stored_caustic, tally.stored_direct, tally.rays})
+      digest = fnv1a(digest, &v, sizeof v);
+  std::printf("  photon digest (FNV-1a of the records and tallies): %016llx\n",
+              static_cast<unsigned long long>(digest));
   return 0;
 }

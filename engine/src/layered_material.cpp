@@ -70,6 +70,8 @@ class LayeredMaterial final : public MaterialModel {
     // reflected lobe (a half-vector slope of alpha / sqrt(2) per axis, doubled by the
     // reflection). A mirrored Ward lobe of roughness alpha / 2 has that small-angle spread.
     if (spec.roughness > 0 && t * ts > 0) m_transmission_lobe.emplace(0.5 * spec.roughness);
+    m_pure_diffuse = !any_positive(m_factor[SpecularReflect]) && !any_positive(m_factor[DiffuseTransmit]) &&
+                     !any_positive(m_factor[SpecularTransmit]);
   }
 
   std::optional<ScatterSample> sample(const Vec3& incoming, const Vec3& normal, double u_component, double u1,
@@ -78,6 +80,14 @@ class LayeredMaterial final : public MaterialModel {
     const double cos_i = std::fabs(cos_in);
     // Two-sided: work with the normal on the incident side.
     const Vec3 n = cos_in < 0 ? normal : -normal;
+    if (m_pure_diffuse) {
+      // A pure diffuse reflector (the Lambertian walls of most rooms): what the general path
+      // below does when only the diffuse reflection has a weight, without the selection.
+      if (!(mean(m_factor[DiffuseReflect]) > 0)) return std::nullopt;
+      const Vec3 outgoing = sample_cosine(n, u1, u2);
+      if (!(dot(outgoing, n) > 0)) return std::nullopt;
+      return ScatterSample{outgoing, m_factor[DiffuseReflect], ScatterType::DiffuseReflection, false};
+    }
     const Vec3 to_light = -incoming;
     const std::array<double, ComponentCount> w = selection(cos_i);
     const double total = w[0] + w[1] + w[2] + w[3];
@@ -217,6 +227,7 @@ class LayeredMaterial final : public MaterialModel {
   std::array<Vec3, ComponentCount> m_factor{};
   std::optional<WardLobe> m_lobe;               // glossy reflection, alpha = roughness
   std::optional<WardLobe> m_transmission_lobe;  // glossy transmission, alpha = roughness / 2
+  bool m_pure_diffuse = false;  // every factor but the diffuse reflection's is zero
 };
 
 }  // namespace

@@ -24,15 +24,13 @@ Material Material::from_spec(const MaterialSpec& spec) {
 Material::Material(MaterialSpec spec, std::shared_ptr<const MaterialModel> model)
     : m_spec(std::move(spec)), m_model(std::move(model)) {
   if (!m_model) throw std::invalid_argument("material '" + m_spec.name + "': no scattering model");
+  m_stores_photons = m_model->stores_photons();
+  const Vec3 t = m_model->interior_transmittance_per_m();
+  m_absorbs_inside = t.x != 1.0 || t.y != 1.0 || t.z != 1.0;
 }
 
 MaterialType Material::type() const { return m_spec.type; }
 const MaterialSpec& Material::spec() const { return m_spec; }
-
-std::optional<ScatterSample> Material::sample(const Vec3& incoming, const Vec3& normal, double u_component,
-                                              double u1, double u2) const {
-  return m_model->sample(incoming, normal, u_component, u1, u2);
-}
 
 Vec3 Material::eval(const Vec3& incoming, const Vec3& outgoing, const Vec3& normal) const {
   return m_model->eval(incoming, outgoing, normal);
@@ -44,18 +42,7 @@ double Material::pdf(const Vec3& incoming, const Vec3& outgoing, const Vec3& nor
 
 Vec3 Material::albedo(const Vec3& incoming, const Vec3& normal) const { return m_model->albedo(incoming, normal); }
 
-Vec3 Material::straight_transmittance(const Vec3& incoming, const Vec3& normal) const {
-  return m_model->straight_transmittance(incoming, normal);
-}
-
-bool Material::stores_photons() const { return m_model->stores_photons(); }
-
 Vec3 Material::interior_transmittance_per_m() const { return m_model->interior_transmittance_per_m(); }
-
-bool Material::absorbs_inside() const {
-  const Vec3 t = m_model->interior_transmittance_per_m();
-  return t.x != 1.0 || t.y != 1.0 || t.z != 1.0;
-}
 
 Vec3 Material::diffuse_reflectance() const { return m_model->diffuse_reflectance(); }
 Vec3 Material::diffuse_transmittance() const { return m_model->diffuse_transmittance(); }

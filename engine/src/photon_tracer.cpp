@@ -68,9 +68,8 @@ class BlockSink final : public PhotonSink {
       : m_out(out), m_options(options), m_d(d) {}
   /// The attempt whose photons follow: their storage stream, made on first use (only the
   /// main pass's storage probabilities below 1 draw from it).
-  void set_attempt(std::uint64_t seed, std::uint32_t source, std::uint64_t index) {
-    m_seed = seed;
-    m_source = source;
+  void set_attempt(RngSourceKey key, std::uint64_t index) {
+    m_key = key;
     m_index = index;
     m_storage.reset();
   }
@@ -84,7 +83,7 @@ class BlockSink final : public PhotonSink {
                                                                : m_d.direct;
     // Stored or not; the flux is set per class after the passes (stored_photon_flux).
     if (d < 1) {
-      if (!m_storage) m_storage.emplace(m_seed, m_source, m_index, RandomStream::Storage);
+      if (!m_storage) m_storage.emplace(m_key, m_index, RandomStream::Storage);
       if (!(m_storage->uniform() < d)) return;
     }
     (photon.path_class == PathClass::Global    ? m_out.global
@@ -102,8 +101,8 @@ class BlockSink final : public PhotonSink {
   const TracingOptions& m_options;
   StorageProbabilities m_d;
   std::optional<Rng> m_storage;
-  std::uint64_t m_seed = 0, m_index = 0;
-  std::uint32_t m_source = 0;
+  RngSourceKey m_key{0};
+  std::uint64_t m_index = 0;
 };
 
 // The first scattering event of a path, at `position` on a surface of `material` (geometric
@@ -126,17 +125,33 @@ std::optional<PathStart> first_event(const Scene& scene, const Material& materia
   return start;
 }
 
+// What pass_port needs of a port: looked up once per pass, not once per photon.
+struct PortPane {
+  const Port* port = nullptr;
+  const Material* material = nullptr;
+  bool straight_only = false;  ///< glass, glazing or opening: transmits only straight through
+};
+
+std::vector<PortPane> port_panes(const Scene& scene, const std::vector<Material>& materials) {
+  std::vector<PortPane> panes;
+  for (const Port& port : scene.ports().ports()) {
+    const Material& material =
+        materials[static_cast<std::size_t>(scene.description().surfaces[static_cast<std::size_t>(port.surface)].material)];
+    const MaterialType type = material.type();
+    panes.push_back(PortPane{&port, &material,
+                             type == MaterialType::Glass || type == MaterialType::Glazing || type == MaterialType::Opening});
+  }
+  return panes;
+}
+
 // The port's own scattering event (seeds/000 section 4.1.3: photons leave the port "as if
 // they had passed through it"). Returns the path start, or nothing if the photon is
 // reflected back out or absorbed.
-std::optional<PathStart> pass_port(const Scene& scene, const std::vector<Material>& materials,
-                                   const PortEntry& entry, std::uint32_t source, Rng& scattering,
-                                   Rng& roulette_rng) {
-  const Port& port = scene.ports()[static_cast<std::size_t>(entry.port)];
-  const Material& material =
-      materials[static_cast<std::size_t>(scene.description().surfaces[port.surface].material)];
-  const MaterialType type = material.type();
-  if (type == MaterialType::Glass || type == MaterialType::Glazing || type == MaterialType::Opening) {
+std::optional<PathStart> pass_port(const Scene& scene, const PortPane& pane, const PortEntry& entry,
+                                   std::uint32_t source, Rng& scattering, Rng& roulette_rng) {
+  const Port& port = *pane.port;
+  const Material& material = *pane.material;
+  if (pane.straight_only) {
     // These transmit only straight through; what they reflect goes back out of the room and is
     // not followed. So the photon passes with the transmittance as its weight instead of a
     // sampled event and roulette: the same expected flux, and no entering photon lost at the
@@ -178,15 +193,20 @@ std::optional<PathStart> land_on_scatterer(const Scene& scene, const std::vector
 
 }  // namespace
 
-bool trace_path(const Scene& scene, const std::vector<Material>& materials,
-                const std::vector<ReceiverPlane>& planes, const PathStart& start,
-                const TracingOptions& options, Rng& scattering, Rng& roulette_rng,
-                PhotonSink& sink, std::uint64_t* rays) {
+namespace {
+
+// trace_path for a sink of type Sink: the tracer's own (final) block sink gets direct calls.
+template <class Sink>
+bool trace_path_to(const Scene& scene, const std::vector<Material>& materials,
+                   const std::vector<ReceiverPlane>& planes, const PathStart& start,
+                   const TracingOptions& options, Rng& scattering, Rng& roulette_rng, Sink& sink,
+                   std::uint64_t* rays) {
   Vec3 flux = start.flux;
   bool scattered = start.scattered;
   bool diffuse = start.diffuse_scattered;
   bool outdoors = start.outdoors;
   bool was_indoors = !outdoors;
+  const double epsilon_m = scene.ray_epsilon_m();
   Ray ray{start.origin, start.direction, 0.0, std::numeric_limits<double>::infinity()};
   for (int event = 0; event <= options.max_events; ++event) {
     const PathClass path_class = !scattered ? PathClass::Direct
@@ -242,10 +262,19 @@ bool trace_path(const Scene& scene, const std::vector<Material>& materials,
       scattered = true;
       diffuse = diffuse || is_diffuse(s->type);
     }
-    ray = Ray{scene.offset_ray_origin(hit->position, hit->normal, s->direction), s->direction,
+    ray = Ray{offset_ray_origin(hit->position, hit->normal, s->direction, epsilon_m), s->direction,
               0.0, std::numeric_limits<double>::infinity()};
   }
   return was_indoors;
+}
+
+}  // namespace
+
+bool trace_path(const Scene& scene, const std::vector<Material>& materials,
+                const std::vector<ReceiverPlane>& planes, const PathStart& start,
+                const TracingOptions& options, Rng& scattering, Rng& roulette_rng,
+                PhotonSink& sink, std::uint64_t* rays) {
+  return trace_path_to(scene, materials, planes, start, options, scattering, roulette_rng, sink, rays);
 }
 
 namespace {
@@ -266,6 +295,8 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
   if (last <= first) return c;
   const std::uint64_t blocks = (last - first + AttemptsPerBlock - 1) / AttemptsPerBlock;
   std::vector<BlockResult> block_results(blocks);
+  const RngSourceKey key = Rng::source_key(options.seed, source);
+  const std::vector<PortPane> panes = port_panes(scene, materials);
   tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t b) {
     BlockResult& out = block_results[b];
     out.planes.resize(planes.size());
@@ -273,20 +304,20 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
     const std::uint64_t begin = first + b * AttemptsPerBlock;
     const std::uint64_t end = std::min(last, begin + AttemptsPerBlock);
     for (std::uint64_t i = begin; i < end; ++i) {
-      Rng emission(options.seed, source, i, RandomStream::Emission);
+      Rng emission(key, i, RandomStream::Emission);
       const std::optional<PortEntry> entry = emitter.attempt(source, emission, &out.rays);
       if (!entry) continue;
       ++out.entered;
-      Rng scattering(options.seed, source, i, RandomStream::Scattering);
-      Rng roulette_rng(options.seed, source, i, RandomStream::Roulette);
-      sink.set_attempt(options.seed, source, i);
+      Rng scattering(key, i, RandomStream::Scattering);
+      Rng roulette_rng(key, i, RandomStream::Roulette);
+      sink.set_attempt(key, i);
       const std::optional<PathStart> start =
           entry->port >= 0
-              ? pass_port(scene, materials, *entry, source, scattering, roulette_rng)
+              ? pass_port(scene, panes[static_cast<std::size_t>(entry->port)], *entry, source, scattering, roulette_rng)
               : land_on_scatterer(scene, materials, *entry, source, options, scattering, roulette_rng, sink);
       if (!start) continue;
-      const bool indoors = trace_path(scene, materials, planes, *start, options, scattering, roulette_rng,
-                                      sink, &out.rays);
+      const bool indoors = trace_path_to(scene, materials, planes, *start, options, scattering, roulette_rng,
+                                         sink, &out.rays);
       if (entry->scatterer >= 0 && indoors) ++out.scattered_indoors;
     }
     out.complete = true;

@@ -48,7 +48,7 @@ std::string describe(const Surface& s, std::size_t index) {
 
 }  // namespace
 
-Scene::Scene(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)) {}
+Scene::Scene(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)), m_epsilon_m(m_impl->epsilon_m) {}
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
 Scene::~Scene() = default;
@@ -282,12 +282,6 @@ void Scene::occluded_batch(const Ray* rays, std::size_t count, bool* occluded_ou
 }
 
 const Bounds3& Scene::bounds() const { return m_impl->bounds; }
-double Scene::ray_epsilon_m() const { return m_impl->epsilon_m; }
-
-Vec3 Scene::offset_ray_origin(const Vec3& position, const Vec3& normal,
-                              const Vec3& direction) const {
-  return engine::offset_ray_origin(position, normal, direction, m_impl->epsilon_m);
-}
 
 std::size_t Scene::triangle_count() const { return m_impl->triangles.size(); }
 

@@ -124,6 +124,33 @@ void check_against_brute_force(const PhotonMap& map, std::uint64_t seed, int que
 
 constexpr double Inf = std::numeric_limits<double>::infinity();
 
+TEST(PhotonRecord, NormalIsQuantisedAsLround) {
+  // set_normal rounds inline; it must give std::lround's byte for every component, halves
+  // (away from zero) and their neighbours included.
+  auto expect_lround = [](double c) {
+    Photon p;
+    p.set_normal({c, -c, 0.5 * c});
+    for (int k = 0; k < 3; ++k) {
+      const double v = (k == 0 ? c : k == 1 ? -c : 0.5 * c) * 127.0;
+      ASSERT_EQ(p.normal[static_cast<std::size_t>(k)], static_cast<std::int8_t>(std::lround(v))) << c;
+    }
+  };
+  for (int i = -127; i <= 127; ++i)
+    for (const double half : {-0.5, 0.0, 0.5}) {
+      double c = (i + half) / 127.0;
+      for (int step = 0; step < 3; ++step) c = std::nextafter(c, -2.0);
+      for (int step = 0; step < 7; ++step, c = std::nextafter(c, 2.0)) expect_lround(c);
+    }
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 100000; ++i) {
+    const Vec3 n = random_unit(rng);
+    expect_lround(n.x);
+  }
+  expect_lround(1.0);
+  expect_lround(-1.0);
+  expect_lround(0.0);
+}
+
 TEST(PhotonMap, EmptyMapAndZeroK) {
   const PhotonMap empty;
   std::vector<NeighbourPhoton> out{{1, 2.0}};

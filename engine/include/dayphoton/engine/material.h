@@ -45,7 +45,9 @@ class Material {
   /// below the surface, or a material whose albedo is zero at this incidence); otherwise the
   /// caller plays Russian roulette on `weight`.
   std::optional<ScatterSample> sample(const Vec3& incoming, const Vec3& normal,
-                                      double u_component, double u1, double u2) const;
+                                      double u_component, double u1, double u2) const {
+    return m_model->sample(incoming, normal, u_component, u1, u2);
+  }
 
   /// BSDF of the non-delta components, 1/sr per channel (zero if none).
   Vec3 eval(const Vec3& incoming, const Vec3& outgoing, const Vec3& normal) const;
@@ -65,18 +67,20 @@ class Material {
   /// (roughness 0) translucent's specular transmission, 0 for everything else (a rough
   /// translucent spreads that light into a glossy lobe, which is in eval()). Shadow rays of
   /// the direct component pass through surfaces with this weight.
-  Vec3 straight_transmittance(const Vec3& incoming, const Vec3& normal) const;
+  Vec3 straight_transmittance(const Vec3& incoming, const Vec3& normal) const {
+    return m_model->straight_transmittance(incoming, normal);
+  }
 
   /// True if the material has a diffuse component (reflection or transmission) with non-zero
   /// albedo, i.e. photons arriving here are stored.
-  bool stores_photons() const;
+  bool stores_photons() const { return m_stores_photons; }
 
   /// Dielectric only: per-channel transmission per metre of path inside the material
   /// (the tracer attenuates segments that travel inside); (1, 1, 1) otherwise.
   Vec3 interior_transmittance_per_m() const;
   /// True if interior_transmittance_per_m() is not (1, 1, 1): the tracers attenuate the
   /// segments that end on this material's back side.
-  bool absorbs_inside() const;
+  bool absorbs_inside() const { return m_absorbs_inside; }
 
   /// The Lambertian parts of the reflection and the transmission, per channel
   /// (MaterialModel::diffuse_reflectance / diffuse_transmittance).
@@ -86,6 +90,9 @@ class Material {
  private:
   MaterialSpec m_spec;
   std::shared_ptr<const MaterialModel> m_model;
+  // The model's answers, asked once: the tracers ask at every hit.
+  bool m_stores_photons = false;
+  bool m_absorbs_inside = false;
 };
 
 /// Built-in models, from the spec alone (Material::diffuse_reflectance() /

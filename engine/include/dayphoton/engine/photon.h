@@ -50,9 +50,21 @@ struct Photon {
     return Vec3{double(normal[0]), double(normal[1]), double(normal[2])} * (1.0 / 127.0);
   }
   void set_normal(const Vec3& n) {
-    normal = {static_cast<std::int8_t>(std::lround(n.x * 127.0)),
-              static_cast<std::int8_t>(std::lround(n.y * 127.0)),
-              static_cast<std::int8_t>(std::lround(n.z * 127.0))};
+    normal = {quantise(n.x * 127.0), quantise(n.y * 127.0), quantise(n.z * 127.0)};
+  }
+
+ private:
+  /// std::lround(v) (nearest integer, halves away from zero) as a signed byte, for |v| <= 127
+  /// plus rounding, inline: one stored photon took three calls into the maths library. The
+  /// integer part is v truncated and the fraction v minus it, both exact in double, so the
+  /// result is lround's for every such v; anything else (never a unit normal) is lround's own.
+  static std::int8_t quantise(double v) {
+    if (!(std::fabs(v) < 128.0)) return static_cast<std::int8_t>(std::lround(v));
+    int i = static_cast<int>(v);
+    const double fraction = v - double(i);
+    if (fraction >= 0.5) ++i;
+    if (fraction <= -0.5) --i;
+    return static_cast<std::int8_t>(i);
   }
 };
 static_assert(sizeof(Photon) == 32, "photon record layout is documented as 32 bytes");

@@ -28,10 +28,21 @@ enum class RandomStream : std::uint32_t {
   DirectPort = 8,   ///< port points of the direct component's port sampling
 };
 
+/// The part of a key shared by every photon of one source, hashed once: mix(mix(seed) ^ source).
+struct RngSourceKey {
+  std::uint64_t hashed;
+};
+
 class Rng {
  public:
   Rng(std::uint64_t seed, std::uint64_t source, std::uint64_t index, RandomStream stream)
-      : m_state(mix(mix(mix(mix(seed) ^ source) ^ index) ^ static_cast<std::uint64_t>(stream))) {}
+      : Rng(source_key(seed, source), index, stream) {}
+  /// The same generator as Rng(seed, source, index, stream) for key = source_key(seed, source),
+  /// with the source's half of the hashing done once (a tracer makes three generators per
+  /// photon).
+  Rng(RngSourceKey key, std::uint64_t index, RandomStream stream)
+      : m_state(mix(mix(key.hashed ^ index) ^ static_cast<std::uint64_t>(stream))) {}
+  static RngSourceKey source_key(std::uint64_t seed, std::uint64_t source) { return {mix(mix(seed) ^ source)}; }
 
   /// Next 64 random bits.
   std::uint64_t next_u64() {

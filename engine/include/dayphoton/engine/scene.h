@@ -91,9 +91,12 @@ class Scene {
   /// Bounds of all triangles (ports included). Empty scene: lower = upper = 0.
   const Bounds3& bounds() const;
   /// Self-intersection offset, metres (see the header comment).
-  double ray_epsilon_m() const;
-  /// offset_ray_origin(position, normal, direction, ray_epsilon_m()).
-  Vec3 offset_ray_origin(const Vec3& position, const Vec3& normal, const Vec3& direction) const;
+  double ray_epsilon_m() const { return m_epsilon_m; }
+  /// offset_ray_origin(position, normal, direction, ray_epsilon_m()). Inline: every photon
+  /// and every shadow ray calls it.
+  Vec3 offset_ray_origin(const Vec3& position, const Vec3& normal, const Vec3& direction) const {
+    return engine::offset_ray_origin(position, normal, direction, m_epsilon_m);
+  }
 
   std::size_t triangle_count() const;
   /// Triangle `primitive` (as in Hit::primitive), < triangle_count().
@@ -119,6 +122,7 @@ class Scene {
   /// final scene gets: the trial build of port candidates makes every candidate a port.
   static Scene build_surfaces(const SceneDescription& description);
   std::unique_ptr<Impl> m_impl;
+  double m_epsilon_m = 1e-5;  ///< Impl::epsilon_m, kept here for the inline offset
 };
 
 }  // namespace dayphoton::engine
