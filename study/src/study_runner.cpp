@@ -237,7 +237,22 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     std::vector<Vec3> directions;
     for (const sky::SunRecord& sun : ss.suns) directions.push_back(sun.direction);
     const engine::SunBins bins = engine::SunBins::for_suns(directions, sim.sun_mf);
-    const std::vector<GridSun> sun = run_sun_bins(project, prefix, cs, ss, bins, ctx, project.outputs.coefficients);
+    std::optional<SunAccuracyOutcome> sun_accuracy;
+    const std::vector<GridSun> sun =
+        run_sun_bins(project, prefix, cs, ss, bins, ctx, project.outputs.coefficients, &sun_accuracy);
+    if (sun_accuracy)
+      for (std::size_t g = 0; g < description.grids.size(); ++g)
+        grids_json[g]["accuracy"]["sun"] = {
+            {"target_relative_stderr_percent", sun_accuracy->target_percent},
+            {"reached_relative_stderr_percent", sun_accuracy->reached_percent[g]},
+            {"measure", "95th percentile (nearest rank) of the sensors' relative standard error of the annual "
+                        "sun-bin illuminance"},
+            {"hourly_relative_stderr_percent", sun_accuracy->hourly_percent[g]},
+            {"status", sun_accuracy->grid_status[g]},
+            {"rounds", sun_accuracy->rounds},
+            {"photons", sun_accuracy->photons},
+            {"attempts", sun_accuracy->attempts},
+            {"stop_reason", sun_accuracy->stop_reason}};
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
