@@ -212,7 +212,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
                         {"rounds", accuracy->rounds},
                         {"photons", accuracy->photons},
                         {"attempts", accuracy->attempts},
-                        {"stop_reason", accuracy->stop_reason}};
+                        {"stop_reason", accuracy->stop_reason},
+                        {"status", accuracy->grid_status[g]}};
     grids_json.push_back(gj);
     // Of the sky coefficients' parts only the matrix and the variances are needed from here on.
     sky_variances.push_back(sky_variance_of(*coefficients[g]));

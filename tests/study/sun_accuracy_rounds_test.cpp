@@ -19,6 +19,8 @@
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/project/project.h"
+#include "dayphoton/sky/patch_basis.h"
+#include "dayphoton/sky/sky_model.h"
 #include "dayphoton/study/accuracy_policy.h"
 #include "dayphoton/study/sun_accuracy_rounds.h"
 
@@ -239,6 +241,48 @@ TEST(SunAccuracyTarget, GatheredGridIsReportedNotChased) {
   EXPECT_EQ(r.outcome.grid_status[0], "met");
   EXPECT_EQ(r.outcome.grid_status[1], "not reachable by photons");
   EXPECT_EQ(r.outcome.final_attempts, r.outcome.pilot_attempts);
+}
+
+// The same for the sky's rounds (accuracy_rounds.h): the office's work plane (reference 2000
+// photons per bin, bandwidth 20: about 7 % at the pilot) and 8 of its sensors again as a grid
+// estimated by final gather with one ray each; target 10 %.
+TEST(AccuracyTarget, GatheredGridIsReportedNotChased) {
+  const Office office(true);
+  const engine::SourceSet sources = engine::SourceSet::sky_bins(sky::PatchBasis::tregenza());
+  const double lux = 10000.0, rho = 0.2;
+  const auto overcast_sky = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(lux));
+  const RadianceMatrix overcast = sky::sky_vector(*overcast_sky, sky::PatchBasis::tregenza(),
+                                                  sky::ground_radiance_rgb({rho, rho, rho}, lux, 0, {0, 0, -1}));
+  AccuracyCase c;
+  c.scene = office.scene.get();
+  c.materials = &office.materials;
+  c.sources = &sources;
+  c.planes = &office.planes;
+  c.plane_of_grid = &office.plane_of_grid;
+  c.grids = &office.description.grids;
+  c.gather = true;
+  c.tracing.seed = 3;
+  c.tracing.photons_per_source = 2000;
+  c.tracing.source_photon_factor.assign(sources.size(), 1.0);
+  c.tracing.source_photon_factor[0] = 16.0;
+  c.tracing.keep_surface_photons = true;
+  c.estimating.density.bandwidth = 20;
+  c.estimating.direct.samples_per_source = 16;
+  c.estimating.gather.rays_per_sensor = 1;
+  c.overcast_vector = &overcast;
+  c.horizontal_illuminance_lux = lux;
+  AccuracyGoal goal;
+  goal.target_percent = 10.0;
+  const AccuracyResult r = run_accuracy_rounds(c, goal, [](const std::string& line) { std::printf("%s\n", line.c_str()); });
+  ASSERT_EQ(r.outcome.reached_percent.size(), 2u);
+  ASSERT_LE(r.outcome.reached_percent[0], goal.target_percent);
+  ASSERT_GT(r.outcome.reached_percent[1], goal.target_percent);
+  EXPECT_EQ(r.outcome.rounds, 1u);
+  EXPECT_EQ(r.outcome.stop_reason, "not reachable by photons");
+  EXPECT_EQ(r.outcome.grid_status[0], "met");
+  EXPECT_EQ(r.outcome.grid_status[1], "not reachable by photons");
+  EXPECT_EQ(r.outcome.final_attempts, r.outcome.pilot_attempts);
+  EXPECT_NE(accuracy_sentence(r.outcome, 1).find("not reachable by photons"), std::string::npos);
 }
 
 }  // namespace
