@@ -518,6 +518,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   if (sim.accuracy)
     summary["simulation"]["accuracy"] = {
         {"preset", sim.accuracy->preset.empty() ? nlohmann::json() : nlohmann::json(sim.accuracy->preset)},
+        {"defaulted", sim.accuracy->defaulted},
         {"target_df_relative_stderr_percent", sim.accuracy->target_df_relative_stderr_percent},
         {"max_photons", sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons},
         {"max_seconds", sim.accuracy->max_seconds},
