@@ -1286,6 +1286,17 @@ class Loader {
       s.point_estimate = point_estimate == "surface" ? PointEstimate::Surface : PointEstimate::Gather;
     if (r.read_integer("gather_rays", v)) s.gather_rays = static_cast<int>(v);
     if (r.read_integer("gather_bandwidth", v)) s.gather_bandwidth = static_cast<int>(v);
+    // No photon count and no accuracy: the run traces to the default accuracy target (the final
+    // preset, docs/photon-tracing.md "Accuracy target"); explicit counts stay for experts.
+    if (!s.accuracy && !r.has("photons_per_bin") && !r.has("caustic_photons_per_bin")) {
+      Simulation::Accuracy a;
+      a.preset = "final";
+      a.target_df_relative_stderr_percent = 1.0;
+      a.defaulted = true;
+      a.location = node.location;
+      a.max_photons_location = node.location;
+      s.accuracy = a;
+    }
     r.finish();
   }
 

@@ -404,7 +404,7 @@ std::vector<SectionSchema> build_schema() {
   }});
   s.push_back({"simulation", "photon tracing and sky discretisation", {
       P("basis", T::Special, "sky patches: tregenza, reinhart:N or {reinhart: N} (N = 1..12)").def("tregenza"),
-      P("photons_per_bin", T::Integer, "stored photons per sky/sun bin").at_least(1).def("20000"),
+      P("photons_per_bin", T::Integer, "stored photons per sky/sun bin (written: a fixed count instead of the default accuracy target)").at_least(1).def("20000"),
       P("bandwidth", T::Integer, "nearest photons per density estimate").at_least(1).def("50"),
       P("seed", T::Integer, "random seed").at_least(0).def("1"),
       P("ground_reflectance", T::Number, "reflectance of the ground below the horizon").range(0, 1).def("0.2"),
@@ -415,7 +415,7 @@ std::vector<SectionSchema> build_schema() {
       P("caustic_bandwidth", T::Integer, "photons per caustic estimate, among caustic photons only (0: `bandwidth` if caustic_photons_per_bin > 0, else caustic and global photons share one disc)").at_least(0).def("0"),
       P("region_of_interest", T::Section, "store photons only inside this box; the photon targets count only those (every sensor must lie inside)").section("region of interest"),
       P("max_attempts_per_photon", T::Integer, "low-yield cap: main-pass attempts per target photon of a bin (0 = no cap)").at_least(0).def("256"),
-      P("accuracy", T::Section, "trace the sky bins in rounds until the daylight factors reach a relative standard error, instead of photons_per_bin photons each (not with photons_per_bin or caustic_photons_per_bin)").section("accuracy"),
+      P("accuracy", T::Section, "trace the sky bins (and the sun bins) in rounds until the daylight factors (and the annual sun-bin illuminance) reach a relative standard error, instead of photons_per_bin photons each (not with photons_per_bin or caustic_photons_per_bin; without any of the three, the final preset applies)").section("accuracy"),
       P("estimator", T::Choice, "receiver-plane and surface estimates: each source from its own nearest photons, or the nearest photons of all sources binned by source (docs/photon-map.md)").choices({"per_source", "contribution"}).def("per_source"),
       P("point_estimate", T::Choice, "sensors off a receiver plane (points, vertical and tilted grids): a final gather from each sensor, or the surface photons at a sensor lying on a surface").choices({"gather", "surface"}).def("gather"),
       P("gather_rays", T::Integer, "final-gather rays per sensor (rounded up to a square)").range(1, 65536).def("1024"),

@@ -12,6 +12,7 @@
 #include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/photon_rounds.h"
 #include "dayphoton/engine/port_emission.h"
+#include "dayphoton/study/accuracy_policy.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_keys.h"
@@ -274,6 +275,8 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     result.coefficients.assign(grids.size(), {});
     std::vector<GridVariance> variances(grids.size());
     result.outcome.reached_percent.assign(grids.size(), 0.0);
+    result.outcome.grid_status.assign(grids.size(), "");
+    std::vector<GridVariance> chased_variances;  // the grids the photons serve (accuracy_policy.h)
     bool met = true;
     for (std::size_t g = 0; g < grids.size(); ++g) {
       engine::DaylightCoefficients& dc = result.coefficients[g];
@@ -295,7 +298,12 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
       }
       result.outcome.reached_percent[g] =
           percentile_relative_stderr_percent(v.df_percent, stderr_percent, AccuracyPercentile);
-      met = met && result.outcome.reached_percent[g] <= goal.target_percent;
+      const bool chased = grid_chased_by_photons(*c.plane_of_grid, c.gather, g);
+      result.outcome.grid_status[g] = accuracy_grid_status(chased, result.outcome.reached_percent[g], goal.target_percent);
+      if (chased) {
+        met = met && result.outcome.reached_percent[g] <= goal.target_percent;
+        chased_variances.push_back(v);
+      }
     }
     const double estimate_seconds = seconds_since(estimate_start);
     std::uint64_t stored = 0, attempts = 0;
@@ -313,10 +321,11 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
                        " attempts; DF relative standard error (" + number(AccuracyPercentile, "%.0f") +
                        "th percentile)";
     for (std::size_t g = 0; g < grids.size(); ++g)
-      line += (g ? ", " : " ") + grids[g].name + " " + number(result.outcome.reached_percent[g]) + " %";
+      line += (g ? ", " : " ") + grids[g].name + " " + number(result.outcome.reached_percent[g]) + " %" +
+              (grid_chased_by_photons(*c.plane_of_grid, c.gather, g) ? "" : " (gathered: not chased)");
     log(line + " (target " + number(goal.target_percent) + " %)");
     if (met) {
-      result.outcome.stop_reason = "target met";
+      result.outcome.stop_reason = met_stop_reason(result.outcome.grid_status);
       break;
     }
     if (!pending.empty()) {
@@ -327,7 +336,7 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
       result.outcome.stop_reason = "round limit";
       break;
     }
-    const RoundPlan plan = next_round_scale(variances, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+    const RoundPlan plan = next_round_scale(chased_variances, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
     std::vector<std::uint64_t> next(n);
     double more_photons = 0, more_attempts = 0;
     for (std::size_t p = 0; p < n; ++p) {
@@ -397,7 +406,7 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
                              std::to_string(goal.max_photons) + ":" + number(goal.max_seconds, "%.17g") + ":" +
                              number(AccuracyPercentile, "%.17g") + ":" + std::to_string(MaxAccuracyRounds) + ":" +
                              number(AccuracyPilotFraction, "%.17g") + ":" + number(AccuracyRoundAim, "%.17g") + ":" +
-                             number(AccuracyMaxGrowth, "%.17g") + ":" + (c.gather ? "gather" : "surface");
+                             number(AccuracyMaxGrowth, "%.17g") + ":" + (c.gather ? "gather-not-chased" : "surface");
   std::vector<std::string> keys = photon_keys;
   for (std::string& k : keys) k += "|" + rounds;
   const std::vector<SensorGrid>& grids = *c.grids;
@@ -426,7 +435,8 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
     for (std::size_t g = 0; g < grids.size(); ++g) r.coefficients[g] = decode_coefficients(bytes[g]);
     const nlohmann::json j = {{"target_percent", r.outcome.target_percent}, {"reached_percent", r.outcome.reached_percent},
                               {"rounds", r.outcome.rounds}, {"photons", r.outcome.photons},
-                              {"attempts", r.outcome.attempts}, {"stop_reason", r.outcome.stop_reason}};
+                              {"attempts", r.outcome.attempts}, {"stop_reason", r.outcome.stop_reason},
+                              {"grid_status", r.outcome.grid_status}};
     bytes.push_back(j.dump());
     out.coefficients = std::move(r.coefficients);
     out.outcome = r.outcome;
@@ -446,7 +456,9 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
     o.photons = j.at("photons").get<std::uint64_t>();
     o.attempts = j.at("attempts").get<std::uint64_t>();
     o.stop_reason = j.at("stop_reason").get<std::string>();
-    if (o.reached_percent.size() != grids.size()) return false;
+    if (!j.contains("grid_status")) return false;  // made before the gathered grids' status
+    o.grid_status = j.at("grid_status").get<std::vector<std::string>>();
+    if (o.reached_percent.size() != grids.size() || o.grid_status.size() != grids.size()) return false;
     out.coefficients = std::move(cached);
     out.outcome = std::move(o);
     return true;
@@ -463,9 +475,12 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
 
 std::string accuracy_sentence(const AccuracyOutcome& o, std::size_t grid) {
   const double reached = grid < o.reached_percent.size() ? o.reached_percent[grid] : 0.0;
+  const std::string status = grid < o.grid_status.size() && o.grid_status[grid] == "not reachable by photons"
+                                 ? " (gathered: not reachable by photons; simulation.gather_rays lowers it)"
+                                 : "";
   return "DF relative standard error (" + number(AccuracyPercentile, "%.0f") + "th percentile of the sensors) " +
          number(reached) + " % " + (reached <= o.target_percent ? "<=" : ">") + " target " +
-         number(o.target_percent) + " %: " + o.stop_reason + " after " + std::to_string(o.rounds) + " round(s), " +
+         number(o.target_percent) + " %" + status + ": " + o.stop_reason + " after " + std::to_string(o.rounds) + " round(s), " +
          number(double(o.photons), "%.0f") + " photons";
 }
 

@@ -222,7 +222,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
                         {"rounds", accuracy->rounds},
                         {"photons", accuracy->photons},
                         {"attempts", accuracy->attempts},
-                        {"stop_reason", accuracy->stop_reason}};
+                        {"stop_reason", accuracy->stop_reason},
+                        {"status", accuracy->grid_status[g]}};
     grids_json.push_back(gj);
     // Of the sky coefficients' parts only the matrix and the variances are needed from here on.
     sky_variances.push_back(sky_variance_of(*coefficients[g]));
@@ -250,7 +251,22 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     std::vector<Vec3> directions;
     for (const sky::SunRecord& sun : ss.suns) directions.push_back(sun.direction);
     const engine::SunBins bins = engine::SunBins::for_suns(directions, sim.sun_mf);
-    const std::vector<GridSun> sun = run_sun_bins(project, prefix, cs, ss, bins, ctx, project.outputs.coefficients);
+    std::optional<SunAccuracyOutcome> sun_accuracy;
+    const std::vector<GridSun> sun =
+        run_sun_bins(project, prefix, cs, ss, bins, ctx, project.outputs.coefficients, &sun_accuracy);
+    if (sun_accuracy)
+      for (std::size_t g = 0; g < description.grids.size(); ++g)
+        grids_json[g]["accuracy"]["sun"] = {
+            {"target_relative_stderr_percent", sun_accuracy->target_percent},
+            {"reached_relative_stderr_percent", sun_accuracy->reached_percent[g]},
+            {"measure", "95th percentile (nearest rank) of the sensors' relative standard error of the annual "
+                        "sun-bin illuminance"},
+            {"hourly_relative_stderr_percent", sun_accuracy->hourly_percent[g]},
+            {"status", sun_accuracy->grid_status[g]},
+            {"rounds", sun_accuracy->rounds},
+            {"photons", sun_accuracy->photons},
+            {"attempts", sun_accuracy->attempts},
+            {"stop_reason", sun_accuracy->stop_reason}};
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
@@ -557,6 +573,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   if (sim.accuracy)
     summary["simulation"]["accuracy"] = {
         {"preset", sim.accuracy->preset.empty() ? nlohmann::json() : nlohmann::json(sim.accuracy->preset)},
+        {"defaulted", sim.accuracy->defaulted},
         {"target_df_relative_stderr_percent", sim.accuracy->target_df_relative_stderr_percent},
         {"max_photons", sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons},
         {"max_seconds", sim.accuracy->max_seconds},

@@ -12,6 +12,7 @@
 #include "dayphoton/study/sensor_blocks.h"
 #include "lazy_value.h"
 #include "photon_pass_notes.h"
+#include "sun_accuracy_step.h"
 
 namespace dayphoton::study {
 namespace {
@@ -45,36 +46,21 @@ Step direct_sun_step(const CaseScene& cs, const SensorGrid& grid, std::size_t g,
   return step;
 }
 
-}  // namespace
-
-std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix, const CaseScene& cs,
-                                  const SkyAndSuns& ss, const engine::SunBins& bins, RunContext& ctx,
-                                  bool export_direct) {
-  const project::Simulation& sim = project.simulation;
+/// The count-controlled sun: one photon step per lit bin (one batch, traced only when some
+/// grid's sun coefficients are missing), then one coefficient step per grid.
+void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, const engine::SunBins& bins,
+                            const engine::SourceSet& sources, const std::vector<char>& to_trace,
+                            const std::vector<std::string>& keys, const engine::TracingOptions& tracing,
+                            RunContext& ctx, std::vector<GridSun>& result) {
   const SimulationPlan& plan = ctx.plan;
   Progress& progress = ctx.progress;
   RunLog& log = ctx.log;
   RunReport& report = ctx.report;
   const std::vector<SensorGrid>& grids = cs.description.grids;
   const std::size_t n_grids = grids.size();
-  const engine::TracingOptions tracing = plan.tracing_for(plan.sun_tracing, cs.layout);
   const engine::CoefficientOptions& estimating = plan.sun_estimating;
-
-  const engine::SourceSet sources = bins.sources(sky::SunHalfAngle_rad);
-  const std::vector<char> to_trace = sun_bins_to_trace(engine::PortEmitter(cs.scene, sources), bins.size());
   const std::size_t n_lit = static_cast<std::size_t>(std::count(to_trace.begin(), to_trace.end(), 1));
-  std::vector<std::string> keys(bins.size());
-  for (std::size_t i = 0; i < bins.size(); ++i)
-    keys[i] = sun_photon_key(cs.scene_hash, cs.planes_hash, bins.multiplication_factor(), bins.patch(i),
-                             sky::SunHalfAngle_rad, tracing);
-  log.line(prefix + "sun bins: " + std::to_string(bins.size()) + " on Reinhart MF " +
-           std::to_string(bins.multiplication_factor()) + " for " + std::to_string(ss.suns.size()) +
-           " sun hours; " + std::to_string(n_lit) + " send light through the ports, " +
-           std::to_string(tracing.photons_per_source) + " photons each, bandwidth " +
-           std::to_string(estimating.density.bandwidth));
-
   // The sun-coefficient steps first: the bins' photons are needed only if one is missing.
-  std::vector<GridSun> result(n_grids);
   engine::TracedPhotons photons;
   std::vector<Step> grid_steps(n_grids);
   std::vector<char> have(n_grids, 0);
@@ -133,8 +119,6 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   }
 
   // The lit bins' photons, one step per bin, one batch; the others give no photons.
-  report.sun_bins += bins.size();
-  report.sun_bins_lit += n_lit;
   if (all_cached) {
     progress.cached(prefix + "sun photons");
     log.line(prefix + "sun photons: traced 0 of " + std::to_string(n_lit) +
@@ -186,8 +170,48 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
                " sensors");
     }
   }
-  // The bins' photons are not needed beyond the coefficients: released before the direct sun.
-  photons = engine::TracedPhotons{};
+}
+
+}  // namespace
+
+std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix, const CaseScene& cs,
+                                  const SkyAndSuns& ss, const engine::SunBins& bins, RunContext& ctx,
+                                  bool export_direct, std::optional<SunAccuracyOutcome>* accuracy_outcome) {
+  const project::Simulation& sim = project.simulation;
+  const SimulationPlan& plan = ctx.plan;
+  Progress& progress = ctx.progress;
+  RunLog& log = ctx.log;
+  RunReport& report = ctx.report;
+  const std::vector<SensorGrid>& grids = cs.description.grids;
+  const std::size_t n_grids = grids.size();
+  const engine::TracingOptions tracing = plan.tracing_for(plan.sun_tracing, cs.layout);
+  const engine::CoefficientOptions& estimating = plan.sun_estimating;
+
+  const engine::SourceSet sources = bins.sources(sky::SunHalfAngle_rad);
+  const std::vector<char> to_trace = sun_bins_to_trace(engine::PortEmitter(cs.scene, sources), bins.size());
+  const std::size_t n_lit = static_cast<std::size_t>(std::count(to_trace.begin(), to_trace.end(), 1));
+  std::vector<std::string> keys(bins.size());
+  for (std::size_t i = 0; i < bins.size(); ++i)
+    keys[i] = sun_photon_key(cs.scene_hash, cs.planes_hash, bins.multiplication_factor(), bins.patch(i),
+                             sky::SunHalfAngle_rad, tracing);
+  log.line(prefix + "sun bins: " + std::to_string(bins.size()) + " on Reinhart MF " +
+           std::to_string(bins.multiplication_factor()) + " for " + std::to_string(ss.suns.size()) +
+           " sun hours; " + std::to_string(n_lit) + " send light through the ports, " +
+           std::to_string(tracing.photons_per_source) +
+           (sim.accuracy ? " photons each at the reference of the accuracy rounds, bandwidth " : " photons each, bandwidth ") +
+           std::to_string(estimating.density.bandwidth));
+
+  std::vector<GridSun> result(n_grids);
+  report.sun_bins += bins.size();
+  report.sun_bins_lit += n_lit;
+  std::optional<SunAccuracyOutcome> accuracy;
+  if (sim.accuracy) {
+    // The accuracy target's sun rounds (sun_accuracy_step.h) instead of the count's steps.
+    accuracy = accuracy_sun_coefficients(project, prefix, cs, ss.suns, bins, ctx, result);
+  } else {
+    count_sun_coefficients(prefix, cs, bins, sources, to_trace, keys, tracing, ctx, result);
+  }
+  if (accuracy_outcome) *accuracy_outcome = accuracy;
 
   for (std::size_t g = 0; g < n_grids; ++g) {
     const SensorGrid& grid = grids[g];

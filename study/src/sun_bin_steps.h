@@ -5,11 +5,13 @@
 // traced only when some grid's sun coefficients are not cached.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dayphoton/core/radiance_matrix.h"
 #include "dayphoton/engine/sun_bins.h"
+#include "dayphoton/study/sun_accuracy_rounds.h"
 #include "run_context.h"
 
 namespace dayphoton::study {
@@ -27,9 +29,12 @@ struct GridSun {
 
 /// Sun bins of one case for the suns of `ss`: trace (one cached artefact per bin), estimate
 /// per grid, trace the exact direct sun per grid (with `export_direct`, also at the further
-/// daytime positions of direct_sun.bin.gz). Every step cached.
+/// daytime positions of direct_sun.bin.gz). Every step cached. With simulation.accuracy the
+/// bins are traced in rounds (sun_accuracy_step.h) and `accuracy_outcome`, if given, receives
+/// what they did (else it is reset).
 std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                                   const SkyAndSuns& ss, const engine::SunBins& bins, RunContext& ctx,
-                                  bool export_direct = false);
+                                  bool export_direct = false,
+                                  std::optional<SunAccuracyOutcome>* accuracy_outcome = nullptr);
 
 }  // namespace dayphoton::study

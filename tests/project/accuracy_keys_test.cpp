@@ -40,7 +40,17 @@ TEST(AccuracyKeys, PresetsAndDefaults) {
   const Project budgets = load_project_from_string(Head + cases[4].yaml, FakePath);
   EXPECT_EQ(budgets.simulation.accuracy->max_photons, 1000000);
   EXPECT_DOUBLE_EQ(budgets.simulation.accuracy->max_seconds, 60.0);
-  EXPECT_FALSE(load_project_from_string(Head + "  seed: 1\n", FakePath).simulation.accuracy.has_value());
+  for (const auto& c : cases) EXPECT_FALSE(load_project_from_string(Head + c.yaml, FakePath).simulation.accuracy->defaulted);
+  // No photon count and no accuracy: the default target (the final preset); an explicit count
+  // (sky or caustic) keeps the count control.
+  const Project defaulted = load_project_from_string(Head + "  seed: 1\n", FakePath);
+  ASSERT_TRUE(defaulted.simulation.accuracy.has_value());
+  EXPECT_TRUE(defaulted.simulation.accuracy->defaulted);
+  EXPECT_EQ(defaulted.simulation.accuracy->preset, "final");
+  EXPECT_DOUBLE_EQ(defaulted.simulation.accuracy->target_df_relative_stderr_percent, 1.0);
+  EXPECT_FALSE(load_project_from_string(Head + "  photons_per_bin: 1000\n", FakePath).simulation.accuracy.has_value());
+  EXPECT_FALSE(
+      load_project_from_string(Head + "  caustic_photons_per_bin: 1000\n", FakePath).simulation.accuracy.has_value());
 }
 
 TEST(AccuracyKeys, ConflictsAreLocatedErrors) {

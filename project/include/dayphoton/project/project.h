@@ -490,6 +490,7 @@ struct Simulation {
     double target_df_relative_stderr_percent = 1.0;
     long long max_photons = 0;  ///< stored photons of all sky sources; 0: limits.photons
     double max_seconds = 0;     ///< 0: no time budget
+    bool defaulted = false;     ///< not written: the project gives no photon count (the final preset)
     SourceLocation location;
     SourceLocation max_photons_location;
   };

@@ -23,6 +23,9 @@
 // direct variance alone exceeds its budget cannot be helped by photons and is left out (the
 // run says so; direct_samples_per_bin lowers it).
 //
+// Grids estimated by final gather are measured and reported but not chased: their error is
+// partly the gather rays' (accuracy_policy.h).
+//
 // Rounds stop when every grid meets the target, or at the photon budget (stored photons of
 // all sky sources), the time budget (checked before each round from the time per attempt so
 // far: the one stop that depends on the machine, so not deterministic), the round limit, or
@@ -106,7 +109,11 @@ struct AccuracyOutcome {
   std::size_t rounds = 0;
   std::uint64_t photons = 0;            ///< stored photons of all sky sources
   std::uint64_t attempts = 0;
-  std::string stop_reason;  ///< "target met", "photon budget", "time budget", "round limit", "direct component", "no light"
+  /// "target met", "not reachable by photons" (every grid the photons serve met it, a gathered
+  /// grid did not: accuracy_policy.h), "photon budget", "time budget", "round limit",
+  /// "direct component", "no light"
+  std::string stop_reason;
+  std::vector<std::string> grid_status;  ///< per grid: accuracy_grid_status (accuracy_policy.h)
   /// Attempts per source after the pilot and at the end (of a run that traced; not cached).
   std::vector<std::uint64_t> pilot_attempts, final_attempts;
 };

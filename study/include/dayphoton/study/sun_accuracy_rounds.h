@@ -1,0 +1,107 @@
+// The accuracy target for the sun bins (`simulation.accuracy` with `sun: bins`,
+// docs/photon-tracing.md "Accuracy target"): the sun bins' photons traced in rounds, as the sky
+// bins' are (accuracy_rounds.h), until each grid's sun-bin results reach the target.
+//
+// The measure. The annual results add to the sky the indirect sun of every sun hour h,
+// E_h(s) = 179 L_h sum_k w_hk C_k(s) (annual_sun.h: the bins k of the hour's stencil with
+// weights w_hk, L_h the disc radiance, C_k(s) the luminance of bin k's coefficient at sensor s).
+// Summed over the year, a sensor's annual sun-bin illuminance is 179 sum_k A_k C_k(s) with
+// A_k = sum_h w_hk L_h, and since the bins are traced independently its variance is
+// 179^2 sum_k A_k^2 var C_k(s): the sun's counterpart of the DF, a sum over every bin weighted
+// by the light the year brings through it (the DF weights the sky bins by the overcast sky).
+// The target applies to its relative standard error at the 95th percentile of the sensors (as
+// the DF's). It is reported beside the hourly measure the target does not cover: the RMS over
+// the sun hours of E_h's standard error relative to the RMS of E_h,
+// sqrt(sum_k B_k var C_k(s) / sum_h E_h(s)^2) with B_k = sum_h w_hk^2 L_h^2 (179 cancels), which
+// is what one hour's value carries (a few bins, not the whole year's).
+//
+// The rounds. Round 1 traces every lit bin (sun_bins_to_trace) to a quarter of the reference
+// count (sun photons_per_bin) with engine::pilot_source_photons on the bin traced alone (its own
+// disc and seed, as trace_sun_bin); later rounds extend each bin's attempt prefix by Neyman's
+// allocation (next_round_scale) of the annual measure, the kernel kept at the reference size
+// (GridPhotons::set_source_scale). Stops: target met, photon budget (stored photons of the sun
+// bins, the goal's max_photons again, apart from the sky's), round limit, no light. No time
+// budget (max_seconds bounds the sky's rounds). Grids estimated by final gather are not chased
+// (accuracy_policy.h): their outcome says "not reachable by photons" when above the target.
+// Deterministic: every round is a pure function of the project and the seed.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/engine/photon_tracer.h"
+#include "dayphoton/engine/receiver_plane.h"
+#include "dayphoton/engine/scene.h"
+#include "dayphoton/engine/sun_bins.h"
+#include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/study/accuracy_rounds.h"
+
+namespace dayphoton::study {
+
+/// Per sun bin: A_k = sum_h w_hk L_h and B_k = sum_h w_hk^2 L_h^2 over the year's suns.
+struct SunYearWeights {
+  std::vector<double> annual, squared;
+};
+SunYearWeights sun_year_weights(const engine::SunBins& bins, const std::vector<sky::SunRecord>& suns);
+
+/// One grid's sun-bin measures from its coefficients (sensors x bins x RGB) and variances
+/// (sensors x bins, of each entry's luminance): per sensor the annual sun-bin value
+/// sum_k A_k C_k(s) (luminance units), and the GridVariance of next_round_scale in those units
+/// (df_percent = the annual value, direct_variance 0, photon_variance A_k^2 var C_k(s)).
+GridVariance sun_annual_variance(const RadianceMatrix& coefficients, const std::vector<double>& variance,
+                                 const SunYearWeights& weights);
+
+/// The hourly measure of the header (%, per sensor; 0 for a sensor without sun-bin light).
+std::vector<double> sun_hourly_relative_stderr_percent(const RadianceMatrix& coefficients,
+                                                       const std::vector<double>& variance,
+                                                       const engine::SunBins& bins,
+                                                       const std::vector<sky::SunRecord>& suns,
+                                                       const SunYearWeights& weights);
+
+/// Everything one case's sun rounds need.
+struct SunAccuracyCase {
+  const engine::Scene* scene = nullptr;
+  const std::vector<engine::Material>* materials = nullptr;
+  const engine::SunBins* bins = nullptr;
+  const std::vector<sky::SunRecord>* suns = nullptr;
+  const std::vector<engine::ReceiverPlane>* planes = nullptr;
+  const std::vector<int>* plane_of_grid = nullptr;  ///< receiver plane of each grid, or -1
+  const std::vector<SensorGrid>* grids = nullptr;
+  bool gather = true;                    ///< grids off a plane: final gather (else surface photons)
+  engine::TracingOptions tracing;        ///< the sun's: seed, photons_per_source = the reference count
+  engine::CoefficientOptions estimating; ///< the sun's (sun-bin bandwidth)
+};
+
+/// What the sun rounds did (summary.json `accuracy.sun` of each grid, docs/outputs.md).
+struct SunAccuracyOutcome {
+  double target_percent = 0;
+  std::vector<double> reached_percent;  ///< per grid: annual measure at the percentile
+  std::vector<double> hourly_percent;   ///< per grid: hourly measure at the percentile (not targeted)
+  std::vector<std::string> grid_status; ///< per grid: "met", "above target", "not reachable by photons"
+  std::size_t rounds = 0;
+  std::uint64_t photons = 0;            ///< stored photons of all sun bins
+  std::uint64_t attempts = 0;
+  std::string stop_reason;  ///< "target met", "photon budget", "round limit", "no light", "only gathered grids left"
+  std::vector<std::uint64_t> pilot_attempts, final_attempts;  ///< per bin (of a run that traced)
+};
+
+struct SunAccuracyResult {
+  std::vector<RadianceMatrix> coefficients;   ///< per grid: sensors x bins x RGB (sun_bin_coefficients)
+  std::vector<std::vector<double>> variance;  ///< per grid: sensors x bins
+  SunAccuracyOutcome outcome;
+};
+
+/// The sun rounds of one case; `log` receives one line per round and the stop.
+SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const AccuracyGoal& goal,
+                                          const std::function<void(const std::string&)>& log);
+
+/// "sun-bin annual illuminance relative standard error (95th percentile) 0.8 % <= target 1 %
+/// (hourly 6.1 %): target met after 2 round(s), 3.1 M photons".
+std::string sun_accuracy_sentence(const SunAccuracyOutcome& outcome, std::size_t grid);
+
+}  // namespace dayphoton::study

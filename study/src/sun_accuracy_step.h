@@ -1,0 +1,25 @@
+// The sun bins' coefficients of a case by the accuracy target's sun rounds
+// (sun_accuracy_rounds.h), as one step of the plan (step_executor.h): the coefficients and
+// variances of every grid and the rounds' outcome, cached together. It replaces, with
+// `simulation.accuracy`, the count-controlled sun photons (one step per bin) and sun
+// coefficients (one step per grid) of sun_bin_steps.cpp; the direct sun is unchanged.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/engine/sun_bins.h"
+#include "dayphoton/study/sun_accuracy_rounds.h"
+#include "run_context.h"
+#include "sun_bin_steps.h"
+
+namespace dayphoton::study {
+
+/// Fills bin_coefficients and bin_variance of every grid in `result` (sized to the grids);
+/// logs each round and a sentence per grid; returns the outcome.
+SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, const std::string& prefix,
+                                             const CaseScene& cs, const std::vector<sky::SunRecord>& suns,
+                                             const engine::SunBins& bins, RunContext& ctx,
+                                             std::vector<GridSun>& result);
+
+}  // namespace dayphoton::study
