@@ -14,6 +14,7 @@
 #include <tbb/parallel_for.h>
 
 #include "dayphoton/engine/estimate_variance.h"
+#include "dayphoton/engine/port_bound.h"
 #include "dayphoton/engine/random.h"
 
 namespace dayphoton::engine {
@@ -173,13 +174,14 @@ struct PortSide {
 /// sum over the ports j the ray crosses (at t_j > 0) of n_side t_j^2 / (A_side |w . n_j|),
 /// the side being that of the sensor's height the crossing lies on. Port `skip` (or -1) is
 /// left out.
-double port_density(const PortSet& ports, const PortSide sides[2], const Vec3& origin, const Vec3& w,
-                    double n_per_side, int skip) {
+double port_density(const PortSet& ports, const std::vector<PortBound>& bounds, const PortSide sides[2],
+                    const Vec3& origin, const Vec3& w, double n_per_side, int skip) {
   double density = 0;
   for (std::size_t j = 0; j < ports.size(); ++j) {
     if (static_cast<int>(j) == skip) continue;
     const double cos_port = std::fabs(dot(w, ports[j].normal));
     if (!(cos_port > 0)) continue;
+    if (!bounds[j].may_cross(origin, w)) continue;  // the same as t = 0 below, cheaper
     const double t = port_crossing(ports[j], origin, w);
     if (!(t > 0)) continue;
     const PortSide& side = sides[w.z < 0 ? 0 : 1];
@@ -191,9 +193,12 @@ double port_density(const PortSet& ports, const PortSide sides[2], const Vec3& o
 /// The port side of the balance heuristic, for the solid-angle strata of strategy A.
 struct PortSampling {
   const PortSet& ports;
+  const std::vector<PortBound>& bounds;
   const PortSide* sides;  ///< [0] below, [1] above the sensor's height
   double n_per_side;
-  double density(const Vec3& origin, const Vec3& w) const { return port_density(ports, sides, origin, w, n_per_side, -1); }
+  double density(const Vec3& origin, const Vec3& w) const {
+    return port_density(ports, bounds, sides, origin, w, n_per_side, -1);
+  }
 };
 
 /// L(w) T(w) cos: the integrand, L = 1 when `radiance` is null.
@@ -253,7 +258,8 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
     side.cumulative_m2.push_back(side.area_m2);
   }
   const double n_a = static_cast<double>(k) * k, n_b = static_cast<double>(kb) * kb;
-  const PortSampling port_sampling{ports, sides, n_b};
+  const std::vector<PortBound> bounds = port_bounds(ports);
+  const PortSampling port_sampling{ports, bounds, sides, n_b};
   // Strategy A: each source's own solid angle (the same directions as without ports).
   for (std::size_t p = 0; p < sources.size(); ++p) {
     const bool with_ports = sources[p].solid_angle_sr >= PortSampledMinimumSolidAngle_sr;
@@ -287,7 +293,7 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
       // This port's own density analytically (the point lies on it by construction).
       const double density = n_a / sources[static_cast<std::size_t>(p)].solid_angle_sr +
                              n_b * d2 / (side.area_m2 * cos_port) +
-                             port_density(ports, sides, origin, w, n_b, piece.port);
+                             port_density(ports, bounds, sides, origin, w, n_b, piece.port);
       value = source_value(t, w, cos_theta, radiance) * (1.0 / density);
       return p;
     };
