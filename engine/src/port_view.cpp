@@ -47,6 +47,7 @@ PortView::PortView(const Scene& scene, const Vec3& origin, double pad) {
     const double distance = length(to_centre);
     cone.axis = distance > 0 ? to_centre / distance : Vec3{0, 0, 1};
     cone.half_angle_rad = distance > radius ? std::asin(radius / distance) : Pi;
+    cone.cos_half_angle = std::cos(cone.half_angle_rad);
     for (const std::array<Vec3, 3>& tri : port.triangles) {
       Triangle t;
       const Vec3 a[3] = {tri[0] - origin, tri[1] - origin, tri[2] - origin};
@@ -64,6 +65,7 @@ PortView::PortView(const Scene& scene, const Vec3& origin, double pad) {
         if (dot(m, a[(e + 2) % 3]) < 0) m = m * -1.0;
         t.edge_normals[static_cast<std::size_t>(e)] = m;
       }
+      t.sin_margin = std::sin(t.margin_rad);
       m_triangles.push_back(t);
     }
     cone.last = m_triangles.size();
@@ -74,8 +76,10 @@ PortView::PortView(const Scene& scene, const Vec3& origin, double pad) {
 bool PortView::may_cross_port(const Vec3& direction, double half_angle_rad) const {
   for (const PortCone& port : m_ports) {
     const double reach = port.half_angle_rad + half_angle_rad;
-    // Farther from the axis than `reach` (cos below cos(reach)): the port is missed.
-    if (reach < Pi && dot(direction, port.axis) < std::cos(reach)) continue;
+    // Farther from the axis than `reach` (cos below cos(reach)): the port is missed. For a
+    // single ray (half-angle 0) reach is the cone's own, whose cosine was computed once.
+    if (reach < Pi && dot(direction, port.axis) < (half_angle_rad == 0 ? port.cos_half_angle : std::cos(reach)))
+      continue;
     if (may_cross(port, direction, half_angle_rad)) return true;
   }
   return false;
@@ -86,7 +90,7 @@ bool PortView::may_cross(const PortCone& port, const Vec3& direction, double hal
     const Triangle& t = m_triangles[i];
     const double widened = half_angle_rad + t.margin_rad;
     if (!(widened < 0.5 * Pi)) return true;
-    const double limit = -std::sin(widened);
+    const double limit = half_angle_rad == 0 ? -t.sin_margin : -std::sin(widened);
     bool outside = false;
     for (const Vec3& m : t.edge_normals)
       if (dot(direction, m) < limit) {

@@ -44,6 +44,7 @@ class PortView {
   struct Triangle {
     std::array<Vec3, 3> edge_normals;  ///< unit m_e, pointing into the triangle's cone
     double margin_rad = 0;             ///< asin(pad / d), or >= pi/2: never ruled out
+    double sin_margin = 0;             ///< sin(margin_rad), for single rays (half-angle 0)
   };
   /// A port's triangles [first, last) and the cone about `axis` that holds all of them
   /// (their bounding sphere, widened by the pad, seen from the origin): a cone of directions
@@ -51,6 +52,7 @@ class PortView {
   struct PortCone {
     Vec3 axis;
     double half_angle_rad = 0;  ///< >= pi: the origin is inside the sphere
+    double cos_half_angle = -1;  ///< cos(half_angle_rad), for single rays (half-angle 0)
     std::size_t first = 0, last = 0;
   };
   bool may_cross(const PortCone& port, const Vec3& direction, double half_angle_rad) const;
