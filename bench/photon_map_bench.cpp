@@ -7,6 +7,8 @@
 // a 3-d tree) and "surfaces" (uniform over the six faces, area-weighted, as photons really
 // lie). Every photon gets one of 146 sources (a Tregenza sky plus ground), so a source
 // filter keeps 1/146 of them. Queries: uniform in the box / on the faces, fixed seed.
+// Then a receiver plane (photons of one source on a 50 m floor, sensors on a 0.5 m grid):
+// plain k-NN lookups against those hinted with the previous sensor's k-th distance.
 // Usage: photon_map_bench [photons]   (default 1 000 000)
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <random>
 #include <thread>
 #include <vector>
@@ -179,6 +182,54 @@ void bench_set(const char* name, std::size_t n, Where&& where) {
   }
 }
 
+/// A receiver plane as the coefficients see it: `n` photons of one source uniform on a
+/// 50 m x 50 m plane at 0.8 m, sensors on a 0.5 m grid visited row by row (the order of a
+/// task of consecutive sensors). Plain lookups against lookups hinted with the previous
+/// sensor's k-th distance plus the step (PhotonMap::nearest's hint), in one run; the photons
+/// found are compared too.
+void bench_plane(std::size_t n) {
+  constexpr double Side = 50, Height = 0.8, Spacing = 0.5;
+  std::printf("\n== receiver plane: %zu photons of one source on %.0f m x %.0f m, sensors every %.1f m ==\n", n,
+              Side, Side, Spacing);
+  const PhotonMap map(make_photons(n, [](std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u(0.0, Side);
+    return Vec3{u(rng), u(rng), Height};
+  }));
+  std::vector<Vec3> sensors;  // 20 rows of 100 (2,000 sensors)
+  for (int row = 0; row < 20; ++row)
+    for (int col = 0; col < 100; ++col) sensors.push_back({0.25 + Spacing * col, 0.25 + Spacing * (40 + row), Height});
+  PhotonFilter filter;  // indirect classes, any source: what a per-source map's lookup asks
+  std::printf("%-10s %16s %16s %8s %10s\n", "k", "plain lookups/s", "hinted lookups/s", "ratio", "repeats");
+  for (std::size_t k : {101, 1601}) {
+    std::vector<NeighbourPhoton> out, check;
+    std::vector<double> kth(sensors.size());
+    const double plain = rate(sensors.size(), 0.5, [&](std::size_t i) {
+      map.nearest(sensors[i], k, 1e30, filter, out);
+      kth[i] = out.size() == k ? std::sqrt(out.back().distance_squared_m2) : 1e30;
+    });
+    std::size_t repeats = 0, calls = 0;
+    double previous_kth = std::numeric_limits<double>::quiet_NaN();
+    const double hinted = rate(sensors.size(), 0.5, [&](std::size_t i) {
+      const double hint = i > 0 ? (previous_kth + length(sensors[i] - sensors[i - 1])) * (1 + 1e-9)
+                                : std::numeric_limits<double>::quiet_NaN();
+      if (!map.nearest(sensors[i], k, 1e30, hint, filter, out)) ++repeats;
+      ++calls;
+      previous_kth = out.size() == k ? std::sqrt(out.back().distance_squared_m2) : 1e30;
+    });
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < sensors.size(); i += 7) {
+      map.nearest(sensors[i], k, 1e30, filter, check);
+      map.nearest(sensors[i], k, 1e30, i > 0 ? kth[i - 1] + Spacing * 1.000001 : -1.0, filter, out);
+      if (out.size() != check.size() || !std::equal(out.begin(), out.end(), check.begin(), [](auto& a, auto& b) {
+            return a.index == b.index && a.distance_squared_m2 == b.distance_squared_m2;
+          }))
+        ++differ;
+    }
+    std::printf("%-10zu %16.0f %16.0f %8.2f %9.2f%%%s\n", k, plain, hinted, hinted / plain,
+                100.0 * double(repeats) / double(calls), differ ? "  RESULTS DIFFER" : "");
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -186,5 +237,6 @@ int main(int argc, char** argv) {
   std::printf("photon_map_bench: PhotonMap::LeafSize = %zu\n", PhotonMap::LeafSize);
   bench_set("volume", n, in_volume);
   bench_set("surfaces", n, on_faces);
+  bench_plane(20000);
   return 0;
 }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -234,17 +235,41 @@ double local_linear_variance(const AreaMoments& m, const double q[6]) {
          c3 * c3 * q[5];
 }
 
+/// The search hint of one source's lookups over consecutive sensors: the k-th distance
+/// found at the previous sensor. By the triangle inequality that distance plus the step
+/// between the two sensors holds the k photons found there, so it is a radius holding k
+/// photons at this sensor: PhotonMap::nearest's hint, which never changes the photons found,
+/// only how much of the tree the search visits.
+class LookupHint {
+ public:
+  /// The hint at `at` (NaN: none). The relative margin covers the rounding of the
+  /// distances; a hint too small would cost a second search, never a different result.
+  double radius_m(const Vec3& at) const { return (m_kth_m + length(at - m_previous)) * (1 + 1e-9); }
+  /// Record the lookup at `at`: `found` sorted, `k` asked for.
+  void record(const Vec3& at, const std::vector<NeighbourPhoton>& found, std::size_t k) {
+    m_previous = at;
+    m_kth_m = found.size() == k && k > 0 ? std::sqrt(found.back().distance_squared_m2)
+                                        : std::numeric_limits<double>::quiet_NaN();
+  }
+
+ private:
+  Vec3 m_previous{0, 0, 0};
+  double m_kth_m = std::numeric_limits<double>::quiet_NaN();
+};
+
 /// Caustic and global estimates from the photons of `map` passing `filter`, within the disc
 /// of density.bandwidth of them (density_estimate.h): local-linear on a receiver plane with
 /// the uniform kernel, otherwise the kernel estimate times the boundary factor. `rng_index`
 /// seeds the bias-compensating operator.
 ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane, const Vec3& at,
                                 const PhotonFilter& filter, const DensityEstimateOptions& density,
-                                const CoefficientOptions& options, std::size_t rng_index) {
+                                const CoefficientOptions& options, std::size_t rng_index,
+                                LookupHint& hint, std::vector<NeighbourPhoton>& found) {
   ClassEstimates out;
   if (plane && options.local_linear && !options.bias_compensation && density.kernel == KernelType::Uniform) {
-    std::vector<NeighbourPhoton> found;
-    map.nearest(at, neighbours_needed(density.bandwidth, density.radius), density.max_radius_m, filter, found);
+    const std::size_t k = neighbours_needed(density.bandwidth, density.radius);
+    map.nearest(at, k, density.max_radius_m, hint.radius_m(at), filter, found);
+    hint.record(at, found, k);
     const KernelDisc disc = kernel_disc(found, density.bandwidth, density.radius, density.max_radius_m);
     if (disc.photon_count == 0) return out;
     Vec3 s0[2], s1x[2], s1y[2];
@@ -329,12 +354,17 @@ void estimate_photon_coefficients(const GridPhotons& photons,
     }
     return f;
   };
-  tbb::parallel_for(rows.begin, rows.end, [&](std::size_t s) {
-    const SensorPoint& sensor = sensors[s];
-    const std::size_t row = s - rows.begin;
-    const Vec3 at = plane ? Vec3{sensor.position.x, sensor.position.y, plane->height_m()}
-                          : sensor.position;
+  auto query_point = [&](const SensorPoint& sensor) {
+    return plane ? Vec3{sensor.position.x, sensor.position.y, plane->height_m()} : sensor.position;
+  };
+  // Tasks of consecutive sensors, neighbours on the grid. With one map per source, a task
+  // goes source by source over its sensors: the source's photons near them stay in the cache
+  // from one sensor to the next, and each lookup's hint (LookupHint) comes from the sensor
+  // before. Every (sensor, source) estimate is computed alone, so the order changes no value.
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(rows.begin, rows.end),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
     if (options.estimator == PhotonEstimator::PerSource) {
+      std::vector<NeighbourPhoton> found;
       for (std::size_t p = 0; p < n_src && p < photons.source_count(); ++p) {
         const PhotonMap& map = photons.of_source(p);
         if (map.empty()) continue;
@@ -342,34 +372,47 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         // is summed within it. The bandwidth grows with the source's photon count
         // (GridPhotons::bandwidth_of), so a source given more photons (the ground) gets a less
         // noisy estimate, not a smaller kernel.
-        const std::size_t i = row * n_src + p;  // in `out`
-        const std::size_t stream = s * n_src + p;  // random numbers
         DensityEstimateOptions scaled = options.density;
         scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth);
         scaled.max_radius_m = max_radius_m;
-        PhotonFilter both = filter_for(sensor, PathClass::Global);
-        both.path_classes = IndirectPathClasses;
-        if (options.caustic_bandwidth == 0) {
-          const ClassEstimates e = estimate_classes(map, plane, at, both, scaled, options, stream);
-          out.caustic[i] = e.caustic;
-          out.global[i] = e.global;
-          out.photon_variance[i] = e.variance;
-          continue;
-        }
         DensityEstimateOptions global_scaled = options.density, caustic_scaled = options.density;
         global_scaled.max_radius_m = caustic_scaled.max_radius_m = max_radius_m;
-        global_scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth, PathClass::Global);
-        caustic_scaled.bandwidth = photons.bandwidth_of(p, options.caustic_bandwidth, PathClass::Caustic);
-        const ClassEstimates g =
-            estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global), global_scaled, options, stream);
-        const ClassEstimates c = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic),
-                                                  caustic_scaled, options, stream + grid_pairs);
-        out.global[i] = g.global;
-        out.caustic[i] = c.caustic;
-        // Each lookup's photons are of its own class (the filter), so the two are independent.
-        out.photon_variance[i] = g.variance + c.variance;
+        if (options.caustic_bandwidth > 0) {
+          global_scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth, PathClass::Global);
+          caustic_scaled.bandwidth = photons.bandwidth_of(p, options.caustic_bandwidth, PathClass::Caustic);
+        }
+        LookupHint global_hint, caustic_hint;
+        for (std::size_t s = range.begin(); s != range.end(); ++s) {
+          const SensorPoint& sensor = sensors[s];
+          const Vec3 at = query_point(sensor);
+          const std::size_t i = (s - rows.begin) * n_src + p;  // in `out`
+          const std::size_t stream = s * n_src + p;            // random numbers
+          if (options.caustic_bandwidth == 0) {
+            PhotonFilter both = filter_for(sensor, PathClass::Global);
+            both.path_classes = IndirectPathClasses;
+            const ClassEstimates e =
+                estimate_classes(map, plane, at, both, scaled, options, stream, global_hint, found);
+            out.caustic[i] = e.caustic;
+            out.global[i] = e.global;
+            out.photon_variance[i] = e.variance;
+            continue;
+          }
+          const ClassEstimates g = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global),
+                                                    global_scaled, options, stream, global_hint, found);
+          const ClassEstimates c = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic),
+                                                    caustic_scaled, options, stream + grid_pairs, caustic_hint, found);
+          out.global[i] = g.global;
+          out.caustic[i] = c.caustic;
+          // Each lookup's photons are of its own class (the filter), so the two are independent.
+          out.photon_variance[i] = g.variance + c.variance;
+        }
       }
-    } else {
+      return;
+    }
+    for (std::size_t s = range.begin(); s != range.end(); ++s) {
+      const SensorPoint& sensor = sensors[s];
+      const std::size_t row = s - rows.begin;
+      const Vec3 at = query_point(sensor);
       for (PathClass c : {PathClass::Caustic, PathClass::Global}) {
         DensityEstimateOptions density = options.density;
         if (c == PathClass::Caustic && options.caustic_bandwidth > 0) density.bandwidth = options.caustic_bandwidth;

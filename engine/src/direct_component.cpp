@@ -14,6 +14,8 @@
 #include <tbb/parallel_for.h>
 
 #include "dayphoton/engine/estimate_variance.h"
+#include "dayphoton/engine/port_bound.h"
+#include "dayphoton/engine/port_view.h"
 #include "dayphoton/engine/random.h"
 
 namespace dayphoton::engine {
@@ -173,13 +175,14 @@ struct PortSide {
 /// sum over the ports j the ray crosses (at t_j > 0) of n_side t_j^2 / (A_side |w . n_j|),
 /// the side being that of the sensor's height the crossing lies on. Port `skip` (or -1) is
 /// left out.
-double port_density(const PortSet& ports, const PortSide sides[2], const Vec3& origin, const Vec3& w,
-                    double n_per_side, int skip) {
+double port_density(const PortSet& ports, const std::vector<PortBound>& bounds, const PortSide sides[2],
+                    const Vec3& origin, const Vec3& w, double n_per_side, int skip) {
   double density = 0;
   for (std::size_t j = 0; j < ports.size(); ++j) {
     if (static_cast<int>(j) == skip) continue;
     const double cos_port = std::fabs(dot(w, ports[j].normal));
     if (!(cos_port > 0)) continue;
+    if (!bounds[j].may_cross(origin, w)) continue;  // the same as t = 0 below, cheaper
     const double t = port_crossing(ports[j], origin, w);
     if (!(t > 0)) continue;
     const PortSide& side = sides[w.z < 0 ? 0 : 1];
@@ -191,9 +194,12 @@ double port_density(const PortSet& ports, const PortSide sides[2], const Vec3& o
 /// The port side of the balance heuristic, for the solid-angle strata of strategy A.
 struct PortSampling {
   const PortSet& ports;
+  const std::vector<PortBound>& bounds;
   const PortSide* sides;  ///< [0] below, [1] above the sensor's height
   double n_per_side;
-  double density(const Vec3& origin, const Vec3& w) const { return port_density(ports, sides, origin, w, n_per_side, -1); }
+  double density(const Vec3& origin, const Vec3& w) const {
+    return port_density(ports, bounds, sides, origin, w, n_per_side, -1);
+  }
 };
 
 /// L(w) T(w) cos: the integrand, L = 1 when `radiance` is null.
@@ -204,12 +210,13 @@ Vec3 source_value(const Vec3& t, const Vec3& w, double cos_theta, const std::fun
 /// Stratified samples of source p's solid angle (k x k strata), each weighted by 1 / (its
 /// density n_a / Omega_p plus the port sampling's along the same direction, if `ports`):
 /// alone (ports null) the plain estimator Omega_p / n sum T cos, else strategy A of the
-/// balance heuristic (header comment). `origin` is the sensor already moved off its surface.
+/// balance heuristic (header comment). `origin` is the sensor already moved off its surface;
+/// `view` (or null) the ports seen from it, which rules out shadow rays that cross none.
 Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Material>& materials,
                                      const SourceSet& sources, std::size_t p, const Vec3& origin,
                                      const Vec3& normal, int k, std::uint64_t seed, std::uint64_t sensor_index,
                                      const std::function<Vec3(const Vec3&)>* radiance, const PortSampling* ports,
-                                     double* variance) {
+                                     const PortView* view, double* variance) {
   Rng rng(seed, p, sensor_index, RandomStream::Direct);
   const double density_a = static_cast<double>(k) * k / sources[p].solid_angle_sr;
   Vec3 sum;
@@ -223,7 +230,9 @@ Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Mater
       Vec3 value;
       const Vec3 w = sources.sample_direction(p, u1, u2);
       const double cos_theta = dot(w, normal);
-      if (cos_theta > 0.0) {
+      // A direction the view rules out crosses no port: its sky transmittance is zero
+      // (port_view.h), so the shadow ray is not traced and the value stays zero.
+      if (cos_theta > 0.0 && (!view || view->may_cross_port(w, 0.0))) {
         const Vec3 t = sky_transmittance(scene, materials, origin, w);
         if (t.x != 0.0 || t.y != 0.0 || t.z != 0.0)
           value = source_value(t, w, cos_theta, radiance) *
@@ -242,7 +251,8 @@ Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Mater
 void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& materials,
                           const SourceSet& sources, const Vec3& origin, const Vec3& normal, int k,
                           int kb, std::uint64_t seed, std::uint64_t sensor_index,
-                          const std::function<Vec3(const Vec3&)>* radiance, Vec3* row, double* variance_row) {
+                          const std::function<Vec3(const Vec3&)>* radiance, const PortView* view, Vec3* row,
+                          double* variance_row) {
   const PortSet& ports = scene.ports();
   const std::vector<PortPiece> pieces = port_pieces(ports, origin.z);
   PortSide sides[2];  // [0] below the sensor's height, [1] above
@@ -253,12 +263,13 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
     side.cumulative_m2.push_back(side.area_m2);
   }
   const double n_a = static_cast<double>(k) * k, n_b = static_cast<double>(kb) * kb;
-  const PortSampling port_sampling{ports, sides, n_b};
+  const std::vector<PortBound> bounds = port_bounds(ports);
+  const PortSampling port_sampling{ports, bounds, sides, n_b};
   // Strategy A: each source's own solid angle (the same directions as without ports).
   for (std::size_t p = 0; p < sources.size(); ++p) {
     const bool with_ports = sources[p].solid_angle_sr >= PortSampledMinimumSolidAngle_sr;
     row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, seed, sensor_index,
-                                              radiance, with_ports ? &port_sampling : nullptr,
+                                              radiance, with_ports ? &port_sampling : nullptr, view,
                                               variance_row ? variance_row + p : nullptr);
   }
   // Strategy B: points uniform over each side's port pieces, each direction credited to the
@@ -287,7 +298,7 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
       // This port's own density analytically (the point lies on it by construction).
       const double density = n_a / sources[static_cast<std::size_t>(p)].solid_angle_sr +
                              n_b * d2 / (side.area_m2 * cos_port) +
-                             port_density(ports, sides, origin, w, n_b, piece.port);
+                             port_density(ports, bounds, sides, origin, w, n_b, piece.port);
       value = source_value(t, w, cos_theta, radiance) * (1.0 / density);
       return p;
     };
@@ -309,16 +320,24 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
 void integrate_sensor(const Scene& scene, const std::vector<Material>& materials,
                       const SourceSet& sources, const Vec3& origin, const Vec3& normal,
                       const DirectOptions& options, std::uint64_t sensor_index,
-                      const std::function<Vec3(const Vec3&)>* radiance, Vec3* row, double* variance_row) {
+                      const std::function<Vec3(const Vec3&)>* radiance, double pad_m, Vec3* row,
+                      double* variance_row) {
   const int k = strata_per_axis(options.samples_per_source);
+  // The ports seen from the sensor: most sampled directions of a deep room meet a ceiling or
+  // wall and cross no window, and need no shadow ray (port_view.h). Without ports every ray
+  // is traced, as before.
+  const std::optional<PortView> view =
+      scene.ports().empty() ? std::nullopt : std::optional<PortView>(PortView(scene, origin, pad_m));
+  const PortView* seen = view ? &*view : nullptr;
   if (options.port_sampling && !scene.ports().empty()) {
     integrate_sensor_mis(scene, materials, sources, origin, normal, k, PortStrataFactor * k, options.seed,
-                         sensor_index, radiance, row, variance_row);
+                         sensor_index, radiance, seen, row, variance_row);
     return;
   }
   for (std::size_t p = 0; p < sources.size(); ++p)
     row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, options.seed,
-                                              sensor_index, radiance, nullptr, variance_row ? variance_row + p : nullptr);
+                                              sensor_index, radiance, nullptr, seen,
+                                              variance_row ? variance_row + p : nullptr);
 }
 
 }  // namespace
@@ -373,6 +392,7 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
   const std::size_t n_sources = sources.size();
   std::vector<Vec3> result(rows.size() * n_sources);
   if (variance) variance->assign(rows.size() * n_sources, 0.0);
+  const double pad_m = port_view_pad_m(scene, materials);
   // One sensor per task item: each writes only its own row, and its random numbers depend
   // on (seed, source, sensor index in the whole grid) alone, so neither the partition into
   // threads nor the rows asked for change anything.
@@ -383,7 +403,7 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
                         const Vec3 origin = sensors[s].position +
                                             normals[r] * scene.ray_epsilon_m();
                         integrate_sensor(scene, materials, sources, origin, normals[r], options, s,
-                                         nullptr, result.data() + r * n_sources,
+                                         nullptr, pad_m, result.data() + r * n_sources,
                                          variance ? variance->data() + r * n_sources : nullptr);
                       }
                     });
@@ -403,7 +423,8 @@ Vec3 direct_irradiance(const Scene& scene, const std::vector<Material>& material
   const Vec3 normal = checked_unit_normal(sensor);
   const Vec3 origin = sensor.position + normal * scene.ray_epsilon_m();
   std::vector<Vec3> row(sources.size());
-  integrate_sensor(scene, materials, sources, origin, normal, options, 0, &radiance, row.data(), nullptr);
+  integrate_sensor(scene, materials, sources, origin, normal, options, 0, &radiance, port_view_pad_m(scene, materials),
+                   row.data(), nullptr);
   Vec3 sum;
   for (const Vec3& v : row) sum += v;
   return sum;

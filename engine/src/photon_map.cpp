@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -61,10 +62,15 @@ void build_range(Key* keys, std::uint8_t* axis_of, std::size_t lo, std::size_t h
 }
 
 /// (distance, index) order of the result heap: a max-heap on it keeps the k smallest pairs.
-inline bool closer(const NeighbourPhoton& l, const NeighbourPhoton& r) {
-  return l.distance_squared_m2 < r.distance_squared_m2 ||
-         (l.distance_squared_m2 == r.distance_squared_m2 && l.index < r.index);
-}
+/// A function object rather than a function, so that std::push_heap and std::sort_heap
+/// inline it (through a function pointer they called it for every comparison).
+struct Closer {
+  bool operator()(const NeighbourPhoton& l, const NeighbourPhoton& r) const {
+    return l.distance_squared_m2 < r.distance_squared_m2 ||
+           (l.distance_squared_m2 == r.distance_squared_m2 && l.index < r.index);
+  }
+};
+constexpr Closer closer{};
 
 /// One k-NN query. The heap lives in the caller's vector, so a lookup allocates nothing
 /// once `out` has grown to k.
@@ -144,6 +150,57 @@ class Search {
   std::vector<NeighbourPhoton>& m_heap;
 };
 
+/// Every photon within a fixed radius that passes the filter, appended to `found` in
+/// traversal order: the hinted lookup's first pass (PhotonMap::nearest with a hint). The
+/// pruning and the distances are Search's, so the photons it finds within the radius are
+/// exactly those Search would accept there; the k nearest are then selected from them
+/// without a heap.
+class RangeCollect {
+ public:
+  RangeCollect(const Photon* photons, const std::uint8_t* axis_of, const Vec3& point, double radius_m,
+               const PhotonFilter& filter, std::vector<NeighbourPhoton>& found)
+      : m_photons(photons), m_axis_of(axis_of), m_q{point.x, point.y, point.z}, m_bound2(radius_m * radius_m),
+        m_filter(filter), m_found(found) {}
+
+  void visit(std::size_t lo, std::size_t hi, const double offset[3]) {
+    if (hi - lo <= PhotonMap::LeafSize) {
+      for (std::size_t i = lo; i < hi; ++i) consider(i);
+      return;
+    }
+    const std::size_t mid = lo + (hi - lo) / 2;
+    const int a = m_axis_of[mid];
+    const double d = m_q[a] - static_cast<double>(m_photons[mid].position[a]);
+    if (d < 0) visit(lo, mid, offset); else visit(mid + 1, hi, offset);
+    consider(mid);
+    double far_offset[3] = {offset[0], offset[1], offset[2]};
+    far_offset[a] = std::fabs(d);
+    const double far2 = far_offset[0] * far_offset[0] + far_offset[1] * far_offset[1] +
+                        far_offset[2] * far_offset[2];
+    if (far2 <= m_bound2) {
+      if (d < 0) visit(mid + 1, hi, far_offset); else visit(lo, mid, far_offset);
+    }
+  }
+
+ private:
+  void consider(std::size_t i) {
+    const Photon& photon = m_photons[i];
+    const double dx = static_cast<double>(photon.position[0]) - m_q[0];
+    const double dy = static_cast<double>(photon.position[1]) - m_q[1];
+    const double dz = static_cast<double>(photon.position[2]) - m_q[2];
+    const double d2 = dx * dx + dy * dy + dz * dz;
+    if (d2 > m_bound2) return;
+    if (!m_filter.accepts(photon)) return;
+    m_found.push_back({static_cast<std::uint32_t>(i), d2});
+  }
+
+  const Photon* m_photons;
+  const std::uint8_t* m_axis_of;
+  double m_q[3];
+  double m_bound2;
+  const PhotonFilter& m_filter;
+  std::vector<NeighbourPhoton>& m_found;
+};
+
 }  // namespace
 
 PhotonMap::PhotonMap(std::vector<Photon> photons) : m_photons(std::move(photons)) { build(nullptr); }
@@ -193,15 +250,40 @@ void PhotonMap::build(std::vector<std::uint32_t>* input_index) {
 
 void PhotonMap::nearest(const Vec3& point, std::size_t k, double max_radius_m,
                         const PhotonFilter& filter, std::vector<NeighbourPhoton>& out) const {
+  nearest(point, k, max_radius_m, std::numeric_limits<double>::infinity(), filter, out);
+}
+
+bool PhotonMap::nearest(const Vec3& point, std::size_t k, double max_radius_m, double hint_radius_m,
+                        const PhotonFilter& filter, std::vector<NeighbourPhoton>& out) const {
   out.clear();
   if (!(max_radius_m >= 0))
     throw std::invalid_argument("PhotonMap::nearest: the maximum search radius must be >= 0");
-  if (k == 0 || m_photons.empty()) return;
+  if (k == 0 || m_photons.empty()) return true;
+  const double no_offset[3] = {0, 0, 0};
+  // The result is sorted with std::sort rather than std::sort_heap: (distance, index) is a
+  // strict total order on distinct photons, so any correct sort gives the same list, and
+  // introsort is about three times faster than heapsort on these short lists.
+  if (hint_radius_m >= 0 && hint_radius_m < max_radius_m) {
+    RangeCollect collect(m_photons.data(), m_axis.data(), point, hint_radius_m, filter, out);
+    collect.visit(0, m_photons.size(), no_offset);
+    if (out.size() >= k) {
+      // At least k photons within the hint: the k nearest are among them (header).
+      if (out.size() > k) {
+        std::nth_element(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(k - 1), out.end(), closer);
+        out.resize(k);
+      }
+      std::sort(out.begin(), out.end(), closer);
+      return true;
+    }
+    out.clear();
+  } else {
+    hint_radius_m = max_radius_m;  // no hint, or one no tighter than the maximum
+  }
   out.reserve(std::min(k, m_photons.size()));
   Search search(m_photons.data(), m_axis.data(), point, k, max_radius_m, filter, out);
-  const double no_offset[3] = {0, 0, 0};
   search.visit(0, m_photons.size(), no_offset);
-  std::sort_heap(out.begin(), out.end(), closer);
+  std::sort(out.begin(), out.end(), closer);
+  return hint_radius_m == max_radius_m;
 }
 
 std::size_t PhotonMap::memory_bytes() const {

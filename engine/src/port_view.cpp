@@ -35,7 +35,8 @@ double port_view_pad_m(const Scene& scene, const std::vector<Material>& material
   return scene.ray_epsilon_m() * (FloatPadEpsilons + 2.0 * crossings);
 }
 
-PortView::PortView(const Scene& scene, const Vec3& origin, double pad) {
+PortView::PortView(const Scene& scene, const Vec3& origin, double pad, double usual_half_angle_rad)
+    : m_usual_half_angle_rad(usual_half_angle_rad) {
   for (const Port& port : scene.ports().ports()) {
     PortCone cone;
     cone.first = m_triangles.size();
@@ -47,6 +48,7 @@ PortView::PortView(const Scene& scene, const Vec3& origin, double pad) {
     const double distance = length(to_centre);
     cone.axis = distance > 0 ? to_centre / distance : Vec3{0, 0, 1};
     cone.half_angle_rad = distance > radius ? std::asin(radius / distance) : Pi;
+    cone.cos_usual_reach = std::cos(cone.half_angle_rad + usual_half_angle_rad);
     for (const std::array<Vec3, 3>& tri : port.triangles) {
       Triangle t;
       const Vec3 a[3] = {tri[0] - origin, tri[1] - origin, tri[2] - origin};
@@ -64,6 +66,7 @@ PortView::PortView(const Scene& scene, const Vec3& origin, double pad) {
         if (dot(m, a[(e + 2) % 3]) < 0) m = m * -1.0;
         t.edge_normals[static_cast<std::size_t>(e)] = m;
       }
+      t.sin_usual_widened = std::sin(usual_half_angle_rad + t.margin_rad);
       m_triangles.push_back(t);
     }
     cone.last = m_triangles.size();
@@ -74,8 +77,11 @@ PortView::PortView(const Scene& scene, const Vec3& origin, double pad) {
 bool PortView::may_cross_port(const Vec3& direction, double half_angle_rad) const {
   for (const PortCone& port : m_ports) {
     const double reach = port.half_angle_rad + half_angle_rad;
-    // Farther from the axis than `reach` (cos below cos(reach)): the port is missed.
-    if (reach < Pi && dot(direction, port.axis) < std::cos(reach)) continue;
+    // Farther from the axis than `reach` (cos below cos(reach)): the port is missed. At the
+    // usual half-angle the cosine was computed once, by the same expression.
+    if (reach < Pi &&
+        dot(direction, port.axis) < (half_angle_rad == m_usual_half_angle_rad ? port.cos_usual_reach : std::cos(reach)))
+      continue;
     if (may_cross(port, direction, half_angle_rad)) return true;
   }
   return false;
@@ -86,7 +92,7 @@ bool PortView::may_cross(const PortCone& port, const Vec3& direction, double hal
     const Triangle& t = m_triangles[i];
     const double widened = half_angle_rad + t.margin_rad;
     if (!(widened < 0.5 * Pi)) return true;
-    const double limit = -std::sin(widened);
+    const double limit = half_angle_rad == m_usual_half_angle_rad ? -t.sin_usual_widened : -std::sin(widened);
     bool outside = false;
     for (const Vec3& m : t.edge_normals)
       if (dot(direction, m) < limit) {

@@ -60,20 +60,32 @@ void add_segment(AreaMoments& m, const PlanePoint& p, const PlanePoint& q) {
   }
 }
 
-// Contributions of the counter-clockwise arc of radius r from angle t0 to t1 (t1 > t0).
-void add_arc(AreaMoments& m, double r, double t0, double t1) {
+// The antiderivatives' differences F(t1) - F(t0) an arc from angle t0 to t1 needs: of cos^3,
+// sin^3, cos^4, sin^4 and cos^3 sin.
+struct ArcTrig {
+  double cos3 = 0, sin3 = 0, cos4 = 0, sin4 = 0, cos3sin = 0;
+};
+
+ArcTrig arc_trig(double t0, double t1) {
   auto cos3 = [](double t) { const double s = std::sin(t); return s - s * s * s / 3.0; };
   auto sin3 = [](double t) { const double c = std::cos(t); return -c + c * c * c / 3.0; };
   auto cos4 = [](double t) { return 3.0 * t / 8.0 + std::sin(2 * t) / 4.0 + std::sin(4 * t) / 32.0; };
   auto sin4 = [](double t) { return 3.0 * t / 8.0 - std::sin(2 * t) / 4.0 + std::sin(4 * t) / 32.0; };
   auto cos3sin = [](double t) { const double c = std::cos(t); return -c * c * c * c / 4.0; };
+  return {cos3(t1) - cos3(t0), sin3(t1) - sin3(t0), cos4(t1) - cos4(t0), sin4(t1) - sin4(t0),
+          cos3sin(t1) - cos3sin(t0)};
+}
+
+// Contributions of the counter-clockwise arc of radius r from angle t0 to t1 (t1 > t0);
+// `d` = arc_trig(t0, t1).
+void add_arc(AreaMoments& m, double r, double t0, double t1, const ArcTrig& d) {
   const double r2 = r * r, r3 = r2 * r, r4 = r2 * r2;
   m.area += 0.5 * r2 * (t1 - t0);
-  m.mx += 0.5 * r3 * (cos3(t1) - cos3(t0));
-  m.my += 0.5 * r3 * (sin3(t1) - sin3(t0));
-  m.mxx += r4 / 3.0 * (cos4(t1) - cos4(t0));
-  m.myy += r4 / 3.0 * (sin4(t1) - sin4(t0));
-  m.mxy += 0.5 * r4 * (cos3sin(t1) - cos3sin(t0));
+  m.mx += 0.5 * r3 * d.cos3;
+  m.my += 0.5 * r3 * d.sin3;
+  m.mxx += r4 / 3.0 * d.cos4;
+  m.myy += r4 / 3.0 * d.sin4;
+  m.mxy += 0.5 * r4 * d.cos3sin;
 }
 
 }  // namespace
@@ -81,33 +93,38 @@ void add_arc(AreaMoments& m, double r, double t0, double t1) {
 AreaMoments ReceiverPlane::clipped_disc_moments(double x, double y, double r_m) const {
   AreaMoments m;
   if (!(r_m > 0)) return m;
-  // The outline relative to the centre, counter-clockwise.
-  std::vector<PlanePoint> poly;
+  // The outline relative to the centre, counter-clockwise. The working lists are reused per
+  // thread: this runs once per k-nearest lookup, so allocations would cost as much as the
+  // arithmetic.
+  thread_local std::vector<PlanePoint> poly;
+  thread_local std::vector<double> crossings;  // angles where the circle meets the outline
+  poly.clear();
+  crossings.clear();
   for (const PlanePoint& p : m_outline) poly.push_back({p.x - x, p.y - y});
   double signed_area = 0;
   for (std::size_t i = 0; i < poly.size(); ++i)
     signed_area += cross2(poly[i], poly[(i + 1) % poly.size()]);
   if (signed_area < 0) std::reverse(poly.begin(), poly.end());
   const double r2 = r_m * r_m;
-  std::vector<double> crossings;  // angles where the circle meets the outline
   for (std::size_t i = 0; i < poly.size(); ++i) {
     const PlanePoint a = poly[i], b = poly[(i + 1) % poly.size()];
     const double dx = b.x - a.x, dy = b.y - a.y;
     const double qa = dx * dx + dy * dy;
     if (qa <= 0) continue;
     const double qb = a.x * dx + a.y * dy, qc = a.x * a.x + a.y * a.y - r2;
-    std::vector<double> cuts = {0.0};
+    double cuts[4] = {0.0, 0.0, 0.0, 0.0};
+    std::size_t cut_count = 1;
     const double disc = qb * qb - qa * qc;
     if (disc > 0) {
       const double root = std::sqrt(disc);
       for (double t : {(-qb - root) / qa, (-qb + root) / qa})
         if (t > 0 && t < 1) {
-          cuts.push_back(t);
+          cuts[cut_count++] = t;
           crossings.push_back(std::atan2(a.y + t * dy, a.x + t * dx));
         }
     }
-    cuts.push_back(1.0);
-    for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    cuts[cut_count++] = 1.0;
+    for (std::size_t k = 0; k + 1 < cut_count; ++k) {
       const double tm = 0.5 * (cuts[k] + cuts[k + 1]);
       const double mx = a.x + tm * dx, my = a.y + tm * dy;
       if (mx * mx + my * my < r2)
@@ -118,7 +135,10 @@ AreaMoments ReceiverPlane::clipped_disc_moments(double x, double y, double r_m) 
   if (crossings.empty()) {
     // Whole disc inside the outline, or disjoint (or the outline inside the disc, whose
     // edges were added above).
-    if (contains(x, y) && m.area == 0) add_arc(m, r_m, 0.0, 2 * Pi);
+    // The whole circle's trigonometric terms do not depend on the radius: computed once
+    // (the disc lies wholly inside the outline at most sensors).
+    static const ArcTrig whole = arc_trig(0.0, 2 * Pi);
+    if (contains(x, y) && m.area == 0) add_arc(m, r_m, 0.0, 2 * Pi, whole);
     return m;
   }
   std::sort(crossings.begin(), crossings.end());
@@ -126,7 +146,7 @@ AreaMoments ReceiverPlane::clipped_disc_moments(double x, double y, double r_m) 
     const double t0 = crossings[k];
     const double t1 = k + 1 < crossings.size() ? crossings[k + 1] : crossings[0] + 2 * Pi;
     const double tm = 0.5 * (t0 + t1);
-    if (t1 > t0 && contains(x + r_m * std::cos(tm), y + r_m * std::sin(tm))) add_arc(m, r_m, t0, t1);
+    if (t1 > t0 && contains(x + r_m * std::cos(tm), y + r_m * std::sin(tm))) add_arc(m, r_m, t0, t1, arc_trig(t0, t1));
   }
   return m;
 }

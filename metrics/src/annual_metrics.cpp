@@ -5,6 +5,7 @@
 #include "dayphoton/metrics/annual_metrics.h"
 
 #include <algorithm>
+#include <iterator>
 #include <stdexcept>
 
 namespace dayphoton::metrics {
@@ -121,19 +122,33 @@ std::vector<En17037Result> en17037_daylight_provision(const IlluminanceTable& ta
                                                       const std::vector<double>& area_weights) {
   check_shapes(table, daylight_hours);
   const double n_hours = static_cast<double>(daylight_hours.occupied_count());
-  std::vector<En17037Result> results;
-  for (const En17037Level& level : En17037Levels) {
-    std::vector<double> target(table.sensor_count()), minimum(table.sensor_count());
-    for (std::size_t s = 0; s < table.sensor_count(); ++s) {
-      double hours_target = 0, hours_minimum = 0;
-      for (std::size_t t = 0; t < table.step_count(); ++t) {
-        if (!daylight_hours.occupied(t)) continue;
-        hours_target += table.lux(t, s) >= level.target_lux;
-        hours_minimum += table.lux(t, s) >= level.minimum_target_lux;
+  const std::size_t n_sensors = table.sensor_count();
+  // Hours reached per level and sensor, counted step by step: the table is stored step by
+  // step, so this reads it in order (a sensor's column at a time strode through all of it,
+  // once per level).
+  constexpr std::size_t Levels = std::size(En17037Levels);
+  std::vector<std::size_t> hours_target(Levels * n_sensors, 0), hours_minimum(Levels * n_sensors, 0);
+  for (std::size_t t = 0; t < table.step_count(); ++t) {
+    if (!daylight_hours.occupied(t)) continue;
+    for (std::size_t l = 0; l < Levels; ++l) {
+      const double target_lux = En17037Levels[l].target_lux, minimum_lux = En17037Levels[l].minimum_target_lux;
+      std::size_t* reached_target = hours_target.data() + l * n_sensors;
+      std::size_t* reached_minimum = hours_minimum.data() + l * n_sensors;
+      for (std::size_t s = 0; s < n_sensors; ++s) {
+        const double e = table.lux(t, s);
+        reached_target[s] += e >= target_lux;
+        reached_minimum[s] += e >= minimum_lux;
       }
+    }
+  }
+  std::vector<En17037Result> results;
+  for (std::size_t l = 0; l < Levels; ++l) {
+    const En17037Level& level = En17037Levels[l];
+    std::vector<double> target(n_sensors), minimum(n_sensors);
+    for (std::size_t s = 0; s < n_sensors; ++s) {
       // A point meets a target when it is reached for at least half of the daylight hours.
-      target[s] = n_hours > 0 && hours_target >= 0.5 * n_hours ? 100.0 : 0.0;
-      minimum[s] = n_hours > 0 && hours_minimum >= 0.5 * n_hours ? 100.0 : 0.0;
+      target[s] = n_hours > 0 && double(hours_target[l * n_sensors + s]) >= 0.5 * n_hours ? 100.0 : 0.0;
+      minimum[s] = n_hours > 0 && double(hours_minimum[l * n_sensors + s]) >= 0.5 * n_hours ? 100.0 : 0.0;
     }
     En17037Result r;
     r.level = level.name;

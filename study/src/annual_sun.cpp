@@ -205,7 +205,7 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
         throw std::invalid_argument("direct sun: a sensor needs a finite position and a non-zero normal");
       const Vec3 normal = sensors[s].normal / len;
       const Vec3 origin = sensors[s].position + normal * scene.ray_epsilon_m();
-      const engine::PortView ports(scene, origin, pad_m);
+      const engine::PortView ports(scene, origin, pad_m, sky::SunHalfAngle_rad);
       for (std::size_t i = 0; i < suns.size(); ++i) {
         Vec3 sum;
         // A disc wholly behind the sensor's plane contributes nothing (its angular radius

@@ -31,6 +31,7 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -40,6 +41,8 @@
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/sky/patch_basis.h"
+#include "dayphoton/engine/random.h"
 #include "test_scenes.h"
 
 namespace dayphoton::engine {
@@ -552,6 +555,64 @@ TEST(DirectComponent, RejectsBadArguments) {
   EXPECT_THROW(direct_irradiance(scene, materials, sources, UpAtOrigin, cie_overcast, 0, 1),
                std::invalid_argument);
   EXPECT_TRUE(direct_coefficients(scene, materials, sources, {}, options).empty());
+}
+
+TEST(DirectComponent, SkippingRaysThatMissThePortsChangesNoValue) {
+  // The direct component traces no shadow ray whose direction the sensor's PortView rules out
+  // (engine/port_view.h: it crosses no port, so its sky transmittance is zero). Against the
+  // plain loop of the solid-angle estimator written here (the same strata, random numbers
+  // and arithmetic, every sample's sky_transmittance), in the office with an overhang outside
+  // (rays through the window that are then blocked), sensors near and far from the window,
+  // facing up and toward it: every coefficient must be identical, and most rays must be
+  // ruled out for the test to mean anything (counted as the zero samples of the plain loop).
+  SceneDescription d = test::office_room();
+  add_surface(d, "overhang", 1, {{0, 0, 2.6}, {6, 0, 2.6}, {6, -1, 2.6}, {0, -1, 2.6}});
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models(d);
+  const SourceSet sources = SourceSet::sky_bins(sky::PatchBasis::tregenza());
+  std::vector<SensorPoint> sensors;
+  for (double y : {0.05, 0.5, 2.0, 6.0})
+    for (double x : {0.5, 3.0}) {
+      sensors.push_back({{x, y, 0.8}, {0, 0, 1}});
+      sensors.push_back({{x, y, 1.5}, {0, -1, 0}});
+    }
+  DirectOptions o;
+  o.samples_per_source = 9;
+  o.seed = 5;
+  o.port_sampling = false;  // the plain estimator, whose loop is written out below
+  const std::vector<Vec3> fast = direct_coefficients(scene, materials, sources, sensors, o);
+  constexpr double OneMinusEpsilon = 0x1.fffffffffffffp-1;
+  const int k = 3;
+  std::size_t rays = 0, dark = 0;
+  for (std::size_t s = 0; s < sensors.size(); ++s) {
+    const Vec3 origin = sensors[s].position + sensors[s].normal * scene.ray_epsilon_m();
+    for (std::size_t p = 0; p < sources.size(); ++p) {
+      Rng rng(o.seed, p, s, RandomStream::Direct);
+      const double density_a = static_cast<double>(k) * k / sources[p].solid_angle_sr;
+      Vec3 sum;
+      for (int i = 0; i < k; ++i)
+        for (int j = 0; j < k; ++j) {
+          const double u1 = std::min((i + rng.uniform()) / k, OneMinusEpsilon);
+          const double u2 = std::min((j + rng.uniform()) / k, OneMinusEpsilon);
+          const Vec3 w = sources.sample_direction(p, u1, u2);
+          const double cos_theta = dot(w, sensors[s].normal);
+          Vec3 value;
+          if (cos_theta > 0.0) {
+            const Vec3 t = sky_transmittance(scene, materials, origin, w);
+            ++rays;
+            if (t.x != 0.0 || t.y != 0.0 || t.z != 0.0) value = t * cos_theta * (1.0 / (density_a + 0.0));
+            else ++dark;
+          }
+          sum += value;
+        }
+      const Vec3& got = fast[s * sources.size() + p];
+      ASSERT_EQ(got.x, sum.x) << "sensor " << s << " source " << p;
+      ASSERT_EQ(got.y, sum.y) << "sensor " << s << " source " << p;
+      ASSERT_EQ(got.z, sum.z) << "sensor " << s << " source " << p;
+    }
+  }
+  EXPECT_GT(dark, rays / 2);   // most rays find no sky: the skip has work to do
+  EXPECT_LT(dark, rays);       // and some do
 }
 
 }  // namespace

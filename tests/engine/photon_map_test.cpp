@@ -291,6 +291,48 @@ TEST(PhotonMap, AllPhotonsFilteredOut) {
   EXPECT_TRUE(out.empty());
 }
 
+TEST(PhotonMap, HintedSearchMatchesBruteForce) {
+  // The hint only decides the cost: every hint (none, zero, too small, the k-th distance
+  // itself, the k-th distance seeded from a neighbouring point by the triangle inequality,
+  // wider than the maximum, NaN) gives brute force's photons. Coincident photons on a
+  // receiver-like plane make the k-th distance tied many times over.
+  const PhotonMap map(random_photons(3000, 15, [](std::mt19937_64& rng) {
+    std::uniform_int_distribution<int> cell(0, 30);  // duplicates: ties at the k-th distance
+    return std::array<float, 3>{0.1f * static_cast<float>(cell(rng)), 0.1f * static_cast<float>(cell(rng)), 0.8f};
+  }));
+  std::mt19937_64 rng(16);
+  std::uniform_real_distribution<double> u(-0.2, 3.2), step(-0.5, 0.5);
+  std::vector<NeighbourPhoton> got, previous;
+  int repeats = 0, hinted = 0;
+  for (const PhotonFilter& filter : test_filters())
+    for (double radius : {Inf, 0.4})
+      for (std::size_t k : {std::size_t(1), std::size_t(7), std::size_t(101), map.size() + 5}) {
+        Vec3 prev_q{u(rng), u(rng), 0.8};
+        map.nearest(prev_q, k, radius, filter, previous);
+        for (int i = 0; i < 8; ++i) {
+          const Vec3 q{prev_q.x + step(rng), prev_q.y + step(rng), 0.8};
+          const std::vector<NeighbourPhoton> want = brute_force(map, q, k, radius, filter);
+          const double kth = want.empty() ? 0.0 : std::sqrt(want.back().distance_squared_m2);
+          const double seeded = previous.size() == k
+                                    ? std::sqrt(previous.back().distance_squared_m2) + length(q - prev_q)
+                                    : Inf;
+          for (double hint : {0.0, 0.5 * kth, kth, std::nextafter(kth, Inf), seeded, 2 * kth + 1, Inf,
+                              std::numeric_limits<double>::quiet_NaN()}) {
+            const bool first_pass = map.nearest(q, k, radius, hint, filter, got);
+            expect_same(got, want, "hinted query");
+            if (::testing::Test::HasFatalFailure()) return;
+            ++hinted;
+            if (!first_pass) ++repeats;
+          }
+          previous = want;
+          prev_q = q;
+        }
+      }
+  // Both paths ran: hints that held k photons, and hints too small that were repeated.
+  EXPECT_GT(repeats, 0);
+  EXPECT_LT(repeats, hinted);
+}
+
 TEST(PhotonMap, BuildDoesNotDependOnThreadCount) {
   // Above the parallel build threshold (2^16) so that subtrees are built concurrently.
   const auto photons = random_photons(200000, 12, [](std::mt19937_64& rng) {

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/direct_component.h"
@@ -116,6 +117,37 @@ TEST(PortView, InteriorGlazingWidensTheMarginAndStaysSound) {
   const double pad_m = port_view_pad_m(scene, materials);
   EXPECT_GT(pad_m, 2.0 * MaxShadowRayCrossings * scene.ray_epsilon_m());
   EXPECT_GT(check_random_cones(scene, materials, pad_m, 0.00465, 2000), 0.5);
+}
+
+TEST(PortView, TheUsualHalfAngleChangesNoAnswer) {
+  // A view computes the trigonometry of its usual half-angle once; the answers must be those
+  // of a view that computes it per query, at that half-angle and at others, for directions
+  // all around (random origins in the office), with and without the interior-glazing pad.
+  const SceneDescription d = test::office_room();
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = materials_of(d);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  const double sun = 0.2665 * Pi / 180;
+  int crossing = 0, missing = 0;
+  for (double pad : {port_view_pad_m(scene, materials), 0.05})
+    for (int c = 0; c < 200; ++c) {
+      const Vec3 origin{0.05 + 5.9 * u(rng), 0.05 + 7.9 * u(rng), 0.05 + 2.9 * u(rng)};
+      const PortView plain(scene, origin, pad, -1.0);  // never asked at -1: computes per query
+      const PortView single(scene, origin, pad), disc(scene, origin, pad, sun);
+      for (int k = 0; k < 50; ++k) {
+        const double z = 1 - 2 * u(rng), phi = 2 * Pi * u(rng), s = std::sqrt(1 - z * z);
+        const Vec3 w{s * std::cos(phi), s * std::sin(phi), z};
+        for (double half : {0.0, sun, 0.1}) {
+          const bool want = plain.may_cross_port(w, half);
+          ASSERT_EQ(single.may_cross_port(w, half), want) << c << ' ' << k << ' ' << half;
+          ASSERT_EQ(disc.may_cross_port(w, half), want) << c << ' ' << k << ' ' << half;
+          (want ? crossing : missing) += 1;
+        }
+      }
+    }
+  EXPECT_GT(crossing, 100);
+  EXPECT_GT(missing, 100);
 }
 
 }  // namespace

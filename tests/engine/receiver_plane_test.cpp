@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/receiver_plane.h"
@@ -68,6 +70,31 @@ TEST(ReceiverPlane, OutlineInsideTheDiscAndAChordCut) {
   // First moment of the segment about the centre: -(2/3) (r^2 - d^2)^(3/2) on the x axis,
   // so the clipped disc's is its negative.
   EXPECT_NEAR(cut.mx, 2.0 / 3.0 * std::pow(r * r - d * d, 1.5), 1e-12);
+}
+
+TEST(ReceiverPlane, MomentsDoNotDependOnTheCallsBefore) {
+  // clipped_disc_moments reuses per-thread working lists and the whole circle's
+  // trigonometric terms: interleaved calls on outlines of either winding, whole and clipped
+  // discs, give bit-identical moments in any order.
+  const ReceiverPlane ccw(0.8, true, {{0, 0}, {3, 0}, {3, 4}, {0, 4}});
+  const ReceiverPlane cw(0.8, true, {{0, 0}, {0, 2}, {1, 2}, {1, 1}, {2, 1}, {2, 0}});  // an L, clockwise
+  struct Query {
+    const ReceiverPlane* plane;
+    double x, y, r;
+  };
+  const std::vector<Query> queries = {{&ccw, 1.5, 2.0, 0.5}, {&cw, 0.5, 0.5, 0.4}, {&ccw, 0.2, 3.9, 1.0},
+                                      {&cw, 1.5, 0.5, 2.5},  {&ccw, 1.5, 2.0, 0.7}, {&cw, 0.9, 1.5, 0.3}};
+  std::vector<AreaMoments> forward, backward(queries.size());
+  for (const Query& q : queries) forward.push_back(q.plane->clipped_disc_moments(q.x, q.y, q.r));
+  for (std::size_t i = queries.size(); i-- > 0;)
+    backward[i] = queries[i].plane->clipped_disc_moments(queries[i].x, queries[i].y, queries[i].r);
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    EXPECT_EQ(std::memcmp(&forward[i], &backward[i], sizeof(AreaMoments)), 0) << "query " << i;
+    EXPECT_GT(forward[i].area, 0.0) << "query " << i;
+  }
+  // The whole disc inside: its area and zero first moments, whatever came before.
+  EXPECT_NEAR(forward[0].area, Pi * 0.25, 1e-12);
+  EXPECT_NEAR(forward[0].mx, 0.0, 1e-12);
 }
 
 }  // namespace

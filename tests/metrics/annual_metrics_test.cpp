@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <random>
 #include <sstream>
 
 using namespace dayphoton::metrics;
@@ -122,6 +124,48 @@ TEST(AnnualMetrics, AreaWeightsWeightTheGridSummary) {
   const GridMetrics weighted = summarize_grid(m, MetricSettings{}, {3.0, 1.0});
   EXPECT_DOUBLE_EQ(weighted.sda_percent, 75);
   EXPECT_DOUBLE_EQ(weighted.mean.da_percent, 75);
+}
+
+TEST(AnnualMetrics, En17037CountsStepByStepAsSensorBySensor) {
+  // The hours are counted step by step (the table's order); against a count sensor by sensor
+  // written here, on a random table with values on and around every threshold, part of the
+  // steps daylight hours, and area weights: the same areas, bit for bit.
+  const std::size_t steps = 97, sensors = 41;
+  std::vector<TimeStamp> stamps(steps, TimeStamp{6, 21, 12.5});
+  IlluminanceTable table(stamps, sensors);
+  std::mt19937_64 rng(5);
+  const float levels[] = {99.0f, 100.0f, 299.0f, 300.0f, 301.0f, 499.0f, 500.0f, 750.0f, 800.0f};
+  std::uniform_int_distribution<int> pick(0, 8), hour(0, 3);
+  std::uniform_real_distribution<double> weight(0.5, 2.0);
+  for (std::size_t t = 0; t < steps; ++t)
+    for (std::size_t s = 0; s < sensors; ++s) table.lux(t, s) = levels[pick(rng)] + (s % 5 == 0 ? 300.0f : 0.0f);
+  std::vector<bool> daylight(steps);
+  for (std::size_t t = 0; t < steps; ++t) daylight[t] = hour(rng) != 0;
+  const OccupancySchedule hours(daylight);
+  std::vector<double> weights(sensors);
+  for (double& w : weights) w = weight(rng);
+  const std::vector<En17037Result> got = en17037_daylight_provision(table, hours, weights);
+  ASSERT_EQ(got.size(), std::size(En17037Levels));
+  const double n = static_cast<double>(hours.occupied_count());
+  int passed = 0;
+  for (std::size_t l = 0; l < got.size(); ++l) {
+    double target_sum = 0, minimum_sum = 0, weight_sum = 0;
+    for (std::size_t s = 0; s < sensors; ++s) {
+      double target = 0, minimum = 0;
+      for (std::size_t t = 0; t < steps; ++t) {
+        if (!hours.occupied(t)) continue;
+        target += table.lux(t, s) >= En17037Levels[l].target_lux;
+        minimum += table.lux(t, s) >= En17037Levels[l].minimum_target_lux;
+      }
+      target_sum += weights[s] * (target >= 0.5 * n ? 100.0 : 0.0);
+      minimum_sum += weights[s] * (minimum >= 0.5 * n ? 100.0 : 0.0);
+      weight_sum += weights[s];
+    }
+    EXPECT_EQ(got[l].target_area_percent, target_sum / weight_sum) << l;
+    EXPECT_EQ(got[l].minimum_target_area_percent, minimum_sum / weight_sum) << l;
+    passed += got[l].target_area_percent > 0 && got[l].target_area_percent < 100;
+  }
+  EXPECT_GT(passed, 0);  // not all or nothing: the table reaches the levels in part
 }
 
 TEST(AnnualMetrics, En17037LevelsOnAClosedFormTable) {

@@ -93,6 +93,19 @@ class PhotonMap {
   void nearest(const Vec3& point, std::size_t k, double max_radius_m, const PhotonFilter& filter,
                std::vector<NeighbourPhoton>& out) const;
 
+  /// The same result as nearest(point, k, max_radius_m, filter, out), found faster when the
+  /// caller knows a radius likely to hold k photons that pass the filter (e.g. the k-th
+  /// distance found at a nearby point plus the distance between the two points, by the
+  /// triangle inequality). The search first runs with min(hint_radius_m, max_radius_m) in
+  /// place of the maximum radius: the pruning bound starts there instead of at the maximum.
+  /// If it finds k photons, every one of the k nearest lies within the hint (k accepted
+  /// photons do), the bound never fell below the true k-th distance, and the result is
+  /// exactly nearest()'s; if it finds fewer, the search is repeated with max_radius_m. So the
+  /// hint decides only the cost, never the photons returned. A NaN or negative hint is taken
+  /// as no hint. Returns false if the repeat was needed (for tests and benches).
+  bool nearest(const Vec3& point, std::size_t k, double max_radius_m, double hint_radius_m,
+               const PhotonFilter& filter, std::vector<NeighbourPhoton>& out) const;
+
   /// Bytes used by photons and tree (for bench/).
   std::size_t memory_bytes() const;
 

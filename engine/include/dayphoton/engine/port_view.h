@@ -32,8 +32,11 @@ namespace dayphoton::engine {
 class PortView {
  public:
   /// The ports of `scene` seen from `origin` (a shadow ray's start), with the sideways
-  /// margin `pad_m` (port_view_pad_m, computed once per scene).
-  PortView(const Scene& scene, const Vec3& origin, double pad_m);
+  /// margin `pad_m` (port_view_pad_m, computed once per scene). The queries at
+  /// `usual_half_angle_rad` (a single ray: 0; the sun's disc) find their cosines and sines
+  /// computed here, by the same expressions, so they cost no trigonometry; any other
+  /// half-angle computes them per query. The answers do not depend on it.
+  PortView(const Scene& scene, const Vec3& origin, double pad_m, double usual_half_angle_rad = 0);
 
   /// False only if no ray from the origin within `half_angle_rad` of the unit vector
   /// `direction` can cross a port, so each has zero sky transmittance. True otherwise
@@ -44,6 +47,7 @@ class PortView {
   struct Triangle {
     std::array<Vec3, 3> edge_normals;  ///< unit m_e, pointing into the triangle's cone
     double margin_rad = 0;             ///< asin(pad / d), or >= pi/2: never ruled out
+    double sin_usual_widened = 0;      ///< sin(usual half-angle + margin_rad)
   };
   /// A port's triangles [first, last) and the cone about `axis` that holds all of them
   /// (their bounding sphere, widened by the pad, seen from the origin): a cone of directions
@@ -51,10 +55,12 @@ class PortView {
   struct PortCone {
     Vec3 axis;
     double half_angle_rad = 0;  ///< >= pi: the origin is inside the sphere
+    double cos_usual_reach = -1;  ///< cos(half_angle_rad + usual half-angle)
     std::size_t first = 0, last = 0;
   };
   bool may_cross(const PortCone& port, const Vec3& direction, double half_angle_rad) const;
 
+  double m_usual_half_angle_rad = 0;
   std::vector<Triangle> m_triangles;
   std::vector<PortCone> m_ports;
 };
