@@ -387,11 +387,11 @@ TEST(DaylightCoefficients, LocalLinearEstimateRemovesTheWallGradientBias) {
 TEST(DaylightCoefficients, LocalLinearEstimateIsExactAtCornersAndEdges) {
   // Closed form: a uniform and a linear field E(x, y) on the 4 x 4 m lattice, estimated at a
   // corner and at an edge with discs far wider than the distance to the walls (20 000 photons:
-  // radius ~1.6 m at the corner, ~1.1 m at the edge; the sensor 0.2-0.3 m from the walls).
+  // radius ~1.25 m at the corner, ~1.0 m at the edge; the sensor 0.2-0.3 m from the walls).
   // The local-linear fit on the wall-clipped disc is exact for both, up to the lattice's
   // count error in a disc (the 2e-3 of LocalLinearEstimateRemovesTheWallGradientBias). About
-  // 37 % (corner) and 64 % (edge) of the full disc's area lie inside the plane, so a kernel
-  // sum over the unclipped disc's normalisation would be 36-63 % low here.
+  // 41 % (corner) and 63-66 % (edges) of the full disc's area lie inside the plane, so a
+  // kernel sum over the unclipped disc's normalisation would be 34-59 % low here.
   const std::vector<SensorPoint> sensors = {{{0.2537, 0.3061, 0.8}, {0, 0, 1}},   // corner
                                             {{3.7463, 3.6939, 0.8}, {0, 0, 1}},   // corner
                                             {{2.0037, 3.7561, 0.8}, {0, 0, 1}},   // edge
