@@ -20,6 +20,7 @@
 #include "dayphoton/study/round_work.h"
 #include "dayphoton/study/sensor_blocks.h"
 #include "dayphoton/study/step_executor.h"
+#include "accuracy_round_loop.h"
 #include "lazy_value.h"
 #include <nlohmann/json.hpp>
 
@@ -28,13 +29,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-std::string number(double x, const char* format = "%.3g") {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, x);
-  return buffer;
-}
+std::string number(double x, const char* format = "%.3g") { return round_number(x, format); }
 
 /// The luminance-weighted radiance of each bin of the sky vector (as daylight_factor.cpp).
 std::vector<double> bin_luminance(const RadianceMatrix& sky) {
@@ -70,15 +65,7 @@ engine::DaylightCoefficients round_coefficients(const AccuracyCase& c, std::size
   const std::size_t n = c.sources->size();
   const SensorGrid& grid = (*c.grids)[g];
   LazyValue<engine::GridPhotons> maps;  // built once in a process that estimates some block
-  auto build = [&] {
-    const int plane = (*c.plane_of_grid)[g];
-    engine::GridPhotons gp =
-        plane >= 0 ? engine::GridPhotons::for_plane((*c.planes)[std::size_t(plane)], photons.planes[std::size_t(plane)], n)
-        : c.gather ? engine::GridPhotons::for_gather(photons.surface, n)
-                   : engine::GridPhotons::for_surfaces(photons.surface, n);
-    if (!gp.gather()) gp.set_source_scale(scale);
-    return gp;
-  };
+  auto build = [&] { return round_grid_photons(*c.planes, *c.plane_of_grid, c.gather, g, photons, scale); };
   const std::vector<std::string> blocks = work.estimate(
       grid.points.size(),
       [&](std::size_t begin, std::size_t end) {
@@ -122,12 +109,6 @@ void grid_direct(const AccuracyCase& c, std::size_t g, RoundWork& work, std::vec
   engine::DaylightCoefficients joined = decode_coefficients(join_coefficient_blocks(blocks));
   direct = std::move(joined.direct);
   variance = std::move(joined.direct_variance);
-}
-
-/// Rays per attempt of a source so far, plus one (its emission), for sharing the tracing out:
-/// 1 before its first attempt.
-double cost_per_attempt(const engine::SourcePhotonRecord& r) {
-  return r.attempts > 0 ? 1.0 + double(r.raw.tallies.at(0).rays) / double(r.attempts) : 1.0;
 }
 
 }  // namespace
@@ -194,66 +175,20 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   const std::size_t n = c.sources->size();
   const engine::PortEmitter emitter(scene, *c.sources);
   const Clock::time_point start = Clock::now();
-  double trace_seconds = 0;
-  std::uint64_t traced_attempts = 0;
-  // Extends every source p with next[p] > its attempts to next[p] (one call of the work: the
-  // sources' attempt ranges over the processes); false if none grows.
-  auto extend_to = [&](std::vector<engine::SourcePhotonRecord>& records, const std::vector<std::uint64_t>& next) {
-    std::vector<RoundWork::AttemptRequest> requests;
-    for (std::size_t p = 0; p < n; ++p)
-      if (next[p] > records[p].attempts)
-        requests.push_back({p, records[p].attempts, next[p], cost_per_attempt(records[p])});
-    if (requests.empty()) return false;
-    std::vector<engine::AttemptRange> ranges =
-        work.trace(requests, [&](std::size_t p, std::uint64_t first, std::uint64_t last) {
-          return engine::round_attempt_range(scene, materials, emitter, planes, c.tracing, p, first, last);
-        });
-    for (std::size_t i = 0; i < requests.size(); ++i)
-      engine::append_round_range(records[requests[i].source], requests[i].last, std::move(ranges[i]));
-    return true;
-  };
 
-  // Round 1, the pilot. The reference count of each source (its photons at photons_per_bin)
-  // fixes the scale the bandwidth is meant for (GridPhotons::set_source_scale).
-  std::vector<engine::SourcePhotonRecord> records(n);
-  std::vector<double> reference(n, 0.0);
+  // The sky sources, each traced as source p of the set. The reference count of each source
+  // (its photons at photons_per_bin) fixes the scale the bandwidth is meant for
+  // (GridPhotons::set_source_scale).
+  RoundSources sources;
+  sources.reference.assign(n, 0.0);
   for (std::size_t p = 0; p < n; ++p) {
     const double factor = p < c.tracing.source_photon_factor.size() ? c.tracing.source_photon_factor[p] : 1.0;
-    reference[p] = double(c.tracing.photons_per_source) * factor;
+    sources.reference[p] = double(c.tracing.photons_per_source) * factor;
   }
-  {
-    const Clock::time_point t = Clock::now();
-    std::vector<std::size_t> target(n);
-    for (std::size_t p = 0; p < n; ++p) {
-      target[p] = static_cast<std::size_t>(std::max(1.0, std::round(reference[p] * AccuracyPilotFraction)));
-      records[p] = engine::empty_source_record(scene, materials, emitter, planes, p);
-    }
-    // engine::pilot_source_photons of every source, one doubling of each at a time: each
-    // decided from the record's counts, summed over however many ranges traced it.
-    std::vector<std::uint64_t> next(n);
-    do {
-      for (std::size_t p = 0; p < n; ++p)
-        next[p] = engine::next_pilot_attempts(records[p], target[p], c.tracing.max_prepass_attempts_per_target)
-                      .value_or(records[p].attempts);
-    } while (extend_to(records, next));
-    trace_seconds += seconds_since(t);
-    for (const auto& r : records) traced_attempts += r.attempts;
-  }
-  AccuracyResult result;
-  for (const auto& r : records) result.outcome.pilot_attempts.push_back(r.attempts);
-  // Photons at the reference per attempt, from the pilot (fixed from now on, so a source's
-  // scale is proportional to its attempts).
-  std::vector<double> per_attempt(n, 0.0);
-  for (std::size_t p = 0; p < n; ++p) {
-    const engine::SourceTally& t = records[p].raw.tallies[0];
-    const double stored = double(t.stored_global + t.stored_caustic);
-    if (records[p].attempts > 0 && stored > 0) per_attempt[p] = stored / double(records[p].attempts) / reference[p];
-  }
-  auto scales = [&] {
-    std::vector<double> s(n, 1.0);
-    for (std::size_t p = 0; p < n; ++p)
-      if (per_attempt[p] > 0) s[p] = double(records[p].attempts) * per_attempt[p];
-    return s;
+  sources.max_prepass_attempts_per_target = c.tracing.max_prepass_attempts_per_target;
+  sources.empty_record = [&](std::size_t p) { return engine::empty_source_record(scene, materials, emitter, planes, p); };
+  sources.trace = [&](std::size_t p, std::uint64_t first, std::uint64_t last) {
+    return engine::round_attempt_range(scene, materials, emitter, planes, c.tracing, p, first, last);
   };
 
   // The direct component does not change from round to round.
@@ -263,26 +198,22 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
 
   const std::vector<double> luminance = bin_luminance(*c.overcast_vector);
   const double df_scale = 100.0 * RadianceWhiteEfficacy_lm_per_W / c.horizontal_illuminance_lux;
+  AccuracyResult result;
   result.outcome.target_percent = goal.target_percent;
-  std::string pending;  // a budget that cut the last round short
-  for (std::size_t round = 1;; ++round) {
-    // Estimate every grid from the photons so far.
-    const Clock::time_point estimate_start = Clock::now();
-    std::vector<engine::TracedPhotons> scaled(n);
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t p) { scaled[p] = engine::scaled_source_photons(records[p]); });
-    const engine::TracedPhotons photons = engine::merge_traced_photons(std::move(scaled));
-    const std::vector<double> scale = scales();
+  // Each round: every grid estimated from the photons so far, its DF and their variances.
+  const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
+                                   const std::vector<double>& scale) {
+    const engine::TracedPhotons photons = round_photons(records, false);
     result.coefficients.assign(grids.size(), {});
-    std::vector<GridVariance> variances(grids.size());
     result.outcome.reached_percent.assign(grids.size(), 0.0);
-    result.outcome.grid_status.assign(grids.size(), "");
-    std::vector<GridVariance> chased_variances;  // the grids the photons serve (accuracy_policy.h)
-    bool met = true;
+    RoundMeasurement m;
+    m.grid_status.assign(grids.size(), "");
+    m.met = true;
     for (std::size_t g = 0; g < grids.size(); ++g) {
       engine::DaylightCoefficients& dc = result.coefficients[g];
       dc = round_coefficients(c, g, photons, scale, direct[g], direct_variance[g], work,
                               "accuracy round " + std::to_string(round) + ", grid " + grids[g].name);
-      GridVariance& v = variances[g];
+      GridVariance v;
       v.df_percent = daylight_factor_percent(dc.to_matrix(), *c.overcast_vector, c.horizontal_illuminance_lux);
       v.direct_variance.assign(dc.sensors, 0.0);
       v.photon_variance.assign(dc.sensors * n, 0.0);
@@ -296,104 +227,28 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
         }
         stderr_percent[i] = std::sqrt(std::max(0.0, stderr_percent[i]));
       }
-      result.outcome.reached_percent[g] =
-          percentile_relative_stderr_percent(v.df_percent, stderr_percent, AccuracyPercentile);
+      const double reached = percentile_relative_stderr_percent(v.df_percent, stderr_percent, AccuracyPercentile);
+      result.outcome.reached_percent[g] = reached;
       const bool chased = grid_chased_by_photons(*c.plane_of_grid, c.gather, g);
-      result.outcome.grid_status[g] = accuracy_grid_status(chased, result.outcome.reached_percent[g], goal.target_percent);
+      m.grid_status[g] = accuracy_grid_status(chased, reached, goal.target_percent);
+      m.grids += (g ? ", " : " ") + grids[g].name + " " + number(reached) + " %" +
+                 (chased ? "" : " (gathered: not chased)");
       if (chased) {
-        met = met && result.outcome.reached_percent[g] <= goal.target_percent;
-        chased_variances.push_back(v);
+        m.met = m.met && reached <= goal.target_percent;
+        m.chased.push_back(std::move(v));
       }
     }
-    const double estimate_seconds = seconds_since(estimate_start);
-    std::uint64_t stored = 0, attempts = 0;
-    std::vector<double> cost(n, 0.0);
-    for (std::size_t p = 0; p < n; ++p) {
-      stored += records[p].stored();
-      attempts += records[p].attempts;
-      cost[p] = double(records[p].raw.tallies[0].rays);
-    }
-    result.outcome.rounds = round;
-    result.outcome.photons = stored;
-    result.outcome.attempts = attempts;
-    std::string line = "accuracy round " + std::to_string(round) + (round == 1 ? " (pilot)" : "") + ": " +
-                       number(double(stored), "%.0f") + " photons, " + number(double(attempts), "%.0f") +
-                       " attempts; DF relative standard error (" + number(AccuracyPercentile, "%.0f") +
-                       "th percentile)";
-    for (std::size_t g = 0; g < grids.size(); ++g)
-      line += (g ? ", " : " ") + grids[g].name + " " + number(result.outcome.reached_percent[g]) + " %" +
-              (grid_chased_by_photons(*c.plane_of_grid, c.gather, g) ? "" : " (gathered: not chased)");
-    log(line + " (target " + number(goal.target_percent) + " %)");
-    if (met) {
-      result.outcome.stop_reason = met_stop_reason(result.outcome.grid_status);
-      break;
-    }
-    if (!pending.empty()) {
-      result.outcome.stop_reason = pending;
-      break;
-    }
-    if (round >= MaxAccuracyRounds) {
-      result.outcome.stop_reason = "round limit";
-      break;
-    }
-    const RoundPlan plan = next_round_scale(chased_variances, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
-    std::vector<std::uint64_t> next(n);
-    double more_photons = 0, more_attempts = 0;
-    for (std::size_t p = 0; p < n; ++p) {
-      next[p] = plan.scale[p] > 1.0 ? static_cast<std::uint64_t>(std::ceil(double(records[p].attempts) * plan.scale[p]))
-                                    : records[p].attempts;
-      more_attempts += double(next[p] - records[p].attempts);
-      more_photons += double(records[p].stored()) * (plan.scale[p] - 1.0);
-    }
-    if (!(more_attempts > 0)) {
-      result.outcome.stop_reason = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
-      if (plan.sensors_direct_limited > 0)
-        log("accuracy: " + std::to_string(plan.sensors_direct_limited) +
-            " sensor(s) miss the target by their direct component alone, which photons do not reduce "
-            "(more simulation.direct_samples_per_bin would)");
-      break;
-    }
-    // Budgets: the share of the planned increments that fits.
-    double share = 1.0;
-    std::string cut;
-    if (goal.max_photons > 0) {
-      const double room = double(goal.max_photons) - double(stored);
-      if (room < more_photons) {
-        share = std::max(0.0, room / more_photons);
-        cut = "photon budget";
-      }
-    }
-    if (goal.max_seconds > 0) {
-      // The first process's clock, so that every process cuts the round alike (round_work.h).
-      const double per_attempt_s = traced_attempts > 0 ? work.agreed(trace_seconds) / double(traced_attempts) : 0.0;
-      const double room = goal.max_seconds - work.agreed(seconds_since(start) + estimate_seconds);
-      const double need = per_attempt_s * more_attempts;
-      if (room < need && (need > 0 ? std::max(0.0, room / need) : 0.0) < share) {
-        share = need > 0 ? std::max(0.0, room / need) : 0.0;
-        cut = "time budget";
-      }
-    }
-    if (share < 1.0) {
-      for (std::size_t p = 0; p < n; ++p)
-        next[p] = records[p].attempts +
-                  static_cast<std::uint64_t>(std::floor(share * double(next[p] - records[p].attempts)));
-      if (share < 0.05) {
-        result.outcome.stop_reason = cut;
-        log("accuracy: no round " + std::to_string(round + 1) + ": the " + cut + " leaves room for " +
-            number(100.0 * share) + " % of it");
-        break;
-      }
-      pending = cut;
-      log("accuracy: round " + std::to_string(round + 1) + " cut to " + number(100.0 * share) + " % of its plan by the " +
-          cut + "; the last round");
-    }
-    for (std::size_t p = 0; p < n; ++p) traced_attempts += next[p] - records[p].attempts;
-    const Clock::time_point t = Clock::now();
-    extend_to(records, next);
-    trace_seconds += seconds_since(t);
-  }
-  for (const auto& r : records) result.outcome.final_attempts.push_back(r.attempts);
-  log("accuracy: " + result.outcome.stop_reason + " after " + std::to_string(result.outcome.rounds) + " round(s)");
+    result.outcome.grid_status = m.grid_status;
+    return m;
+  };
+  const RoundLoopOutcome o =
+      run_round_loop(sources, goal, measure, {"accuracy", "DF relative standard error"}, log, work, start);
+  result.outcome.rounds = o.rounds;
+  result.outcome.photons = o.photons;
+  result.outcome.attempts = o.attempts;
+  result.outcome.stop_reason = o.stop_reason;
+  result.outcome.pilot_attempts = o.pilot_attempts;
+  result.outcome.final_attempts = o.final_attempts;
   return result;
 }
 

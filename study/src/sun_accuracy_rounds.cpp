@@ -2,6 +2,9 @@
 #include "dayphoton/study/sun_accuracy_rounds.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <stdexcept>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -13,15 +16,13 @@
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/study/accuracy_policy.h"
 #include "dayphoton/study/annual_sun.h"
+#include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/sensor_blocks.h"
+#include "accuracy_round_loop.h"
+#include "lazy_value.h"
 
 namespace dayphoton::study {
 namespace {
-
-std::string number(double x, const char* format = "%.3g") {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, x);
-  return buffer;
-}
 
 /// Luminance (RgbLuminanceWeights . C) of every (sensor, bin) of a sun-bin coefficient matrix.
 std::vector<double> bin_luminance(const RadianceMatrix& c) {
@@ -33,6 +34,45 @@ std::vector<double> bin_luminance(const RadianceMatrix& c) {
                                                          RgbLuminanceWeights.z * c.at(s, k, 2)
                                                    : double(c.at(s, k, 0));
   return l;
+}
+
+/// A block of sensors' sun-bin coefficients and variances as one string (RoundWork::estimate):
+/// the coefficient matrix's artefact bytes, then the variances as doubles (exact: the rounds
+/// measure them before the cache rounds them to single precision).
+std::string encode_sun_block(const RadianceMatrix& coefficients, const std::vector<double>& variance) {
+  const std::string matrix = encode_matrix(coefficients);
+  const std::uint64_t length = matrix.size();
+  std::string out(sizeof length, '\0');
+  std::memcpy(out.data(), &length, sizeof length);
+  out += matrix;
+  const std::size_t at = out.size();
+  out.resize(at + variance.size() * sizeof(double));
+  if (!variance.empty()) std::memcpy(out.data() + at, variance.data(), variance.size() * sizeof(double));
+  return out;
+}
+
+/// The blocks of encode_sun_block joined in sensor order: the grid's coefficients (sensors x
+/// bins x RGB) and variances (sensors x bins), as one estimate of the whole grid gives them.
+void join_sun_blocks(const std::vector<std::string>& blocks, std::size_t sensors, std::size_t bins,
+                     RadianceMatrix& coefficients, std::vector<double>& variance) {
+  std::vector<std::string> matrices;
+  variance.clear();
+  variance.reserve(sensors * bins);
+  for (const std::string& b : blocks) {
+    std::uint64_t length = 0;
+    if (b.size() < sizeof length) throw std::runtime_error("sun accuracy rounds: malformed block");
+    std::memcpy(&length, b.data(), sizeof length);
+    if (b.size() - sizeof length < length || (b.size() - sizeof length - length) % sizeof(double) != 0)
+      throw std::runtime_error("sun accuracy rounds: malformed block");
+    matrices.push_back(b.substr(sizeof length, length));
+    const std::size_t values = (b.size() - sizeof length - length) / sizeof(double);
+    const std::size_t at = variance.size();
+    variance.resize(at + values);
+    if (values > 0) std::memcpy(variance.data() + at, b.data() + sizeof length + length, values * sizeof(double));
+  }
+  coefficients = matrices.size() == 1 ? decode_matrix(matrices[0]) : decode_matrix(join_matrix_blocks(matrices));
+  if (coefficients.rows() != sensors || coefficients.columns() != bins || variance.size() != sensors * bins)
+    throw std::runtime_error("sun accuracy rounds: the blocks do not make the grid");
 }
 
 }  // namespace
@@ -97,6 +137,12 @@ std::vector<double> sun_hourly_relative_stderr_percent(const RadianceMatrix& coe
 
 SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const AccuracyGoal& goal,
                                           const std::function<void(const std::string&)>& log) {
+  return run_sun_accuracy_rounds(c, goal, log, *make_local_round_work());
+}
+
+SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const AccuracyGoal& goal,
+                                          const std::function<void(const std::string&)>& log, RoundWork& work) {
+  const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   const engine::Scene& scene = *c.scene;
   const std::vector<engine::Material>& materials = *c.materials;
   const std::vector<engine::ReceiverPlane>& planes = *c.planes;
@@ -105,7 +151,9 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   const std::size_t n = bins.size();
   const engine::SourceSet sources = bins.sources(sky::SunHalfAngle_rad);
   const std::vector<char> lit = sun_bins_to_trace(engine::PortEmitter(scene, sources), n);
-  // Each bin traced alone, as trace_sun_bin: its own disc, seed and emitter, source 0.
+  // Each bin traced alone, as trace_sun_bin: its own disc, seed and emitter, source 0; its
+  // photons relabelled as bin k in the maps. A bin not traced has a zero bound flux, so the
+  // pilot leaves it at no attempts.
   std::vector<engine::SourceSet> one(n);
   std::vector<std::unique_ptr<engine::PortEmitter>> emitter(n);
   std::vector<engine::TracingOptions> tracing(n);
@@ -115,60 +163,53 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
     emitter[k] = std::make_unique<engine::PortEmitter>(scene, one[k]);
     tracing[k] = sun_bin_tracing(c.tracing, bins, k);
   }
-  const double reference = double(c.tracing.photons_per_source);
-  std::vector<engine::SourcePhotonRecord> records(n);
-  tbb::parallel_for(std::size_t(0), n, [&](std::size_t k) {
-    if (!lit[k]) return;
-    const auto target = static_cast<std::size_t>(std::max(1.0, std::round(reference * AccuracyPilotFraction)));
-    records[k] = engine::pilot_source_photons(scene, materials, *emitter[k], planes, tracing[k], 0, target);
-  });
-  SunAccuracyResult result;
-  for (const auto& r : records) result.outcome.pilot_attempts.push_back(r.attempts);
-  std::vector<double> per_attempt(n, 0.0);  // photons at the reference per attempt, from the pilot
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!lit[k] || records[k].raw.tallies.empty()) continue;
-    const engine::SourceTally& t = records[k].raw.tallies[0];
-    const double stored = double(t.stored_global + t.stored_caustic);
-    if (records[k].attempts > 0 && stored > 0) per_attempt[k] = stored / double(records[k].attempts) / reference;
-  }
+  RoundSources bin_sources;
+  bin_sources.reference.assign(n, double(c.tracing.photons_per_source));
+  bin_sources.max_prepass_attempts_per_target = c.tracing.max_prepass_attempts_per_target;
+  bin_sources.empty_record = [&](std::size_t k) {
+    if (lit[k]) return engine::empty_source_record(scene, materials, *emitter[k], planes, 0);
+    engine::SourcePhotonRecord none;
+    none.raw.planes.resize(planes.size());
+    none.raw.tallies.resize(1);
+    return none;
+  };
+  bin_sources.trace = [&](std::size_t k, std::uint64_t first, std::uint64_t last) {
+    return engine::round_attempt_range(scene, materials, *emitter.at(k), planes, tracing[k], 0, first, last);
+  };
+
   const SunYearWeights weights = sun_year_weights(bins, *c.suns);
   std::vector<char> chased(grids.size());
   for (std::size_t g = 0; g < grids.size(); ++g) chased[g] = grid_chased_by_photons(*c.plane_of_grid, c.gather, g);
 
+  SunAccuracyResult result;
   SunAccuracyOutcome& o = result.outcome;
   o.target_percent = goal.target_percent;
-  bool budget_cut = false;
-  for (std::size_t round = 1;; ++round) {
-    std::vector<engine::TracedPhotons> scaled(n);
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t k) {
-      if (!lit[k]) {
-        scaled[k].planes.resize(planes.size());
-        scaled[k].tallies.resize(1);
-        return;
-      }
-      scaled[k] = engine::scaled_source_photons(records[k]);
-      relabel_photons(scaled[k], static_cast<std::uint32_t>(k));
-    });
-    const engine::TracedPhotons photons = engine::merge_traced_photons(std::move(scaled));
-    std::vector<double> scale(n, 1.0);
-    for (std::size_t k = 0; k < n; ++k)
-      if (per_attempt[k] > 0) scale[k] = double(records[k].attempts) * per_attempt[k];
+  // Each round: every grid's sun-bin coefficients and variances by sensor blocks, then the
+  // annual measure (the target's) and the hourly one (reported).
+  const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
+                                   const std::vector<double>& scale) {
+    const engine::TracedPhotons photons = round_photons(records, true);
     result.coefficients.assign(grids.size(), {});
     result.variance.assign(grids.size(), {});
     o.reached_percent.assign(grids.size(), 0.0);
     o.hourly_percent.assign(grids.size(), 0.0);
-    o.grid_status.assign(grids.size(), "");
-    std::vector<GridVariance> chased_variances;
-    bool met = true;
+    RoundMeasurement m;
+    m.grid_status.assign(grids.size(), "");
+    m.met = true;
     for (std::size_t g = 0; g < grids.size(); ++g) {
-      const int plane = (*c.plane_of_grid)[g];
-      engine::GridPhotons gp =
-          plane >= 0 ? engine::GridPhotons::for_plane(planes[std::size_t(plane)], photons.planes[std::size_t(plane)], n)
-          : c.gather ? engine::GridPhotons::for_gather(photons.surface, n)
-                     : engine::GridPhotons::for_surfaces(photons.surface, n);
-      if (!gp.gather()) gp.set_source_scale(scale);
-      result.coefficients[g] =
-          sun_bin_coefficients(scene, materials, sources, gp, grids[g].points, c.estimating, &result.variance[g]);
+      LazyValue<engine::GridPhotons> maps;  // built once in a process that estimates some block
+      const std::vector<std::string> blocks = work.estimate(
+          grids[g].points.size(),
+          [&](std::size_t begin, std::size_t end) {
+            const engine::GridPhotons& gp = maps.get(
+                [&] { return round_grid_photons(planes, *c.plane_of_grid, c.gather, g, photons, scale); });
+            std::vector<double> variance;
+            const RadianceMatrix coefficients = sun_bin_coefficients(scene, materials, sources, gp, grids[g].points,
+                                                                     c.estimating, &variance, {begin, end});
+            return encode_sun_block(coefficients, variance);
+          },
+          "sun accuracy round " + std::to_string(round) + ", grid " + grids[g].name);
+      join_sun_blocks(blocks, grids[g].points.size(), n, result.coefficients[g], result.variance[g]);
       GridVariance v = sun_annual_variance(result.coefficients[g], result.variance[g], weights);
       std::vector<double> stderr_value(v.df_percent.size(), 0.0);
       for (std::size_t s = 0; s < stderr_value.size(); ++s) {
@@ -185,77 +226,26 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
         for (std::size_t s = 0; s < se.size(); ++s) se[s] = hourly[s] / 100.0 * v.df_percent[s];
         return se;
       }(), AccuracyPercentile);
-      o.grid_status[g] = accuracy_grid_status(chased[g], o.reached_percent[g], goal.target_percent);
+      m.grid_status[g] = accuracy_grid_status(chased[g], o.reached_percent[g], goal.target_percent);
+      m.grids += (g ? ", " : " ") + grids[g].name + " " + round_number(o.reached_percent[g]) + " % (hourly " +
+                 round_number(o.hourly_percent[g]) + " %" + (chased[g] ? "" : ", gathered: not chased") + ")";
       if (chased[g]) {
-        met = met && o.reached_percent[g] <= goal.target_percent;
-        chased_variances.push_back(std::move(v));
+        m.met = m.met && o.reached_percent[g] <= goal.target_percent;
+        m.chased.push_back(std::move(v));
       }
     }
-    std::uint64_t stored = 0, attempts = 0;
-    std::vector<double> cost(n, 0.0);
-    for (std::size_t k = 0; k < n; ++k) {
-      stored += records[k].stored();
-      attempts += records[k].attempts;
-      if (lit[k]) cost[k] = double(records[k].raw.tallies[0].rays);
-    }
-    o.rounds = round;
-    o.photons = stored;
-    o.attempts = attempts;
-    std::string line = "sun accuracy round " + std::to_string(round) + (round == 1 ? " (pilot)" : "") + ": " +
-                       number(double(stored), "%.0f") + " photons, " + number(double(attempts), "%.0f") +
-                       " attempts; annual sun-bin illuminance relative standard error (" +
-                       number(AccuracyPercentile, "%.0f") + "th percentile)";
-    for (std::size_t g = 0; g < grids.size(); ++g)
-      line += (g ? ", " : " ") + grids[g].name + " " + number(o.reached_percent[g]) + " % (hourly " +
-              number(o.hourly_percent[g]) + " %" + (chased[g] ? "" : ", gathered: not chased") + ")";
-    log(line + " (target " + number(goal.target_percent) + " %)");
-    if (met) {
-      o.stop_reason = met_stop_reason(o.grid_status);
-      break;
-    }
-    if (budget_cut) {
-      o.stop_reason = "photon budget";
-      break;
-    }
-    if (round >= MaxAccuracyRounds) {
-      o.stop_reason = "round limit";
-      break;
-    }
-    const RoundPlan plan = next_round_scale(chased_variances, cost, AccuracyRoundAim * goal.target_percent,
-                                            AccuracyPercentile);
-    std::vector<std::uint64_t> next(n);
-    double more_photons = 0, more_attempts = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      next[k] = plan.scale[k] > 1.0 ? static_cast<std::uint64_t>(std::ceil(double(records[k].attempts) * plan.scale[k]))
-                                    : records[k].attempts;
-      more_attempts += double(next[k] - records[k].attempts);
-      more_photons += double(records[k].stored()) * (plan.scale[k] - 1.0);
-    }
-    if (!(more_attempts > 0)) {
-      o.stop_reason = "no light";
-      break;
-    }
-    if (goal.max_photons > 0 && double(goal.max_photons) - double(stored) < more_photons) {
-      const double share = std::max(0.0, (double(goal.max_photons) - double(stored)) / more_photons);
-      for (std::size_t k = 0; k < n; ++k)
-        next[k] = records[k].attempts +
-                  static_cast<std::uint64_t>(std::floor(share * double(next[k] - records[k].attempts)));
-      if (share < 0.05) {
-        o.stop_reason = "photon budget";
-        log("sun accuracy: no round " + std::to_string(round + 1) + ": the photon budget leaves room for " +
-            number(100.0 * share) + " % of it");
-        break;
-      }
-      budget_cut = true;
-      log("sun accuracy: round " + std::to_string(round + 1) + " cut to " + number(100.0 * share) +
-          " % of its plan by the photon budget; the last round");
-    }
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t k) {
-      if (lit[k]) engine::extend_source_photons(scene, materials, *emitter[k], planes, tracing[k], 0, next[k], records[k]);
-    });
-  }
-  for (const auto& r : records) o.final_attempts.push_back(r.attempts);
-  log("sun accuracy: " + o.stop_reason + " after " + std::to_string(o.rounds) + " round(s)");
+    o.grid_status = m.grid_status;
+    return m;
+  };
+  const RoundLoopOutcome loop = run_round_loop(
+      bin_sources, goal, measure, {"sun accuracy", "annual sun-bin illuminance relative standard error"}, log, work,
+      start);
+  o.rounds = loop.rounds;
+  o.photons = loop.photons;
+  o.attempts = loop.attempts;
+  o.stop_reason = loop.stop_reason;
+  o.pilot_attempts = loop.pilot_attempts;
+  o.final_attempts = loop.final_attempts;
   return result;
 }
 
@@ -263,10 +253,10 @@ std::string sun_accuracy_sentence(const SunAccuracyOutcome& o, std::size_t grid)
   const double reached = grid < o.reached_percent.size() ? o.reached_percent[grid] : 0.0;
   const double hourly = grid < o.hourly_percent.size() ? o.hourly_percent[grid] : 0.0;
   const std::string status = grid < o.grid_status.size() ? o.grid_status[grid] : "";
-  return "annual sun-bin illuminance relative standard error (" + number(AccuracyPercentile, "%.0f") +
-         "th percentile of the sensors) " + number(reached) + " % " + (reached <= o.target_percent ? "<=" : ">") +
-         " target " + number(o.target_percent) + " % (" + status + "; hourly " + number(hourly) + " %): " +
-         o.stop_reason + " after " + std::to_string(o.rounds) + " round(s), " + number(double(o.photons), "%.0f") +
+  return "annual sun-bin illuminance relative standard error (" + round_number(AccuracyPercentile, "%.0f") +
+         "th percentile of the sensors) " + round_number(reached) + " % " + (reached <= o.target_percent ? "<=" : ">") +
+         " target " + round_number(o.target_percent) + " % (" + status + "; hourly " + round_number(hourly) + " %): " +
+         o.stop_reason + " after " + std::to_string(o.rounds) + " round(s), " + round_number(double(o.photons), "%.0f") +
          " photons";
 }
 

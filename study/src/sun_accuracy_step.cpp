@@ -75,6 +75,8 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
     step.outputs.push_back({"sun-coefficients-variance", k});
   }
   step.outputs.push_back({"sun-accuracy", outcome_key});
+  // Collective (plan_step.h): every process of the run takes part in the rounds (round_work.h).
+  step.collective = true;
   auto to_json = [](const SunAccuracyOutcome& o) {
     return nlohmann::json{{"target_percent", o.target_percent}, {"reached_percent", o.reached_percent},
                           {"hourly_percent", o.hourly_percent}, {"grid_status", o.grid_status},
@@ -83,7 +85,8 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
         .dump();
   };
   step.compute = [&]() -> std::vector<std::string> {
-    SunAccuracyResult r = run_sun_accuracy_rounds(c, goal, [&](const std::string& line) { ctx.log.line(prefix + line); });
+    SunAccuracyResult r = run_sun_accuracy_rounds(
+        c, goal, [&](const std::string& line) { ctx.log.line(prefix + line); }, ctx.executor.round_work());
     std::vector<std::string> bytes;
     for (std::size_t g = 0; g < grids.size(); ++g) {
       // The variances as the cache keeps them (single precision), as sun_bin_steps.cpp does.

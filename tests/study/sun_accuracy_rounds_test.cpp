@@ -2,13 +2,17 @@
 // the annual measure against their closed forms, and whole rounds on the reference office
 // (48 sensors, reference 2000 photons per sun bin, bandwidth 8, 72 suns on Reinhart MF 1):
 // the target is met and the spread of three seeds agrees with the reported variances, bins
-// that send nothing keep their pilot, one and two threads give the same bytes, and a grid
-// estimated by final gather is reported, not chased (accuracy_policy.h).
+// that send nothing keep their pilot, one and two threads give the same bytes, as do 1 to 3
+// in-process ranks sharing the rounds (round_work.h), and a grid estimated by final gather is
+// reported, not chased (accuracy_policy.h).
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <exception>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,7 +26,11 @@
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/study/accuracy_policy.h"
+#include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/artifact_store.h"
+#include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/sun_accuracy_rounds.h"
+#include "../dist/in_process_ranks.h"
 
 namespace dayphoton::study {
 namespace {
@@ -221,6 +229,96 @@ TEST(SunAccuracyTarget, OneAndTwoThreadsGiveTheSameBytes) {
   EXPECT_EQ(0, std::memcmp(a.coefficients[0].data().data(), b.coefficients[0].data().data(),
                            a.coefficients[0].data().size() * sizeof(float)));
   EXPECT_EQ(a.variance[0], b.variance[0]);
+}
+
+/// A RoundWork that counts what passes through it (around the executor's).
+class CountingWork final : public RoundWork {
+ public:
+  explicit CountingWork(RoundWork& inner) : m_inner(inner) {}
+  std::vector<engine::AttemptRange> trace(const std::vector<AttemptRequest>& requests, const RangeTracer& t) override {
+    requests_total += requests.size();
+    return m_inner.trace(requests, [&](std::size_t p, std::uint64_t first, std::uint64_t last) {
+      ++ranges;
+      return t(p, first, last);
+    });
+  }
+  std::vector<std::string> estimate(std::size_t sensors, const RowEstimator& rows, const std::string& name) override {
+    std::vector<std::string> b = m_inner.estimate(sensors, rows, name);
+    blocks += b.size();
+    return b;
+  }
+  double agreed(double value) override { return m_inner.agreed(value); }
+  std::size_t requests_total = 0;
+  std::atomic<int> ranges{0};
+  std::size_t blocks = 0;
+
+ private:
+  RoundWork& m_inner;
+};
+
+// The sun rounds on 1, 2 and 3 in-process ranks (the distributed executor's RoundWork, sensor
+// blocks of 8 of the 48 sensors) give every rank the one-process rounds' bytes: outcome,
+// attempts per bin, coefficients and variances. With several ranks each range is traced by one
+// rank, some bin's request is cut into ranges, and every round's estimate goes in 6 blocks.
+TEST(SunAccuracyTarget, OneToThreeRanksGiveTheOneProcessBytes) {
+  const Office office;
+  AccuracyGoal goal;
+  goal.target_percent = Target;
+  const SunAccuracyResult one = run(office, 5, goal);
+  ASSERT_GE(one.outcome.rounds, 2u);
+  const std::string expected = encode_matrix(one.coefficients[0]);
+  for (int ranks : {1, 2, 3}) {
+    SCOPED_TRACE(std::to_string(ranks) + " ranks");
+    std::vector<SunAccuracyResult> results(static_cast<std::size_t>(ranks));
+    std::vector<int> ranges(results.size());
+    std::vector<std::size_t> requests(results.size()), blocks(results.size());
+    const auto errors = dist::test::run_ranks(ranks, [&](dist::Communicator& comm) {
+      const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                        ("sun_accuracy_ranks_" + std::to_string(ranks) + "_" + std::to_string(comm.rank()));
+      std::filesystem::remove_all(dir);
+      const ArtifactStore store(dir.string());
+      const auto executor = make_distributed_executor(comm, store, false, 8);
+      CountingWork work(executor->round_work());
+      const auto r = static_cast<std::size_t>(comm.rank());
+      results[r] = run_sun_accuracy_rounds(office.accuracy_case(5), goal, [](const std::string&) {}, work);
+      requests[r] = work.requests_total;
+      ranges[r] = work.ranges;
+      blocks[r] = work.blocks;
+    });
+    for (const std::exception_ptr& e : errors)
+      if (e) {
+        try {
+          std::rethrow_exception(e);
+        } catch (const std::exception& x) {
+          ADD_FAILURE() << x.what();
+        }
+      }
+    int all_ranges = 0;
+    for (std::size_t r = 0; r < results.size(); ++r) {
+      const SunAccuracyResult& x = results[r];
+      EXPECT_EQ(x.outcome.rounds, one.outcome.rounds);
+      EXPECT_EQ(x.outcome.photons, one.outcome.photons);
+      EXPECT_EQ(x.outcome.stop_reason, one.outcome.stop_reason);
+      EXPECT_EQ(x.outcome.pilot_attempts, one.outcome.pilot_attempts);
+      EXPECT_EQ(x.outcome.final_attempts, one.outcome.final_attempts);
+      EXPECT_EQ(x.outcome.reached_percent, one.outcome.reached_percent);
+      EXPECT_EQ(x.outcome.hourly_percent, one.outcome.hourly_percent);
+      ASSERT_EQ(x.coefficients.size(), 1u);
+      EXPECT_TRUE(encode_matrix(x.coefficients[0]) == expected) << "rank " << r;
+      EXPECT_EQ(x.variance[0], one.variance[0]) << "rank " << r;
+      EXPECT_EQ(requests[r], requests[0]);
+      all_ranges += ranges[r];
+    }
+    if (ranks > 1) {
+      EXPECT_GT(ranges[0], 0);
+      EXPECT_LT(ranges[0], all_ranges) << "rank 0 traced every range";
+      EXPECT_GT(std::size_t(all_ranges), requests[0]) << "no request was split";
+      EXPECT_EQ(blocks[0], one.outcome.rounds * 6u);  // each round's estimate in 6 blocks
+    } else {
+      EXPECT_EQ(std::size_t(all_ranges), requests[0]);
+      EXPECT_EQ(blocks[0], one.outcome.rounds);  // one block per round
+    }
+  }
 }
 
 // A gathered grid takes no part in the allocation. With one gather ray per sensor its error

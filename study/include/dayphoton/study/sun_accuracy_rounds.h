@@ -15,15 +15,20 @@
 // sqrt(sum_k B_k var C_k(s) / sum_h E_h(s)^2) with B_k = sum_h w_hk^2 L_h^2 (179 cancels), which
 // is what one hour's value carries (a few bins, not the whole year's).
 //
-// The rounds. Round 1 traces every lit bin (sun_bins_to_trace) to a quarter of the reference
-// count (sun photons_per_bin) with engine::pilot_source_photons on the bin traced alone (its own
-// disc and seed, as trace_sun_bin); later rounds extend each bin's attempt prefix by Neyman's
+// The rounds are the sky's loop (the pilot, the allocation, the stops and the log lines are
+// one piece of code, study/src/accuracy_round_loop.h) with this measure. Round 1 traces every
+// lit bin (sun_bins_to_trace) to a quarter of the reference count (sun photons_per_bin) by the
+// pilot's doublings (engine::next_pilot_attempts) on the bin traced alone (its own disc and
+// seed, as trace_sun_bin); later rounds extend each bin's attempt prefix by Neyman's
 // allocation (next_round_scale) of the annual measure, the kernel kept at the reference size
 // (GridPhotons::set_source_scale). Stops: target met, photon budget (stored photons of the sun
 // bins, the goal's max_photons again, apart from the sky's), round limit, no light. No time
-// budget (max_seconds bounds the sky's rounds). Grids estimated by final gather are not chased
-// (accuracy_policy.h): their outcome says "not reachable by photons" when above the target.
-// Deterministic: every round is a pure function of the project and the seed.
+// budget (the run's goal for the sun has none: max_seconds bounds the sky's rounds). Grids
+// estimated by final gather are not chased (accuracy_policy.h): their outcome says "not
+// reachable by photons" when above the target. Deterministic: every round is a pure function
+// of the project and the seed, the same bytes for any number of threads and of MPI ranks
+// (under MPI the bins' attempt ranges and each round's sensor blocks are shared over the
+// ranks, round_work.h; docs/cluster.md "Accuracy rounds").
 #pragma once
 
 #include <cstddef>
@@ -40,6 +45,7 @@
 #include "dayphoton/engine/sun_bins.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/study/accuracy_rounds.h"
+#include "dayphoton/study/round_work.h"
 
 namespace dayphoton::study {
 
@@ -96,7 +102,14 @@ struct SunAccuracyResult {
   SunAccuracyOutcome outcome;
 };
 
-/// The sun rounds of one case; `log` receives one line per round and the stop.
+/// The sun rounds of one case; `log` receives one line per round and the stop. The tracing
+/// (the pilot's doublings, each round's extension of the bins' attempt prefixes) and each
+/// round's estimates (sensor blocks) go through `work` (round_work.h): collective when it
+/// spans several processes, every one of which then runs these rounds alike and returns the
+/// same result.
+SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const AccuracyGoal& goal,
+                                          const std::function<void(const std::string&)>& log, RoundWork& work);
+/// The same in this process alone (make_local_round_work).
 SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const AccuracyGoal& goal,
                                           const std::function<void(const std::string&)>& log);
 

@@ -1,0 +1,203 @@
+// The accuracy rounds' shared loop: see accuracy_round_loop.h.
+#include "accuracy_round_loop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <tbb/parallel_for.h>
+
+#include "dayphoton/study/accuracy_policy.h"
+#include "dayphoton/study/annual_sun.h"
+
+namespace dayphoton::study {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// Rays per attempt of a source so far, plus one (its emission), for sharing the tracing out:
+/// 1 before its first attempt.
+double cost_per_attempt(const engine::SourcePhotonRecord& r) {
+  return r.attempts > 0 ? 1.0 + double(r.raw.tallies.at(0).rays) / double(r.attempts) : 1.0;
+}
+
+}  // namespace
+
+std::string round_number(double x, const char* format) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, x);
+  return buffer;
+}
+
+engine::TracedPhotons round_photons(const std::vector<engine::SourcePhotonRecord>& records, bool relabel) {
+  std::vector<engine::TracedPhotons> scaled(records.size());
+  tbb::parallel_for(std::size_t(0), records.size(), [&](std::size_t p) {
+    scaled[p] = engine::scaled_source_photons(records[p]);
+    if (relabel) relabel_photons(scaled[p], static_cast<std::uint32_t>(p));
+  });
+  return engine::merge_traced_photons(std::move(scaled));
+}
+
+engine::GridPhotons round_grid_photons(const std::vector<engine::ReceiverPlane>& planes,
+                                       const std::vector<int>& plane_of_grid, bool gather, std::size_t g,
+                                       const engine::TracedPhotons& photons, const std::vector<double>& scale) {
+  const std::size_t n = scale.size();
+  const int plane = plane_of_grid[g];
+  engine::GridPhotons gp =
+      plane >= 0 ? engine::GridPhotons::for_plane(planes[std::size_t(plane)], photons.planes[std::size_t(plane)], n)
+      : gather   ? engine::GridPhotons::for_gather(photons.surface, n)
+                 : engine::GridPhotons::for_surfaces(photons.surface, n);
+  if (!gp.gather()) gp.set_source_scale(scale);
+  return gp;
+}
+
+RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal& goal, const RoundMeasure& measure,
+                                const RoundLoopText& text, const std::function<void(const std::string&)>& log,
+                                RoundWork& work, Clock::time_point start) {
+  const std::size_t n = sources.reference.size();
+  double trace_seconds = 0;
+  std::uint64_t traced_attempts = 0;
+  // Extends every source p with next[p] > its attempts to next[p] (one call of the work: the
+  // sources' attempt ranges over the processes); false if none grows.
+  auto extend_to = [&](std::vector<engine::SourcePhotonRecord>& records, const std::vector<std::uint64_t>& next) {
+    std::vector<RoundWork::AttemptRequest> requests;
+    for (std::size_t p = 0; p < n; ++p)
+      if (next[p] > records[p].attempts)
+        requests.push_back({p, records[p].attempts, next[p], cost_per_attempt(records[p])});
+    if (requests.empty()) return false;
+    std::vector<engine::AttemptRange> ranges = work.trace(requests, sources.trace);
+    for (std::size_t i = 0; i < requests.size(); ++i)
+      engine::append_round_range(records[requests[i].source], requests[i].last, std::move(ranges[i]));
+    return true;
+  };
+
+  // Round 1, the pilot.
+  std::vector<engine::SourcePhotonRecord> records(n);
+  {
+    const Clock::time_point t = Clock::now();
+    std::vector<std::size_t> target(n);
+    for (std::size_t p = 0; p < n; ++p) {
+      target[p] = static_cast<std::size_t>(std::max(1.0, std::round(sources.reference[p] * AccuracyPilotFraction)));
+      records[p] = sources.empty_record(p);
+    }
+    // engine::pilot_source_photons of every source, one doubling of each at a time: each
+    // decided from the record's counts, summed over however many ranges traced it.
+    std::vector<std::uint64_t> next(n);
+    do {
+      for (std::size_t p = 0; p < n; ++p)
+        next[p] = engine::next_pilot_attempts(records[p], target[p], sources.max_prepass_attempts_per_target)
+                      .value_or(records[p].attempts);
+    } while (extend_to(records, next));
+    trace_seconds += seconds_since(t);
+    for (const auto& r : records) traced_attempts += r.attempts;
+  }
+  RoundLoopOutcome outcome;
+  for (const auto& r : records) outcome.pilot_attempts.push_back(r.attempts);
+  // Photons at the reference per attempt, from the pilot (fixed from now on, so a source's
+  // scale is proportional to its attempts).
+  std::vector<double> per_attempt(n, 0.0);
+  for (std::size_t p = 0; p < n; ++p) {
+    const engine::SourceTally& t = records[p].raw.tallies.at(0);
+    const double stored = double(t.stored_global + t.stored_caustic);
+    if (records[p].attempts > 0 && stored > 0)
+      per_attempt[p] = stored / double(records[p].attempts) / sources.reference[p];
+  }
+
+  std::string pending;  // a budget that cut the last round short
+  for (std::size_t round = 1;; ++round) {
+    const Clock::time_point estimate_start = Clock::now();
+    std::vector<double> scale(n, 1.0);
+    for (std::size_t p = 0; p < n; ++p)
+      if (per_attempt[p] > 0) scale[p] = double(records[p].attempts) * per_attempt[p];
+    const RoundMeasurement m = measure(round, records, scale);
+    const double estimate_seconds = seconds_since(estimate_start);
+    std::uint64_t stored = 0, attempts = 0;
+    std::vector<double> cost(n, 0.0);
+    for (std::size_t p = 0; p < n; ++p) {
+      stored += records[p].stored();
+      attempts += records[p].attempts;
+      cost[p] = double(records[p].raw.tallies.at(0).rays);
+    }
+    outcome.rounds = round;
+    outcome.photons = stored;
+    outcome.attempts = attempts;
+    log(text.name + " round " + std::to_string(round) + (round == 1 ? " (pilot)" : "") + ": " +
+        round_number(double(stored), "%.0f") + " photons, " + round_number(double(attempts), "%.0f") + " attempts; " +
+        text.measure + " (" + round_number(AccuracyPercentile, "%.0f") + "th percentile)" + m.grids + " (target " +
+        round_number(goal.target_percent) + " %)");
+    if (m.met) {
+      outcome.stop_reason = met_stop_reason(m.grid_status);
+      break;
+    }
+    if (!pending.empty()) {
+      outcome.stop_reason = pending;
+      break;
+    }
+    if (round >= MaxAccuracyRounds) {
+      outcome.stop_reason = "round limit";
+      break;
+    }
+    const RoundPlan plan = next_round_scale(m.chased, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+    std::vector<std::uint64_t> next(n);
+    double more_photons = 0, more_attempts = 0;
+    for (std::size_t p = 0; p < n; ++p) {
+      next[p] = plan.scale[p] > 1.0 ? static_cast<std::uint64_t>(std::ceil(double(records[p].attempts) * plan.scale[p]))
+                                    : records[p].attempts;
+      more_attempts += double(next[p] - records[p].attempts);
+      more_photons += double(records[p].stored()) * (plan.scale[p] - 1.0);
+    }
+    if (!(more_attempts > 0)) {
+      outcome.stop_reason = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
+      if (plan.sensors_direct_limited > 0)
+        log(text.name + ": " + std::to_string(plan.sensors_direct_limited) +
+            " sensor(s) miss the target by their direct component alone, which photons do not reduce "
+            "(more simulation.direct_samples_per_bin would)");
+      break;
+    }
+    // Budgets: the share of the planned increments that fits.
+    double share = 1.0;
+    std::string cut;
+    if (goal.max_photons > 0) {
+      const double room = double(goal.max_photons) - double(stored);
+      if (room < more_photons) {
+        share = std::max(0.0, room / more_photons);
+        cut = "photon budget";
+      }
+    }
+    if (goal.max_seconds > 0) {
+      // The first process's clock, so that every process cuts the round alike (round_work.h).
+      const double per_attempt_s = traced_attempts > 0 ? work.agreed(trace_seconds) / double(traced_attempts) : 0.0;
+      const double room = goal.max_seconds - work.agreed(seconds_since(start) + estimate_seconds);
+      const double need = per_attempt_s * more_attempts;
+      if (room < need && (need > 0 ? std::max(0.0, room / need) : 0.0) < share) {
+        share = need > 0 ? std::max(0.0, room / need) : 0.0;
+        cut = "time budget";
+      }
+    }
+    if (share < 1.0) {
+      for (std::size_t p = 0; p < n; ++p)
+        next[p] = records[p].attempts +
+                  static_cast<std::uint64_t>(std::floor(share * double(next[p] - records[p].attempts)));
+      if (share < 0.05) {
+        outcome.stop_reason = cut;
+        log(text.name + ": no round " + std::to_string(round + 1) + ": the " + cut + " leaves room for " +
+            round_number(100.0 * share) + " % of it");
+        break;
+      }
+      pending = cut;
+      log(text.name + ": round " + std::to_string(round + 1) + " cut to " + round_number(100.0 * share) +
+          " % of its plan by the " + cut + "; the last round");
+    }
+    for (std::size_t p = 0; p < n; ++p) traced_attempts += next[p] - records[p].attempts;
+    const Clock::time_point t = Clock::now();
+    extend_to(records, next);
+    trace_seconds += seconds_since(t);
+  }
+  for (const auto& r : records) outcome.final_attempts.push_back(r.attempts);
+  log(text.name + ": " + outcome.stop_reason + " after " + std::to_string(outcome.rounds) + " round(s)");
+  return outcome;
+}
+
+}  // namespace dayphoton::study

@@ -1,0 +1,99 @@
+// The loop the accuracy rounds share (docs/photon-tracing.md "Accuracy target"): the sky
+// sources' rounds (accuracy_rounds.h) and the sun bins' (sun_accuracy_rounds.h) differ only in
+// what they measure after each round; the pilot, the allocation of attempts per source, the
+// stops and the log lines are this one loop.
+//
+// Round 1, the pilot, grows every source's attempt prefix [0, A) by the doublings of
+// engine::next_pilot_attempts to a quarter of its reference count (AccuracyPilotFraction);
+// then the measure estimates the grids from the photons so far and returns the variances of
+// the grids the photons serve; next_round_scale turns them into each source's next count
+// (Neyman's allocation), a round extends every growing source's prefix, and so on. Stops:
+// every chased grid met the target, the photon budget (stored photons of the loop's sources),
+// the time budget (rank 0's clock: the one decision that depends on the machine), the round
+// limit, no source that can help ("no light", or "direct component" when a sensor's direct
+// variance alone exceeds its budget).
+//
+// Every trace (the pilot's doublings, each round's extension) is one call of RoundWork::trace
+// (round_work.h), so under MPI the attempt ranges are shared over the ranks and summed on every
+// rank; the measure estimates through RoundWork::estimate. Every rank runs this loop alike and
+// takes the same decisions.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "dayphoton/engine/daylight_coefficients.h"
+#include "dayphoton/engine/photon_rounds.h"
+#include "dayphoton/engine/receiver_plane.h"
+#include "dayphoton/study/accuracy_rounds.h"
+#include "dayphoton/study/round_work.h"
+
+namespace dayphoton::study {
+
+/// The sources a loop traces.
+struct RoundSources {
+  /// Per source: its photons at the reference count (photons_per_bin times its factor); the
+  /// pilot aims at AccuracyPilotFraction of it, and the kernel's scale is relative to it.
+  std::vector<double> reference;
+  std::size_t max_prepass_attempts_per_target = 0;  ///< the pilot's give-up (TracingOptions)
+  /// A source's record before its first attempt (engine::empty_source_record, or a zero
+  /// bound flux for a source not traced).
+  std::function<engine::SourcePhotonRecord(std::size_t source)> empty_record;
+  /// Attempts [first, last) of a source (engine::round_attempt_range): pure, thread-safe.
+  RoundWork::RangeTracer trace;
+};
+
+/// What a measure found after a round.
+struct RoundMeasurement {
+  std::vector<GridVariance> chased;      ///< the grids the photons serve (accuracy_policy.h)
+  std::vector<std::string> grid_status;  ///< per grid (accuracy_grid_status)
+  bool met = false;                      ///< every chased grid at or below the target
+  std::string grids;                     ///< the round's log line per grid: " floor 1.2 %, desk 0.9 %"
+};
+
+/// Estimates every grid from the records after round `round` (1 = the pilot); `scale` is each
+/// source's photons relative to its reference count (GridPhotons::set_source_scale).
+using RoundMeasure = std::function<RoundMeasurement(std::size_t round,
+                                                    const std::vector<engine::SourcePhotonRecord>& records,
+                                                    const std::vector<double>& scale)>;
+
+/// The words of the log lines: "<name> round 2: ... photons, ... attempts; <measure> (95th
+/// percentile)<grids> (target 1 %)", "<name>: target met after 2 round(s)".
+struct RoundLoopText {
+  std::string name;     ///< "accuracy", "sun accuracy"
+  std::string measure;  ///< "DF relative standard error"
+};
+
+struct RoundLoopOutcome {
+  std::size_t rounds = 0;
+  std::uint64_t photons = 0;  ///< stored photons of every source
+  std::uint64_t attempts = 0;
+  std::string stop_reason;
+  std::vector<std::uint64_t> pilot_attempts, final_attempts;  ///< per source
+};
+
+/// The loop (header comment). `start` is when the rounds' time budget began.
+RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal& goal, const RoundMeasure& measure,
+                                const RoundLoopText& text, const std::function<void(const std::string&)>& log,
+                                RoundWork& work, std::chrono::steady_clock::time_point start);
+
+/// Every record's photons with their flux (engine::scaled_source_photons) merged in source
+/// order; with `relabel`, source p's photons labelled p (a source traced alone as source 0,
+/// as each sun bin is).
+engine::TracedPhotons round_photons(const std::vector<engine::SourcePhotonRecord>& records, bool relabel);
+
+/// Grid g's photon maps of a round: its receiver plane's photons, else the surface photons for
+/// a final gather or a surface estimate; the kernel at the reference size (`scale`) except for
+/// a gather.
+engine::GridPhotons round_grid_photons(const std::vector<engine::ReceiverPlane>& planes,
+                                       const std::vector<int>& plane_of_grid, bool gather, std::size_t g,
+                                       const engine::TracedPhotons& photons, const std::vector<double>& scale);
+
+/// "%.3g" and the like, for the log lines.
+std::string round_number(double x, const char* format = "%.3g");
+
+}  // namespace dayphoton::study
