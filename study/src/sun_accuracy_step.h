@@ -2,7 +2,9 @@
 // (sun_accuracy_rounds.h), as one step of the plan (step_executor.h): the coefficients and
 // variances of every grid and the rounds' outcome, cached together. It replaces, with
 // `simulation.accuracy`, the count-controlled sun photons (one step per bin) and sun
-// coefficients (one step per grid) of sun_bin_steps.cpp; the direct sun is unchanged.
+// coefficients (one step per grid) of sun_bin_steps.cpp; the direct sun is unchanged. The step
+// is collective (Step::collective): under MPI every rank runs the rounds, their tracing and
+// estimates shared through the executor's RoundWork (round_work.h).
 #pragma once
 
 #include <string>

@@ -26,6 +26,8 @@
 // Grids estimated by final gather are measured and reported but not chased: their error is
 // partly the gather rays' (accuracy_policy.h).
 //
+// The loop (pilot, allocation, stops, log lines) is the one the sun bins' rounds share
+// (study/src/accuracy_round_loop.h); this file holds the DF measure and the allocation.
 // Rounds stop when every grid meets the target, or at the photon budget (stored photons of
 // all sky sources), the time budget (checked before each round from the time per attempt so
 // far: the one stop that depends on the machine, so not deterministic), the round limit, or
