@@ -31,6 +31,15 @@ std::string round_number(double x, const char* format) {
   return buffer;
 }
 
+std::string round_outcome_sentence(const std::string& measure, double reached_percent, double target_percent,
+                                   const std::string& detail, const std::string& stop_reason, std::size_t rounds,
+                                   std::uint64_t photons) {
+  return measure + " (" + round_number(AccuracyPercentile, "%.0f") + "th percentile of the sensors) " +
+         round_number(reached_percent) + " % " + (reached_percent <= target_percent ? "<=" : ">") + " target " +
+         round_number(target_percent) + " %" + detail + ": " + stop_reason + " after " + std::to_string(rounds) +
+         " round(s), " + round_number(double(photons), "%.0f") + " photons";
+}
+
 engine::TracedPhotons round_photons(const std::vector<engine::SourcePhotonRecord>& records, bool relabel) {
   std::vector<engine::TracedPhotons> scaled(records.size());
   tbb::parallel_for(std::size_t(0), records.size(), [&](std::size_t p) {

@@ -93,6 +93,12 @@ engine::GridPhotons round_grid_photons(const std::vector<engine::ReceiverPlane>&
                                        const std::vector<int>& plane_of_grid, bool gather, std::size_t g,
                                        const engine::TracedPhotons& photons, const std::vector<double>& scale);
 
+/// The outcome's sentence of the run log and the report: "<measure> (95th percentile of the
+/// sensors) 0.93 % <= target 1 %<detail>: target met after 3 round(s), 4100000 photons".
+std::string round_outcome_sentence(const std::string& measure, double reached_percent, double target_percent,
+                                   const std::string& detail, const std::string& stop_reason, std::size_t rounds,
+                                   std::uint64_t photons);
+
 /// "%.3g" and the like, for the log lines.
 std::string round_number(double x, const char* format = "%.3g");
 

@@ -29,6 +29,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// What the sky's rounds measure (the log lines and the outcome's sentence).
+constexpr const char* DfMeasure = "DF relative standard error";
+
 std::string number(double x, const char* format = "%.3g") { return round_number(x, format); }
 
 /// The luminance-weighted radiance of each bin of the sky vector (as daylight_factor.cpp).
@@ -242,7 +245,7 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     return m;
   };
   const RoundLoopOutcome o =
-      run_round_loop(sources, goal, measure, {"accuracy", "DF relative standard error"}, log, work, start);
+      run_round_loop(sources, goal, measure, {"accuracy", DfMeasure}, log, work, start);
   result.outcome.rounds = o.rounds;
   result.outcome.photons = o.photons;
   result.outcome.attempts = o.attempts;
@@ -333,10 +336,8 @@ std::string accuracy_sentence(const AccuracyOutcome& o, std::size_t grid) {
   const std::string status = grid < o.grid_status.size() && o.grid_status[grid] == "not reachable by photons"
                                  ? " (gathered: not reachable by photons; simulation.gather_rays lowers it)"
                                  : "";
-  return "DF relative standard error (" + number(AccuracyPercentile, "%.0f") + "th percentile of the sensors) " +
-         number(reached) + " % " + (reached <= o.target_percent ? "<=" : ">") + " target " +
-         number(o.target_percent) + " %" + status + ": " + o.stop_reason + " after " + std::to_string(o.rounds) + " round(s), " +
-         number(double(o.photons), "%.0f") + " photons";
+  return round_outcome_sentence(DfMeasure, reached, o.target_percent, status, o.stop_reason,
+                                o.rounds, o.photons);
 }
 
 }  // namespace dayphoton::study

@@ -24,6 +24,9 @@
 namespace dayphoton::study {
 namespace {
 
+/// What the sun rounds measure (the log lines and the outcome's sentence).
+constexpr const char* SunMeasure = "annual sun-bin illuminance relative standard error";
+
 /// Luminance (RgbLuminanceWeights . C) of every (sensor, bin) of a sun-bin coefficient matrix.
 std::vector<double> bin_luminance(const RadianceMatrix& c) {
   std::vector<double> l(c.rows() * c.columns(), 0.0);
@@ -238,7 +241,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
     return m;
   };
   const RoundLoopOutcome loop = run_round_loop(
-      bin_sources, goal, measure, {"sun accuracy", "annual sun-bin illuminance relative standard error"}, log, work,
+      bin_sources, goal, measure, {"sun accuracy", SunMeasure}, log, work,
       start);
   o.rounds = loop.rounds;
   o.photons = loop.photons;
@@ -253,11 +256,9 @@ std::string sun_accuracy_sentence(const SunAccuracyOutcome& o, std::size_t grid)
   const double reached = grid < o.reached_percent.size() ? o.reached_percent[grid] : 0.0;
   const double hourly = grid < o.hourly_percent.size() ? o.hourly_percent[grid] : 0.0;
   const std::string status = grid < o.grid_status.size() ? o.grid_status[grid] : "";
-  return "annual sun-bin illuminance relative standard error (" + round_number(AccuracyPercentile, "%.0f") +
-         "th percentile of the sensors) " + round_number(reached) + " % " + (reached <= o.target_percent ? "<=" : ">") +
-         " target " + round_number(o.target_percent) + " % (" + status + "; hourly " + round_number(hourly) + " %): " +
-         o.stop_reason + " after " + std::to_string(o.rounds) + " round(s), " + round_number(double(o.photons), "%.0f") +
-         " photons";
+  return round_outcome_sentence(SunMeasure, reached, o.target_percent,
+                                " (" + status + "; hourly " + round_number(hourly) + " %)", o.stop_reason, o.rounds,
+                                o.photons);
 }
 
 }  // namespace dayphoton::study
