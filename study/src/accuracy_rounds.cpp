@@ -6,8 +6,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include <tbb/parallel_for.h>
-
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/photon_rounds.h"

@@ -3,13 +3,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
-#include <stdexcept>
 #include <cmath>
-#include <cstdio>
+#include <cstdint>
+#include <cstring>
 #include <memory>
-
-#include <tbb/parallel_for.h>
+#include <stdexcept>
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/photon_rounds.h"
