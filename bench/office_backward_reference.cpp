@@ -94,10 +94,19 @@ Vec3 cosine_direction(const Vec3& n, double u1, double u2) {
   return normalize(t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + n * std::sqrt(1 - u1));
 }
 
+/// A project's scene as both modes trace it: the project, its scene description, the Embree
+/// scene, the materials and the Tregenza basis the escaping paths are binned in.
 struct Tracer {
-  const engine::Scene& scene;
-  const std::vector<engine::Material>& materials;
-  const sky::PatchBasis& basis;
+  explicit Tracer(const std::string& project_path)
+      : proj(project::load_project(project_path)), description(project::build_scene_description(proj)),
+        scene(engine::Scene::build(description)) {
+    for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
+  }
+  project::Project proj;
+  SceneDescription description;
+  engine::Scene scene;
+  std::vector<engine::Material> materials;
+  sky::PatchBasis basis = sky::PatchBasis::tregenza();
 };
 
 /// The backward estimate of one sensor: per-bin sums of pi x throughput (`coeff`, `bins`
@@ -204,17 +213,13 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
     std::fprintf(stderr, "%s", diag.has_errors() ? diag.format().c_str() : (pts_path + ": no sensors\n").c_str());
     return 1;
   }
-  const project::Project proj = project::load_project(project_path);
-  const SceneDescription description = project::build_scene_description(proj);
-  const engine::Scene scene = engine::Scene::build(description);
-  std::vector<engine::Material> materials;
-  for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
-  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  const Tracer tracer(project_path);
+  const sky::PatchBasis& basis = tracer.basis;
   const std::size_t bins = std::size_t(basis.bin_count());
 
   // Sky 0: dayphoton's CIE overcast vector with the project's ground (as `dayphoton run`'s
   // daylight factor); sky 1: RADIANCE's (gensky -c -B 55.866 -g 0.2 | genskyvec -m 1), if present.
-  const double rho = proj.simulation.ground_reflectance;
+  const double rho = tracer.proj.simulation.ground_reflectance;
   const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(HorizontalLux));
   std::vector<std::vector<Vec3>> skies{vector_rgb(
       sky::sky_vector(*overcast, basis, sky::ground_radiance_rgb({rho, rho, rho}, HorizontalLux, 0, {0, 0, -1})))};
@@ -222,7 +227,6 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
   const bool have_radiance = std::ifstream(radiance_vector).good();
   if (have_radiance) skies.push_back(vector_rgb(RadianceMatrix::read_file(radiance_vector)));
 
-  const Tracer tracer{scene, materials, basis};
   std::vector<SensorSums> sums(sensors.size());
   const auto t0 = Clock::now();
   tbb::parallel_for(std::size_t(0), sensors.size(), [&](std::size_t k) {
@@ -309,14 +313,10 @@ int main(int argc, char** argv) {
   const std::string write_path = args.size() > 4 ? args[4] : "";
   const std::string csv_path = args.size() > 5 ? args[5] : "";
 
-  const project::Project proj = project::load_project(source_dir + "/projects/office/project.yaml");
-  const SceneDescription description = project::build_scene_description(proj);
-  const engine::Scene scene = engine::Scene::build(description);
-  std::vector<engine::Material> materials;
-  for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
-  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  const Tracer tracer(source_dir + "/projects/office/project.yaml");
+  const sky::PatchBasis& basis = tracer.basis;
   const std::size_t bins = std::size_t(basis.bin_count());
-  const SensorGrid& grid = description.grids.at(0);
+  const SensorGrid& grid = tracer.description.grids.at(0);
   const std::size_t columns = 11;  // the office grid: 11 sensors per row, 15 rows
 
   std::vector<std::size_t> sensors;
@@ -328,7 +328,6 @@ int main(int argc, char** argv) {
   const std::vector<Vec3> sky_rgb = vector_rgb(sv);
 
   // Per sensor: per-bin sums of pi x throughput, and the DF estimate's first two moments.
-  const Tracer tracer{scene, materials, basis};
   std::vector<SensorSums> sums(sensors.size());
   const auto t0 = Clock::now();
   tbb::parallel_for(std::size_t(0), sensors.size(), [&](std::size_t k) {
