@@ -1,7 +1,8 @@
 # What the mpirun tests of dayphoton share, sourced by them (functions only; nothing runs
-# when it is sourced). A test sets `mpiexec` (and `dayphoton`, for rerun_completes) from its
-# arguments, calls mpi_test_begin, and uses the rest as it needs. Each function returns non-zero (or calls the
-# test's own `fail`) when its check fails, so every test can still fail.
+# when it is sourced). A test sets `mpiexec` (and `dayphoton`, for the kill tests'
+# functions) from its arguments, calls mpi_test_begin, and uses the rest as it needs. Each
+# function returns non-zero (or calls the test's own `fail`) when its check fails, so every
+# test can still fail.
 
 # The environment of every mpirun here, a scratch folder $tmp removed on exit (with the mpirun
 # in $job, if a test left one running when a check failed early: only the mpirun started
@@ -104,6 +105,14 @@ rank_pid() {
     fi
   done
   return 1
+}
+
+# `start_run_to_kill PROJECT OUT CACHE LOG`: dayphoton run of PROJECT into OUT and CACHE under
+# `mpirun -np 2` in the background, its output in LOG, mpirun's pid in $job (no time-out: the
+# test kills one of its ranks).
+start_run_to_kill() {
+  "$mpiexec" -np 2 "${mpirun_flags[@]}" "$dayphoton" run "$1" --output "$2" --cache "$3" --quiet >"$4" 2>&1 &
+  job=$!
 }
 
 # `await_in_job VICTIM LOG WHAT COMMAND...`: polls COMMAND (its stderr dropped: the file it

@@ -31,9 +31,7 @@ grep -q '^accuracy round 2: ' "$tmp/reference/run.log" || fail "the uninterrupte
 for victim in 1 0; do
   out=$tmp/out-kill$victim
   cache=$tmp/cache-kill$victim
-  "$mpiexec" -np 2 "${mpirun_flags[@]}" "$dayphoton" run "$project" --output "$out" --cache "$cache" \
-    --quiet >"$tmp/kill$victim.log" 2>&1 &
-  job=$!
+  start_run_to_kill "$project" "$out" "$cache" "$tmp/kill$victim.log"
   await_in_job "$victim" "$tmp/kill$victim.log" "the pilot's line" grep -q '^accuracy round 1 (pilot): ' "$out/run.log"
   kill_rank_expect_incomplete "$victim" "$out"
   grep -q '^accuracy: ' "$out/run.log" && fail "rank $victim killed: the rounds ended before the kill (the test killed nothing mid-round)"

@@ -34,9 +34,7 @@ photon_stored() { [ -n "$(find "$cache" -name 'photons-*.bin' 2>/dev/null | head
 for victim in 1 0; do
   out=$tmp/out-kill$victim
   cache=$tmp/cache-kill$victim
-  "$mpiexec" -np 2 "${mpirun_flags[@]}" "$dayphoton" run "$project" --output "$out" --cache "$cache" \
-    --quiet >"$tmp/kill$victim.log" 2>&1 &
-  job=$!
+  start_run_to_kill "$project" "$out" "$cache" "$tmp/kill$victim.log"
   # Wait (up to 120 s) for rank 0 to store a first photon artefact: the photon batch is done
   # and being delivered; the coefficients (a final gather), the sky matrix and the annual
   # multiply, 0.9 s of CPU, are still to come.
