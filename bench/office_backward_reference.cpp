@@ -12,7 +12,10 @@
 //
 // Usage: office_backward_reference [paths_per_sensor=200000] [first_row=13] [last_row=14]
 //                                  [our_coefficients=projects/office/results/workplane/coefficients_sky.mtx]
-//                                  [write_matrix=FILE] [write_csv=FILE]
+//                                  [write_matrix=FILE] [write_csv=FILE] [--seed S=7]
+// `--seed S` may stand anywhere among the positional arguments; sensor s of the grid uses the
+// random streams (seed, s, path), so another seed gives an independent estimate (two seeds'
+// difference measures the reference's own noise) and the same seed the same numbers.
 // Rows are the office grid's 15 rows (y = 0.5 + 0.5 r m). For the chosen rows it prints, with
 // RADIANCE's CIE overcast sky vector, the mean DF of this estimate (with its standard error),
 // of our photon-map coefficients, of RADIANCE's rfluxmtx matrix and of rtrace, then the
@@ -37,6 +40,7 @@
 // Paths start at the sensor moved off its surface by the scene's ray epsilon along its
 // normal (as the direct component's shadow rays), so sensors may lie on a surface.
 #include <atomic>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -70,6 +74,16 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 /// The DF skies are scaled to this horizontal illuminance (DF = E / 100 in percent).
 constexpr double HorizontalLux = 10000;
+/// The seed of both modes unless --seed is given (the references in tests/data/reference
+/// and the figures of docs/validation.md were made with it).
+constexpr std::uint64_t DefaultSeed = 7;
+
+/// `text` as a seed (a whole number in [0, 2^64)); false for anything else.
+bool parse_seed(const std::string& text, std::uint64_t& seed) {
+  const char* end = text.data() + text.size();
+  const auto [at, error] = std::from_chars(text.data(), end, seed);
+  return error == std::errc() && at == end && !text.empty();
+}
 
 // Cosine-weighted direction about `n` from two uniforms (Malley's method).
 Vec3 cosine_direction(const Vec3& n, double u1, double u2) {
@@ -80,10 +94,19 @@ Vec3 cosine_direction(const Vec3& n, double u1, double u2) {
   return normalize(t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + n * std::sqrt(1 - u1));
 }
 
+/// A project's scene as both modes trace it: the project, its scene description, the Embree
+/// scene, the materials and the Tregenza basis the escaping paths are binned in.
 struct Tracer {
-  const engine::Scene& scene;
-  const std::vector<engine::Material>& materials;
-  const sky::PatchBasis& basis;
+  explicit Tracer(const std::string& project_path)
+      : proj(project::load_project(project_path)), description(project::build_scene_description(proj)),
+        scene(engine::Scene::build(description)) {
+    for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
+  }
+  project::Project proj;
+  SceneDescription description;
+  engine::Scene scene;
+  std::vector<engine::Material> materials;
+  sky::PatchBasis basis = sky::PatchBasis::tregenza();
 };
 
 /// The backward estimate of one sensor: per-bin sums of pi x throughput (`coeff`, `bins`
@@ -161,14 +184,18 @@ std::string fixed(double v, int decimals) {
 int run_pts(int argc, char** argv, const std::string& source_dir, const std::string& shared) {
   std::string pts_path, csv_path, matrix_path, project_path = source_dir + "/projects/office/project.yaml";
   std::size_t paths = 200000;
-  std::uint64_t seed = 7;
+  std::uint64_t seed = DefaultSeed;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
     if (a == "--pts" && has_value) pts_path = argv[++i];
     else if (a == "--paths" && has_value) paths = std::stoul(argv[++i]);
-    else if (a == "--seed" && has_value) seed = std::stoull(argv[++i]);
-    else if (a == "--csv" && has_value) csv_path = argv[++i];
+    else if (a == "--seed" && has_value) {
+      if (!parse_seed(argv[++i], seed)) {
+        std::fprintf(stderr, "office_backward_reference: --seed takes a whole number >= 0, not '%s'\n", argv[i]);
+        return 2;
+      }
+    } else if (a == "--csv" && has_value) csv_path = argv[++i];
     else if (a == "--matrix" && has_value) matrix_path = argv[++i];
     else if (a == "--project" && has_value) project_path = argv[++i];
     else {
@@ -186,17 +213,13 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
     std::fprintf(stderr, "%s", diag.has_errors() ? diag.format().c_str() : (pts_path + ": no sensors\n").c_str());
     return 1;
   }
-  const project::Project proj = project::load_project(project_path);
-  const SceneDescription description = project::build_scene_description(proj);
-  const engine::Scene scene = engine::Scene::build(description);
-  std::vector<engine::Material> materials;
-  for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
-  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  const Tracer tracer(project_path);
+  const sky::PatchBasis& basis = tracer.basis;
   const std::size_t bins = std::size_t(basis.bin_count());
 
   // Sky 0: dayphoton's CIE overcast vector with the project's ground (as `dayphoton run`'s
   // daylight factor); sky 1: RADIANCE's (gensky -c -B 55.866 -g 0.2 | genskyvec -m 1), if present.
-  const double rho = proj.simulation.ground_reflectance;
+  const double rho = tracer.proj.simulation.ground_reflectance;
   const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(HorizontalLux));
   std::vector<std::vector<Vec3>> skies{vector_rgb(
       sky::sky_vector(*overcast, basis, sky::ground_radiance_rgb({rho, rho, rho}, HorizontalLux, 0, {0, 0, -1})))};
@@ -204,7 +227,6 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
   const bool have_radiance = std::ifstream(radiance_vector).good();
   if (have_radiance) skies.push_back(vector_rgb(RadianceMatrix::read_file(radiance_vector)));
 
-  const Tracer tracer{scene, materials, basis};
   std::vector<SensorSums> sums(sensors.size());
   const auto t0 = Clock::now();
   tbb::parallel_for(std::size_t(0), sensors.size(), [&](std::size_t k) {
@@ -269,22 +291,32 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--pts") return run_pts(argc, argv, source_dir, shared);
 
-  const std::size_t paths = argc > 1 ? std::stoul(argv[1]) : 200000;
-  const int first_row = argc > 2 ? std::stoi(argv[2]) : 13;
-  const int last_row = argc > 3 ? std::stoi(argv[3]) : 14;
+  // Row mode: positional arguments, and --seed S anywhere among them.
+  std::uint64_t seed = DefaultSeed;
+  std::vector<std::string> args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a != "--seed") {
+      args.push_back(a);
+      continue;
+    }
+    if (i + 1 >= argc || !parse_seed(argv[++i], seed)) {
+      std::fprintf(stderr, "office_backward_reference: --seed takes a whole number >= 0\n");
+      return 2;
+    }
+  }
+  const std::size_t paths = args.size() > 0 ? std::stoul(args[0]) : 200000;
+  const int first_row = args.size() > 1 ? std::stoi(args[1]) : 13;
+  const int last_row = args.size() > 2 ? std::stoi(args[2]) : 14;
   const std::string ours_path =
-      argc > 4 ? argv[4] : source_dir + "/projects/office/results/workplane/coefficients_sky.mtx";
-  const std::string write_path = argc > 5 ? argv[5] : "";
-  const std::string csv_path = argc > 6 ? argv[6] : "";
+      args.size() > 3 ? args[3] : source_dir + "/projects/office/results/workplane/coefficients_sky.mtx";
+  const std::string write_path = args.size() > 4 ? args[4] : "";
+  const std::string csv_path = args.size() > 5 ? args[5] : "";
 
-  const project::Project proj = project::load_project(source_dir + "/projects/office/project.yaml");
-  const SceneDescription description = project::build_scene_description(proj);
-  const engine::Scene scene = engine::Scene::build(description);
-  std::vector<engine::Material> materials;
-  for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
-  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  const Tracer tracer(source_dir + "/projects/office/project.yaml");
+  const sky::PatchBasis& basis = tracer.basis;
   const std::size_t bins = std::size_t(basis.bin_count());
-  const SensorGrid& grid = description.grids.at(0);
+  const SensorGrid& grid = tracer.description.grids.at(0);
   const std::size_t columns = 11;  // the office grid: 11 sensors per row, 15 rows
 
   std::vector<std::size_t> sensors;
@@ -296,11 +328,10 @@ int main(int argc, char** argv) {
   const std::vector<Vec3> sky_rgb = vector_rgb(sv);
 
   // Per sensor: per-bin sums of pi x throughput, and the DF estimate's first two moments.
-  const Tracer tracer{scene, materials, basis};
   std::vector<SensorSums> sums(sensors.size());
   const auto t0 = Clock::now();
   tbb::parallel_for(std::size_t(0), sensors.size(), [&](std::size_t k) {
-    sums[k] = trace_sensor(tracer, grid.points[sensors[k]], paths, 7, sensors[k], {sky_rgb});
+    sums[k] = trace_sensor(tracer, grid.points[sensors[k]], paths, seed, sensors[k], {sky_rgb});
   });
   const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   std::uint64_t rays = 0;
@@ -316,7 +347,8 @@ int main(int argc, char** argv) {
         for (int c = 0; c < 3; ++c)
           out.at(sensors[k], p, c) = float(coeff[k * bins + p][c] / double(paths));
     out.header_lines().push_back("office_backward_reference " + std::to_string(paths) + " paths per sensor, rows " +
-                                 std::to_string(first_row) + "-" + std::to_string(last_row));
+                                 std::to_string(first_row) + "-" + std::to_string(last_row) + ", seed " +
+                                 std::to_string(seed));
     out.write_file(write_path, MatrixFormat::Float);
   }
   if (!csv_path.empty()) {
@@ -342,8 +374,9 @@ int main(int argc, char** argv) {
     return e / 10000 * 100;  // the vector is for 10 000 lux horizontal: DF in %
   };
 
-  std::printf("office backward reference: %zu paths per sensor, rows %d-%d (%zu sensors), %.1f s, %.3g rays/s\n",
-              paths, first_row, last_row, sensors.size(), seconds, double(rays) / seconds);
+  std::printf("office backward reference: %zu paths per sensor, rows %d-%d (%zu sensors), seed %llu, %.1f s, %.3g rays/s\n",
+              paths, first_row, last_row, sensors.size(), static_cast<unsigned long long>(seed), seconds,
+              double(rays) / seconds);
   std::printf("row  y(m)   backward DF %% (+-1 se)   ours/bw   rfluxmtx65k/bw  rfluxmtx131k/bw  rtrace/bw\n");
   for (int r = first_row; r <= last_row; ++r) {
     double bw = 0, var = 0, o = 0, a = 0, a2 = 0, rt = 0;

@@ -72,14 +72,21 @@ struct Closer {
 };
 constexpr Closer closer{};
 
-/// One k-NN query. The heap lives in the caller's vector, so a lookup allocates nothing
-/// once `out` has grown to k.
-class Search {
+/// The k-d tree traversal of every lookup, with the acceptance of a found photon as a policy
+/// (a template parameter, so it inlines as the code written for it alone would). The
+/// traversal owns the pruning bound: it starts at the squared search radius, visits the near
+/// side first, tests each photon's squared distance and the filter, and prunes a far side
+/// whose cell lies beyond the bound. A photon within the bound that passes the filter goes to
+/// `accept(found, bound2)`, which may lower the bound (never raise it). Both lookups prune by
+/// this one rule; the hinted lookup's exactness rests on that (photon_map.h). Nothing is added
+/// per lookup: the policy is held by value and called directly.
+template <typename Accept>
+class Traversal {
  public:
-  Search(const Photon* photons, const std::uint8_t* axis_of, const Vec3& point, std::size_t k,
-         double max_radius_m, const PhotonFilter& filter, std::vector<NeighbourPhoton>& heap)
-      : m_photons(photons), m_axis_of(axis_of), m_q{point.x, point.y, point.z}, m_k(k),
-        m_bound2(max_radius_m * max_radius_m), m_filter(filter), m_heap(heap) {}
+  Traversal(const Photon* photons, const std::uint8_t* axis_of, const Vec3& point, double radius_m,
+            const PhotonFilter& filter, Accept accept)
+      : m_photons(photons), m_axis_of(axis_of), m_q{point.x, point.y, point.z}, m_bound2(radius_m * radius_m),
+        m_filter(filter), m_accept(accept) {}
 
   void visit(std::size_t lo, std::size_t hi, const double offset[3]) {
     if (hi - lo <= PhotonMap::LeafSize) {
@@ -112,18 +119,37 @@ class Search {
     const double d2 = dx * dx + dy * dy + dz * dz;
     if (d2 > m_bound2) return;
     if (!m_filter.accepts(photon)) return;
-    const NeighbourPhoton found{static_cast<std::uint32_t>(i), d2};
+    m_accept(NeighbourPhoton{static_cast<std::uint32_t>(i), d2}, m_bound2);
+  }
+
+  const Photon* m_photons;
+  const std::uint8_t* m_axis_of;
+  double m_q[3];
+  double m_bound2;  ///< squared radius, lowered by the acceptance
+  const PhotonFilter& m_filter;
+  Accept m_accept;  ///< held by value: it refers to the caller's vector, one indirection as hand-written code
+};
+
+/// Acceptance of the k-NN query: the k smallest (distance, index) pairs in a max-heap kept in
+/// the caller's vector (so a lookup allocates nothing once `out` has grown to k); once it
+/// holds k, the bound is the k-th distance.
+class KeepNearest {
+ public:
+  KeepNearest(std::size_t k, std::vector<NeighbourPhoton>& heap) : m_k(k), m_heap(heap) {}
+
+  void operator()(const NeighbourPhoton& found, double& bound2) {
     if (m_heap.size() < m_k) {
       m_heap.push_back(found);
       std::push_heap(m_heap.begin(), m_heap.end(), closer);
-      if (m_heap.size() == m_k) m_bound2 = m_heap.front().distance_squared_m2;
+      if (m_heap.size() == m_k) bound2 = m_heap.front().distance_squared_m2;
       return;
     }
     if (!closer(found, m_heap.front())) return;  // equal distance, larger index
     replace_top(found);
-    m_bound2 = m_heap.front().distance_squared_m2;
+    bound2 = m_heap.front().distance_squared_m2;
   }
 
+ private:
   /// Put `item` in place of the heap's maximum and sift it down (one pass instead of the
   /// two of pop_heap + push_heap).
   void replace_top(const NeighbourPhoton& item) {
@@ -141,64 +167,16 @@ class Search {
     heap[i] = item;
   }
 
-  const Photon* m_photons;
-  const std::uint8_t* m_axis_of;
-  double m_q[3];
   std::size_t m_k;
-  double m_bound2;  ///< squared max radius until k are found, then the k-th distance
-  const PhotonFilter& m_filter;
   std::vector<NeighbourPhoton>& m_heap;
 };
 
-/// Every photon within a fixed radius that passes the filter, appended to `found` in
-/// traversal order: the hinted lookup's first pass (PhotonMap::nearest with a hint). The
-/// pruning and the distances are Search's, so the photons it finds within the radius are
-/// exactly those Search would accept there; the k nearest are then selected from them
-/// without a heap.
-class RangeCollect {
- public:
-  RangeCollect(const Photon* photons, const std::uint8_t* axis_of, const Vec3& point, double radius_m,
-               const PhotonFilter& filter, std::vector<NeighbourPhoton>& found)
-      : m_photons(photons), m_axis_of(axis_of), m_q{point.x, point.y, point.z}, m_bound2(radius_m * radius_m),
-        m_filter(filter), m_found(found) {}
-
-  void visit(std::size_t lo, std::size_t hi, const double offset[3]) {
-    if (hi - lo <= PhotonMap::LeafSize) {
-      for (std::size_t i = lo; i < hi; ++i) consider(i);
-      return;
-    }
-    const std::size_t mid = lo + (hi - lo) / 2;
-    const int a = m_axis_of[mid];
-    const double d = m_q[a] - static_cast<double>(m_photons[mid].position[a]);
-    if (d < 0) visit(lo, mid, offset); else visit(mid + 1, hi, offset);
-    consider(mid);
-    double far_offset[3] = {offset[0], offset[1], offset[2]};
-    far_offset[a] = std::fabs(d);
-    const double far2 = far_offset[0] * far_offset[0] + far_offset[1] * far_offset[1] +
-                        far_offset[2] * far_offset[2];
-    if (far2 <= m_bound2) {
-      if (d < 0) visit(mid + 1, hi, far_offset); else visit(lo, mid, far_offset);
-    }
-  }
-
- private:
-  void consider(std::size_t i) {
-    const Photon& photon = m_photons[i];
-    const double dx = static_cast<double>(photon.position[0]) - m_q[0];
-    const double dy = static_cast<double>(photon.position[1]) - m_q[1];
-    const double dz = static_cast<double>(photon.position[2]) - m_q[2];
-    const double d2 = dx * dx + dy * dy + dz * dz;
-    if (d2 > m_bound2) return;
-    if (!m_filter.accepts(photon)) return;
-    m_found.push_back({static_cast<std::uint32_t>(i), d2});
-  }
-
-  const Photon* m_photons;
-  const std::uint8_t* m_axis_of;
-  double m_q[3];
-  double m_bound2;
-  const PhotonFilter& m_filter;
-  std::vector<NeighbourPhoton>& m_found;
+/// Acceptance of the hinted lookup's first pass: every photon within the fixed radius that
+/// passes the filter, appended in traversal order (the bound stays the radius); the k nearest
+/// are then selected from them without a heap.
+struct CollectWithin {
+  std::vector<NeighbourPhoton>& found;
+  void operator()(const NeighbourPhoton& photon, double&) { found.push_back(photon); }
 };
 
 }  // namespace
@@ -264,8 +242,8 @@ bool PhotonMap::nearest(const Vec3& point, std::size_t k, double max_radius_m, d
   // strict total order on distinct photons, so any correct sort gives the same list, and
   // introsort is about three times faster than heapsort on these short lists.
   if (hint_radius_m >= 0 && hint_radius_m < max_radius_m) {
-    RangeCollect collect(m_photons.data(), m_axis.data(), point, hint_radius_m, filter, out);
-    collect.visit(0, m_photons.size(), no_offset);
+    Traversal<CollectWithin>(m_photons.data(), m_axis.data(), point, hint_radius_m, filter, CollectWithin{out})
+        .visit(0, m_photons.size(), no_offset);
     if (out.size() >= k) {
       // At least k photons within the hint: the k nearest are among them (header).
       if (out.size() > k) {
@@ -280,8 +258,8 @@ bool PhotonMap::nearest(const Vec3& point, std::size_t k, double max_radius_m, d
     hint_radius_m = max_radius_m;  // no hint, or one no tighter than the maximum
   }
   out.reserve(std::min(k, m_photons.size()));
-  Search search(m_photons.data(), m_axis.data(), point, k, max_radius_m, filter, out);
-  search.visit(0, m_photons.size(), no_offset);
+  Traversal<KeepNearest>(m_photons.data(), m_axis.data(), point, max_radius_m, filter, KeepNearest(k, out))
+      .visit(0, m_photons.size(), no_offset);
   std::sort(out.begin(), out.end(), closer);
   return hint_radius_m == max_radius_m;
 }

@@ -9,15 +9,11 @@
 #include <fstream>
 #include <iterator>
 #include <map>
-#include <sstream>
 #include <string>
 
-#include "../dist/in_process_ranks.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/case_units.h"
-#include "dayphoton/study/distributed_executor.h"
-#include "dayphoton/study/progress.h"
-#include "dayphoton/study/study_runner.h"
+#include "in_process_study.h"
 #include "side_lit_room.h"
 
 namespace dayphoton::study {
@@ -33,27 +29,8 @@ const std::string RoomYaml = test::side_lit_room_yaml("[4, 5, 3]", "3", 300) +
                              "  - name: tinted\n"
                              "    materials: {glass: {type: glass, transmittance: 0.4}}\n";
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / name;
-  fs::remove_all(dir);
-  return dir;
-}
-
-/// Every file below `dir` (relative path -> bytes), but for the names in `left_out`.
-std::map<std::string, std::string> files_of(const fs::path& dir, std::initializer_list<std::string> left_out) {
-  std::map<std::string, std::string> files;
-  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir)) {
-    if (!e.is_regular_file()) continue;
-    const std::string name = e.path().filename().string();
-    bool skip = false;
-    for (const std::string& l : left_out) skip = skip || name == l;
-    if (skip) continue;
-    std::ifstream in(e.path(), std::ios::binary);
-    files[fs::relative(e.path(), dir).generic_string()] =
-        std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
-  return files;
-}
+using test::files_of;
+using test::fresh_dir;
 
 std::string text_of(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -61,7 +38,7 @@ std::string text_of(const fs::path& file) {
 }
 
 TEST(CaseUnits, OnlyWithAtLeastAsManyCasesAsRanksAndWithoutForce) {
-  const auto errors = dist::test::run_ranks(3, [&](dist::Communicator& comm) {
+  test::run_ranks_expecting_no_error(3, [&](dist::Communicator& comm) {
     const ArtifactStore store(fresh_dir("case_units_count_rank" + std::to_string(comm.rank())).string());
     if (make_case_units(comm, store, false, 2)) throw std::runtime_error("units for 2 cases over 3 ranks");
     if (make_case_units(comm, store, true, 3)) throw std::runtime_error("units with force");
@@ -73,57 +50,25 @@ TEST(CaseUnits, OnlyWithAtLeastAsManyCasesAsRanksAndWithoutForce) {
         throw std::runtime_error("case " + std::to_string(c) + " on the wrong rank");
     units->join();  // nothing computed: nothing sent
   });
-  for (const std::exception_ptr& e : errors)
-    if (e) {
-      try {
-        std::rethrow_exception(e);
-      } catch (const std::exception& x) {
-        ADD_FAILURE() << x.what();
-      }
-    }
 }
 
 TEST(CaseUnits, VariantsAsUnitsGiveTheOneProcessResultsAndCache) {
   const project::Project project = project::load_project_from_string(RoomYaml, "room.yaml");
   ASSERT_EQ(project.variants.size(), 2u);
   const fs::path alone = fresh_dir("case_units_alone"), alone_cache = fresh_dir("case_units_alone_cache");
-  {
-    RunSettings settings;
-    settings.output_dir = alone.string();
-    settings.cache_dir = alone_cache.string();
-    std::ostringstream quiet;
-    Progress progress(quiet, ProgressStyle::Quiet);
-    run_study(project, settings, progress);
-  }
-  const std::map<std::string, std::string> results = files_of(alone, {"run.log", "timings.json", "summary.json"});
-  const std::map<std::string, std::string> cache = files_of(alone_cache, {});
+  test::run_study_quietly(project, alone, alone_cache);
+  const std::map<std::string, std::string> results = test::result_files(alone);
+  const std::map<std::string, std::string> cache = files_of(alone_cache);
   ASSERT_GE(results.size(), 9u);  // three cases' sensors, daylight factors, ...
   ASSERT_GT(cache.size(), 146u);
   for (int ranks : {2, 3}) {
     SCOPED_TRACE(std::to_string(ranks) + " ranks");
     const std::string tag = "case_units_" + std::to_string(ranks);
     const fs::path out = fresh_dir(tag + "_out"), cached = fresh_dir(tag + "_cache");
-    const auto errors = dist::test::run_ranks(ranks, [&](dist::Communicator& comm) {
-      RunSettings settings;
-      settings.output_dir = out.string();
-      settings.cache_dir = cached.string();
-      settings.make_executor = [&comm](const ArtifactStore& store, bool force) {
-        return make_distributed_executor(comm, store, force, 8);
-      };
-      std::ostringstream quiet;
-      Progress progress(quiet, ProgressStyle::Quiet);
-      run_study(project, settings, progress);
-    });
-    for (const std::exception_ptr& e : errors)
-      if (e) {
-        try {
-          std::rethrow_exception(e);
-        } catch (const std::exception& x) {
-          ADD_FAILURE() << x.what();
-        }
-      }
-    EXPECT_EQ(files_of(out, {"run.log", "timings.json", "summary.json"}), results);
-    EXPECT_EQ(files_of(cached, {}), cache);
+    test::run_ranks_expecting_no_error(
+        ranks, [&](dist::Communicator& comm) { test::run_study_quietly(project, out, cached, &comm); });
+    EXPECT_EQ(test::result_files(out), results);
+    EXPECT_EQ(files_of(cached), cache);
     const std::string log = text_of(out / "run.log");
     EXPECT_NE(log.find("cases as units over " + std::to_string(ranks) + " ranks: rank 0 case"), std::string::npos)
         << log;

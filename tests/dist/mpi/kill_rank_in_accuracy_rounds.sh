@@ -21,67 +21,14 @@ set -uo pipefail
 dayphoton=$1
 mpiexec=$2
 source_dir=$3
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
-tmp=$(mktemp -d)
-job=
-cleanup() {
-  [ -n "$job" ] && kill -9 "$job" 2>/dev/null  # only mpirun started here, if a check failed early
-  rm -rf "$tmp"
-}
-trap cleanup EXIT
+source "$(dirname "$0")/common.sh"
+mpi_test_begin
 mkdir -p "$tmp/scratch"
 export TMPDIR=$tmp/scratch  # the ranks' scratch folders go here
-fail() { echo "FAIL $*"; exit 1; }
+fail() { echo "FAIL ${phase:-}: $*"; exit 1; }
 
-cat > "$tmp/project.yaml" <<'YAML'
-version: 1
-study: daylight_factor
-site: {latitude: 51.5, longitude: -0.12, time_zone: 0}
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glass: {type: glass, transmittance: 0.6}
-geometry:
-  rooms:
-    - name: office
-      size: [4, 5, 3]
-      materials: {floor: walls, ceiling: walls, walls: walls}
-      windows: [{name: w, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]
-sensors:
-  grids:
-    - {name: workplane, room: office, height: 0.8, spacing: 0.5}
-simulation:
-  accuracy: {target_df_relative_stderr_percent: 1}
-outputs:
-  images: false
-  report: false
-YAML
-mkdir -p "$tmp/sun"
-cp "$source_dir/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw" "$tmp/sun/weather.epw" ||
-  fail "no weather file in $source_dir/projects/office"
-cat > "$tmp/sun/project.yaml" <<'YAML'
-version: 1
-site: {latitude: 37.72, longitude: -122.22, time_zone: -8}
-weather: weather.epw
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glass: {type: glass, transmittance: 0.6}
-geometry:
-  rooms:
-    - name: office
-      size: [4, 5, 3]
-      materials: {floor: walls, ceiling: walls, walls: walls}
-      windows: [{name: w, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]
-sensors:
-  grids:
-    - {name: workplane, room: office, height: 0.8, spacing: 0.5}
-simulation:
-  sun: bins
-  sun_mf: 1
-  accuracy: {target_df_relative_stderr_percent: 1.5}
-outputs:
-  images: false
-  report: false
-YAML
+side_lit_room "$tmp/project.yaml" "accuracy: {target_df_relative_stderr_percent: 1}"
+sun_room "$tmp/sun" "$source_dir" 1.5 || exit 1
 
 # The phase's project, the pilot's line that starts the kill, the stop line that must not be
 # there yet, and round 2's line.
@@ -93,62 +40,26 @@ settings() {
 
 for phase in sky sun; do
   settings $phase
-  "$dayphoton" run "$project" --output "$tmp/reference-$phase" --cache "$tmp/reference-cache-$phase" --quiet >/dev/null ||
-    fail "$phase: the uninterrupted one-process run failed"
-  grep -q "$next" "$tmp/reference-$phase/run.log" || fail "$phase: the uninterrupted run took no second round"
+  "$dayphoton" run "$project" --output "$reference" --cache "$tmp/reference-cache-$phase" --quiet >/dev/null ||
+    fail "the uninterrupted one-process run failed"
+  grep -q "$next" "$reference/run.log" || fail "the uninterrupted run took no second round"
 done
-
-# The pid of rank $2 of the mpirun $1: its child whose environment says so.
-rank_pid() {
-  local child
-  for child in $(ps -o pid= --ppid "$1"); do
-    if tr '\0' '\n' <"/proc/$child/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$2"; then
-      echo "$child"
-      return 0
-    fi
-  done
-  return 1
-}
 
 for phase in sky sun; do
-settings $phase
-for victim in 1 0; do
-  out=$tmp/out-$phase-kill$victim
-  cache=$tmp/cache-$phase-kill$victim
-  "$mpiexec" -np 2 --oversubscribe --bind-to none "$dayphoton" run "$project" --output "$out" --cache "$cache" \
-    --quiet >"$tmp/$phase-kill$victim.log" 2>&1 &
-  job=$!
-  for ((i = 0; i < 6000; ++i)); do
-    grep -q "$watch" "$out/run.log" 2>/dev/null && break
-    kill -0 "$job" 2>/dev/null || fail "$phase: rank $victim: the run ended before the pilot's line: $(cat "$tmp/$phase-kill$victim.log")"
-    sleep 0.02
-  done
-  [ $i -lt 6000 ] || fail "$phase: rank $victim: no pilot line after 120 s"
-  pid=$(rank_pid "$job" "$victim") || fail "$phase: rank $victim: its process was not found among mpirun's children"
-  kill -9 "$pid"
-  start=$(date +%s)
-  while kill -0 "$job" 2>/dev/null && [ $(($(date +%s) - start)) -lt 60 ]; do sleep 0.05; done
-  kill -0 "$job" 2>/dev/null && fail "$phase: rank $victim killed: mpirun still runs after 60 s"
-  wait "$job"
-  rc=$?
-  job=
-  elapsed=$(($(date +%s) - start))
-  [ $rc -ne 0 ] || fail "$phase: rank $victim killed: mpirun exited 0"
-  grep -q "$ended" "$out/run.log" && fail "$phase: rank $victim killed: the rounds ended before the kill (the test killed nothing mid-round)"
-  [ -e "$out/summary.json" ] && fail "$phase: rank $victim killed: the results folder has a summary.json (marked complete)"
-  [ -e "$out/INCOMPLETE" ] || fail "$phase: rank $victim killed: the results folder has no INCOMPLETE marker"
-  echo "ok   $phase: rank $victim killed in round 2: mpirun exit $rc after ${elapsed}s, folder marked incomplete"
+  settings $phase
+  for victim in 1 0; do
+    out=$tmp/out-$phase-kill$victim
+    cache=$tmp/cache-$phase-kill$victim
+    start_run_to_kill "$project" "$out" "$cache" "$tmp/$phase-kill$victim.log"
+    await_in_job "$victim" "$tmp/$phase-kill$victim.log" "the pilot's line" grep -q "$watch" "$out/run.log"
+    kill_rank_expect_incomplete "$victim" "$out"
+    grep -q "$ended" "$out/run.log" && fail "rank $victim killed: the rounds ended before the kill (the test killed nothing mid-round)"
+    echo "ok   $phase: rank $victim killed in round 2: mpirun exit $rc after ${elapsed}s, folder marked incomplete"
 
-  timeout 300 "$mpiexec" -np 2 --oversubscribe --bind-to none "$dayphoton" run "$project" --output "$out" \
-    --cache "$cache" --quiet >"$tmp/$phase-rerun$victim.log" 2>&1 || fail "$phase: rank $victim: the re-run failed: $(cat "$tmp/$phase-rerun$victim.log")"
-  [ -e "$out/INCOMPLETE" ] && fail "$phase: rank $victim: the re-run left INCOMPLETE"
-  diff -r -q -x run.log -x timings.json -x summary.json "$reference" "$out" ||
-    fail "$phase: rank $victim: the re-run wrote other results than the uninterrupted run"
-  cmp -s <(sed "s|$reference|OUT|g" "$reference/summary.json") <(sed "s|$out|OUT|g" "$out/summary.json") ||
-    fail "$phase: rank $victim: the re-run wrote another summary.json than the uninterrupted run"
-  left=$(find "$TMPDIR" -maxdepth 1 -name 'dayphoton-rank-*')
-  [ -z "$left" ] || fail "$phase: rank $victim: scratch folders left after the re-run: $left"
-  echo "ok   re-run: results byte-identical to the uninterrupted run; no scratch folder left"
-done
+    rerun_completes "$victim" "$project" "$out" "$cache" "$reference"
+    left=$(find "$TMPDIR" -maxdepth 1 -name 'dayphoton-rank-*')
+    [ -z "$left" ] || fail "rank $victim: scratch folders left after the re-run: $left"
+    echo "ok   $phase: re-run: results byte-identical to the uninterrupted run; no scratch folder left"
+  done
 done
 echo "kill_rank_in_accuracy_rounds: all passed"

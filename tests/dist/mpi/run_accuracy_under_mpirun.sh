@@ -20,61 +20,14 @@ set -uo pipefail
 dayphoton=$1
 mpiexec=$2
 source_dir=$3
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/common.sh"
+mpi_test_begin
 export TMPDIR=$tmp  # the other ranks' scratch folders go here
 fail=0
 
-cat > "$tmp/project.yaml" <<'YAML'
-version: 1
-study: daylight_factor
-site: {latitude: 51.5, longitude: -0.12, time_zone: 0}
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glass: {type: glass, transmittance: 0.6}
-geometry:
-  rooms:
-    - name: office
-      size: [4, 5, 3]
-      materials: {floor: walls, ceiling: walls, walls: walls}
-      windows: [{name: w, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]
-sensors:
-  grids:
-    - {name: workplane, room: office, height: 0.8, spacing: 0.5}
-simulation:
-  accuracy: {target_df_relative_stderr_percent: 2}
-outputs:
-  images: false
-  report: false
-YAML
+side_lit_room "$tmp/project.yaml" "accuracy: {target_df_relative_stderr_percent: 2}"
 
-mkdir -p "$tmp/sun"
-cp "$source_dir/projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw" "$tmp/sun/weather.epw" || exit 1
-cat > "$tmp/sun/project.yaml" <<'YAML'
-version: 1
-site: {latitude: 37.72, longitude: -122.22, time_zone: -8}
-weather: weather.epw
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glass: {type: glass, transmittance: 0.6}
-geometry:
-  rooms:
-    - name: office
-      size: [4, 5, 3]
-      materials: {floor: walls, ceiling: walls, walls: walls}
-      windows: [{name: w, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]
-sensors:
-  grids:
-    - {name: workplane, room: office, height: 0.8, spacing: 0.5}
-simulation:
-  sun: bins
-  sun_mf: 1
-  accuracy: {target_df_relative_stderr_percent: 3}
-outputs:
-  images: false
-  report: false
-YAML
+sun_room "$tmp/sun" "$source_dir" 3 || exit 1
 
 two_rounds() { grep -q '^accuracy round 2: ' "$1/run.log" && grep -q '^accuracy: target met after 2 round(s)$' "$1/run.log"; }
 
@@ -93,25 +46,15 @@ check() {
     out=$base/np$np
     local threads=()
     [ $np = 2t1 ] && threads=(--threads 1)
-    timeout 120 "$mpiexec" -np ${np%t1} --oversubscribe --bind-to none "$dayphoton" run "$project" --output "$out" \
+    mpi_run 120 ${np%t1} "$dayphoton" run "$project" --output "$out" \
       --cache "$tmp/cache/$name/np$np" --quiet "${threads[@]}" > "$tmp/$name-np$np.log" 2>&1
     rc=$?
     [ $rc -eq 0 ] || { echo "$name: mpirun -np $np: exit $rc"; cat "$tmp/$name-np$np.log"; fail=1; continue; }
     local ok=1
     $rounds "$out" || { echo "$name: mpirun -np $np: not the expected rounds"; ok=0; }
-    if ! diff -r -q -x run.log -x timings.json -x summary.json "$base/serial" "$out"; then
-      echo "$name: mpirun -np $np wrote other results than the one-process run"
-      ok=0
-    fi
-    if ! cmp -s <(sed "s|$base/serial|OUT|g" "$base/serial/summary.json") <(sed "s|$out|OUT|g" "$out/summary.json"); then
-      echo "$name: mpirun -np $np wrote another summary.json than the one-process run"
-      ok=0
-    fi
-    if ! diff -r -q "$tmp/cache/$name/serial" "$tmp/cache/$name/np$np" > /dev/null; then
-      echo "$name: mpirun -np $np cached other artefacts than the one-process run"
-      diff -r -q "$tmp/cache/$name/serial" "$tmp/cache/$name/np$np" | head -5
-      ok=0
-    fi
+    same_results "$base/serial" "$out" || { echo "$name: mpirun -np $np wrote other results than the one-process run"; ok=0; }
+    same_cache "$tmp/cache/$name/serial" "$tmp/cache/$name/np$np" ||
+      { echo "$name: mpirun -np $np cached other artefacts than the one-process run"; ok=0; }
     [ $ok -eq 1 ] && echo "ok   $name: mpirun -np $np: two rounds, results and cache byte-identical to the one-process run"
     [ $ok -eq 1 ] || fail=1
   done

@@ -10,17 +10,16 @@ set -uo pipefail
 dayphoton=$1
 mpiexec=$2
 project=$3/projects/office/project.yaml
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl=self,vader
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+source "$(dirname "$0")/common.sh"
+mpi_test_begin
 fail=0
 "$dayphoton" check "$project" > "$tmp/serial.out" || { echo "serial check failed"; exit 1; }
-timeout 60 "$mpiexec" -np 2 --oversubscribe --bind-to none "$dayphoton" check "$project" > "$tmp/mpi.out" 2> "$tmp/mpi.err"
+mpi_run 60 2 "$dayphoton" check "$project" > "$tmp/mpi.out" 2> "$tmp/mpi.err"
 rc=$?
 [ $rc -eq 0 ] || { echo "mpirun check: exit $rc"; cat "$tmp/mpi.err"; fail=1; }
 cmp -s "$tmp/serial.out" "$tmp/mpi.out" || { echo "mpirun check printed other output:"; diff "$tmp/serial.out" "$tmp/mpi.out"; fail=1; }
 grep -q "rank 0 runs this one alone" "$tmp/mpi.err" || { echo "no note that the work is not distributed"; fail=1; }
-timeout 60 "$mpiexec" -np 2 --oversubscribe --bind-to none "$dayphoton" check "$tmp/missing.yaml" > /dev/null 2>&1
+mpi_run 60 2 "$dayphoton" check "$tmp/missing.yaml" > /dev/null 2>&1
 rc=$?
 [ $rc -ne 0 ] && [ $rc -ne 124 ] || { echo "mpirun check of a missing project: exit $rc"; fail=1; }
 
@@ -38,7 +37,7 @@ for case in bad badweather; do
   [ $serial_rc -eq 1 ] || { echo "$case: one process exited $serial_rc, not 1 (input error)"; cat "$tmp/$case.serial.err"; fail=1; continue; }
   lines=$(grep -c . "$tmp/$case.serial.err")
   [ "$case" != bad ] || [ "$lines" -ge 2 ] || { echo "bad: fewer than two error lines"; cat "$tmp/$case.serial.err"; fail=1; }
-  timeout 120 "$mpiexec" -np 3 --oversubscribe --bind-to none "$dayphoton" run "$tmp/$case/project.yaml" \
+  mpi_run 120 3 "$dayphoton" run "$tmp/$case/project.yaml" \
     --output "$tmp/$case/mpi" --quiet > /dev/null 2> "$tmp/$case.mpi.err"
   rc=$?
   [ $rc -eq $serial_rc ] || { echo "$case: mpirun -np 3 exited $rc, one process $serial_rc"; fail=1; }

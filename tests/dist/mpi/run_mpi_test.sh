@@ -9,23 +9,16 @@
 set -uo pipefail
 program=$1
 mpiexec=$2
-# Open MPI refuses to run as root without these (mpirun(1), --allow-run-as-root).
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-# No network interfaces needed on one machine; keeps containers without them quiet.
-export OMPI_MCA_btl=self,vader
-# Open MPI binds each rank to one core by default when there are at most 2 ranks, which leaves
-# TBB one thread; the ranks here share the machine's cores (docs/cluster.md).
-mpiexec_options=(--oversubscribe --bind-to none)
+source "$(dirname "$0")/common.sh"
+mpi_test_begin
 fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
 
 env -u OMPI_COMM_WORLD_SIZE "$program" results > "$tmp/serial.out" 2>&1 || { echo "serial run failed"; cat "$tmp/serial.out"; exit 1; }
 root=$(grep '^root digest' "$tmp/serial.out")
 every=$(grep '^every-rank digest' "$tmp/serial.out")
 case "$root $every" in *"in_order 1"*"in_order 1") ;; *) echo "serial run out of order: $root / $every"; fail=1 ;; esac
 for np in 1 2 3; do
-  timeout 60 "$mpiexec" -np "$np" "${mpiexec_options[@]}" "$program" results > "$tmp/np$np.out" 2>&1
+  mpi_run 60 "$np" "$program" results > "$tmp/np$np.out" 2>&1
   rc=$?
   if [ $rc -ne 0 ]; then echo "np $np: exit $rc"; cat "$tmp/np$np.out"; fail=1; continue; fi
   [ "$(grep -c '^root digest' "$tmp/np$np.out")" = 1 ] && grep -qxF "$root" "$tmp/np$np.out" ||
@@ -35,7 +28,7 @@ for np in 1 2 3; do
 done
 
 for np in 3; do
-  timeout 60 "$mpiexec" -np "$np" "${mpiexec_options[@]}" "$program" throw > "$tmp/throw$np.out" 2>&1
+  mpi_run 60 "$np" "$program" throw > "$tmp/throw$np.out" 2>&1
   rc=$?
   if [ $rc -eq 0 ] || [ $rc -eq 124 ]; then echo "throw, np $np: exit $rc, expected a failure"; fail=1; fi
   n=$(grep -cE '^error: rank 1, job ([0-9]+) \(job \1\): deliberate failure on rank 1$' "$tmp/throw$np.out")
@@ -44,7 +37,7 @@ for np in 3; do
 done
 
 start=$(date +%s)
-timeout 60 "$mpiexec" -np 3 "${mpiexec_options[@]}" "$program" kill > "$tmp/kill.out" 2>&1
+mpi_run 60 3 "$program" kill > "$tmp/kill.out" 2>&1
 rc=$?
 elapsed=$(( $(date +%s) - start ))
 if [ $rc -eq 0 ] || [ $rc -eq 124 ]; then echo "kill: exit $rc after ${elapsed}s, expected a prompt failure"; cat "$tmp/kill.out"; fail=1; fi
