@@ -25,6 +25,7 @@
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/cache_folder.h"
 #include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/case_cost.h"
 #include "dayphoton/study/case_units.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/direct_sun_file.h"
@@ -484,15 +485,18 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   const SimulationPlan plan = SimulationPlan::of(project);
   RunContext ctx{settings, progress, log, report, store, outputs, plan, *executor, std::nullopt, std::nullopt,
                  weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
-  // With at least as many cases as MPI ranks, whole cases are the units (case_units.h): each
-  // rank first runs the steps of the cases it owns alone, writing nothing (a log to the
-  // progress output only); join() stores them all in rank 0's cache; then every case runs
-  // below as always, its steps from the cache.
-  if (const std::unique_ptr<CaseUnits> units = executor->case_units(1 + project.variants.size())) {
+  // With at least as many cases as MPI ranks, whole cases are the units (case_units.h), dealt
+  // out by their estimated cost (case_cost.h): each rank first runs the steps of the cases it
+  // owns alone, writing nothing (a log to the progress output only); join() stores them all
+  // in rank 0's cache; then every case runs below as always, its steps from the cache.
+  const auto case_costs = [&] {
+    return case_costs_seconds(project, sun_year_of(project, weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr));
+  };
+  if (const std::unique_ptr<CaseUnits> units = executor->case_units(1 + project.variants.size(), case_costs)) {
     OutputManifest unit_outputs = OutputManifest::none(report.output_dir);
     RunReport unit_report;
     RunLog unit_log(progress, std::string());
-    RunContext unit_ctx{settings, progress, unit_log, unit_report, store, unit_outputs, plan, units->executor(),
+    RunContext unit_ctx{settings, progress, unit_log, unit_report, store, unit_outputs, plan, units->executor(0),
                         std::nullopt, std::nullopt, weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
     for (std::size_t c = 0; c <= project.variants.size(); ++c) {
       if (!units->mine(c)) continue;
