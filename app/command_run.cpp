@@ -2,7 +2,9 @@
 // with progress on the terminal (a redrawn bar) or plain lines when the output is not one,
 // and a table of where the time went. Several projects run one after the other, each into
 // its own output folder (or into --output/<project name> when --output is given for more
-// than one project).
+// than one project). Under mpirun with at least as many cases (every project's base and
+// variants) as ranks, the cases of all the projects are units dealt out to the ranks by
+// their estimated cost first (study/case_units.h, docs/cluster.md "Projects as units").
 #include <unistd.h>
 
 #include <exception>
@@ -19,6 +21,8 @@
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/report/report_html.h"
+#include "dayphoton/study/case_cost.h"
+#include "dayphoton/study/case_units.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/study_runner.h"
@@ -74,6 +78,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   // With --output, outputs.folder is not used and may lie anywhere.
   std::vector<std::string> folders;
   std::vector<project::Project> projects;
+  std::vector<study::RunInputs> inputs;
   std::exception_ptr failure;
   try {
     folders = output_folders(options);
@@ -81,18 +86,17 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     load.output_folder_overridden = !options.output_dir.empty();
     for (const std::string& path : options.project_paths) projects.push_back(project::load_project(path, load));
     // Geometry and placement (no port, no sensor, sensors outside every room or in a solid,
-    // undecidable ports) of every case, before anything is written.
+    // undecidable ports) of every case, and the weather file and the points in time of every
+    // project (run_inputs.h), before anything is written.
     for (const project::Project& proj : projects) study::check_project_placement(proj);
+    for (const project::Project& proj : projects) inputs.push_back(study::read_run_inputs(proj));
   } catch (...) {
     failure = std::current_exception();
   }
   checked(failure);
 
-  const study::ProgressStyle style =
-      study::Progress::choose_style(&out == &std::cout && isatty(STDOUT_FILENO), options.quiet);
-  for (std::size_t i = 0; i < projects.size(); ++i) {
+  auto settings_of = [&](std::size_t i) {
     const project::Project& proj = projects[i];
-    study::Progress progress(out, style);
     study::RunSettings settings;
     settings.force = options.force;
     settings.version = DAYPHOTON_VERSION;
@@ -107,8 +111,50 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
         return study::make_distributed_executor(*ranks, store, force);
       };
     }
-    // The weather file and the points in time, read and checked before anything is written.
+    // The weather file and the points in time, read and checked above (the ranks agree again).
     settings.inputs_checked = checked;
+    settings.inputs = &inputs[i];
+    return settings;
+  };
+  const study::ProgressStyle style =
+      study::Progress::choose_style(&out == &std::cout && isatty(STDOUT_FILENO), options.quiet);
+  // Under mpirun, several projects with at least as many cases in all as ranks: every case of
+  // every project is a unit (case_units.h), each rank computes its own units' steps alone into
+  // its project's cache, rank 0 receives the others'; then each project runs from its cache.
+  std::string units_line;
+  std::vector<std::unique_ptr<study::ArtifactStore>> stores;  // each project's cache, if units
+  if (ranks && projects.size() > 1 && !options.force) {
+    std::size_t cases = 0;
+    for (const project::Project& proj : projects) cases += 1 + proj.variants.size();
+    if (cases >= static_cast<std::size_t>(ranks->size())) {
+      std::vector<const study::ArtifactStore*> store_of;
+      std::vector<study::CaseUnit> units;
+      for (std::size_t p = 0; p < projects.size(); ++p) {
+        stores.push_back(std::make_unique<study::ArtifactStore>(study::run_cache_folder(projects[p], settings_of(p))));
+        store_of.push_back(stores.back().get());
+        const study::RunInputs& in = inputs[p];
+        const std::vector<double> costs = study::case_costs_seconds(
+            projects[p], study::sun_year_of(projects[p], in.weather ? &*in.weather : nullptr,
+                                            in.sun_site ? &*in.sun_site : nullptr));
+        for (std::size_t c = 0; c < costs.size(); ++c) units.push_back({p, c, costs[c]});
+      }
+      const std::unique_ptr<study::CaseUnits> assigned = study::make_case_units(*ranks, store_of, false, units);
+      study::Progress progress(out, style);
+      for (std::size_t u = 0; u < units.size(); ++u)
+        if (assigned->mine(u))
+          study::run_case_steps(projects[units[u].project], inputs[units[u].project], units[u].case_index,
+                                settings_of(units[u].project), *stores[units[u].project],
+                                assigned->executor(units[u].project), progress);
+      units_line = assigned->join();
+    }
+  }
+  for (std::size_t i = 0; i < projects.size(); ++i) {
+    const project::Project& proj = projects[i];
+    study::Progress progress(out, style);
+    study::RunSettings settings = settings_of(i);
+    settings.cases_as_units = units_line.empty();
+    settings.units_line = units_line;
+    if (!stores.empty()) settings.store = stores[i].get();  // what the units stored is used by this run
     const study::RunReport report = study::run_study(proj, settings, progress);
     progress.print_summary();
     if (!options.quiet) {

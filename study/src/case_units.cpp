@@ -2,12 +2,15 @@
 #include "dayphoton/study/case_units.h"
 
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <mutex>
 #include <stdexcept>
 #include <vector>
 
 #include <tbb/parallel_for.h>
+
+#include "dayphoton/dist/job_assignment.h"
 
 #include "string_list_wire.h"
 
@@ -76,27 +79,41 @@ class UnitExecutor final : public StepExecutor {
 
 class RankCaseUnits final : public CaseUnits {
  public:
-  RankCaseUnits(dist::Communicator& comm, const ArtifactStore& store, bool force, std::size_t cases)
-      : m_comm(comm), m_store(store), m_cases(cases),
-        m_executor(store, force, comm.rank() == dist::RootRank) {}
+  RankCaseUnits(dist::Communicator& comm, const std::vector<const ArtifactStore*>& stores, bool force,
+                std::vector<CaseUnit> units, bool several_projects)
+      : m_comm(comm), m_stores(stores), m_units(std::move(units)), m_several_projects(several_projects) {
+    std::vector<double> costs;
+    for (const CaseUnit& u : m_units) costs.push_back(u.cost_seconds);
+    m_owner = assign_case_units(costs, comm.size());
+    for (const ArtifactStore* store : m_stores)
+      m_executors.push_back(std::make_unique<UnitExecutor>(*store, force, comm.rank() == dist::RootRank));
+  }
 
-  bool mine(std::size_t c) const override { return owner(c) == m_comm.rank(); }
-  StepExecutor& executor() override { return m_executor; }
+  bool mine(std::size_t unit) const override { return m_owner.at(unit) == m_comm.rank(); }
+  StepExecutor& executor(std::size_t project) override { return *m_executors.at(project); }
 
   std::string join() override {
-    // Each rank other than 0 sends its artefacts as messages of at most about 64 MiB of
-    // artefacts each (an artefact alone may be larger; send() cuts it), then one of none.
+    // Each rank other than 0 sends its artefacts (project, kind, key, bytes) as messages of at
+    // most about 64 MiB of artefacts each (an artefact alone may be larger; send() cuts it),
+    // then one of none.
     constexpr std::size_t MessageBytes = std::size_t{64} << 20;
     if (m_comm.rank() != dist::RootRank) {
-      const std::vector<std::string> kept = m_executor.take_kept();
+      std::vector<std::string> kept;
+      for (std::size_t p = 0; p < m_executors.size(); ++p) {
+        std::vector<std::string> triples = m_executors[p]->take_kept();  // kind, key, bytes
+        for (std::size_t i = 0; i + 2 < triples.size(); i += 3) {
+          kept.push_back(std::to_string(p));
+          for (std::size_t k = i; k < i + 3; ++k) kept.push_back(std::move(triples[k]));
+        }
+      }
       std::size_t i = 0;
       while (i < kept.size()) {
         dist::ByteBuffer message;
         std::size_t bytes = 0;
         std::vector<std::string> part;
-        for (; i < kept.size() && (part.empty() || bytes + kept[i + 2].size() <= MessageBytes); i += 3) {
-          part.insert(part.end(), {kept[i], kept[i + 1], kept[i + 2]});
-          bytes += kept[i + 2].size();
+        for (; i < kept.size() && (part.empty() || bytes + kept[i + 3].size() <= MessageBytes); i += 4) {
+          part.insert(part.end(), {kept[i], kept[i + 1], kept[i + 2], kept[i + 3]});
+          bytes += kept[i + 3].size();
         }
         put_strings(message, part);
         m_comm.send(dist::RootRank, UnitArtefactsTag, message);
@@ -111,42 +128,86 @@ class RankCaseUnits final : public CaseUnits {
           std::size_t at = 0;
           const std::vector<std::string> part = get_strings(message, at);
           if (part.empty()) break;
-          if (part.size() % 3 != 0) throw std::runtime_error("case units: a malformed message from rank " + std::to_string(r));
-          for (std::size_t i = 0; i < part.size(); i += 3) m_store.write(part[i], part[i + 1], part[i + 2]);
+          if (part.size() % 4 != 0) throw std::runtime_error("case units: a malformed message from rank " + std::to_string(r));
+          for (std::size_t i = 0; i < part.size(); i += 4) {
+            const std::size_t p = std::stoul(part[i]);
+            if (p >= m_stores.size() || part[i] != std::to_string(p))
+              throw std::runtime_error("case units: rank " + std::to_string(r) + " sent an artefact of project '" +
+                                       part[i] + "'");
+            m_stores[p]->write(part[i + 1], part[i + 2], part[i + 3]);
+          }
         }
     }
-    // The line for the run log, the same on every rank.
-    std::string line = "cases as units over " + std::to_string(m_comm.size()) + " ranks:";
-    for (int r = 0; r < m_comm.size(); ++r) {
-      line += (r == 0 ? " rank " : "; rank ") + std::to_string(r);
-      std::string owned;
-      for (std::size_t c = 0; c < m_cases; ++c)
-        if (owner(c) == r) owned += (owned.empty() ? " case " : ", ") + std::to_string(c);
-      line += owned;
-    }
-    return line + " (case 0: the base project, then the variants in order)";
+    return line();
   }
 
  private:
-  int owner(std::size_t c) const {
-    const auto ranks = static_cast<std::size_t>(m_comm.size());
-    return static_cast<int>(ranks - 1 - c % ranks);
+  /// The line for the run log, the same on every rank: which rank computed which case, and
+  /// each rank's estimated cost.
+  std::string line() const {
+    std::string text = std::string(m_several_projects ? "cases of " + std::to_string(m_stores.size()) + " projects"
+                                                      : "cases") +
+                       " as units over " + std::to_string(m_comm.size()) + " ranks:";
+    std::vector<double> load(static_cast<std::size_t>(m_comm.size()), 0.0);
+    for (int r = 0; r < m_comm.size(); ++r) {
+      text += (r == 0 ? " rank " : "; rank ") + std::to_string(r);
+      std::string owned;
+      for (std::size_t u = 0; u < m_units.size(); ++u)
+        if (m_owner[u] == r) {
+          owned += (owned.empty() ? " " : ", ") +
+                   (m_several_projects ? "project " + std::to_string(m_units[u].project) + " " : std::string()) +
+                   (owned.empty() || m_several_projects ? "case " : "") + std::to_string(m_units[u].case_index);
+          load[static_cast<std::size_t>(r)] += m_units[u].cost_seconds;
+        }
+      text += owned;
+    }
+    text += m_several_projects ? " (project 0: the first project given; case 0: a project's base, then its variants in order)"
+                               : " (case 0: the base project, then the variants in order)";
+    text += "; estimated CPU s by rank:";
+    for (std::size_t r = 0; r < load.size(); ++r) {
+      char seconds[32];
+      std::snprintf(seconds, sizeof seconds, "%s %.2f", r == 0 ? "" : ",", load[r]);
+      text += seconds;
+    }
+    return text;
   }
 
   dist::Communicator& m_comm;
-  const ArtifactStore& m_store;
-  const std::size_t m_cases;
-  UnitExecutor m_executor;
+  const std::vector<const ArtifactStore*> m_stores;
+  const std::vector<CaseUnit> m_units;
+  const bool m_several_projects;
+  std::vector<int> m_owner;
+  std::vector<std::unique_ptr<UnitExecutor>> m_executors;
 };
 
 }  // namespace
 
-std::unique_ptr<CaseUnits> make_case_units(dist::Communicator& comm, const ArtifactStore& store, bool force,
-                                           std::size_t cases) {
+std::vector<int> assign_case_units(const std::vector<double>& costs, int ranks) {
+  std::vector<int> owner = dist::assign_jobs(costs, ranks).owner_of_job;
+  for (int& r : owner) r = ranks - 1 - r;
+  return owner;
+}
+
+std::unique_ptr<CaseUnits> make_case_units(dist::Communicator& comm, const std::vector<const ArtifactStore*>& stores,
+                                           bool force, const std::vector<CaseUnit>& units) {
   // With --force every step is computed again, so the case runs after the units would not
   // take the units' artefacts from the cache: every step is shared out as without units.
+  if (force || comm.size() < 2 || units.size() < static_cast<std::size_t>(comm.size())) return nullptr;
+  for (const CaseUnit& u : units)
+    if (u.project >= stores.size()) throw std::logic_error("case units: a unit of project " + std::to_string(u.project));
+  return std::make_unique<RankCaseUnits>(comm, stores, force, units, stores.size() > 1);
+}
+
+std::unique_ptr<CaseUnits> make_case_units(dist::Communicator& comm, const ArtifactStore& store, bool force,
+                                           std::size_t cases, const std::function<std::vector<double>()>& costs_of) {
   if (force || comm.size() < 2 || cases < static_cast<std::size_t>(comm.size())) return nullptr;
-  return std::make_unique<RankCaseUnits>(comm, store, force, cases);
+  const std::vector<double> case_costs = costs_of();
+  if (case_costs.size() != cases)
+    throw std::logic_error("case units: " + std::to_string(case_costs.size()) + " costs for " + std::to_string(cases) +
+                           " cases");
+  std::vector<CaseUnit> units;
+  for (std::size_t c = 0; c < case_costs.size(); ++c) units.push_back({0, c, case_costs[c]});
+  return make_case_units(comm, {&store}, force, units);
 }
 
 }  // namespace dayphoton::study

@@ -82,8 +82,8 @@ class DistributedExecutor final : public StepExecutor {
     return computed;
   }
 
-  std::unique_ptr<CaseUnits> case_units(std::size_t cases) override {
-    return make_case_units(m_comm, m_store, m_force, cases);
+  std::unique_ptr<CaseUnits> case_units(std::size_t cases, const CaseCosts& case_costs) override {
+    return make_case_units(m_comm, m_store, m_force, cases, case_costs);
   }
 
   bool shares_sensor_blocks() const override { return m_comm.size() > 1; }

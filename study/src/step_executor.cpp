@@ -23,7 +23,7 @@ const char* step_kind_name(StepKind kind) {
 
 bool StepExecutor::run(const Step& step) { return run_batch({step})[0] != 0; }
 
-std::unique_ptr<CaseUnits> StepExecutor::case_units(std::size_t) { return nullptr; }
+std::unique_ptr<CaseUnits> StepExecutor::case_units(std::size_t, const CaseCosts&) { return nullptr; }
 
 std::vector<std::vector<std::string>> StepExecutor::blocks_to_root(const SensorBlocks&, const std::string& name) {
   throw std::logic_error("blocks_to_root (" + name + ") on an executor of one process");

@@ -25,6 +25,7 @@
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/cache_folder.h"
 #include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/case_cost.h"
 #include "dayphoton/study/case_units.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/direct_sun_file.h"
@@ -36,6 +37,7 @@
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/compliance_verdicts.h"
 #include "dayphoton/study/results_model_builder.h"
+#include "dayphoton/study/run_inputs.h"
 #include "dayphoton/study/run_timings.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/study/verdict_uncertainty.h"
@@ -371,6 +373,35 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
 
 }  // namespace
 
+std::string run_cache_folder(const project::Project& project, const RunSettings& settings) {
+  const std::string output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
+  return settings.cache_dir.empty() ? default_cache_folder(output_dir) : settings.cache_dir;
+}
+
+void run_case_steps(const project::Project& project, const RunInputs& inputs, std::size_t case_index,
+                    const RunSettings& settings, const ArtifactStore& store, StepExecutor& executor,
+                    Progress& progress) {
+  if (case_index > project.variants.size())
+    throw std::logic_error("run_case_steps: case " + std::to_string(case_index) + " of a project of " +
+                           std::to_string(1 + project.variants.size()) + " cases");
+  const std::string output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
+  const SimulationPlan plan = SimulationPlan::of(project);
+  OutputManifest outputs = OutputManifest::none(output_dir);
+  RunReport report;
+  report.output_dir = output_dir;
+  RunLog log(progress, std::string());
+  RunContext ctx{settings, progress, log, report, store, outputs, plan, executor, std::nullopt, std::nullopt,
+                 inputs.weather ? &*inputs.weather : nullptr, inputs.sun_site ? &*inputs.sun_site : nullptr};
+  CaseResult unused = results_case("base", "", "", {});
+  ctx.results = &unused;
+  if (case_index == 0) {
+    run_case(project, "", output_dir, ctx);
+  } else {
+    const project::VariantSpec& v = project.variants[case_index - 1];
+    run_case(project::apply_variant(project, v), v.name, join_path(join_path(output_dir, "variants"), v.name), ctx);
+  }
+}
+
 RunReport run_study(const project::Project& project, const RunSettings& settings,
                     Progress& progress) {
   // The run's own clock, for timings.json (the history of the run, not a result).
@@ -378,38 +409,32 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   const double run_cpu_start = Progress::process_cpu_seconds();
   RunReport report;
   const project::Simulation& sim = project.simulation;
-  // The weather file and the site of its sun first: a time zone that is not the file's is an
-  // input error, reported before anything is written.
-  std::optional<weather::HourlyWeather> weather;
-  std::optional<SunSite> sun_site;
-  std::optional<sky::BelowHorizonDirect> below_horizon;
+  // The weather file, the site of its sun, the points in time (run_inputs.h): input errors,
+  // reported before anything is written. Read here unless the caller read them already.
   const bool annual_study = project.study == project::StudyKind::Annual;
-  // Operated shading needs each hour's direct sun (the loader says so for project files).
   const project::OperationSpec* op = project.operation ? &*project.operation : nullptr;
+  std::optional<RunInputs> read_inputs;
   std::exception_ptr input_failure;
-  try {
-    if (annual_study) {
-      weather = weather::read_hourly_weather(project.weather.path);
-      sun_site = resolve_sun_site(project.site, *weather);
-      below_horizon = annual_below_horizon_direct(*weather, *sun_site);
+  if (!settings.inputs) {
+    try {
+      read_inputs = read_run_inputs(project);
+    } catch (...) {
+      input_failure = std::current_exception();
     }
-    // The points in time whose sun needs no tracing are checked before anything is written.
-    check_points_in_time(
-        project.points_in_time, sun_site ? sun_site->solar
-                                         : sky::SolarSite{project.site.latitude_deg, project.site.longitude_deg,
-                                                          project.site.time_zone_h, project.site.elevation_m});
-    if (op && sim.sun != project::SunMode::Bins)
-      throw InputError(op->location, "operation needs the direct sun of every hour: set simulation.sun to 'bins'");
-  } catch (...) {
-    input_failure = std::current_exception();
   }
   if (settings.inputs_checked) settings.inputs_checked(input_failure);
   if (input_failure) std::rethrow_exception(input_failure);
+  const RunInputs& inputs = settings.inputs ? *settings.inputs : *read_inputs;
+  const std::optional<weather::HourlyWeather>& weather = inputs.weather;
+  const std::optional<SunSite>& sun_site = inputs.sun_site;
+  const std::optional<sky::BelowHorizonDirect>& below_horizon = inputs.below_horizon;
   report.output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
   // The cache beside the output folder (cache_folder.h), and the executor every cached step
   // goes through (step_executor.h). Neither touches the disk before a step runs.
-  const std::string cache_dir = settings.cache_dir.empty() ? default_cache_folder(report.output_dir) : settings.cache_dir;
-  const ArtifactStore store(cache_dir);
+  const std::string cache_dir = run_cache_folder(project, settings);
+  const ArtifactStore store = settings.store ? *settings.store : ArtifactStore(cache_dir);
+  if (store.directory() != cache_dir)
+    throw std::logic_error("run_study: the store of " + store.directory() + " for the cache " + cache_dir);
   const std::unique_ptr<StepExecutor> executor =
       settings.make_executor ? settings.make_executor(store, settings.force) : make_local_executor(store, settings.force);
   // The writer flag: the ranks other than 0 of an MPI run write nothing at all (no lock, no
@@ -484,28 +509,18 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   const SimulationPlan plan = SimulationPlan::of(project);
   RunContext ctx{settings, progress, log, report, store, outputs, plan, *executor, std::nullopt, std::nullopt,
                  weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
-  // With at least as many cases as MPI ranks, whole cases are the units (case_units.h): each
-  // rank first runs the steps of the cases it owns alone, writing nothing (a log to the
-  // progress output only); join() stores them all in rank 0's cache; then every case runs
-  // below as always, its steps from the cache.
-  if (const std::unique_ptr<CaseUnits> units = executor->case_units(1 + project.variants.size())) {
-    OutputManifest unit_outputs = OutputManifest::none(report.output_dir);
-    RunReport unit_report;
-    RunLog unit_log(progress, std::string());
-    RunContext unit_ctx{settings, progress, unit_log, unit_report, store, unit_outputs, plan, units->executor(),
-                        std::nullopt, std::nullopt, weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
-    for (std::size_t c = 0; c <= project.variants.size(); ++c) {
-      if (!units->mine(c)) continue;
-      CaseResult unused = results_case("base", "", "", {});
-      unit_ctx.results = &unused;
-      if (c == 0) {
-        run_case(project, "", report.output_dir, unit_ctx);
-      } else {
-        const project::VariantSpec& v = project.variants[c - 1];
-        run_case(project::apply_variant(project, v), v.name,
-                 join_path(join_path(report.output_dir, "variants"), v.name), unit_ctx);
-      }
-    }
+  // With at least as many cases as MPI ranks, whole cases are the units (case_units.h), dealt
+  // out by their estimated cost (case_cost.h): each rank first runs the steps of the cases it
+  // owns alone, writing nothing (a log to the progress output only); join() stores them all
+  // in rank 0's cache; then every case runs below as always, its steps from the cache.
+  const auto case_costs = [&] {
+    return case_costs_seconds(project, sun_year_of(project, weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr));
+  };
+  if (!settings.units_line.empty()) log.line(settings.units_line);
+  if (const std::unique_ptr<CaseUnits> units =
+          settings.cases_as_units ? executor->case_units(1 + project.variants.size(), case_costs) : nullptr) {
+    for (std::size_t c = 0; c <= project.variants.size(); ++c)
+      if (units->mine(c)) run_case_steps(project, inputs, c, settings, store, units->executor(0), progress);
     log.line(units->join());
   }
   // The project as written is the base case, in <output>/<grid>/; each variant is studied

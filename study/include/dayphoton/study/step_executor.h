@@ -62,8 +62,11 @@ class StepExecutor {
 
   /// Whole cases (the base project and each variant) as units over the processes, when this
   /// executor assigns them (the distributed executor with at least as many cases as ranks,
-  /// case_units.h); null: every case's steps go through this executor. Collective.
-  virtual std::unique_ptr<CaseUnits> case_units(std::size_t cases);
+  /// case_units.h), dealt out by `case_costs` (each case's estimate, case_cost.h; called
+  /// only when there are units); null: every case's steps go through this executor.
+  /// Collective.
+  using CaseCosts = std::function<std::vector<double>()>;
+  virtual std::unique_ptr<CaseUnits> case_units(std::size_t cases, const CaseCosts& case_costs);
 
   /// Whether this executor shares sensor blocks out over several processes (the distributed
   /// executor with more than one rank): what is computed per grid but not cached (the annual

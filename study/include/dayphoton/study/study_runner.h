@@ -33,7 +33,8 @@
 // another run holds it), deletes temporaries of killed writers and the previous run's outputs,
 // and marks the folder INCOMPLETE until summary.json is written (output_manifest.h).
 // Under MPI with at least as many cases (base and variants) as ranks, each rank first runs
-// the steps of its own cases alone (case_units.h); the cases then run from the cache.
+// the steps of its own cases alone (case_units.h); the cases then run from the cache. Several
+// projects of one command go the same way, their cases the units (run_case_steps).
 // The writer flag is the executor's writes_results() (step_executor.h): false on the ranks
 // other than 0 of an MPI run, which then run every step with the others but take no lock,
 // write no marker, run.log, result file or used-by-last-run.txt, and create no folder.
@@ -49,6 +50,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/results_model.h"
+#include "dayphoton/study/run_inputs.h"
 #include "dayphoton/study/step_executor.h"
 
 namespace dayphoton::study {
@@ -76,6 +78,18 @@ struct RunSettings {
   /// their failure or null; it throws to end the run. Empty: the failure is rethrown. Under
   /// mpirun the app makes the ranks agree on it here, so that rank 0 alone prints it.
   std::function<void(const std::exception_ptr& failure)> inputs_checked;
+  /// The project's inputs, read already (run_inputs.h; `dayphoton run` reads every project's
+  /// first); null: run_study reads them. inputs_checked is called either way.
+  const RunInputs* inputs = nullptr;
+  /// Whether the run may hand its cases out as units (case_units.h); false when the command
+  /// made its projects' cases units already (run_case_steps), whose line `units_line` is
+  /// then, for the run log.
+  bool cases_as_units = true;
+  std::string units_line;
+  /// The project's cache as the command's units used it (a copy shares its list of used
+  /// artefacts, artifact_store.h: what the units stored is used by this run, which then
+  /// takes only what it needs from it); null: a store of run_cache_folder.
+  const ArtifactStore* store = nullptr;
 };
 
 struct GridReport {
@@ -99,6 +113,20 @@ struct RunReport {
   std::vector<GridReport> grids;
   std::vector<std::string> notes;  ///< things the user should know (e.g. sun mode)
 };
+
+/// The cache folder of `project`'s run with `settings`: settings.cache_dir, else beside the
+/// output folder (cache_folder.h).
+std::string run_cache_folder(const project::Project& project, const RunSettings& settings);
+
+/// The steps of case `case_index` of `project` (0: the base project, then each variant in
+/// order) through `executor`, the unit executor of the project's cache `store`
+/// (case_units.h), with the project's `inputs` (read_run_inputs): several projects of one
+/// command as units under mpirun. Writes nothing itself (its lines go to the progress output
+/// only); the project's run_study, with cases_as_units false, then takes every step from the
+/// cache.
+void run_case_steps(const project::Project& project, const RunInputs& inputs, std::size_t case_index,
+                    const RunSettings& settings, const ArtifactStore& store, StepExecutor& executor,
+                    Progress& progress);
 
 /// Run the study of `project`. Throws InputError for bad input (weather file), OutputFolderBusy
 /// when another run holds the output folder, EngineError or std::runtime_error for failures;
