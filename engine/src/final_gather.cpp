@@ -80,6 +80,7 @@ class GatherVariance {
     m_strata_source.resize(sources);
     m_rays.resize(sources);
     m_per_source.resize(sources);
+    m_diagonal.resize(sources);
     m_ray_group.resize(groups.source_of.size());
     m_strata_group.resize(groups.source_of.size());
     m_sensor_group.resize(groups.source_of.size());
@@ -99,7 +100,10 @@ class GatherVariance {
     });
     m_group_sum += total;
     m_group_square += total * total;
-    m_ray_group.drain([&](std::size_t c, double z, double) { m_strata_group.add(c, z); });
+    m_ray_group.drain([&](std::size_t c, double z, double) {
+      m_strata_group.add(c, z);
+      m_diagonal.add(m_groups.source_of[c], z * z);
+    });
     ++m_in_group;
     ++m_in_row;
     const bool last_of_row = m_in_row == m_k;
@@ -123,12 +127,20 @@ class GatherVariance {
     m_in_group = 0;
     if (last_of_row) m_in_row = 0;
   }
-  /// The sensor's variance per source into `row` (sources entries), and reset.
-  void end_sensor(double* row) {
+  /// The sensor's variance per source into `row` (sources entries) and the photons' part
+  /// that more rays do not reduce into `fixed_row` (header comment, "Variance"), and reset.
+  void end_sensor(double* row, double* fixed_row) {
     m_sensor_group.drain([&](std::size_t c, double sum, double) { m_per_source.add(m_groups.source_of[c], sum); });
     m_per_source.drain([&](std::size_t p, double sum, double square) {
       const double c = p < m_groups.groups_of_source.size() ? m_groups.groups_of_source[p] : 1.0;
-      row[p] += c > 1 ? c / (c - 1) * (square - sum * sum / c) : square;
+      const double photons = c > 1 ? c / (c - 1) * (square - sum * sum / c) : square;
+      row[p] += photons;
+      fixed_row[p] = photons;
+    });
+    // Less the pairs of a group's terms on one ray: what is left are the pairs on two rays.
+    m_diagonal.drain([&](std::size_t p, double sum, double) {
+      const double c = p < m_groups.groups_of_source.size() ? m_groups.groups_of_source[p] : 1.0;
+      fixed_row[p] -= c > 1 ? c / (c - 1) * sum : sum;
     });
     m_rays.drain([&](std::size_t p, double sum, double) { row[p] += sum; });
     m_in_group = m_in_row = 0;
@@ -142,6 +154,7 @@ class GatherVariance {
   double m_group_sum = 0, m_group_square = 0;  ///< the stratum group's ray totals
   SparseSums m_ray_source, m_strata_source, m_rays, m_per_source;
   SparseSums m_ray_group, m_strata_group, m_sensor_group;
+  SparseSums m_diagonal;  ///< per source, the sum over rays and groups of a group's per-ray sum squared
 };
 
 /// Add weight (.) sum_j K Phi_j of the disc of `bandwidth` photons at `at` on the side
@@ -307,6 +320,7 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
     if (groups->group_of.size() != surface_photons.size())
       throw std::invalid_argument("final gather: the photon groups are not those of the map");
     out.variance.assign(rows.size() * n_src, 0.0);
+    out.fixed_photon_variance.assign(rows.size() * n_src, 0.0);
   }
   // Scratch of the variance per thread (sized by the groups, reset after each sensor, so
   // which thread runs a sensor changes nothing).
@@ -342,8 +356,12 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
         }
       if (sums.variance) {
         double* row = out.variance.data() + (s - rows.begin) * n_src;
-        sums.variance->end_sensor(row);
-        for (std::size_t p = 0; p < n_src; ++p) row[p] = std::max(0.0, row[p]);
+        double* fixed = out.fixed_photon_variance.data() + (s - rows.begin) * n_src;
+        sums.variance->end_sensor(row, fixed);
+        for (std::size_t p = 0; p < n_src; ++p) {
+          row[p] = std::max(0.0, row[p]);
+          fixed[p] = std::clamp(fixed[p], 0.0, row[p]);
+        }
       }
       const auto at = static_cast<std::ptrdiff_t>((s - rows.begin) * n_src);
       std::copy(sums.caustic.begin(), sums.caustic.end(), out.caustic.begin() + at);

@@ -17,6 +17,8 @@
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/gather_accuracy_rounds.h"
+#include "gather_accuracy_json.h"
 #include "dayphoton/study/round_work.h"
 #include "dayphoton/study/sensor_blocks.h"
 #include "dayphoton/study/step_executor.h"
@@ -322,7 +324,7 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
                        "th percentile)";
     for (std::size_t g = 0; g < grids.size(); ++g)
       line += (g ? ", " : " ") + grids[g].name + " " + number(result.outcome.reached_percent[g]) + " %" +
-              (grid_chased_by_photons(*c.plane_of_grid, c.gather, g) ? "" : " (gathered: not chased)");
+              (grid_chased_by_photons(*c.plane_of_grid, c.gather, g) ? "" : " (gathered: its gather rays follow)");
     log(line + " (target " + number(goal.target_percent) + " %)");
     if (met) {
       result.outcome.stop_reason = met_stop_reason(result.outcome.grid_status);
@@ -393,6 +395,8 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     trace_seconds += seconds_since(t);
   }
   for (const auto& r : records) result.outcome.final_attempts.push_back(r.attempts);
+  // Gathered grids above the target: more gather rays (gather_accuracy_rounds.h).
+  run_gather_accuracy_rounds(c, goal, records, direct, direct_variance, seconds_since(start), work, log, result);
   log("accuracy: " + result.outcome.stop_reason + " after " + std::to_string(result.outcome.rounds) + " round(s)");
   return result;
 }
@@ -406,7 +410,9 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
                              std::to_string(goal.max_photons) + ":" + number(goal.max_seconds, "%.17g") + ":" +
                              number(AccuracyPercentile, "%.17g") + ":" + std::to_string(MaxAccuracyRounds) + ":" +
                              number(AccuracyPilotFraction, "%.17g") + ":" + number(AccuracyRoundAim, "%.17g") + ":" +
-                             number(AccuracyMaxGrowth, "%.17g") + ":" + (c.gather ? "gather-not-chased" : "surface");
+                             number(AccuracyMaxGrowth, "%.17g") + ":" + (c.gather ? "gather-rays:" + std::to_string(GatherMaxRounds) + ":" +
+                                                   number(GatherMaxGrowth, "%.17g") + ":" + std::to_string(GatherMaxRays)
+                                             : std::string("surface"));
   std::vector<std::string> keys = photon_keys;
   for (std::string& k : keys) k += "|" + rounds;
   const std::vector<SensorGrid>& grids = *c.grids;
@@ -436,7 +442,8 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
     const nlohmann::json j = {{"target_percent", r.outcome.target_percent}, {"reached_percent", r.outcome.reached_percent},
                               {"rounds", r.outcome.rounds}, {"photons", r.outcome.photons},
                               {"attempts", r.outcome.attempts}, {"stop_reason", r.outcome.stop_reason},
-                              {"grid_status", r.outcome.grid_status}};
+                              {"grid_status", r.outcome.grid_status},
+                              {"gather", gather_accuracy_json(r.outcome.gather)}};
     bytes.push_back(j.dump());
     out.coefficients = std::move(r.coefficients);
     out.outcome = r.outcome;
@@ -458,7 +465,11 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
     o.stop_reason = j.at("stop_reason").get<std::string>();
     if (!j.contains("grid_status")) return false;  // made before the gathered grids' status
     o.grid_status = j.at("grid_status").get<std::vector<std::string>>();
-    if (o.reached_percent.size() != grids.size() || o.grid_status.size() != grids.size()) return false;
+    if (!j.contains("gather")) return false;  // made before the gather rounds
+    o.gather = gather_accuracy_from_json(j.at("gather"));
+    if (o.reached_percent.size() != grids.size() || o.grid_status.size() != grids.size() ||
+        o.gather.size() != grids.size())
+      return false;
     out.coefficients = std::move(cached);
     out.outcome = std::move(o);
     return true;
@@ -480,7 +491,7 @@ std::string accuracy_sentence(const AccuracyOutcome& o, std::size_t grid) {
                                  : "";
   return "DF relative standard error (" + number(AccuracyPercentile, "%.0f") + "th percentile of the sensors) " +
          number(reached) + " % " + (reached <= o.target_percent ? "<=" : ">") + " target " +
-         number(o.target_percent) + " %" + status + ": " + o.stop_reason + " after " + std::to_string(o.rounds) + " round(s), " +
+         number(o.target_percent) + " %" + status + gather_accuracy_note(o, grid) + ": " + o.stop_reason + " after " + std::to_string(o.rounds) + " round(s), " +
          number(double(o.photons), "%.0f") + " photons";
 }
 

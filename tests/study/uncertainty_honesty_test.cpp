@@ -147,5 +147,20 @@ TEST(UncertaintyHonesty, LightShelfSpreadOverSeedsMatchesTheReportedStandardErro
   expect_honest(honesty(p, "light_shelf", {"workplane", "ceiling_probes"}));
 }
 
+TEST(UncertaintyHonesty, GatheredWallGridsSpreadOverSeedsMatchesTheReportedStandardError) {
+  // Every sensor by final gather (the back and west wall grids of projects/wall_sensors, 130
+  // sensors on the walls facing into the room): the gather's variance (final_gather.h, the
+  // photons' part by groups of paths plus the rays' part) with few photons and few rays, so
+  // both parts count (the direct component's too).
+  project::Project p = project::load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/wall_sensors/project.yaml");
+  p.sensors.points.clear();
+  p.sensors.grids.erase(p.sensors.grids.begin());  // the work plane (a receiver plane)
+  ASSERT_EQ(p.sensors.grids.size(), 2u);
+  p.simulation.photons_per_bin = 1000;  // the project's 20 000 / 20
+  p.simulation.direct_samples_per_bin = 9;
+  p.simulation.gather_rays = 64;
+  expect_honest(honesty(p, "wall_sensors", {"back_wall", "west_wall"}));
+}
+
 }  // namespace
 }  // namespace dayphoton::study

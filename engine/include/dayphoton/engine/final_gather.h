@@ -58,6 +58,18 @@
 // noise those values carry, which the same formula applied to each group's per-ray sums S_hc
 // estimates (that noise is in the photon part already). Their sum is clamped at 0.
 //
+// How the variance falls with the rays. With S_c = sum_h S_hc, the photon part's
+// sum_c S_c^2 = sum_c sum_h S_hc^2 + sum_c sum_{h != h'} S_hc S_h'c: the first sum (each
+// group's terms on one ray) has N terms of size 1/N^2, so it falls as 1/N; the second (a group
+// read by two different rays) has N^2 pairs of size 1/N^2, each pair read with a probability
+// that does not depend on N, so it stays: it is the part only more photons lower (rays are
+// dense next to the lookup discs). fixed_photon_variance is the photon part less the first
+// sum (the same C/(C-1) factor), clamped to [0, variance]. The rays' part falls at least as
+// 1/N (stratification never raises the variance of the plain estimate: Veach, "Robust Monte
+// Carlo Methods for Light Transport Simulation", PhD thesis, Stanford 1997, section 2.7.1). So
+// at N' rays the variance is about fixed + (variance - fixed) N / N' (the accuracy target's
+// gather rounds, study/gather_accuracy_rounds.h).
+//
 // Determinism: gather ray i of sensor s uses Rng(seed, s, i, RandomStream::Gather); sensors
 // are independent, so the result is identical for any thread count.
 #pragma once
@@ -107,6 +119,9 @@ struct GatheredCoefficients {
   std::vector<Vec3> caustic, global;
   /// The variance of caustic + global's luminance (header comment), when groups were given.
   std::vector<double> variance;
+  /// Of it, the photons' part that more gather rays do not reduce (header comment, "How the
+  /// variance falls with the rays"), same layout, 0 <= fixed <= variance.
+  std::vector<double> fixed_photon_variance;
 };
 
 /// The gather at every sensor. `surface_photons` is the map of every stored surface photon

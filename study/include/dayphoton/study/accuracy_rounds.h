@@ -49,6 +49,7 @@
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/study/gather_accuracy.h"
 #include "dayphoton/study/round_work.h"
 
 namespace dayphoton::study {
@@ -114,6 +115,7 @@ struct AccuracyOutcome {
   /// "direct component", "no light"
   std::string stop_reason;
   std::vector<std::string> grid_status;  ///< per grid: accuracy_grid_status (accuracy_policy.h)
+  std::vector<GatherAccuracy> gather;    ///< per grid: its gather rounds (gather_accuracy_rounds.h)
   /// Attempts per source after the pilot and at the end (of a run that traced; not cached).
   std::vector<std::uint64_t> pilot_attempts, final_attempts;
 };
