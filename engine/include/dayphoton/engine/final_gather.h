@@ -57,6 +57,16 @@
 // each pair's values (a ray is shared by the sources: estimate_variance.h), less the photon
 // noise those values carry, which the same formula applied to each group's per-ray sums S_hc
 // estimates (that noise is in the photon part already). Their sum is clamped at 0.
+// The strata are taken in rows of k: second differences of every run of three neighbours,
+// (z1 - 2 z2 + z3)^2 / 6 times k / (k - 2) (StratifiedVariance, estimate_variance.h: a linear
+// trend across the strata cancels); a row of two gives the pair's difference squared, one
+// its square. A ray's value over all sources is a weighted sum, sum_p w_p z_p
+// (GatherOptions::variance_weights: the daylight factor's sky), and source p's share of a
+// run's variance V is V (w_p z_p / sum_q w_q z_q) / w_p^2, so that sum_p w_p^2 V_p is V:
+// the variance of the sky-weighted sum is then that of its own rays. The rays are shared by
+// the sources and their per-source values are not independent: with unit weights the shares
+// summed under the overcast sky's luminances overstated the wall sensors' DF variance of
+// projects/wall_sensors 1.8 times over (docs/photon-map.md, "Uncertainty").
 //
 // How the variance falls with the rays. With S_c = sum_h S_hc, the photon part's
 // sum_c S_c^2 = sum_c sum_h S_hc^2 + sum_c sum_{h != h'} S_hc S_h'c: the first sum (each
@@ -111,6 +121,10 @@ struct GatherOptions {
   std::size_t bandwidth = 32;       ///< photons per lookup at a gather hit (all sources), >= 1
   int max_specular_events = 16;     ///< specular/glossy events followed per gather ray
   std::uint64_t seed = 1;
+  /// Per source, its weight in the sum whose rays' variance is measured (header comment,
+  /// "Variance": the daylight factor's sky luminances); empty: 1 for every source. The
+  /// photons' part does not depend on it.
+  std::vector<double> variance_weights;
 };
 
 /// Caustic (specular paths to a source) and global (photon lookups) parts, each

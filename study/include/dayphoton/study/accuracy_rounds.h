@@ -23,8 +23,9 @@
 // direct variance alone exceeds its budget cannot be helped by photons and is left out (the
 // run says so; direct_samples_per_bin lowers it).
 //
-// Grids estimated by final gather are measured and reported but not chased: their error is
-// partly the gather rays' (accuracy_policy.h).
+// Grids estimated by final gather are measured but not chased with photons: their error is
+// mostly the gather rays' (accuracy_policy.h); after the photon rounds their rays are raised
+// in gather rounds (gather_accuracy_rounds.h).
 //
 // Rounds stop when every grid meets the target, or at the photon budget (stored photons of
 // all sky sources), the time budget (checked before each round from the time per attempt so
