@@ -3,7 +3,8 @@
 // a receiver plane, and 8 of them again as a grid estimated by final gather): the gathered
 // grid misses the target at the project's rays, its rays are raised until it is met, the
 // photons are not touched for it, the outcome says so, and the bytes are the same for 1 and
-// 2 threads and for 1, 2 and 3 in-process ranks.
+// 2 threads and for 1, 2 and 3 in-process ranks. And the gather's fixed variance part: within
+// the variance, 0 for one ray.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,6 +18,8 @@
 #include <tbb/global_control.h>
 
 #include "dayphoton/engine/daylight_coefficients.h"
+#include "dayphoton/engine/final_gather.h"
+#include "dayphoton/engine/port_emission.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/project/project.h"
@@ -254,6 +257,40 @@ TEST(GatherAccuracyRounds, OneAndTwoThreadsAndOneToThreeRanksGiveTheSameBytes) {
       EXPECT_EQ(x.outcome.reached_percent, one.outcome.reached_percent);
       EXPECT_TRUE(encode_coefficients(x.coefficients.at(1)) == expected);
     }
+  }
+}
+
+// The gather's fixed part (engine/final_gather.h, "How the variance falls with the rays": the
+// photon part's pairs of terms on two different rays) lies within the variance, and with one
+// ray per sensor there is no pair of rays: it is 0.
+TEST(GatherVarianceParts, FixedPartIsWithinTheVarianceAndZeroForOneRay) {
+  const Office office;
+  engine::TracingOptions tracing = office.accuracy_case(1, 1).tracing;
+  tracing.photons_per_source = 500;
+  const engine::PortEmitter emitter(*office.scene, office.sources);
+  std::vector<engine::TracedPhotons> per_source(office.sources.size());
+  for (std::size_t p = 0; p < office.sources.size(); ++p)
+    per_source[p] = engine::trace_source_photons(*office.scene, office.materials, emitter, office.planes, tracing, p);
+  const engine::GridPhotons photons = engine::GridPhotons::for_gather(
+      engine::merge_traced_photons(std::move(per_source)).surface, office.sources.size());
+  const std::vector<SensorPoint>& sensors = office.description.grids.at(1).points;
+  for (const int rays : {1, 64}) {
+    SCOPED_TRACE(std::to_string(rays) + " rays");
+    engine::GatherOptions options;
+    options.rays_per_sensor = rays;
+    const engine::GatheredCoefficients g = engine::gather_photon_coefficients(
+        *office.scene, office.materials, office.sources, photons.all(), sensors, options, &photons.groups());
+    ASSERT_EQ(g.fixed_photon_variance.size(), g.variance.size());
+    double fixed = 0, total = 0;
+    for (std::size_t i = 0; i < g.variance.size(); ++i) {
+      EXPECT_GE(g.fixed_photon_variance[i], 0.0);
+      EXPECT_LE(g.fixed_photon_variance[i], g.variance[i]);
+      fixed += g.fixed_photon_variance[i];
+      total += g.variance[i];
+    }
+    EXPECT_GT(total, 0.0);
+    if (rays == 1) EXPECT_EQ(fixed, 0.0);
+    std::printf("%d rays: fixed part %.3g of the variance\n", rays, total > 0 ? fixed / total : 0.0);
   }
 }
 
