@@ -2,11 +2,13 @@
 #include "dayphoton/engine/final_gather.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -65,23 +67,19 @@ class SparseSums {
   std::vector<std::uint32_t> m_touched;
 };
 
-/// Collapsed-strata variance of a group of g values with this sum and sum of squares
-/// (estimate_variance.h); a lone stratum gives its square.
-double group_variance(double g, double sum, double square) {
-  return g <= 1 ? square : g / (g - 1) * (square - sum * sum / g);
-}
-
 /// The variance bookkeeping of one sensor's gather (final_gather.h, "Variance"). Rays are
 /// reported in stratum order (rows of k), each through add_photon / add_path and end_ray.
 class GatherVariance {
  public:
-  GatherVariance(const PhotonGroups& groups, std::size_t sources, int k) : m_groups(groups), m_k(k) {
+  GatherVariance(const PhotonGroups& groups, std::size_t sources, int k, const std::vector<double>& weights)
+      : m_groups(groups), m_k(k), m_weights(weights) {
     m_ray_source.resize(sources);
-    m_strata_source.resize(sources);
+    m_run_source.resize(sources);
     m_rays.resize(sources);
     m_per_source.resize(sources);
+    m_diagonal.resize(sources);
     m_ray_group.resize(groups.source_of.size());
-    m_strata_group.resize(groups.source_of.size());
+    m_run_group.resize(groups.source_of.size());
     m_sensor_group.resize(groups.source_of.size());
   }
   /// A lookup term of luminance y from photon `photon` (tree order) of `source`.
@@ -92,56 +90,88 @@ class GatherVariance {
   /// A specular path reaching `source` with luminance y (no photon: rays' variance only).
   void add_path(std::uint32_t source, double y) { m_ray_source.add(source, y); }
   void end_ray() {
-    double total = 0;  // the ray's value over all sources
+    Ray& ray = m_window[m_in_row % 3];
+    ray.total = 0;
+    ray.sources.clear();
+    ray.groups.clear();
     m_ray_source.drain([&](std::size_t p, double z, double) {
-      m_strata_source.add(p, z);
-      total += z;
+      const double weighted = m_weights.empty() ? z : m_weights[p] * z;
+      ray.sources.push_back({static_cast<std::uint32_t>(p), weighted});
+      ray.total += weighted;
     });
-    m_group_sum += total;
-    m_group_square += total * total;
-    m_ray_group.drain([&](std::size_t c, double z, double) { m_strata_group.add(c, z); });
-    ++m_in_group;
+    m_ray_group.drain([&](std::size_t c, double z, double) {
+      ray.groups.push_back({static_cast<std::uint32_t>(c), z});
+      m_sensor_group.add(c, z);
+      m_diagonal.add(m_groups.source_of[c], z * z);
+    });
     ++m_in_row;
-    const bool last_of_row = m_in_row == m_k;
-    if (!(last_of_row || (m_in_group == 2 && m_k - m_in_row != 1))) return;
-    const double g = m_in_group;
-    // The rays are shared by the sources (a ray that meets a bright patch of wall reads every
-    // source's photons there), so the strata are taken on the rays' values over all sources
-    // and their variance shared among the sources by their part of the group's values
-    // (StratifiedVariance, estimate_variance.h).
-    const double shared = group_variance(g, m_group_sum, m_group_square);
-    const double values = m_group_sum;
-    m_strata_source.drain([&](std::size_t p, double sum, double) {
-      if (values > 0) m_rays.add(p, shared * sum / values);
-    });
-    m_group_sum = m_group_square = 0;
-    // Less the photon noise the rays' values carry (it is in the photon part).
-    m_strata_group.drain([&](std::size_t c, double sum, double square) {
-      m_rays.add(m_groups.source_of[c], -group_variance(g, sum, square));
-      m_sensor_group.add(c, sum);
-    });
-    m_in_group = 0;
-    if (last_of_row) m_in_row = 0;
+    // Rows of three or more strata: second differences of every run of three neighbours,
+    // (z1 - 2 z2 + z3)^2 / 6, times k / (k - 2) for the row's sum (StratifiedVariance,
+    // estimate_variance.h: a linear trend across the strata cancels).
+    if (m_k >= 3 && m_in_row >= 3)
+      add_run({&m_window[(m_in_row - 3) % 3], &m_window[(m_in_row - 2) % 3], &m_window[(m_in_row - 1) % 3]},
+              {1.0, -2.0, 1.0}, double(m_k) / (double(m_k) - 2.0) / 6.0);
+    if (m_in_row < m_k) return;
+    // A row of two: the difference of the pair; a row of one: its square (no estimate is
+    // possible, an upper bound about a mean of 0).
+    if (m_k == 2) add_run({&m_window[0], &m_window[1], nullptr}, {1.0, -1.0, 0.0}, 1.0);
+    if (m_k == 1) add_run({&m_window[0], nullptr, nullptr}, {1.0, 0.0, 0.0}, 1.0);
+    m_in_row = 0;
   }
-  /// The sensor's variance per source into `row` (sources entries), and reset.
-  void end_sensor(double* row) {
+  /// The sensor's variance per source into `row` (sources entries) and the photons' part
+  /// that more rays do not reduce into `fixed_row` (header comment, "Variance"), and reset.
+  void end_sensor(double* row, double* fixed_row) {
     m_sensor_group.drain([&](std::size_t c, double sum, double) { m_per_source.add(m_groups.source_of[c], sum); });
     m_per_source.drain([&](std::size_t p, double sum, double square) {
       const double c = p < m_groups.groups_of_source.size() ? m_groups.groups_of_source[p] : 1.0;
-      row[p] += c > 1 ? c / (c - 1) * (square - sum * sum / c) : square;
+      const double photons = c > 1 ? c / (c - 1) * (square - sum * sum / c) : square;
+      row[p] += photons;
+      fixed_row[p] = photons;
+    });
+    // Less the pairs of a group's terms on one ray: what is left are the pairs on two rays.
+    m_diagonal.drain([&](std::size_t p, double sum, double) {
+      const double c = p < m_groups.groups_of_source.size() ? m_groups.groups_of_source[p] : 1.0;
+      fixed_row[p] -= c > 1 ? c / (c - 1) * sum : sum;
     });
     m_rays.drain([&](std::size_t p, double sum, double) { row[p] += sum; });
-    m_in_group = m_in_row = 0;
-    m_group_sum = m_group_square = 0;
+    m_in_row = 0;
   }
 
  private:
+  struct Ray {
+    double total = 0;  ///< the ray's value over all sources
+    std::vector<std::pair<std::uint32_t, double>> sources, groups;
+  };
+  /// One run of neighbouring strata with coefficients `c` (0 for an absent ray) and factor
+  /// `scale`: its variance scale (sum_i c_i z_i)^2 over the rays' values over all sources,
+  /// shared among the sources by their part of the run's values (sum_i |c_i| z_ip: a ray is
+  /// shared by the sources, as the direct component's port points are), less the photon
+  /// noise those values carry, scale sum_groups (sum_i c_i S_ic)^2 (in the photon part
+  /// already).
+  void add_run(const std::array<const Ray*, 3>& run, const std::array<double, 3>& c, double scale) {
+    double d = 0, values = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (!run[i]) continue;
+      d += c[i] * run[i]->total;
+      values += std::fabs(c[i]) * run[i]->total;
+      for (const auto& [p, z] : run[i]->sources) m_run_source.add(p, std::fabs(c[i]) * z);
+      for (const auto& [g, z] : run[i]->groups) m_run_group.add(g, c[i] * z);
+    }
+    const double shared = scale * d * d;
+    m_run_source.drain([&](std::size_t p, double sum, double) {
+      const double w = m_weights.empty() ? 1.0 : m_weights[p];
+      if (values > 0 && w > 0) m_rays.add(p, shared * sum / values / (w * w));
+    });
+    m_run_group.drain([&](std::size_t g, double sum, double) { m_rays.add(m_groups.source_of[g], -scale * sum * sum); });
+  }
+
   const PhotonGroups& m_groups;
   int m_k;
-  int m_in_group = 0, m_in_row = 0;
-  double m_group_sum = 0, m_group_square = 0;  ///< the stratum group's ray totals
-  SparseSums m_ray_source, m_strata_source, m_rays, m_per_source;
-  SparseSums m_ray_group, m_strata_group, m_sensor_group;
+  const std::vector<double>& m_weights;  ///< GatherOptions::variance_weights
+  int m_in_row = 0;
+  Ray m_window[3];  ///< the last three rays of the row, by index in the row mod 3
+  SparseSums m_ray_source, m_run_source, m_rays, m_per_source, m_diagonal;
+  SparseSums m_ray_group, m_run_group, m_sensor_group;
 };
 
 /// Add weight (.) sum_j K Phi_j of the disc of `bandwidth` photons at `at` on the side
@@ -303,10 +333,19 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
   GatherOptions effective = options;
   effective.rays_per_sensor = k * k;
   const Vec3 ray_weight = Vec3{1, 1, 1} * (1.0 / (double(k) * k));
+  if (!options.variance_weights.empty()) {
+    if (options.variance_weights.size() != n_src)
+      throw std::invalid_argument("final gather: " + std::to_string(options.variance_weights.size()) +
+                                  " variance weights for " + std::to_string(n_src) + " sources");
+    for (const double w : options.variance_weights)
+      if (!(w >= 0) || !std::isfinite(w))
+        throw std::invalid_argument("final gather: a variance weight is negative or not finite");
+  }
   if (groups) {
     if (groups->group_of.size() != surface_photons.size())
       throw std::invalid_argument("final gather: the photon groups are not those of the map");
     out.variance.assign(rows.size() * n_src, 0.0);
+    out.fixed_photon_variance.assign(rows.size() * n_src, 0.0);
   }
   // Scratch of the variance per thread (sized by the groups, reset after each sensor, so
   // which thread runs a sensor changes nothing).
@@ -315,7 +354,7 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
     SensorSums sums;
     if (groups) {
       std::unique_ptr<GatherVariance>& v = scratch.local();
-      if (!v) v = std::make_unique<GatherVariance>(*groups, n_src, k);
+      if (!v) v = std::make_unique<GatherVariance>(*groups, n_src, k, options.variance_weights);
       sums.variance = v.get();
     }
     for (std::size_t s = range.begin(); s != range.end(); ++s) {
@@ -342,8 +381,12 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
         }
       if (sums.variance) {
         double* row = out.variance.data() + (s - rows.begin) * n_src;
-        sums.variance->end_sensor(row);
-        for (std::size_t p = 0; p < n_src; ++p) row[p] = std::max(0.0, row[p]);
+        double* fixed = out.fixed_photon_variance.data() + (s - rows.begin) * n_src;
+        sums.variance->end_sensor(row, fixed);
+        for (std::size_t p = 0; p < n_src; ++p) {
+          row[p] = std::max(0.0, row[p]);
+          fixed[p] = std::clamp(fixed[p], 0.0, row[p]);
+        }
       }
       const auto at = static_cast<std::ptrdiff_t>((s - rows.begin) * n_src);
       std::copy(sums.caustic.begin(), sums.caustic.end(), out.caustic.begin() + at);

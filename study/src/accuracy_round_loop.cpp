@@ -64,7 +64,7 @@ engine::GridPhotons round_grid_photons(const std::vector<engine::ReceiverPlane>&
 
 RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal& goal, const RoundMeasure& measure,
                                 const RoundLoopText& text, const std::function<void(const std::string&)>& log,
-                                RoundWork& work, Clock::time_point start) {
+                                RoundWork& work, Clock::time_point start, const RoundLoopFinish& finish) {
   const std::size_t n = sources.reference.size();
   double trace_seconds = 0;
   std::uint64_t traced_attempts = 0;
@@ -205,6 +205,7 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
     trace_seconds += seconds_since(t);
   }
   for (const auto& r : records) outcome.final_attempts.push_back(r.attempts);
+  if (finish) finish(outcome, records);
   log(text.name + ": " + outcome.stop_reason + " after " + std::to_string(outcome.rounds) + " round(s)");
   return outcome;
 }

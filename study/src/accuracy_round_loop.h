@@ -76,10 +76,16 @@ struct RoundLoopOutcome {
   std::vector<std::uint64_t> pilot_attempts, final_attempts;  ///< per source
 };
 
+/// Runs after the last round, before the closing log line, with the sources' final records;
+/// it may change the outcome's stop reason (the gather rounds of gather_accuracy_rounds.h).
+using RoundLoopFinish =
+    std::function<void(RoundLoopOutcome& outcome, const std::vector<engine::SourcePhotonRecord>& records)>;
+
 /// The loop (header comment). `start` is when the rounds' time budget began.
 RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal& goal, const RoundMeasure& measure,
                                 const RoundLoopText& text, const std::function<void(const std::string&)>& log,
-                                RoundWork& work, std::chrono::steady_clock::time_point start);
+                                RoundWork& work, std::chrono::steady_clock::time_point start,
+                                const RoundLoopFinish& finish = {});
 
 /// Every record's photons with their flux (engine::scaled_source_photons) merged in source
 /// order; with `relabel`, source p's photons labelled p (a source traced alone as source 0,

@@ -15,6 +15,8 @@
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/gather_accuracy_rounds.h"
+#include "gather_accuracy_json.h"
 #include "dayphoton/study/round_work.h"
 #include "dayphoton/study/sensor_blocks.h"
 #include "dayphoton/study/step_executor.h"
@@ -233,7 +235,7 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
       const bool chased = grid_chased_by_photons(*c.plane_of_grid, c.gather, g);
       m.grid_status[g] = accuracy_grid_status(chased, reached, goal.target_percent);
       m.grids += (g ? ", " : " ") + grids[g].name + " " + number(reached) + " %" +
-                 (chased ? "" : " (gathered: not chased)");
+                 (chased ? "" : " (gathered: its gather rays follow)");
       if (chased) {
         m.met = m.met && reached <= goal.target_percent;
         m.chased.push_back(std::move(v));
@@ -242,8 +244,16 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     result.outcome.grid_status = m.grid_status;
     return m;
   };
+  // Gathered grids above the target: more gather rays (gather_accuracy_rounds.h), which may
+  // settle the stop reason.
+  const RoundLoopFinish gather_rounds = [&](RoundLoopOutcome& o, const std::vector<engine::SourcePhotonRecord>& records) {
+    result.outcome.stop_reason = o.stop_reason;
+    result.outcome.rounds = o.rounds;
+    run_gather_accuracy_rounds(c, goal, records, direct, direct_variance, std::chrono::duration<double>(Clock::now() - start).count(), work, log, result);
+    o.stop_reason = result.outcome.stop_reason;
+  };
   const RoundLoopOutcome o =
-      run_round_loop(sources, goal, measure, {"accuracy", DfMeasure}, log, work, start);
+      run_round_loop(sources, goal, measure, {"accuracy", DfMeasure}, log, work, start, gather_rounds);
   result.outcome.rounds = o.rounds;
   result.outcome.photons = o.photons;
   result.outcome.attempts = o.attempts;
@@ -262,7 +272,9 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
                              std::to_string(goal.max_photons) + ":" + number(goal.max_seconds, "%.17g") + ":" +
                              number(AccuracyPercentile, "%.17g") + ":" + std::to_string(MaxAccuracyRounds) + ":" +
                              number(AccuracyPilotFraction, "%.17g") + ":" + number(AccuracyRoundAim, "%.17g") + ":" +
-                             number(AccuracyMaxGrowth, "%.17g") + ":" + (c.gather ? "gather-not-chased" : "surface");
+                             number(AccuracyMaxGrowth, "%.17g") + ":" + (c.gather ? "gather-rays:" + std::to_string(GatherMaxRounds) + ":" +
+                                                   number(GatherMaxGrowth, "%.17g") + ":" + std::to_string(GatherMaxRays)
+                                             : std::string("surface"));
   std::vector<std::string> keys = photon_keys;
   for (std::string& k : keys) k += "|" + rounds;
   const std::vector<SensorGrid>& grids = *c.grids;
@@ -292,7 +304,8 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
     const nlohmann::json j = {{"target_percent", r.outcome.target_percent}, {"reached_percent", r.outcome.reached_percent},
                               {"rounds", r.outcome.rounds}, {"photons", r.outcome.photons},
                               {"attempts", r.outcome.attempts}, {"stop_reason", r.outcome.stop_reason},
-                              {"grid_status", r.outcome.grid_status}};
+                              {"grid_status", r.outcome.grid_status},
+                              {"gather", gather_accuracy_json(r.outcome.gather)}};
     bytes.push_back(j.dump());
     out.coefficients = std::move(r.coefficients);
     out.outcome = r.outcome;
@@ -314,7 +327,11 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
     o.stop_reason = j.at("stop_reason").get<std::string>();
     if (!j.contains("grid_status")) return false;  // made before the gathered grids' status
     o.grid_status = j.at("grid_status").get<std::vector<std::string>>();
-    if (o.reached_percent.size() != grids.size() || o.grid_status.size() != grids.size()) return false;
+    if (!j.contains("gather")) return false;  // made before the gather rounds
+    o.gather = gather_accuracy_from_json(j.at("gather"));
+    if (o.reached_percent.size() != grids.size() || o.grid_status.size() != grids.size() ||
+        o.gather.size() != grids.size())
+      return false;
     out.coefficients = std::move(cached);
     out.outcome = std::move(o);
     return true;
@@ -334,8 +351,8 @@ std::string accuracy_sentence(const AccuracyOutcome& o, std::size_t grid) {
   const std::string status = grid < o.grid_status.size() && o.grid_status[grid] == "not reachable by photons"
                                  ? " (gathered: not reachable by photons; simulation.gather_rays lowers it)"
                                  : "";
-  return round_outcome_sentence(DfMeasure, reached, o.target_percent, status, o.stop_reason,
-                                o.rounds, o.photons);
+  return round_outcome_sentence(DfMeasure, reached, o.target_percent, status + gather_accuracy_note(o, grid),
+                                o.stop_reason, o.rounds, o.photons);
 }
 
 }  // namespace dayphoton::study

@@ -86,6 +86,8 @@ void add_estimate_options(ContentHash& h, const engine::CoefficientOptions& o) {
   h.integer(o.direct.samples_per_source).integer(static_cast<std::int64_t>(o.direct.seed));
   h.integer(o.gather.rays_per_sensor).integer(static_cast<std::int64_t>(o.gather.bandwidth));
   h.integer(o.gather.max_specular_events).integer(static_cast<std::int64_t>(o.gather.seed));
+  h.integer(static_cast<std::int64_t>(o.gather.variance_weights.size()));
+  for (const double w : o.gather.variance_weights) h.number(w);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "dayphoton/core/units.h"
 #include "dayphoton/project/north_rotation.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
@@ -104,6 +105,15 @@ SimulationPlan SimulationPlan::of(const project::Project& project) {
   p.sun_estimating = p.sky_estimating;
   p.sun_estimating.density.bandwidth = sun_bin_bandwidth(p.sky_estimating.density.bandwidth);
   p.ground_reflectance = sim.ground_reflectance;
+  // The sky gather's rays' variance is taken on the daylight factor's sky (final_gather.h,
+  // "Variance"); the sun bins are other sources, with unit weights.
+  const RadianceMatrix df_sky = p.daylight_factor_sky();
+  std::vector<double>& w = p.sky_estimating.gather.variance_weights;
+  w.resize(df_sky.rows());
+  for (std::size_t b = 0; b < w.size(); ++b)
+    w[b] = df_sky.components() == 3 ? RgbLuminanceWeights.x * df_sky.at(b, 0, 0) + RgbLuminanceWeights.y * df_sky.at(b, 0, 1) +
+                                          RgbLuminanceWeights.z * df_sky.at(b, 0, 2)
+                                    : double(df_sky.at(b, 0, 0));
   return p;
 }
 

@@ -43,6 +43,7 @@
 #include "dayphoton/study/verdict_uncertainty.h"
 #include "dayphoton/weather/hourly_weather.h"
 #include "dayphoton/study/annual_blocks.h"
+#include "gather_accuracy_json.h"
 #include "json_text.h"
 #include "json_values.h"
 #include "operated_case.h"
@@ -226,6 +227,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
                         {"attempts", accuracy->attempts},
                         {"stop_reason", accuracy->stop_reason},
                         {"status", accuracy->grid_status[g]}};
+    if (accuracy && g < accuracy->gather.size() && accuracy->gather[g].gathered) {
+      gj["accuracy"]["gather"] = gather_accuracy_json(accuracy->gather[g]);
+      gj["accuracy"]["gather"].erase("gathered");
+    }
     grids_json.push_back(gj);
     // Of the sky coefficients' parts only the matrix and the variances are needed from here on.
     sky_variances.push_back(sky_variance_of(*coefficients[g]));

@@ -33,8 +33,8 @@
 //     linear trend (Wolter, "Introduction to Variance Estimation", 2nd ed., 2007, section
 //     8.2, successive-difference estimators). Edges (a window frame cutting a stratum) are
 //     real variance and are counted; a curved trend is still counted, upward.
-//   - the final gather's rays (final_gather.h): groups of two neighbouring strata, the photon
-//     noise their values carry subtracted.
+//   - the final gather's rays (final_gather.h): second differences of runs of three
+//     neighbouring strata on the sky-weighted values, the photon noise they carry subtracted.
 // Kernel bias (the blur of a disc of finite radius) is NOT variance and is not included:
 // the stated uncertainty is the Monte Carlo standard error.
 #pragma once

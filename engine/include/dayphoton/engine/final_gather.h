@@ -57,6 +57,28 @@
 // each pair's values (a ray is shared by the sources: estimate_variance.h), less the photon
 // noise those values carry, which the same formula applied to each group's per-ray sums S_hc
 // estimates (that noise is in the photon part already). Their sum is clamped at 0.
+// The strata are taken in rows of k: second differences of every run of three neighbours,
+// (z1 - 2 z2 + z3)^2 / 6 times k / (k - 2) (StratifiedVariance, estimate_variance.h: a linear
+// trend across the strata cancels); a row of two gives the pair's difference squared, one
+// its square. A ray's value over all sources is a weighted sum, sum_p w_p z_p
+// (GatherOptions::variance_weights: the daylight factor's sky), and source p's share of a
+// run's variance V is V (w_p z_p / sum_q w_q z_q) / w_p^2, so that sum_p w_p^2 V_p is V:
+// the variance of the sky-weighted sum is then that of its own rays. The rays are shared by
+// the sources and their per-source values are not independent: with unit weights the shares
+// summed under the overcast sky's luminances overstated the wall sensors' DF variance of
+// projects/wall_sensors 1.8 times over (docs/photon-map.md, "Uncertainty").
+//
+// How the variance falls with the rays. With S_c = sum_h S_hc, the photon part's
+// sum_c S_c^2 = sum_c sum_h S_hc^2 + sum_c sum_{h != h'} S_hc S_h'c: the first sum (each
+// group's terms on one ray) has N terms of size 1/N^2, so it falls as 1/N; the second (a group
+// read by two different rays) has N^2 pairs of size 1/N^2, each pair read with a probability
+// that does not depend on N, so it stays: it is the part only more photons lower (rays are
+// dense next to the lookup discs). fixed_photon_variance is the photon part less the first
+// sum (the same C/(C-1) factor), clamped to [0, variance]. The rays' part falls at least as
+// 1/N (stratification never raises the variance of the plain estimate: Veach, "Robust Monte
+// Carlo Methods for Light Transport Simulation", PhD thesis, Stanford 1997, section 2.7.1). So
+// at N' rays the variance is about fixed + (variance - fixed) N / N' (the accuracy target's
+// gather rounds, study/gather_accuracy_rounds.h).
 //
 // Determinism: gather ray i of sensor s uses Rng(seed, s, i, RandomStream::Gather); sensors
 // are independent, so the result is identical for any thread count.
@@ -99,6 +121,10 @@ struct GatherOptions {
   std::size_t bandwidth = 32;       ///< photons per lookup at a gather hit (all sources), >= 1
   int max_specular_events = 16;     ///< specular/glossy events followed per gather ray
   std::uint64_t seed = 1;
+  /// Per source, its weight in the sum whose rays' variance is measured (header comment,
+  /// "Variance": the daylight factor's sky luminances); empty: 1 for every source. The
+  /// photons' part does not depend on it.
+  std::vector<double> variance_weights;
 };
 
 /// Caustic (specular paths to a source) and global (photon lookups) parts, each
@@ -107,6 +133,9 @@ struct GatheredCoefficients {
   std::vector<Vec3> caustic, global;
   /// The variance of caustic + global's luminance (header comment), when groups were given.
   std::vector<double> variance;
+  /// Of it, the photons' part that more gather rays do not reduce (header comment, "How the
+  /// variance falls with the rays"), same layout, 0 <= fixed <= variance.
+  std::vector<double> fixed_photon_variance;
 };
 
 /// The gather at every sensor. `surface_photons` is the map of every stored surface photon

@@ -23,8 +23,9 @@
 // direct variance alone exceeds its budget cannot be helped by photons and is left out (the
 // run says so; direct_samples_per_bin lowers it).
 //
-// Grids estimated by final gather are measured and reported but not chased: their error is
-// partly the gather rays' (accuracy_policy.h).
+// Grids estimated by final gather are measured but not chased with photons: their error is
+// mostly the gather rays' (accuracy_policy.h); after the photon rounds their rays are raised
+// in gather rounds (gather_accuracy_rounds.h).
 //
 // The loop (pilot, allocation, stops, log lines) is the one the sun bins' rounds share
 // (study/src/accuracy_round_loop.h); this file holds the DF measure and the allocation.
@@ -51,6 +52,7 @@
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/study/gather_accuracy.h"
 #include "dayphoton/study/round_work.h"
 
 namespace dayphoton::study {
@@ -116,6 +118,7 @@ struct AccuracyOutcome {
   /// "direct component", "no light"
   std::string stop_reason;
   std::vector<std::string> grid_status;  ///< per grid: accuracy_grid_status (accuracy_policy.h)
+  std::vector<GatherAccuracy> gather;    ///< per grid: its gather rounds (gather_accuracy_rounds.h)
   /// Attempts per source after the pilot and at the end (of a run that traced; not cached).
   std::vector<std::uint64_t> pilot_attempts, final_attempts;
 };

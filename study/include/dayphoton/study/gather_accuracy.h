@@ -1,0 +1,21 @@
+// What the gather rounds (gather_accuracy_rounds.h) did for one grid: the record the
+// accuracy outcome keeps per grid (accuracy_rounds.h) and summary.json reports
+// (docs/outputs.md, `grids[].accuracy.gather`).
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+namespace dayphoton::study {
+
+struct GatherAccuracy {
+  bool gathered = false;      ///< the grid is estimated by final gather (else nothing below applies)
+  int first_rays = 0;         ///< gather rays per sensor the project asked for (a square)
+  int rays = 0;               ///< gather rays per sensor of the grid's final estimate (a square)
+  std::size_t rounds = 0;     ///< estimates with more rays after the photon rounds (0: none needed)
+  /// "target met", "gather photon part" (the part more rays do not reduce is above the
+  /// budget), "direct component", "gather ray limit", "round limit", "time budget".
+  std::string stop_reason;
+};
+
+}  // namespace dayphoton::study

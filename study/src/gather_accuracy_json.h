@@ -1,0 +1,43 @@
+// GatherAccuracy (gather_accuracy.h) as JSON: in the accuracy step's cached outcome
+// (accuracy_rounds.cpp) and in summary.json's `grids[].accuracy.gather` (docs/outputs.md).
+#pragma once
+
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "dayphoton/study/gather_accuracy.h"
+
+namespace dayphoton::study {
+
+/// One grid's record; summary.json writes it for gathered grids only.
+inline nlohmann::json gather_accuracy_json(const GatherAccuracy& a) {
+  return {{"gathered", a.gathered},
+          {"first_gather_rays", a.first_rays},
+          {"gather_rays", a.rays},
+          {"rounds", a.rounds},
+          {"stop_reason", a.stop_reason}};
+}
+
+inline nlohmann::json gather_accuracy_json(const std::vector<GatherAccuracy>& grids) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const GatherAccuracy& a : grids) j.push_back(gather_accuracy_json(a));
+  return j;
+}
+
+/// Throws nlohmann::json::exception on a malformed record.
+inline std::vector<GatherAccuracy> gather_accuracy_from_json(const nlohmann::json& j) {
+  std::vector<GatherAccuracy> out;
+  for (const nlohmann::json& g : j) {
+    GatherAccuracy a;
+    a.gathered = g.at("gathered").get<bool>();
+    a.first_rays = g.at("first_gather_rays").get<int>();
+    a.rays = g.at("gather_rays").get<int>();
+    a.rounds = g.at("rounds").get<std::size_t>();
+    a.stop_reason = g.at("stop_reason").get<std::string>();
+    out.push_back(a);
+  }
+  return out;
+}
+
+}  // namespace dayphoton::study

@@ -1,0 +1,303 @@
+// The gather rounds of the accuracy target: see gather_accuracy_rounds.h.
+#include "dayphoton/study/gather_accuracy_rounds.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+#include <tbb/parallel_for.h>
+
+#include "dayphoton/core/units.h"
+#include "dayphoton/engine/daylight_coefficients.h"
+#include "dayphoton/engine/final_gather.h"
+#include "dayphoton/study/accuracy_policy.h"
+#include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/sensor_blocks.h"
+#include "lazy_value.h"
+
+namespace dayphoton::study {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string number(double x, const char* format = "%.3g") {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, x);
+  return buffer;
+}
+
+/// The smallest square >= n (the gather's k x k strata), at most GatherMaxRays.
+int square_at_least(double n) {
+  if (!(n > 1)) return 1;
+  if (n >= double(GatherMaxRays)) return GatherMaxRays;
+  int k = static_cast<int>(std::sqrt(n));
+  while (double(k) * k < n) ++k;
+  return std::min(k * k, GatherMaxRays);
+}
+
+/// Indices of the sensors with DF > 0 at or below the percentile (nearest rank), by relative
+/// error (as the photon rounds choose theirs).
+std::vector<std::size_t> at_or_below_percentile(const std::vector<double>& relative, const std::vector<double>& df,
+                                                double percentile) {
+  std::vector<std::size_t> lit;
+  for (std::size_t i = 0; i < df.size(); ++i)
+    if (df[i] > 0) lit.push_back(i);
+  std::stable_sort(lit.begin(), lit.end(), [&](std::size_t a, std::size_t b) { return relative[a] < relative[b]; });
+  const std::size_t keep = static_cast<std::size_t>(std::ceil(percentile / 100.0 * double(lit.size())));
+  lit.resize(std::min(lit.size(), keep));
+  return lit;
+}
+
+/// A sensor block's bytes: its coefficient artefact, then the fixed part of its gather variance
+/// (engine::GatheredCoefficients::fixed_photon_variance) as raw doubles.
+std::string frame_block(const std::string& coefficients, const std::vector<double>& fixed) {
+  const std::uint64_t size = coefficients.size();
+  std::string out(sizeof size, '\0');
+  std::memcpy(out.data(), &size, sizeof size);
+  out += coefficients;
+  const std::size_t at = out.size();
+  out.resize(at + fixed.size() * sizeof(double));
+  if (!fixed.empty()) std::memcpy(out.data() + at, fixed.data(), fixed.size() * sizeof(double));
+  return out;
+}
+
+/// The inverse: the coefficient artefact into `coefficients`, the doubles appended to `fixed`.
+void unframe_block(const std::string& block, std::string& coefficients, std::vector<double>& fixed) {
+  std::uint64_t size = 0;
+  if (block.size() < sizeof size) throw std::runtime_error("gather rounds: malformed sensor block");
+  std::memcpy(&size, block.data(), sizeof size);
+  const std::size_t rest = block.size() - sizeof size;
+  if (size > rest || (rest - size) % sizeof(double) != 0) throw std::runtime_error("gather rounds: malformed sensor block");
+  coefficients = block.substr(sizeof size, size);
+  const std::size_t count = (rest - size) / sizeof(double);
+  const std::size_t at = fixed.size();
+  fixed.resize(at + count);
+  if (count > 0) std::memcpy(fixed.data() + at, block.data() + sizeof size + size, count * sizeof(double));
+}
+
+/// One estimate of a gathered grid and its variances in DF units.
+struct GridEstimate {
+  engine::DaylightCoefficients dc;
+  std::vector<double> df_percent, direct_variance, gather_variance, fixed_variance;  ///< per sensor, (DF %)^2
+  double reached_percent = 0;
+};
+
+}  // namespace
+
+GatherRayPlan next_gather_rays(const std::vector<double>& df_percent, const std::vector<double>& direct_variance,
+                               const std::vector<double>& gather_variance, const std::vector<double>& fixed_variance,
+                               int rays, double aim_percent, double percentile) {
+  const std::size_t m = df_percent.size();
+  std::vector<double> relative(m, 0.0);
+  for (std::size_t i = 0; i < m; ++i)
+    relative[i] = df_percent[i] > 0
+                      ? 100.0 * std::sqrt(std::max(0.0, direct_variance[i] + gather_variance[i])) / df_percent[i]
+                      : 0.0;
+  GatherRayPlan plan;
+  double needed = rays;
+  for (const std::size_t i : at_or_below_percentile(relative, df_percent, percentile)) {
+    if (!(relative[i] > aim_percent)) continue;
+    ++plan.sensors_constrained;
+    const double allowed = aim_percent / 100.0 * df_percent[i];
+    const double budget = allowed * allowed - direct_variance[i];
+    if (!(budget > 0)) {
+      ++plan.sensors_direct_limited;
+      continue;
+    }
+    // V_g(N') = alpha + beta / N' (header comment).
+    const double v = std::max(0.0, gather_variance[i]);
+    const double alpha = std::clamp(fixed_variance[i], 0.0, v);
+    const double beta = (v - alpha) * rays;
+    if (!(budget > alpha) || !(beta > 0)) {
+      ++plan.sensors_photon_limited;
+      continue;
+    }
+    needed = std::max(needed, beta / (budget - alpha));
+  }
+  plan.rays = needed > rays ? square_at_least(std::min(needed, GatherMaxGrowth * rays)) : rays;
+  return plan;
+}
+
+void run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
+                                const std::vector<engine::SourcePhotonRecord>& records,
+                                const std::vector<std::vector<Vec3>>& direct,
+                                const std::vector<std::vector<double>>& direct_variance, double seconds_so_far,
+                                RoundWork& work, const std::function<void(const std::string&)>& log,
+                                AccuracyResult& result) {
+  const Clock::time_point start = Clock::now();
+  const std::vector<SensorGrid>& grids = *c.grids;
+  const std::size_t n = c.sources->size();
+  AccuracyOutcome& outcome = result.outcome;
+  outcome.gather.assign(grids.size(), GatherAccuracy{});
+  const int first_rays = square_at_least(double(std::max(1, c.estimating.gather.rays_per_sensor)));
+
+  // The overcast sky's weights: a sensor's DF variance is sum_p (df_scale L_p)^2 var_p.
+  const RadianceMatrix& sky = *c.overcast_vector;
+  const double df_scale = 100.0 * RadianceWhiteEfficacy_lm_per_W / c.horizontal_illuminance_lux;
+  std::vector<double> weight(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    const double l = sky.components() == 3 ? RgbLuminanceWeights.x * sky.at(p, 0, 0) +
+                                                 RgbLuminanceWeights.y * sky.at(p, 0, 1) +
+                                                 RgbLuminanceWeights.z * sky.at(p, 0, 2)
+                                           : double(sky.at(p, 0, 0));
+    weight[p] = df_scale * df_scale * l * l;
+  }
+  auto measure = [&](engine::DaylightCoefficients dc, const std::vector<double>& fixed) {
+    GridEstimate e;
+    e.fixed_variance.assign(dc.sensors, 0.0);
+    e.df_percent = daylight_factor_percent(dc.to_matrix(), sky, c.horizontal_illuminance_lux);
+    e.direct_variance.assign(dc.sensors, 0.0);
+    e.gather_variance.assign(dc.sensors, 0.0);
+    std::vector<double> stderr_percent(dc.sensors, 0.0);
+    for (std::size_t i = 0; i < dc.sensors; ++i) {
+      for (std::size_t p = 0; p < n; ++p) {
+        e.direct_variance[i] += weight[p] * dc.direct_variance[i * n + p];
+        e.gather_variance[i] += weight[p] * dc.photon_variance[i * n + p];
+        e.fixed_variance[i] += weight[p] * fixed[i * n + p];
+      }
+      stderr_percent[i] = std::sqrt(std::max(0.0, e.direct_variance[i] + e.gather_variance[i]));
+    }
+    e.reached_percent = percentile_relative_stderr_percent(e.df_percent, stderr_percent, AccuracyPercentile);
+    e.dc = std::move(dc);
+    return e;
+  };
+
+  // The photons of the last round, merged once, for any grid that needs more rays.
+  LazyValue<engine::GridPhotons> maps;
+  auto build = [&] {
+    std::vector<engine::TracedPhotons> scaled(n);
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t p) { scaled[p] = engine::scaled_source_photons(records[p]); });
+    return engine::GridPhotons::for_gather(engine::merge_traced_photons(std::move(scaled)).surface, n);
+  };
+  auto estimate = [&](std::size_t g, int rays, const std::string& name) {
+    const SensorGrid& grid = grids[g];
+    engine::CoefficientOptions options = c.estimating;
+    options.gather.rays_per_sensor = rays;
+    const std::vector<std::string> blocks = work.estimate(
+        grid.points.size(),
+        [&](std::size_t begin, std::size_t end) {
+          const engine::GridPhotons& gp = maps.get(build);
+          engine::DaylightCoefficients dc;
+          dc.sensors = end - begin;
+          dc.sources = n;
+          dc.direct.assign(direct[g].begin() + std::ptrdiff_t(begin * n), direct[g].begin() + std::ptrdiff_t(end * n));
+          dc.direct_variance.assign(direct_variance[g].begin() + std::ptrdiff_t(begin * n),
+                                    direct_variance[g].begin() + std::ptrdiff_t(end * n));
+          // The gather of photon_coefficients, with the part more rays do not reduce.
+          engine::GatheredCoefficients gathered = engine::gather_photon_coefficients(
+              *c.scene, *c.materials, *c.sources, gp.all(), grid.points, options.gather, &gp.groups(), {begin, end});
+          dc.caustic = std::move(gathered.caustic);
+          dc.global = std::move(gathered.global);
+          dc.photon_variance = std::move(gathered.variance);
+          return frame_block(encode_coefficients(dc), gathered.fixed_photon_variance);
+        },
+        name);
+    std::vector<std::string> coefficients(blocks.size());
+    std::vector<double> fixed;
+    for (std::size_t b = 0; b < blocks.size(); ++b) unframe_block(blocks[b], coefficients[b], fixed);
+    return measure(decode_coefficients(join_coefficient_blocks(coefficients)), fixed);
+  };
+
+  double elapsed_s = seconds_so_far;
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    if (grid_chased_by_photons(*c.plane_of_grid, c.gather, g)) continue;
+    GatherAccuracy& a = outcome.gather[g];
+    a.gathered = true;
+    a.first_rays = a.rays = first_rays;
+    if (outcome.reached_percent[g] <= goal.target_percent) {
+      a.stop_reason = "target met";
+      outcome.grid_status[g] = "met";
+      continue;
+    }
+    if (goal.max_seconds > 0 && work.agreed(elapsed_s + seconds_since(start)) >= goal.max_seconds) {
+      a.stop_reason = "time budget";
+      outcome.grid_status[g] = "above target";
+      log("accuracy: grid " + grids[g].name + ": no gather round: the time budget is spent");
+      continue;
+    }
+    // The photon rounds' estimate again, with its fixed part (the same coefficients: the
+    // same photons, rays and seed).
+    Clock::time_point t = Clock::now();
+    GridEstimate now = estimate(g, a.rays, "accuracy gather round 0, grid " + grids[g].name);
+    double seconds_per_ray = seconds_since(t) / a.rays;  // of the last estimate, per gather ray per sensor
+    for (;;) {
+      outcome.reached_percent[g] = now.reached_percent;
+      if (now.reached_percent <= goal.target_percent) {
+        a.stop_reason = "target met";
+        break;
+      }
+      if (a.rounds >= GatherMaxRounds) {
+        a.stop_reason = "round limit";
+        break;
+      }
+      if (a.rays >= GatherMaxRays) {
+        a.stop_reason = "gather ray limit";
+        break;
+      }
+      const GatherRayPlan plan = next_gather_rays(now.df_percent, now.direct_variance, now.gather_variance,
+                                                  now.fixed_variance, a.rays, AccuracyRoundAim * goal.target_percent,
+                                                  AccuracyPercentile);
+      if (plan.rays <= a.rays) {
+        a.stop_reason = plan.sensors_photon_limited > 0 ? "gather photon part" : "direct component";
+        log("accuracy: grid " + grids[g].name + ": " + std::to_string(plan.sensors_photon_limited) +
+            " sensor(s) above the aim by the gather's photon part (which more rays do not reduce: more photons "
+            "or simulation.gather_bandwidth would) and " +
+            std::to_string(plan.sensors_direct_limited) +
+            " by their direct component alone (simulation.direct_samples_per_bin)");
+        break;
+      }
+      if (goal.max_seconds > 0) {
+        // The first process's clock, so that every process stops alike (round_work.h); before
+        // the grid's first gather round only the time already spent counts.
+        const double spent = work.agreed(elapsed_s + seconds_since(start));
+        const double need = work.agreed(seconds_per_ray * plan.rays);
+        if (spent + need > goal.max_seconds) {
+          a.stop_reason = "time budget";
+          log("accuracy: grid " + grids[g].name + ": no gather round with " + std::to_string(plan.rays) +
+              " rays: it would take about " + number(need) + " s of the " + number(goal.max_seconds - spent) +
+              " s left");
+          break;
+        }
+      }
+      t = Clock::now();
+      now = estimate(g, plan.rays, "accuracy gather round " + std::to_string(a.rounds + 1) + ", grid " + grids[g].name);
+      seconds_per_ray = seconds_since(t) / plan.rays;
+      a.rays = plan.rays;
+      ++a.rounds;
+      log("accuracy gather round " + std::to_string(a.rounds) + ", grid " + grids[g].name + ": " +
+          std::to_string(a.rays) + " gather rays per sensor; DF relative standard error (" +
+          number(AccuracyPercentile, "%.0f") + "th percentile) " + number(now.reached_percent) + " % (target " +
+          number(goal.target_percent) + " %)");
+    }
+    result.coefficients[g] = std::move(now.dc);
+    outcome.grid_status[g] = outcome.reached_percent[g] <= goal.target_percent ? "met" : "above target";
+  }
+  // The run's stop: the photon rounds stopped because only gathered grids were left
+  // (met_stop_reason); now their own stops decide it.
+  if (outcome.stop_reason == "not reachable by photons") {
+    outcome.stop_reason = "target met";
+    for (std::size_t g = 0; g < grids.size(); ++g)
+      if (outcome.grid_status[g] != "met") {
+        outcome.stop_reason = outcome.gather[g].stop_reason;
+        break;
+      }
+  }
+}
+
+std::string gather_accuracy_note(const AccuracyOutcome& outcome, std::size_t grid) {
+  if (grid >= outcome.gather.size() || !outcome.gather[grid].gathered) return "";
+  const GatherAccuracy& a = outcome.gather[grid];
+  return " (final gather, " + std::to_string(a.rays) + " rays per sensor" +
+         (a.rounds > 0 ? ", " + std::to_string(a.rounds) + " gather round(s) from " + std::to_string(a.first_rays)
+                       : std::string()) +
+         ": " + a.stop_reason + ")";
+}
+
+}  // namespace dayphoton::study
