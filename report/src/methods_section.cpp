@@ -82,6 +82,7 @@ std::string methods_section(const study::ResultsModel& m) {
       if (d.accuracy)
         target = "95th percentile " + format_value(d.accuracy->reached_percent, Precision::DaylightFactor) +
                  " % (target " + format_value(d.accuracy->target_percent, Precision::DaylightFactor) + " %; " +
+                 (d.accuracy->status == "not reachable by photons" ? "not reachable by photons; " : "") +
                  d.accuracy->stop_reason + " after " + std::to_string(d.accuracy->rounds) + " rounds)";
       s << "<tr><td>" << esc(case_label(c)) << "</td><td>" << esc(g.name) << "</td><td class=\"n\">"
         << d.sensors_with_daylight << "</td><td class=\"n\">"
@@ -92,7 +93,7 @@ std::string methods_section(const study::ResultsModel& m) {
                                                             : std::string("-"))
         << "</td></tr>";
     }
-  s << "</table></section>";
+  s << "</table>" << accuracy_statements(m) << "</section>";
   return s.str();
 }
 

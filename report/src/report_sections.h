@@ -32,6 +32,16 @@ std::string variants_section(const study::ResultsModel& model);
 /// (validation_figures.h) and the uncertainty the run reached per grid.
 std::string methods_section(const study::ResultsModel& model);
 
+/// The accuracy statements (accuracy_statements.cpp), part of the methods section: per case
+/// and grid, in plain words, what the accuracy target's rounds reached for the sky patches
+/// (the daylight factor) and for the sun bins (the annual sun-bin illuminance), why they
+/// stopped and, for a grid above the target, why and what to change. Empty when the run gave
+/// photon counts.
+std::string accuracy_statements(const study::ResultsModel& model);
+/// The statement of one grid's sky or sun accuracy (no markup around it).
+std::string sky_accuracy_statement(const study::DaylightFactorSummary::AccuracyReached& accuracy);
+std::string sun_accuracy_statement(const study::SunAccuracyReached& accuracy);
+
 /// "appendix" (appendix_section.cpp): site, weather station, simulation settings, the run's
 /// times per step (timings.json in `results_dir`, read through study::read_run_timings; a
 /// folder without it says so), versions and notes.

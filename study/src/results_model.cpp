@@ -124,7 +124,8 @@ json grid_json(const GridResult& g) {
                                           {"reached_percent", acc->reached_percent},
                                           {"rounds", acc->rounds},
                                           {"photons", acc->photons},
-                                          {"stop_reason", acc->stop_reason}};
+                                          {"stop_reason", acc->stop_reason},
+                                          {"status", acc->status}};
   }
   if (const auto& a = g.annual) {
     json levels = json::array();
@@ -167,6 +168,15 @@ json grid_json(const GridResult& g) {
         {"da_verdicts_within_2_sigma",
          a->da_verdicts_within_2_sigma ? json(*a->da_verdicts_within_2_sigma) : json(nullptr)}};
   }
+  j["sun_accuracy"] = nullptr;
+  if (const auto& sa = g.sun_accuracy)
+    j["sun_accuracy"] = {{"target_percent", sa->target_percent},
+                         {"reached_percent", sa->reached_percent},
+                         {"hourly_percent", sa->hourly_percent},
+                         {"rounds", sa->rounds},
+                         {"photons", sa->photons},
+                         {"stop_reason", sa->stop_reason},
+                         {"status", sa->status}};
   json points = json::array();
   for (const PointInTimeSummary& p : g.points_in_time)
     points.push_back({{"name", p.name}, {"sky", p.sky}, {"mean_lux", p.mean_lux}, {"median_lux", p.median_lux},
@@ -226,6 +236,13 @@ struct Reader {
     const json& v = at(j, parent, key);
     if (!v.is_number()) fail(name(parent, key), "is not a number");
     return v.get<double>();
+  }
+  /// A grid's accuracy status (accuracy_policy.h's words).
+  std::string accuracy_status(const json& j, const std::string& parent) const {
+    const std::string s = text(j, parent, "status");
+    if (s != "met" && s != "above target" && s != "not reachable by photons")
+      fail(name(parent, "status"), "is not met, above target or not reachable by photons");
+    return s;
   }
   std::optional<double> optional_number(const json& j, const std::string& parent, const char* key) const {
     const json& v = at(j, parent, key);
@@ -418,9 +435,23 @@ struct Reader {
         r.rounds = count(acc, ck, "rounds");
         r.photons = count(acc, ck, "photons");
         r.stop_reason = text(acc, ck, "stop_reason");
+        r.status = accuracy_status(acc, ck);
         d.accuracy = r;
       }
       g.daylight_factor = d;
+    }
+    const json& sa = at(j, at_grid, "sun_accuracy");
+    if (!sa.is_null()) {
+      const std::string sak = at_grid + ".sun_accuracy";
+      SunAccuracyReached r;
+      r.target_percent = number(sa, sak, "target_percent");
+      r.reached_percent = number(sa, sak, "reached_percent");
+      r.hourly_percent = number(sa, sak, "hourly_percent");
+      r.rounds = count(sa, sak, "rounds");
+      r.photons = count(sa, sak, "photons");
+      r.stop_reason = text(sa, sak, "stop_reason");
+      r.status = accuracy_status(sa, sak);
+      g.sun_accuracy = r;
     }
     const json& an = at(j, at_grid, "annual");
     if (!an.is_null()) {
@@ -568,7 +599,12 @@ bool DaylightFactorSummary::operator==(const DaylightFactorSummary& o) const {
 }
 bool DaylightFactorSummary::AccuracyReached::operator==(const AccuracyReached& o) const {
   return target_percent == o.target_percent && reached_percent == o.reached_percent && rounds == o.rounds &&
-         photons == o.photons && stop_reason == o.stop_reason;
+         photons == o.photons && stop_reason == o.stop_reason && status == o.status;
+}
+bool SunAccuracyReached::operator==(const SunAccuracyReached& o) const {
+  return target_percent == o.target_percent && reached_percent == o.reached_percent &&
+         hourly_percent == o.hourly_percent && rounds == o.rounds && photons == o.photons &&
+         stop_reason == o.stop_reason && status == o.status;
 }
 bool OccupancySummary::operator==(const OccupancySummary& o) const {
   return kind == o.kind && start_h == o.start_h && end_h == o.end_h && description == o.description &&
@@ -636,7 +672,7 @@ bool GridResult::operator==(const GridResult& o) const {
          orientation == o.orientation && plan == o.plan && lattice == o.lattice && outline == o.outline &&
          openings_drawn == o.openings_drawn && dropped_outside_rooms == o.dropped_outside_rooms &&
          dropped_inside_solid == o.dropped_inside_solid && quantities == o.quantities &&
-         daylight_factor == o.daylight_factor && annual == o.annual && points_in_time == o.points_in_time &&
+         daylight_factor == o.daylight_factor && annual == o.annual && sun_accuracy == o.sun_accuracy && points_in_time == o.points_in_time &&
          has_illuminance_table == o.has_illuminance_table && spacing_m == o.spacing_m && verdicts == o.verdicts;
 }
 bool CaseResult::operator==(const CaseResult& o) const {

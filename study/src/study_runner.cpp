@@ -216,7 +216,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       if (accuracy)
         ctx.results->grids.back().daylight_factor->accuracy = DaylightFactorSummary::AccuracyReached{
             accuracy->target_percent, accuracy->reached_percent[g], accuracy->rounds, accuracy->photons,
-            accuracy->stop_reason};
+            accuracy->stop_reason, accuracy->grid_status[g]};
     }
     if (accuracy)
       gj["accuracy"] = {{"target_df_relative_stderr_percent", accuracy->target_percent},
@@ -262,7 +262,11 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     const std::vector<GridSun> sun =
         run_sun_bins(project, prefix, cs, ss, bins, ctx, project.outputs.coefficients, &sun_accuracy);
     if (sun_accuracy)
-      for (std::size_t g = 0; g < description.grids.size(); ++g)
+      for (std::size_t g = 0; g < description.grids.size(); ++g) {
+        ctx.results->grids[g].sun_accuracy = SunAccuracyReached{
+            sun_accuracy->target_percent, sun_accuracy->reached_percent[g], sun_accuracy->hourly_percent[g],
+            sun_accuracy->rounds,         sun_accuracy->photons,            sun_accuracy->stop_reason,
+            sun_accuracy->grid_status[g]};
         grids_json[g]["accuracy"]["sun"] = {
             {"target_relative_stderr_percent", sun_accuracy->target_percent},
             {"reached_relative_stderr_percent", sun_accuracy->reached_percent[g]},
@@ -274,6 +278,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
             {"photons", sun_accuracy->photons},
             {"attempts", sun_accuracy->attempts},
             {"stop_reason", sun_accuracy->stop_reason}};
+      }
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run

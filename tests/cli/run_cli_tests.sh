@@ -220,6 +220,49 @@ else
   echo "FAIL run_daylight_factor_only_no_sun_step"; cat "$latin1/results/run.log"; failed=$((failed + 1))
 fi
 
+# The accuracy target with sun bins in an annual run (tests/cli/cases/accuracy_sun.yaml, the
+# draft preset): results.json's typed accuracy of the sky and of the sun bins equals
+# summary.json's, and report.html states both in words with those numbers at the report's
+# precision (docs/report.md "uncertainty").
+"$bin" run tests/cli/cases/accuracy_sun.yaml --output "$scratch/accuracy_sun" --quiet >"$scratch/accuracy_sun.out" 2>&1
+code=$?
+if [ "$code" -eq 0 ] && python3 - "$scratch/accuracy_sun" <<'PY'
+import json, sys
+d = sys.argv[1]
+grid = json.load(open(d + "/results.json"))["cases"][0]["grids"][0]
+summary = json.load(open(d + "/summary.json"))["grids"][0]["accuracy"]
+sky, sun, ssun = grid["daylight_factor"]["accuracy"], grid["sun_accuracy"], summary["sun"]
+assert sky == {"target_percent": summary["target_df_relative_stderr_percent"],
+               "reached_percent": summary["reached_df_relative_stderr_percent"], "rounds": summary["rounds"],
+               "photons": summary["photons"], "stop_reason": summary["stop_reason"], "status": summary["status"]}, sky
+assert sun == {"target_percent": ssun["target_relative_stderr_percent"],
+               "reached_percent": ssun["reached_relative_stderr_percent"],
+               "hourly_percent": ssun["hourly_relative_stderr_percent"], "rounds": ssun["rounds"],
+               "photons": ssun["photons"], "stop_reason": ssun["stop_reason"], "status": ssun["status"]}, sun
+def pct(v):  # the report's DF precision: 0.1 from 1 up, 2 significant digits below
+    return f"{v:.1f}" if v >= 1 else f"{v:.2g}"
+def photons(n):
+    return f"{n / 1e6:.1f} million" if n >= 1e6 else f"{n:,}".replace(",", " ")
+def rounds(n):
+    return f"{n} round" + ("" if n == 1 else "s")
+html = open(d + "/report.html").read()
+for part, a in (("sky", sky), ("sun", sun)):
+    start = html.index(f'<li class="accuracy" data-part="{part}" data-case="base" data-grid="desks">')
+    item = html[start:html.index("</li>", start)]
+    expect = (f"the target is a relative standard error of at most {pct(a['target_percent'])} % at the 95th "
+              f"percentile of the sensors (19 sensors in 20 are at or below it). Reached {pct(a['reached_percent'])} % "
+              f"after {rounds(a['rounds'])} of photon tracing ({photons(a['photons'])} photons). ")
+    assert expect in item, (expect, item)
+    assert ("Target met." in item) == (a["status"] == "met"), item
+sun_item = html[html.index('data-part="sun"'):]
+assert f"One hour's sun-bin value carries more: {pct(sun['hourly_percent'])} %" in sun_item, sun_item[:600]
+PY
+then
+  echo "ok   run_accuracy_sun_bins_reported"; passed=$((passed + 1))
+else
+  echo "FAIL run_accuracy_sun_bins_reported: exit $code"; cat "$scratch/accuracy_sun.out"; failed=$((failed + 1))
+fi
+
 # annual: recomputes tables and metrics from exported coefficients (a synthetic 2-sensor grid).
 EPW=projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw
 check_case annual_missing_folder 1 annual --coefficients tests/cli/cases/does_not_exist --weather $EPW

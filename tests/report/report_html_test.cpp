@@ -534,6 +534,74 @@ TEST(ReportHtml, ValuesAndVerdictsComeFromTheModel) {
   EXPECT_NE(html.find("changes: window south removed", variant), std::string::npos);
 }
 
+TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {
+  // A run with an accuracy target: the base grid's sky met it, its sun bins stopped on the
+  // photon budget above it; the wall grid (gathered) is not reachable by photons; the variant
+  // met both. The numbers are the model's, at the report's precision.
+  const std::string dir = temp_dir("accuracy");
+  ResultsModel m = results_model(dir);
+  using Acc = DaylightFactorSummary::AccuracyReached;
+  m.cases[0].grids[0].daylight_factor->accuracy = Acc{1.0, 0.934, 3, 4105000, "not reachable by photons", "met"};
+  m.cases[0].grids[0].sun_accuracy = SunAccuracyReached{1.0, 1.62, 11.4, 5, 33500000, "photon budget", "above target"};
+  m.cases[0].grids[1].daylight_factor->accuracy =
+      Acc{1.0, 1.27, 3, 4105000, "not reachable by photons", "not reachable by photons"};
+  m.cases[0].grids[1].sun_accuracy = SunAccuracyReached{1.0, 0.8, 7.2, 5, 33500000, "photon budget", "met"};
+  m.cases[1].grids[0].daylight_factor->accuracy = Acc{1.0, 0.81, 2, 950000, "target met", "met"};
+  m.cases[1].grids[0].sun_accuracy = SunAccuracyReached{1.0, 0.76, 9.6, 3, 4410000, "target met", "met"};
+  write_results_model(m, dir);
+  const std::string html = report_html(dir);
+  const std::size_t at = html.find("<h3 id=\"accuracy\">");
+  ASSERT_NE(at, std::string::npos);
+  const std::string part = html.substr(at, html.find("</ul>", at) - at);
+  auto item = [&](const std::string& attrs) {
+    const std::size_t i = part.find("<li class=\"accuracy\" " + attrs + ">");
+    return i == std::string::npos ? std::string() : part.substr(i, part.find("</li>", i) - i);
+  };
+  // The sky of the base grid: target, measure, reached, rounds, photons; met, while the rounds
+  // stopped for the gathered wall grid.
+  const std::string sky = item("data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
+  EXPECT_NE(sky.find("Daylight factor (sky patches): the target is a relative standard error of at most 1.0 % at the "
+                     "95th percentile of the sensors (19 sensors in 20 are at or below it). Reached 0.93 % after 3 "
+                     "rounds of photon tracing (4.1 million photons). Target met. (The rounds serve every grid of "
+                     "the case; they stopped with \"not reachable by photons\" for another grid.)"),
+            std::string::npos)
+      << sky;
+  // Its sun bins: above the target, why (the photon budget) and what to do.
+  const std::string sun = item("data-part=\"sun\" data-case=\"base\" data-grid=\"north_wing\"");
+  EXPECT_NE(sun.find("Annual sun-bin illuminance (the indirect sunlight of every sun hour, summed over the year): "
+                     "the target is a relative standard error of at most 1.0 % at the 95th percentile"),
+            std::string::npos)
+      << sun;
+  EXPECT_NE(sun.find("Reached 1.6 % after 5 rounds of photon tracing (33.5 million photons). <strong>Above the "
+                     "target.</strong> Why: the photon budget was reached first. What to do: raise "
+                     "<code>simulation.accuracy.max_photons</code>"),
+            std::string::npos)
+      << sun;
+  EXPECT_NE(sun.find("One hour's sun-bin value carries more: 11.4 % at the same percentile"), std::string::npos) << sun;
+  // The gathered wall grid: not reachable by photons, and gather_rays is what lowers it.
+  const std::string wall = item("data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
+  EXPECT_NE(wall.find("Reached 1.3 % after 3 rounds of photon tracing (4.1 million photons). <strong>Above the target "
+                      "and not reachable by photons.</strong> Why: this grid's sensors are estimated by final gather"),
+            std::string::npos)
+      << wall;
+  EXPECT_NE(wall.find("What to do: raise <code>simulation.gather_rays</code>."), std::string::npos) << wall;
+  // The variant, in its own words: both met, photons below a million in whole numbers.
+  const std::string vsky = item("data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
+  EXPECT_NE(vsky.find("Reached 0.81 % after 2 rounds of photon tracing (950 000 photons). Target met."), std::string::npos)
+      << vsky;
+  EXPECT_EQ(vsky.find("stopped with"), std::string::npos) << vsky;
+  const std::string vsun = item("data-part=\"sun\" data-case=\"tinted\" data-grid=\"north_wing\"");
+  EXPECT_NE(vsun.find("Reached 0.76 % after 3 rounds of photon tracing (4.4 million photons). Target met."),
+            std::string::npos)
+      << vsun;
+  // The uncertainty table marks the gathered grid too.
+  EXPECT_NE(html.find("<td>95th percentile 1.3 % (target 1.0 %; not reachable by photons; not reachable by photons "
+                      "after 3 rounds)</td>"),
+            std::string::npos);
+  // A run with photon counts has no statements.
+  EXPECT_EQ(shared_report().find("id=\"accuracy\""), std::string::npos);
+}
+
 TEST(ReportHtml, DeterministicAndWrittenAtomically) {
   const std::string dir = write_results("deterministic");
   EXPECT_EQ(report_html(dir), report_html(dir));

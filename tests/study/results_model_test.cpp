@@ -83,6 +83,9 @@ ResultsModel full_model() {
                   {"daylight_factor", "daylight_factor.csv", "df_percent", "daylight_factor", "daylight factor", "%",
                    QuantityScale::DaylightFactor, "daylight factor"}};
   g.daylight_factor = DaylightFactorSummary{1.5, 1.25, 0.1, 3.3, 0.0667, {{2.0, 33.3}, {1.0, 66.7}}, 4.5, 9.25, 3, std::nullopt};
+  g.daylight_factor->accuracy =
+      DaylightFactorSummary::AccuracyReached{2.0, 2.4, 3, 4100000, "photon budget", "above target"};
+  g.sun_accuracy = SunAccuracyReached{2.0, 1.75, 9.5, 2, 3200000, "target met", "met"};
   AnnualSummary a;
   a.sensors = 3;
   a.time_steps = 8760;
@@ -180,6 +183,15 @@ TEST(ResultsModel, RoundTripsEveryField) {
   changed.cases[1].grids[0].verdicts[0].outcome = "fail";
   EXPECT_FALSE(changed == m);
   changed = back;
+  changed.cases[1].grids[0].daylight_factor->accuracy->status = "met";
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].sun_accuracy->hourly_percent = 9.4;
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].sun_accuracy->status = "above target";
+  EXPECT_FALSE(changed == m);
+  changed = back;
   changed.not_assessed.pop_back();
   EXPECT_FALSE(changed == m);
   EXPECT_NEAR(back.cases[1].rooms[0].window_to_wall_ratio(), 6.0 / 18, 1e-12);
@@ -200,10 +212,17 @@ TEST(ResultsModel, BadFieldsAreErrorsNamingTheKey) {
   EXPECT_NE(error_of(std::regex_replace(text, std::regex(",\\s*\"weather_file\": \"w.epw\""), ""))
                 .find("'weather_file' is missing"),
             std::string::npos);
-  const std::string version = error_of(std::regex_replace(text, std::regex("\"schema_version\": 2"), "\"schema_version\": 1"));
-  EXPECT_NE(version.find("schema version 1"), std::string::npos) << version;
-  const std::string version3 = error_of(std::regex_replace(text, std::regex("\"schema_version\": 2"), "\"schema_version\": 3"));
-  EXPECT_NE(version3.find("schema version 3"), std::string::npos) << version3;
+  const std::string version = error_of(std::regex_replace(text, std::regex("\"schema_version\": 3"), "\"schema_version\": 2"));
+  EXPECT_NE(version.find("schema version 2"), std::string::npos) << version;
+  const std::string version4 = error_of(std::regex_replace(text, std::regex("\"schema_version\": 3"), "\"schema_version\": 4"));
+  EXPECT_NE(version4.find("schema version 4"), std::string::npos) << version4;
+  // The accuracy statuses are known words, and every field of the sun's accuracy is required.
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"status\": \"above target\""), "\"status\": \"above\""))
+                .find("daylight_factor.accuracy.status' is not met, above target or not reachable by photons"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"hourly_percent\": 9.5,\\s*"), ""))
+                .find("'cases[tinted].grids[workplane].sun_accuracy.hourly_percent' is missing"),
+            std::string::npos);
   EXPECT_NE(version.find("run the study again"), std::string::npos) << version;
   EXPECT_NE(error_of("[1, 2").find("not a JSON object"), std::string::npos);
   // The occupancy's definition is checked as it is read.

@@ -25,7 +25,7 @@
 namespace dayphoton::study {
 
 /// Version of results.json's layout; raised when a field changes meaning or is removed.
-constexpr int ResultsSchemaVersion = 2;
+constexpr int ResultsSchemaVersion = 3;
 /// The file's name in the output folder.
 constexpr const char* ResultsFileName = "results.json";
 
@@ -83,7 +83,10 @@ struct DaylightFactorSummary {
     double reached_percent = 0;  ///< its 95th percentile over the sensors after the last round, %
     std::size_t rounds = 0;
     std::uint64_t photons = 0;   ///< stored photons of all sky sources
-    std::string stop_reason;     ///< "target met", "photon budget", ...
+    std::string stop_reason;     ///< "target met", "photon budget", ... (why the rounds of the case stopped)
+    /// The grid's own: "met", "above target" (stop_reason says why) or "not reachable by
+    /// photons" (a grid estimated by final gather above the target: accuracy_policy.h).
+    std::string status;
 
     bool operator==(const AccuracyReached& o) const;
   };
@@ -181,6 +184,22 @@ struct Verdict {
   bool operator==(const Verdict& o) const;
 };
 
+/// What the sun bins' accuracy rounds reached on a grid (`sun: bins` with an accuracy target;
+/// docs/photon-tracing.md "Accuracy target", "The sun bins"). The measure is the 95th
+/// percentile, over the sensors with sun-bin light, of the relative standard error of the
+/// sensor's annual sun-bin illuminance (the year's indirect sun summed over every hour).
+struct SunAccuracyReached {
+  double target_percent = 0;   ///< asked for (the same target as the sky's), %
+  double reached_percent = 0;  ///< the annual measure at the percentile after the last round, %
+  double hourly_percent = 0;   ///< one hour's relative standard error at the percentile (reported, not targeted), %
+  std::size_t rounds = 0;
+  std::uint64_t photons = 0;   ///< stored photons of all sun bins of the case
+  std::string stop_reason;     ///< "target met", "not reachable by photons", "photon budget", "round limit", "no light"
+  std::string status;          ///< the grid's own: "met", "above target", "not reachable by photons"
+
+  bool operator==(const SunAccuracyReached& o) const;
+};
+
 struct GridResult {
   std::string name;
   std::string folder;  ///< relative to the output folder, '/'-separated
@@ -194,6 +213,7 @@ struct GridResult {
   std::vector<SensorQuantity> quantities;   ///< in the report's order
   std::optional<DaylightFactorSummary> daylight_factor;
   std::optional<AnnualSummary> annual;
+  std::optional<SunAccuracyReached> sun_accuracy;  ///< none: no sun-bin accuracy rounds
   std::vector<PointInTimeSummary> points_in_time;
   bool has_illuminance_table = false;  ///< illuminance.bin in the folder (steps x sensors, lux)
   double spacing_m = 0;  ///< the grid's sensor spacing as generated; 0 for point sets
