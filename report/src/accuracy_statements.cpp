@@ -10,6 +10,7 @@
 
 #include "dayphoton/report/report_format.h"
 #include "dayphoton/study/accuracy_rounds.h"
+#include "dayphoton/study/gather_accuracy_rounds.h"
 #include "report_sections.h"
 
 namespace dayphoton::report {
@@ -70,6 +71,16 @@ std::string why_and_what_to_do(const Reached& r) {
     return "Why: the sensors still above the target are so by the noise of their direct light (the shadow rays "
            "toward the sky through the openings), which more photons do not reduce. What to do: raise "
            "<code>simulation.direct_samples_per_bin</code>.";
+  if (r.stop_reason == "gather ray limit")
+    return "Why: this grid's sensors are estimated by final gather (rays traced from each sensor), and the "
+           "gather rounds reached their limit of " + std::to_string(study::GatherMaxRays) +
+           " rays per sensor. What to do: ask for a looser target, or place these sensors where the photons "
+           "reach them (a work plane rather than points in the air or on a wall).";
+  if (r.stop_reason == "gather photon part")
+    return "Why: this grid's sensors are estimated by final gather, and what remains of their error comes from "
+           "the photons the gather rays read, which more gather rays do not reduce. What to do: give fixed "
+           "photon counts (<code>simulation.photons_per_bin</code>, instead of the accuracy target) above the "
+           "photons the rounds traced, or ask for a looser target.";
   if (r.stop_reason == "no light") return "Why: no light reaches the grid's sensors, so there is nothing to measure.";
   return "Why: the rounds stopped with \"" + esc(r.stop_reason) + "\".";
 }
