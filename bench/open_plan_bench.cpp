@@ -91,8 +91,17 @@ int main(int argc, char** argv) {
               "CPU per sensor; load average %s at the start, %s at the end\n",
               seconds, 1000.0 * seconds / double(sensors > 0 ? sensors : 1), cpu_seconds(),
               1000.0 * cpu_seconds() / double(sensors > 0 ? sensors : 1), load_at_start.c_str(), load_average().c_str());
-  for (const study::Progress::StepTime& s : progress.steps())
-    std::printf("  %-28s %8.2f s\n", s.name.c_str(), s.seconds);
+  // Each step's wall and CPU seconds (all threads), and what the run did after its last step
+  // (the results model, hashing the outputs for the manifest, summary.json).
+  double step_wall = 0, step_cpu = 0;
+  std::printf("  %-30s %8s %8s %6s\n", "step", "wall s", "CPU s", "CPU/wall");
+  for (const study::Progress::StepTime& s : progress.steps()) {
+    std::printf("  %-30s %8.2f %8.2f %6.2f\n", s.name.c_str(), s.seconds, s.cpu_seconds,
+                s.seconds > 0 ? s.cpu_seconds / s.seconds : 0.0);
+    step_wall += s.seconds;
+    step_cpu += s.cpu_seconds;
+  }
+  std::printf("  %-30s %8.2f %8.2f\n", "outside the steps", seconds - step_wall, cpu_seconds() - step_cpu);
   const double results_mib = double(folder_bytes(out)) / (1024.0 * 1024.0);
   const double cache_mib = double(folder_bytes(cache)) / (1024.0 * 1024.0);
   std::printf("peak RSS %.0f MiB; results %.1f MiB (%.1f KiB per sensor); cache %.1f MiB\n", peak_rss_mib(),

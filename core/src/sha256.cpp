@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "sha256_x86.h"
+
 namespace dayphoton {
 
 namespace {
@@ -26,8 +28,9 @@ constexpr std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (
 
 }  // namespace
 
-Sha256::Sha256()
-    : m_state{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19} {}
+Sha256::Sha256(Rounds rounds)
+    : m_hardware(rounds == Rounds::Fastest && detail::sha256_x86_available()),
+      m_state{0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19} {}
 
 void Sha256::block(const std::uint8_t* p) {
   std::uint32_t w[64];
@@ -63,14 +66,25 @@ void Sha256::block(const std::uint8_t* p) {
   m_state[7] += h;
 }
 
+bool Sha256::hardware_rounds() { return detail::sha256_x86_available(); }
+
+void Sha256::blocks(const std::uint8_t* p, std::size_t count) {
+  if (m_hardware) {
+    detail::sha256_x86_blocks(m_state.data(), p, count);
+    return;
+  }
+  for (std::size_t i = 0; i < count; ++i) block(p + 64 * i);
+}
+
 void Sha256::update(const void* data, std::size_t size) {
   const auto* p = static_cast<const std::uint8_t*>(data);
   m_bytes += size;
   while (size > 0) {
     if (m_buffered == 0 && size >= 64) {
-      block(p);
-      p += 64;
-      size -= 64;
+      const std::size_t count = size / 64;
+      blocks(p, count);
+      p += 64 * count;
+      size -= 64 * count;
       continue;
     }
     const std::size_t n = std::min(size, 64 - m_buffered);
@@ -79,7 +93,7 @@ void Sha256::update(const void* data, std::size_t size) {
     p += n;
     size -= n;
     if (m_buffered == 64) {
-      block(m_buffer.data());
+      blocks(m_buffer.data(), 1);
       m_buffered = 0;
     }
   }

@@ -8,9 +8,24 @@
 #include <iterator>
 #include <stdexcept>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 namespace dayphoton::metrics {
 
 namespace {
+
+/// Sensors per task of the per-sensor counts. Every sensor's sums run over the steps in step
+/// order whatever the split, so the values do not depend on it nor on the thread count; a
+/// task reads its sensors' part of each step's row, so the table is read in order.
+constexpr std::size_t SensorsPerTask = 256;
+
+/// fn(begin, end) over the sensors [0, n) in blocks of SensorsPerTask, in parallel.
+template <class Fn>
+void for_sensor_blocks(std::size_t n, const Fn& fn) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, SensorsPerTask),
+                    [&](const tbb::blocked_range<std::size_t>& r) { fn(r.begin(), r.end()); });
+}
 
 void check_shapes(const IlluminanceTable& table, const OccupancySchedule& occupancy) {
   if (table.step_count() != occupancy.step_count())
@@ -43,33 +58,37 @@ std::vector<SensorMetrics> compute_sensor_metrics(const IlluminanceTable& table,
   const double low = settings.udi_lower_lux;
   const double up1 = settings.udi_upper_original_lux;
   const double up2 = settings.udi_upper_revised_lux;
-  for (std::size_t t = 0; t < table.step_count(); ++t) {
-    if (!occupancy.occupied(t)) continue;
-    for (std::size_t s = 0; s < n_sensors; ++s) {
-      const double e = table.lux(t, s);
-      SensorMetrics& m = result[s];
-      m.da_percent += e >= x;
-      m.cda_percent += std::min(1.0, e / x);
-      m.da_max_percent += e > 10 * x;
-      m.udi_below_percent += e < low;
-      m.udi_original_percent += e >= low && e <= up1;
-      m.udi_above_original_percent += e > up1;
-      m.udi_supplementary_percent += e >= low && e < x;
-      m.udi_autonomous_percent += e >= x && e <= up2;
-      m.udi_above_revised_percent += e > up2;
-      m.mean_occupied_lux += e;
+  // Each sensor's sums over the occupied steps in step order (for_sensor_blocks).
+  for_sensor_blocks(n_sensors, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = 0; t < table.step_count(); ++t) {
+      if (!occupancy.occupied(t)) continue;
+      for (std::size_t s = begin; s < end; ++s) {
+        const double e = table.lux(t, s);
+        SensorMetrics& m = result[s];
+        m.da_percent += e >= x;
+        m.cda_percent += std::min(1.0, e / x);
+        m.da_max_percent += e > 10 * x;
+        m.udi_below_percent += e < low;
+        m.udi_original_percent += e >= low && e <= up1;
+        m.udi_above_original_percent += e > up1;
+        m.udi_supplementary_percent += e >= low && e < x;
+        m.udi_autonomous_percent += e >= x && e <= up2;
+        m.udi_above_revised_percent += e > up2;
+        m.mean_occupied_lux += e;
+      }
     }
-  }
-  for (SensorMetrics& m : result) {
-    // 100 * count / n (not count * (100 / n)): correctly rounded, so exactly half the hours
-    // gives exactly 50 % and the sDA ">= 50 %" test cannot fail on rounding.
-    for (double* v : {&m.da_percent, &m.cda_percent, &m.da_max_percent, &m.udi_below_percent,
-                      &m.udi_original_percent, &m.udi_above_original_percent,
-                      &m.udi_supplementary_percent, &m.udi_autonomous_percent,
-                      &m.udi_above_revised_percent})
-      *v = 100.0 * *v / n_occupied;
-    m.mean_occupied_lux /= n_occupied;
-  }
+    for (std::size_t s = begin; s < end; ++s) {
+      SensorMetrics& m = result[s];
+      // 100 * count / n (not count * (100 / n)): correctly rounded, so exactly half the hours
+      // gives exactly 50 % and the sDA ">= 50 %" test cannot fail on rounding.
+      for (double* v : {&m.da_percent, &m.cda_percent, &m.da_max_percent, &m.udi_below_percent,
+                        &m.udi_original_percent, &m.udi_above_original_percent,
+                        &m.udi_supplementary_percent, &m.udi_autonomous_percent,
+                        &m.udi_above_revised_percent})
+        *v = 100.0 * *v / n_occupied;
+      m.mean_occupied_lux /= n_occupied;
+    }
+  });
   return result;
 }
 
@@ -78,11 +97,12 @@ std::vector<int> ase_hours_per_sensor(const IlluminanceTable& direct_sun,
                                       const MetricSettings& settings) {
   check_shapes(direct_sun, occupancy);
   std::vector<int> hours(direct_sun.sensor_count(), 0);
-  for (std::size_t t = 0; t < direct_sun.step_count(); ++t) {
-    if (!occupancy.occupied(t)) continue;
-    for (std::size_t s = 0; s < hours.size(); ++s)
-      hours[s] += direct_sun.lux(t, s) >= settings.ase_threshold_lux;
-  }
+  for_sensor_blocks(hours.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = 0; t < direct_sun.step_count(); ++t) {
+      if (!occupancy.occupied(t)) continue;
+      for (std::size_t s = begin; s < end; ++s) hours[s] += direct_sun.lux(t, s) >= settings.ase_threshold_lux;
+    }
+  });
   return hours;
 }
 
@@ -123,37 +143,42 @@ std::vector<En17037Result> en17037_daylight_provision(const IlluminanceTable& ta
   check_shapes(table, daylight_hours);
   const double n_hours = static_cast<double>(daylight_hours.occupied_count());
   const std::size_t n_sensors = table.sensor_count();
-  // Hours reached per level and sensor, counted step by step: the table is stored step by
-  // step, so this reads it in order (a sensor's column at a time strode through all of it,
-  // once per level).
+  // Hours reached per level and sensor, counted step by step within a block of sensors (the
+  // table is stored step by step, so a block reads its part of each row in order), then
+  // whether each point meets each target; the area fractions are summed below in sensor
+  // order, so no value depends on the blocks or the thread count.
   constexpr std::size_t Levels = std::size(En17037Levels);
-  std::vector<std::size_t> hours_target(Levels * n_sensors, 0), hours_minimum(Levels * n_sensors, 0);
-  for (std::size_t t = 0; t < table.step_count(); ++t) {
-    if (!daylight_hours.occupied(t)) continue;
-    for (std::size_t l = 0; l < Levels; ++l) {
-      const double target_lux = En17037Levels[l].target_lux, minimum_lux = En17037Levels[l].minimum_target_lux;
-      std::size_t* reached_target = hours_target.data() + l * n_sensors;
-      std::size_t* reached_minimum = hours_minimum.data() + l * n_sensors;
-      for (std::size_t s = 0; s < n_sensors; ++s) {
-        const double e = table.lux(t, s);
-        reached_target[s] += e >= target_lux;
-        reached_minimum[s] += e >= minimum_lux;
+  std::vector<std::vector<double>> target(Levels, std::vector<double>(n_sensors)), minimum = target;
+  for_sensor_blocks(n_sensors, [&](std::size_t begin, std::size_t end) {
+    const std::size_t n = end - begin;
+    std::vector<std::size_t> hours_target(Levels * n, 0), hours_minimum(Levels * n, 0);
+    for (std::size_t t = 0; t < table.step_count(); ++t) {
+      if (!daylight_hours.occupied(t)) continue;
+      for (std::size_t l = 0; l < Levels; ++l) {
+        const double target_lux = En17037Levels[l].target_lux, minimum_lux = En17037Levels[l].minimum_target_lux;
+        std::size_t* reached_target = hours_target.data() + l * n;
+        std::size_t* reached_minimum = hours_minimum.data() + l * n;
+        for (std::size_t s = begin; s < end; ++s) {
+          const double e = table.lux(t, s);
+          reached_target[s - begin] += e >= target_lux;
+          reached_minimum[s - begin] += e >= minimum_lux;
+        }
       }
     }
-  }
+    // A point meets a target when it is reached for at least half of the daylight hours.
+    for (std::size_t l = 0; l < Levels; ++l)
+      for (std::size_t s = begin; s < end; ++s) {
+        target[l][s] = n_hours > 0 && double(hours_target[l * n + s - begin]) >= 0.5 * n_hours ? 100.0 : 0.0;
+        minimum[l][s] = n_hours > 0 && double(hours_minimum[l * n + s - begin]) >= 0.5 * n_hours ? 100.0 : 0.0;
+      }
+  });
   std::vector<En17037Result> results;
   for (std::size_t l = 0; l < Levels; ++l) {
     const En17037Level& level = En17037Levels[l];
-    std::vector<double> target(n_sensors), minimum(n_sensors);
-    for (std::size_t s = 0; s < n_sensors; ++s) {
-      // A point meets a target when it is reached for at least half of the daylight hours.
-      target[s] = n_hours > 0 && double(hours_target[l * n_sensors + s]) >= 0.5 * n_hours ? 100.0 : 0.0;
-      minimum[s] = n_hours > 0 && double(hours_minimum[l * n_sensors + s]) >= 0.5 * n_hours ? 100.0 : 0.0;
-    }
     En17037Result r;
     r.level = level.name;
-    r.target_area_percent = weighted_mean(target, area_weights);
-    r.minimum_target_area_percent = weighted_mean(minimum, area_weights);
+    r.target_area_percent = weighted_mean(target[l], area_weights);
+    r.minimum_target_area_percent = weighted_mean(minimum[l], area_weights);
     r.passes = r.target_area_percent >= 50.0 && r.minimum_target_area_percent >= 95.0;
     results.push_back(r);
   }

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <tbb/parallel_invoke.h>
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
@@ -281,6 +282,15 @@ std::vector<std::string> write_annual_outputs(const AnnualStudy& study, const st
     written.push_back((dir / "grid_metrics.json").string());
     write_file_atomically(written.back(), grid_metrics_json(study, settings) + "\n");
   }
+  return written;
+}
+
+std::vector<std::string> write_annual_outputs_beside(const AnnualStudy& study, const std::vector<SensorPoint>& sensors,
+                                                     const AnnualStudySettings& settings, const std::string& folder,
+                                                     const AnnualOutputs& outputs,
+                                                     const std::function<void()>& alongside) {
+  std::vector<std::string> written;
+  tbb::parallel_invoke([&] { written = write_annual_outputs(study, sensors, settings, folder, outputs); }, alongside);
   return written;
 }
 

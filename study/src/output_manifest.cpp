@@ -3,11 +3,13 @@
 
 #include <cerrno>
 #include <cstring>
+#include <exception>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <tbb/parallel_for.h>
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/sha256.h"
@@ -137,9 +139,21 @@ std::vector<ManifestEntry> OutputManifest::entries() const {
   for (const std::string& relative : m_recorded) {  // std::set: sorted
     ManifestEntry e;
     e.path = relative;
-    e.sha256 = sha256_file_hex((fs::path(m_dir) / relative).string(), &e.bytes);
     out.push_back(std::move(e));
   }
+  // The files are independent: hashed in parallel, each into its own entry (grain 1: one
+  // large file, illuminance.bin, is most of the bytes); a failure is reported for the first
+  // such file in path order, whatever the threads.
+  std::vector<std::exception_ptr> failures(out.size());
+  tbb::parallel_for(std::size_t(0), out.size(), [&](std::size_t i) {
+    try {
+      out[i].sha256 = sha256_file_hex((fs::path(m_dir) / out[i].path).string(), &out[i].bytes);
+    } catch (...) {
+      failures[i] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& f : failures)
+    if (f) std::rethrow_exception(f);
   return out;
 }
 

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
+#include <tbb/parallel_invoke.h>
 
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
@@ -282,20 +283,27 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];
       if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
-        RadianceMatrix c = sun[g].bin_coefficients;
-        c.header_lines().push_back("dayphoton sun-bin coefficients: caustic + global irradiance per unit "
-                                   "disc radiance; columns = rows of sun_bins.csv");
-        c.write_file(join_path(folders[g], "coefficients_sun.mtx"), matrix_format);
-        write_sun_bins_csv(bins, ss.suns, join_path(folders[g], "sun_bins.csv"));
-        ctx.outputs.record({join_path(folders[g], "coefficients_sun.mtx"), join_path(folders[g], "sun_bins.csv")});
-        DirectSunExport exported = make_direct_sun_export({{&sun[g].direct, &ss.suns}, {&sun[g].direct_other, &sun[g].other_suns}});
-        exported.sun_bins_mf = bins.multiplication_factor();
-        exported.seed = sim.seed;
-        exported.samples = plan.sun_direct_samples;
-        exported.site = sun_site_sentence(*ctx.sun_site);
-        exported.weather = project.weather.path;
-        write_direct_sun_file(exported, join_path(folders[g], DirectSunFileName));
-        ctx.outputs.record(join_path(folders[g], DirectSunFileName));
+        // Independent files, each written by one thread: the two at once.
+        tbb::parallel_invoke(
+            [&] {
+              RadianceMatrix c = sun[g].bin_coefficients;
+              c.header_lines().push_back("dayphoton sun-bin coefficients: caustic + global irradiance per unit "
+                                         "disc radiance; columns = rows of sun_bins.csv");
+              c.write_file(join_path(folders[g], "coefficients_sun.mtx"), matrix_format);
+              write_sun_bins_csv(bins, ss.suns, join_path(folders[g], "sun_bins.csv"));
+            },
+            [&] {
+              DirectSunExport exported =
+                  make_direct_sun_export({{&sun[g].direct, &ss.suns}, {&sun[g].direct_other, &sun[g].other_suns}});
+              exported.sun_bins_mf = bins.multiplication_factor();
+              exported.seed = sim.seed;
+              exported.samples = plan.sun_direct_samples;
+              exported.site = sun_site_sentence(*ctx.sun_site);
+              exported.weather = project.weather.path;
+              write_direct_sun_file(exported, join_path(folders[g], DirectSunFileName));
+            });
+        ctx.outputs.record({join_path(folders[g], "coefficients_sun.mtx"), join_path(folders[g], "sun_bins.csv"),
+                            join_path(folders[g], DirectSunFileName)});
       }
       if (project.outputs.coefficients && project.outputs.radiance_sun_matrix) {
         // The same sun on RADIANCE's patch basis, for gendaymtx -d (radiance_sun_matrix.h):
@@ -333,13 +341,14 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       }
       const AnnualStudy& study = *computed;
       log_occupancy(grid.name, study, annual_settings);
-      ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
+      const SunBinVariance sun_variance{&sun[g].bin_variance, &bins, &ss.suns};
+      VerdictUncertainty verdicts;
+      ctx.outputs.record(write_annual_outputs_beside(study, grid.points, annual_settings, folders[g], which, [&] {
+        verdicts = verdict_uncertainty(study, ss.sky, sky_variances[g], &sun_variance, annual_settings);
+      }));
       if (keep)  // operated shading picks hours by the direct sun's table
         keep->grids.push_back(
             {grid.name, grid.points, study.illuminance, direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps)});
-      const SunBinVariance sun_variance{&sun[g].bin_variance, &bins, &ss.suns};
-      const VerdictUncertainty verdicts =
-          verdict_uncertainty(study, ss.sky, sky_variances[g], &sun_variance, annual_settings);
       add_verdict_uncertainty(grids_json[g], verdicts, true);
       add_annual(ctx.results->grids[g], study, annual_settings, which);
       add_verdict_uncertainty(ctx.results->grids[g], verdicts);
@@ -364,9 +373,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       }
       const AnnualStudy& study = *computed;
       log_occupancy(grid.name, study, annual_settings);
-      ctx.outputs.record(write_annual_outputs(study, grid.points, annual_settings, folders[g], which));
-      const VerdictUncertainty verdicts =
-          verdict_uncertainty(study, sky, sky_variances[g], nullptr, annual_settings);
+      VerdictUncertainty verdicts;
+      ctx.outputs.record(write_annual_outputs_beside(study, grid.points, annual_settings, folders[g], which, [&] {
+        verdicts = verdict_uncertainty(study, sky, sky_variances[g], nullptr, annual_settings);
+      }));
       add_verdict_uncertainty(grids_json[g], verdicts, false);
       add_annual(ctx.results->grids[g], study, annual_settings, which);
       add_verdict_uncertainty(ctx.results->grids[g], verdicts);

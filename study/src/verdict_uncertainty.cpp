@@ -60,11 +60,13 @@ VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky
   }
   VerdictUncertainty out;
   if (n_occupied == 0) return out;
-  // Variance (lux^2) of every occupied step of a block of sensors, computed in parallel (each
-  // value's sums in the same order as one sensor alone), then the verdicts and the sum of the
-  // variances taken in sensor order, step order: no sensors x hours table is held.
+  // Variance (lux^2) of every occupied step of a block of sensors and each sensor's verdict,
+  // computed in parallel (each value's sums in the same order as one sensor alone, the
+  // verdicts integer counts), then the sum of the variances taken in sensor order, step
+  // order: no sensors x hours table is held.
   const std::size_t block = std::max<std::size_t>(1, block_values / n_occupied);
   std::vector<double> variance(std::min(block, n_sensors) * n_occupied);
+  std::vector<char> uncertain(std::min(block, n_sensors));
   const double threshold = settings.metrics.da_threshold_lux;
   const double need = settings.metrics.sda_time_fraction * double(n_occupied);
   double sum_variance = 0;
@@ -91,18 +93,24 @@ VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky
           }
         }
       }
+      // The DA verdict with the illuminance lowered and raised by VerdictSigmas standard
+      // errors, counted step by step (each step's row of the table read in order).
+      const std::size_t n = r.end() - r.begin();
+      std::vector<std::size_t> low(n, 0), high(n, 0);
+      for (std::size_t j = 0; j < n_occupied; ++j)
+        for (std::size_t s = r.begin(); s != r.end(); ++s) {
+          const double e = study.illuminance.lux(occupied_steps[j], s), v = variance[(s - first) * n_occupied + j];
+          const double band = VerdictSigmas * std::sqrt(v);
+          low[s - r.begin()] += e - band >= threshold ? 1 : 0;
+          high[s - r.begin()] += e + band >= threshold ? 1 : 0;
+        }
+      for (std::size_t s = r.begin(); s != r.end(); ++s)
+        uncertain[s - first] = (double(low[s - r.begin()]) >= need) != (double(high[s - r.begin()]) >= need);
     });
     for (std::size_t s = first; s < last; ++s) {
       const double* row = variance.data() + (s - first) * n_occupied;
-      std::size_t low = 0, high = 0;
-      for (std::size_t j = 0; j < n_occupied; ++j) {
-        const double e = study.illuminance.lux(occupied_steps[j], s), v = row[j];
-        const double band = VerdictSigmas * std::sqrt(v);
-        low += e - band >= threshold ? 1 : 0;
-        high += e + band >= threshold ? 1 : 0;
-        sum_variance += v;
-      }
-      if ((double(low) >= need) != (double(high) >= need)) ++out.da_verdicts_uncertain;
+      for (std::size_t j = 0; j < n_occupied; ++j) sum_variance += row[j];
+      if (uncertain[s - first]) ++out.da_verdicts_uncertain;
     }
   }
   const std::size_t occupied = n_occupied;

@@ -10,16 +10,23 @@
 
 namespace dayphoton {
 
-/// Incremental SHA-256: update() any number of times, then hex() once.
+/// Incremental SHA-256: update() any number of times, then hex() once. The rounds run on the
+/// processor's SHA extensions where it has them (x86 SHA-NI, checked once by CPUID), else
+/// portably; both give the same digest.
 class Sha256 {
  public:
-  Sha256();
+  enum class Rounds { Fastest, Portable };  ///< Portable: never the SHA extensions (tests)
+  explicit Sha256(Rounds rounds = Rounds::Fastest);
   void update(const void* data, std::size_t size);
   /// The digest as 64 lowercase hex digits; the object must not be updated afterwards.
   std::string hex();
+  /// Whether Rounds::Fastest uses the processor's SHA extensions on this machine.
+  static bool hardware_rounds();
 
  private:
+  void blocks(const std::uint8_t* p, std::size_t count);
   void block(const std::uint8_t* p);
+  bool m_hardware = false;
   std::array<std::uint32_t, 8> m_state;
   std::array<std::uint8_t, 64> m_buffer{};
   std::size_t m_buffered = 0;

@@ -18,6 +18,7 @@
 //    hours = the brightest half of the steps by the EPW's diffuse horizontal illuminance.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -133,5 +134,14 @@ struct AnnualOutputs {
 std::vector<std::string> write_annual_outputs(const AnnualStudy& study, const std::vector<SensorPoint>& sensors,
                                               const AnnualStudySettings& settings, const std::string& folder,
                                               const AnnualOutputs& outputs = {});
+
+/// write_annual_outputs while `alongside` runs (oneTBB's parallel_invoke; both must only read
+/// the study): the writing, on one thread and mostly illuminance.bin, overlaps parallel work
+/// such as the verdicts' uncertainty. Returns write_annual_outputs' paths once both are done;
+/// an exception of either is rethrown then.
+std::vector<std::string> write_annual_outputs_beside(const AnnualStudy& study, const std::vector<SensorPoint>& sensors,
+                                                     const AnnualStudySettings& settings, const std::string& folder,
+                                                     const AnnualOutputs& outputs,
+                                                     const std::function<void()>& alongside);
 
 }  // namespace dayphoton::study
