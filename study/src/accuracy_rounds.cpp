@@ -44,18 +44,6 @@ std::vector<double> bin_luminance(const RadianceMatrix& sky) {
   return l;
 }
 
-/// Indices of the sensors with DF > 0 at or below the percentile (nearest rank), by relative error.
-std::vector<std::size_t> sensors_at_or_below_percentile(const std::vector<double>& relative, const std::vector<double>& df,
-                                                        double percentile) {
-  std::vector<std::size_t> lit;
-  for (std::size_t i = 0; i < df.size(); ++i)
-    if (df[i] > 0) lit.push_back(i);
-  std::stable_sort(lit.begin(), lit.end(), [&](std::size_t a, std::size_t b) { return relative[a] < relative[b]; });
-  const std::size_t keep = static_cast<std::size_t>(std::ceil(percentile / 100.0 * double(lit.size())));
-  lit.resize(std::min(lit.size(), keep));
-  return lit;
-}
-
 /// Grid g's coefficients of one round, estimated by sensor blocks through `work` (round_work.h):
 /// the direct part given (`direct`, `direct_variance`, the whole grid's), the photon part from
 /// `photons` with the sources' scales. Every block's rows are the whole grid's (sensor_range.h),
@@ -115,6 +103,17 @@ void grid_direct(const AccuracyCase& c, std::size_t g, RoundWork& work, std::vec
 }
 
 }  // namespace
+
+std::vector<std::size_t> sensors_at_or_below_percentile(const std::vector<double>& relative, const std::vector<double>& df,
+                                                        double percentile) {
+  std::vector<std::size_t> lit;
+  for (std::size_t i = 0; i < df.size(); ++i)
+    if (df[i] > 0) lit.push_back(i);
+  std::stable_sort(lit.begin(), lit.end(), [&](std::size_t a, std::size_t b) { return relative[a] < relative[b]; });
+  const std::size_t keep = static_cast<std::size_t>(std::ceil(percentile / 100.0 * double(lit.size())));
+  lit.resize(std::min(lit.size(), keep));
+  return lit;
+}
 
 double percentile_relative_stderr_percent(const std::vector<double>& df_percent,
                                           const std::vector<double>& stderr_percent, double percentile) {

@@ -42,19 +42,6 @@ int square_at_least(double n) {
   return std::min(k * k, GatherMaxRays);
 }
 
-/// Indices of the sensors with DF > 0 at or below the percentile (nearest rank), by relative
-/// error (as the photon rounds choose theirs).
-std::vector<std::size_t> at_or_below_percentile(const std::vector<double>& relative, const std::vector<double>& df,
-                                                double percentile) {
-  std::vector<std::size_t> lit;
-  for (std::size_t i = 0; i < df.size(); ++i)
-    if (df[i] > 0) lit.push_back(i);
-  std::stable_sort(lit.begin(), lit.end(), [&](std::size_t a, std::size_t b) { return relative[a] < relative[b]; });
-  const std::size_t keep = static_cast<std::size_t>(std::ceil(percentile / 100.0 * double(lit.size())));
-  lit.resize(std::min(lit.size(), keep));
-  return lit;
-}
-
 /// A sensor block's bytes: its coefficient artefact, then the fixed part of its gather variance
 /// (engine::GatheredCoefficients::fixed_photon_variance) as raw doubles.
 std::string frame_block(const std::string& coefficients, const std::vector<double>& fixed) {
@@ -102,7 +89,7 @@ GatherRayPlan next_gather_rays(const std::vector<double>& df_percent, const std:
                       : 0.0;
   GatherRayPlan plan;
   double needed = rays;
-  for (const std::size_t i : at_or_below_percentile(relative, df_percent, percentile)) {
+  for (const std::size_t i : sensors_at_or_below_percentile(relative, df_percent, percentile)) {
     if (!(relative[i] > aim_percent)) continue;
     ++plan.sensors_constrained;
     const double allowed = aim_percent / 100.0 * df_percent[i];

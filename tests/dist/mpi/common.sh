@@ -32,14 +32,9 @@ mpi_run() {
   timeout "$seconds" "$mpiexec" -np "$np" "${mpirun_flags[@]}" "$@"
 }
 
-# `side_lit_room FILE SIMULATION`: a daylight-factor study of a 4 x 5 x 3 m side-lit room (a
-# 3 x 1.5 m south window, 80 work-plane sensors at 0.5 m), no pictures and no report, with
-# the line SIMULATION (one mapping, e.g. "photons_per_bin: 4000") as its `simulation:`.
-side_lit_room() {
-  cat > "$1" <<YAML
-version: 1
-study: daylight_factor
-site: {latitude: 51.5, longitude: -0.12, time_zone: 0}
+# The side-lit room's materials, geometry and sensors, the YAML the two rooms below share.
+side_lit_room_body() {
+  cat <<'YAML'
 materials:
   walls: {type: lambertian, reflectance: 0.5}
   glass: {type: glass, transmittance: 0.6}
@@ -52,6 +47,18 @@ geometry:
 sensors:
   grids:
     - {name: workplane, room: office, height: 0.8, spacing: 0.5}
+YAML
+}
+
+# `side_lit_room FILE SIMULATION`: a daylight-factor study of a 4 x 5 x 3 m side-lit room (a
+# 3 x 1.5 m south window, 80 work-plane sensors at 0.5 m), no pictures and no report, with
+# the line SIMULATION (one mapping, e.g. "photons_per_bin: 4000") as its `simulation:`.
+side_lit_room() {
+  cat > "$1" <<YAML
+version: 1
+study: daylight_factor
+site: {latitude: 51.5, longitude: -0.12, time_zone: 0}
+$(side_lit_room_body)
 simulation:
   $2
 outputs:
@@ -73,18 +80,7 @@ sun_room() {
 version: 1
 site: {latitude: 37.72, longitude: -122.22, time_zone: -8}
 weather: weather.epw
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glass: {type: glass, transmittance: 0.6}
-geometry:
-  rooms:
-    - name: office
-      size: [4, 5, 3]
-      materials: {floor: walls, ceiling: walls, walls: walls}
-      windows: [{name: w, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]
-sensors:
-  grids:
-    - {name: workplane, room: office, height: 0.8, spacing: 0.5}
+$(side_lit_room_body)
 simulation:
   sun: bins
   sun_mf: 1

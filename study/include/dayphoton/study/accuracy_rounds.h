@@ -87,6 +87,11 @@ struct AccuracyGoal {
 double percentile_relative_stderr_percent(const std::vector<double>& df_percent,
                                           const std::vector<double>& stderr_percent, double percentile);
 
+/// Indices of the sensors with DF > 0 at or below that percentile (nearest rank), by relative
+/// error `relative`: the sensors a round's allocation must bring under its budget.
+std::vector<std::size_t> sensors_at_or_below_percentile(const std::vector<double>& relative,
+                                                        const std::vector<double>& df, double percentile);
+
 /// One grid's variances after a round, in (DF percent)^2.
 struct GridVariance {
   std::vector<double> df_percent;       ///< per sensor
