@@ -46,7 +46,37 @@ struct Reached {
   std::size_t rounds = 0;
   std::uint64_t photons = 0;
   std::string stop_reason, status;
+  int gather_rays = 0;  ///< > 0: a grid estimated by final gather (its own rounds and stop below)
+  std::size_t gather_rounds = 0;
+  std::string gather_stop_reason{};
 };
+
+/// Why a grid estimated by final gather is above the target and what to change, from its own
+/// gather rounds' stop (study/gather_accuracy.h).
+std::string gather_why_and_what_to_do(const Reached& r) {
+  const std::string gathered = "Why: this grid's sensors are estimated by final gather (rays traced from each sensor)";
+  if (r.gather_stop_reason == "gather ray limit")
+    return gathered + ", and the gather rounds reached their limit of " + std::to_string(study::GatherMaxRays) +
+           " rays per sensor. What to do: ask for a looser target, or place these sensors where the photons "
+           "reach them (a work plane rather than points in the air or on a wall).";
+  if (r.gather_stop_reason == "gather photon part")
+    return gathered + ", and what remains of their error comes from the photons the gather rays read, which "
+           "more gather rays do not reduce. What to do: give fixed photon counts "
+           "(<code>simulation.photons_per_bin</code>, instead of the accuracy target) above the photons the "
+           "rounds traced, or ask for a looser target.";
+  if (r.gather_stop_reason == "round limit")
+    return gathered + ", and the gather rounds' limit (" + std::to_string(study::GatherMaxRounds) +
+           " rounds) came first. What to do: start from more rays (<code>simulation.gather_rays</code>), or ask "
+           "for a looser target.";
+  if (r.gather_stop_reason == "time budget")
+    return gathered + ", and the time budget (<code>simulation.accuracy.max_seconds</code>) ran out. What to "
+           "do: raise it or remove it; this stop depends on the machine's speed.";
+  if (r.gather_stop_reason == "direct component")
+    return gathered + "; the sensors still above the target are so by the noise of their direct light (the "
+           "shadow rays toward the sky through the openings), which more gather rays do not reduce. What to do: "
+           "raise <code>simulation.direct_samples_per_bin</code>.";
+  return gathered + "; the gather rounds stopped with \"" + esc(r.gather_stop_reason) + "\".";
+}
 
 /// Why the grid is above the target and what to change, from the grid's status and the
 /// case's stop reason ("" when the grid met the target).
@@ -71,16 +101,6 @@ std::string why_and_what_to_do(const Reached& r) {
     return "Why: the sensors still above the target are so by the noise of their direct light (the shadow rays "
            "toward the sky through the openings), which more photons do not reduce. What to do: raise "
            "<code>simulation.direct_samples_per_bin</code>.";
-  if (r.stop_reason == "gather ray limit")
-    return "Why: this grid's sensors are estimated by final gather (rays traced from each sensor), and the "
-           "gather rounds reached their limit of " + std::to_string(study::GatherMaxRays) +
-           " rays per sensor. What to do: ask for a looser target, or place these sensors where the photons "
-           "reach them (a work plane rather than points in the air or on a wall).";
-  if (r.stop_reason == "gather photon part")
-    return "Why: this grid's sensors are estimated by final gather, and what remains of their error comes from "
-           "the photons the gather rays read, which more gather rays do not reduce. What to do: give fixed "
-           "photon counts (<code>simulation.photons_per_bin</code>, instead of the accuracy target) above the "
-           "photons the rounds traced, or ask for a looser target.";
   if (r.stop_reason == "no light") return "Why: no light reaches the grid's sensors, so there is nothing to measure.";
   return "Why: the rounds stopped with \"" + esc(r.stop_reason) + "\".";
 }
@@ -91,17 +111,23 @@ std::string statement(const std::string& what, const Reached& r) {
   std::ostringstream s;
   s << what << ": the target is a relative standard error of at most "
     << format_value(r.target_percent, Precision::DaylightFactor) << " % at the " << measure_words() << ". Reached "
-    << format_value(r.reached_percent, Precision::DaylightFactor) << " % after " << r.rounds
-    << (r.rounds == 1 ? " round" : " rounds") << " of photon tracing (" << photon_count(r.photons) << " photons). ";
+    << format_value(r.reached_percent, Precision::DaylightFactor) << " % ";
+  if (r.gather_rays > 0)
+    s << "by final gather at " << r.gather_rays << " rays per sensor, after " << r.gather_rounds
+      << (r.gather_rounds == 1 ? " gather round" : " gather rounds") << " following " << r.rounds
+      << (r.rounds == 1 ? " round" : " rounds") << " of photon tracing (" << photon_count(r.photons) << " photons). ";
+  else
+    s << "after " << r.rounds << (r.rounds == 1 ? " round" : " rounds") << " of photon tracing ("
+      << photon_count(r.photons) << " photons). ";
   if (met) {
     s << "Target met.";
-    if (r.stop_reason != "target met")
+    if (r.gather_rays == 0 && r.stop_reason != "target met")
       s << " (The rounds serve every grid of the case; they stopped with \"" << esc(r.stop_reason)
         << "\" for another grid.)";
   } else {
     s << "<strong>Above the target"
       << (r.status == "not reachable by photons" ? " and not reachable by photons" : "") << ".</strong> "
-      << why_and_what_to_do(r);
+      << (r.gather_rays > 0 ? gather_why_and_what_to_do(r) : why_and_what_to_do(r));
   }
   return s.str();
 }
@@ -110,7 +136,8 @@ std::string statement(const std::string& what, const Reached& r) {
 
 std::string sky_accuracy_statement(const study::DaylightFactorSummary::AccuracyReached& a) {
   return statement("Daylight factor (sky patches)",
-                   Reached{a.target_percent, a.reached_percent, a.rounds, a.photons, a.stop_reason, a.status});
+                   Reached{a.target_percent, a.reached_percent, a.rounds, a.photons, a.stop_reason, a.status,
+                           a.gather_rays, a.gather_rounds, a.gather_stop_reason});
 }
 
 std::string sun_accuracy_statement(const study::SunAccuracyReached& a) {

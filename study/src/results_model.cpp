@@ -126,6 +126,10 @@ json grid_json(const GridResult& g) {
                                           {"photons", acc->photons},
                                           {"stop_reason", acc->stop_reason},
                                           {"status", acc->status}};
+    if (const auto& acc = d->accuracy; acc && acc->gather_rays > 0)
+      j["daylight_factor"]["accuracy"]["gather"] = {{"rays", acc->gather_rays},
+                                                    {"rounds", acc->gather_rounds},
+                                                    {"stop_reason", acc->gather_stop_reason}};
   }
   if (const auto& a = g.annual) {
     json levels = json::array();
@@ -436,6 +440,15 @@ struct Reader {
         r.photons = count(acc, ck, "photons");
         r.stop_reason = text(acc, ck, "stop_reason");
         r.status = accuracy_status(acc, ck);
+        // "gather": present for a grid estimated by final gather only.
+        if (acc.contains("gather")) {
+          const std::string gk = ck + ".gather";
+          const json& ga = at(acc, ck, "gather");
+          r.gather_rays = static_cast<int>(count(ga, gk, "rays"));
+          if (r.gather_rays < 1) fail(name(gk, "rays"), "is not at least 1");
+          r.gather_rounds = count(ga, gk, "rounds");
+          r.gather_stop_reason = text(ga, gk, "stop_reason");
+        }
         d.accuracy = r;
       }
       g.daylight_factor = d;
@@ -599,7 +612,9 @@ bool DaylightFactorSummary::operator==(const DaylightFactorSummary& o) const {
 }
 bool DaylightFactorSummary::AccuracyReached::operator==(const AccuracyReached& o) const {
   return target_percent == o.target_percent && reached_percent == o.reached_percent && rounds == o.rounds &&
-         photons == o.photons && stop_reason == o.stop_reason && status == o.status;
+         photons == o.photons && stop_reason == o.stop_reason && status == o.status &&
+         gather_rays == o.gather_rays && gather_rounds == o.gather_rounds &&
+         gather_stop_reason == o.gather_stop_reason;
 }
 bool SunAccuracyReached::operator==(const SunAccuracyReached& o) const {
   return target_percent == o.target_percent && reached_percent == o.reached_percent &&

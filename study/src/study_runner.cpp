@@ -214,10 +214,17 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
                            {"sensors_with_daylight", u.sensors_with_light}};
       if (accuracy) gj["uncertainty"]["df_p95_relative_stderr_percent"] = accuracy->reached_percent[g];
       add_daylight_factor(ctx.results->grids.back(), st, u);
-      if (accuracy)
-        ctx.results->grids.back().daylight_factor->accuracy = DaylightFactorSummary::AccuracyReached{
-            accuracy->target_percent, accuracy->reached_percent[g], accuracy->rounds, accuracy->photons,
-            accuracy->stop_reason, accuracy->grid_status[g]};
+      if (accuracy) {
+        DaylightFactorSummary::AccuracyReached reached{accuracy->target_percent, accuracy->reached_percent[g],
+                                                       accuracy->rounds,         accuracy->photons,
+                                                       accuracy->stop_reason,    accuracy->grid_status[g]};
+        if (g < accuracy->gather.size() && accuracy->gather[g].gathered) {
+          reached.gather_rays = accuracy->gather[g].rays;
+          reached.gather_rounds = accuracy->gather[g].rounds;
+          reached.gather_stop_reason = accuracy->gather[g].stop_reason;
+        }
+        ctx.results->grids.back().daylight_factor->accuracy = reached;
+      }
     }
     if (accuracy)
       gj["accuracy"] = {{"target_df_relative_stderr_percent", accuracy->target_percent},

@@ -534,6 +534,48 @@ TEST(ReportHtml, ValuesAndVerdictsComeFromTheModel) {
   EXPECT_NE(html.find("changes: window south removed", variant), std::string::npos);
 }
 
+TEST(ReportHtml, AGatheredGridsAccuracyIsExplainedByItsOwnGatherRounds) {
+  // The work plane stopped the photon rounds on the photon budget; the gathered wall grid
+  // then stopped its gather rounds on the ray limit. The wall's sentence must give its own
+  // rays, gather rounds and stop, not the photon budget's; a gathered grid that met the target
+  // gets no note about the case's stop.
+  const std::string dir = temp_dir("accuracy_gather");
+  ResultsModel m = results_model(dir);
+  using Acc = DaylightFactorSummary::AccuracyReached;
+  m.cases[0].grids[0].daylight_factor->accuracy = Acc{1.0, 1.4, 8, 33500000, "photon budget", "above target"};
+  m.cases[0].grids[1].daylight_factor->accuracy =
+      Acc{1.0, 1.9, 8, 33500000, "photon budget", "above target", 65536, 4, "gather ray limit"};
+  m.cases[1].grids[0].daylight_factor->accuracy =
+      Acc{1.0, 0.9, 2, 950000, "photon budget", "met", 4096, 2, "target met"};
+  write_results_model(m, dir);
+  const std::string html = report_html(dir);
+  const std::size_t at = html.find("<h3 id=\"accuracy\">");
+  ASSERT_NE(at, std::string::npos);
+  const std::string part = html.substr(at, html.find("</ul>", at) - at);
+  auto item = [&](const std::string& attrs) {
+    const std::size_t i = part.find("<li class=\"accuracy\" " + attrs + ">");
+    return i == std::string::npos ? std::string() : part.substr(i, part.find("</li>", i) - i);
+  };
+  const std::string wall = item("data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
+  EXPECT_NE(wall.find("Reached 1.9 % by final gather at 65536 rays per sensor, after 4 gather rounds following 8 "
+                      "rounds of photon tracing (33.5 million photons). <strong>Above the target.</strong> Why: this "
+                      "grid's sensors are estimated by final gather (rays traced from each sensor), and the gather "
+                      "rounds reached their limit of 65536 rays per sensor."),
+            std::string::npos)
+      << wall;
+  EXPECT_EQ(wall.find("photon budget"), std::string::npos) << wall;
+  EXPECT_EQ(wall.find("max_photons"), std::string::npos) << wall;
+  // The work plane keeps the photon rounds' reason.
+  const std::string plane = item("data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
+  EXPECT_NE(plane.find("Why: the photon budget was reached first."), std::string::npos) << plane;
+  const std::string met = item("data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
+  EXPECT_NE(met.find("Reached 0.90 % by final gather at 4096 rays per sensor, after 2 gather rounds following 2 "
+                     "rounds of photon tracing (950 000 photons). Target met."),
+            std::string::npos)
+      << met;
+  EXPECT_EQ(met.find("stopped with"), std::string::npos) << met;
+}
+
 TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {
   // A run with an accuracy target: the base grid's sky met it, its sun bins stopped on the
   // photon budget above it; the wall grid (gathered) is not reachable by photons; the variant

@@ -84,7 +84,8 @@ ResultsModel full_model() {
                    QuantityScale::DaylightFactor, "daylight factor"}};
   g.daylight_factor = DaylightFactorSummary{1.5, 1.25, 0.1, 3.3, 0.0667, {{2.0, 33.3}, {1.0, 66.7}}, 4.5, 9.25, 3, std::nullopt};
   g.daylight_factor->accuracy =
-      DaylightFactorSummary::AccuracyReached{2.0, 2.4, 3, 4100000, "photon budget", "above target"};
+      DaylightFactorSummary::AccuracyReached{2.0, 2.4, 3, 4100000, "photon budget", "above target", 4096, 2,
+                                             "gather ray limit"};
   g.sun_accuracy = SunAccuracyReached{2.0, 1.75, 9.5, 2, 3200000, "target met", "met"};
   AnnualSummary a;
   a.sensors = 3;
@@ -184,6 +185,12 @@ TEST(ResultsModel, RoundTripsEveryField) {
   EXPECT_FALSE(changed == m);
   changed = back;
   changed.cases[1].grids[0].daylight_factor->accuracy->status = "met";
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].daylight_factor->accuracy->gather_stop_reason = "round limit";
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].daylight_factor->accuracy->gather_rays = 1024;
   EXPECT_FALSE(changed == m);
   changed = back;
   changed.cases[1].grids[0].sun_accuracy->hourly_percent = 9.4;

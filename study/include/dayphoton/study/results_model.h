@@ -87,6 +87,14 @@ struct DaylightFactorSummary {
     /// The grid's own: "met", "above target" (stop_reason says why) or "not reachable by
     /// photons" (a grid estimated by final gather above the target: accuracy_policy.h).
     std::string status;
+    /// A grid estimated by final gather (docs/photon-tracing.md "Accuracy target"): the gather
+    /// rays per sensor of its final estimate, its gather rounds after the photon rounds and
+    /// their own stop ("target met", "gather photon part", "gather ray limit", "round limit",
+    /// "time budget", "direct component"), which says why such a grid is above the target;
+    /// gather_rays 0 for a grid the photons serve.
+    int gather_rays = 0;
+    std::size_t gather_rounds = 0;
+    std::string gather_stop_reason{};
 
     bool operator==(const AccuracyReached& o) const;
   };
