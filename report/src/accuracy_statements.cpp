@@ -11,6 +11,7 @@
 #include "dayphoton/report/report_format.h"
 #include "dayphoton/study/accuracy_rounds.h"
 #include "dayphoton/study/gather_accuracy_rounds.h"
+#include "dayphoton/study/plan_policy.h"
 #include "report_sections.h"
 
 namespace dayphoton::report {
@@ -101,6 +102,13 @@ std::string why_and_what_to_do(const Reached& r) {
     return "Why: the sensors still above the target are so by the noise of their direct light (the shadow rays "
            "toward the sky through the openings), which more photons do not reduce. What to do: raise "
            "<code>simulation.direct_samples_per_bin</code>.";
+  if (r.stop_reason == "direct rays limit")
+    return "Why: the sensors still above the target are so by the noise of their direct light (the shadow rays "
+           "toward the sky through the openings), and the rounds raised those rays to their limit of " +
+           std::to_string(study::MaxDirectSamplesPerBin) +
+           " per sky patch. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
+           std::to_string(study::MaxDirectSamplesPerBin) + " (the rounds keep a larger count), or ask for a looser "
+           "target.";
   if (r.stop_reason == "no light") return "Why: no light reaches the grid's sensors, so there is nothing to measure.";
   return "Why: the rounds stopped with \"" + esc(r.stop_reason) + "\".";
 }

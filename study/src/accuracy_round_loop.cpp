@@ -9,6 +9,7 @@
 
 #include "dayphoton/study/accuracy_policy.h"
 #include "dayphoton/study/annual_sun.h"
+#include "dayphoton/study/plan_policy.h"
 
 namespace dayphoton::study {
 namespace {
@@ -64,7 +65,8 @@ engine::GridPhotons round_grid_photons(const std::vector<engine::ReceiverPlane>&
 
 RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal& goal, const RoundMeasure& measure,
                                 const RoundLoopText& text, const std::function<void(const std::string&)>& log,
-                                RoundWork& work, Clock::time_point start, const RoundLoopFinish& finish) {
+                                RoundWork& work, Clock::time_point start, const RoundLoopFinish& finish,
+                                const RoundDirect& direct) {
   const std::size_t n = sources.reference.size();
   double trace_seconds = 0;
   std::uint64_t traced_attempts = 0;
@@ -148,7 +150,27 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
       outcome.stop_reason = "round limit";
       break;
     }
-    const RoundPlan plan = next_round_scale(m.chased, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+    RoundPlan plan = next_round_scale(m.chased, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+    // The direct part's own decision (RoundDirect): a raise of shadow rays, with its photon plan,
+    // if it fits the time budget.
+    DirectRoundPlan direct_plan;
+    double direct_seconds = 0;
+    bool direct_timed_out = false;  // a raise the time budget left no room for
+    if (direct.plan) {
+      direct_plan = direct.plan(cost, plan, AccuracyRoundAim * goal.target_percent);
+      if (direct_plan.raised() && goal.max_seconds > 0) {
+        direct_seconds = direct.seconds(direct_plan);
+        const double room = goal.max_seconds - work.agreed(seconds_since(start) + estimate_seconds);
+        if (room < direct_seconds) {
+          log(text.name + ": no raise of shadow rays in round " + std::to_string(round + 1) +
+              ": the time budget leaves no room for it");
+          direct_plan.rays = 0;
+          direct_seconds = 0;
+          direct_timed_out = true;
+        }
+      }
+      if (direct_plan.raised()) plan = direct_plan.photons;
+    }
     std::vector<std::uint64_t> next(n);
     double more_photons = 0, more_attempts = 0;
     for (std::size_t p = 0; p < n; ++p) {
@@ -157,7 +179,18 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
       more_attempts += double(next[p] - records[p].attempts);
       more_photons += double(records[p].stored()) * (plan.scale[p] - 1.0);
     }
-    if (!(more_attempts > 0)) {
+    if (!(more_attempts > 0) && !direct_plan.raised()) {
+      if (direct_timed_out) {
+        outcome.stop_reason = "time budget";
+        break;
+      }
+      if (direct_plan.sensors_at_limit > 0) {
+        outcome.stop_reason = "direct rays limit";
+        log(text.name + ": " + std::to_string(direct_plan.sensors_at_limit) +
+            " sensor(s) miss the target by their direct component alone at " +
+            std::to_string(MaxDirectSamplesPerBin) + " shadow rays per bin, the rounds' limit");
+        break;
+      }
       outcome.stop_reason = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
       if (plan.sensors_direct_limited > 0)
         log(text.name + ": " + std::to_string(plan.sensors_direct_limited) +
@@ -175,10 +208,10 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
         cut = "photon budget";
       }
     }
-    if (goal.max_seconds > 0) {
+    if (goal.max_seconds > 0 && more_attempts > 0) {
       // The first process's clock, so that every process cuts the round alike (round_work.h).
       const double per_attempt_s = traced_attempts > 0 ? work.agreed(trace_seconds) / double(traced_attempts) : 0.0;
-      const double room = goal.max_seconds - work.agreed(seconds_since(start) + estimate_seconds);
+      const double room = goal.max_seconds - work.agreed(seconds_since(start) + estimate_seconds) - direct_seconds;
       const double need = per_attempt_s * more_attempts;
       if (room < need && (need > 0 ? std::max(0.0, room / need) : 0.0) < share) {
         share = need > 0 ? std::max(0.0, room / need) : 0.0;
@@ -203,6 +236,7 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
     const Clock::time_point t = Clock::now();
     extend_to(records, next);
     trace_seconds += seconds_since(t);
+    if (direct_plan.raised()) direct.apply(round + 1, direct_plan);
   }
   for (const auto& r : records) outcome.final_attempts.push_back(r.attempts);
   if (finish) finish(outcome, records);

@@ -11,7 +11,8 @@
 // every chased grid met the target, the photon budget (stored photons of the loop's sources),
 // the time budget (rank 0's clock: the one decision that depends on the machine), the round
 // limit, no source that can help ("no light", or "direct component" when a sensor's direct
-// variance alone exceeds its budget).
+// variance alone exceeds its budget and nothing raises its shadow rays, "direct rays limit"
+// when the sky's direct round (RoundDirect) has raised them to their limit).
 //
 // Every trace (the pilot's doublings, each round's extension) is one call of RoundWork::trace
 // (round_work.h), so under MPI the attempt ranges are shared over the ranks and summed on every
@@ -81,11 +82,27 @@ struct RoundLoopOutcome {
 using RoundLoopFinish =
     std::function<void(RoundLoopOutcome& outcome, const std::vector<engine::SourcePhotonRecord>& records)>;
 
+/// The direct part's own round decision (the sky's rounds: next_direct_round in
+/// accuracy_rounds.h; the sun bins' rounds have none). After a round's measure, when the
+/// round limit and the budgets let another round run: `plan` decides from the photon plan
+/// (next_round_scale) and the sources' costs whether the next round also raises some grids'
+/// shadow rays, with the photon plan that goes with the raise; `seconds` predicts the raise's
+/// time (the first process's clock); `apply` traces it (collective, through the work) after the
+/// round's photons. A raise that does not fit the time budget is not made (the photon plan
+/// without it then applies); a round may raise the shadow rays alone. When neither photons
+/// nor shadow rays can help, the stop is "direct rays limit" if sensors are above their
+/// budget by the direct part at MaxDirectSamplesPerBin (plan_policy.h).
+struct RoundDirect {
+  std::function<DirectRoundPlan(const std::vector<double>& cost, const RoundPlan& photons, double aim_percent)> plan;
+  std::function<double(const DirectRoundPlan&)> seconds;
+  std::function<void(std::size_t round, const DirectRoundPlan&)> apply;
+};
+
 /// The loop (header comment). `start` is when the rounds' time budget began.
 RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal& goal, const RoundMeasure& measure,
                                 const RoundLoopText& text, const std::function<void(const std::string&)>& log,
                                 RoundWork& work, std::chrono::steady_clock::time_point start,
-                                const RoundLoopFinish& finish = {});
+                                const RoundLoopFinish& finish = {}, const RoundDirect& direct = {});
 
 /// Every record's photons with their flux (engine::scaled_source_photons) merged in source
 /// order; with `relabel`, source p's photons labelled p (a source traced alone as source 0,

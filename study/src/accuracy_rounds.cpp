@@ -16,6 +16,7 @@
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/gather_accuracy_rounds.h"
+#include "dayphoton/study/plan_policy.h"
 #include "gather_accuracy_json.h"
 #include "dayphoton/study/round_work.h"
 #include "dayphoton/study/sensor_blocks.h"
@@ -77,10 +78,13 @@ engine::DaylightCoefficients round_coefficients(const AccuracyCase& c, std::size
   return decode_coefficients(join_coefficient_blocks(blocks));
 }
 
-/// Grid g's direct component (shadow rays, the same every round) and its variance, by sensor
-/// blocks through `work`.
-void grid_direct(const AccuracyCase& c, std::size_t g, RoundWork& work, std::vector<Vec3>& direct,
+/// Grid g's direct component at `samples_per_bin` shadow rays per bin (the same every round
+/// until a round raises them: next_direct_round) and its variance, by sensor blocks through
+/// `work`.
+void grid_direct(const AccuracyCase& c, std::size_t g, int samples_per_bin, RoundWork& work, std::vector<Vec3>& direct,
                  std::vector<double>& variance) {
+  engine::DirectOptions options = c.estimating.direct;
+  options.samples_per_source = samples_per_bin;
   const std::size_t n = c.sources->size();
   const SensorGrid& grid = (*c.grids)[g];
   const std::vector<std::string> blocks = work.estimate(
@@ -89,14 +93,15 @@ void grid_direct(const AccuracyCase& c, std::size_t g, RoundWork& work, std::vec
         engine::DaylightCoefficients dc;
         dc.sensors = end - begin;
         dc.sources = n;
-        dc.direct = engine::direct_coefficients(*c.scene, *c.materials, *c.sources, grid.points, c.estimating.direct,
+        dc.direct = engine::direct_coefficients(*c.scene, *c.materials, *c.sources, grid.points, options,
                                                 &dc.direct_variance, {begin, end});
         dc.caustic.assign(dc.sensors * n, Vec3{0, 0, 0});
         dc.global.assign(dc.sensors * n, Vec3{0, 0, 0});
         dc.photon_variance.assign(dc.sensors * n, 0.0);
         return encode_coefficients(dc);
       },
-      "accuracy rounds: direct component of grid " + grid.name);
+      "accuracy rounds: direct component of grid " + grid.name + " at " + std::to_string(samples_per_bin) +
+          " shadow rays per bin");
   engine::DaylightCoefficients joined = decode_coefficients(join_coefficient_blocks(blocks));
   direct = std::move(joined.direct);
   variance = std::move(joined.direct_variance);
@@ -163,6 +168,81 @@ RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::ve
   return plan;
 }
 
+double direct_rays_per_sensor(int samples_per_bin, std::size_t sources, bool port_sampling) {
+  const double k = std::ceil(std::sqrt(double(std::max(1, samples_per_bin))));
+  const double port_k = double(engine::PortStrataFactor) * k;
+  return k * k * double(sources) + (port_sampling ? 2.0 * port_k * port_k : 0.0);
+}
+
+namespace {
+
+/// Rays a photon plan adds: each source's rays so far times its growth.
+double photon_plan_rays(const RoundPlan& plan, const std::vector<double>& cost) {
+  double rays = 0;
+  for (std::size_t p = 0; p < cost.size() && p < plan.scale.size(); ++p) rays += cost[p] * (plan.scale[p] - 1.0);
+  return rays;
+}
+
+}  // namespace
+
+DirectRoundPlan next_direct_round(const std::vector<GridVariance>& grids, const std::vector<int>& samples_per_bin,
+                                  const std::vector<std::size_t>& sensors, const std::vector<double>& cost,
+                                  const RoundPlan& photons, double aim_percent, double percentile, std::size_t sources,
+                                  bool port_sampling) {
+  DirectRoundPlan plan;
+  plan.samples_per_bin = samples_per_bin;
+  plan.photons = photons;
+  std::vector<GridVariance> predicted = grids;
+  double plan_rays = photon_plan_rays(photons, cost);
+  const int max_k = static_cast<int>(std::floor(std::sqrt(double(MaxDirectSamplesPerBin))));
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    const GridVariance& v = grids[g];
+    const std::size_t n_sources = cost.size();
+    std::vector<double> relative(v.df_percent.size(), 0.0);
+    for (std::size_t i = 0; i < relative.size(); ++i) {
+      double var = v.direct_variance[i];
+      for (std::size_t p = 0; p < n_sources; ++p) var += v.photon_variance[i * n_sources + p];
+      relative[i] = v.df_percent[i] > 0 ? 100.0 * std::sqrt(std::max(0.0, var)) / v.df_percent[i] : 0.0;
+    }
+    // The failing sensors whose direct variance is at least half their budget.
+    std::vector<std::size_t> direct_heavy;
+    std::size_t limited = 0;
+    for (std::size_t i : sensors_at_or_below_percentile(relative, v.df_percent, percentile)) {
+      if (!(relative[i] > aim_percent)) continue;
+      const double allowed = aim_percent / 100.0 * v.df_percent[i];
+      if (v.direct_variance[i] >= 0.5 * allowed * allowed) direct_heavy.push_back(i);
+      if (v.direct_variance[i] >= allowed * allowed) ++limited;
+    }
+    if (direct_heavy.empty()) continue;
+    const int k = static_cast<int>(std::ceil(std::sqrt(double(std::max(1, samples_per_bin[g])))));
+    if (k >= max_k) {
+      plan.sensors_at_limit += limited;
+      continue;
+    }
+    // k' = 2k, else 4k, so that every such sensor's predicted direct variance is half its budget.
+    int next_k = std::min(max_k, 2 * k);
+    auto shrink = [&](int to_k) { return std::pow(double(k) / double(to_k), 2.0 * DirectVarianceExponent); };
+    bool enough = true;
+    for (std::size_t i : direct_heavy) {
+      const double allowed = aim_percent / 100.0 * v.df_percent[i];
+      enough = enough && v.direct_variance[i] * shrink(next_k) <= 0.5 * allowed * allowed;
+    }
+    if (!enough) next_k = std::min(max_k, 4 * k);
+    std::vector<GridVariance> trial = predicted;
+    for (double& d : trial[g].direct_variance) d *= shrink(next_k);
+    const RoundPlan trial_photons = next_round_scale(trial, cost, aim_percent, percentile);
+    const double direct_rays = double(v.df_percent.size()) * direct_rays_per_sensor(next_k * next_k, sources, port_sampling);
+    const double trial_rays = photon_plan_rays(trial_photons, cost) + direct_rays;
+    if (limited == 0 && !(trial_rays < plan_rays)) continue;
+    predicted = std::move(trial);
+    plan.photons = trial_photons;
+    plan.samples_per_bin[g] = next_k * next_k;
+    plan.rays += direct_rays;
+    plan_rays = trial_rays;
+  }
+  return plan;
+}
+
 AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
                                    const std::function<void(const std::string&)>& log) {
   return run_accuracy_rounds(c, goal, log, *make_local_round_work());
@@ -193,10 +273,22 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     return engine::round_attempt_range(scene, materials, emitter, planes, c.tracing, p, first, last);
   };
 
-  // The direct component does not change from round to round.
+  // The direct component: the project's shadow rays until a round raises a grid's
+  // (next_direct_round). Its time per shadow ray (the first process's clock) predicts a raise's.
   std::vector<std::vector<Vec3>> direct(grids.size());
   std::vector<std::vector<double>> direct_variance(grids.size());
-  for (std::size_t g = 0; g < grids.size(); ++g) grid_direct(c, g, work, direct[g], direct_variance[g]);
+  std::vector<int> direct_samples(grids.size(), c.estimating.direct.samples_per_source);
+  double direct_seconds = 0, direct_rays = 0;
+  auto trace_direct = [&](std::size_t g) {
+    const Clock::time_point t = Clock::now();
+    grid_direct(c, g, direct_samples[g], work, direct[g], direct_variance[g]);
+    direct_seconds += std::chrono::duration<double>(Clock::now() - t).count();
+    direct_rays += double(grids[g].points.size()) *
+                   direct_rays_per_sensor(direct_samples[g], n, c.estimating.direct.port_sampling);
+  };
+  for (std::size_t g = 0; g < grids.size(); ++g) trace_direct(g);
+  std::vector<std::size_t> chased_grid;  // the grid of each of the last measure's chased variances
+  std::vector<GridVariance> chased_variance;
 
   const std::vector<double> luminance = bin_luminance(*c.overcast_vector);
   const double df_scale = 100.0 * RadianceWhiteEfficacy_lm_per_W / c.horizontal_illuminance_lux;
@@ -206,6 +298,7 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
                                    const std::vector<double>& scale) {
     const engine::TracedPhotons photons = round_photons(records, false);
+    chased_grid.clear();
     result.coefficients.assign(grids.size(), {});
     result.outcome.reached_percent.assign(grids.size(), 0.0);
     RoundMeasurement m;
@@ -238,10 +331,38 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
       if (chased) {
         m.met = m.met && reached <= goal.target_percent;
         m.chased.push_back(std::move(v));
+        chased_grid.push_back(g);
       }
     }
+    chased_variance = m.chased;
     result.outcome.grid_status = m.grid_status;
     return m;
+  };
+  // The direct part's own round decision (next_direct_round) over the chased grids.
+  RoundDirect round_direct;
+  round_direct.plan = [&](const std::vector<double>& cost, const RoundPlan& photons, double aim_percent) {
+    std::vector<int> samples;
+    std::vector<std::size_t> sensors;
+    for (std::size_t g : chased_grid) {
+      samples.push_back(direct_samples[g]);
+      sensors.push_back(grids[g].points.size());
+    }
+    return next_direct_round(chased_variance, samples, sensors, cost, photons, aim_percent, AccuracyPercentile, n,
+                             c.estimating.direct.port_sampling);
+  };
+  round_direct.seconds = [&](const DirectRoundPlan& plan) {
+    return direct_rays > 0 ? work.agreed(direct_seconds) / direct_rays * plan.rays : 0.0;
+  };
+  round_direct.apply = [&](std::size_t round, const DirectRoundPlan& plan) {
+    for (std::size_t j = 0; j < chased_grid.size(); ++j) {
+      const std::size_t g = chased_grid[j];
+      if (plan.samples_per_bin[j] == direct_samples[g]) continue;
+      log("accuracy: round " + std::to_string(round) + " raises grid " + grids[g].name +
+          "'s shadow rays per bin " + std::to_string(direct_samples[g]) + " -> " +
+          std::to_string(plan.samples_per_bin[j]) + " (its direct part keeps it above the target)");
+      direct_samples[g] = plan.samples_per_bin[j];
+      trace_direct(g);
+    }
   };
   // Gathered grids above the target: more gather rays (gather_accuracy_rounds.h), which may
   // settle the stop reason.
@@ -252,7 +373,8 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     o.stop_reason = result.outcome.stop_reason;
   };
   const RoundLoopOutcome o =
-      run_round_loop(sources, goal, measure, {"accuracy", DfMeasure}, log, work, start, gather_rounds);
+      run_round_loop(sources, goal, measure, {"accuracy", DfMeasure}, log, work, start, gather_rounds, round_direct);
+  result.outcome.direct_samples_per_bin = direct_samples;
   result.outcome.rounds = o.rounds;
   result.outcome.photons = o.photons;
   result.outcome.attempts = o.attempts;
@@ -271,7 +393,9 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
                              std::to_string(goal.max_photons) + ":" + number(goal.max_seconds, "%.17g") + ":" +
                              number(AccuracyPercentile, "%.17g") + ":" + std::to_string(MaxAccuracyRounds) + ":" +
                              number(AccuracyPilotFraction, "%.17g") + ":" + number(AccuracyRoundAim, "%.17g") + ":" +
-                             number(AccuracyMaxGrowth, "%.17g") + ":" + (c.gather ? "gather-rays:" + std::to_string(GatherMaxRounds) + ":" +
+                             number(AccuracyMaxGrowth, "%.17g") + ":direct-rays:" +
+                             std::to_string(MaxDirectSamplesPerBin) + ":" + number(DirectVarianceExponent, "%.17g") +
+                             ":" + (c.gather ? "gather-rays:" + std::to_string(GatherMaxRounds) + ":" +
                                                    number(GatherMaxGrowth, "%.17g") + ":" + std::to_string(GatherMaxRays)
                                              : std::string("surface"));
   std::vector<std::string> keys = photon_keys;
@@ -304,6 +428,7 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
                               {"rounds", r.outcome.rounds}, {"photons", r.outcome.photons},
                               {"attempts", r.outcome.attempts}, {"stop_reason", r.outcome.stop_reason},
                               {"grid_status", r.outcome.grid_status},
+                              {"direct_samples_per_bin", r.outcome.direct_samples_per_bin},
                               {"gather", gather_accuracy_json(r.outcome.gather)}};
     bytes.push_back(j.dump());
     out.coefficients = std::move(r.coefficients);
@@ -328,8 +453,10 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
     o.grid_status = j.at("grid_status").get<std::vector<std::string>>();
     if (!j.contains("gather")) return false;  // made before the gather rounds
     o.gather = gather_accuracy_from_json(j.at("gather"));
+    if (!j.contains("direct_samples_per_bin")) return false;  // made before the direct rounds
+    o.direct_samples_per_bin = j.at("direct_samples_per_bin").get<std::vector<int>>();
     if (o.reached_percent.size() != grids.size() || o.grid_status.size() != grids.size() ||
-        o.gather.size() != grids.size())
+        o.gather.size() != grids.size() || o.direct_samples_per_bin.size() != grids.size())
       return false;
     out.coefficients = std::move(cached);
     out.outcome = std::move(o);

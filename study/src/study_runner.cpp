@@ -234,7 +234,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
                         {"photons", accuracy->photons},
                         {"attempts", accuracy->attempts},
                         {"stop_reason", accuracy->stop_reason},
-                        {"status", accuracy->grid_status[g]}};
+                        {"status", accuracy->grid_status[g]},
+                        {"direct_samples_per_bin", accuracy->direct_samples_per_bin.at(g)}};
     if (accuracy && g < accuracy->gather.size() && accuracy->gather[g].gathered) {
       gj["accuracy"]["gather"] = gather_accuracy_json(accuracy->gather[g]);
       gj["accuracy"]["gather"].erase("gathered");

@@ -21,6 +21,7 @@
 #include <tbb/global_control.h>
 
 #include "dayphoton/engine/daylight_coefficients.h"
+#include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/project/project.h"
@@ -32,6 +33,7 @@
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/distributed_executor.h"
+#include "dayphoton/study/plan_policy.h"
 #include "../dist/in_process_ranks.h"
 
 namespace dayphoton::study {
@@ -75,6 +77,61 @@ TEST(AccuracyRounds, DirectVarianceAboveTheBudgetIsCountedNotChased) {
   const RoundPlan plan = next_round_scale({g}, {1.0}, 1.0, AccuracyPercentile);
   EXPECT_EQ(plan.sensors_direct_limited, 1u);
   EXPECT_EQ(plan.scale[0], 1.0);
+}
+
+// ---- the direct part's round (next_direct_round) --------------------------------------------
+
+/// One sensor at DF 1 % with direct variance `direct` and photon variance `photon` from one
+/// source whose rays so far cost `cost`; aim 1 %, so the budget is 1e-4 (%^2).
+DirectRoundPlan one_sensor_direct_round(double direct, double photon, double cost, int samples) {
+  GridVariance g;
+  g.df_percent = {1.0};
+  g.direct_variance = {direct};
+  g.photon_variance = {photon};
+  const RoundPlan photons = next_round_scale({g}, {cost}, 1.0, AccuracyPercentile);
+  return next_direct_round({g}, {samples}, {1}, {cost}, photons, 1.0, AccuracyPercentile, 1, false);
+}
+
+// The shadow rays alone exceed the budget (2e-4 > 1e-4): the raise is needed. At 2k the
+// predicted variance 2e-4 / 2^3 = 2.5e-5 is under half the budget, so 16 -> 64 (8 x 8); with
+// 5e-3 neither 2k (6.3e-4) nor 4k (7.8e-5) is, and 4k = 16 (256, the limit) is the most a round
+// takes. At the limit nothing is raised and the sensor is counted; a project's count above
+// the limit is kept.
+TEST(AccuracyRounds, DirectRoundRaisesWhatPhotonsCannotReduce) {
+  const DirectRoundPlan a = one_sensor_direct_round(2e-4, 1e-5, 100.0, 16);
+  ASSERT_TRUE(a.raised());
+  EXPECT_EQ(a.samples_per_bin, std::vector<int>{64});
+  EXPECT_DOUBLE_EQ(a.rays, direct_rays_per_sensor(64, 1, false));
+  EXPECT_DOUBLE_EQ(a.rays, 64.0);
+  EXPECT_EQ(a.sensors_at_limit, 0u);
+  const DirectRoundPlan b = one_sensor_direct_round(5e-3, 1e-5, 100.0, 16);
+  EXPECT_EQ(b.samples_per_bin, std::vector<int>{MaxDirectSamplesPerBin});
+  const DirectRoundPlan c = one_sensor_direct_round(2e-4, 1e-5, 100.0, MaxDirectSamplesPerBin);
+  EXPECT_FALSE(c.raised());
+  EXPECT_EQ(c.sensors_at_limit, 1u);
+  const DirectRoundPlan d = one_sensor_direct_round(2e-4, 1e-5, 100.0, 400);
+  EXPECT_FALSE(d.raised());
+  EXPECT_EQ(d.samples_per_bin, std::vector<int>{400});
+}
+
+// Direct 0.6e-4 and photons 0.6e-4 (1.1 % against the aim of 1 %): photons alone need
+// 0.6e-4 / (1e-4 - 0.6e-4) = 1.5 times the source's rays (0.5 x cost more); after a raise to
+// 8 x 8 the direct part is 0.6e-4 / 8 and the photons already fit, for 64 shadow rays. So the
+// raise is made when 64 < 0.5 x cost (cost 1000) and not when it is dearer (cost 100).
+TEST(AccuracyRounds, DirectRoundRaisesWhenCheaperThanPhotons) {
+  const DirectRoundPlan cheap = one_sensor_direct_round(0.6e-4, 0.6e-4, 1000.0, 16);
+  ASSERT_TRUE(cheap.raised());
+  EXPECT_EQ(cheap.samples_per_bin, std::vector<int>{64});
+  EXPECT_EQ(cheap.photons.scale, std::vector<double>{1.0});
+  const DirectRoundPlan dear = one_sensor_direct_round(0.6e-4, 0.6e-4, 100.0, 16);
+  EXPECT_FALSE(dear.raised());
+  EXPECT_EQ(dear.samples_per_bin, std::vector<int>{16});
+  EXPECT_NEAR(dear.photons.scale[0], 1.5, 1e-12);
+  // The direct part under half the budget: not what keeps the sensor above; not raised.
+  EXPECT_FALSE(one_sensor_direct_round(0.4e-4, 1e-4, 1e9, 16).raised());
+  // The port points count: 2 sides x (8 x 8)^2 at 64 rays per bin, besides 64 per source.
+  EXPECT_DOUBLE_EQ(direct_rays_per_sensor(64, 146, true), 64.0 * 146 + 2.0 * 64 * 64);
+  EXPECT_DOUBLE_EQ(direct_rays_per_sensor(10, 1, false), 16.0);  // rounded up to 4 x 4
 }
 
 // 20 sensors at 0.5 % and one at 10 %: the worst is beyond the 95th percentile (rank 20 of
@@ -134,13 +191,14 @@ struct Office {
     c.tracing.source_photon_factor[0] = 16.0;  // the ground, as the pipeline
     c.tracing.keep_surface_photons = false;
     c.estimating.density.bandwidth = 20;
-    c.estimating.direct.samples_per_source = 16;
+    c.estimating.direct.samples_per_source = direct_samples;
     c.estimating.direct.seed = seed;
     c.overcast_vector = &overcast;
     c.horizontal_illuminance_lux = 10000.0;
     return c;
   }
   std::uint64_t seed = 1;
+  int direct_samples = 16;
 };
 
 AccuracyResult run(std::uint64_t seed, const AccuracyGoal& goal, int threads = 0) {
@@ -237,6 +295,78 @@ TEST(AccuracyTarget, OneAndTwoThreadsGiveTheSameBytes) {
   EXPECT_EQ(0, std::memcmp(x.global.data(), y.global.data(), x.global.size() * sizeof(Vec3)));
   EXPECT_EQ(0, std::memcmp(x.direct.data(), y.direct.data(), x.direct.size() * sizeof(Vec3)));
   EXPECT_EQ(0, std::memcmp(x.photon_variance.data(), y.photon_variance.data(), x.photon_variance.size() * sizeof(double)));
+}
+
+// The direct part dominates after the pilot: at 1 shadow ray per bin (and 8 x 8 port points
+// per side) the office's direct variance alone exceeds many sensors' budget at a 3 % target, so
+// a round raises the grid's shadow rays (the log says so) and the rounds then meet the target
+// ("target met", the count raised, the same bytes on one and two threads). The raised direct
+// part's reported variance is checked against an independent direct component (another seed,
+// 256 rays per bin): per sensor z = (D - D_ref) / sqrt(s^2 + s_ref^2) of the direct DF, the
+// sensors independent (each draws its own random streams), so sum z^2 over the N lit sensors
+// is at most chi^2(N) if the variances are honest; the test bounds it by chi^2(N)'s upper
+// 1e-4 quantile (Wilson-Hilferty), a variance understated by a factor 2 fails.
+TEST(AccuracyTarget, DirectPartDominatesThenTheRoundsRaiseItsRaysAndMeetTheTarget) {
+  AccuracyGoal goal;
+  goal.target_percent = Target;
+  Office office(7);
+  office.direct_samples = 1;
+  std::vector<std::string> lines;
+  auto run_direct = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    lines.clear();
+    return run_accuracy_rounds(office.accuracy_case(), goal, [&](const std::string& line) {
+      std::printf("%s\n", line.c_str());
+      lines.push_back(line);
+    });
+  };
+  const AccuracyResult r = run_direct(2);
+  std::size_t raises = 0;
+  for (const std::string& l : lines) raises += l.find("raises grid") != std::string::npos;
+  EXPECT_GE(raises, 1u) << "no round raised the shadow rays";
+  ASSERT_EQ(r.outcome.stop_reason, "target met");
+  ASSERT_EQ(r.outcome.direct_samples_per_bin.size(), 1u);
+  const int raised = r.outcome.direct_samples_per_bin[0];
+  EXPECT_GT(raised, 1);
+  EXPECT_LE(raised, MaxDirectSamplesPerBin);
+  EXPECT_LE(r.outcome.reached_percent[0], Target);
+  const AccuracyResult one = run_direct(1);
+  EXPECT_EQ(one.outcome.direct_samples_per_bin, r.outcome.direct_samples_per_bin);
+  EXPECT_EQ(one.outcome.final_attempts, r.outcome.final_attempts);
+  EXPECT_TRUE(encode_coefficients(one.coefficients[0]) == encode_coefficients(r.coefficients[0]));
+
+  // The direct part of the result against an independent one.
+  const engine::DaylightCoefficients& c = r.coefficients[0];
+  const std::vector<SensorPoint>& sensors = office.description.grids.at(0).points;
+  engine::DirectOptions reference;
+  reference.samples_per_source = MaxDirectSamplesPerBin;
+  reference.seed = 1007;
+  engine::DaylightCoefficients ref = c;
+  ref.direct = engine::direct_coefficients(*office.scene, office.materials, office.sources, sensors, reference,
+                                           &ref.direct_variance);
+  auto direct_df = [&](const engine::DaylightCoefficients& x, std::vector<double>& se) {
+    engine::DaylightCoefficients d = x;
+    d.global.assign(d.global.size(), Vec3{0, 0, 0});
+    d.caustic.assign(d.caustic.size(), Vec3{0, 0, 0});
+    se = daylight_factor_stderr_percent(d.direct_variance, d.sensors, office.overcast, 10000.0);
+    return df_of(d, office.overcast);
+  };
+  std::vector<double> se, se_ref;
+  const std::vector<double> df = direct_df(c, se), df_ref = direct_df(ref, se_ref);
+  double sum = 0;
+  std::size_t lit = 0;
+  for (std::size_t i = 0; i < df.size(); ++i) {
+    if (!(df_ref[i] > 0)) continue;
+    ++lit;
+    const double e = df[i] - df_ref[i];
+    sum += e * e / (se[i] * se[i] + se_ref[i] * se_ref[i]);
+  }
+  ASSERT_GT(lit, 20u);
+  const double nu = double(lit), z = 3.719;  // the standard normal's upper 1e-4 quantile
+  const double bound = nu * std::pow(1.0 - 2.0 / (9.0 * nu) + z * std::sqrt(2.0 / (9.0 * nu)), 3.0);
+  std::printf("direct part at %d rays per bin against the reference: sum z^2 %.1f over %zu sensors (bound %.1f)\n",
+              raised, sum, lit, bound);
+  EXPECT_LT(sum, bound);
 }
 
 /// A RoundWork that counts the ranges it is asked for and hands them on.

@@ -20,8 +20,12 @@
 // section 5.5); each source takes the largest count any sensor below the percentile asks
 // for. A source that brings no light to a failing sensor gets no photons after the pilot.
 // The direct component's variance (shadow rays) does not fall with photons: a sensor whose
-// direct variance alone exceeds its budget cannot be helped by photons and is left out (the
-// run says so; direct_samples_per_bin lowers it).
+// direct variance alone exceeds its budget cannot be helped by photons and is left out of the
+// photon plan. The direct part has its own round decision (next_direct_round): a grid whose
+// failing sensors owe at least half their budget to the shadow rays gets more shadow rays per
+// bin (its direct component traced again at the new count, by sensor blocks through the
+// work) when that is needed or costs fewer rays than the photons, up to
+// MaxDirectSamplesPerBin (plan_policy.h; the stop "direct rays limit").
 //
 // Grids estimated by final gather are measured but not chased with photons: their error is
 // mostly the gather rays' (accuracy_policy.h); after the photon rounds their rays are raised
@@ -111,6 +115,46 @@ struct RoundPlan {
 RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::vector<double>& cost,
                            double aim_percent, double percentile);
 
+/// The direct component's variance at a sensor falls with its shadow rays per bin n as
+/// n^(-DirectVarianceExponent) when planning a raise: the stratified estimator's law at a
+/// shadow edge (engine/direct_component.h: error n^(-3/4); n^(-1) or faster where T cos is
+/// smooth), the slower of the two, so a raise never plans too few rays for the edges; the
+/// next round measures the variance again.
+constexpr double DirectVarianceExponent = 1.5;
+
+/// Shadow rays per sensor of the direct component at `samples_per_bin` (rounded up to a square
+/// k x k, as engine::direct_coefficients does): k^2 per source, plus (PortStrataFactor k)^2 on
+/// each of the two sides of the ports with port sampling (direct_component.h, an upper
+/// bound: a side without ports traces none).
+double direct_rays_per_sensor(int samples_per_bin, std::size_t sources, bool port_sampling);
+
+/// The next round's direct part (next_direct_round).
+struct DirectRoundPlan {
+  std::vector<int> samples_per_bin;  ///< per grid of `grids`: the next round's count (= now if not raised)
+  RoundPlan photons;                 ///< the photon plan with the raised grids' predicted direct variance
+  double rays = 0;                   ///< shadow rays the raise traces (direct_rays_per_sensor x sensors; 0: none)
+  /// Sensors above their budget by the direct variance alone in grids already at
+  /// MaxDirectSamplesPerBin (plan_policy.h): neither photons nor the rounds' rays help them.
+  std::size_t sensors_at_limit = 0;
+  bool raised() const { return rays > 0; }
+};
+
+/// Whether the next round raises the shadow rays of some grids, and the photon plan that goes
+/// with it. `grids` and `samples_per_bin`, `sensors` (per grid), `cost` and `photons` (the
+/// plan of next_round_scale for the variances as they are) as measured. A grid is raised when
+/// one of its sensors at or below the percentile above the aim has a direct variance of at least
+/// half its budget (the direct part is what keeps it above), to the smallest k' = 2k or 4k
+/// (at most MaxDirectSamplesPerBin) that brings every such sensor's predicted direct variance
+/// (DirectVarianceExponent) to half its budget, and only if it is needed (a sensor's direct
+/// variance alone exceeds its budget: photons cannot help) or cheaper: its shadow rays plus the
+/// photon plan with the predicted variance cost fewer rays than the plan without. Grids in
+/// order, each decided against the plan with the raises before it: a pure function of its
+/// arguments, so every process decides alike.
+DirectRoundPlan next_direct_round(const std::vector<GridVariance>& grids, const std::vector<int>& samples_per_bin,
+                                  const std::vector<std::size_t>& sensors, const std::vector<double>& cost,
+                                  const RoundPlan& photons, double aim_percent, double percentile, std::size_t sources,
+                                  bool port_sampling);
+
 /// What the rounds did (summary.json `accuracy` of each grid, docs/outputs.md).
 struct AccuracyOutcome {
   double target_percent = 0;
@@ -120,8 +164,12 @@ struct AccuracyOutcome {
   std::uint64_t attempts = 0;
   /// "target met", "not reachable by photons" (every grid the photons serve met it, a gathered
   /// grid did not: accuracy_policy.h), "photon budget", "time budget", "round limit",
-  /// "direct component", "no light"
+  /// "direct component", "direct rays limit" (the sensors still above the target are so by
+  /// their direct variance at MaxDirectSamplesPerBin), "no light"
   std::string stop_reason;
+  /// Per grid: the shadow rays per bin of its final direct component (the project's
+  /// direct_samples_per_bin unless the rounds raised it).
+  std::vector<int> direct_samples_per_bin;
   std::vector<std::string> grid_status;  ///< per grid: accuracy_grid_status (accuracy_policy.h)
   std::vector<GatherAccuracy> gather;    ///< per grid: its gather rounds (gather_accuracy_rounds.h)
   /// Attempts per source after the pilot and at the end (of a run that traced; not cached).

@@ -27,6 +27,17 @@ constexpr double OvercastHorizontalLux = 10000.0;
 /// penumbra then errs by at most one stratum's share, 1/4 of the edge strata it crosses.
 constexpr int SunDirectSamples = 16;
 
+/// Shadow rays per bin (per sensor and sky source) up to which the accuracy rounds may raise
+/// a grid's direct component when its shadow-ray variance is what keeps the grid above the
+/// target (docs/photon-tracing.md "Accuracy target"). 256 = 16 x 16 strata, 16 times the
+/// default direct_samples_per_bin: at an edge the direct variance falls as n^(-3/2)
+/// (direct_component.h), so the limit removes 98 % of the default's variance there, for
+/// about 70 000 shadow rays per sensor with the Tregenza sky (145 patches and the ground,
+/// plus the port points): 0.7 billion for a 10 000-sensor grid, which the rounds only trace
+/// when it costs fewer rays than the photons that would do the same. A project that sets
+/// direct_samples_per_bin above it keeps its own count.
+constexpr int MaxDirectSamplesPerBin = 256;
+
 /// Stored photons of a sun bin relative to a sky bin (photons_per_bin). The sun bins are
 /// many (about 1000 for MF 6 in the office) and an hour's sun averages up to 4 of them, so
 /// each needs fewer photons than a sky bin for the same hourly noise; the measured trade
