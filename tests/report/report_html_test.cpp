@@ -24,6 +24,7 @@
 #include "dayphoton/report/report_format.h"
 #include "dayphoton/report/validation_figures.h"
 #include "dayphoton/study/compliance_verdicts.h"
+#include "dayphoton/study/plan_policy.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/results_model_builder.h"
 #include "dayphoton/study/run_timings.h"
@@ -574,6 +575,29 @@ TEST(ReportHtml, AGatheredGridsAccuracyIsExplainedByItsOwnGatherRounds) {
             std::string::npos)
       << met;
   EXPECT_EQ(met.find("stopped with"), std::string::npos) << met;
+}
+
+TEST(ReportHtml, TheDirectRaysLimitNamesTheKeyToChange) {
+  // The rounds raised the shadow rays to their limit and stopped there: the sentence says so,
+  // with the limit, and names direct_samples_per_bin (not the photon keys).
+  const std::string dir = temp_dir("accuracy_direct_limit");
+  ResultsModel m = results_model(dir);
+  using Acc = DaylightFactorSummary::AccuracyReached;
+  m.cases[0].grids[0].daylight_factor->accuracy = Acc{1.0, 1.3, 3, 4000000, "direct rays limit", "above target"};
+  write_results_model(m, dir);
+  const std::string html = report_html(dir);
+  const std::size_t at = html.find("data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
+  ASSERT_NE(at, std::string::npos);
+  const std::string item = html.substr(at, html.find("</li>", at) - at);
+  EXPECT_NE(item.find("<strong>Above the target.</strong> Why: the sensors still above the target are so by the "
+                      "noise of their direct light (the shadow rays toward the sky through the openings), and the "
+                      "rounds raised those rays to their limit of " +
+                      std::to_string(MaxDirectSamplesPerBin) +
+                      " per sky patch. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
+                      std::to_string(MaxDirectSamplesPerBin)),
+            std::string::npos)
+      << item;
+  EXPECT_EQ(item.find("max_photons"), std::string::npos) << item;
 }
 
 TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {
