@@ -334,6 +334,25 @@ TEST(AccuracyTarget, DirectPartDominatesThenTheRoundsRaiseItsRaysAndMeetTheTarge
   EXPECT_EQ(one.outcome.direct_samples_per_bin, r.outcome.direct_samples_per_bin);
   EXPECT_EQ(one.outcome.final_attempts, r.outcome.final_attempts);
   EXPECT_TRUE(encode_coefficients(one.coefficients[0]) == encode_coefficients(r.coefficients[0]));
+  // Two in-process ranks (the distributed executor's RoundWork, blocks of 8 sensors): every
+  // rank raises alike and holds the one-process bytes.
+  std::vector<AccuracyResult> ranked(2);
+  const auto errors = dist::test::run_ranks(2, [&](dist::Communicator& comm) {
+    const std::filesystem::path dir =
+        std::filesystem::path(::testing::TempDir()) / ("accuracy_direct_" + std::to_string(comm.rank()));
+    std::filesystem::remove_all(dir);
+    const ArtifactStore store(dir.string());
+    const auto executor = make_distributed_executor(comm, store, false, 8);
+    ranked[static_cast<std::size_t>(comm.rank())] =
+        run_accuracy_rounds(office.accuracy_case(), goal, [](const std::string&) {}, executor->round_work());
+  });
+  for (const std::exception_ptr& e : errors) EXPECT_FALSE(e) << "a rank failed";
+  for (const AccuracyResult& x : ranked) {
+    EXPECT_EQ(x.outcome.direct_samples_per_bin, r.outcome.direct_samples_per_bin);
+    EXPECT_EQ(x.outcome.stop_reason, r.outcome.stop_reason);
+    ASSERT_EQ(x.coefficients.size(), 1u);
+    EXPECT_TRUE(encode_coefficients(x.coefficients[0]) == encode_coefficients(r.coefficients[0]));
+  }
 
   // The direct part of the result against an independent one.
   const engine::DaylightCoefficients& c = r.coefficients[0];
