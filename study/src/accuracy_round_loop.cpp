@@ -222,15 +222,23 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
       for (std::size_t p = 0; p < n; ++p)
         next[p] = records[p].attempts +
                   static_cast<std::uint64_t>(std::floor(share * double(next[p] - records[p].attempts)));
-      if (share < 0.05) {
+      if (share < 0.05 && direct_plan.raised()) {
+        // The raise fits (its time was taken off the room above): the round raises the shadow
+        // rays alone, and is the last.
+        for (std::size_t p = 0; p < n; ++p) next[p] = records[p].attempts;
+        pending = cut;
+        log(text.name + ": round " + std::to_string(round + 1) + " raises the shadow rays only: the " + cut +
+            " leaves no room for photons; the last round");
+      } else if (share < 0.05) {
         outcome.stop_reason = cut;
         log(text.name + ": no round " + std::to_string(round + 1) + ": the " + cut + " leaves room for " +
             round_number(100.0 * share) + " % of it");
         break;
+      } else {
+        pending = cut;
+        log(text.name + ": round " + std::to_string(round + 1) + " cut to " + round_number(100.0 * share) +
+            " % of its plan by the " + cut + "; the last round");
       }
-      pending = cut;
-      log(text.name + ": round " + std::to_string(round + 1) + " cut to " + round_number(100.0 * share) +
-          " % of its plan by the " + cut + "; the last round");
     }
     for (std::size_t p = 0; p < n; ++p) traced_attempts += next[p] - records[p].attempts;
     const Clock::time_point t = Clock::now();

@@ -388,6 +388,30 @@ TEST(AccuracyTarget, DirectPartDominatesThenTheRoundsRaiseItsRaysAndMeetTheTarge
   EXPECT_LT(sum, bound);
 }
 
+// A photon budget below the pilot's photons leaves no room for photons after it, but the
+// shadow rays are no photons: round 2 raises them alone (no attempt after the pilot) and is
+// the last, stopping on the photon budget with the error the raise brought down.
+TEST(AccuracyTarget, APhotonBudgetLeavesTheShadowRaysTheirRound) {
+  AccuracyGoal goal;
+  goal.target_percent = Target;
+  goal.max_photons = 1000;
+  Office office(7);
+  office.direct_samples = 1;
+  const AccuracyResult r =
+      run_accuracy_rounds(office.accuracy_case(), goal, [](const std::string& line) { std::printf("%s\n", line.c_str()); });
+  EXPECT_EQ(r.outcome.stop_reason, "photon budget");
+  EXPECT_EQ(r.outcome.rounds, 2u);
+  EXPECT_EQ(r.outcome.final_attempts, r.outcome.pilot_attempts);
+  ASSERT_EQ(r.outcome.direct_samples_per_bin.size(), 1u);
+  EXPECT_GT(r.outcome.direct_samples_per_bin[0], 1);
+  office.direct_samples = r.outcome.direct_samples_per_bin[0];
+  goal.max_photons = 0;  // the pilot alone at the raised count: the same estimate
+  goal.target_percent = 100.0;
+  const AccuracyResult pilot = run_accuracy_rounds(office.accuracy_case(), goal, [](const std::string&) {});
+  EXPECT_EQ(pilot.outcome.rounds, 1u);
+  EXPECT_TRUE(encode_coefficients(pilot.coefficients[0]) == encode_coefficients(r.coefficients[0]));
+}
+
 /// A RoundWork that counts the ranges it is asked for and hands them on.
 class CountingWork final : public RoundWork {
  public:
