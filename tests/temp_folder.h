@@ -17,7 +17,8 @@ namespace dayphoton::test {
 /// This process's own folder, "dayphoton_test_<pid>" below the temporary folder
 /// (std::filesystem::temp_directory_path: TMPDIR, which CTest sets to the build tree's
 /// test-tmp/), made empty on first use. It is removed with everything in it when the process
-/// ends, unless a test failed (its files are then kept for a look).
+/// ends, unless a test failed (its files are then kept for a look). A test that forks must end
+/// its child with _exit, not exit: the child's exit would remove the folder.
 inline const std::filesystem::path& process_temp_dir() {
   struct Folder {
     std::filesystem::path path =
