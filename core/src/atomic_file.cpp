@@ -12,10 +12,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "dayphoton/core/error_text.h"
+
 namespace dayphoton {
 
 namespace {
-std::string errno_text() { return std::strerror(errno); }
+std::string errno_text() { return error_text(errno); }
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& write,

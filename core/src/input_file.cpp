@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/error_text.h"
 
 namespace dayphoton {
 
@@ -14,7 +15,7 @@ std::string input_file_problem(const std::string& path) {
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0) {
     if (errno == ENOENT || errno == ENOTDIR) return "not found";
-    return std::string("cannot be read: ") + std::strerror(errno);
+    return std::string("cannot be read: ") + error_text(errno);
   }
   if (S_ISREG(info.st_mode)) return {};
   if (S_ISDIR(info.st_mode)) return "is a folder, not a file";
@@ -34,7 +35,7 @@ std::ifstream open_input_file(const std::string& path, const std::string& what,
   const std::string problem = input_file_problem(path);
   if (!problem.empty()) fail(problem);
   std::ifstream in(path, std::ios::binary);
-  if (!in) fail(std::string("cannot be opened: ") + std::strerror(errno));
+  if (!in) fail(std::string("cannot be opened: ") + error_text(errno));
   return in;
 }
 

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "dayphoton/core/error_text.h"
+
 #include "sha256_x86.h"
 
 namespace dayphoton {
@@ -115,7 +117,7 @@ std::string sha256_hex(const std::string& bytes) {
 
 std::string sha256_file_hex(const std::string& path, std::uint64_t* size_bytes) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
+  if (!in) throw std::runtime_error("cannot read " + path + ": " + error_text(errno));
   Sha256 h;
   std::vector<char> buffer(1 << 16);
   std::uint64_t total = 0;

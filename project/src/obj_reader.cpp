@@ -11,6 +11,7 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "dayphoton/core/error_text.h"
 #include "dayphoton/core/input_file.h"
 #include "text_tokens.h"
 
@@ -244,7 +245,7 @@ ObjMesh read_obj(const std::string& path, Diagnostics& diag, const SourceLocatio
   std::ifstream in;
   if (why.empty()) {
     in.open(path, std::ios::binary);
-    if (!in) why = std::string("cannot be opened: ") + std::strerror(errno);
+    if (!in) why = std::string("cannot be opened: ") + error_text(errno);
   }
   if (!why.empty()) {
     if (referenced_from.known())

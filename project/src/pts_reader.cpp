@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "dayphoton/core/error_text.h"
 #include "dayphoton/core/input_file.h"
 #include "text_tokens.h"
 
@@ -79,7 +80,7 @@ std::vector<SensorPoint> read_pts(const std::string& path, Diagnostics& diag,
   std::ifstream in;
   if (why.empty()) {
     in.open(path, std::ios::binary);
-    if (!in) why = std::string("cannot be opened: ") + std::strerror(errno);
+    if (!in) why = std::string("cannot be opened: ") + error_text(errno);
   }
   if (!why.empty()) {
     if (referenced_from.known())

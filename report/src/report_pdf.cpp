@@ -18,6 +18,8 @@
 #include <thread>
 #include <vector>
 
+#include "dayphoton/core/error_text.h"
+
 extern char** environ;
 
 namespace dayphoton::report {
@@ -142,7 +144,7 @@ std::string print_pdf(const std::string& html_path, const std::string& pdf_path,
   const int spawned = posix_spawn(&pid, browser.c_str(), &actions, &attributes, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
-  if (spawned != 0) throw std::runtime_error("printing the PDF: cannot start " + browser + ": " + std::strerror(spawned));
+  if (spawned != 0) throw std::runtime_error("printing the PDF: cannot start " + browser + ": " + error_text(spawned));
 
   const auto start = std::chrono::steady_clock::now();
   int status = 0;

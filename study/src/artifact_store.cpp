@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "dayphoton/core/atomic_file.h"
+#include "dayphoton/core/error_text.h"
 
 namespace dayphoton::study {
 
@@ -158,7 +159,7 @@ std::optional<std::string> ArtifactStore::read(const std::string& kind, const st
   std::error_code exists_error;
   if (!fs::exists(path, exists_error)) return absent(problem, "missing");
   std::ifstream in(path, std::ios::binary);
-  if (!in) return absent(problem, "cannot open: " + std::string(std::strerror(errno)));
+  if (!in) return absent(problem, "cannot open: " + error_text(errno));
   std::string file;
   {
     in.seekg(0, std::ios::end);

@@ -82,9 +82,7 @@ class RankCaseUnits final : public CaseUnits {
   RankCaseUnits(dist::Communicator& comm, const std::vector<const ArtifactStore*>& stores, bool force,
                 std::vector<CaseUnit> units, bool several_projects)
       : m_comm(comm), m_stores(stores), m_units(std::move(units)), m_several_projects(several_projects) {
-    std::vector<double> costs;
-    for (const CaseUnit& u : m_units) costs.push_back(u.cost_seconds);
-    m_owner = assign_case_units(costs, comm.size());
+    deal_out_on_root();
     for (const ArtifactStore* store : m_stores)
       m_executors.push_back(std::make_unique<UnitExecutor>(*store, force, comm.rank() == dist::RootRank));
   }
@@ -142,6 +140,42 @@ class RankCaseUnits final : public CaseUnits {
   }
 
  private:
+  /// Collective: rank 0 deals the units out by its own cost estimates (assign_case_units) and
+  /// sends every rank the owners and those estimates, which replace the rank's own. Each rank
+  /// computes the estimates itself, in floating point: on another node (another processor,
+  /// library or build) one could round differently, and ranks dealing out by their own could
+  /// disagree on who computes a case (a case computed twice, or by none).
+  void deal_out_on_root() {
+    dist::ByteBuffer message;
+    if (m_comm.rank() == dist::RootRank) {
+      std::vector<double> costs;
+      for (const CaseUnit& u : m_units) costs.push_back(u.cost_seconds);
+      const std::vector<int> owner = assign_case_units(costs, m_comm.size());
+      for (std::size_t u = 0; u < m_units.size(); ++u) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &costs[u], sizeof bits);
+        put_u64(message, static_cast<std::uint64_t>(owner[u]));
+        put_u64(message, bits);
+      }
+    }
+    m_comm.broadcast_from_root(message);
+    constexpr std::size_t UnitBytes = 2 * sizeof(std::uint64_t);  // owner, cost's bits
+    if (message.size() != m_units.size() * UnitBytes)
+      throw std::runtime_error("case units: rank 0 dealt out " + std::to_string(message.size() / UnitBytes) +
+                               " units, not " + std::to_string(m_units.size()));
+    std::size_t at = 0;
+    m_owner.assign(m_units.size(), 0);
+    for (std::size_t u = 0; u < m_units.size(); ++u) {
+      const std::uint64_t owner = get_u64(message, at);
+      const std::uint64_t bits = get_u64(message, at);
+      if (owner >= static_cast<std::uint64_t>(m_comm.size()))
+        throw std::runtime_error("case units: rank 0 gave unit " + std::to_string(u) + " to rank " +
+                                 std::to_string(owner));
+      m_owner[u] = static_cast<int>(owner);
+      std::memcpy(&m_units[u].cost_seconds, &bits, sizeof bits);
+    }
+  }
+
   /// The line for the run log, the same on every rank: which rank computed which case, and
   /// each rank's estimated cost.
   std::string line() const {
@@ -174,7 +208,7 @@ class RankCaseUnits final : public CaseUnits {
 
   dist::Communicator& m_comm;
   const std::vector<const ArtifactStore*> m_stores;
-  const std::vector<CaseUnit> m_units;
+  std::vector<CaseUnit> m_units;  ///< the costs rank 0's (deal_out_on_root)
   const bool m_several_projects;
   std::vector<int> m_owner;
   std::vector<std::unique_ptr<UnitExecutor>> m_executors;

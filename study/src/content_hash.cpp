@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "dayphoton/core/error_text.h"
+
 namespace dayphoton::study {
 
 namespace {
@@ -88,7 +90,7 @@ ContentHash& ContentHash::vec3(const Vec3& v) {
 
 ContentHash& ContentHash::file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
+  if (!in) throw std::runtime_error("cannot read " + path + ": " + error_text(errno));
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
   in.seekg(0, std::ios::beg);

@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "dayphoton/core/error_text.h"
+
 namespace dayphoton::study {
 
 namespace {
@@ -58,7 +60,7 @@ std::optional<LockOwner> parse_owner(const std::string& text) {
 }
 
 [[noreturn]] void fail(const std::string& what, const std::string& path) {
-  throw std::runtime_error("cannot " + what + " the lock file " + path + ": " + std::strerror(errno));
+  throw std::runtime_error("cannot " + what + " the lock file " + path + ": " + error_text(errno));
 }
 
 }  // namespace

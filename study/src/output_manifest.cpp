@@ -12,6 +12,7 @@
 #include <tbb/parallel_for.h>
 
 #include "dayphoton/core/atomic_file.h"
+#include "dayphoton/core/error_text.h"
 #include "dayphoton/core/sha256.h"
 
 namespace dayphoton::study {
@@ -110,7 +111,7 @@ OutputManifest OutputManifest::begin(const std::string& dir, const std::string& 
 
   OutputManifest manifest(dir, removed);
   manifest.m_marker.open(marker, std::ios::app | std::ios::binary);
-  if (!manifest.m_marker) throw std::runtime_error("cannot append to " + marker.string() + ": " + std::strerror(errno));
+  if (!manifest.m_marker) throw std::runtime_error("cannot append to " + marker.string() + ": " + error_text(errno));
   return manifest;
 }
 

@@ -241,13 +241,6 @@ struct Reader {
     if (!v.is_number()) fail(name(parent, key), "is not a number");
     return v.get<double>();
   }
-  /// A grid's accuracy status (accuracy_policy.h's words).
-  std::string accuracy_status(const json& j, const std::string& parent) const {
-    const std::string s = text(j, parent, "status");
-    if (s != "met" && s != "above target" && s != "not reachable by photons")
-      fail(name(parent, "status"), "is not met, above target or not reachable by photons");
-    return s;
-  }
   std::optional<double> optional_number(const json& j, const std::string& parent, const char* key) const {
     const json& v = at(j, parent, key);
     if (v.is_null()) return std::nullopt;
@@ -274,6 +267,29 @@ struct Reader {
     const json& v = at(j, parent, key);
     if (!v.is_string()) fail(name(parent, key), "is not a string");
     return v.get<std::string>();
+  }
+  /// An accuracy block of a grid, the sky's (daylight_factor.accuracy) or the sun bins'
+  /// (sun_accuracy): `key` of `j`, null when the run had no accuracy target. The fields both
+  /// kinds have are read here (target, reached, rounds, photons, the rounds' stop, and the
+  /// grid's status in accuracy_policy.h's words); `own(block, its key, result)` then reads the
+  /// fields of its kind.
+  template <class Accuracy, class Own>
+  std::optional<Accuracy> accuracy_reached(const json& j, const std::string& parent, const char* key,
+                                           const Own& own) const {
+    const json& block = at(j, parent, key);
+    if (block.is_null()) return std::nullopt;
+    const std::string k = name(parent, key);
+    Accuracy r;
+    r.target_percent = number(block, k, "target_percent");
+    r.reached_percent = number(block, k, "reached_percent");
+    r.rounds = count(block, k, "rounds");
+    r.photons = count(block, k, "photons");
+    r.stop_reason = text(block, k, "stop_reason");
+    r.status = text(block, k, "status");
+    if (r.status != "met" && r.status != "above target" && r.status != "not reachable by photons")
+      fail(name(k, "status"), "is not met, above target or not reachable by photons");
+    own(block, k, r);
+    return r;
   }
   const json& array(const json& j, const std::string& parent, const char* key) const {
     const json& v = at(j, parent, key);
@@ -430,42 +446,23 @@ struct Reader {
       d.rms_relative_stderr_percent = number(df, dk, "rms_relative_stderr_percent");
       d.max_relative_stderr_percent = number(df, dk, "max_relative_stderr_percent");
       d.sensors_with_daylight = count(df, dk, "sensors_with_daylight");
-      const json& acc = at(df, dk, "accuracy");
-      if (!acc.is_null()) {
-        const std::string ck = dk + ".accuracy";
-        DaylightFactorSummary::AccuracyReached r;
-        r.target_percent = number(acc, ck, "target_percent");
-        r.reached_percent = number(acc, ck, "reached_percent");
-        r.rounds = count(acc, ck, "rounds");
-        r.photons = count(acc, ck, "photons");
-        r.stop_reason = text(acc, ck, "stop_reason");
-        r.status = accuracy_status(acc, ck);
-        // "gather": present for a grid estimated by final gather only.
-        if (acc.contains("gather")) {
-          const std::string gk = ck + ".gather";
-          const json& ga = at(acc, ck, "gather");
-          r.gather_rays = static_cast<int>(count(ga, gk, "rays"));
-          if (r.gather_rays < 1) fail(name(gk, "rays"), "is not at least 1");
-          r.gather_rounds = count(ga, gk, "rounds");
-          r.gather_stop_reason = text(ga, gk, "stop_reason");
-        }
-        d.accuracy = r;
-      }
+      d.accuracy = accuracy_reached<DaylightFactorSummary::AccuracyReached>(
+          df, dk, "accuracy", [this](const json& acc, const std::string& ck, DaylightFactorSummary::AccuracyReached& r) {
+            // "gather": present for a grid estimated by final gather only.
+            if (!acc.contains("gather")) return;
+            const std::string gk = ck + ".gather";
+            const json& ga = at(acc, ck, "gather");
+            r.gather_rays = static_cast<int>(count(ga, gk, "rays"));
+            if (r.gather_rays < 1) fail(name(gk, "rays"), "is not at least 1");
+            r.gather_rounds = count(ga, gk, "rounds");
+            r.gather_stop_reason = text(ga, gk, "stop_reason");
+          });
       g.daylight_factor = d;
     }
-    const json& sa = at(j, at_grid, "sun_accuracy");
-    if (!sa.is_null()) {
-      const std::string sak = at_grid + ".sun_accuracy";
-      SunAccuracyReached r;
-      r.target_percent = number(sa, sak, "target_percent");
-      r.reached_percent = number(sa, sak, "reached_percent");
-      r.hourly_percent = number(sa, sak, "hourly_percent");
-      r.rounds = count(sa, sak, "rounds");
-      r.photons = count(sa, sak, "photons");
-      r.stop_reason = text(sa, sak, "stop_reason");
-      r.status = accuracy_status(sa, sak);
-      g.sun_accuracy = r;
-    }
+    g.sun_accuracy = accuracy_reached<SunAccuracyReached>(
+        j, at_grid, "sun_accuracy", [this](const json& sa, const std::string& sak, SunAccuracyReached& r) {
+          r.hourly_percent = number(sa, sak, "hourly_percent");
+        });
     const json& an = at(j, at_grid, "annual");
     if (!an.is_null()) {
       const std::string ak = at_grid + ".annual";

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "dayphoton/core/error_text.h"
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/engine/daylight_coefficients.h"
 #include "dayphoton/engine/photon_tracer.h"
@@ -40,7 +41,7 @@ class RunLog {
   RunLog(Progress& progress, const std::string& path) : m_progress(progress), m_path(path) {
     if (path.empty()) return;
     m_file.open(path, std::ios::trunc | std::ios::binary);
-    if (!m_file) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+    if (!m_file) throw std::runtime_error("cannot write " + path + ": " + error_text(errno));
   }
   void line(const std::string& text) {
     m_progress.note(text);
@@ -51,7 +52,7 @@ class RunLog {
     if (m_path.empty()) return;
     m_file << text << "\n";
     m_file.flush();
-    if (!m_file) throw std::runtime_error("cannot write " + m_path + ": " + std::strerror(errno));
+    if (!m_file) throw std::runtime_error("cannot write " + m_path + ": " + error_text(errno));
   }
 
  private:

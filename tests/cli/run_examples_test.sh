@@ -64,8 +64,9 @@ PY
 }
 
 # Examples whose photon counts are set by a validation test that runs them as written:
-# projects/wall_sensors (cli_sensor_reference: 20 000 photons per bin and 1,024 gather rays per
-# sensor for its 2 and 3 % RMS goals; 27 CPU s, 85 s wall at a load of 13 on 2 cores). Here
+# projects/wall_sensors (cli_sensor_reference, which runs it as a daylight-factor study: 20 000
+# photons per bin and 1,024 gather rays per sensor for its 2 and 3 % RMS goals; the whole
+# project 27 CPU s, 85 s wall at a load of 13 on 2 cores). Here
 # the same project with a quarter of both (10 CPU s, 33 s wall at that load): the same steps
 # and output files, and what this test checks of them (present, a row per sensor, finite,
 # non-negative) does not depend on the noise. name -> sed script for the copy, and the lines

@@ -15,6 +15,7 @@
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/results_model.h"
 #include "dayphoton/study/study_runner.h"
+#include "../temp_folder.h"
 
 using namespace dayphoton;
 namespace fs = std::filesystem;
@@ -47,7 +48,7 @@ std::string read_text(const fs::path& p) {
 }  // namespace
 
 TEST(ReportFromResults, NeedsNothingButTheResultsFolder) {
-  const fs::path root = fs::temp_directory_path() / "dayphoton_report_from_results";
+  const fs::path root = test::process_temp_dir() / "dayphoton_report_from_results";
   fs::remove_all(root);
   fs::create_directories(root / "project");
   std::ofstream(root / "project" / "project.yaml") << Project;

@@ -239,6 +239,19 @@ std::size_t count(const std::string& text, const std::string& what) {
   return n;
 }
 
+/// The accuracy statements of a report: from their heading to the end of their list ("" if the
+/// report has none).
+std::string accuracy_statements(const std::string& html) {
+  const std::size_t at = html.find("<h3 id=\"accuracy\">");
+  return at == std::string::npos ? std::string() : html.substr(at, html.find("</ul>", at) - at);
+}
+
+/// The statement among `statements` with the data attributes `attrs` ("" if there is none).
+std::string accuracy_item(const std::string& statements, const std::string& attrs) {
+  const std::size_t i = statements.find("<li class=\"accuracy\" " + attrs + ">");
+  return i == std::string::npos ? std::string() : statements.substr(i, statements.find("</li>", i) - i);
+}
+
 }  // namespace
 
 TEST(ReportHtml, EverySectionIsPresentListedAndDrawn) {
@@ -550,14 +563,9 @@ TEST(ReportHtml, AGatheredGridsAccuracyIsExplainedByItsOwnGatherRounds) {
       Acc{1.0, 0.9, 2, 950000, "photon budget", "met", 4096, 2, "target met"};
   write_results_model(m, dir);
   const std::string html = report_html(dir);
-  const std::size_t at = html.find("<h3 id=\"accuracy\">");
-  ASSERT_NE(at, std::string::npos);
-  const std::string part = html.substr(at, html.find("</ul>", at) - at);
-  auto item = [&](const std::string& attrs) {
-    const std::size_t i = part.find("<li class=\"accuracy\" " + attrs + ">");
-    return i == std::string::npos ? std::string() : part.substr(i, part.find("</li>", i) - i);
-  };
-  const std::string wall = item("data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
+  const std::string part = accuracy_statements(html);
+  ASSERT_FALSE(part.empty());
+  const std::string wall = accuracy_item(part, "data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
   EXPECT_NE(wall.find("Reached 1.9 % by final gather at 65536 rays per sensor, after 4 gather rounds following 8 "
                       "rounds of photon tracing (33.5 million photons). <strong>Above the target.</strong> Why: this "
                       "grid's sensors are estimated by final gather (rays traced from each sensor), and the gather "
@@ -567,9 +575,9 @@ TEST(ReportHtml, AGatheredGridsAccuracyIsExplainedByItsOwnGatherRounds) {
   EXPECT_EQ(wall.find("photon budget"), std::string::npos) << wall;
   EXPECT_EQ(wall.find("max_photons"), std::string::npos) << wall;
   // The work plane keeps the photon rounds' reason.
-  const std::string plane = item("data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
+  const std::string plane = accuracy_item(part, "data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
   EXPECT_NE(plane.find("Why: the photon budget was reached first."), std::string::npos) << plane;
-  const std::string met = item("data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
+  const std::string met = accuracy_item(part, "data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
   EXPECT_NE(met.find("Reached 0.90 % by final gather at 4096 rays per sensor, after 2 gather rounds following 2 "
                      "rounds of photon tracing (950 000 photons). Target met."),
             std::string::npos)
@@ -616,16 +624,11 @@ TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {
   m.cases[1].grids[0].sun_accuracy = SunAccuracyReached{1.0, 0.76, 9.6, 3, 4410000, "target met", "met"};
   write_results_model(m, dir);
   const std::string html = report_html(dir);
-  const std::size_t at = html.find("<h3 id=\"accuracy\">");
-  ASSERT_NE(at, std::string::npos);
-  const std::string part = html.substr(at, html.find("</ul>", at) - at);
-  auto item = [&](const std::string& attrs) {
-    const std::size_t i = part.find("<li class=\"accuracy\" " + attrs + ">");
-    return i == std::string::npos ? std::string() : part.substr(i, part.find("</li>", i) - i);
-  };
+  const std::string part = accuracy_statements(html);
+  ASSERT_FALSE(part.empty());
   // The sky of the base grid: target, measure, reached, rounds, photons; met, while the rounds
   // stopped for the gathered wall grid.
-  const std::string sky = item("data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
+  const std::string sky = accuracy_item(part, "data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
   EXPECT_NE(sky.find("Daylight factor (sky patches): the target is a relative standard error of at most 1.0 % at the "
                      "95th percentile of the sensors (19 sensors in 20 are at or below it). Reached 0.93 % after 3 "
                      "rounds of photon tracing (4.1 million photons). Target met. (The rounds serve every grid of "
@@ -633,7 +636,7 @@ TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {
             std::string::npos)
       << sky;
   // Its sun bins: above the target, why (the photon budget) and what to do.
-  const std::string sun = item("data-part=\"sun\" data-case=\"base\" data-grid=\"north_wing\"");
+  const std::string sun = accuracy_item(part, "data-part=\"sun\" data-case=\"base\" data-grid=\"north_wing\"");
   EXPECT_NE(sun.find("Annual sun-bin illuminance (the indirect sunlight of every sun hour, summed over the year): "
                      "the target is a relative standard error of at most 1.0 % at the 95th percentile"),
             std::string::npos)
@@ -645,18 +648,18 @@ TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {
       << sun;
   EXPECT_NE(sun.find("One hour's sun-bin value carries more: 11.4 % at the same percentile"), std::string::npos) << sun;
   // The gathered wall grid: not reachable by photons, and gather_rays is what lowers it.
-  const std::string wall = item("data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
+  const std::string wall = accuracy_item(part, "data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
   EXPECT_NE(wall.find("Reached 1.3 % after 3 rounds of photon tracing (4.1 million photons). <strong>Above the target "
                       "and not reachable by photons.</strong> Why: this grid's sensors are estimated by final gather"),
             std::string::npos)
       << wall;
   EXPECT_NE(wall.find("What to do: raise <code>simulation.gather_rays</code>."), std::string::npos) << wall;
   // The variant, in its own words: both met, photons below a million in whole numbers.
-  const std::string vsky = item("data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
+  const std::string vsky = accuracy_item(part, "data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
   EXPECT_NE(vsky.find("Reached 0.81 % after 2 rounds of photon tracing (950 000 photons). Target met."), std::string::npos)
       << vsky;
   EXPECT_EQ(vsky.find("stopped with"), std::string::npos) << vsky;
-  const std::string vsun = item("data-part=\"sun\" data-case=\"tinted\" data-grid=\"north_wing\"");
+  const std::string vsun = accuracy_item(part, "data-part=\"sun\" data-case=\"tinted\" data-grid=\"north_wing\"");
   EXPECT_NE(vsun.find("Reached 0.76 % after 3 rounds of photon tracing (4.4 million photons). Target met."),
             std::string::npos)
       << vsun;

@@ -32,6 +32,7 @@
 #include "dayphoton/study/results_model_builder.h"
 #include "dayphoton/study/sensor_lattice.h"
 #include "dayphoton/study/tone_map.h"
+#include "../temp_folder.h"
 
 using namespace dayphoton;
 using namespace dayphoton::study;
@@ -41,7 +42,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string temp_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("dayphoton_report_images_test_" + name);
+  const fs::path p = test::process_temp_dir() / ("dayphoton_report_images_test_" + name);
   fs::remove_all(p);
   fs::create_directories(p);
   return p.string();

@@ -20,6 +20,7 @@
 #include "dayphoton/study/cache_folder.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
+#include "../temp_folder.h"
 
 using namespace dayphoton;
 namespace fs = std::filesystem;
@@ -50,7 +51,7 @@ std::string read_bytes(const fs::path& p) {
 }
 
 fs::path fresh(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("dayphoton_report_pdf_test_" + name);
+  const fs::path p = test::process_temp_dir() / ("dayphoton_report_pdf_test_" + name);
   fs::remove_all(p);
   fs::create_directories(p);
   return p;

@@ -12,6 +12,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/report/image_legend.h"
 #include "dayphoton/study/annual_illuminance.h"
+#include "../temp_folder.h"
 
 using namespace dayphoton;
 using namespace dayphoton::report;
@@ -83,7 +84,7 @@ TEST(TemporalMap, DaysHoursAndAKnownHour) {
 }
 
 TEST(TemporalMap, WrittenFromTheResultsFolderThroughTheModel) {
-  const fs::path root = fs::temp_directory_path() / "dayphoton_temporal_map_test";
+  const fs::path root = test::process_temp_dir() / "dayphoton_temporal_map_test";
   fs::remove_all(root);
   fs::create_directories(root / "grid");
   study::write_illuminance_binary(year(), (root / "grid" / "illuminance.bin").string());

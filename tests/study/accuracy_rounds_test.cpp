@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <exception>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -34,7 +33,7 @@
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/plan_policy.h"
-#include "../dist/in_process_ranks.h"
+#include "in_process_study.h"
 
 namespace dayphoton::study {
 namespace {
@@ -337,16 +336,12 @@ TEST(AccuracyTarget, DirectPartDominatesThenTheRoundsRaiseItsRaysAndMeetTheTarge
   // Two in-process ranks (the distributed executor's RoundWork, blocks of 8 sensors): every
   // rank raises alike and holds the one-process bytes.
   std::vector<AccuracyResult> ranked(2);
-  const auto errors = dist::test::run_ranks(2, [&](dist::Communicator& comm) {
-    const std::filesystem::path dir =
-        std::filesystem::path(::testing::TempDir()) / ("accuracy_direct_" + std::to_string(comm.rank()));
-    std::filesystem::remove_all(dir);
-    const ArtifactStore store(dir.string());
+  test::run_ranks_expecting_no_error(2, [&](dist::Communicator& comm) {
+    const ArtifactStore store(test::fresh_dir("accuracy_direct_" + std::to_string(comm.rank())).string());
     const auto executor = make_distributed_executor(comm, store, false, 8);
     ranked[static_cast<std::size_t>(comm.rank())] =
         run_accuracy_rounds(office.accuracy_case(), goal, [](const std::string&) {}, executor->round_work());
   });
-  for (const std::exception_ptr& e : errors) EXPECT_FALSE(e) << "a rank failed";
   for (const AccuracyResult& x : ranked) {
     EXPECT_EQ(x.outcome.direct_samples_per_bin, r.outcome.direct_samples_per_bin);
     EXPECT_EQ(x.outcome.stop_reason, r.outcome.stop_reason);
@@ -457,10 +452,9 @@ TEST(AccuracyTarget, OneToThreeRanksGiveTheOneProcessBytes) {
     std::vector<int> calls(results.size()), ranges(results.size());
     std::vector<std::size_t> requests(results.size());
     std::vector<std::size_t> blocks(results.size());
-    const auto errors = dist::test::run_ranks(ranks, [&](dist::Communicator& comm) {
-      const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
-                                        ("accuracy_ranks_" + std::to_string(ranks) + "_" + std::to_string(comm.rank()));
-      std::filesystem::remove_all(dir);
+    test::run_ranks_expecting_no_error(ranks, [&](dist::Communicator& comm) {
+      const std::filesystem::path dir =
+          test::fresh_dir("accuracy_ranks_" + std::to_string(ranks) + "_" + std::to_string(comm.rank()));
       const ArtifactStore store(dir.string());
       const auto executor = make_distributed_executor(comm, store, false, 8);
       CountingWork work(executor->round_work());
@@ -471,14 +465,6 @@ TEST(AccuracyTarget, OneToThreeRanksGiveTheOneProcessBytes) {
       ranges[r] = work.ranges;
       blocks[r] = work.blocks;
     });
-    for (const std::exception_ptr& e : errors)
-      if (e) {
-        try {
-          std::rethrow_exception(e);
-        } catch (const std::exception& x) {
-          ADD_FAILURE() << x.what();
-        }
-      }
     int all_ranges = 0;
     for (std::size_t r = 0; r < results.size(); ++r) {
       const AccuracyResult& x = results[r];

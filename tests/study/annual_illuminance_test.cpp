@@ -16,6 +16,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include "../temp_folder.h"
 
 using namespace dayphoton;
 using namespace dayphoton::study;
@@ -47,7 +48,7 @@ double reference_lux(const RadianceMatrix& c, const RadianceMatrix& sky, std::si
 }
 
 std::string temp_path(const std::string& name) {
-  return (fs::temp_directory_path() / ("dayphoton_annual_test_" + name)).string();
+  return (test::process_temp_dir() / ("dayphoton_annual_test_" + name)).string();
 }
 
 std::string read_bytes(const std::string& path) {

@@ -23,6 +23,7 @@
 #include "dayphoton/metrics/occupancy.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/weather/epw_reader.h"
+#include "../temp_folder.h"
 
 using namespace dayphoton;
 using namespace dayphoton::study;
@@ -136,7 +137,7 @@ TEST_F(RadianceReference, ReproducesRadianceIlluminanceAndMetrics) {
   // inputs, so the difference is the 0.05 lux printing plus float arithmetic: rmtxop prints
   // 6 significant digits (5e-6 relative) and dctimestep's float sums of 146 x 3 positive terms
   // are good to ~438 x 6e-8 = 2.6e-5 relative in the worst case; 4e-5 relative bounds both.
-  const std::string csv = (fs::temp_directory_path() / "dayphoton_annual_study_ref_illuminance.csv").string();
+  const std::string csv = (test::process_temp_dir() / "dayphoton_annual_study_ref_illuminance.csv").string();
   ASSERT_EQ(std::system(("gzip -dc '" + RefDir + "/office_annual_illuminance_classic.csv.gz' > '" + csv + "'").c_str()), 0);
   const metrics::IlluminanceTable ref = metrics::read_illuminance_csv(csv);
   fs::remove(csv);
@@ -244,7 +245,7 @@ TEST_F(RadianceReference, OwnGendaymtxCompatibleSkyGivesDa300WithinTheSkyToleran
 
   // The same sky written as a RADIANCE float matrix and read back (the `dayphoton annual
   // --sky-matrix` path) gives the identical table: the file format loses nothing.
-  const std::string path = (fs::temp_directory_path() / "dayphoton_annual_study_own_sky.mtx").string();
+  const std::string path = (test::process_temp_dir() / "dayphoton_annual_study_own_sky.mtx").string();
   own.matrix.write_file(path, MatrixFormat::Float);
   const AnnualSky from_file = annual_sky_from_matrix_file(path, *epw);
   fs::remove(path);
@@ -255,7 +256,7 @@ TEST_F(RadianceReference, OwnGendaymtxCompatibleSkyGivesDa300WithinTheSkyToleran
 }
 
 TEST_F(RadianceReference, SkyMatrixFileMustMatchTheWeatherFile) {
-  const std::string path = (fs::temp_directory_path() / "dayphoton_annual_study_short_sky.mtx").string();
+  const std::string path = (test::process_temp_dir() / "dayphoton_annual_study_short_sky.mtx").string();
   RadianceMatrix short_sky(146, 24);
   short_sky.write_file(path, MatrixFormat::Float);
   try {
@@ -315,7 +316,7 @@ TEST(AnnualStudyOutputs, WritesTheFourFilesAndAConsistentJsonFragment) {
   EXPECT_NEAR(study.grid.ase_percent, 100.0 / 3, 1e-12);
   ASSERT_EQ(study.grid.en17037.size(), 3u);
 
-  const fs::path dir = fs::temp_directory_path() / "dayphoton_annual_study_outputs";
+  const fs::path dir = test::process_temp_dir() / "dayphoton_annual_study_outputs";
   fs::remove_all(dir);
   const std::vector<SensorPoint> sensors(3, SensorPoint{{1, 2, 0.8}, {0, 0, 1}});
   // By default the hourly table in binary only (docs/outputs.md "Defaults"); the CSV on request.
@@ -368,6 +369,6 @@ TEST(AnnualStudyOutputs, RejectsMismatchedInputs) {
   short_quantity.daylight_hours_quantity.pop_back();
   EXPECT_THROW(compute_annual_study(c, short_quantity, {}), std::invalid_argument);
   const AnnualStudy study = compute_annual_study(c, sky, {});
-  EXPECT_THROW(write_annual_outputs(study, std::vector<SensorPoint>(2), {}, fs::temp_directory_path().string()),
+  EXPECT_THROW(write_annual_outputs(study, std::vector<SensorPoint>(2), {}, test::process_temp_dir().string()),
                std::invalid_argument);
 }

@@ -26,6 +26,7 @@
 #include "dayphoton/engine/material.h"
 #include "dayphoton/project/project.h"
 #include "fresh_run.h"
+#include "../temp_folder.h"
 
 namespace dayphoton {
 namespace {
@@ -33,7 +34,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path folder() {
-  const fs::path f = fs::path(::testing::TempDir()) / "bsdf_window_test";
+  const fs::path f = test::process_temp_dir() / "bsdf_window_test";
   fs::create_directories(f);
   return f;
 }

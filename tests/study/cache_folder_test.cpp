@@ -7,6 +7,7 @@
 
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_folder.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("dayphoton_cache_folder_" + name);
+  const fs::path dir = test::process_temp_dir() / ("dayphoton_cache_folder_" + name);
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;

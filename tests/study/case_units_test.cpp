@@ -57,6 +57,35 @@ TEST(CaseUnits, OnlyWithAtLeastAsManyCasesAsRanksAndWithoutForce) {
   });
 }
 
+TEST(CaseUnits, EveryRankFollowsRankZerosAssignmentAndEstimates) {
+  // Each rank estimates the costs itself; here every rank's estimates differ (as floating point
+  // on another node could), and would deal the cases out otherwise. Rank 0's assignment of its
+  // own estimates is every rank's, and the run log's line (with its estimates) is the same on
+  // every rank.
+  const std::vector<double> root_costs{3, 7, 2, 5, 4, 1};
+  const std::vector<int> expected = assign_case_units(root_costs, 3);
+  std::vector<std::string> lines(3);
+  test::run_ranks_expecting_no_error(3, [&](dist::Communicator& comm) {
+    const ArtifactStore store(fresh_dir("case_units_root_rank" + std::to_string(comm.rank())).string());
+    std::vector<double> costs = root_costs;
+    if (comm.rank() != dist::RootRank) {
+      std::reverse(costs.begin(), costs.end());
+      costs[0] += 1e-9 * comm.rank();
+      if (assign_case_units(costs, 3) == expected) throw std::runtime_error("the ranks' own estimates agree");
+    }
+    const auto units = make_case_units(comm, store, false, costs.size(), [&] { return costs; });
+    if (!units) throw std::runtime_error("no units for 6 cases over 3 ranks");
+    for (std::size_t c = 0; c < costs.size(); ++c)
+      if (units->mine(c) != (comm.rank() == expected[c]))
+        throw std::runtime_error("rank " + std::to_string(comm.rank()) + ": case " + std::to_string(c) +
+                                 " not on rank 0's choice");
+    lines[static_cast<std::size_t>(comm.rank())] = units->join();
+  });
+  EXPECT_EQ(lines[1], lines[0]);
+  EXPECT_EQ(lines[2], lines[0]);
+  EXPECT_NE(lines[0].find("estimated CPU s by rank: 7.00, 7.00, 8.00"), std::string::npos) << lines[0];
+}
+
 TEST(CaseUnits, LongestFirstByCostWithTheRanksCountedFromTheLast) {
   // Decreasing cost 7 (case 1), 5 (3), 4 (4), 3 (0), 2 (2), 1 (5), each to the least loaded
   // of the greedy's ranks (ties: the lower), whose rank r is rank ranks - 1 - r.

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -131,7 +132,7 @@ TEST(ContentHash, NestedHashesDependOnTheirInput) {
 }
 
 TEST(ContentHash, FileHashesContentNotPath) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "content_hash_test";
+  const fs::path dir = test::process_temp_dir() / "content_hash_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
   auto put = [&](const std::string& name, const std::string& content) {

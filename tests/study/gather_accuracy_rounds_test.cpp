@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -32,7 +31,7 @@
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/gather_accuracy_rounds.h"
-#include "../dist/in_process_ranks.h"
+#include "in_process_study.h"
 
 namespace dayphoton::study {
 namespace {
@@ -232,10 +231,9 @@ TEST(GatherAccuracyRounds, OneAndTwoThreadsAndOneToThreeRanksGiveTheSameBytes) {
   for (int ranks : {1, 2, 3}) {
     SCOPED_TRACE(std::to_string(ranks) + " ranks");
     std::vector<AccuracyResult> results(static_cast<std::size_t>(ranks));
-    const auto errors = dist::test::run_ranks(ranks, [&](dist::Communicator& comm) {
-      const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
-                                        ("gather_ranks_" + std::to_string(ranks) + "_" + std::to_string(comm.rank()));
-      std::filesystem::remove_all(dir);
+    test::run_ranks_expecting_no_error(ranks, [&](dist::Communicator& comm) {
+      const std::filesystem::path dir =
+          test::fresh_dir("gather_ranks_" + std::to_string(ranks) + "_" + std::to_string(comm.rank()));
       const ArtifactStore store(dir.string());
       const auto executor = make_distributed_executor(comm, store, false, 3);  // blocks of 3 of the 8 sensors
       AccuracyGoal goal;
@@ -243,14 +241,6 @@ TEST(GatherAccuracyRounds, OneAndTwoThreadsAndOneToThreeRanksGiveTheSameBytes) {
       results[static_cast<std::size_t>(comm.rank())] =
           run_accuracy_rounds(office.accuracy_case(4, FirstRays), goal, [](const std::string&) {}, executor->round_work());
     });
-    for (const std::exception_ptr& e : errors)
-      if (e) {
-        try {
-          std::rethrow_exception(e);
-        } catch (const std::exception& x) {
-          ADD_FAILURE() << x.what();
-        }
-      }
     for (const AccuracyResult& x : results) {
       EXPECT_EQ(x.outcome.gather.at(1).rays, one.outcome.gather.at(1).rays);
       EXPECT_EQ(x.outcome.gather.at(1).rounds, one.outcome.gather.at(1).rounds);

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "../dist/in_process_ranks.h"
+#include "../temp_folder.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/progress.h"
@@ -28,9 +29,10 @@ namespace dayphoton::test {
 /// that the small test grids are shared over the ranks by several blocks.
 constexpr std::size_t TestSensorBlockSize = 8;
 
-/// `name` below the test's temporary folder, removed first (nothing of an earlier run is read).
+/// `name` below this process's own temporary folder (temp_folder.h), removed first (nothing of an
+/// earlier test is read).
 inline std::filesystem::path fresh_dir(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / name;
+  const std::filesystem::path dir = process_temp_dir() / name;
   std::filesystem::remove_all(dir);
   return dir;
 }

@@ -52,6 +52,7 @@
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -338,7 +339,7 @@ TEST(InteriorGlazing, CorridorDaylightFactorEqualsOneRoomWithAGlassPartition) {
   std::vector<double> office[2], corridor[2];
   for (int model = 0; model < 2; ++model)
     for (int r = 0; r < Replicates; ++r) {
-      const fs::path out = fs::path(::testing::TempDir()) / ("interior_glazing_" + std::to_string(model) + "_" + std::to_string(r));
+      const fs::path out = test::process_temp_dir() / ("interior_glazing_" + std::to_string(model) + "_" + std::to_string(r));
       dayphoton::test::run_in_fresh_folder(df_project(model == 1, 1 + static_cast<unsigned long long>(r)), out);
       office[model].push_back(grid_mean(read_df(out / "office" / "daylight_factor.csv")));
       corridor[model].push_back(grid_mean(read_df(out / "corridor" / "daylight_factor.csv")));

@@ -36,6 +36,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -80,7 +81,7 @@ TEST(OfficeValidation, DaylightFactorAndBinSumsAgreeWithRadiance) {
   p.simulation.seed = TestSeed;
   p.outputs.annual_illuminance = p.outputs.metrics = p.outputs.images = p.outputs.report = false;
   p.outputs.coefficients = true;
-  const fs::path out = fs::path(::testing::TempDir()) / "office_validation";
+  const fs::path out = test::process_temp_dir() / "office_validation";
   test::run_in_fresh_folder(p, out);
 
   const RadianceMatrix c = RadianceMatrix::read_file((out / "workplane" / "coefficients_sky.mtx").string());

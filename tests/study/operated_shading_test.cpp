@@ -16,6 +16,7 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include "../temp_folder.h"
 
 using namespace dayphoton;
 using namespace dayphoton::study;
@@ -171,7 +172,7 @@ TEST(OperatedShading, ScheduleFileHasOneRowPerStep) {
   direct.lux(20, 0) = 1500.0f;                     // hour 20.5, unoccupied, 2 %: open
   const OperatedStudy r = compute_operated_study(filled(n, 10.0f), filled(n, 5.0f), direct, ShadingRule{},
                                                  AnnualStudySettings{}, {}, "", "");
-  const fs::path dir = fs::path(::testing::TempDir()) / "operated_shading_test";
+  const fs::path dir = test::process_temp_dir() / "operated_shading_test";
   fs::create_directories(dir);
   const std::string path = (dir / "shading_schedule.csv").string();
   write_shading_schedule_csv(r, path);

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -17,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / name;
+  const fs::path dir = test::process_temp_dir() / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
@@ -77,7 +78,7 @@ TEST(OutputLock, LockFileOfADeadProcessIsTakenOver) {
 }
 
 TEST(OutputLock, MissingFolderGivesAnErrorNamingTheLockFile) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "output_lock_missing" / "nested";
+  const fs::path dir = test::process_temp_dir() / "output_lock_missing" / "nested";
   fs::remove_all(dir.parent_path());
   try {
     OutputLock::acquire(dir.string(), "x");

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "dayphoton/core/sha256.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -18,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / name;
+  const fs::path dir = test::process_temp_dir() / name;
   fs::remove_all(dir);
   fs::create_directories(dir / "out");
   return dir;

@@ -21,6 +21,7 @@
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/run_timings.h"
 #include "dayphoton/study/study_runner.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -74,7 +75,7 @@ class PointInTime : public ::testing::Test {
  protected:
   // One run for both tests.
   static void SetUpTestSuite() {
-    s_dir = fs::temp_directory_path() /
+    s_dir = test::process_temp_dir() /
             ("dayphoton_point_in_time_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
     fs::remove_all(s_dir);
     fs::create_directories(s_dir);

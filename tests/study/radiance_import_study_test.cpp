@@ -48,6 +48,7 @@
 #include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -165,7 +166,7 @@ StudyResults run_case(project::Project p, unsigned long long seed, const std::st
   p.simulation.seed = seed;
   p.outputs.daylight_factor = p.outputs.annual_illuminance = p.outputs.metrics = true;
   p.outputs.images = p.outputs.report = p.outputs.coefficients = false;
-  const fs::path out = fs::path(::testing::TempDir()) / ("radiance_import_" + label + std::to_string(seed));
+  const fs::path out = test::process_temp_dir() / ("radiance_import_" + label + std::to_string(seed));
   test::run_in_fresh_folder(p, out);
   StudyResults r;
   const fs::path grid = out / "workplane";

@@ -26,6 +26,7 @@
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/direct_sun_file.h"
 #include "fresh_run.h"
+#include "../temp_folder.h"
 
 using namespace dayphoton;
 using namespace dayphoton::study;
@@ -185,7 +186,7 @@ SunComparison compare_with_run(const fs::path& grid, const std::string& epw, int
 }  // namespace
 
 TEST(RadianceSunMatrix, TimesTheSunOnlySkyItIsTheRunsSun) {
-  const fs::path out = fs::temp_directory_path() / "dayphoton_radiance_sun_matrix_test";
+  const fs::path out = test::process_temp_dir() / "dayphoton_radiance_sun_matrix_test";
   const std::string text = "site: {from_weather: true}\nweather: " + Epw + R"(
 outputs: {images: false, report: false, radiance_sun_matrix: true}
 materials:

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "dayphoton/core/diagnostics.h"
+#include "../temp_folder.h"
 
 using namespace dayphoton;
 using namespace dayphoton::study;
@@ -17,7 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string temp_path(const std::string& name) {
-  return (fs::temp_directory_path() / ("dayphoton_result_files_test_" + name)).string();
+  return (test::process_temp_dir() / ("dayphoton_result_files_test_" + name)).string();
 }
 
 std::vector<std::string> lines_of(const std::string& path) {

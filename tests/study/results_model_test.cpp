@@ -13,6 +13,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/results_model_builder.h"
+#include "../temp_folder.h"
 
 using namespace dayphoton;
 using namespace dayphoton::study;
@@ -142,7 +143,7 @@ ResultsModel full_model() {
 }
 
 std::string temp_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("dayphoton_results_model_test_" + name);
+  const fs::path p = test::process_temp_dir() / ("dayphoton_results_model_test_" + name);
   fs::remove_all(p);
   fs::create_directories(p);
   return p.string();

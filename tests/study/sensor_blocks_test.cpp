@@ -40,6 +40,7 @@
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/simulation_plan.h"
 #include "dayphoton/weather/hourly_weather.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -234,7 +235,7 @@ struct CountingGridStep {
 };
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / name;
+  const fs::path dir = test::process_temp_dir() / name;
   fs::remove_all(dir);
   return dir;
 }

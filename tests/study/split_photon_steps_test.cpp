@@ -24,6 +24,7 @@
 #include "dayphoton/study/photon_range_step.h"
 #include "dayphoton/study/simulation_plan.h"
 #include "dayphoton/study/step_executor.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -31,7 +32,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / name;
+  const fs::path dir = test::process_temp_dir() / name;
   fs::remove_all(dir);
   return dir;
 }

@@ -25,6 +25,7 @@
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/simulation_plan.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -32,7 +33,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / name;
+  const fs::path dir = test::process_temp_dir() / name;
   fs::remove_all(dir);
   return dir;
 }

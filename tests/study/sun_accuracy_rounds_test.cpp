@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <exception>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -30,7 +29,7 @@
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/sun_accuracy_rounds.h"
-#include "../dist/in_process_ranks.h"
+#include "in_process_study.h"
 
 namespace dayphoton::study {
 namespace {
@@ -272,10 +271,9 @@ TEST(SunAccuracyTarget, OneToThreeRanksGiveTheOneProcessBytes) {
     std::vector<SunAccuracyResult> results(static_cast<std::size_t>(ranks));
     std::vector<int> ranges(results.size());
     std::vector<std::size_t> requests(results.size()), blocks(results.size());
-    const auto errors = dist::test::run_ranks(ranks, [&](dist::Communicator& comm) {
-      const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
-                                        ("sun_accuracy_ranks_" + std::to_string(ranks) + "_" + std::to_string(comm.rank()));
-      std::filesystem::remove_all(dir);
+    test::run_ranks_expecting_no_error(ranks, [&](dist::Communicator& comm) {
+      const std::filesystem::path dir =
+          test::fresh_dir("sun_accuracy_ranks_" + std::to_string(ranks) + "_" + std::to_string(comm.rank()));
       const ArtifactStore store(dir.string());
       const auto executor = make_distributed_executor(comm, store, false, 8);
       CountingWork work(executor->round_work());
@@ -285,14 +283,6 @@ TEST(SunAccuracyTarget, OneToThreeRanksGiveTheOneProcessBytes) {
       ranges[r] = work.ranges;
       blocks[r] = work.blocks;
     });
-    for (const std::exception_ptr& e : errors)
-      if (e) {
-        try {
-          std::rethrow_exception(e);
-        } catch (const std::exception& x) {
-          ADD_FAILURE() << x.what();
-        }
-      }
     int all_ranges = 0;
     for (std::size_t r = 0; r < results.size(); ++r) {
       const SunAccuracyResult& x = results[r];

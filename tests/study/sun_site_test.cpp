@@ -38,6 +38,7 @@
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
 #include "dayphoton/weather/site_clock.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -205,7 +206,7 @@ void expect_mannheim_with_the_oakland_file_is_not_the_oakland_result(const Offic
 
 TEST(SunSite, AnotherTimeZoneThanTheWeatherFilesIsALocatedError) {
   const project::Project p = office_with_site(MannheimOwnClock);
-  const fs::path folder = fs::path(::testing::TempDir()) / "dayphoton_sun_site" / "mannheim_own_clock";
+  const fs::path folder = test::process_temp_dir() / "dayphoton_sun_site" / "mannheim_own_clock";
   fs::remove_all(folder);
   const std::vector<std::string> errors = project::test::located_errors([&] { run_into(p, folder); }, OfficeYaml);
   ASSERT_EQ(errors.size(), 1u);
@@ -282,7 +283,7 @@ void expect_the_summary_records_the_site(const OfficeRuns& r) {
 
 TEST(SunSite, OfficeRunsForItsSiteFromWeatherAndMannheim) {
   // One test for the three runs: CTest runs each test in a process of its own.
-  const fs::path root = fs::path(::testing::TempDir()) / "dayphoton_sun_site_runs";
+  const fs::path root = test::process_temp_dir() / "dayphoton_sun_site_runs";
   const OfficeRuns r{root / "site", root / "from_weather", root / "mannheim"};
   run_into(office_with_site(OfficeSite), r.site_dir);
   run_into(office_with_site(FromWeather), r.from_weather_dir, r.site_dir);

@@ -32,6 +32,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -79,7 +80,7 @@ Honesty honesty(project::Project p, const std::string& name, const std::vector<s
   std::vector<SensorValues> runs(Seeds);
   for (int seed = 1; seed <= Seeds; ++seed) {
     p.simulation.seed = static_cast<std::uint64_t>(seed);
-    const fs::path out = fs::path(::testing::TempDir()) / ("uncertainty_" + name) / std::to_string(seed);
+    const fs::path out = test::process_temp_dir() / ("uncertainty_" + name) / std::to_string(seed);
     test::run_in_fresh_folder(p, out);
     for (const std::string& g : grids) read_daylight_factor(out / g / "daylight_factor.csv", runs[seed - 1]);
     fs::remove_all(out);

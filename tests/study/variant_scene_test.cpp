@@ -19,6 +19,7 @@
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -53,7 +54,7 @@ const std::string WithoutShelf = Head + Tail;
 class VariantScene : public ::testing::Test {
  protected:
   void SetUp() override {
-    m_dir = fs::temp_directory_path() /
+    m_dir = test::process_temp_dir() /
             ("dayphoton_variant_scene_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
              ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(m_dir);

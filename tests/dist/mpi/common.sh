@@ -1,6 +1,6 @@
 # What the mpirun tests of dayphoton share, sourced by them (functions only; nothing runs
-# when it is sourced). A test sets `mpiexec` (and `dayphoton`, for the kill tests'
-# functions) from its arguments, calls mpi_test_begin, and uses the rest as it needs. Each
+# when it is sourced). A test sets `mpiexec` (and `dayphoton`, for the kill tests' and the
+# other ranks' functions) from its arguments, calls mpi_test_begin, and uses the rest as it needs. Each
 # function returns non-zero (or calls the test's own `fail`) when its check fails, so every
 # test can still fail.
 
@@ -106,6 +106,20 @@ office_copy() {
     { echo "office: photons_per_bin, matrix_format, images or report not found"; return 1; }
 }
 
+# `office_variants_copy SOURCE_DIR FOLDER`: projects/office_variants' project file copied to
+# FOLDER at a quarter of its photons, with float matrices and no pictures or report. Its
+# weather file is ../office/'s: FOLDER's sibling office/ must hold it (office_copy). Returns
+# non-zero, saying so, if a line it changes was not found.
+office_variants_copy() {
+  local source_dir=$1 folder=$2
+  mkdir -p "$folder"
+  cp "$source_dir/projects/office_variants/project.yaml" "$folder/"
+  sed -i 's/^  photons_per_bin: 2000$/  photons_per_bin: 500/; s/^  matrix_format: ascii$/  matrix_format: float\n  images: false\n  report: false/' \
+    "$folder/project.yaml"
+  grep -q '^  photons_per_bin: 500$' "$folder/project.yaml" && grep -q '^  images: false$' "$folder/project.yaml" ||
+    { echo "office_variants: photons_per_bin or matrix_format not found"; return 1; }
+}
+
 # `same_results REFERENCE OUT`: whether the results folders hold the same bytes, apart from
 # run.log and timings.json (times) and the output folder's name in summary.json. Prints the
 # files that differ.
@@ -190,4 +204,43 @@ rerun_completes() {
     fail "rank $victim: the re-run failed: $(cat "$tmp/rerun$victim.log")"
   [ -e "$out/INCOMPLETE" ] && fail "rank $victim: the re-run left INCOMPLETE"
   same_results "$reference" "$out" || fail "rank $victim: the re-run wrote other results than the uninterrupted run"
+}
+
+# `other_ranks_wrapper`: writes $tmp/rank.sh, the command to start under mpirun in place of
+# $dayphoton where the ranks other than 0 must write nothing (the writer flag, study_runner.h).
+# Rank 0 runs dayphoton as given; every other rank runs it with TMPDIR a file,
+# $tmp/not-a-folder (anything that made a temporary folder fails), in a working folder of its
+# own, $tmp/cwd-rank<N>, and with "-rank<N>" appended to the folders of --output and --cache.
+# other_ranks_wrote_nothing checks afterwards that none of them gained a file.
+other_ranks_wrapper() {
+  echo "not a folder" > "$tmp/not-a-folder"
+  cat > "$tmp/rank.sh" <<EOF
+#!/usr/bin/env bash
+rank=\${OMPI_COMM_WORLD_RANK:?not started by mpirun}
+[ "\$rank" = 0 ] && exec "$dayphoton" "\$@"
+export TMPDIR="$tmp/not-a-folder"
+mkdir -p "$tmp/cwd-rank\$rank" && cd "$tmp/cwd-rank\$rank" || exit 3
+args=()
+while [ \$# -gt 0 ]; do
+  case "\$1" in
+    --output|--cache) args+=("\$1" "\$2-rank\$rank"); shift 2 ;;
+    *) args+=("\$1"); shift ;;
+  esac
+done
+exec "$dayphoton" "\${args[@]}"
+EOF
+  chmod +x "$tmp/rank.sh"
+}
+
+# `other_ranks_wrote_nothing FOLDER...`: whether the ranks 1 and 2 that $tmp/rank.sh started
+# (other_ranks_wrapper; the test ran 3 ranks) wrote nothing: no "*-rank*" folder of --output or
+# --cache beside the FOLDERs those options named, nothing in their working folders, and their
+# TMPDIR file unchanged. Prints what it found.
+other_ranks_wrote_nothing() {
+  local written clean=0
+  written=$(find "$@" -maxdepth 1 -name '*-rank*'; find "$tmp"/cwd-rank* -mindepth 1)
+  [ -z "$written" ] || { echo "a rank other than 0 wrote files:"; echo "$written" | head; clean=1; }
+  [ "$(cat "$tmp/not-a-folder")" = "not a folder" ] || { echo "the other ranks' TMPDIR changed"; clean=1; }
+  ls -d "$tmp"/cwd-rank1 "$tmp"/cwd-rank2 > /dev/null || { echo "the wrapper did not start ranks 1 and 2"; clean=1; }
+  return $clean
 }

@@ -22,35 +22,10 @@ source "$(dirname "$0")/common.sh"
 mpi_test_begin
 fail=0
 
-# Each rank other than 0: TMPDIR a file (anything that made a temporary folder fails), its own
-# working folder, and "-rank<N>" appended to the folders of --output and --cache.
-echo "not a folder" > "$tmp/not-a-folder"
-cat > "$tmp/rank.sh" <<EOF
-#!/usr/bin/env bash
-rank=\${OMPI_COMM_WORLD_RANK:?not started by mpirun}
-[ "\$rank" = 0 ] && exec "$dayphoton" "\$@"
-export TMPDIR="$tmp/not-a-folder"
-mkdir -p "$tmp/cwd-rank\$rank" && cd "$tmp/cwd-rank\$rank" || exit 3
-args=()
-while [ \$# -gt 0 ]; do
-  case "\$1" in
-    --output|--cache) args+=("\$1" "\$2-rank\$rank"); shift 2 ;;
-    *) args+=("\$1"); shift ;;
-  esac
-done
-exec "$dayphoton" "\${args[@]}"
-EOF
-chmod +x "$tmp/rank.sh"
+other_ranks_wrapper  # $tmp/rank.sh: the ranks other than 0 with folders of their own
 
 office_copy "$source_dir" "$tmp/office" || exit 1
-mkdir -p "$tmp/office_variants"
-cp "$source_dir/projects/office_variants/project.yaml" "$tmp/office_variants/"
-sed -i 's/^  photons_per_bin: 2000$/  photons_per_bin: 500/; s/^  matrix_format: ascii$/  matrix_format: float\n  images: false\n  report: false/' \
-  "$tmp/office_variants/project.yaml"
-grep -q '^  photons_per_bin: 500$' "$tmp/office_variants/project.yaml" &&
-  grep -q '^  images: false$' "$tmp/office_variants/project.yaml" ||
-  { echo "office_variants: photons_per_bin or matrix_format not found"; exit 1; }
-# Its weather file is ../office/'s, copied above.
+office_variants_copy "$source_dir" "$tmp/office_variants" || exit 1
 
 for p in office office_variants; do
   project=$tmp/$p/project.yaml
@@ -80,8 +55,5 @@ for p in office office_variants; do
   done
 done
 # What the ranks other than 0 wrote: nothing, anywhere.
-written=$(find "$tmp/out" "$tmp/cache" -maxdepth 1 -name '*-rank*'; find "$tmp"/cwd-rank* -mindepth 1)
-[ -z "$written" ] || { echo "a rank other than 0 wrote files:"; echo "$written" | head; fail=1; }
-[ "$(cat "$tmp/not-a-folder")" = "not a folder" ] || { echo "the other ranks' TMPDIR changed"; fail=1; }
-ls -d "$tmp"/cwd-rank1 "$tmp"/cwd-rank2 > /dev/null || { echo "the wrapper did not start ranks 1 and 2"; fail=1; }
+other_ranks_wrote_nothing "$tmp/out" "$tmp/cache" || fail=1
 exit $fail

@@ -51,7 +51,8 @@ struct CaseUnit {
 /// of equally loaded ranks to be given a unit. With equal costs unit c goes to rank
 /// ranks - 1 - (c mod ranks). Within 4/3 - 1/(3 ranks) of the best makespan (R. L. Graham,
 /// "Bounds on multiprocessing timing anomalies", SIAM J. Appl. Math. 17(2), 1969). A pure
-/// function of the costs: every rank computes the same assignment.
+/// function of the costs; under MPI rank 0 alone computes it, from its own estimates, and
+/// sends it to the other ranks (make_case_units), so that the ranks cannot disagree.
 std::vector<int> assign_case_units(const std::vector<double>& costs, int ranks);
 
 class CaseUnits {
@@ -69,14 +70,17 @@ class CaseUnits {
 
 /// The `cases` cases of one project as units over `comm`'s ranks when there are at least as
 /// many cases as ranks (and more than one rank, and no `force`); null otherwise.
-/// `case_costs`: each case's estimate (case_costs_seconds), called only then, assigned by
-/// assign_case_units. Collective only in join().
+/// `case_costs`: each case's estimate (case_costs_seconds), called only then (on every rank,
+/// which fail alike on a bad case), assigned by assign_case_units on rank 0. Collective when it
+/// returns units: rank 0 sends every rank the assignment and its estimates (they replace the
+/// rank's own, in the run log's line too); and in join().
 std::unique_ptr<CaseUnits> make_case_units(dist::Communicator& comm, const ArtifactStore& store, bool force,
                                            std::size_t cases, const std::function<std::vector<double>()>& case_costs);
 
 /// The cases of several projects (one command's) as units: `stores[p]` is project p's cache
-/// (each must outlive the units), `units` every case of every project. Null under the same
-/// conditions (fewer units than ranks, one rank, `force`).
+/// (each must outlive the units), `units` every case of every project (the costs of the
+/// ranks other than 0 are not used). Null under the same conditions (fewer units than ranks,
+/// one rank, `force`); collective as the other.
 std::unique_ptr<CaseUnits> make_case_units(dist::Communicator& comm, const std::vector<const ArtifactStore*>& stores,
                                            bool force, const std::vector<CaseUnit>& units);
 
