@@ -114,7 +114,8 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
       per_attempt[p] = stored / double(records[p].attempts) / sources.reference[p];
   }
 
-  std::string pending;  // a budget that cut the last round short
+  std::string pending;    // a budget that cut the last round short
+  bool finished = false;  // `finish` ran on the records as they are
   for (std::size_t round = 1;; ++round) {
     const Clock::time_point estimate_start = Clock::now();
     std::vector<double> scale(n, 1.0);
@@ -136,34 +137,55 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
         round_number(double(stored), "%.0f") + " photons, " + round_number(double(attempts), "%.0f") + " attempts; " +
         text.measure + " (" + round_number(AccuracyPercentile, "%.0f") + "th percentile)" + m.grids + " (target " +
         round_number(goal.target_percent) + " %)");
-    if (m.met) {
-      outcome.stop_reason = met_stop_reason(m.grid_status);
-      break;
-    }
-    if (!pending.empty()) {
-      outcome.stop_reason = pending;
-      break;
-    }
-    if (round >= MaxAccuracyRounds) {
-      outcome.stop_reason = "round limit";
-      break;
-    }
-    const RoundPlan plan = next_round_scale(m.chased, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+    // The chased grids' stop, if they stop; else the plan of their next round.
+    std::string stop;
     std::vector<std::uint64_t> next(n);
     double more_photons = 0, more_attempts = 0;
-    for (std::size_t p = 0; p < n; ++p) {
-      next[p] = plan.scale[p] > 1.0 ? static_cast<std::uint64_t>(std::ceil(double(records[p].attempts) * plan.scale[p]))
-                                    : records[p].attempts;
-      more_attempts += double(next[p] - records[p].attempts);
-      more_photons += double(records[p].stored()) * (plan.scale[p] - 1.0);
+    // next[p] from the factors of each source's photons (`scale`), and what they add.
+    auto plan_next = [&](const std::vector<double>& factor) {
+      more_photons = more_attempts = 0;
+      for (std::size_t p = 0; p < n; ++p) {
+        const double s = p < factor.size() ? factor[p] : 1.0;
+        next[p] = s > 1.0 ? static_cast<std::uint64_t>(std::ceil(double(records[p].attempts) * s)) : records[p].attempts;
+        more_attempts += double(next[p] - records[p].attempts);
+        more_photons += double(records[p].stored()) * (std::max(s, 1.0) - 1.0);
+      }
+    };
+    if (m.met) {
+      stop = met_stop_reason(m.grid_status);
+    } else if (!pending.empty()) {
+      stop = pending;
+    } else if (round >= MaxAccuracyRounds) {
+      stop = "round limit";
+    } else {
+      const RoundPlan plan =
+          next_round_scale(m.chased, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+      plan_next(plan.scale);
+      if (!(more_attempts > 0)) {
+        stop = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
+        if (plan.sensors_direct_limited > 0)
+          log(text.name + ": " + std::to_string(plan.sensors_direct_limited) +
+              " sensor(s) miss the target by their direct component alone, which photons do not reduce "
+              "(more simulation.direct_samples_per_bin would)");
+      }
     }
-    if (!(more_attempts > 0)) {
-      outcome.stop_reason = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
-      if (plan.sensors_direct_limited > 0)
-        log(text.name + ": " + std::to_string(plan.sensors_direct_limited) +
-            " sensor(s) miss the target by their direct component alone, which photons do not reduce "
-            "(more simulation.direct_samples_per_bin would)");
-      break;
+    bool for_finish = false;  // this round's plan is what `finish` asked for
+    if (!stop.empty()) {
+      outcome.stop_reason = stop;
+      if (!finish) break;
+      const std::vector<double> asked = finish.finish(outcome, records);
+      finished = true;
+      plan_next(asked);
+      if (!(more_attempts > 0)) break;
+      const std::string refuse = !pending.empty() ? pending : round >= MaxAccuracyRounds ? "round limit" : "";
+      if (!refuse.empty()) {
+        log(text.name + ": no round " + std::to_string(round + 1) + " for the gathered grids' photon part: the " +
+            refuse);
+        finish.refused(outcome, refuse);
+        break;
+      }
+      for_finish = true;
+      finished = false;
     }
     // Budgets: the share of the planned increments that fits.
     double share = 1.0;
@@ -190,22 +212,38 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
         next[p] = records[p].attempts +
                   static_cast<std::uint64_t>(std::floor(share * double(next[p] - records[p].attempts)));
       if (share < 0.05) {
-        outcome.stop_reason = cut;
         log(text.name + ": no round " + std::to_string(round + 1) + ": the " + cut + " leaves room for " +
             round_number(100.0 * share) + " % of it");
+        if (for_finish) {
+          finish.refused(outcome, cut);
+          finished = true;
+        } else {
+          outcome.stop_reason = cut;
+        }
         break;
       }
       pending = cut;
       log(text.name + ": round " + std::to_string(round + 1) + " cut to " + round_number(100.0 * share) +
           " % of its plan by the " + cut + "; the last round");
     }
+    if (for_finish)
+      log(text.name + ": round " + std::to_string(round + 1) +
+          " traces more photons for the gathered grids' photon part (which more gather rays do not reduce)");
     for (std::size_t p = 0; p < n; ++p) traced_attempts += next[p] - records[p].attempts;
     const Clock::time_point t = Clock::now();
     extend_to(records, next);
     trace_seconds += seconds_since(t);
   }
   for (const auto& r : records) outcome.final_attempts.push_back(r.attempts);
-  if (finish) finish(outcome, records);
+  if (finish && !finished) {
+    // The chased grids stopped on a budget: the others take their turn, and what they ask for
+    // is refused for the same reason.
+    const std::string reason = outcome.stop_reason;
+    const std::vector<double> asked = finish.finish(outcome, records);
+    bool more = false;
+    for (std::size_t p = 0; p < n && p < asked.size(); ++p) more = more || asked[p] > 1.0;
+    if (more) finish.refused(outcome, reason);
+  }
   log(text.name + ": " + outcome.stop_reason + " after " + std::to_string(outcome.rounds) + " round(s)");
   return outcome;
 }

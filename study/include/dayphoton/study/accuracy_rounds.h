@@ -105,6 +105,13 @@ struct RoundPlan {
   std::size_t sensors_direct_limited = 0;  ///< above their budget by the direct variance alone
 };
 
+/// One sensor's share of an allocation (header comment): with `variance[p]` its photon variance
+/// from source p at the current counts ((DF percent)^2, `cost.size()` of them) and `budget` what
+/// their sum may be, raises scale[p] to Neyman's factor sqrt(a_p / c_p) sum_q sqrt(a_q c_q) /
+/// budget for every source with variance and cost (never lowers it). `budget` > 0.
+void raise_to_neyman_scale(const double* variance, const std::vector<double>& cost, double budget,
+                           std::vector<double>& scale);
+
 /// The next round's photon count of each source as a factor of its current count, for every
 /// grid's sensors at or below the percentile whose relative standard error exceeds `aim_percent`
 /// (header comment). `cost` is the cost of a source's photons so far (rays cast).
