@@ -20,6 +20,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/metrics/annual_metrics.h"
+#include "dayphoton/study/accuracy_rounds.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/report/report_format.h"
 #include "dayphoton/report/validation_figures.h"
@@ -574,6 +575,38 @@ TEST(ReportHtml, AGatheredGridsAccuracyIsExplainedByItsOwnGatherRounds) {
             std::string::npos)
       << met;
   EXPECT_EQ(met.find("stopped with"), std::string::npos) << met;
+}
+
+TEST(ReportHtml, AGatheredGridsPhotonPartStopNamesTheBudgetOrLimit) {
+  // Gathered grids whose photon part (what more gather rays do not reduce) kept them above the
+  // target: the photon rounds traced more photons for them until the photon budget, or their
+  // round limit; each sentence names that stop and the key to change.
+  const std::string dir = temp_dir("accuracy_gather_photons");
+  ResultsModel m = results_model(dir);
+  using Acc = DaylightFactorSummary::AccuracyReached;
+  m.cases[0].grids[1].daylight_factor->accuracy =
+      Acc{1.0, 1.6, 5, 33500000, "photon budget", "above target", 16384, 7, "photon budget"};
+  m.cases[1].grids[0].daylight_factor->accuracy =
+      Acc{1.0, 1.2, 8, 12000000, "photon round limit", "above target", 4096, 9, "photon round limit"};
+  write_results_model(m, dir);
+  const std::string html = report_html(dir);
+  const std::size_t at = html.find("<h3 id=\"accuracy\">");
+  ASSERT_NE(at, std::string::npos);
+  const std::string part = html.substr(at, html.find("</ul>", at) - at);
+  auto item = [&](const std::string& attrs) {
+    const std::size_t i = part.find("<li class=\"accuracy\" " + attrs + ">");
+    return i == std::string::npos ? std::string() : part.substr(i, part.find("</li>", i) - i);
+  };
+  const std::string wall = item("data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
+  EXPECT_NE(wall.find("the photon rounds traced more photons for it until the photon budget was reached. What to "
+                      "do: raise <code>simulation.accuracy.max_photons</code>"),
+            std::string::npos)
+      << wall;
+  const std::string limit = item("data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
+  EXPECT_NE(limit.find("the photon rounds traced more photons for it until their limit of " +
+                       std::to_string(study::MaxAccuracyRounds) + " rounds."),
+            std::string::npos)
+      << limit;
 }
 
 TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {

@@ -23,9 +23,10 @@
 // direct variance alone exceeds its budget cannot be helped by photons and is left out (the
 // run says so; direct_samples_per_bin lowers it).
 //
-// Grids estimated by final gather are measured but not chased with photons: their error is
+// Grids estimated by final gather are measured but not chased by this measure: their error is
 // mostly the gather rays' (accuracy_policy.h); after the photon rounds their rays are raised
-// in gather rounds (gather_accuracy_rounds.h).
+// in gather rounds (gather_accuracy_rounds.h), and the part of their error that rays do not
+// lower asks for further photon rounds (next_gather_photons there).
 //
 // The loop (pilot, allocation, stops, log lines) is the one the sun bins' rounds share
 // (study/src/accuracy_round_loop.h); this file holds the DF measure and the allocation.
