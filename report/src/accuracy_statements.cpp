@@ -65,6 +65,17 @@ std::string gather_why_and_what_to_do(const Reached& r) {
            "more gather rays do not reduce. What to do: give fixed photon counts "
            "(<code>simulation.photons_per_bin</code>, instead of the accuracy target) above the photons the "
            "rounds traced, or ask for a looser target.";
+  if (r.gather_stop_reason == "photon budget")
+    return gathered + ", and what remains of their error comes from the photons the gather rays read; the "
+           "photon rounds traced more photons for it until the photon budget was reached. What to do: raise "
+           "<code>simulation.accuracy.max_photons</code> (by default <code>limits.photons</code>), or ask for a "
+           "looser target.";
+  if (r.gather_stop_reason == "photon round limit")
+    return gathered + ", and what remains of their error comes from the photons the gather rays read; the "
+           "photon rounds traced more photons for it until their limit of " +
+           std::to_string(study::MaxAccuracyRounds) +
+           " rounds. What to do: give fixed photon counts (<code>simulation.photons_per_bin</code>, instead of "
+           "the accuracy target) above the photons the rounds traced, or ask for a looser target.";
   if (r.gather_stop_reason == "round limit")
     return gathered + ", and the gather rounds' limit (" + std::to_string(study::GatherMaxRounds) +
            " rounds) came first. What to do: start from more rays (<code>simulation.gather_rays</code>), or ask "

@@ -116,7 +116,8 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
       per_attempt[p] = stored / double(records[p].attempts) / sources.reference[p];
   }
 
-  std::string pending;  // a budget that cut the last round short
+  std::string pending;    // a budget that cut the last round short
+  bool finished = false;  // `finish` ran on the records as they are
   for (std::size_t round = 1;; ++round) {
     const Clock::time_point estimate_start = Clock::now();
     std::vector<double> scale(n, 1.0);
@@ -138,65 +139,83 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
         round_number(double(stored), "%.0f") + " photons, " + round_number(double(attempts), "%.0f") + " attempts; " +
         text.measure + " (" + round_number(AccuracyPercentile, "%.0f") + "th percentile)" + m.grids + " (target " +
         round_number(goal.target_percent) + " %)");
-    if (m.met) {
-      outcome.stop_reason = met_stop_reason(m.grid_status);
-      break;
-    }
-    if (!pending.empty()) {
-      outcome.stop_reason = pending;
-      break;
-    }
-    if (round >= MaxAccuracyRounds) {
-      outcome.stop_reason = "round limit";
-      break;
-    }
-    RoundPlan plan = next_round_scale(m.chased, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
-    // The direct part's own decision (RoundDirect): a raise of shadow rays, with its photon plan,
-    // if it fits the time budget.
-    DirectRoundPlan direct_plan;
-    double direct_seconds = 0;
-    bool direct_timed_out = false;  // a raise the time budget left no room for
-    if (direct.plan) {
-      direct_plan = direct.plan(cost, plan, AccuracyRoundAim * goal.target_percent);
-      if (direct_plan.raised() && goal.max_seconds > 0) {
-        direct_seconds = direct.seconds(direct_plan);
-        const double room = goal.max_seconds - work.agreed(seconds_since(start) + estimate_seconds);
-        if (room < direct_seconds) {
-          log(text.name + ": no raise of shadow rays in round " + std::to_string(round + 1) +
-              ": the time budget leaves no room for it");
-          direct_plan.rays = 0;
-          direct_seconds = 0;
-          direct_timed_out = true;
-        }
-      }
-      if (direct_plan.raised()) plan = direct_plan.photons;
-    }
+    // The chased grids' stop, if they stop; else the plan of their next round, with the direct
+    // part's own decision (RoundDirect): a raise of shadow rays and its photon plan, if it fits
+    // the time budget.
+    std::string stop;
     std::vector<std::uint64_t> next(n);
     double more_photons = 0, more_attempts = 0;
-    for (std::size_t p = 0; p < n; ++p) {
-      next[p] = plan.scale[p] > 1.0 ? static_cast<std::uint64_t>(std::ceil(double(records[p].attempts) * plan.scale[p]))
-                                    : records[p].attempts;
-      more_attempts += double(next[p] - records[p].attempts);
-      more_photons += double(records[p].stored()) * (plan.scale[p] - 1.0);
+    // next[p] from the factors of each source's photons (`scale`), and what they add.
+    auto plan_next = [&](const std::vector<double>& factor) {
+      more_photons = more_attempts = 0;
+      for (std::size_t p = 0; p < n; ++p) {
+        const double s = p < factor.size() ? factor[p] : 1.0;
+        next[p] = s > 1.0 ? static_cast<std::uint64_t>(std::ceil(double(records[p].attempts) * s)) : records[p].attempts;
+        more_attempts += double(next[p] - records[p].attempts);
+        more_photons += double(records[p].stored()) * (std::max(s, 1.0) - 1.0);
+      }
+    };
+    DirectRoundPlan direct_plan;
+    double direct_seconds = 0;
+    if (m.met) {
+      stop = met_stop_reason(m.grid_status);
+    } else if (!pending.empty()) {
+      stop = pending;
+    } else if (round >= MaxAccuracyRounds) {
+      stop = "round limit";
+    } else {
+      RoundPlan plan = next_round_scale(m.chased, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+      bool direct_timed_out = false;  // a raise the time budget left no room for
+      if (direct.plan) {
+        direct_plan = direct.plan(cost, plan, AccuracyRoundAim * goal.target_percent);
+        if (direct_plan.raised() && goal.max_seconds > 0) {
+          direct_seconds = direct.seconds(direct_plan);
+          const double room = goal.max_seconds - work.agreed(seconds_since(start) + estimate_seconds);
+          if (room < direct_seconds) {
+            log(text.name + ": no raise of shadow rays in round " + std::to_string(round + 1) +
+                ": the time budget leaves no room for it");
+            direct_plan.rays = 0;
+            direct_seconds = 0;
+            direct_timed_out = true;
+          }
+        }
+        if (direct_plan.raised()) plan = direct_plan.photons;
+      }
+      plan_next(plan.scale);
+      if (!(more_attempts > 0) && !direct_plan.raised()) {
+        if (direct_timed_out) {
+          stop = "time budget";
+        } else if (direct_plan.sensors_at_limit > 0) {
+          stop = "direct rays limit";
+          log(text.name + ": " + std::to_string(direct_plan.sensors_at_limit) +
+              " sensor(s) miss the target by their direct component alone at " +
+              std::to_string(MaxDirectSamplesPerBin) + " shadow rays per bin, the rounds' limit");
+        } else {
+          stop = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
+          if (plan.sensors_direct_limited > 0)
+            log(text.name + ": " + std::to_string(plan.sensors_direct_limited) +
+                " sensor(s) miss the target by their direct component alone, which photons do not reduce "
+                "(more simulation.direct_samples_per_bin would)");
+        }
+      }
     }
-    if (!(more_attempts > 0) && !direct_plan.raised()) {
-      if (direct_timed_out) {
-        outcome.stop_reason = "time budget";
+    bool for_finish = false;  // this round's plan is what `finish` asked for (no raise of shadow rays)
+    if (!stop.empty()) {
+      outcome.stop_reason = stop;
+      if (!finish) break;
+      const std::vector<double> asked = finish.finish(outcome, records);
+      finished = true;
+      plan_next(asked);
+      if (!(more_attempts > 0)) break;
+      const std::string refuse = !pending.empty() ? pending : round >= MaxAccuracyRounds ? "round limit" : "";
+      if (!refuse.empty()) {
+        log(text.name + ": no round " + std::to_string(round + 1) + " for the gathered grids' photon part: the " +
+            refuse);
+        finish.refused(outcome, refuse);
         break;
       }
-      if (direct_plan.sensors_at_limit > 0) {
-        outcome.stop_reason = "direct rays limit";
-        log(text.name + ": " + std::to_string(direct_plan.sensors_at_limit) +
-            " sensor(s) miss the target by their direct component alone at " +
-            std::to_string(MaxDirectSamplesPerBin) + " shadow rays per bin, the rounds' limit");
-        break;
-      }
-      outcome.stop_reason = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
-      if (plan.sensors_direct_limited > 0)
-        log(text.name + ": " + std::to_string(plan.sensors_direct_limited) +
-            " sensor(s) miss the target by their direct component alone, which photons do not reduce "
-            "(more simulation.direct_samples_per_bin would)");
-      break;
+      for_finish = true;
+      finished = false;
     }
     // Budgets: the share of the planned increments that fits.
     double share = 1.0;
@@ -230,9 +249,14 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
         log(text.name + ": round " + std::to_string(round + 1) + " raises the shadow rays only: the " + cut +
             " leaves no room for photons; the last round");
       } else if (share < 0.05) {
-        outcome.stop_reason = cut;
         log(text.name + ": no round " + std::to_string(round + 1) + ": the " + cut + " leaves room for " +
             round_number(100.0 * share) + " % of it");
+        if (for_finish) {
+          finish.refused(outcome, cut);
+          finished = true;
+        } else {
+          outcome.stop_reason = cut;
+        }
         break;
       } else {
         pending = cut;
@@ -240,6 +264,9 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
             " % of its plan by the " + cut + "; the last round");
       }
     }
+    if (for_finish)
+      log(text.name + ": round " + std::to_string(round + 1) +
+          " traces more photons for the gathered grids' photon part (which more gather rays do not reduce)");
     for (std::size_t p = 0; p < n; ++p) traced_attempts += next[p] - records[p].attempts;
     const Clock::time_point t = Clock::now();
     extend_to(records, next);
@@ -247,7 +274,15 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
     if (direct_plan.raised()) direct.apply(round + 1, direct_plan);
   }
   for (const auto& r : records) outcome.final_attempts.push_back(r.attempts);
-  if (finish) finish(outcome, records);
+  if (finish && !finished) {
+    // The chased grids stopped on a budget: the others take their turn, and what they ask for
+    // is refused for the same reason.
+    const std::string reason = outcome.stop_reason;
+    const std::vector<double> asked = finish.finish(outcome, records);
+    bool more = false;
+    for (std::size_t p = 0; p < n && p < asked.size(); ++p) more = more || asked[p] > 1.0;
+    if (more) finish.refused(outcome, reason);
+  }
   log(text.name + ": " + outcome.stop_reason + " after " + std::to_string(outcome.rounds) + " round(s)");
   return outcome;
 }

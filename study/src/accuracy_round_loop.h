@@ -12,7 +12,10 @@
 // the time budget (rank 0's clock: the one decision that depends on the machine), the round
 // limit, no source that can help ("no light", or "direct component" when a sensor's direct
 // variance alone exceeds its budget and nothing raises its shadow rays, "direct rays limit"
-// when the sky's direct round (RoundDirect) has raised them to their limit).
+// when the sky's direct round (RoundDirect) has raised them to their limit). When it would
+// stop, the grids it does not chase (final gather, RoundLoopFinish) take their turn on the
+// photons so far and may ask for more: a further round then traces what they ask for (within
+// the same budgets and round limit) and the loop goes on.
 //
 // Every trace (the pilot's doublings, each round's extension) is one call of RoundWork::trace
 // (round_work.h), so under MPI the attempt ranges are shared over the ranks and summed on every
@@ -77,10 +80,22 @@ struct RoundLoopOutcome {
   std::vector<std::uint64_t> pilot_attempts, final_attempts;  ///< per source
 };
 
-/// Runs after the last round, before the closing log line, with the sources' final records;
-/// it may change the outcome's stop reason (the gather rounds of gather_accuracy_rounds.h).
-using RoundLoopFinish =
-    std::function<void(RoundLoopOutcome& outcome, const std::vector<engine::SourcePhotonRecord>& records)>;
+/// The grids the loop's measure does not chase (the gathered grids of gather_accuracy_rounds.h):
+/// their own rounds on the photons traced so far, and what they ask of the photon rounds.
+struct RoundLoopFinish {
+  /// Runs whenever the loop would stop (its outcome's stop reason set), before the closing log
+  /// line, with the sources' records; it may change the stop reason. Returns the factor by which
+  /// each source's photons should grow for those grids (empty, or no factor above 1: none).
+  /// The loop traces that as a further round when the grids it chases stopped on their own
+  /// (target met, direct component, no light) and no budget or the round limit is in the way;
+  /// then it measures and runs this again.
+  std::function<std::vector<double>(RoundLoopOutcome& outcome, const std::vector<engine::SourcePhotonRecord>& records)>
+      finish;
+  /// Runs when the loop does not trace what `finish` asked for, with the reason ("photon
+  /// budget", "time budget", "round limit"); it may change the outcome's stop reason.
+  std::function<void(RoundLoopOutcome& outcome, const std::string& reason)> refused;
+  explicit operator bool() const { return bool(finish); }
+};
 
 /// The direct part's own round decision (the sky's rounds: next_direct_round in
 /// accuracy_rounds.h; the sun bins' rounds have none). After a round's measure, when the

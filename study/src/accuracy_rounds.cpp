@@ -136,7 +136,6 @@ RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::ve
   const std::size_t n = cost.size();
   RoundPlan plan;
   plan.scale.assign(n, 1.0);
-  std::vector<double> a(n), weight(n);
   for (const GridVariance& g : grids) {
     const std::size_t sensors = g.df_percent.size();
     std::vector<double> relative(sensors, 0.0);
@@ -154,14 +153,7 @@ RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::ve
         ++plan.sensors_direct_limited;
         continue;
       }
-      // Neyman: minimise sum_p c_p s_p subject to sum_p a_p / s_p = budget.
-      double sum = 0;
-      for (std::size_t p = 0; p < n; ++p) {
-        a[p] = cost[p] > 0 ? std::max(0.0, g.photon_variance[i * n + p]) : 0.0;
-        sum += std::sqrt(a[p] * cost[p]);
-      }
-      for (std::size_t p = 0; p < n; ++p)
-        if (a[p] > 0) plan.scale[p] = std::max(plan.scale[p], std::sqrt(a[p] / cost[p]) * sum / budget);
+      raise_to_neyman_scale(&g.photon_variance[i * n], cost, budget, plan.scale);
     }
   }
   for (double& s : plan.scale) s = std::min(s, AccuracyMaxGrowth);
@@ -241,6 +233,19 @@ DirectRoundPlan next_direct_round(const std::vector<GridVariance>& grids, const 
     plan_rays = trial_rays;
   }
   return plan;
+}
+
+void raise_to_neyman_scale(const double* variance, const std::vector<double>& cost, double budget,
+                           std::vector<double>& scale) {
+  // Neyman: minimise sum_p c_p s_p subject to sum_p a_p / s_p = budget.
+  const std::size_t n = cost.size();
+  double sum = 0;
+  for (std::size_t p = 0; p < n; ++p)
+    if (cost[p] > 0) sum += std::sqrt(std::max(0.0, variance[p]) * cost[p]);
+  for (std::size_t p = 0; p < n; ++p) {
+    const double a = cost[p] > 0 ? std::max(0.0, variance[p]) : 0.0;
+    if (a > 0) scale[p] = std::max(scale[p], std::sqrt(a / cost[p]) * sum / budget);
+  }
 }
 
 AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
@@ -365,11 +370,20 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     }
   };
   // Gathered grids above the target: more gather rays (gather_accuracy_rounds.h), which may
-  // settle the stop reason.
-  const RoundLoopFinish gather_rounds = [&](RoundLoopOutcome& o, const std::vector<engine::SourcePhotonRecord>& records) {
-    result.outcome.stop_reason = o.stop_reason;
+  // settle the stop reason, and more photons for their photon part.
+  GatherPhotonRequest asked;     // of the last gather rounds
+  std::string photon_stop;       // the photon rounds' stop they were given
+  RoundLoopFinish gather_rounds;
+  gather_rounds.finish = [&](RoundLoopOutcome& o, const std::vector<engine::SourcePhotonRecord>& records) {
+    photon_stop = result.outcome.stop_reason = o.stop_reason;
     result.outcome.rounds = o.rounds;
-    run_gather_accuracy_rounds(c, goal, records, direct, direct_variance, std::chrono::duration<double>(Clock::now() - start).count(), work, log, result);
+    asked = run_gather_accuracy_rounds(c, goal, records, direct, direct_variance,
+                                       std::chrono::duration<double>(Clock::now() - start).count(), work, log, result);
+    o.stop_reason = result.outcome.stop_reason;
+    return asked.scale;
+  };
+  gather_rounds.refused = [&](RoundLoopOutcome& o, const std::string& reason) {
+    refuse_gather_photons(result.outcome, asked, reason, photon_stop);
     o.stop_reason = result.outcome.stop_reason;
   };
   const RoundLoopOutcome o =
@@ -395,7 +409,7 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
                              number(AccuracyPilotFraction, "%.17g") + ":" + number(AccuracyRoundAim, "%.17g") + ":" +
                              number(AccuracyMaxGrowth, "%.17g") + ":direct-rays:" +
                              std::to_string(MaxDirectSamplesPerBin) + ":" + number(DirectVarianceExponent, "%.17g") +
-                             ":" + (c.gather ? "gather-rays:" + std::to_string(GatherMaxRounds) + ":" +
+                             ":" + (c.gather ? "gather-rays-photons:" + std::to_string(GatherMaxRounds) + ":" +
                                                    number(GatherMaxGrowth, "%.17g") + ":" + std::to_string(GatherMaxRays)
                                              : std::string("surface"));
   std::vector<std::string> keys = photon_keys;

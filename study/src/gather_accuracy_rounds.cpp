@@ -73,6 +73,7 @@ void unframe_block(const std::string& block, std::string& coefficients, std::vec
 struct GridEstimate {
   engine::DaylightCoefficients dc;
   std::vector<double> df_percent, direct_variance, gather_variance, fixed_variance;  ///< per sensor, (DF %)^2
+  std::vector<double> fixed_per_source;  ///< [sensor x sources + source], (DF %)^2: fixed_variance by source
   double reached_percent = 0;
 };
 
@@ -112,7 +113,62 @@ GatherRayPlan next_gather_rays(const std::vector<double>& df_percent, const std:
   return plan;
 }
 
-void run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
+GatherPhotonPlan next_gather_photons(const std::vector<double>& df_percent, const std::vector<double>& direct_variance,
+                                     const std::vector<double>& gather_variance,
+                                     const std::vector<double>& fixed_per_source, int rays,
+                                     const std::vector<double>& cost, double aim_percent, double percentile) {
+  const std::size_t m = df_percent.size(), n = cost.size();
+  std::vector<double> relative(m, 0.0);
+  for (std::size_t i = 0; i < m; ++i)
+    relative[i] = df_percent[i] > 0
+                      ? 100.0 * std::sqrt(std::max(0.0, direct_variance[i] + gather_variance[i])) / df_percent[i]
+                      : 0.0;
+  GatherPhotonPlan plan;
+  plan.scale.assign(n, 1.0);
+  for (const std::size_t i : sensors_at_or_below_percentile(relative, df_percent, percentile)) {
+    if (!(relative[i] > aim_percent)) continue;
+    const double allowed = aim_percent / 100.0 * df_percent[i];
+    const double budget = allowed * allowed - direct_variance[i];
+    if (!(budget > 0)) continue;  // direct-limited: photons do not help
+    const double v = std::max(0.0, gather_variance[i]);
+    double alpha = 0;
+    for (std::size_t p = 0; p < n; ++p) alpha += fixed_per_source[i * n + p];
+    alpha = std::clamp(alpha, 0.0, v);
+    // The rays' part left to the rays (header comment): what it is now, at most half the
+    // budget, but never below what it would be at the ray limit.
+    const double rays_part = v - alpha;
+    const double left_to_rays =
+        std::min(rays_part, std::max(0.5 * budget, rays_part * double(rays) / double(GatherMaxRays)));
+    const double photon_budget = budget - left_to_rays;
+    if (!(photon_budget > 0) || !(alpha > photon_budget)) continue;
+    ++plan.sensors;
+    raise_to_neyman_scale(&fixed_per_source[i * n], cost, photon_budget, plan.scale);
+  }
+  for (double& x : plan.scale) x = std::min(x, AccuracyMaxGrowth);
+  return plan;
+}
+
+void refuse_gather_photons(AccuracyOutcome& outcome, const GatherPhotonRequest& request, const std::string& reason,
+                           const std::string& photon_stop) {
+  const std::string stop = reason == "round limit" ? "photon round limit" : reason;
+  for (const std::size_t g : request.grids) outcome.gather.at(g).stop_reason = stop;
+  settle_case_stop(outcome, photon_stop);
+}
+
+void settle_case_stop(AccuracyOutcome& outcome, const std::string& photon_stop) {
+  // The photon rounds stopped because only gathered grids were left (met_stop_reason): their
+  // own stops decide it.
+  outcome.stop_reason = photon_stop;
+  if (photon_stop != "not reachable by photons") return;
+  outcome.stop_reason = "target met";
+  for (std::size_t g = 0; g < outcome.grid_status.size(); ++g)
+    if (outcome.grid_status[g] != "met" && g < outcome.gather.size()) {
+      outcome.stop_reason = outcome.gather[g].stop_reason;
+      break;
+    }
+}
+
+GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
                                 const std::vector<engine::SourcePhotonRecord>& records,
                                 const std::vector<std::vector<Vec3>>& direct,
                                 const std::vector<std::vector<double>>& direct_variance, double seconds_so_far,
@@ -122,7 +178,13 @@ void run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
   const std::vector<SensorGrid>& grids = *c.grids;
   const std::size_t n = c.sources->size();
   AccuracyOutcome& outcome = result.outcome;
-  outcome.gather.assign(grids.size(), GatherAccuracy{});
+  // After a photon round asked for by an earlier call, each grid starts from the rays it reached.
+  if (outcome.gather.size() != grids.size()) outcome.gather.assign(grids.size(), GatherAccuracy{});
+  const std::string photon_stop = outcome.stop_reason;
+  GatherPhotonRequest request;
+  request.scale.assign(n, 1.0);
+  std::vector<double> cost(n);
+  for (std::size_t p = 0; p < n; ++p) cost[p] = double(records[p].raw.tallies.at(0).rays);
   const int first_rays = square_at_least(double(std::max(1, c.estimating.gather.rays_per_sensor)));
 
   // The overcast sky's weights: a sensor's DF variance is sum_p (df_scale L_p)^2 var_p.
@@ -139,6 +201,7 @@ void run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
   auto measure = [&](engine::DaylightCoefficients dc, const std::vector<double>& fixed) {
     GridEstimate e;
     e.fixed_variance.assign(dc.sensors, 0.0);
+    e.fixed_per_source.assign(dc.sensors * n, 0.0);
     e.df_percent = daylight_factor_percent(dc.to_matrix(), sky, c.horizontal_illuminance_lux);
     e.direct_variance.assign(dc.sensors, 0.0);
     e.gather_variance.assign(dc.sensors, 0.0);
@@ -147,7 +210,8 @@ void run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
       for (std::size_t p = 0; p < n; ++p) {
         e.direct_variance[i] += weight[p] * dc.direct_variance[i * n + p];
         e.gather_variance[i] += weight[p] * dc.photon_variance[i * n + p];
-        e.fixed_variance[i] += weight[p] * fixed[i * n + p];
+        e.fixed_per_source[i * n + p] = weight[p] * fixed[i * n + p];
+        e.fixed_variance[i] += e.fixed_per_source[i * n + p];
       }
       stderr_percent[i] = std::sqrt(std::max(0.0, e.direct_variance[i] + e.gather_variance[i]));
     }
@@ -196,8 +260,10 @@ void run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
   for (std::size_t g = 0; g < grids.size(); ++g) {
     if (grid_chased_by_photons(*c.plane_of_grid, c.gather, g)) continue;
     GatherAccuracy& a = outcome.gather[g];
+    const int start_rays = a.gathered ? std::max(a.rays, first_rays) : first_rays;
     a.gathered = true;
-    a.first_rays = a.rays = first_rays;
+    a.first_rays = a.rays = first_rays;  // the photon rounds' estimate, until another replaces it
+    a.stop_reason.clear();
     if (outcome.reached_percent[g] <= goal.target_percent) {
       a.stop_reason = "target met";
       outcome.grid_status[g] = "met";
@@ -210,17 +276,31 @@ void run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
       continue;
     }
     // The photon rounds' estimate again, with its fixed part (the same coefficients: the
-    // same photons, rays and seed).
+    // same photons, rays and seed); or, after a photon round asked for by this grid, an
+    // estimate at the rays it had reached (a gather round).
     Clock::time_point t = Clock::now();
-    GridEstimate now = estimate(g, a.rays, "accuracy gather round 0, grid " + grids[g].name);
-    double seconds_per_ray = seconds_since(t) / a.rays;  // of the last estimate, per gather ray per sensor
+    GridEstimate now = estimate(
+        g, start_rays,
+        "accuracy gather round " + (start_rays > first_rays ? std::to_string(a.rounds + 1) : std::string("0")) +
+            ", grid " + grids[g].name);
+    double seconds_per_ray = seconds_since(t) / start_rays;  // of the last estimate, per gather ray per sensor
+    std::size_t rounds_now = 0;  // gather rounds on these photons
+    if (start_rays > first_rays) {
+      a.rays = start_rays;
+      ++a.rounds;
+      ++rounds_now;
+      log("accuracy gather round " + std::to_string(a.rounds) + ", grid " + grids[g].name + ": " +
+          std::to_string(a.rays) + " gather rays per sensor (the rays reached before this photon round); DF relative "
+          "standard error (" + number(AccuracyPercentile, "%.0f") + "th percentile) " + number(now.reached_percent) +
+          " % (target " + number(goal.target_percent) + " %)");
+    }
     for (;;) {
       outcome.reached_percent[g] = now.reached_percent;
       if (now.reached_percent <= goal.target_percent) {
         a.stop_reason = "target met";
         break;
       }
-      if (a.rounds >= GatherMaxRounds) {
+      if (rounds_now >= GatherMaxRounds) {
         a.stop_reason = "round limit";
         break;
       }
@@ -258,24 +338,37 @@ void run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
       seconds_per_ray = seconds_since(t) / plan.rays;
       a.rays = plan.rays;
       ++a.rounds;
+      ++rounds_now;
       log("accuracy gather round " + std::to_string(a.rounds) + ", grid " + grids[g].name + ": " +
           std::to_string(a.rays) + " gather rays per sensor; DF relative standard error (" +
           number(AccuracyPercentile, "%.0f") + "th percentile) " + number(now.reached_percent) + " % (target " +
           number(goal.target_percent) + " %)");
     }
+    // A grid that rays cannot bring further asks for more photons (header comment).
+    if (a.stop_reason == "gather photon part" || a.stop_reason == "gather ray limit") {
+      const GatherPhotonPlan photons =
+          next_gather_photons(now.df_percent, now.direct_variance, now.gather_variance, now.fixed_per_source, a.rays,
+                              cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+      double largest = 1.0;
+      std::size_t growing = 0;
+      for (std::size_t p = 0; p < n; ++p) {
+        largest = std::max(largest, photons.scale[p]);
+        if (photons.scale[p] > 1.0) ++growing;
+        request.scale[p] = std::max(request.scale[p], photons.scale[p]);
+      }
+      if (growing > 0) {
+        request.grids.push_back(g);
+        log("accuracy: grid " + grids[g].name + ": " + std::to_string(photons.sensors) +
+            " sensor(s) ask for more photons for the gather's photon part: up to " + number(largest) +
+            " times the photons of " + std::to_string(growing) + " source(s)");
+      }
+    }
     result.coefficients[g] = std::move(now.dc);
     outcome.grid_status[g] = outcome.reached_percent[g] <= goal.target_percent ? "met" : "above target";
   }
-  // The run's stop: the photon rounds stopped because only gathered grids were left
-  // (met_stop_reason); now their own stops decide it.
-  if (outcome.stop_reason == "not reachable by photons") {
-    outcome.stop_reason = "target met";
-    for (std::size_t g = 0; g < grids.size(); ++g)
-      if (outcome.grid_status[g] != "met") {
-        outcome.stop_reason = outcome.gather[g].stop_reason;
-        break;
-      }
-  }
+  settle_case_stop(outcome, photon_stop);
+  if (request.grids.empty()) request.scale.clear();
+  return request;
 }
 
 std::string gather_accuracy_note(const AccuracyOutcome& outcome, std::size_t grid) {

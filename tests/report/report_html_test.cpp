@@ -20,6 +20,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/metrics/annual_metrics.h"
+#include "dayphoton/study/accuracy_rounds.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/report/report_format.h"
 #include "dayphoton/report/validation_figures.h"
@@ -606,6 +607,33 @@ TEST(ReportHtml, TheDirectRaysLimitNamesTheKeyToChange) {
             std::string::npos)
       << item;
   EXPECT_EQ(item.find("max_photons"), std::string::npos) << item;
+}
+
+TEST(ReportHtml, AGatheredGridsPhotonPartStopNamesTheBudgetOrLimit) {
+  // Gathered grids whose photon part (what more gather rays do not reduce) kept them above the
+  // target: the photon rounds traced more photons for them until the photon budget, or their
+  // round limit; each sentence names that stop and the key to change.
+  const std::string dir = temp_dir("accuracy_gather_photons");
+  ResultsModel m = results_model(dir);
+  using Acc = DaylightFactorSummary::AccuracyReached;
+  m.cases[0].grids[1].daylight_factor->accuracy =
+      Acc{1.0, 1.6, 5, 33500000, "photon budget", "above target", 16384, 7, "photon budget"};
+  m.cases[1].grids[0].daylight_factor->accuracy =
+      Acc{1.0, 1.2, 8, 12000000, "photon round limit", "above target", 4096, 9, "photon round limit"};
+  write_results_model(m, dir);
+  const std::string html = report_html(dir);
+  const std::string part = accuracy_statements(html);
+  ASSERT_FALSE(part.empty());
+  const std::string wall = accuracy_item(part, "data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
+  EXPECT_NE(wall.find("the photon rounds traced more photons for it until the photon budget was reached. What to "
+                      "do: raise <code>simulation.accuracy.max_photons</code>"),
+            std::string::npos)
+      << wall;
+  const std::string limit = accuracy_item(part, "data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
+  EXPECT_NE(limit.find("the photon rounds traced more photons for it until their limit of " +
+                       std::to_string(study::MaxAccuracyRounds) + " rounds."),
+            std::string::npos)
+      << limit;
 }
 
 TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {

@@ -98,6 +98,55 @@ TEST(GatherRayPlan, GrowthIsCappedAndTheWorstSensorsBeyondThePercentileIgnored) 
   EXPECT_EQ(p.rays, 36);  // 16 x 2 / 1 = 32, rounded up to a square
 }
 
+// ---- the photon plan of a gathered grid ------------------------------------------------------
+
+// One sensor, DF 10 %, aim 10 % (budget B = 1), two sources of equal cost with fixed parts 1.5
+// and 0.5 (alpha = 2) and a rays' part of 0.5 at 64 rays: the photons get B - 0.5 = 0.5, and
+// Neyman's factors are sqrt(a_p) (sqrt 1.5 + sqrt 0.5) / 0.5 = 4.732 and 2.732 (then
+// 1.5 / 4.732 + 0.5 / 2.732 = 0.5).
+TEST(GatherPhotonPlan, ThePhotonsTakeTheBudgetLeftByTheRays) {
+  const double s0 = std::sqrt(1.5) * (std::sqrt(1.5) + std::sqrt(0.5)), s1 = std::sqrt(0.5) * (std::sqrt(1.5) + std::sqrt(0.5));
+  GatherPhotonPlan p = next_gather_photons({10.0}, {0.0}, {2.5}, {1.5, 0.5}, 64, {1.0, 1.0}, 10.0, 95.0);
+  ASSERT_EQ(p.scale.size(), 2u);
+  EXPECT_EQ(p.sensors, 1u);
+  EXPECT_NEAR(p.scale[0], s0 / 0.5, 1e-12);
+  EXPECT_NEAR(p.scale[1], s1 / 0.5, 1e-12);
+  EXPECT_NEAR(1.5 / p.scale[0] + 0.5 / p.scale[1], 0.5, 1e-12);
+  // A rays' part of 1 (more than half the budget): the rays keep half (more rays take it down).
+  p = next_gather_photons({10.0}, {0.0}, {3.0}, {1.5, 0.5}, 64, {1.0, 1.0}, 10.0, 95.0);
+  EXPECT_NEAR(p.scale[0], s0 / 0.5, 1e-12);
+  // At the ray limit the rays' part stays: 0.8 of it leaves 0.2 to the photons.
+  p = next_gather_photons({10.0}, {0.0}, {2.8}, {1.5, 0.5}, GatherMaxRays, {1.0, 1.0}, 10.0, 95.0);
+  EXPECT_NEAR(p.scale[0], s0 / 0.2, 1e-9);
+  EXPECT_NEAR(p.scale[1], s1 / 0.2, 1e-9);
+  // Cost: a source four times dearer per photon gets half the factor it would (sqrt(c_p)).
+  p = next_gather_photons({10.0}, {0.0}, {2.5}, {1.0, 1.0}, 64, {1.0, 4.0}, 10.0, 95.0);
+  EXPECT_NEAR(p.scale[0], (1.0 + 2.0) / 0.5, 1e-12);
+  EXPECT_NEAR(p.scale[1], 0.5 * (1.0 + 2.0) / 0.5, 1e-12);
+}
+
+TEST(GatherPhotonPlan, NoPhotonsWhenTheyCannotHelpOrAreNotTheProblem) {
+  // The rays' part alone at the ray limit exceeds the budget: photons cannot bring it under.
+  GatherPhotonPlan p = next_gather_photons({10.0}, {0.0}, {3.2}, {1.5, 0.5}, GatherMaxRays, {1.0, 1.0}, 10.0, 95.0);
+  EXPECT_EQ(p.sensors, 0u);
+  EXPECT_EQ(p.scale, std::vector<double>({1.0, 1.0}));
+  // Direct-limited.
+  p = next_gather_photons({10.0}, {1.2}, {2.5}, {1.5, 0.5}, 64, {1.0, 1.0}, 10.0, 95.0);
+  EXPECT_EQ(p.scale, std::vector<double>({1.0, 1.0}));
+  // Above the aim (sqrt(0.3 + 0.9) = 1.095), but the photon part 0.3 is within its share
+  // 0.7 - 0.35: the rays are the remedy.
+  p = next_gather_photons({10.0}, {0.3}, {0.9}, {0.2, 0.1}, 64, {1.0, 1.0}, 10.0, 95.0);
+  EXPECT_EQ(p.sensors, 0u);
+  EXPECT_EQ(p.scale, std::vector<double>({1.0, 1.0}));
+  // Below the aim.
+  p = next_gather_photons({10.0}, {0.0}, {0.9}, {0.8, 0.1}, 64, {1.0, 1.0}, 10.0, 95.0);
+  EXPECT_EQ(p.scale, std::vector<double>({1.0, 1.0}));
+  // A source without cost (no light traced) is not asked for; growth is capped.
+  p = next_gather_photons({10.0}, {0.0}, {400.5}, {400.0, 0.5}, 64, {1.0, 0.0}, 10.0, 95.0);
+  EXPECT_EQ(p.scale[0], AccuracyMaxGrowth);
+  EXPECT_EQ(p.scale[1], 1.0);
+}
+
 // ---- whole rounds on the office -------------------------------------------------------------
 
 struct Office {
@@ -110,7 +159,11 @@ struct Office {
   std::vector<int> plane_of_grid;
   RadianceMatrix overcast;
 
-  explicit Office(bool gathered_grid = true)
+  std::size_t photons_per_source = 2000;  ///< the reference count of the rounds
+  std::size_t direct_samples = 16;        ///< shadow rays per source and sensor
+
+  /// `plane_grid` false: the gathered grid alone (no receiver plane, no grid the photons serve).
+  explicit Office(bool gathered_grid = true, bool plane_grid = true)
       : project(project::load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/project.yaml")) {
     project.sensors.grids.at(0).spacing_m = 1.0;  // 48 sensors
     description = project::build_scene_description(project);
@@ -126,6 +179,11 @@ struct Office {
       description.grids.push_back(g);
       plane_of_grid.push_back(-1);
     }
+    if (!plane_grid) {
+      description.grids.erase(description.grids.begin());
+      plane_of_grid.erase(plane_of_grid.begin());
+      planes.clear();
+    }
     const double lux = 10000.0, rho = 0.2;
     const auto sky = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(lux));
     overcast = sky::sky_vector(*sky, sky::PatchBasis::tregenza(), sky::ground_radiance_rgb({rho, rho, rho}, lux, 0, {0, 0, -1}));
@@ -140,13 +198,13 @@ struct Office {
     c.grids = &description.grids;
     c.gather = true;
     c.tracing.seed = seed;
-    c.tracing.photons_per_source = 2000;
+    c.tracing.photons_per_source = photons_per_source;
     c.tracing.source_photon_factor.assign(sources.size(), 1.0);
     c.tracing.source_photon_factor[0] = 16.0;
     c.tracing.keep_surface_photons = true;
     c.tracing.store_direct_on_surfaces = true;  // as the pipeline does for a gather
     c.estimating.density.bandwidth = 20;
-    c.estimating.direct.samples_per_source = 16;
+    c.estimating.direct.samples_per_source = direct_samples;
     c.estimating.direct.seed = seed;
     c.estimating.gather.rays_per_sensor = gather_rays;
     c.estimating.gather.seed = seed;
@@ -246,6 +304,150 @@ TEST(GatherAccuracyRounds, OneAndTwoThreadsAndOneToThreeRanksGiveTheSameBytes) {
       EXPECT_EQ(x.outcome.gather.at(1).rounds, one.outcome.gather.at(1).rounds);
       EXPECT_EQ(x.outcome.reached_percent, one.outcome.reached_percent);
       EXPECT_TRUE(encode_coefficients(x.coefficients.at(1)) == expected);
+    }
+  }
+}
+
+// ---- more photons for a gathered grid's photon part ------------------------------------------
+
+// The gathered grid alone (no grid the photons serve), from few photons: after the pilot its
+// gather rounds stop on the photon part, which more rays do not lower; the photon rounds then
+// trace more photons for it and the gather rounds go on from the rays reached.
+constexpr double PhotonPartTarget = 2.0;   // percent
+constexpr int PhotonPartRays = 64;         // the project's gather rays
+constexpr std::size_t PhotonPartReference = 100;  // photons per source at the reference count
+constexpr std::size_t PhotonPartDirectSamples = 256;  // the direct component well below the target
+
+struct PhotonPartRun {
+  AccuracyResult result;
+  std::vector<std::string> log;
+};
+
+PhotonPartRun run_photon_part(std::uint64_t seed, std::uint64_t max_photons = 0, int threads = 0) {
+  std::unique_ptr<tbb::global_control> limit;
+  if (threads > 0) limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+  Office office(true, false);
+  office.photons_per_source = PhotonPartReference;
+  office.direct_samples = PhotonPartDirectSamples;
+  AccuracyGoal goal;
+  goal.target_percent = PhotonPartTarget;
+  goal.max_photons = max_photons;
+  PhotonPartRun r;
+  r.result = run_accuracy_rounds(office.accuracy_case(seed, PhotonPartRays), goal, [&](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    r.log.push_back(line);
+  });
+  return r;
+}
+
+bool logged(const PhotonPartRun& r, const std::string& words) {
+  for (const std::string& line : r.log)
+    if (line.find(words) != std::string::npos) return true;
+  return false;
+}
+
+// The reported standard errors against a reference (another seed, a 4 times tighter target):
+// per sensor z = (DF - DF_ref) / sqrt(se^2 + se_ref^2), and the mean of z^2 over the 8 sensors
+// is at most 15.1, the upper 1e-4 quantile of chi^2(1), which bounds it however correlated the
+// sensors are (fully correlated, the mean is one chi^2(1) draw; independent, chi^2(8) / 8).
+TEST(GatherPhotonRounds, PhotonPartAboveTheTargetGetsMorePhotons) {
+  Office office(true, false);
+  office.photons_per_source = PhotonPartReference;
+  office.direct_samples = PhotonPartDirectSamples;
+  AccuracyGoal tight;
+  tight.target_percent = PhotonPartTarget / 4;
+  const AccuracyResult reference =
+      run_accuracy_rounds(office.accuracy_case(1003, PhotonPartRays), tight, [](const std::string&) {});
+  ASSERT_EQ(reference.outcome.stop_reason, "target met");
+  auto df_and_variance = [&](const engine::DaylightCoefficients& dc, std::vector<double>& df, std::vector<double>& var) {
+    df = daylight_factor_percent(dc.to_matrix(), office.overcast, 10000.0);
+    std::vector<double> v(dc.sensors * dc.sources);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = dc.direct_variance[i] + dc.photon_variance[i];
+    const std::vector<double> se = daylight_factor_stderr_percent(v, dc.sensors, office.overcast, 10000.0);
+    var.resize(se.size());
+    for (std::size_t i = 0; i < se.size(); ++i) var[i] = se[i] * se[i];
+  };
+  std::vector<double> df_ref, var_ref;
+  df_and_variance(reference.coefficients.at(0), df_ref, var_ref);
+  for (const std::uint64_t seed : {3u, 4u}) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const PhotonPartRun r = run_photon_part(seed);
+    const AccuracyOutcome& o = r.result.outcome;
+    ASSERT_EQ(o.gather.size(), 1u);
+    // After the pilot the gather rounds asked for photons for the photon part.
+    EXPECT_TRUE(logged(r, "ask for more photons for the gather's photon part"));
+    EXPECT_TRUE(logged(r, "accuracy: round 2 traces more photons for the gathered grids' photon part"));
+    EXPECT_GE(o.rounds, 2u);
+    for (std::size_t p = 0; p < o.final_attempts.size(); ++p) EXPECT_GE(o.final_attempts[p], o.pilot_attempts[p]);
+    EXPECT_NE(o.final_attempts, o.pilot_attempts);
+    EXPECT_EQ(o.gather[0].stop_reason, "target met");
+    EXPECT_EQ(o.grid_status[0], "met");
+    EXPECT_EQ(o.stop_reason, "target met");
+    EXPECT_LE(o.reached_percent[0], PhotonPartTarget);
+    // The reported value is the final estimate's own.
+    EXPECT_DOUBLE_EQ(o.reached_percent[0], reached_from_coefficients(r.result.coefficients[0], office));
+    std::vector<double> df, var;
+    df_and_variance(r.result.coefficients[0], df, var);
+    double z2 = 0;
+    for (std::size_t i = 0; i < df.size(); ++i) z2 += (df[i] - df_ref[i]) * (df[i] - df_ref[i]) / (var[i] + var_ref[i]);
+    z2 /= double(df.size());
+    std::printf("seed %u: mean z^2 against the reference %.3g\n", unsigned(seed), z2);
+    EXPECT_LE(z2, 15.1);
+  }
+}
+
+// A photon budget below the pilot's photons: no photon round for the photon part, and the
+// grid's stop (and the case's) names the budget.
+TEST(GatherPhotonRounds, PhotonBudgetIsTheNamedStop) {
+  const PhotonPartRun pilot_only = run_photon_part(3, 1);
+  const AccuracyOutcome& o = pilot_only.result.outcome;
+  EXPECT_EQ(o.rounds, 1u);
+  EXPECT_EQ(o.final_attempts, o.pilot_attempts);
+  ASSERT_EQ(o.gather.size(), 1u);
+  EXPECT_TRUE(logged(pilot_only, "no round 2: the photon budget"));
+  EXPECT_EQ(o.gather[0].stop_reason, "photon budget");
+  EXPECT_EQ(o.grid_status[0], "above target");
+  EXPECT_EQ(o.stop_reason, "photon budget");
+  EXPECT_GT(o.reached_percent[0], PhotonPartTarget);
+  EXPECT_NE(accuracy_sentence(o, 0).find("photon budget"), std::string::npos);
+}
+
+TEST(GatherPhotonRounds, OneAndTwoThreadsAndOneToThreeRanksGiveTheSameBytes) {
+  const PhotonPartRun one = run_photon_part(5, 0, 1);
+  ASSERT_GE(one.result.outcome.rounds, 2u);
+  const std::string expected = encode_coefficients(one.result.coefficients.at(0));
+  EXPECT_TRUE(encode_coefficients(run_photon_part(5, 0, 2).result.coefficients.at(0)) == expected);
+  Office office(true, false);
+  office.photons_per_source = PhotonPartReference;
+  office.direct_samples = PhotonPartDirectSamples;
+  for (int ranks : {1, 2, 3}) {
+    SCOPED_TRACE(std::to_string(ranks) + " ranks");
+    std::vector<AccuracyResult> results(static_cast<std::size_t>(ranks));
+    const auto errors = dist::test::run_ranks(ranks, [&](dist::Communicator& comm) {
+      const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                        ("gather_photons_ranks_" + std::to_string(ranks) + "_" + std::to_string(comm.rank()));
+      std::filesystem::remove_all(dir);
+      const ArtifactStore store(dir.string());
+      const auto executor = make_distributed_executor(comm, store, false, 3);  // blocks of 3 of the 8 sensors
+      AccuracyGoal goal;
+      goal.target_percent = PhotonPartTarget;
+      results[static_cast<std::size_t>(comm.rank())] = run_accuracy_rounds(
+          office.accuracy_case(5, PhotonPartRays), goal, [](const std::string&) {}, executor->round_work());
+    });
+    for (const std::exception_ptr& e : errors)
+      if (e) {
+        try {
+          std::rethrow_exception(e);
+        } catch (const std::exception& x) {
+          ADD_FAILURE() << x.what();
+        }
+      }
+    for (const AccuracyResult& x : results) {
+      EXPECT_EQ(x.outcome.final_attempts, one.result.outcome.final_attempts);
+      EXPECT_EQ(x.outcome.gather.at(0).rays, one.result.outcome.gather.at(0).rays);
+      EXPECT_EQ(x.outcome.gather.at(0).rounds, one.result.outcome.gather.at(0).rounds);
+      EXPECT_EQ(x.outcome.reached_percent, one.result.outcome.reached_percent);
+      EXPECT_TRUE(encode_coefficients(x.coefficients.at(0)) == expected);
     }
   }
 }

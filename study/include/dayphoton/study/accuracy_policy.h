@@ -6,10 +6,12 @@
 // error is partly its rays' (final_gather.h), which photons do not reduce, and its kernel is not
 // rescaled. Measured on projects/wall_sensors with the standard preset (docs/photon-tracing.md
 // "Accuracy target"): the gathered wall grids were at 1.1-1.2 % after the pilot and stayed there
-// over the rounds while the work plane fell from 2.5 % to 1.5 %. So the rounds do not trace
-// photons for a gathered grid: its error is measured after every round, and after the photon
-// rounds the gather rounds raise its rays (gather_accuracy_rounds.h; its status is then "met" or
-// "above target"). The sun bins' rounds still report it as "not reachable by photons".
+// over the rounds while the work plane fell from 2.5 % to 1.5 %. So the rounds' measure does not
+// chase a gathered grid: its error is measured after every round, and after the photon rounds
+// the gather rounds raise its rays (gather_accuracy_rounds.h; its status is then "met" or "above
+// target"); only the part rays cannot lower, the photons the gather reads, asks for further
+// photon rounds (next_gather_photons). The sun bins' rounds still report it as "not reachable
+// by photons".
 #pragma once
 
 #include <cstddef>

@@ -27,9 +27,10 @@
 // work) when that is needed or costs fewer rays than the photons, up to
 // MaxDirectSamplesPerBin (plan_policy.h; the stop "direct rays limit").
 //
-// Grids estimated by final gather are measured but not chased with photons: their error is
+// Grids estimated by final gather are measured but not chased by this measure: their error is
 // mostly the gather rays' (accuracy_policy.h); after the photon rounds their rays are raised
-// in gather rounds (gather_accuracy_rounds.h).
+// in gather rounds (gather_accuracy_rounds.h), and the part of their error that rays do not
+// lower asks for further photon rounds (next_gather_photons there).
 //
 // The loop (pilot, allocation, stops, log lines) is the one the sun bins' rounds share
 // (study/src/accuracy_round_loop.h); this file holds the DF measure and the allocation.
@@ -108,6 +109,13 @@ struct RoundPlan {
   std::size_t sensors_constrained = 0;
   std::size_t sensors_direct_limited = 0;  ///< above their budget by the direct variance alone
 };
+
+/// One sensor's share of an allocation (header comment): with `variance[p]` its photon variance
+/// from source p at the current counts ((DF percent)^2, `cost.size()` of them) and `budget` what
+/// their sum may be, raises scale[p] to Neyman's factor sqrt(a_p / c_p) sum_q sqrt(a_q c_q) /
+/// budget for every source with variance and cost (never lowers it). `budget` > 0.
+void raise_to_neyman_scale(const double* variance, const std::vector<double>& cost, double budget,
+                           std::vector<double>& scale);
 
 /// The next round's photon count of each source as a factor of its current count, for every
 /// grid's sensors at or below the percentile whose relative standard error exceeds `aim_percent`

@@ -22,10 +22,25 @@
 //
 // Stops (GatherAccuracy::stop_reason): "target met"; "gather photon part" (every sensor
 // still above the aim is photon-limited: more photons, or a larger gather_bandwidth, would
-// lower it; the rounds do not trace more photons for it); "direct component" (only
-// direct-limited sensors remain: direct_samples_per_bin); "gather ray limit" (GatherMaxRays
-// reached); "round limit" (GatherMaxRounds); "time budget" (AccuracyGoal::max_seconds,
-// from the last estimate's time per ray; the first process's clock, round_work.h).
+// lower it); "direct component" (only direct-limited sensors remain: direct_samples_per_bin);
+// "gather ray limit" (GatherMaxRays reached); "round limit" (GatherMaxRounds gather rounds on
+// the same photons); "time budget" (AccuracyGoal::max_seconds, from the last estimate's time
+// per ray; the first process's clock, round_work.h).
+//
+// More photons for the photon part. A grid that stopped on "gather photon part" or "gather ray
+// limit" asks the photon rounds for more photons (next_gather_photons): the fixed part alpha is
+// the photons' variance read through a kernel of fixed size (the gather's bandwidth is not
+// rescaled), so source p's share alpha_p falls as 1/N_p like a receiver plane's (accuracy_rounds.h)
+// while the rays' part V_g - alpha stays. Of the budget B the photons get B_p = B - R, R the
+// rays' part left to the rays: what it is now at N rays, but at most B / 2 (more rays then
+// take the rest, at most 2 beta / B of them), and never less than it would be at the ray limit
+// (beta / GatherMaxRays); a sensor with alpha > B_p > 0 takes Neyman's allocation of B_p over
+// the sources (raise_to_neyman_scale), at most AccuracyMaxGrowth per round; the grid asks for
+// the largest factor of each source over its sensors at or below the percentile. The photon
+// rounds (accuracy_round_loop.h, RoundLoopFinish) trace that as a further round within their
+// budgets and round limit and call the gather rounds again, each grid starting from the rays
+// it reached. If they cannot, the grid's stop names why: "photon budget", "time budget" or
+// "photon round limit" (refuse_gather_photons).
 //
 // Determinism: the gather of a sensor is a pure function of (seed, sensor, rays), its
 // estimates go by sensor blocks through RoundWork, and every decision reads only the joined
@@ -65,18 +80,49 @@ GatherRayPlan next_gather_rays(const std::vector<double>& df_percent, const std:
                                const std::vector<double>& gather_variance, const std::vector<double>& fixed_variance,
                                int rays, double aim_percent, double percentile);
 
+/// The photons one gathered grid asks for (header comment), from its sensors' DF (percent),
+/// direct variance, gather variance and the gather's fixed part by source ([sensor x sources +
+/// source], (DF percent)^2) at `rays`; `cost`: each source's rays so far.
+struct GatherPhotonPlan {
+  std::vector<double> scale;  ///< per source: photons relative to now (>= 1, <= AccuracyMaxGrowth)
+  std::size_t sensors = 0;    ///< sensors whose photon part is above their share of the budget
+};
+GatherPhotonPlan next_gather_photons(const std::vector<double>& df_percent, const std::vector<double>& direct_variance,
+                                     const std::vector<double>& gather_variance,
+                                     const std::vector<double>& fixed_per_source, int rays,
+                                     const std::vector<double>& cost, double aim_percent, double percentile);
+
+/// What the gathered grids ask of the photon rounds after their gather rounds.
+struct GatherPhotonRequest {
+  std::vector<double> scale;       ///< per source, the largest factor any grid asks for (empty: none)
+  std::vector<std::size_t> grids;  ///< the grids that ask
+};
+
 /// The gather rounds of every gathered grid of `result` above the target (header comment):
-/// replaces those grids' coefficients, reached_percent and grid_status in result.outcome, and
-/// fills result.outcome.gather (every grid; gathered = false for the others). `records`: the
-/// photon rounds' final photons; `direct`, `direct_variance`: each grid's direct part (the
-/// whole grid's rows); `seconds_so_far`: the rounds' time before (for the time budget).
-/// Collective through `work` like the photon rounds.
-void run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
+/// replaces those grids' coefficients, reached_percent and grid_status in result.outcome, fills
+/// result.outcome.gather (every grid; gathered = false for the others; a second call after more
+/// photons starts each grid from the rays it reached and adds to its rounds), and settles the
+/// case's stop reason from result.outcome.stop_reason, the photon rounds' (settle_case_stop).
+/// `records`: the photon rounds' photons so far; `direct`, `direct_variance`: each grid's
+/// direct part (the whole grid's rows); `seconds_so_far`: the rounds' time before (for the time
+/// budget). Collective through `work` like the photon rounds. Returns the photons the grids ask for.
+GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
                                 const std::vector<engine::SourcePhotonRecord>& records,
                                 const std::vector<std::vector<Vec3>>& direct,
                                 const std::vector<std::vector<double>>& direct_variance, double seconds_so_far,
                                 RoundWork& work, const std::function<void(const std::string&)>& log,
                                 AccuracyResult& result);
+
+/// The photon rounds did not trace what `request` asked for, for `reason` ("photon budget",
+/// "time budget", "round limit"): the asking grids' stop becomes it ("photon round limit" for
+/// the photon rounds' limit), and the case's stop is settled again from `photon_stop`.
+void refuse_gather_photons(AccuracyOutcome& outcome, const GatherPhotonRequest& request, const std::string& reason,
+                           const std::string& photon_stop);
+
+/// The case's stop reason: `photon_stop` (the photon rounds'), unless that is "not reachable
+/// by photons" (only gathered grids were left above the target, met_stop_reason): then the
+/// first such grid's own gather stop, or "target met" if they all met it.
+void settle_case_stop(AccuracyOutcome& outcome, const std::string& photon_stop);
 
 /// The words the run log adds for a gathered grid (" (final gather, 4096 rays per sensor, 2
 /// gather round(s) from 1024: target met)"), empty for another grid.
