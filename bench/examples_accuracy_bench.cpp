@@ -14,8 +14,8 @@
 // understated standard error. (r is about target / sqrt(10) where the reference meets its
 // tighter target; a reference stopped early, e.g. a gathered grid on the gather ray limit,
 // states its larger error, which the bound then contains.) On a grid of few sensors the RMS
-// is itself noisy (3 sensors at the target exceed the bound with a probability of about 0.35,
-// chi-square with 3 degrees of freedom), so there the verdict is one draw. Also printed:
+// is itself noisy (3 sensors at the target exceed the bound with a probability of about 0.4,
+// P(chi-square(3) > 3) = 0.39), so there the verdict is one draw. Also printed:
 // the 95th percentile of |e|, and the share of sensors whose difference lies within 2 combined
 // standard errors (95 % if the reported errors are honest and the bias is small). A grid
 // estimated by final gather that ends above the target ("not reachable by photons": the
