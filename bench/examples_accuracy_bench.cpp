@@ -8,9 +8,14 @@
 // sensor the relative difference e = (DF - DF_ref) / DF_ref measures the run's whole error:
 // its noise, and the change of the density estimate's bias with the photon count, which the
 // reported standard error does not contain. The target is met if the RMS of e over the
-// sensors is at most target * sqrt(1 + 1/10): when every sensor's standard error is at most
-// the target, the noise alone gives an RMS of e at most that (the reference's tenth of the
-// variance included), so a larger RMS is bias or an understated standard error. Also printed:
+// sensors is at most sqrt(target^2 + r^2), r the RMS over the sensors of the reference's own
+// reported relative standard error: when every sensor's standard error is at most the target,
+// the noise of both runs gives an RMS of e at most that, so a larger RMS is bias or an
+// understated standard error. (r is about target / sqrt(10) where the reference meets its
+// tighter target; a reference stopped early, e.g. a gathered grid on the gather ray limit,
+// states its larger error, which the bound then contains.) On a grid of few sensors the RMS
+// is itself noisy (3 sensors at the target exceed the bound with a probability of about 0.4,
+// P(chi-square(3) > 3) = 0.39), so there the verdict is one draw. Also printed:
 // the 95th percentile of |e|, and the share of sensors whose difference lies within 2 combined
 // standard errors (95 % if the reported errors are honest and the bias is small). A grid
 // estimated by final gather that ends above the target ("not reachable by photons": the
@@ -155,12 +160,12 @@ int main(int argc, char** argv) {
       if (fs::exists(e.path() / "project.yaml")) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   std::printf("per grid of each project's base case: the run at the target (p95 sensor relative standard error of "
-              "DF) against a run at a target sqrt(%.0f) tighter; pass: RMS relative difference <= target x "
-              "sqrt(1 + 1/%.0f)\n",
-              ReferencePhotonFactor, ReferencePhotonFactor);
-  std::printf("%-16s %-12s %7s %7s %8s %8s %8s %8s %9s %9s %7s %8s %8s %7s %7s %s\n", "project", "grid", "sensors",
-              "target", "run s", "run cpu", "ref s", "ref cpu", "photons", "ref phot", "reached", "rms e %",
-              "p95 e %", "in 2se", "bound", "verdict (status; stop)");
+              "DF) against a run at a target sqrt(%.0f) tighter; pass: RMS relative difference <= sqrt(target^2 + "
+              "ref se^2), ref se the RMS of the reference's own relative standard error\n",
+              ReferencePhotonFactor);
+  std::printf("%-16s %-12s %7s %7s %8s %8s %8s %8s %9s %9s %7s %7s %8s %8s %7s %7s %s\n", "project", "grid",
+              "sensors", "target", "run s", "run cpu", "ref s", "ref cpu", "photons", "ref phot", "reached", "ref se",
+              "rms e %", "p95 e %", "in 2se", "bound", "verdict (status; stop)");
   int failed = 0, compared = 0;
   for (const std::string& name : names) {
     const fs::path out = fs::temp_directory_path() / ("dayphoton_accuracy_bench_" + name);
@@ -177,7 +182,6 @@ int main(int argc, char** argv) {
           own_target ? (proj.simulation.accuracy ? proj.simulation.accuracy->target_df_relative_stderr_percent
                                                  : project::Simulation::Accuracy{}.target_df_relative_stderr_percent)
                      : given_target;
-      const double bound = target_percent * std::sqrt(1.0 + 1.0 / ReferencePhotonFactor);
       const DfRun run = run_at(proj, target_percent, 1, out / "run", cache);
       if (run.grids.empty()) {
         std::printf("%-16s skipped: the base case has no sensor grid (a render-only project has no DF to compare)\n",
@@ -193,6 +197,7 @@ int main(int argc, char** argv) {
         const GridRun& b = ref.grids[g];
         std::vector<double> e_percent, abs_e;
         std::size_t within = 0;
+        double ref_relative_variance = 0;  // sum over the sensors of the reference's (se / DF)^2, %^2
         for (std::size_t s = 0; s < a.df_percent.size() && s < b.df_percent.size(); ++s) {
           if (!(b.df_percent[s] > 0)) continue;
           const double e = (a.df_percent[s] - b.df_percent[s]) / b.df_percent[s];
@@ -200,10 +205,15 @@ int main(int argc, char** argv) {
           abs_e.push_back(100.0 * std::abs(e));
           const double se = std::hypot(a.stderr_percent[s], b.stderr_percent[s]);
           if (std::abs(a.df_percent[s] - b.df_percent[s]) <= 2.0 * se) ++within;
+          const double ref_relative_percent = 100.0 * b.stderr_percent[s] / b.df_percent[s];
+          ref_relative_variance += ref_relative_percent * ref_relative_percent;
         }
         double sum2 = 0;
         for (double e : e_percent) sum2 += e * e;
         const double rms = e_percent.empty() ? 0 : std::sqrt(sum2 / double(e_percent.size()));
+        // The reference's own noise, as it reports it: the RMS of its relative standard error.
+        const double ref_se_percent = e_percent.empty() ? 0 : std::sqrt(ref_relative_variance / double(e_percent.size()));
+        const double bound = std::hypot(target_percent, ref_se_percent);
         // A gathered grid the rounds do not chase: its error is partly the gather rays' and
         // partly the photons' of the pilot, which the reference does not multiply (it traces no
         // more photons for such a grid); a grid above the target this way fails, whatever e.
@@ -213,7 +223,7 @@ int main(int argc, char** argv) {
         if (!pass) ++failed;
         // Beside the verdict: is the run within the accuracy it reports (its reached p95, when a
         // budget or a floor stopped it above the target)?
-        const double reported_bound = std::max(target_percent, a.reached_percent) * std::sqrt(1.0 + 1.0 / ReferencePhotonFactor);
+        const double reported_bound = std::hypot(std::max(target_percent, a.reached_percent), ref_se_percent);
         const std::string verdict = std::string(pass ? "within target" : "NOT within target") +
                                     (gathered_above ? ": gathered grid above the target" : "") +
                                     (pass || a.reached_percent <= target_percent ? ""
@@ -222,10 +232,12 @@ int main(int argc, char** argv) {
                                     " (" + a.status +
                                     "; " + run.stop_reason + " after " + std::to_string(run.rounds) +
                                     " rounds; ref " + ref.stop_reason + ")";
-        std::printf("%-16s %-12s %7zu %6.2f%% %8.1f %8.1f %8.1f %8.1f %9llu %9llu %6.2f%% %8.2f %8.2f %6.0f%% %6.2f%% %s\n",
+        std::printf("%-16s %-12s %7zu %6.2f%% %8.1f %8.1f %8.1f %8.1f %9llu %9llu %6.2f%% %6.2f%% %8.2f %8.2f %6.0f%% "
+                    "%6.2f%% %s\n",
                     name.c_str(), a.name.c_str(), a.df_percent.size(), target_percent, run.seconds, run.cpu_seconds,
                     ref.seconds, ref.cpu_seconds, static_cast<unsigned long long>(run.photons),
-                    static_cast<unsigned long long>(ref.photons), a.reached_percent, rms, percentile(abs_e, 0.95),
+                    static_cast<unsigned long long>(ref.photons), a.reached_percent, ref_se_percent, rms,
+                    percentile(abs_e, 0.95),
                     e_percent.empty() ? 0.0 : 100.0 * double(within) / double(e_percent.size()), bound,
                     verdict.c_str());
       }

@@ -223,7 +223,7 @@ DirectRoundPlan next_direct_round(const std::vector<GridVariance>& grids, const 
     std::vector<GridVariance> trial = predicted;
     for (double& d : trial[g].direct_variance) d *= shrink(next_k);
     const RoundPlan trial_photons = next_round_scale(trial, cost, aim_percent, percentile);
-    const double direct_rays = double(v.df_percent.size()) * direct_rays_per_sensor(next_k * next_k, sources, port_sampling);
+    const double direct_rays = double(g < sensors.size() ? sensors[g] : v.df_percent.size()) * direct_rays_per_sensor(next_k * next_k, sources, port_sampling);
     const double trial_rays = photon_plan_rays(trial_photons, cost) + direct_rays;
     if (limited == 0 && !(trial_rays < plan_rays)) continue;
     predicted = std::move(trial);
