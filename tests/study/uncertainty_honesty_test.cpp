@@ -17,7 +17,9 @@
 // with rho_st^2 estimated by the runs' own sample correlations (biased upward by about
 // 1 / (n - 1) for uncorrelated pairs, so the bound is conservative). The mean ratio must lie
 // within 4 of those standard deviations of 1 (two-sided p = 6e-5 per project), and within
-// the acceptance target 0.8 - 1.25.
+// the acceptance target 0.8 - 1.25. For the office the same holds for the sensors of the
+// grid's outer rows and columns alone, where the ground bin's estimates are local-quadratic
+// (its own correlations give that subset's tolerance).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,7 +46,7 @@ constexpr double TargetLow = 0.8, TargetHigh = 1.25;
 
 /// One run's DF and reported standard error, every sensor of every grid in order.
 struct SensorValues {
-  std::vector<double> df, stderr_percent;
+  std::vector<double> df, stderr_percent, x, y;
 };
 
 void read_daylight_factor(const fs::path& csv, SensorValues& into) {
@@ -59,6 +61,8 @@ void read_daylight_factor(const fs::path& csv, SensorValues& into) {
     std::string field;
     while (std::getline(fields, field, ',')) v.push_back(std::stod(field));
     ASSERT_EQ(v.size(), 6u) << line;
+    into.x.push_back(v[1]);
+    into.y.push_back(v[2]);
     into.df.push_back(v[4]);
     into.stderr_percent.push_back(v[5]);
   }
@@ -71,8 +75,8 @@ struct Honesty {
   std::size_t sensors = 0;
 };
 
-/// Run `project` Seeds times (grids' DF only) and compare the spread with the reported error.
-Honesty honesty(project::Project p, const std::string& name, const std::vector<std::string>& grids) {
+/// Run `project` Seeds times (grids' DF only): every run's sensors.
+std::vector<SensorValues> seed_runs(project::Project p, const std::string& name, const std::vector<std::string>& grids) {
   p.outputs.annual_illuminance = p.outputs.metrics = p.outputs.images = p.outputs.report = false;
   p.outputs.coefficients = false;
   p.outputs.daylight_factor = true;
@@ -84,6 +88,12 @@ Honesty honesty(project::Project p, const std::string& name, const std::vector<s
     for (const std::string& g : grids) read_daylight_factor(out / g / "daylight_factor.csv", runs[seed - 1]);
     fs::remove_all(out);
   }
+  return runs;
+}
+
+/// Compare the runs' spread with the reported error over the sensors `select` keeps.
+template <class Select>
+Honesty honesty(const std::vector<SensorValues>& runs, const std::string& name, Select select) {
   const std::size_t m_all = runs[0].df.size();
   // Sensors with light and a reported error (a sensor in the dark has neither spread nor error).
   std::vector<std::size_t> used;
@@ -95,7 +105,7 @@ Honesty honesty(project::Project p, const std::string& name, const std::vector<s
     }
     for (const SensorValues& r : runs) sd[s] += (r.df[s] - mean[s]) * (r.df[s] - mean[s]);
     sd[s] = std::sqrt(sd[s] / (Seeds - 1));
-    if (mean[s] > 0 && sigma[s] > 0 && sd[s] > 0) used.push_back(s);
+    if (mean[s] > 0 && sigma[s] > 0 && sd[s] > 0 && select(runs[0].x[s], runs[0].y[s])) used.push_back(s);
   }
   Honesty h;
   h.sensors = used.size();
@@ -134,7 +144,14 @@ TEST(UncertaintyHonesty, OfficeSpreadOverSeedsMatchesTheReportedStandardError) {
   project::Project p = project::load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/project.yaml");
   p.simulation.photons_per_bin = 2000;  // the project's 40 000 / 20
   p.simulation.direct_samples_per_bin = 16;
-  expect_honest(honesty(p, "office", {"workplane"}));
+  const std::vector<SensorValues> runs = seed_runs(p, "office", {"workplane"});
+  expect_honest(honesty(runs, "office", [](double, double) { return true; }));
+  // The grid's outer rows and columns (0.5 m from the walls), where the ground bin's discs are
+  // cut and get the local-quadratic fit, whose variance is larger (docs/photon-map.md).
+  auto edge = [](double x, double y) {
+    return std::fabs(x - 0.5) < 1e-6 || std::fabs(x - 5.5) < 1e-6 || std::fabs(y - 0.5) < 1e-6 || std::fabs(y - 7.5) < 1e-6;
+  };
+  expect_honest(honesty(runs, "office, the grid's edge", edge));
 }
 
 TEST(UncertaintyHonesty, LightShelfSpreadOverSeedsMatchesTheReportedStandardError) {
@@ -144,7 +161,8 @@ TEST(UncertaintyHonesty, LightShelfSpreadOverSeedsMatchesTheReportedStandardErro
   p.simulation.photons_per_bin = 250;  // the project's 2000 / 8
   p.simulation.direct_samples_per_bin = 9;
   p.simulation.gather_rays = 256;
-  expect_honest(honesty(p, "light_shelf", {"workplane", "ceiling_probes"}));
+  expect_honest(honesty(seed_runs(p, "light_shelf", {"workplane", "ceiling_probes"}), "light_shelf",
+                       [](double, double) { return true; }));
 }
 
 TEST(UncertaintyHonesty, GatheredWallGridsAreNotOptimisticAndWithinTheTarget) {
@@ -163,7 +181,8 @@ TEST(UncertaintyHonesty, GatheredWallGridsAreNotOptimisticAndWithinTheTarget) {
   p.simulation.photons_per_bin = 1000;  // the project's 20 000 / 20
   p.simulation.direct_samples_per_bin = 9;
   p.simulation.gather_rays = 256;
-  const Honesty h = honesty(p, "wall_sensors", {"back_wall", "west_wall"});
+  const Honesty h = honesty(seed_runs(p, "wall_sensors", {"back_wall", "west_wall"}), "wall_sensors",
+                            [](double, double) { return true; });
   ASSERT_GT(h.sensors, 0u);
   EXPECT_LE(h.mean_ratio, 1.0 + Sigmas * h.sd_of_mean);
   EXPECT_GE(h.mean_ratio, TargetLow);
