@@ -34,14 +34,13 @@
 // Local-quadratic estimate at walls (quadratic_fit_sources): the light on a work plane
 // bends down towards the walls within about a metre of them (a wall hides part of the
 // ceiling), and a plane fitted over a disc the wall cuts reads that concave field low, by an
-// amount that grows with the disc's area. The ground bin's discs (its bandwidth grows with its
-// photons, 16 times a sky bin's, and its light reaches the work plane only after a diffuse
-// bounce, so its photons spread over the whole plane) were 7 % low at the back corners of the
-// office. For the sources listed, the fit E(y) = a + b . (y - x) + (y - x)^T C (y - x) by
+// amount that grows with the disc's area. The ground bin's light enters upwards, so all of it
+// reaches a work plane as photons (none is direct there), and its estimates were 7 % low at
+// the back corners of the office. For the sources listed, the fit E(y) = a + b . (y - x) + (y - x)^T C (y - x) by
 // moments over the same clipped disc is used where the outline cuts the disc: exact for such
 // curvature. It costs 1.5-4 times the variance (its equivalent kernel has negative lobes) and
-// is used for no other source and nowhere else: a sky bin's disc is narrow and its light at
-// the walls mostly direct (computed without a disc). Where the fitted total (caustic +
+// is used for no other source and nowhere else: a sky bin's light at the walls is mostly
+// direct (computed without a disc), so its photon part's curvature bias is a small share. Where the fitted total (caustic +
 // global) is negative it is set to 0; each class alone is not clamped (a class with few
 // photons in the disc would otherwise be biased upwards by its clamp).
 // Sparse sources: a source with fewer photons than the median source (a low-yield source cut

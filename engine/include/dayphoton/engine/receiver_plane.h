@@ -26,7 +26,7 @@ struct AreaMoments {
 /// Moments up to order 4 of a disc of radius r about its centre p, clipped to an outline, in
 /// the disc's scaled coordinates (u, v) = (q - p) / r: at(a, b) = int u^a v^b dA / r^2
 /// (a + b <= 4). The unclipped disc: at(0, 0) = pi, at(2, 0) = pi / 4, at(4, 0) = pi / 8,
-/// at(2, 2) = pi / 24. What a local fit of degree 2 needs (local_polynomial_fit.h).
+/// at(2, 2) = pi / 24. What a local fit of degree 2 needs (local_quadratic_fit.h).
 struct ScaledMoments4 {
   double value[15] = {};
   /// The index of u^a v^b in `value`: order by order (1; u, v; u^2, uv, v^2; ...).
