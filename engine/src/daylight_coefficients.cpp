@@ -12,6 +12,7 @@
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/estimate_variance.h"
+#include "dayphoton/engine/local_quadratic_fit.h"
 
 namespace dayphoton::engine {
 namespace {
@@ -235,6 +236,39 @@ double local_linear_variance(const AreaMoments& m, const double q[6]) {
          c3 * c3 * q[5];
 }
 
+/// The local-quadratic estimate over the disc's photons (local_quadratic_fit.h): per class
+/// sum_j w_j Phi_j with w_j = kernel.weight((x_j - at) / r) / r^2, and its variance
+/// sum_j w_j^2 y_j^2. A channel whose total (caustic + global) is negative (a quadratic
+/// extrapolated to the centre where the light is small against its noise) is set to 0 in both
+/// classes; a class alone is not clamped: its equivalent kernel's negative lobes make a class
+/// with few photons in the disc (caustic photons among the ground's) negative about as often
+/// as not, and clamping it would bias it upwards. Every consumer reads the total
+/// (DaylightCoefficients::total). The variance leaves the clamp out (it only removes variance).
+ClassEstimates local_quadratic_estimate(const PhotonMap& map, const Vec3& at, const std::vector<NeighbourPhoton>& found,
+                                        const KernelDisc& disc, const LocalQuadraticKernel& kernel) {
+  const double inv_r = 1.0 / disc.radius_m, inv_r2 = inv_r * inv_r;
+  Vec3 sum[2] = {Vec3{0, 0, 0}, Vec3{0, 0, 0}};
+  double variance = 0;
+  for (std::size_t j = 0; j < disc.photon_count; ++j) {
+    const Photon& ph = map.photons()[found[j].index];
+    const Vec3 flux = ph.flux_rgb();
+    const double w = kernel.weight((double(ph.position[0]) - at.x) * inv_r, (double(ph.position[1]) - at.y) * inv_r);
+    sum[ph.path_class == PathClass::Caustic ? 0 : 1] += flux * w;
+    const double wy = w * luminance_of(flux);
+    variance += wy * wy;
+  }
+  ClassEstimates out;
+  out.caustic = sum[0] * inv_r2;
+  out.global = sum[1] * inv_r2;
+  for (int k = 0; k < 3; ++k)
+    if (out.caustic[k] + out.global[k] < 0) {
+      out.caustic[k] = 0;
+      out.global[k] = 0;
+    }
+  out.variance = variance * inv_r2 * inv_r2;
+  return out;
+}
+
 /// The search hint of one source's lookups over consecutive sensors: the k-th distance
 /// found at the previous sensor. By the triangle inequality that distance plus the step
 /// between the two sensors holds the k photons found there, so it is a radius holding k
@@ -259,11 +293,12 @@ class LookupHint {
 
 /// Caustic and global estimates from the photons of `map` passing `filter`, within the disc
 /// of density.bandwidth of them (density_estimate.h): local-linear on a receiver plane with
-/// the uniform kernel, otherwise the kernel estimate times the boundary factor. `rng_index`
-/// seeds the bias-compensating operator.
+/// the uniform kernel (local-quadratic where the outline cuts the disc, for
+/// `quadratic_at_walls`), otherwise the kernel estimate times the boundary factor.
+/// `rng_index` seeds the bias-compensating operator.
 ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane, const Vec3& at,
                                 const PhotonFilter& filter, const DensityEstimateOptions& density,
-                                const CoefficientOptions& options, std::size_t rng_index,
+                                const CoefficientOptions& options, bool quadratic_at_walls, std::size_t rng_index,
                                 LookupHint& hint, std::vector<NeighbourPhoton>& found) {
   ClassEstimates out;
   if (plane && options.local_linear && !options.bias_compensation && density.kernel == KernelType::Uniform) {
@@ -272,6 +307,11 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     hint.record(at, found, k);
     const KernelDisc disc = kernel_disc(found, density.bandwidth, density.radius, density.max_radius_m);
     if (disc.photon_count == 0) return out;
+    if (quadratic_at_walls && disc.radius_m > 0 &&
+        plane->disc_area_inside_m2(at.x, at.y, disc.radius_m) < Pi * disc.radius_m * disc.radius_m * (1 - 1e-9)) {
+      const LocalQuadraticKernel kernel = local_quadratic_kernel(plane->clipped_disc_moments4(at.x, at.y, disc.radius_m));
+      if (kernel.valid) return local_quadratic_estimate(map, at, found, disc, kernel);
+    }
     Vec3 s0[2], s1x[2], s1y[2];
     for (int c = 0; c < 2; ++c) s0[c] = s1x[c] = s1y[c] = Vec3{0, 0, 0};
     double q[6] = {0, 0, 0, 0, 0, 0};
@@ -381,6 +421,11 @@ void estimate_photon_coefficients(const GridPhotons& photons,
           global_scaled.bandwidth = photons.bandwidth_of(p, options.density.bandwidth, PathClass::Global);
           caustic_scaled.bandwidth = photons.bandwidth_of(p, options.caustic_bandwidth, PathClass::Caustic);
         }
+        // The local-quadratic fit at walls for the listed sources (header comment), on the
+        // lookup of both classes or of the global photons; a caustic map's own discs are sized
+        // by the caustic photons' spacing and keep the local-linear fit.
+        const bool quadratic = std::find(options.quadratic_fit_sources.begin(), options.quadratic_fit_sources.end(),
+                                         p) != options.quadratic_fit_sources.end();
         LookupHint global_hint, caustic_hint;
         for (std::size_t s = range.begin(); s != range.end(); ++s) {
           const SensorPoint& sensor = sensors[s];
@@ -391,16 +436,17 @@ void estimate_photon_coefficients(const GridPhotons& photons,
             PhotonFilter both = filter_for(sensor, PathClass::Global);
             both.path_classes = IndirectPathClasses;
             const ClassEstimates e =
-                estimate_classes(map, plane, at, both, scaled, options, stream, global_hint, found);
+                estimate_classes(map, plane, at, both, scaled, options, quadratic, stream, global_hint, found);
             out.caustic[i] = e.caustic;
             out.global[i] = e.global;
             out.photon_variance[i] = e.variance;
             continue;
           }
           const ClassEstimates g = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global),
-                                                    global_scaled, options, stream, global_hint, found);
+                                                    global_scaled, options, quadratic, stream, global_hint, found);
           const ClassEstimates c = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic),
-                                                    caustic_scaled, options, stream + grid_pairs, caustic_hint, found);
+                                                    caustic_scaled, options, false, stream + grid_pairs, caustic_hint,
+                                                    found);
           out.global[i] = g.global;
           out.caustic[i] = c.caustic;
           // Each lookup's photons are of its own class (the filter), so the two are independent.

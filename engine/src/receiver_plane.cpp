@@ -90,22 +90,19 @@ void add_arc(AreaMoments& m, double r, double t0, double t1, const ArcTrig& d) {
 
 }  // namespace
 
-AreaMoments ReceiverPlane::clipped_disc_moments(double x, double y, double r_m) const {
-  AreaMoments m;
-  if (!(r_m > 0)) return m;
-  // The outline relative to the centre, counter-clockwise. The working lists are reused per
-  // thread: this runs once per k-nearest lookup, so allocations would cost as much as the
-  // arithmetic.
-  thread_local std::vector<PlanePoint> poly;
-  thread_local std::vector<double> crossings;  // angles where the circle meets the outline
-  poly.clear();
+namespace {
+
+/// Walks the boundary of the disc of radius r about the origin clipped to `poly` (the outline
+/// relative to the disc's centre, counter-clockwise): `segment(p, q)` for every outline piece
+/// inside the disc, `arc(t0, t1)` for every circle arc inside the outline (`inside(angle)`
+/// says whether the arc's midpoint lies inside). Returns false when the circle crosses no
+/// edge (the disc wholly inside or outside the outline, or the outline inside the disc,
+/// whose edges were passed to `segment`). `crossings` is working storage.
+template <class Segment, class Arc, class Inside>
+bool walk_clipped_disc(const std::vector<PlanePoint>& poly, double r, std::vector<double>& crossings,
+                       Segment segment, Arc arc, Inside inside) {
   crossings.clear();
-  for (const PlanePoint& p : m_outline) poly.push_back({p.x - x, p.y - y});
-  double signed_area = 0;
-  for (std::size_t i = 0; i < poly.size(); ++i)
-    signed_area += cross2(poly[i], poly[(i + 1) % poly.size()]);
-  if (signed_area < 0) std::reverse(poly.begin(), poly.end());
-  const double r2 = r_m * r_m;
+  const double r2 = r * r;
   for (std::size_t i = 0; i < poly.size(); ++i) {
     const PlanePoint a = poly[i], b = poly[(i + 1) % poly.size()];
     const double dx = b.x - a.x, dy = b.y - a.y;
@@ -128,26 +125,98 @@ AreaMoments ReceiverPlane::clipped_disc_moments(double x, double y, double r_m) 
       const double tm = 0.5 * (cuts[k] + cuts[k + 1]);
       const double mx = a.x + tm * dx, my = a.y + tm * dy;
       if (mx * mx + my * my < r2)
-        add_segment(m, {a.x + cuts[k] * dx, a.y + cuts[k] * dy},
-                    {a.x + cuts[k + 1] * dx, a.y + cuts[k + 1] * dy});
+        segment(PlanePoint{a.x + cuts[k] * dx, a.y + cuts[k] * dy},
+                PlanePoint{a.x + cuts[k + 1] * dx, a.y + cuts[k + 1] * dy});
     }
   }
-  if (crossings.empty()) {
+  if (crossings.empty()) return false;
+  std::sort(crossings.begin(), crossings.end());
+  for (std::size_t k = 0; k < crossings.size(); ++k) {
+    const double t0 = crossings[k];
+    const double t1 = k + 1 < crossings.size() ? crossings[k + 1] : crossings[0] + 2 * Pi;
+    if (t1 > t0 && inside(0.5 * (t0 + t1))) arc(t0, t1);
+  }
+  return true;
+}
+
+/// The outline relative to (x, y), scaled by 1 / scale, counter-clockwise, into `poly`.
+void centred_outline(const std::vector<PlanePoint>& outline, double x, double y, double scale,
+                     std::vector<PlanePoint>& poly) {
+  poly.clear();
+  for (const PlanePoint& p : outline) poly.push_back({(p.x - x) / scale, (p.y - y) / scale});
+  double signed_area = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) signed_area += cross2(poly[i], poly[(i + 1) % poly.size()]);
+  if (signed_area < 0) std::reverse(poly.begin(), poly.end());
+}
+
+/// int_{t0}^{t1} cos^m t sin^n t dt by the reduction formulas (Gradshteyn and Ryzhik 2.510,
+/// 2.513): for n >= 2, (m + n) J(m, n) = -[cos^(m+1) sin^(n-1)] + (n - 1) J(m, n - 2);
+/// J(m, 1) = -[cos^(m+1)] / (m + 1); for m >= 2, m J(m, 0) = [cos^(m-1) sin] + (m - 1) J(m - 2, 0).
+double cos_sin_integral(int m, int n, double t0, double t1) {
+  const double c0 = std::cos(t0), s0 = std::sin(t0), c1 = std::cos(t1), s1 = std::sin(t1);
+  auto bracket = [&](int pc, int ps) { return std::pow(c1, pc) * std::pow(s1, ps) - std::pow(c0, pc) * std::pow(s0, ps); };
+  if (n >= 2) return (-bracket(m + 1, n - 1) + (n - 1) * cos_sin_integral(m, n - 2, t0, t1)) / (m + n);
+  if (n == 1) return -bracket(m + 1, 0) / (m + 1);
+  if (m >= 2) return (bracket(m - 1, 1) + (m - 1) * cos_sin_integral(m - 2, 0, t0, t1)) / m;
+  if (m == 1) return s1 - s0;
+  return t1 - t0;
+}
+
+}  // namespace
+
+AreaMoments ReceiverPlane::clipped_disc_moments(double x, double y, double r_m) const {
+  AreaMoments m;
+  if (!(r_m > 0)) return m;
+  // The outline relative to the centre, counter-clockwise. The working lists are reused per
+  // thread: this runs once per k-nearest lookup, so allocations would cost as much as the
+  // arithmetic.
+  thread_local std::vector<PlanePoint> poly;
+  thread_local std::vector<double> crossings;  // angles where the circle meets the outline
+  centred_outline(m_outline, x, y, 1.0, poly);
+  const bool crossed = walk_clipped_disc(
+      poly, r_m, crossings, [&m](const PlanePoint& p, const PlanePoint& q) { add_segment(m, p, q); },
+      [&m, r_m](double t0, double t1) { add_arc(m, r_m, t0, t1, arc_trig(t0, t1)); },
+      [&](double tm) { return contains(x + r_m * std::cos(tm), y + r_m * std::sin(tm)); });
+  if (!crossed) {
     // Whole disc inside the outline, or disjoint (or the outline inside the disc, whose
     // edges were added above).
     // The whole circle's trigonometric terms do not depend on the radius: computed once
     // (the disc lies wholly inside the outline at most sensors).
     static const ArcTrig whole = arc_trig(0.0, 2 * Pi);
     if (contains(x, y) && m.area == 0) add_arc(m, r_m, 0.0, 2 * Pi, whole);
-    return m;
   }
-  std::sort(crossings.begin(), crossings.end());
-  for (std::size_t k = 0; k < crossings.size(); ++k) {
-    const double t0 = crossings[k];
-    const double t1 = k + 1 < crossings.size() ? crossings[k + 1] : crossings[0] + 2 * Pi;
-    const double tm = 0.5 * (t0 + t1);
-    if (t1 > t0 && contains(x + r_m * std::cos(tm), y + r_m * std::sin(tm))) add_arc(m, r_m, t0, t1, arc_trig(t0, t1));
-  }
+  return m;
+}
+
+ScaledMoments4 ReceiverPlane::clipped_disc_moments4(double x, double y, double r_m) const {
+  // Green's theorem on the clipped unit disc (coordinates (q - p) / r): int int u^a v^b dA =
+  // closed integral of u^(a+1) v^b / (a + 1) dv. On straight pieces the integrand is a
+  // polynomial of degree a + b + 1 <= 5 in the parameter (3-point Gauss-Legendre is exact);
+  // on the unit circle it is cos^(a+2) t sin^b t / (a + 1) dt.
+  ScaledMoments4 m;
+  if (!(r_m > 0)) return m;
+  thread_local std::vector<PlanePoint> poly;
+  thread_local std::vector<double> crossings;
+  centred_outline(m_outline, x, y, r_m, poly);
+  auto add_piece = [&m](const PlanePoint& p, const PlanePoint& q) {
+    static const double node[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)};
+    static const double weight[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+    const double dx = q.x - p.x, dy = q.y - p.y;
+    for (int k = 0; k < 3; ++k) {
+      const double u = p.x + node[k] * dx, v = p.y + node[k] * dy;
+      for (int a = 0; a <= 4; ++a)
+        for (int b = 0; a + b <= 4; ++b)
+          m.at(a, b) += weight[k] * std::pow(u, a + 1) * std::pow(v, b) / (a + 1) * dy;
+    }
+  };
+  auto add_circle_arc = [&m](double t0, double t1) {
+    for (int a = 0; a <= 4; ++a)
+      for (int b = 0; a + b <= 4; ++b) m.at(a, b) += cos_sin_integral(a + 2, b, t0, t1) / (a + 1);
+  };
+  const bool crossed = walk_clipped_disc(
+      poly, 1.0, crossings, add_piece, add_circle_arc,
+      [&](double tm) { return contains(x + r_m * std::cos(tm), y + r_m * std::sin(tm)); });
+  if (!crossed && contains(x, y) && m.at(0, 0) == 0) add_circle_arc(0.0, 2 * Pi);
   return m;
 }
 

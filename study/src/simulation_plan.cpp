@@ -99,10 +99,16 @@ SimulationPlan SimulationPlan::of(const project::Project& project) {
   p.sky_tracing.photons_per_source = static_cast<std::size_t>(sim.photons_per_bin);
   p.sky_tracing.source_photon_factor = sky_photon_factors(p.basis.bin_count());
   p.sky_estimating = coefficient_options(sim);
+  // The ground bin 0 (the sky's sources are the basis's bins, engine::SourceSet::sky_bins)
+  // and no other source: its discs get the local-quadratic fit where a wall cuts them
+  // (engine::CoefficientOptions::quadratic_fit_sources; why only the ground: docs/photon-map.md,
+  // "Curvature at the walls").
+  p.sky_estimating.quadratic_fit_sources = {0};
   p.sun_tracing = shared_tracing_options(project);
   p.sun_tracing.photons_per_source = static_cast<std::size_t>(
       std::max(1LL, std::llround(double(sim.photons_per_bin) * SunBinPhotonFraction)));
   p.sun_estimating = p.sky_estimating;
+  p.sun_estimating.quadratic_fit_sources.clear();  // the sun bins have no ground bin
   p.sun_estimating.density.bandwidth = sun_bin_bandwidth(p.sky_estimating.density.bandwidth);
   p.ground_reflectance = sim.ground_reflectance;
   // The sky gather's rays' variance is taken on the daylight factor's sky (final_gather.h,

@@ -2,8 +2,10 @@
 // of a kernel disc clipped by the outline, against closed forms.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "dayphoton/core/units.h"
@@ -70,6 +72,91 @@ TEST(ReceiverPlane, OutlineInsideTheDiscAndAChordCut) {
   // First moment of the segment about the centre: -(2/3) (r^2 - d^2)^(3/2) on the x axis,
   // so the clipped disc's is its negative.
   EXPECT_NEAR(cut.mx, 2.0 / 3.0 * std::pow(r * r - d * d, 1.5), 1e-12);
+}
+
+TEST(ReceiverPlane, FourthOrderMomentsOfWholeHalfAndQuarterDiscs) {
+  // Closed forms in the disc's scaled coordinates (u, v) = (q - p) / r, unit disc: whole
+  // int u^2 = pi / 4, int u^4 = pi / 8, int u^2 v^2 = pi / 24, odd orders 0; the half disc
+  // u > 0: int u = 2 / 3, int u^3 = 4 / 15 (int r^4 dr x int cos^3), int u v^2 = 2 / 15;
+  // the quarter u, v < 0: int u v = 1 / 8, int u^3 v = int u v^3 = 1 / 24, int u^2 v^2 = pi / 96.
+  const double r = 0.5;
+  const ScaledMoments4 whole = room.clipped_disc_moments4(2, 1.5, r);
+  EXPECT_NEAR(whole.at(0, 0), Pi, 1e-12);
+  EXPECT_NEAR(whole.at(2, 0), Pi / 4, 1e-12);
+  EXPECT_NEAR(whole.at(0, 2), Pi / 4, 1e-12);
+  EXPECT_NEAR(whole.at(4, 0), Pi / 8, 1e-12);
+  EXPECT_NEAR(whole.at(0, 4), Pi / 8, 1e-12);
+  EXPECT_NEAR(whole.at(2, 2), Pi / 24, 1e-12);
+  for (const auto& [a, b] : {std::pair{1, 0}, {0, 1}, {1, 1}, {3, 0}, {2, 1}, {1, 2}, {0, 3}, {3, 1}, {1, 3}})
+    EXPECT_NEAR(whole.at(a, b), 0, 1e-12) << a << " " << b;
+  const ScaledMoments4 half = room.clipped_disc_moments4(0, 1.5, r);
+  EXPECT_NEAR(half.at(0, 0), Pi / 2, 1e-12);
+  EXPECT_NEAR(half.at(1, 0), 2.0 / 3, 1e-12);
+  EXPECT_NEAR(half.at(3, 0), 4.0 / 15, 1e-12);
+  EXPECT_NEAR(half.at(1, 2), 2.0 / 15, 1e-12);
+  EXPECT_NEAR(half.at(4, 0), Pi / 16, 1e-12);
+  EXPECT_NEAR(half.at(0, 1), 0, 1e-12);
+  const ScaledMoments4 quarter = room.clipped_disc_moments4(4, 3, r);
+  EXPECT_NEAR(quarter.at(0, 0), Pi / 4, 1e-12);
+  EXPECT_NEAR(quarter.at(1, 1), 1.0 / 8, 1e-12);
+  EXPECT_NEAR(quarter.at(3, 1), 1.0 / 24, 1e-12);
+  EXPECT_NEAR(quarter.at(1, 3), 1.0 / 24, 1e-12);
+  EXPECT_NEAR(quarter.at(2, 2), Pi / 96, 1e-12);
+  EXPECT_NEAR(quarter.at(1, 0), -2.0 / 3 / 2, 1e-12);  // -int_0^1 r^2 dr x int_0^{pi/2} cos
+}
+
+TEST(ReceiverPlane, FourthOrderMomentsAgreeWithTheSecondOrderOnesAndAQuadrature) {
+  // An L-shaped outline and a disc cut by three of its edges and around its re-entrant corner
+  // (1, 1), the centre 0.3 m from two walls: the orders up to 2 equal clipped_disc_moments
+  // scaled by r^(2 + a + b), and every order up to 4 equals a polar quadrature: along each of
+  // 2 x 10^5 directions (midpoint rule; the integrand is piecewise smooth, error O(h^2) ~ 1e-9)
+  // the parts of the ray inside the outline, integrated in closed form in the radius.
+  const std::vector<PlanePoint> outline = {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+  const ReceiverPlane ell(0, true, outline);
+  const double x = 0.7, y = 1.2, r = 0.9;
+  const ScaledMoments4 m = ell.clipped_disc_moments4(x, y, r);
+  const AreaMoments m2 = ell.clipped_disc_moments(x, y, r);
+  EXPECT_NEAR(m.at(0, 0) * r * r, m2.area, 1e-12);
+  EXPECT_NEAR(m.at(1, 0) * std::pow(r, 3), m2.mx, 1e-12);
+  EXPECT_NEAR(m.at(0, 1) * std::pow(r, 3), m2.my, 1e-12);
+  EXPECT_NEAR(m.at(2, 0) * std::pow(r, 4), m2.mxx, 1e-12);
+  EXPECT_NEAR(m.at(1, 1) * std::pow(r, 4), m2.mxy, 1e-12);
+  EXPECT_NEAR(m.at(0, 2) * std::pow(r, 4), m2.myy, 1e-12);
+  const int n = 200000;
+  double q[15] = {};
+  for (int k = 0; k < n; ++k) {
+    const double t = (k + 0.5) * 2 * Pi / n, c = std::cos(t), s = std::sin(t);
+    std::vector<double> cuts;  // radii (scaled) where the ray crosses an edge
+    for (std::size_t i = 0; i < outline.size(); ++i) {
+      const PlanePoint a = outline[i], b = outline[(i + 1) % outline.size()];
+      const double ax = (a.x - x) / r, ay = (a.y - y) / r, ex = (b.x - a.x) / r, ey = (b.y - a.y) / r;
+      const double det = ex * s - ey * c;  // solve rho (c, s) = a + tau e
+      if (std::fabs(det) < 1e-15) continue;
+      const double rho = (ex * ay - ey * ax) / det, tau = (c * ay - s * ax) / det;
+      if (rho > 0 && tau >= 0 && tau < 1) cuts.push_back(rho);
+    }
+    std::sort(cuts.begin(), cuts.end());
+    bool inside = ell.contains(x, y);
+    double from = 0;
+    cuts.push_back(1e300);
+    for (double cut : cuts) {
+      const double to = std::min(cut, 1.0);
+      if (inside && to > from)
+        for (int a = 0; a <= 4; ++a)
+          for (int b = 0; a + b <= 4; ++b) {
+            const int p = a + b + 2;
+            q[ScaledMoments4::index(a, b)] +=
+                std::pow(c, a) * std::pow(s, b) * (std::pow(to, p) - std::pow(from, p)) / p * 2 * Pi / n;
+          }
+      if (cut >= 1.0) break;
+      inside = !inside;
+      from = cut;
+    }
+  }
+  for (int a = 0; a <= 4; ++a)
+    for (int b = 0; a + b <= 4; ++b) EXPECT_NEAR(m.at(a, b), q[ScaledMoments4::index(a, b)], 1e-7) << a << " " << b;
+  EXPECT_GT(m.at(0, 0), 0.5 * Pi);   // the disc is cut, not whole...
+  EXPECT_LT(m.at(0, 0), 0.95 * Pi);  // ...and not mostly gone
 }
 
 TEST(ReceiverPlane, MomentsDoNotDependOnTheCallsBefore) {

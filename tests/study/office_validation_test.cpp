@@ -18,7 +18,7 @@
 // the office's light by about a percent (ground reflectance, bandwidth wiring, density
 // estimate, photon flux) leaves the grid or sky-bin intervals (+-0.4 %). The issue-5 goals
 // (every sensor within 5 %, every bin within 3 %) are not asserted: the measured seeds break
-// them by noise alone (largest sensor 5.2 %, ground bin -3.55 %).
+// them by noise alone (largest sensor 5.7 %, ground bin -3.26 %).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -57,11 +57,11 @@ struct MeasuredAggregate {
 constexpr int MeasuredRuns = 10;
 /// Student t quantile, 9 degrees of freedom, two-sided 1 - (1 - 1e-3)^(1/7) = 1.43e-4.
 constexpr double StudentT = 6.29;
-constexpr MeasuredAggregate SensorRms{"RMS of sensor DF / rtrace - 1", 0.01337, 0.00077};
-constexpr MeasuredAggregate SensorMax{"largest |sensor DF / rtrace - 1|", 0.04079, 0.00467};
-constexpr MeasuredAggregate GridRatio{"grid DF / rtrace - 1", -0.00430, 0.00034};
-constexpr MeasuredAggregate BackRatio{"back half DF / rtrace - 1", -0.00989, 0.00128};
-constexpr MeasuredAggregate GroundBin{"ground bin / rfluxmtx - 1", -0.03069, 0.00191};
+constexpr MeasuredAggregate SensorRms{"RMS of sensor DF / rtrace - 1", 0.01339, 0.00076};
+constexpr MeasuredAggregate SensorMax{"largest |sensor DF / rtrace - 1|", 0.04422, 0.00608};
+constexpr MeasuredAggregate GridRatio{"grid DF / rtrace - 1", -0.00412, 0.00035};
+constexpr MeasuredAggregate BackRatio{"back half DF / rtrace - 1", -0.00844, 0.00144};
+constexpr MeasuredAggregate GroundBin{"ground bin / rfluxmtx - 1", -0.02911, 0.00191};
 constexpr MeasuredAggregate SkyBins{"other bins' sum / rfluxmtx - 1", 0.00314, 0.00036};
 constexpr MeasuredAggregate SkyBinMax{"largest |other bin / rfluxmtx - 1|", 0.02610, 0.00302};
 

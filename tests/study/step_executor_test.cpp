@@ -238,6 +238,10 @@ TEST(SimulationPlan, AppliesThePolicyOnce) {
   EXPECT_EQ(plan.sun_estimating.density.bandwidth, sun_bin_bandwidth(plan.sky_estimating.density.bandwidth));
   EXPECT_EQ(plan.sun_direct_samples, SunDirectSamples);
   EXPECT_EQ(sky_photon_factors(3), (std::vector<double>{GroundPhotonFactor, 1.0, 1.0}));
+  // The local-quadratic fit at walls: the ground bin 0 of the sky's sources and nothing else,
+  // whatever photons the accuracy rounds give a sky bin; no sun bin.
+  EXPECT_EQ(plan.sky_estimating.quadratic_fit_sources, (std::vector<std::size_t>{0}));
+  EXPECT_TRUE(plan.sun_estimating.quadratic_fit_sources.empty());
 }
 
 }  // namespace

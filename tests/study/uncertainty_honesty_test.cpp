@@ -17,7 +17,9 @@
 // with rho_st^2 estimated by the runs' own sample correlations (biased upward by about
 // 1 / (n - 1) for uncorrelated pairs, so the bound is conservative). The mean ratio must lie
 // within 4 of those standard deviations of 1 (two-sided p = 6e-5 per project), and within
-// the acceptance target 0.8 - 1.25.
+// the acceptance target 0.8 - 1.25. For the office the same holds for the sensors of the
+// grid's outer rows and columns alone, where the ground bin's estimates are local-quadratic
+// (its own correlations give that subset's tolerance).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -45,7 +47,7 @@ constexpr double TargetLow = 0.8, TargetHigh = 1.25;
 
 /// One run's DF and reported standard error, every sensor of every grid in order.
 struct SensorValues {
-  std::vector<double> df, stderr_percent;
+  std::vector<double> df, stderr_percent, x, y;
 };
 
 void read_daylight_factor(const fs::path& csv, SensorValues& into) {
@@ -60,6 +62,8 @@ void read_daylight_factor(const fs::path& csv, SensorValues& into) {
     std::string field;
     while (std::getline(fields, field, ',')) v.push_back(std::stod(field));
     ASSERT_EQ(v.size(), 6u) << line;
+    into.x.push_back(v[1]);
+    into.y.push_back(v[2]);
     into.df.push_back(v[4]);
     into.stderr_percent.push_back(v[5]);
   }
@@ -72,7 +76,7 @@ struct Honesty {
   std::size_t sensors = 0;
 };
 
-/// Run `project` Seeds times (DF only); per run, the sensors of `grids` in order.
+/// Run `project` Seeds times (grids' DF only); per run, the sensors of `grids` in order.
 std::vector<SensorValues> seed_runs(project::Project p, const std::string& name, const std::vector<std::string>& grids) {
   p.outputs.annual_illuminance = p.outputs.metrics = p.outputs.images = p.outputs.report = false;
   p.outputs.coefficients = false;
@@ -95,12 +99,15 @@ std::vector<SensorValues> sensors_of(const std::vector<SensorValues>& runs, std:
     out[r].df.assign(runs[r].df.begin() + std::ptrdiff_t(first), runs[r].df.begin() + std::ptrdiff_t(first + count));
     out[r].stderr_percent.assign(runs[r].stderr_percent.begin() + std::ptrdiff_t(first),
                                  runs[r].stderr_percent.begin() + std::ptrdiff_t(first + count));
+    out[r].x.assign(runs[r].x.begin() + std::ptrdiff_t(first), runs[r].x.begin() + std::ptrdiff_t(first + count));
+    out[r].y.assign(runs[r].y.begin() + std::ptrdiff_t(first), runs[r].y.begin() + std::ptrdiff_t(first + count));
   }
   return out;
 }
 
-/// The spread of `runs` against their reported error.
-Honesty honesty(const std::vector<SensorValues>& runs, const std::string& name) {
+/// Compare the runs' spread with the reported error over the sensors `select` keeps.
+template <class Select>
+Honesty honesty(const std::vector<SensorValues>& runs, const std::string& name, Select select) {
   const std::size_t m_all = runs[0].df.size();
   // Sensors with light and a reported error (a sensor in the dark has neither spread nor error).
   std::vector<std::size_t> used;
@@ -112,7 +119,7 @@ Honesty honesty(const std::vector<SensorValues>& runs, const std::string& name) 
     }
     for (const SensorValues& r : runs) sd[s] += (r.df[s] - mean[s]) * (r.df[s] - mean[s]);
     sd[s] = std::sqrt(sd[s] / (Seeds - 1));
-    if (mean[s] > 0 && sigma[s] > 0 && sd[s] > 0) used.push_back(s);
+    if (mean[s] > 0 && sigma[s] > 0 && sd[s] > 0 && select(runs[0].x[s], runs[0].y[s])) used.push_back(s);
   }
   Honesty h;
   h.sensors = used.size();
@@ -140,6 +147,9 @@ Honesty honesty(const std::vector<SensorValues>& runs, const std::string& name) 
   return h;
 }
 
+/// The selection of honesty() that keeps every sensor.
+bool every_sensor(double, double) { return true; }
+
 void expect_honest(const Honesty& h) {
   ASSERT_GT(h.sensors, 0u);
   EXPECT_NEAR(h.mean_ratio, 1.0, Sigmas * h.sd_of_mean);
@@ -151,7 +161,14 @@ TEST(UncertaintyHonesty, OfficeSpreadOverSeedsMatchesTheReportedStandardError) {
   project::Project p = project::load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/project.yaml");
   p.simulation.photons_per_bin = 2000;  // the project's 40 000 / 20
   p.simulation.direct_samples_per_bin = 16;
-  expect_honest(honesty(seed_runs(p, "office", {"workplane"}), "office"));
+  const std::vector<SensorValues> runs = seed_runs(p, "office", {"workplane"});
+  expect_honest(honesty(runs, "office", every_sensor));
+  // The grid's outer rows and columns (0.5 m from the walls), where the ground bin's discs are
+  // cut and get the local-quadratic fit, whose variance is larger (docs/photon-map.md).
+  auto edge = [](double x, double y) {
+    return std::fabs(x - 0.5) < 1e-6 || std::fabs(x - 5.5) < 1e-6 || std::fabs(y - 0.5) < 1e-6 || std::fabs(y - 7.5) < 1e-6;
+  };
+  expect_honest(honesty(runs, "office, the grid's edge", edge));
 }
 
 TEST(UncertaintyHonesty, LightShelfSpreadOverSeedsMatchesTheReportedStandardError) {
@@ -162,13 +179,13 @@ TEST(UncertaintyHonesty, LightShelfSpreadOverSeedsMatchesTheReportedStandardErro
   p.simulation.direct_samples_per_bin = 9;
   p.simulation.gather_rays = 256;
   const std::vector<SensorValues> runs = seed_runs(p, "light_shelf", {"workplane", "ceiling_probes"});
-  expect_honest(honesty(runs, "light_shelf"));
+  expect_honest(honesty(runs, "light_shelf", every_sensor));
   // The 3 ceiling probes alone (the last 3 sensors: final gather, facing down), which the 209
   // work-plane sensors would outweigh in the mean: not optimistic and not overstated beyond
   // 4 standard deviations of their mean ratio (a 3-sensor mean has a wide spread, about 0.1
   // at 20 seeds, so the 0.8 - 1.25 band is not asked of it).
   ASSERT_GT(runs[0].df.size(), 3u);
-  const Honesty probes = honesty(sensors_of(runs, runs[0].df.size() - 3, 3), "light_shelf ceiling_probes");
+  const Honesty probes = honesty(sensors_of(runs, runs[0].df.size() - 3, 3), "light_shelf ceiling_probes", every_sensor);
   ASSERT_EQ(probes.sensors, 3u);
   EXPECT_NEAR(probes.mean_ratio, 1.0, Sigmas * probes.sd_of_mean);
 }
@@ -189,7 +206,8 @@ TEST(UncertaintyHonesty, GatheredWallGridsAreNotOptimisticAndWithinTheTarget) {
   p.simulation.photons_per_bin = 1000;  // the project's 20 000 / 20
   p.simulation.direct_samples_per_bin = 9;
   p.simulation.gather_rays = 256;
-  const Honesty h = honesty(seed_runs(p, "wall_sensors", {"back_wall", "west_wall"}), "wall_sensors");
+  const Honesty h = honesty(seed_runs(p, "wall_sensors", {"back_wall", "west_wall"}), "wall_sensors",
+                            every_sensor);
   ASSERT_GT(h.sensors, 0u);
   EXPECT_LE(h.mean_ratio, 1.0 + Sigmas * h.sd_of_mean);
   EXPECT_GE(h.mean_ratio, TargetLow);

@@ -31,6 +31,18 @@
 // (ReceiverPlane::clipped_disc_moments). Where a is negative (a steep fitted gradient
 // extrapolated across a wide disc, with few photons) it is set to 0, so no coefficient is
 // negative.
+// Local-quadratic estimate at walls (quadratic_fit_sources): the light on a work plane
+// bends down towards the walls within about a metre of them (a wall hides part of the
+// ceiling), and a plane fitted over a disc the wall cuts reads that concave field low, by an
+// amount that grows with the disc's area. The ground bin's light enters upwards, so all of it
+// reaches a work plane as photons (none is direct there), and its estimates were 7 % low at
+// the back corners of the office. For the sources listed, the fit E(y) = a + b . (y - x) + (y - x)^T C (y - x) by
+// moments over the same clipped disc is used where the outline cuts the disc: exact for such
+// curvature. It costs 1.5-4 times the variance (its equivalent kernel has negative lobes) and
+// is used for no other source and nowhere else: a sky bin's light at the walls is mostly
+// direct (computed without a disc), so its photon part's curvature bias is a small share. Where the fitted total (caustic +
+// global) is negative it is set to 0; each class alone is not clamped (a class with few
+// photons in the disc would otherwise be biased upwards by its clamp).
 // Sparse sources: a source with fewer photons than the median source (a low-yield source cut
 // by the photon cap, a sky patch seen through a sliver) would need a disc far wider than the
 // others' for the same N, and the plane fitted over it would smear its light over the room.
@@ -88,6 +100,10 @@ struct CoefficientOptions {
   /// clipped-disc average (see the header comment); removes the first-order bias of a
   /// gradient across a disc that a wall cuts, so larger bandwidths stay unbiased.
   bool local_linear = true;
+  /// With local_linear: the sources (indices, any order) whose discs get the local-quadratic
+  /// fit (local_quadratic_fit.h) where the outline cuts them (see the header comment). Empty:
+  /// none. The study lists the ground bin of the sky's sources (SimulationPlan).
+  std::vector<std::size_t> quadratic_fit_sources;
   /// Bias-compensating operator (seeds/000 chapter 5, density_estimate.h) instead of the
   /// fixed bandwidth: per source (PerSource) or on the total (Contribution), with
   /// n_min = the bandwidth and n_max = bias_compensation_max_factor x n_min.

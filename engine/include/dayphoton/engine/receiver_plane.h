@@ -23,6 +23,18 @@ struct AreaMoments {
   double area = 0, mx = 0, my = 0, mxx = 0, mxy = 0, myy = 0;
 };
 
+/// Moments up to order 4 of a disc of radius r about its centre p, clipped to an outline, in
+/// the disc's scaled coordinates (u, v) = (q - p) / r: at(a, b) = int u^a v^b dA / r^2
+/// (a + b <= 4). The unclipped disc: at(0, 0) = pi, at(2, 0) = pi / 4, at(4, 0) = pi / 8,
+/// at(2, 2) = pi / 24. What a local fit of degree 2 needs (local_quadratic_fit.h).
+struct ScaledMoments4 {
+  double value[15] = {};
+  /// The index of u^a v^b in `value`: order by order (1; u, v; u^2, uv, v^2; ...).
+  static constexpr int index(int a, int b) { return (a + b) * (a + b + 1) / 2 + b; }
+  double& at(int a, int b) { return value[index(a, b)]; }
+  double at(int a, int b) const { return value[index(a, b)]; }
+};
+
 /// A point of the outline in plane coordinates (x, y of the world; the plane is horizontal).
 struct PlanePoint {
   double x = 0, y = 0;
@@ -53,6 +65,9 @@ class ReceiverPlane {
   /// outline: exact, by Green's theorem on the clipped boundary (outline pieces inside the
   /// disc, circle arcs inside the outline).
   AreaMoments clipped_disc_moments(double x, double y, double r_m) const;
+  /// The same region's moments up to order 4 in the disc's scaled coordinates (exact, by
+  /// Green's theorem; ScaledMoments4).
+  ScaledMoments4 clipped_disc_moments4(double x, double y, double r_m) const;
 
  private:
   double m_z_m = 0;
