@@ -503,7 +503,9 @@ TEST(DaylightCoefficients, LocalQuadraticEstimateIsExactForACurvedFieldAtCorners
     std::printf("sensor %zu: quadratic %.5f, linear %.5f of the field\n", s, quadratic.global[s].x / truth,
                 linear.global[s].x / truth);
     EXPECT_NEAR(quadratic.global[s].x / truth, 1.0, 2e-3) << "sensor " << s;
-    if (s >= 2) EXPECT_LT(linear.global[s].x / truth, 1.0 - 1e-2) << "sensor " << s;  // the bias it removes
+    if (s >= 2) {
+      EXPECT_LT(linear.global[s].x / truth, 1.0 - 1e-2) << "sensor " << s;  // the bias it removes
+    }
   }
 }
 
