@@ -278,10 +278,17 @@ class LookupHint {
  public:
   /// The hint at `at` (NaN: none). The relative margin covers the rounding of the
   /// distances; a hint too small would cost a second search, never a different result.
-  double radius_m(const Vec3& at) const { return (m_kth_m + length(at - m_previous)) * (1 + 1e-9); }
+  /// After a short lookup (fewer than k within the maximum radius) the hint is the maximum
+  /// radius itself: the next sensor's search, likely short too, collects every photon within
+  /// it without a heap (PhotonMap::nearest).
+  double radius_m(const Vec3& at, double max_radius_m) const {
+    if (m_short) return max_radius_m;
+    return (m_kth_m + length(at - m_previous)) * (1 + 1e-9);
+  }
   /// Record the lookup at `at`: `found` sorted, `k` asked for.
   void record(const Vec3& at, const std::vector<NeighbourPhoton>& found, std::size_t k) {
     m_previous = at;
+    m_short = k > 0 && found.size() < k;
     m_kth_m = found.size() == k && k > 0 ? std::sqrt(found.back().distance_squared_m2)
                                         : std::numeric_limits<double>::quiet_NaN();
   }
@@ -289,6 +296,7 @@ class LookupHint {
  private:
   Vec3 m_previous{0, 0, 0};
   double m_kth_m = std::numeric_limits<double>::quiet_NaN();
+  bool m_short = false;
 };
 
 /// Caustic and global estimates from the photons of `map` passing `filter`, within the disc
@@ -303,7 +311,7 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
   ClassEstimates out;
   if (plane && options.local_linear && !options.bias_compensation && density.kernel == KernelType::Uniform) {
     const std::size_t k = neighbours_needed(density.bandwidth, density.radius);
-    map.nearest(at, k, density.max_radius_m, hint.radius_m(at), filter, found);
+    map.nearest(at, k, density.max_radius_m, hint.radius_m(at, density.max_radius_m), filter, found);
     hint.record(at, found, k);
     const KernelDisc disc = kernel_disc(found, density.bandwidth, density.radius, density.max_radius_m);
     if (disc.photon_count == 0) return out;

@@ -254,6 +254,18 @@ bool PhotonMap::nearest(const Vec3& point, std::size_t k, double max_radius_m, d
       return true;
     }
     out.clear();
+  } else if (hint_radius_m == max_radius_m && std::isfinite(max_radius_m)) {
+    // A hint of the (finite) maximum itself: every photon within the maximum radius is
+    // collected, without the heap. Fewer than k is the whole result (a short lookup), more
+    // are selected as above: either way nearest()'s photons, and no repeat.
+    Traversal<CollectWithin>(m_photons.data(), m_axis.data(), point, max_radius_m, filter, CollectWithin{out})
+        .visit(0, m_photons.size(), no_offset);
+    if (out.size() > k) {
+      std::nth_element(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(k - 1), out.end(), closer);
+      out.resize(k);
+    }
+    std::sort(out.begin(), out.end(), closer);
+    return true;
   } else {
     hint_radius_m = max_radius_m;  // no hint, or one no tighter than the maximum
   }

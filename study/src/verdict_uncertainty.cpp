@@ -8,6 +8,7 @@
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/metrics/occupancy.h"
+#include "dayphoton/study/tile_product.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -41,6 +42,16 @@ VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky
       radiance2[j * bins + p] = l * l;
     }
   }
+  // The same squares by tiles of TileSteps occupied steps, bin-major within a tile (zero past
+  // the last step), for detail::tile_product: the sky part of each variance is its plain
+  // sequential sum over the bins, computed for two sensors and a tile of steps at once.
+  using detail::TileSteps;
+  const std::size_t n_tiles = (n_occupied + TileSteps - 1) / TileSteps;
+  std::vector<double> radiance2_tiles(n_tiles * bins * TileSteps, 0.0);
+  for (std::size_t j = 0; j < n_occupied; ++j)
+    for (std::size_t p = 0; p < bins; ++p)
+      radiance2_tiles[(j / TileSteps * bins + p) * TileSteps + j % TileSteps] = radiance2[j * bins + p];
+  radiance2 = {};
   // The suns of the occupied steps, in record order, with their stencils.
   std::vector<std::vector<std::size_t>> suns_at(n_occupied);
   std::vector<engine::SunStencil> stencils;
@@ -73,26 +84,37 @@ VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky
   for (std::size_t first = 0; first < n_sensors; first += block) {
     const std::size_t last = std::min(n_sensors, first + block);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t s = r.begin(); s != r.end(); ++s) {
-        double* row = variance.data() + (s - first) * n_occupied;
-        const double* sv = sky_variance.data() + s * bins;
-        for (std::size_t j = 0; j < n_occupied; ++j) {
-          const double* r2 = radiance2.data() + j * bins;
-          double v = 0;
-          for (std::size_t p = 0; p < bins; ++p) v += r2[p] * sv[p];
-          row[j] = efficacy2 * v;
-          for (const std::size_t i : suns_at[j]) {
-            const sky::SunRecord& record = (*sun->suns)[i];
-            const engine::SunStencil& st = stencils[i];
-            double vs = 0;
-            for (int k = 0; k < st.count; ++k) {
-              const double w = st.weight[static_cast<std::size_t>(k)];
-              vs += w * w * (*sun->variance)[s * n_bins + static_cast<std::size_t>(st.index[static_cast<std::size_t>(k)])];
-            }
-            row[j] += efficacy2 * record.disc_radiance * record.disc_radiance * vs;
+      // The sky's part: r2 . sv summed over the bins in order (tile_product.h), a tile of
+      // steps at a time over the range's sensors (the tile stays in the first-level cache).
+      double acc[2 * TileSteps];
+      for (std::size_t tile = 0; tile < n_tiles; ++tile) {
+        const std::size_t j0 = tile * TileSteps, m = std::min(TileSteps, n_occupied - j0);
+        const double* columns = radiance2_tiles.data() + tile * bins * TileSteps;
+        for (std::size_t s = r.begin(); s < r.end(); s += 2) {
+          const std::size_t rows = std::min<std::size_t>(2, r.end() - s);
+          detail::tile_product(sky_variance.data() + s * bins, rows, bins, columns, acc);
+          for (std::size_t q = 0; q < rows; ++q) {
+            double* row = variance.data() + (s + q - first) * n_occupied + j0;
+            for (std::size_t j = 0; j < m; ++j) row[j] = efficacy2 * acc[q * TileSteps + j];
           }
         }
       }
+      // Then each step's suns, added in record order.
+      if (!stencils.empty())
+        for (std::size_t s = r.begin(); s != r.end(); ++s) {
+          double* row = variance.data() + (s - first) * n_occupied;
+          for (std::size_t j = 0; j < n_occupied; ++j)
+            for (const std::size_t i : suns_at[j]) {
+              const sky::SunRecord& record = (*sun->suns)[i];
+              const engine::SunStencil& st = stencils[i];
+              double vs = 0;
+              for (int k = 0; k < st.count; ++k) {
+                const double w = st.weight[static_cast<std::size_t>(k)];
+                vs += w * w * (*sun->variance)[s * n_bins + static_cast<std::size_t>(st.index[static_cast<std::size_t>(k)])];
+              }
+              row[j] += efficacy2 * record.disc_radiance * record.disc_radiance * vs;
+            }
+        }
       // The DA verdict with the illuminance lowered and raised by VerdictSigmas standard
       // errors, counted step by step (each step's row of the table read in order).
       const std::size_t n = r.end() - r.begin();

@@ -294,7 +294,8 @@ TEST(PhotonMap, AllPhotonsFilteredOut) {
 TEST(PhotonMap, HintedSearchMatchesBruteForce) {
   // The hint only decides the cost: every hint (none, zero, too small, the k-th distance
   // itself, the k-th distance seeded from a neighbouring point by the triangle inequality,
-  // wider than the maximum, NaN) gives brute force's photons. Coincident photons on a
+  // the maximum itself (every photon within it collected), wider than the maximum, NaN)
+  // gives brute force's photons. Coincident photons on a
   // receiver-like plane make the k-th distance tied many times over.
   const PhotonMap map(random_photons(3000, 15, [](std::mt19937_64& rng) {
     std::uniform_int_distribution<int> cell(0, 30);  // duplicates: ties at the k-th distance
@@ -316,7 +317,7 @@ TEST(PhotonMap, HintedSearchMatchesBruteForce) {
           const double seeded = previous.size() == k
                                     ? std::sqrt(previous.back().distance_squared_m2) + length(q - prev_q)
                                     : Inf;
-          for (double hint : {0.0, 0.5 * kth, kth, std::nextafter(kth, Inf), seeded, 2 * kth + 1, Inf,
+          for (double hint : {0.0, 0.5 * kth, kth, std::nextafter(kth, Inf), seeded, 2 * kth + 1, radius, Inf,
                               std::numeric_limits<double>::quiet_NaN()}) {
             const bool first_pass = map.nearest(q, k, radius, hint, filter, got);
             expect_same(got, want, "hinted query");

@@ -1,7 +1,9 @@
 // Annual illuminance (study/annual_illuminance.h): the tiled, parallel product against a
 // plain triple loop on random matrices, night columns, thread-count independence, shape
-// errors, and the binary and CSV files (layout bytes, round trip, corrupt files).
+// errors, and the binary and CSV files (layout bytes, round trip, corrupt files); the inner
+// tile product (tile_product.h) bit for bit against the plain sequential sum.
 #include "dayphoton/study/annual_illuminance.h"
+#include "dayphoton/study/tile_product.h"
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
@@ -114,6 +116,38 @@ TEST(AnnualIlluminance, ResultDoesNotDependOnTheThreadCount) {
   one_thread.execute([&] { serial = annual_illuminance(c, sky, stamps(200)); });
   for (std::size_t t = 0; t < 200; ++t)
     for (std::size_t s = 0; s < 13; ++s) ASSERT_EQ(parallel.lux(t, s), serial.lux(t, s));
+}
+
+// Every variant of the tile product (the AVX one where the processor has it, the portable
+// one) gives each sum bit for bit as the plain loop adds it: products rounded, then added in
+// order from 0. Values of mixed sign and magnitude, so that any reassociation or fused
+// multiply-add would show in the last bits.
+TEST(TileProduct, EverySumIsThePlainSequentialOneBitForBit) {
+  using detail::TileSteps;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_int_distribution<int> e(-30, 30);
+  for (std::size_t k : {std::size_t(1), std::size_t(3), std::size_t(438)}) {
+    std::vector<double> rows(2 * k), columns(k * TileSteps);
+    for (double& v : rows) v = std::ldexp(u(rng), e(rng));
+    for (double& v : columns) v = std::ldexp(u(rng), e(rng));
+    for (std::size_t sensors : {std::size_t(1), std::size_t(2)}) {
+      std::vector<double> out(2 * TileSteps, -1.0), portable(2 * TileSteps, -1.0);
+      detail::tile_product(rows.data(), sensors, k, columns.data(), out.data());
+      detail::tile_product_portable(rows.data(), sensors, k, columns.data(), portable.data());
+      for (std::size_t r = 0; r < sensors; ++r)
+        for (std::size_t j = 0; j < TileSteps; ++j) {
+          volatile double sum = 0.0;  // volatile: each product and sum rounded to double in order
+          for (std::size_t i = 0; i < k; ++i) {
+            volatile double product = rows[r * k + i] * columns[i * TileSteps + j];
+            sum = sum + product;
+          }
+          ASSERT_EQ(out[r * TileSteps + j], sum) << "k " << k << " row " << r << " step " << j
+                                                 << (detail::tile_product_uses_avx() ? " (AVX)" : "");
+          ASSERT_EQ(portable[r * TileSteps + j], sum) << "k " << k << " row " << r << " step " << j;
+        }
+    }
+  }
 }
 
 TEST(AnnualIlluminance, RejectsMismatchedShapes) {

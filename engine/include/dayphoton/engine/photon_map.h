@@ -101,8 +101,11 @@ class PhotonMap {
   /// If it finds k photons, every one of the k nearest lies within the hint (k accepted
   /// photons do), the bound never fell below the true k-th distance, and the result is
   /// exactly nearest()'s; if it finds fewer, the search is repeated with max_radius_m. So the
-  /// hint decides only the cost, never the photons returned. A NaN or negative hint is taken
-  /// as no hint. Returns false if the repeat was needed (for tests and benches).
+  /// hint decides only the cost, never the photons returned. A hint equal to a finite
+  /// max_radius_m collects every photon within it and selects the k nearest (no heap, no
+  /// repeat): for a point whose neighbour, a step away, found fewer than k (a short lookup),
+  /// where the search would reach the maximum anyway. A NaN or negative hint is taken as no
+  /// hint, as is a wider one. Returns false if the repeat was needed (for tests and benches).
   bool nearest(const Vec3& point, std::size_t k, double max_radius_m, double hint_radius_m,
                const PhotonFilter& filter, std::vector<NeighbourPhoton>& out) const;
 
