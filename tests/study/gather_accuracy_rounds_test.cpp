@@ -462,6 +462,8 @@ TEST(GatherPhotonRounds, OneAndTwoThreadsAndOneToThreeRanksGiveTheSameBytes) {
 // target, with the same bytes on 1 and 2 threads and on 2 ranks.
 constexpr double DirectPartTarget = 3.0;  // percent
 constexpr int DirectPartRays = 256;       // the gather's part well below the target
+// Percent: some sensors' direct part alone at 256 shadow rays per bin is above it (0.2 % is met).
+constexpr double DirectLimitTarget = 0.1;
 
 struct DirectPartRun {
   AccuracyResult result;
@@ -521,6 +523,28 @@ TEST(GatherDirectRounds, DirectPartAboveTheTargetGetsMoreShadowRays) {
     EXPECT_EQ(x.outcome.gather.at(0).stop_reason, o.gather[0].stop_reason);
     EXPECT_TRUE(encode_coefficients(x.coefficients.at(0)) == expected);
   }
+}
+
+// Shadow rays already at the rounds' limit: the grid is not raised, and when only its direct
+// part keeps it above the target its gather stop (and the case's) is `direct rays limit`.
+TEST(GatherDirectRounds, AtTheLimitTheStopIsDirectRaysLimit) {
+  Office office(true, false);
+  office.direct_samples = MaxDirectSamplesPerBin;
+  AccuracyGoal goal;
+  goal.target_percent = DirectLimitTarget;
+  std::vector<std::string> lines;
+  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(6, DirectPartRays), goal, [&](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    lines.push_back(line);
+  });
+  const AccuracyOutcome& o = r.outcome;
+  ASSERT_EQ(o.gather.size(), 1u);
+  for (const std::string& l : lines) EXPECT_EQ(l.find(": shadow rays per bin "), std::string::npos) << l;
+  EXPECT_EQ(o.direct_samples_per_bin, std::vector<int>({MaxDirectSamplesPerBin}));
+  EXPECT_EQ(o.gather[0].stop_reason, "direct rays limit");
+  EXPECT_EQ(o.grid_status[0], "above target");
+  EXPECT_EQ(o.stop_reason, "direct rays limit");
+  EXPECT_GT(o.reached_percent[0], DirectLimitTarget);
 }
 
 // The gather's fixed part (engine/final_gather.h, "How the variance falls with the rays": the
