@@ -355,9 +355,11 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     return next_direct_round(chased_variance, samples, sensors, cost, photons, aim_percent, AccuracyPercentile, n,
                              c.estimating.direct.port_sampling);
   };
-  round_direct.seconds = [&](const DirectRoundPlan& plan) {
-    return direct_rays > 0 ? work.agreed(direct_seconds) / direct_rays * plan.rays : 0.0;
+  // A raise's predicted time from the direct traces so far (the first process's clock).
+  auto direct_raise_seconds = [&](double rays) {
+    return direct_rays > 0 ? work.agreed(direct_seconds) / direct_rays * rays : 0.0;
   };
+  round_direct.seconds = [&](const DirectRoundPlan& plan) { return direct_raise_seconds(plan.rays); };
   round_direct.apply = [&](std::size_t round, const DirectRoundPlan& plan) {
     for (std::size_t j = 0; j < chased_grid.size(); ++j) {
       const std::size_t g = chased_grid[j];
@@ -371,6 +373,15 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   };
   // Gathered grids above the target: more gather rays (gather_accuracy_rounds.h), which may
   // settle the stop reason, and more photons for their photon part.
+  // Their shadow rays, raised as the chased grids' are (next_direct_round).
+  GatherDirectRaise gather_direct;
+  gather_direct.samples_per_bin = [&](std::size_t g) { return direct_samples[g]; };
+  gather_direct.raise = [&](std::size_t g, int samples_per_bin) {
+    direct_samples[g] = samples_per_bin;
+    trace_direct(g);
+  };
+  gather_direct.seconds = direct_raise_seconds;
+  gather_direct.port_sampling = c.estimating.direct.port_sampling;
   GatherPhotonRequest asked;     // of the last gather rounds
   std::string photon_stop;       // the photon rounds' stop they were given
   RoundLoopFinish gather_rounds;
@@ -378,7 +389,8 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     photon_stop = result.outcome.stop_reason = o.stop_reason;
     result.outcome.rounds = o.rounds;
     asked = run_gather_accuracy_rounds(c, goal, records, direct, direct_variance,
-                                       std::chrono::duration<double>(Clock::now() - start).count(), work, log, result);
+                                       std::chrono::duration<double>(Clock::now() - start).count(), work, log, result,
+                                       gather_direct);
     o.stop_reason = result.outcome.stop_reason;
     return asked.scale;
   };

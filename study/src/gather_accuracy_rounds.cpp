@@ -17,6 +17,7 @@
 #include "dayphoton/study/accuracy_policy.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/plan_policy.h"
 #include "dayphoton/study/sensor_blocks.h"
 #include "lazy_value.h"
 
@@ -74,6 +75,7 @@ struct GridEstimate {
   engine::DaylightCoefficients dc;
   std::vector<double> df_percent, direct_variance, gather_variance, fixed_variance;  ///< per sensor, (DF %)^2
   std::vector<double> fixed_per_source;  ///< [sensor x sources + source], (DF %)^2: fixed_variance by source
+  std::vector<double> fixed;             ///< the gather's fixed part as estimated (coefficient units)
   double reached_percent = 0;
 };
 
@@ -173,7 +175,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
                                 const std::vector<std::vector<Vec3>>& direct,
                                 const std::vector<std::vector<double>>& direct_variance, double seconds_so_far,
                                 RoundWork& work, const std::function<void(const std::string&)>& log,
-                                AccuracyResult& result) {
+                                AccuracyResult& result, const GatherDirectRaise& raise_direct) {
   const Clock::time_point start = Clock::now();
   const std::vector<SensorGrid>& grids = *c.grids;
   const std::size_t n = c.sources->size();
@@ -217,6 +219,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     }
     e.reached_percent = percentile_relative_stderr_percent(e.df_percent, stderr_percent, AccuracyPercentile);
     e.dc = std::move(dc);
+    e.fixed = fixed;
     return e;
   };
 
@@ -311,6 +314,54 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
       const GatherRayPlan plan = next_gather_rays(now.df_percent, now.direct_variance, now.gather_variance,
                                                   now.fixed_variance, a.rays, AccuracyRoundAim * goal.target_percent,
                                                   AccuracyPercentile);
+      if (plan.rays <= a.rays && plan.sensors_direct_limited > 0 && raise_direct) {
+        // More shadow rays by the photon rounds' rule (header comment), for this grid alone.
+        GridVariance v;
+        v.df_percent = now.df_percent;
+        v.direct_variance = now.direct_variance;
+        v.photon_variance.assign(now.dc.sensors * n, 0.0);
+        for (std::size_t i = 0; i < now.dc.sensors; ++i)
+          for (std::size_t p = 0; p < n; ++p) v.photon_variance[i * n + p] = weight[p] * now.dc.photon_variance[i * n + p];
+        RoundPlan no_photons;
+        no_photons.scale.assign(n, 1.0);
+        const int samples = raise_direct.samples_per_bin(g);
+        const DirectRoundPlan d =
+            next_direct_round({v}, {samples}, {grids[g].points.size()}, cost, no_photons,
+                              AccuracyRoundAim * goal.target_percent, AccuracyPercentile, n, raise_direct.port_sampling);
+        if (d.raised()) {
+          if (goal.max_seconds > 0) {
+            const double spent = work.agreed(elapsed_s + seconds_since(start));
+            const double need = raise_direct.seconds(d.rays);
+            if (spent + need > goal.max_seconds) {
+              a.stop_reason = "time budget";
+              log("accuracy: grid " + grids[g].name + ": no raise of shadow rays: it would take about " + number(need) +
+                  " s of the " + number(goal.max_seconds - spent) + " s left");
+              break;
+            }
+          }
+          log("accuracy: grid " + grids[g].name + ": shadow rays per bin " + std::to_string(samples) + " -> " +
+              std::to_string(d.samples_per_bin[0]) + " (its direct part keeps it above the target)");
+          raise_direct.raise(g, d.samples_per_bin[0]);
+          // The same gather (photons, rays, seed) with the new direct part.
+          engine::DaylightCoefficients dc = std::move(now.dc);
+          dc.direct = direct[g];
+          dc.direct_variance = direct_variance[g];
+          const std::vector<double> fixed = std::move(now.fixed);
+          now = measure(std::move(dc), fixed);
+          log("accuracy: grid " + grids[g].name + ": DF relative standard error (" +
+              number(AccuracyPercentile, "%.0f") + "th percentile) " + number(now.reached_percent) + " % at " +
+              std::to_string(d.samples_per_bin[0]) + " shadow rays per bin (target " + number(goal.target_percent) +
+              " %)");
+          continue;
+        }
+        if (d.sensors_at_limit > 0 && plan.sensors_photon_limited == 0) {
+          a.stop_reason = "direct rays limit";
+          log("accuracy: grid " + grids[g].name + ": " + std::to_string(d.sensors_at_limit) +
+              " sensor(s) miss the target by their direct component alone at " +
+              std::to_string(MaxDirectSamplesPerBin) + " shadow rays per bin, the rounds' limit");
+          break;
+        }
+      }
       if (plan.rays <= a.rays) {
         a.stop_reason = plan.sensors_photon_limited > 0 ? "gather photon part" : "direct component";
         log("accuracy: grid " + grids[g].name + ": " + std::to_string(plan.sensors_photon_limited) +

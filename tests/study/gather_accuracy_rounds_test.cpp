@@ -17,6 +17,7 @@
 #include <tbb/global_control.h>
 
 #include "dayphoton/engine/daylight_coefficients.h"
+#include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/final_gather.h"
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/engine/material.h"
@@ -31,6 +32,7 @@
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/gather_accuracy_rounds.h"
+#include "dayphoton/study/plan_policy.h"
 #include "in_process_study.h"
 
 namespace dayphoton::study {
@@ -450,6 +452,99 @@ TEST(GatherPhotonRounds, OneAndTwoThreadsAndOneToThreeRanksGiveTheSameBytes) {
       EXPECT_TRUE(encode_coefficients(x.coefficients.at(0)) == expected);
     }
   }
+}
+
+// ---- more shadow rays for a gathered grid's direct part --------------------------------------
+
+// The gathered grid alone at 1 shadow ray per bin: after its gather rounds its sensors are
+// above the target by their direct component, which neither rays nor photons lower; the gather
+// rounds raise its shadow rays by the photon rounds' rule (next_direct_round) and it meets the
+// target, with the same bytes on 1 and 2 threads and on 2 ranks.
+constexpr double DirectPartTarget = 3.0;  // percent
+constexpr int DirectPartRays = 256;       // the gather's part well below the target
+// Percent: some sensors' direct part alone at 256 shadow rays per bin is above it (0.2 % is met).
+constexpr double DirectLimitTarget = 0.1;
+
+struct DirectPartRun {
+  AccuracyResult result;
+  std::vector<std::string> log;
+};
+
+TEST(GatherDirectRounds, DirectPartAboveTheTargetGetsMoreShadowRays) {
+  Office office(true, false);
+  office.direct_samples = 1;
+  AccuracyGoal goal;
+  goal.target_percent = DirectPartTarget;
+  auto run_direct = [&](int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    DirectPartRun r;
+    r.result = run_accuracy_rounds(office.accuracy_case(6, DirectPartRays), goal, [&](const std::string& line) {
+      std::printf("%s\n", line.c_str());
+      r.log.push_back(line);
+    });
+    return r;
+  };
+  const DirectPartRun r = run_direct(2);
+  const AccuracyOutcome& o = r.result.outcome;
+  ASSERT_EQ(o.gather.size(), 1u);
+  std::size_t raises = 0;
+  for (const std::string& l : r.log) raises += l.find(": shadow rays per bin 1 -> ") != std::string::npos;
+  EXPECT_EQ(raises, 1u) << "the gather rounds did not raise the shadow rays";
+  ASSERT_EQ(o.direct_samples_per_bin.size(), 1u);
+  EXPECT_GT(o.direct_samples_per_bin[0], 1);
+  EXPECT_LE(o.direct_samples_per_bin[0], MaxDirectSamplesPerBin);
+  EXPECT_EQ(o.gather[0].stop_reason, "target met");
+  EXPECT_EQ(o.grid_status[0], "met");
+  EXPECT_EQ(o.stop_reason, "target met");
+  EXPECT_LE(o.reached_percent[0], DirectPartTarget);
+  // The reported value is the final estimate's own, its direct part that of the raised rays.
+  EXPECT_DOUBLE_EQ(o.reached_percent[0], reached_from_coefficients(r.result.coefficients[0], office));
+  engine::DirectOptions raised = office.accuracy_case(6, DirectPartRays).estimating.direct;
+  raised.samples_per_source = o.direct_samples_per_bin[0];
+  std::vector<double> variance;
+  const std::vector<Vec3> direct = engine::direct_coefficients(
+      *office.scene, office.materials, office.sources, office.description.grids.at(0).points, raised, &variance);
+  EXPECT_TRUE(direct == r.result.coefficients[0].direct);
+  EXPECT_TRUE(variance == r.result.coefficients[0].direct_variance);
+
+  const std::string expected = encode_coefficients(r.result.coefficients[0]);
+  const DirectPartRun one = run_direct(1);
+  EXPECT_EQ(one.result.outcome.direct_samples_per_bin, o.direct_samples_per_bin);
+  EXPECT_TRUE(encode_coefficients(one.result.coefficients.at(0)) == expected);
+  std::vector<AccuracyResult> ranked(2);
+  test::run_ranks_expecting_no_error(2, [&](dist::Communicator& comm) {
+    const ArtifactStore store(test::fresh_dir("gather_direct_" + std::to_string(comm.rank())).string());
+    const auto executor = make_distributed_executor(comm, store, false, 3);  // blocks of 3 of the 8 sensors
+    ranked[static_cast<std::size_t>(comm.rank())] = run_accuracy_rounds(
+        office.accuracy_case(6, DirectPartRays), goal, [](const std::string&) {}, executor->round_work());
+  });
+  for (const AccuracyResult& x : ranked) {
+    EXPECT_EQ(x.outcome.direct_samples_per_bin, o.direct_samples_per_bin);
+    EXPECT_EQ(x.outcome.gather.at(0).stop_reason, o.gather[0].stop_reason);
+    EXPECT_TRUE(encode_coefficients(x.coefficients.at(0)) == expected);
+  }
+}
+
+// Shadow rays already at the rounds' limit: the grid is not raised, and when only its direct
+// part keeps it above the target its gather stop (and the case's) is `direct rays limit`.
+TEST(GatherDirectRounds, AtTheLimitTheStopIsDirectRaysLimit) {
+  Office office(true, false);
+  office.direct_samples = MaxDirectSamplesPerBin;
+  AccuracyGoal goal;
+  goal.target_percent = DirectLimitTarget;
+  std::vector<std::string> lines;
+  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(6, DirectPartRays), goal, [&](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    lines.push_back(line);
+  });
+  const AccuracyOutcome& o = r.outcome;
+  ASSERT_EQ(o.gather.size(), 1u);
+  for (const std::string& l : lines) EXPECT_EQ(l.find(": shadow rays per bin "), std::string::npos) << l;
+  EXPECT_EQ(o.direct_samples_per_bin, std::vector<int>({MaxDirectSamplesPerBin}));
+  EXPECT_EQ(o.gather[0].stop_reason, "direct rays limit");
+  EXPECT_EQ(o.grid_status[0], "above target");
+  EXPECT_EQ(o.stop_reason, "direct rays limit");
+  EXPECT_GT(o.reached_percent[0], DirectLimitTarget);
 }
 
 // The gather's fixed part (engine/final_gather.h, "How the variance falls with the rays": the

@@ -4,9 +4,9 @@
 // more gather rays per sensor, in rounds, until the target is met or a limit stops them.
 //
 // The model. A gathered sensor's DF variance is V = V_d + V_g(N): V_d the direct component's
-// (shadow rays; the same every round), V_g the gather's at N rays (engine/final_gather.h,
-// "Variance": the photons' part by groups of paths plus the rays' part). As final_gather.h
-// ("How the variance falls with the rays") derives, V_g(N') = alpha + beta / N': alpha the
+// (shadow rays; the same every round until a raise, below), V_g the gather's at N rays
+// (engine/final_gather.h, "Variance": the photons' part by groups of paths plus the rays'
+// part). As final_gather.h ("How the variance falls with the rays") derives, V_g(N') = alpha + beta / N': alpha the
 // photons' part read by pairs of different rays (it stays, and only more photons lower it),
 // measured at N as GatheredCoefficients::fixed_photon_variance; beta = (V_g(N) - alpha) N the
 // rest (the rays' part, and the photons' part of each group's terms on one ray). A sensor above
@@ -22,7 +22,8 @@
 //
 // Stops (GatherAccuracy::stop_reason): "target met"; "gather photon part" (every sensor
 // still above the aim is photon-limited: more photons, or a larger gather_bandwidth, would
-// lower it); "direct component" (only direct-limited sensors remain: direct_samples_per_bin);
+// lower it); "direct component" (only direct-limited sensors remain and no raise of their
+// shadow rays is given: direct_samples_per_bin); "direct rays limit" (below);
 // "gather ray limit" (GatherMaxRays reached); "round limit" (GatherMaxRounds gather rounds on
 // the same photons); "time budget" (AccuracyGoal::max_seconds, from the last estimate's time
 // per ray; the first process's clock, round_work.h).
@@ -41,6 +42,14 @@
 // budgets and round limit and call the gather rounds again, each grid starting from the rays
 // it reached. If they cannot, the grid's stop names why: "photon budget", "time budget" or
 // "photon round limit" (refuse_gather_photons).
+//
+// More shadow rays for the direct part. A grid whose ray plan leaves direct-limited sensors
+// (B <= 0) raises its shadow rays per bin by the photon rounds' rule (next_direct_round,
+// accuracy_rounds.h: k -> 2k or 4k strata per bin, at most MaxDirectSamplesPerBin) through
+// GatherDirectRaise, which traces the grid's direct part again by sensor blocks through the
+// work; the grid's estimate takes the new direct part (its gather part is unchanged) and the
+// gather rounds go on. Stops: "direct rays limit" when such sensors remain at the limit and
+// none is photon-limited; "time budget" when the raise's predicted time does not fit.
 //
 // Determinism: the gather of a sensor is a pure function of (seed, sensor, rays), its
 // estimates go by sensor blocks through RoundWork, and every decision reads only the joined
@@ -98,20 +107,33 @@ struct GatherPhotonRequest {
   std::vector<std::size_t> grids;  ///< the grids that ask
 };
 
+/// How the gather rounds raise a gathered grid's shadow rays (header comment), given by the
+/// photon rounds that own each grid's direct part.
+struct GatherDirectRaise {
+  std::function<int(std::size_t grid)> samples_per_bin;  ///< the grid's shadow rays per bin now
+  /// Traces the grid's direct part at `samples_per_bin` (collective, through the work) into the
+  /// `direct` and `direct_variance` given to run_gather_accuracy_rounds.
+  std::function<void(std::size_t grid, int samples_per_bin)> raise;
+  std::function<double(double rays)> seconds;  ///< a raise's predicted time (the first process's clock)
+  bool port_sampling = false;                  ///< engine::DirectOptions::port_sampling (its rays' count)
+  explicit operator bool() const { return bool(raise); }
+};
+
 /// The gather rounds of every gathered grid of `result` above the target (header comment):
 /// replaces those grids' coefficients, reached_percent and grid_status in result.outcome, fills
 /// result.outcome.gather (every grid; gathered = false for the others; a second call after more
 /// photons starts each grid from the rays it reached and adds to its rounds), and settles the
 /// case's stop reason from result.outcome.stop_reason, the photon rounds' (settle_case_stop).
 /// `records`: the photon rounds' photons so far; `direct`, `direct_variance`: each grid's
-/// direct part (the whole grid's rows); `seconds_so_far`: the rounds' time before (for the time
-/// budget). Collective through `work` like the photon rounds. Returns the photons the grids ask for.
+/// direct part (the whole grid's rows; `raise_direct`, if given, replaces a raised grid's);
+/// `seconds_so_far`: the rounds' time before (for the time budget). Collective through `work`
+/// like the photon rounds. Returns the photons the grids ask for.
 GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
                                 const std::vector<engine::SourcePhotonRecord>& records,
                                 const std::vector<std::vector<Vec3>>& direct,
                                 const std::vector<std::vector<double>>& direct_variance, double seconds_so_far,
                                 RoundWork& work, const std::function<void(const std::string&)>& log,
-                                AccuracyResult& result);
+                                AccuracyResult& result, const GatherDirectRaise& raise_direct = {});
 
 /// The photon rounds did not trace what `request` asked for, for `reason` ("photon budget",
 /// "time budget", "round limit"): the asking grids' stop becomes it ("photon round limit" for
