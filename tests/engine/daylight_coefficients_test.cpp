@@ -389,6 +389,24 @@ TEST(DaylightCoefficients, SourceOrderAndHintedLookupsChangeNoValue) {
 namespace dayphoton::engine {
 namespace {
 
+/// One sensor's photon coefficients of `sources` sources at `bandwidth` photons, the sources of
+/// `fitted` by the local-quadratic fit; the photon variance kept.
+DaylightCoefficients one_sensor_coefficients(const GridPhotons& grid, const std::vector<SensorPoint>& sensors,
+                                             std::size_t sources, std::size_t bandwidth,
+                                             std::vector<std::size_t> fitted) {
+  CoefficientOptions o;
+  o.density.bandwidth = bandwidth;
+  o.quadratic_fit_sources = std::move(fitted);
+  DaylightCoefficients c;
+  c.sensors = 1;
+  c.sources = sources;
+  c.caustic.assign(sources, Vec3{0, 0, 0});
+  c.global.assign(sources, Vec3{0, 0, 0});
+  c.photon_variance.assign(sources, 0.0);
+  estimate_photon_coefficients(grid, sensors, o, c);
+  return c;
+}
+
 /// Deterministic photons on a 1 cm lattice over a 4 x 4 m receiver plane at z = 0.8, flux
 /// E(y) x cell area (one source, global).
 template <typename Field>
@@ -533,16 +551,7 @@ TEST(DaylightCoefficients, LocalQuadraticEstimateReportsItsOwnVariance) {
       p.set_normal({0, 0, 1});
     }
     const GridPhotons grid = GridPhotons::for_plane(plane, std::move(photons), 1);
-    CoefficientOptions o;
-    o.density.bandwidth = 400;
-    o.quadratic_fit_sources = {0};
-    DaylightCoefficients c;
-    c.sensors = 1;
-    c.sources = 1;
-    c.caustic.assign(1, Vec3{0, 0, 0});
-    c.global.assign(1, Vec3{0, 0, 0});
-    c.photon_variance.assign(1, 0.0);
-    estimate_photon_coefficients(grid, sensors, o, c);
+    const DaylightCoefficients c = one_sensor_coefficients(grid, sensors, 1, 400, {0});
     estimate.push_back(c.global[0].x / Density);  // grey photons: every channel the same
     reported.push_back(c.photon_variance[0] / (Density * Density));
   }
@@ -595,15 +604,7 @@ TEST(DaylightCoefficients, LocalQuadraticFitOnlyForTheListedSources) {
   const std::vector<SensorPoint> sensors = {{{2.0037, 3.7561, 0.8}, {0, 0, 1}}};
   const double truth = curved(2.0037, 3.7561);
   for (std::size_t listed : {0u, 1u}) {
-    CoefficientOptions o;
-    o.density.bandwidth = 20000;
-    o.quadratic_fit_sources = {listed};
-    DaylightCoefficients c;
-    c.sensors = 1;
-    c.sources = 2;
-    c.caustic.assign(2, Vec3{0, 0, 0});
-    c.global.assign(2, Vec3{0, 0, 0});
-    estimate_photon_coefficients(grid, sensors, o, c);
+    const DaylightCoefficients c = one_sensor_coefficients(grid, sensors, 2, 20000, {listed});
     EXPECT_NEAR(c.global[listed].x / truth, 1.0, 2e-3) << "listed source " << listed;
     EXPECT_LT(c.global[1 - listed].x / truth, 1.0 - 1e-2) << "the source not listed, " << 1 - listed;
   }
@@ -662,15 +663,7 @@ TEST(DaylightCoefficients, LocalQuadraticEstimateOfASparseClassIsNotClampedUpwar
         photons.push_back(p);
       }
     const GridPhotons grid = GridPhotons::for_plane(plane, std::move(photons), 1);
-    CoefficientOptions o;
-    o.density.bandwidth = 400;
-    o.quadratic_fit_sources = {0};
-    DaylightCoefficients c;
-    c.sensors = 1;
-    c.sources = 1;
-    c.caustic.assign(1, Vec3{0, 0, 0});
-    c.global.assign(1, Vec3{0, 0, 0});
-    estimate_photon_coefficients(grid, sensors, o, c);
+    const DaylightCoefficients c = one_sensor_coefficients(grid, sensors, 1, 400, {0});
     EXPECT_GE(c.caustic[0].x + c.global[0].x, 0.0);
     if (c.caustic[0].x < 0) ++negative;
     caustic.push_back(c.caustic[0].x / CausticDensity);
