@@ -87,6 +87,14 @@ std::string gather_why_and_what_to_do(const Reached& r) {
     return gathered + "; the sensors still above the target are so by the noise of their direct light (the "
            "shadow rays toward the sky through the openings), which more gather rays do not reduce. What to do: "
            "raise <code>simulation.direct_samples_per_bin</code>.";
+  if (r.gather_stop_reason == "direct rays limit")
+    return gathered + "; the sensors still above the target are so by the noise of their direct light (the "
+           "shadow rays toward the sky through the openings), and the gather rounds raised those rays to their "
+           "limit of " +
+           std::to_string(study::MaxDirectSamplesPerBin) +
+           " per sky patch. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
+           std::to_string(study::MaxDirectSamplesPerBin) + " (the rounds keep a larger count), or ask for a looser "
+           "target.";
   return gathered + "; the gather rounds stopped with \"" + esc(r.gather_stop_reason) + "\".";
 }
 

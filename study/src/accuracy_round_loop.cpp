@@ -157,6 +157,7 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
     };
     DirectRoundPlan direct_plan;
     double direct_seconds = 0;
+    bool direct_timed_out = false;  // a raise the time budget left no room for
     if (m.met) {
       stop = met_stop_reason(m.grid_status);
     } else if (!pending.empty()) {
@@ -165,7 +166,6 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
       stop = "round limit";
     } else {
       RoundPlan plan = next_round_scale(m.chased, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
-      bool direct_timed_out = false;  // a raise the time budget left no room for
       if (direct.plan) {
         direct_plan = direct.plan(cost, plan, AccuracyRoundAim * goal.target_percent);
         if (direct_plan.raised() && goal.max_seconds > 0) {
@@ -207,7 +207,12 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
       finished = true;
       plan_next(asked);
       if (!(more_attempts > 0)) break;
-      const std::string refuse = !pending.empty() ? pending : round >= MaxAccuracyRounds ? "round limit" : "";
+      // The chased grids stopped on a budget (a raise of their shadow rays the time budget had no
+      // room for), not on their own: the gathered grids' round is refused for the same reason.
+      const std::string refuse = !pending.empty()            ? pending
+                                 : direct_timed_out          ? "time budget"
+                                 : round >= MaxAccuracyRounds ? "round limit"
+                                                              : "";
       if (!refuse.empty()) {
         log(text.name + ": no round " + std::to_string(round + 1) + " for the gathered grids' photon part: the " +
             refuse);

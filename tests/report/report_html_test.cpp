@@ -609,6 +609,30 @@ TEST(ReportHtml, TheDirectRaysLimitNamesTheKeyToChange) {
   EXPECT_EQ(item.find("max_photons"), std::string::npos) << item;
 }
 
+TEST(ReportHtml, AGatheredGridsDirectRaysLimitNamesTheKeyToChange) {
+  // A grid estimated by final gather whose gather rounds raised its shadow rays to their limit:
+  // its own sentence says so and names direct_samples_per_bin, not the gather or photon keys.
+  const std::string dir = temp_dir("accuracy_gather_direct_limit");
+  ResultsModel m = results_model(dir);
+  using Acc = DaylightFactorSummary::AccuracyReached;
+  m.cases[0].grids[1].daylight_factor->accuracy =
+      Acc{1.0, 1.4, 3, 4000000, "direct rays limit", "above target", 4096, 4, "direct rays limit"};
+  write_results_model(m, dir);
+  const std::string html = report_html(dir);
+  const std::string wall =
+      accuracy_item(accuracy_statements(html), "data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
+  ASSERT_FALSE(wall.empty()) << html;
+  EXPECT_NE(wall.find("estimated by final gather"), std::string::npos) << wall;
+  EXPECT_NE(wall.find("the gather rounds raised those rays to their limit of " +
+                      std::to_string(MaxDirectSamplesPerBin) +
+                      " per sky patch. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
+                      std::to_string(MaxDirectSamplesPerBin)),
+            std::string::npos)
+      << wall;
+  EXPECT_EQ(wall.find("stopped with"), std::string::npos) << wall;
+  EXPECT_EQ(wall.find("gather_rays"), std::string::npos) << wall;
+}
+
 TEST(ReportHtml, AGatheredGridsPhotonPartStopNamesTheBudgetOrLimit) {
   // Gathered grids whose photon part (what more gather rays do not reduce) kept them above the
   // target: the photon rounds traced more photons for them until the photon budget, or their
