@@ -79,17 +79,25 @@ struct GridEstimate {
   double reached_percent = 0;
 };
 
+/// Each sensor's relative standard error of DF in percent from its direct and gather variances
+/// (0 for a sensor without daylight).
+std::vector<double> relative_stderr_percent(const std::vector<double>& df_percent,
+                                            const std::vector<double>& direct_variance,
+                                            const std::vector<double>& gather_variance) {
+  std::vector<double> relative(df_percent.size(), 0.0);
+  for (std::size_t i = 0; i < df_percent.size(); ++i)
+    relative[i] = df_percent[i] > 0
+                      ? 100.0 * std::sqrt(std::max(0.0, direct_variance[i] + gather_variance[i])) / df_percent[i]
+                      : 0.0;
+  return relative;
+}
+
 }  // namespace
 
 GatherRayPlan next_gather_rays(const std::vector<double>& df_percent, const std::vector<double>& direct_variance,
                                const std::vector<double>& gather_variance, const std::vector<double>& fixed_variance,
                                int rays, double aim_percent, double percentile) {
-  const std::size_t m = df_percent.size();
-  std::vector<double> relative(m, 0.0);
-  for (std::size_t i = 0; i < m; ++i)
-    relative[i] = df_percent[i] > 0
-                      ? 100.0 * std::sqrt(std::max(0.0, direct_variance[i] + gather_variance[i])) / df_percent[i]
-                      : 0.0;
+  const std::vector<double> relative = relative_stderr_percent(df_percent, direct_variance, gather_variance);
   GatherRayPlan plan;
   double needed = rays;
   for (const std::size_t i : sensors_at_or_below_percentile(relative, df_percent, percentile)) {
@@ -119,12 +127,8 @@ GatherPhotonPlan next_gather_photons(const std::vector<double>& df_percent, cons
                                      const std::vector<double>& gather_variance,
                                      const std::vector<double>& fixed_per_source, int rays,
                                      const std::vector<double>& cost, double aim_percent, double percentile) {
-  const std::size_t m = df_percent.size(), n = cost.size();
-  std::vector<double> relative(m, 0.0);
-  for (std::size_t i = 0; i < m; ++i)
-    relative[i] = df_percent[i] > 0
-                      ? 100.0 * std::sqrt(std::max(0.0, direct_variance[i] + gather_variance[i])) / df_percent[i]
-                      : 0.0;
+  const std::size_t n = cost.size();
+  const std::vector<double> relative = relative_stderr_percent(df_percent, direct_variance, gather_variance);
   GatherPhotonPlan plan;
   plan.scale.assign(n, 1.0);
   for (const std::size_t i : sensors_at_or_below_percentile(relative, df_percent, percentile)) {
