@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -13,6 +14,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/estimate_variance.h"
 #include "dayphoton/engine/local_quadratic_fit.h"
+#include "dayphoton/engine/plane_visibility.h"
 
 namespace dayphoton::engine {
 namespace {
@@ -27,10 +29,13 @@ std::vector<PhotonMap> split_by_source(const std::vector<Photon>& photons, std::
   return maps;
 }
 
-// pi r^2 / (area of the kernel disc inside the outline): 1 away from walls.
-double boundary_factor(const ReceiverPlane* plane, const Vec3& at, double radius_m) {
+// pi r^2 / (area of the kernel disc inside the outline, or of the part the centre sees):
+// 1 away from walls.
+double boundary_factor(const ReceiverPlane* plane, const PlaneVisibility* visibility, const Vec3& at,
+                       double radius_m) {
   if (!plane || radius_m <= 0) return 1.0;
-  const double inside = plane->disc_area_inside_m2(at.x, at.y, radius_m);
+  const double inside =
+      visibility ? visibility->area_m2(radius_m) : plane->disc_area_inside_m2(at.x, at.y, radius_m);
   const double full = Pi * radius_m * radius_m;
   return inside > 1e-12 * full ? full / inside : 1.0;
 }
@@ -315,9 +320,14 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     hint.record(at, found, k);
     const KernelDisc disc = kernel_disc(found, density.bandwidth, density.radius, density.max_radius_m);
     if (disc.photon_count == 0) return out;
+    // The region the disc's photons come from: the disc clipped to the outline, or the part
+    // of it the centre sees (filter.visibility, which the lookup applied).
+    const PlaneVisibility* visible = filter.visibility;
     if (quadratic_at_walls && disc.radius_m > 0 &&
-        plane->disc_area_inside_m2(at.x, at.y, disc.radius_m) < Pi * disc.radius_m * disc.radius_m * (1 - 1e-9)) {
-      const LocalQuadraticKernel kernel = local_quadratic_kernel(plane->clipped_disc_moments4(at.x, at.y, disc.radius_m));
+        (visible ? visible->area_m2(disc.radius_m) : plane->disc_area_inside_m2(at.x, at.y, disc.radius_m)) <
+            Pi * disc.radius_m * disc.radius_m * (1 - 1e-9)) {
+      const LocalQuadraticKernel kernel = local_quadratic_kernel(
+          visible ? visible->moments4(disc.radius_m) : plane->clipped_disc_moments4(at.x, at.y, disc.radius_m));
       if (kernel.valid) return local_quadratic_estimate(map, at, found, disc, kernel);
     }
     Vec3 s0[2], s1x[2], s1y[2];
@@ -339,7 +349,8 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
       q[4] += y2 * dx * dy;
       q[5] += y2 * dy * dy;
     }
-    const AreaMoments m = plane->clipped_disc_moments(at.x, at.y, disc.radius_m);
+    const AreaMoments m =
+        visible ? visible->moments(disc.radius_m) : plane->clipped_disc_moments(at.x, at.y, disc.radius_m);
     out.caustic = local_linear_density(m, s0[0], s1x[0], s1y[0]);
     out.global = local_linear_density(m, s0[1], s1x[1], s1y[1]);
     out.variance = local_linear_variance(m, q);
@@ -361,7 +372,7 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
                            ? all.radius_m * (1 - 1e-9)
                            : all.radius_m;
   fixed.radius = KernelRadius::Plain;
-  const double b = options.boundary_correction ? boundary_factor(plane, at, all.radius_m) : 1.0;
+  const double b = options.boundary_correction ? boundary_factor(plane, filter.visibility, at, all.radius_m) : 1.0;
   for (PathClass c : {PathClass::Caustic, PathClass::Global}) {
     PhotonFilter one = filter;
     one.path_classes = static_cast<decltype(one.path_classes)>(filter.path_classes & path_class_bit(c));
@@ -393,17 +404,42 @@ void estimate_photon_coefficients(const GridPhotons& photons,
   const ReceiverPlane* plane = photons.plane();
   // The widest disc on a receiver plane (sparse sources, header comment); infinite elsewhere.
   const double max_radius_m = std::min(options.density.max_radius_m, photons.max_radius_m(options.density.bandwidth));
-  auto filter_for = [&](const SensorPoint& s, PathClass c) {
+  auto filter_for = [&](const SensorPoint& s, PathClass c, const PlaneVisibility* visibility) {
     PhotonFilter f;
     f.path_classes = path_class_bit(c);
     if (!plane) {  // surface photons: only those that arrived on the sensor's side
       f.check_normal = true;
       f.normal = s.normal;
     }
+    f.visibility = visibility;
     return f;
   };
   auto query_point = [&](const SensorPoint& sensor) {
     return plane ? Vec3{sensor.position.x, sensor.position.y, plane->height_m()} : sensor.position;
+  };
+  // The visibility clip (header comment) up to the widest disc any lookup here can have: the
+  // maximum radius, at most the outline's diagonal (no photon of the plane lies farther from
+  // a sensor inside it).
+  const bool clip = plane && options.visibility_clip &&
+                    !(plane->interior_cuts().empty() && plane->reflex_vertices().empty());
+  double visibility_radius_m = options.estimator == PhotonEstimator::PerSource ? max_radius_m
+                                                                               : options.density.max_radius_m;
+  if (clip) {
+    double min_x = plane->outline()[0].x, max_x = min_x, min_y = plane->outline()[0].y, max_y = min_y;
+    for (const PlanePoint& q : plane->outline()) {
+      min_x = std::min(min_x, q.x), max_x = std::max(max_x, q.x);
+      min_y = std::min(min_y, q.y), max_y = std::max(max_y, q.y);
+    }
+    visibility_radius_m = std::min(visibility_radius_m, std::hypot(max_x - min_x, max_y - min_y));
+  }
+  auto visibility_of = [&](const tbb::blocked_range<std::size_t>& range) {
+    std::vector<std::optional<PlaneVisibility>> v(range.size());
+    if (clip)
+      for (std::size_t s = range.begin(); s != range.end(); ++s) {
+        const Vec3 at = query_point(sensors[s]);
+        v[s - range.begin()] = PlaneVisibility::around(*plane, at.x, at.y, visibility_radius_m);
+      }
+    return v;
   };
   // Tasks of consecutive sensors, neighbours on the grid. With one map per source, a task
   // goes source by source over its sensors: the source's photons near them stay in the cache
@@ -411,6 +447,11 @@ void estimate_photon_coefficients(const GridPhotons& photons,
   // before. Every (sensor, source) estimate is computed alone, so the order changes no value.
   tbb::parallel_for(tbb::blocked_range<std::size_t>(rows.begin, rows.end),
                     [&](const tbb::blocked_range<std::size_t>& range) {
+    const std::vector<std::optional<PlaneVisibility>> visibility = visibility_of(range);
+    auto visibility_at = [&](std::size_t s) {
+      const std::optional<PlaneVisibility>& v = visibility[s - range.begin()];
+      return v ? &*v : nullptr;
+    };
     if (options.estimator == PhotonEstimator::PerSource) {
       std::vector<NeighbourPhoton> found;
       for (std::size_t p = 0; p < n_src && p < photons.source_count(); ++p) {
@@ -440,8 +481,9 @@ void estimate_photon_coefficients(const GridPhotons& photons,
           const Vec3 at = query_point(sensor);
           const std::size_t i = (s - rows.begin) * n_src + p;  // in `out`
           const std::size_t stream = s * n_src + p;            // random numbers
+          const PlaneVisibility* visible = visibility_at(s);
           if (options.caustic_bandwidth == 0) {
-            PhotonFilter both = filter_for(sensor, PathClass::Global);
+            PhotonFilter both = filter_for(sensor, PathClass::Global, visible);
             both.path_classes = IndirectPathClasses;
             const ClassEstimates e =
                 estimate_classes(map, plane, at, both, scaled, options, quadratic, stream, global_hint, found);
@@ -450,9 +492,9 @@ void estimate_photon_coefficients(const GridPhotons& photons,
             out.photon_variance[i] = e.variance;
             continue;
           }
-          const ClassEstimates g = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global),
+          const ClassEstimates g = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global, visible),
                                                     global_scaled, options, quadratic, stream, global_hint, found);
-          const ClassEstimates c = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic),
+          const ClassEstimates c = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic, visible),
                                                     caustic_scaled, options, false, stream + grid_pairs, caustic_hint,
                                                     found);
           out.global[i] = g.global;
@@ -475,12 +517,13 @@ void estimate_photon_coefficients(const GridPhotons& photons,
         const DensityEstimate e =
             options.bias_compensation
                 ? estimate_contributions_bias_compensated(
-                      photons.all(), at, filter_for(sensor, c),
+                      photons.all(), at, filter_for(sensor, c, visibility_at(s)),
                       bias_options(options, density, s * 2 + (c == PathClass::Caustic ? 0 : 1)),
                       per_source, &per_source_variance)
-                : estimate_contributions(photons.all(), at, filter_for(sensor, c), density, per_source,
-                                         &per_source_variance);
-        const double b = options.boundary_correction ? boundary_factor(plane, at, e.radius_m) : 1.0;
+                : estimate_contributions(photons.all(), at, filter_for(sensor, c, visibility_at(s)), density,
+                                         per_source, &per_source_variance);
+        const double b =
+            options.boundary_correction ? boundary_factor(plane, visibility_at(s), at, e.radius_m) : 1.0;
         std::vector<Vec3>& part = c == PathClass::Caustic ? out.caustic : out.global;
         for (std::size_t p = 0; p < n_src; ++p) {
           part[row * n_src + p] = per_source[p] * b;

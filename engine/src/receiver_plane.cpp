@@ -21,6 +21,13 @@ namespace {
 
 double cross2(const PlanePoint& a, const PlanePoint& b) { return a.x * b.y - a.y * b.x; }
 
+// Twice the signed area of a polygon (shoelace formula): positive when counter-clockwise.
+double outline_area_signed_twice(const std::vector<PlanePoint>& outline) {
+  double twice = 0;
+  for (std::size_t i = 0; i < outline.size(); ++i) twice += cross2(outline[i], outline[(i + 1) % outline.size()]);
+  return twice;
+}
+
 // Signed area of disc(0, r) intersected with triangle (0, a, b).
 double disc_triangle_area(PlanePoint a, PlanePoint b, double r) {
   const double r2 = r * r;
@@ -144,9 +151,7 @@ void centred_outline(const std::vector<PlanePoint>& outline, double x, double y,
                      std::vector<PlanePoint>& poly) {
   poly.clear();
   for (const PlanePoint& p : outline) poly.push_back({(p.x - x) / scale, (p.y - y) / scale});
-  double signed_area = 0;
-  for (std::size_t i = 0; i < poly.size(); ++i) signed_area += cross2(poly[i], poly[(i + 1) % poly.size()]);
-  if (signed_area < 0) std::reverse(poly.begin(), poly.end());
+  if (outline_area_signed_twice(poly) < 0) std::reverse(poly.begin(), poly.end());
 }
 
 /// int_{t0}^{t1} cos^m t sin^n t dt by the reduction formulas (Gradshteyn and Ryzhik 2.510,
@@ -241,6 +246,16 @@ ReceiverPlane::ReceiverPlane(double z_m, bool faces_up, std::vector<PlanePoint> 
     m_min_y = std::min(m_min_y, p.y);
     m_max_y = std::max(m_max_y, p.y);
   }
+  // Reflex vertices: the turn at the vertex is against the outline's winding.
+  const std::size_t n = m_outline.size();
+  const double winding = outline_area_signed_twice(m_outline) >= 0 ? 1.0 : -1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const PlanePoint& prev = m_outline[(i + n - 1) % n];
+    const PlanePoint& at = m_outline[i];
+    const PlanePoint& next = m_outline[(i + 1) % n];
+    const double turn = (at.x - prev.x) * (next.y - at.y) - (at.y - prev.y) * (next.x - at.x);
+    if (turn * winding < 0) m_reflex.push_back(at);
+  }
 }
 
 double ReceiverPlane::front_crossing(const Vec3& origin, const Vec3& direction) const {
@@ -275,14 +290,6 @@ double ReceiverPlane::disc_area_inside_m2(double x, double y, double r_m) const 
   return std::fabs(area);  // the outline may wind either way
 }
 
-double ReceiverPlane::outline_area_m2() const {
-  double twice = 0;
-  for (std::size_t i = 0; i < m_outline.size(); ++i) {
-    const PlanePoint& a = m_outline[i];
-    const PlanePoint& b = m_outline[(i + 1) % m_outline.size()];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  return 0.5 * std::fabs(twice);
-}
+double ReceiverPlane::outline_area_m2() const { return 0.5 * std::fabs(outline_area_signed_twice(m_outline)); }
 
 }  // namespace dayphoton::engine

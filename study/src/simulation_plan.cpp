@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "dayphoton/core/units.h"
+#include "dayphoton/engine/plane_cuts.h"
 #include "dayphoton/project/north_rotation.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
@@ -75,6 +76,12 @@ CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids) {
       l.keep_surface_photons = true;
     }
   }
+  return l;
+}
+
+CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids, const engine::Scene& scene) {
+  CaseLayout l = of(grids);
+  for (engine::ReceiverPlane& plane : l.planes) plane.set_interior_cuts(engine::interior_plane_cuts(scene, plane));
   return l;
 }
 

@@ -53,6 +53,12 @@
 // (ReceiverPlane outline area): where a source has no photons that near, the estimate is the
 // fixed-radius one over what is there (zero where there is nothing), so light stays where
 // it falls.
+// Visibility clip (visibility_clip): the light on a work plane jumps across a partition or a
+// column that crosses it, and around the re-entrant corner of an L-shaped room; a disc that
+// spans them would carry the lit side's light into the shadow. Where one lies within a
+// sensor's widest disc, the estimate keeps to the photons the sensor's position sees in the
+// plane and fits over the region it sees (plane_visibility.h): the outline clip above, with
+// the boundary the cuts add.
 // Caustic map (caustic_bandwidth > 0): caustic photons get a lookup of their own, among
 // caustic photons only, with their own bandwidth, as Jensen's separate caustic map
 // (seeds/000 section 3.1.3). A sharp caustic (a mirror shelf's reflection on the ceiling,
@@ -104,6 +110,11 @@ struct CoefficientOptions {
   /// fit (local_quadratic_fit.h) where the outline cuts them (see the header comment). Empty:
   /// none. The study lists the ground bin of the sky's sources (SimulationPlan).
   std::vector<std::size_t> quadratic_fit_sources;
+  /// Receiver planes: where an interior cut (a partition, a column: plane_cuts.h, set on the
+  /// plane) or a re-entrant corner of the outline lies within a sensor's widest disc, count
+  /// only the photons the sensor's position sees in the plane, over the region it sees
+  /// (plane_visibility.h). Off: the outline clip alone (the disc spans partitions).
+  bool visibility_clip = true;
   /// Bias-compensating operator (seeds/000 chapter 5, density_estimate.h) instead of the
   /// fixed bandwidth: per source (PerSource) or on the total (Contribution), with
   /// n_min = the bandwidth and n_max = bias_compensation_max_factor x n_min.

@@ -36,6 +36,10 @@
 
 namespace dayphoton::engine {
 
+class PlaneVisibility;
+/// PlaneVisibility::sees(photon), out of line (plane_visibility.h).
+bool visible_in_plane(const PlaneVisibility& visibility, const Photon& photon);
+
 /// Which photons a lookup may return.
 struct PhotonFilter {
   static constexpr std::uint32_t AnySource = 0xFFFFFFFFu;
@@ -44,11 +48,15 @@ struct PhotonFilter {
   bool check_normal = false;  ///< only photons whose normal has dot(normal, n) >= min_cos
   Vec3 normal{0, 0, 1};       ///< unit normal of the query surface (used if check_normal)
   double min_cos = 0.5;
+  /// Receiver planes: only photons whose crossing point this visibility sees (a sensor's
+  /// side of a partition, plane_visibility.h); null: any.
+  const PlaneVisibility* visibility = nullptr;
 
   /// True if the photon may be returned (the stored normal is the x127 quantised one).
   bool accepts(const Photon& photon) const {
     if (source != AnySource && photon.source != source) return false;
     if ((path_classes & path_class_bit(photon.path_class)) == 0) return false;
+    if (visibility && !visible_in_plane(*visibility, photon)) return false;
     if (check_normal) {
       const double dot127 = photon.normal[0] * normal.x + photon.normal[1] * normal.y +
                             photon.normal[2] * normal.z;

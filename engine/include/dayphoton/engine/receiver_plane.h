@@ -40,6 +40,11 @@ struct PlanePoint {
   double x = 0, y = 0;
 };
 
+/// A straight piece in plane coordinates: where a surface cuts the plane (plane_cuts.h).
+struct PlaneSegment {
+  PlanePoint a, b;
+};
+
 class ReceiverPlane {
  public:
   /// The plane of a planar grid (SensorGrid::planar, normal +Z or -Z). Throws
@@ -69,10 +74,23 @@ class ReceiverPlane {
   /// Green's theorem; ScaledMoments4).
   ScaledMoments4 clipped_disc_moments4(double x, double y, double r_m) const;
 
+  /// The outline, as given.
+  const std::vector<PlanePoint>& outline() const { return m_outline; }
+  /// Outline vertices whose interior angle exceeds pi (the re-entrant corners of an L-shaped
+  /// room): from near them part of the outline hides another.
+  const std::vector<PlanePoint>& reflex_vertices() const { return m_reflex; }
+  /// Where the scene's surfaces cut the plane inside the outline (plane_cuts.h: partitions,
+  /// columns, tall furniture); none until set. The estimates keep to what a sensor's
+  /// position sees across them (plane_visibility.h).
+  void set_interior_cuts(std::vector<PlaneSegment> cuts) { m_interior_cuts = std::move(cuts); }
+  const std::vector<PlaneSegment>& interior_cuts() const { return m_interior_cuts; }
+
  private:
   double m_z_m = 0;
   bool m_faces_up = true;
   std::vector<PlanePoint> m_outline;
+  std::vector<PlanePoint> m_reflex;
+  std::vector<PlaneSegment> m_interior_cuts;
   double m_min_x = 0, m_max_x = 0, m_min_y = 0, m_max_y = 0;
 };
 

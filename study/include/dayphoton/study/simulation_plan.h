@@ -35,6 +35,9 @@ struct CaseLayout {
   bool keep_surface_photons = false;  ///< some grid is not planar
 
   static CaseLayout of(const std::vector<SensorGrid>& grids);
+  /// The planes with where `scene`'s surfaces cut them (engine/plane_cuts.h), for the
+  /// estimates' visibility clip; the tracing does not use them.
+  static CaseLayout of(const std::vector<SensorGrid>& grids, const engine::Scene& scene);
 };
 
 struct SimulationPlan {

@@ -1,0 +1,69 @@
+// Plane cuts: see plane_cuts.h.
+#include "dayphoton/engine/plane_cuts.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace dayphoton::engine {
+namespace {
+
+double distance_to_segment_m(const PlanePoint& p, const PlanePoint& a, const PlanePoint& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double length2 = dx * dx + dy * dy;
+  const double t = length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
+  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
+bool on_outline(const ReceiverPlane& plane, const PlaneSegment& s) {
+  const std::vector<PlanePoint>& outline = plane.outline();
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const PlanePoint& a = outline[i];
+    const PlanePoint& b = outline[(i + 1) % outline.size()];
+    if (distance_to_segment_m(s.a, a, b) <= OnOutline_m && distance_to_segment_m(s.b, a, b) <= OnOutline_m)
+      return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const ReceiverPlane& plane) {
+  std::vector<PlaneSegment> cuts;
+  const double z = plane.height_m();
+  for (std::size_t t = 0; t < scene.triangle_count(); ++t) {
+    const SceneTriangle& tri = scene.triangle(static_cast<std::uint32_t>(t));
+    if (scene.is_port(tri.surface)) continue;
+    double d[3];
+    bool above = false, below = false;
+    for (int k = 0; k < 3; ++k) {
+      d[k] = tri.vertices[k].z - z;
+      above = above || d[k] > 0;
+      below = below || d[k] < 0;
+    }
+    if (!above || !below) continue;
+    // The two points where the triangle's boundary meets the plane: a vertex on it, or an
+    // edge whose ends lie on opposite sides.
+    PlanePoint ends[2];
+    int found = 0;
+    for (int k = 0; k < 3 && found < 2; ++k) {
+      const Vec3& p = tri.vertices[k];
+      const Vec3& q = tri.vertices[(k + 1) % 3];
+      const double dp = d[k], dq = d[(k + 1) % 3];
+      if (dp == 0) {
+        ends[found++] = {p.x, p.y};
+      } else if ((dp > 0 && dq < 0) || (dp < 0 && dq > 0)) {
+        const double s = dp / (dp - dq);
+        ends[found++] = {p.x + s * (q.x - p.x), p.y + s * (q.y - p.y)};
+      }
+    }
+    if (found < 2) continue;
+    const PlaneSegment cut{ends[0], ends[1]};
+    if (cut.a.x == cut.b.x && cut.a.y == cut.b.y) continue;
+    const PlanePoint middle{0.5 * (cut.a.x + cut.b.x), 0.5 * (cut.a.y + cut.b.y)};
+    if (!plane.contains(middle.x, middle.y) || on_outline(plane, cut)) continue;
+    cuts.push_back(cut);
+  }
+  return cuts;
+}
+
+}  // namespace dayphoton::engine
