@@ -234,11 +234,7 @@ struct CountingGridStep {
   }
 };
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = test::process_temp_dir() / name;
-  fs::remove_all(dir);
-  return dir;
-}
+using test::fresh_dir;
 
 /// Runs a CountingGridStep of `sensors` rows on `ranks` in-process ranks with blocks of 8.
 void expect_distributed_step_is_whole(int ranks, std::size_t sensors) {
