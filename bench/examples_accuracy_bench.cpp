@@ -34,22 +34,17 @@
 // Usage: examples_accuracy_bench [target_percent|default [project_name...]]; `default` (or no
 // argument): each project's own simulation.accuracy target, else the default target (the
 // final preset, 1 %) that applies to a project that gives no photon counts.
-#include <sys/resource.h>
-
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
-#include "dayphoton/study/progress.h"
 #include "dayphoton/study/results_model.h"
-#include "dayphoton/study/study_runner.h"
+#include "df_only_run.h"
 
 using namespace dayphoton;
 namespace fs = std::filesystem;
@@ -78,13 +73,6 @@ struct DfRun {
   std::string stop_reason;
 };
 
-/// CPU seconds (user + sys) of this process so far, all threads.
-double process_cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
 /// One DF-only run of `proj` (base case) at `target_percent`; the values of every grid.
 DfRun run_at(project::Project proj, double target_percent, int factor, const fs::path& out,
              const fs::path& cache) {
@@ -93,40 +81,17 @@ DfRun run_at(project::Project proj, double target_percent, int factor, const fs:
     proj.simulation.gather_rays *= factor;
     proj.simulation.seed += ReferenceSeedOffset;
   }
-  proj.study = project::StudyKind::DaylightFactor;
-  project::Simulation::Accuracy accuracy;
-  if (proj.simulation.accuracy) accuracy = *proj.simulation.accuracy;
-  accuracy.preset.clear();
-  accuracy.target_df_relative_stderr_percent = target_percent;
-  accuracy.max_seconds = 0;
-  proj.simulation.accuracy = accuracy;
-  proj.outputs.daylight_factor = true;
-  proj.outputs.annual_illuminance = proj.outputs.metrics = false;
-  proj.outputs.images = proj.outputs.report = proj.outputs.coefficients = false;
-  proj.variants.clear();
-  fs::remove_all(out);
-  std::ostringstream log;
-  study::Progress progress(log, study::ProgressStyle::Lines, 1e9);
-  study::RunSettings settings;
-  settings.output_dir = out.string();
-  settings.cache_dir = cache.string();
-  settings.force = true;
-  const auto t0 = std::chrono::steady_clock::now();
-  const double cpu0 = process_cpu_seconds();
-  study::run_study(proj, settings, progress);
+  bench::set_accuracy_target(proj, target_percent);
+  const bench::DfOnlyRun run = bench::run_df_only(proj, out, cache);
   DfRun r;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.cpu_seconds = process_cpu_seconds() - cpu0;
-  const study::ResultsModel model = study::read_results_model(out.string());
-  for (const study::GridResult& grid : model.cases.at(0).grids) {
-    const study::SensorQuantity* df = grid.find_quantity("daylight_factor");
-    if (!df) throw std::runtime_error("no daylight factor for grid " + grid.name + " in " + out.string());
+  r.seconds = run.seconds;
+  r.cpu_seconds = run.cpu_seconds;
+  for (const study::GridResult& grid : run.model.cases.at(0).grids) {
+    bench::GridDf values = bench::read_grid_df(out, grid);
     GridRun gr;
     gr.name = grid.name;
-    gr.df_percent = study::read_quantity_values(out.string(), grid, *df);
-    study::SensorQuantity se = *df;
-    se.column = "df_stderr_percent";
-    gr.stderr_percent = study::read_quantity_values(out.string(), grid, se);
+    gr.df_percent = std::move(values.df_percent);
+    gr.stderr_percent = std::move(values.stderr_percent);
     if (grid.daylight_factor && grid.daylight_factor->accuracy) {
       const auto& acc = *grid.daylight_factor->accuracy;
       r.photons = acc.photons;

@@ -20,20 +20,16 @@
 //        [ref_gather_rays [ref_seeds]]]]   (defaults 20, 10, 65536, 3); seeds 0: the
 //        references alone (e.g. a reference at the runs' photon count, to see the kernel bias
 //        change with the photons).
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "dayphoton/project/project.h"
-#include "dayphoton/study/progress.h"
 #include "dayphoton/study/results_model.h"
-#include "dayphoton/study/study_runner.h"
+#include "df_only_run.h"
 
 using namespace dayphoton;
 namespace fs = std::filesystem;
@@ -45,36 +41,15 @@ struct GridValues {
   std::string note;  ///< the grid's accuracy: reached p95, status, gather rays, rounds, stop
 };
 
-double process_cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-GridValues run_once(project::Project proj, const std::string& grid_name, const fs::path& out) {
-  proj.study = project::StudyKind::DaylightFactor;
-  proj.outputs.daylight_factor = true;
-  proj.outputs.annual_illuminance = proj.outputs.metrics = false;
-  proj.outputs.images = proj.outputs.report = proj.outputs.coefficients = false;
-  proj.variants.clear();
+GridValues run_once(const project::Project& proj, const std::string& grid_name, const fs::path& out) {
   fs::remove_all(out);
-  std::ostringstream log;
-  study::Progress progress(log, study::ProgressStyle::Quiet);
-  study::RunSettings settings;
-  settings.output_dir = (out / "out").string();
-  settings.cache_dir = (out / "cache").string();
-  settings.force = true;
-  study::run_study(proj, settings, progress);
-  const study::ResultsModel model = study::read_results_model(settings.output_dir);
-  for (const study::GridResult& grid : model.cases.at(0).grids) {
+  const bench::DfOnlyRun run = bench::run_df_only(proj, out / "out", out / "cache");
+  for (const study::GridResult& grid : run.model.cases.at(0).grids) {
     if (grid.name != grid_name) continue;
-    const study::SensorQuantity* df = grid.find_quantity("daylight_factor");
-    if (!df) throw std::runtime_error("no daylight factor for grid " + grid.name);
+    bench::GridDf values = bench::read_grid_df(out / "out", grid);
     GridValues v;
-    v.df = study::read_quantity_values(settings.output_dir, grid, *df);
-    study::SensorQuantity se = *df;
-    se.column = "df_stderr_percent";
-    v.se = study::read_quantity_values(settings.output_dir, grid, se);
+    v.df = std::move(values.df_percent);
+    v.se = std::move(values.stderr_percent);
     if (grid.daylight_factor && grid.daylight_factor->accuracy) {
       const auto& a = *grid.daylight_factor->accuracy;
       char buffer[256];
@@ -109,16 +84,11 @@ int main(int argc, char** argv) {
 
   // The runs at the default accuracy target.
   std::vector<GridValues> runs;
-  double cpu0 = process_cpu_seconds();
+  double cpu0 = bench::process_cpu_seconds();
   for (int seed = 1; seed <= seeds; ++seed) {
     project::Project p = base;
     p.simulation.seed = static_cast<unsigned long long>(seed);
-    project::Simulation::Accuracy accuracy;
-    if (p.simulation.accuracy) accuracy = *p.simulation.accuracy;
-    accuracy.preset.clear();
-    accuracy.target_df_relative_stderr_percent = project::Simulation::Accuracy{}.target_df_relative_stderr_percent;
-    accuracy.max_seconds = 0;
-    p.simulation.accuracy = accuracy;
+    bench::set_accuracy_target(p, project::Simulation::Accuracy{}.target_df_relative_stderr_percent);
     runs.push_back(run_once(p, grid, tmp));
     std::printf("seed %2d:", seed);
     for (std::size_t s = 0; s < runs.back().df.size(); ++s)
@@ -126,11 +96,11 @@ int main(int argc, char** argv) {
     std::printf("  %s\n", runs.back().note.c_str());
     std::fflush(stdout);
   }
-  const double run_cpu = process_cpu_seconds() - cpu0;
+  const double run_cpu = bench::process_cpu_seconds() - cpu0;
 
   // The long reference: the grid alone, fixed photon counts.
   std::vector<GridValues> refs;
-  cpu0 = process_cpu_seconds();
+  cpu0 = bench::process_cpu_seconds();
   for (int r = 1; r <= ref_seeds; ++r) {
     project::Project p = base;
     p.simulation.accuracy.reset();
@@ -153,7 +123,7 @@ int main(int argc, char** argv) {
     std::printf("\n");
     std::fflush(stdout);
   }
-  const double ref_cpu = process_cpu_seconds() - cpu0;
+  const double ref_cpu = bench::process_cpu_seconds() - cpu0;
 
   if (seeds < 2 || ref_seeds < 1) {
     std::printf("(fewer than 2 seeds or no reference: no comparison; %.1f + %.1f CPU s)\n", run_cpu, ref_cpu);

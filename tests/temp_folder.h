@@ -38,4 +38,19 @@ inline const std::filesystem::path& process_temp_dir() {
   return folder.path;
 }
 
+/// `name` below this process's own folder, removed first (nothing of an earlier test is read);
+/// not made again: the code under test makes it.
+inline std::filesystem::path fresh_dir(const std::string& name) {
+  const std::filesystem::path dir = process_temp_dir() / name;
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+/// `name` below this process's own folder, made empty (fresh_dir, then created).
+inline std::filesystem::path empty_dir(const std::string& name) {
+  const std::filesystem::path dir = fresh_dir(name);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 }  // namespace dayphoton::test

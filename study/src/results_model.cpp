@@ -71,6 +71,15 @@ json occupancy_json(const OccupancySummary& o) {
           {"hourly_source", o.hourly_source}};
 }
 
+/// An accuracy block of a grid, the sky's (daylight_factor.accuracy) or the sun bins'
+/// (sun_accuracy): the fields both kinds have, which the reader's accuracy_reached reads back;
+/// the caller adds the fields of its kind.
+template <class Accuracy>
+json accuracy_json(const Accuracy& a) {
+  return {{"target_percent", a.target_percent}, {"reached_percent", a.reached_percent}, {"rounds", a.rounds},
+          {"photons", a.photons}, {"stop_reason", a.stop_reason}, {"status", a.status}};
+}
+
 json grid_json(const GridResult& g) {
   json sensors = json::array();
   for (std::size_t i = 0; i < g.positions_m.size(); ++i) {
@@ -119,17 +128,11 @@ json grid_json(const GridResult& g) {
                             {"max_relative_stderr_percent", d->max_relative_stderr_percent},
                             {"sensors_with_daylight", d->sensors_with_daylight},
                             {"accuracy", nullptr}};
-    if (const auto& acc = d->accuracy)
-      j["daylight_factor"]["accuracy"] = {{"target_percent", acc->target_percent},
-                                          {"reached_percent", acc->reached_percent},
-                                          {"rounds", acc->rounds},
-                                          {"photons", acc->photons},
-                                          {"stop_reason", acc->stop_reason},
-                                          {"status", acc->status}};
-    if (const auto& acc = d->accuracy; acc && acc->gather_rays > 0)
-      j["daylight_factor"]["accuracy"]["gather"] = {{"rays", acc->gather_rays},
-                                                    {"rounds", acc->gather_rounds},
-                                                    {"stop_reason", acc->gather_stop_reason}};
+    if (const auto& acc = d->accuracy) {
+      json& block = j["daylight_factor"]["accuracy"] = accuracy_json(*acc);
+      if (acc->gather_rays > 0)
+        block["gather"] = {{"rays", acc->gather_rays}, {"rounds", acc->gather_rounds}, {"stop_reason", acc->gather_stop_reason}};
+    }
   }
   if (const auto& a = g.annual) {
     json levels = json::array();
@@ -173,14 +176,10 @@ json grid_json(const GridResult& g) {
          a->da_verdicts_within_2_sigma ? json(*a->da_verdicts_within_2_sigma) : json(nullptr)}};
   }
   j["sun_accuracy"] = nullptr;
-  if (const auto& sa = g.sun_accuracy)
-    j["sun_accuracy"] = {{"target_percent", sa->target_percent},
-                         {"reached_percent", sa->reached_percent},
-                         {"hourly_percent", sa->hourly_percent},
-                         {"rounds", sa->rounds},
-                         {"photons", sa->photons},
-                         {"stop_reason", sa->stop_reason},
-                         {"status", sa->status}};
+  if (const auto& sa = g.sun_accuracy) {
+    j["sun_accuracy"] = accuracy_json(*sa);
+    j["sun_accuracy"]["hourly_percent"] = sa->hourly_percent;
+  }
   json points = json::array();
   for (const PointInTimeSummary& p : g.points_in_time)
     points.push_back({{"name", p.name}, {"sky", p.sky}, {"mean_lux", p.mean_lux}, {"median_lux", p.median_lux},

@@ -14,6 +14,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "../temp_folder.h"
+
 namespace dayphoton {
 namespace {
 
@@ -26,12 +28,7 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using test::empty_dir;
 
 std::size_t file_count(const fs::path& dir) {
   std::size_t n = 0;
@@ -40,7 +37,7 @@ std::size_t file_count(const fs::path& dir) {
 }
 
 TEST(AtomicFile, WritesStringAndReplacesExisting) {
-  const fs::path dir = fresh_dir("atomic_file_test_a");
+  const fs::path dir = empty_dir("atomic_file_test_a");
   const fs::path target = dir / "out.csv";
   write_file_atomically(target.string(), "index,x\n0,1\n");
   EXPECT_EQ(slurp(target), "index,x\n0,1\n");
@@ -51,7 +48,7 @@ TEST(AtomicFile, WritesStringAndReplacesExisting) {
 }
 
 TEST(AtomicFile, BinaryStream) {
-  const fs::path dir = fresh_dir("atomic_file_test_b");
+  const fs::path dir = empty_dir("atomic_file_test_b");
   const fs::path target = dir / "data.bin";
   const std::string bytes("\x00\x01\xff\n\r", 5);
   write_file_atomically(target.string(), [&](std::ostream& out) { out.write(bytes.data(), 5); }, true);
@@ -60,7 +57,7 @@ TEST(AtomicFile, BinaryStream) {
 }
 
 TEST(AtomicFile, WriterExceptionKeepsOldFileAndRemovesTemporary) {
-  const fs::path dir = fresh_dir("atomic_file_test_c");
+  const fs::path dir = empty_dir("atomic_file_test_c");
   const fs::path target = dir / "out.txt";
   write_file_atomically(target.string(), "old\n");
   EXPECT_THROW(write_file_atomically(target.string(),
@@ -75,7 +72,7 @@ TEST(AtomicFile, WriterExceptionKeepsOldFileAndRemovesTemporary) {
 }
 
 TEST(AtomicFile, MissingFolderGivesErrorNamingPath) {
-  const fs::path dir = fresh_dir("atomic_file_test_d");
+  const fs::path dir = empty_dir("atomic_file_test_d");
   const fs::path target = dir / "no_such_folder" / "out.txt";
   try {
     write_file_atomically(target.string(), "x");
@@ -107,7 +104,7 @@ TEST(AtomicFile, TemporaryFileOwnerParsesOnlyTheTemporaryPattern) {
 }
 
 TEST(AtomicFile, RemovesTemporariesOfDeadProcessesOnly) {
-  const fs::path dir = fresh_dir("atomic_file_test_dead");
+  const fs::path dir = empty_dir("atomic_file_test_dead");
   fs::create_directories(dir / ".cache");
   const pid_t dead = dead_pid();
   const std::string own = std::to_string(::getpid());

@@ -41,12 +41,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string temp_dir(const std::string& name) {
-  const fs::path p = test::process_temp_dir() / ("dayphoton_report_images_test_" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p.string();
-}
 
 /// An EXR's channels and attributes, read with OpenEXR directly (not through read_exr).
 struct Exr {
@@ -183,7 +177,7 @@ TEST(ResultImages, OfficeGridExrEqualsTheCsvTables) {
   const SceneDescription scene = project::build_scene_description(project);
   ASSERT_FALSE(scene.grids.empty());
   const std::vector<SensorPoint>& sensors = scene.grids[0].points;
-  const std::string results = temp_dir("office"), dir = results + "/workplane";
+  const std::string results = test::empty_dir("report_images_office"), dir = results + "/workplane";
   fs::create_directories(dir);
   write_grid_folder(dir, sensors);
   const GridResult grid = grid_model("workplane", sensors);
@@ -241,7 +235,7 @@ TEST(ResultImages, RotatedLShapedGridKeepsOnePixelPerSensorAndTransparentHoles) 
   for (int j = 0; j < 7; ++j)
     for (int i = 0; i < 9; ++i)
       if (!(i >= 6 && j >= 4)) sensors.push_back({Vec3{10, 20, 0.85} + u * i + v * j, {0, 0, 1}});
-  const std::string results = temp_dir("rotated"), dir = results + "/grid";
+  const std::string results = test::empty_dir("report_images_rotated"), dir = results + "/grid";
   write_grid_folder(dir, sensors);
   const GridResult grid = grid_model("grid", sensors);
   write_grid_images(results, CaseResult{}, grid);
@@ -257,7 +251,7 @@ TEST(ResultImages, PointsOffALatticeGiveOneRowInSensorOrder) {
   sensors = {{{0, 0, 0.8}, {0, 0, 1}}, {{1, 0, 0.8}, {0, 0, 1}}, {{0, 1, 1.8}, {0, 0, 1}}};  // not on one plane
   EXPECT_FALSE(sensor_lattice(sensors).regular);
   sensors = {{{0, 0, 0.8}, {0, 0, 1}}, {{1, 0, 0.8}, {0, 0, 1}}, {{2.5, 0, 0.8}, {0, 0, 1}}, {{4, 3, 0.8}, {0, 0, 1}}};
-  const std::string results = temp_dir("points"), dir = results + "/grid";
+  const std::string results = test::empty_dir("report_images_points"), dir = results + "/grid";
   write_grid_folder(dir, sensors);
   const GridResult grid = grid_model("grid", sensors);
   write_grid_images(results, CaseResult{}, grid);
@@ -269,7 +263,7 @@ TEST(ResultImages, PointsOffALatticeGiveOneRowInSensorOrder) {
 }
 
 TEST(ResultImages, MalformedTablesAreLocatedErrors) {
-  const std::string results = temp_dir("malformed"), dir = results + "/grid";
+  const std::string results = test::empty_dir("report_images_malformed"), dir = results + "/grid";
   const std::vector<SensorPoint> sensors{{{0, 0, 0.8}, {0, 0, 1}}, {{1, 0, 0.8}, {0, 0, 1}}};
   write_grid_folder(dir, sensors);
   std::ofstream(dir + "/daylight_factor.csv") << "index,x,y,z,df_percent\n0,0,0,0.8,1.5\n1,1,0,0.8,abc\n";

@@ -50,12 +50,6 @@ std::string read_bytes(const fs::path& p) {
   return s.str();
 }
 
-fs::path fresh(const std::string& name) {
-  const fs::path p = test::process_temp_dir() / ("dayphoton_report_pdf_test_" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
 
 /// An executable shell script `body` in `dir`.
 std::string script(const fs::path& dir, const std::string& body) {
@@ -80,7 +74,7 @@ std::vector<std::string> others(const fs::path& dir, const std::vector<std::stri
 TEST(ReportPdf, ChromiumPrintsTheReportOnSeveralPages) {
   if (report::find_pdf_printer().empty())
     GTEST_SKIP() << "chromium is not installed (Debian package 'chromium'; scripts/setup.sh installs it)";
-  const fs::path root = fresh("chromium");
+  const fs::path root = test::empty_dir("report_pdf_chromium");
   std::ofstream(root / "project.yaml") << Project;
   const project::Project project = project::load_project((root / "project.yaml").string());
   const fs::path out = root / "run";
@@ -116,9 +110,9 @@ TEST(ReportPdf, PageCountReadsTheRootPageTree) {
 
 TEST(ReportPdf, AMissingBrowserNamesTheDebianPackage) {
   report::PdfSettings settings;
-  settings.browser = (fresh("missing") / "no-such-chromium").string();
+  settings.browser = (test::empty_dir("report_pdf_missing") / "no-such-chromium").string();
   EXPECT_EQ(report::find_pdf_printer(settings), "");
-  const fs::path dir = fresh("missing_html");
+  const fs::path dir = test::empty_dir("report_pdf_missing_html");
   std::ofstream(dir / "report.html") << "<html></html>";
   try {
     report::print_pdf((dir / "report.html").string(), (dir / "report.pdf").string(), settings);
@@ -142,7 +136,7 @@ TEST(ReportPdf, AMissingBrowserNamesTheDebianPackage) {
 }
 
 TEST(ReportPdf, AHangingBrowserIsStoppedAtTheTimeLimit) {
-  const fs::path dir = fresh("hang");
+  const fs::path dir = test::empty_dir("report_pdf_hang");
   std::ofstream(dir / "report.html") << "<html></html>";
   std::ofstream(dir / "report.pdf") << "%PDF-1.4 the previous one";
   report::PdfSettings settings;
@@ -163,7 +157,7 @@ TEST(ReportPdf, AHangingBrowserIsStoppedAtTheTimeLimit) {
 }
 
 TEST(ReportPdf, ABrowserThatPrintsNothingLeavesNoPdf) {
-  const fs::path dir = fresh("nothing");
+  const fs::path dir = test::empty_dir("report_pdf_nothing");
   std::ofstream(dir / "report.html") << "<html></html>";
   report::PdfSettings settings;
   settings.browser = script(dir, "echo cannot print >&2; exit 0");

@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -33,6 +32,7 @@
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/plan_policy.h"
+#include "counting_round_work.h"
 #include "in_process_study.h"
 
 namespace dayphoton::study {
@@ -407,32 +407,7 @@ TEST(AccuracyTarget, APhotonBudgetLeavesTheShadowRaysTheirRound) {
   EXPECT_TRUE(encode_coefficients(pilot.coefficients[0]) == encode_coefficients(r.coefficients[0]));
 }
 
-/// A RoundWork that counts the ranges it is asked for and hands them on.
-class CountingWork final : public RoundWork {
- public:
-  explicit CountingWork(RoundWork& inner) : m_inner(inner) {}
-  std::vector<engine::AttemptRange> trace(const std::vector<AttemptRequest>& requests, const RangeTracer& t) override {
-    ++calls;
-    requests_total += requests.size();
-    return m_inner.trace(requests, [&](std::size_t p, std::uint64_t first, std::uint64_t last) {
-      ++ranges;
-      return t(p, first, last);
-    });
-  }
-  std::vector<std::string> estimate(std::size_t sensors, const RowEstimator& rows, const std::string& name) override {
-    std::vector<std::string> b = m_inner.estimate(sensors, rows, name);
-    blocks += b.size();
-    return b;
-  }
-  double agreed(double value) override { return m_inner.agreed(value); }
-  int calls = 0;
-  std::size_t requests_total = 0;
-  std::atomic<int> ranges{0};
-  std::size_t blocks = 0;
-
- private:
-  RoundWork& m_inner;
-};
+using test::CountingWork;
 
 // The rounds on 1, 2 and 3 in-process ranks (the distributed executor's RoundWork, sensor
 // blocks of 8 of the 48 sensors, a time budget checked) give every rank the one-process rounds' bytes: outcome,

@@ -23,11 +23,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = test::process_temp_dir() / name;
-  fs::remove_all(dir);
-  return dir;
-}
+using test::fresh_dir;
 
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -14,12 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = test::process_temp_dir() / ("dayphoton_cache_folder_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using test::empty_dir;
 
 TEST(CacheFolder, IsAHiddenSiblingOfTheOutputFolder) {
   EXPECT_EQ(default_cache_folder("projects/office/results"), "projects/office/.results-cache");
@@ -33,7 +28,7 @@ TEST(CacheFolder, IsAHiddenSiblingOfTheOutputFolder) {
 }
 
 TEST(CacheFolder, PruningKeepsWhatTheLastCompleteRunUsed) {
-  const fs::path dir = fresh_dir("prune");
+  const fs::path dir = empty_dir("cache_folder_prune");
   const ArtifactStore old_run((dir / "cache").string());
   old_run.write("photons", "aaaa", std::string(1000, 'a'));
   old_run.write("photons", "bbbb", std::string(500, 'b'));
@@ -60,7 +55,7 @@ TEST(CacheFolder, PruningKeepsWhatTheLastCompleteRunUsed) {
 }
 
 TEST(CacheFolder, AnEarlierVersionsCacheMovesBesideTheOutputFolder) {
-  const fs::path dir = fresh_dir("legacy");
+  const fs::path dir = empty_dir("cache_folder_legacy");
   const fs::path out = dir / "results";
   const ArtifactStore legacy(legacy_cache_folder(out.string()));
   legacy.write("photons", "aaaa", "payload");

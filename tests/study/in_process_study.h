@@ -29,14 +29,6 @@ namespace dayphoton::test {
 /// that the small test grids are shared over the ranks by several blocks.
 constexpr std::size_t TestSensorBlockSize = 8;
 
-/// `name` below this process's own temporary folder (temp_folder.h), removed first (nothing of an
-/// earlier test is read).
-inline std::filesystem::path fresh_dir(const std::string& name) {
-  const std::filesystem::path dir = process_temp_dir() / name;
-  std::filesystem::remove_all(dir);
-  return dir;
-}
-
 /// Every file below `dir` (relative path -> bytes), but those named in `left_out`.
 inline std::map<std::string, std::string> files_of(const std::filesystem::path& dir,
                                                    std::initializer_list<std::string> left_out = {}) {

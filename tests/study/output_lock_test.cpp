@@ -17,12 +17,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = test::process_temp_dir() / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using test::empty_dir;
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p);
@@ -32,7 +27,7 @@ std::string slurp(const fs::path& p) {
 }
 
 TEST(OutputLock, RecordsTheHolderAndRemovesTheFileOnRelease) {
-  const fs::path dir = fresh_dir("output_lock_a");
+  const fs::path dir = empty_dir("output_lock_a");
   {
     const OutputLock lock = OutputLock::acquire(dir.string(), "dayphoton run p.yaml");
     EXPECT_FALSE(lock.taken_over());
@@ -48,7 +43,7 @@ TEST(OutputLock, RecordsTheHolderAndRemovesTheFileOnRelease) {
 }
 
 TEST(OutputLock, SecondTakerIsRefusedNamingTheHolder) {
-  const fs::path dir = fresh_dir("output_lock_b");
+  const fs::path dir = empty_dir("output_lock_b");
   const OutputLock first = OutputLock::acquire(dir.string(), "dayphoton run a.yaml");
   try {
     OutputLock::acquire(dir.string(), "dayphoton run b.yaml");
@@ -65,7 +60,7 @@ TEST(OutputLock, SecondTakerIsRefusedNamingTheHolder) {
 }
 
 TEST(OutputLock, LockFileOfADeadProcessIsTakenOver) {
-  const fs::path dir = fresh_dir("output_lock_c");
+  const fs::path dir = empty_dir("output_lock_c");
   // What a killed run leaves: the file with its details, no flock held on it.
   std::ofstream(dir / OutputLock::FileName) << "pid 4194301\nhost elsewhere\nstarted 2026-01-02T03:04:05Z\ncommand dayphoton run old.yaml\n";
   const OutputLock lock = OutputLock::acquire(dir.string(), "dayphoton run new.yaml");

@@ -18,9 +18,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = test::process_temp_dir() / name;
-  fs::remove_all(dir);
+/// `name` below this process's own folder, empty but for an empty folder "out" (the output folder).
+fs::path root_with_output_folder(const std::string& name) {
+  const fs::path dir = test::fresh_dir(name);
   fs::create_directories(dir / "out");
   return dir;
 }
@@ -49,7 +49,7 @@ TEST(OutputManifest, StaysInsideRejectsEscapes) {
 }
 
 TEST(OutputManifest, BeginRemovesThePreviousRunsOutputsOnly) {
-  const fs::path root = fresh_dir("output_manifest_a");
+  const fs::path root = root_with_output_folder("output_manifest_a");
   const fs::path out = root / "out";
   write(out / "workplane" / "illuminance.csv", "old");
   write(out / "workplane" / "daylight_factor.csv", "old");
@@ -73,7 +73,7 @@ TEST(OutputManifest, BeginRemovesThePreviousRunsOutputsOnly) {
 }
 
 TEST(OutputManifest, RecordsEntriesAndAnInterruptedRunsFilesAreRemovedNextTime) {
-  const fs::path root = fresh_dir("output_manifest_b");
+  const fs::path root = root_with_output_folder("output_manifest_b");
   const fs::path out = root / "out";
   {
     OutputManifest m = OutputManifest::begin(out.string(), "first");
@@ -103,7 +103,7 @@ TEST(OutputManifest, RecordsEntriesAndAnInterruptedRunsFilesAreRemovedNextTime) 
 }
 
 TEST(OutputManifest, FinishRemovesTheMarker) {
-  const fs::path root = fresh_dir("output_manifest_c");
+  const fs::path root = root_with_output_folder("output_manifest_c");
   OutputManifest m = OutputManifest::begin((root / "out").string(), "run");
   m.finish();
   EXPECT_FALSE(fs::exists(root / "out" / OutputManifest::MarkerName));

@@ -142,12 +142,6 @@ ResultsModel full_model() {
   return m;
 }
 
-std::string temp_dir(const std::string& name) {
-  const fs::path p = test::process_temp_dir() / ("dayphoton_results_model_test_" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p.string();
-}
 
 std::string error_of(const std::string& text) {
   try {
@@ -162,7 +156,7 @@ std::string error_of(const std::string& text) {
 
 TEST(ResultsModel, RoundTripsEveryField) {
   const ResultsModel m = full_model();
-  const std::string dir = temp_dir("round_trip");
+  const std::string dir = test::empty_dir("results_model_round_trip");
   const std::string path = write_results_model(m, dir);
   EXPECT_EQ(path, (fs::path(dir) / "results.json").string());
   const ResultsModel back = read_results_model(dir);
@@ -265,7 +259,7 @@ TEST(ResultsModel, BadFieldsAreErrorsNamingTheKey) {
 }
 
 TEST(ResultsModel, AFolderWithoutResultsJsonSaysToRunAgain) {
-  const std::string dir = temp_dir("old_run");
+  const std::string dir = test::empty_dir("results_model_old_run");
   std::ofstream(dir + "/summary.json") << "{}";
   try {
     read_results_model(dir);
@@ -306,7 +300,7 @@ TEST(ResultsModelBuilder, ElevationsGetOnlyTheWindowsOfTheirWall) {
 
 // The one typed reader of value tables: the column the model names, for the grid's sensors.
 TEST(ResultsModel, ValuesAreReadFromTheColumnTheModelNames) {
-  const std::string dir = temp_dir("values");
+  const std::string dir = test::empty_dir("results_model_values");
   fs::create_directories(dir + "/grid");
   std::ofstream(dir + "/grid/metrics.csv") << "index,x,y,z,da300_percent,other\n0,0,0,0.8,10.5,1\n1,1,0,0.8,20.25,2\n";
   GridResult g;

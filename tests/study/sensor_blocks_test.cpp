@@ -25,7 +25,9 @@
 #include <optional>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,7 +42,7 @@
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/simulation_plan.h"
 #include "dayphoton/weather/hourly_weather.h"
-#include "../temp_folder.h"
+#include "in_process_study.h"
 
 namespace dayphoton::study {
 namespace {
@@ -234,10 +236,21 @@ struct CountingGridStep {
   }
 };
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = test::process_temp_dir() / name;
-  fs::remove_all(dir);
-  return dir;
+using test::fresh_dir;
+
+/// Every rank of `errors` failed, with a DistributedJobError that `check` examines.
+void expect_every_rank_failed(const std::vector<std::exception_ptr>& errors,
+                              const std::function<void(const dist::DistributedJobError&)>& check) {
+  for (std::size_t r = 0; r < errors.size(); ++r) {
+    ASSERT_TRUE(errors[r]) << "rank " << r;
+    try {
+      std::rethrow_exception(errors[r]);
+    } catch (const dist::DistributedJobError& x) {
+      check(x);
+    } catch (const std::exception& x) {
+      ADD_FAILURE() << "rank " << r << ": not a DistributedJobError: " << x.what();
+    }
+  }
 }
 
 /// Runs a CountingGridStep of `sensors` rows on `ranks` in-process ranks with blocks of 8.
@@ -247,7 +260,7 @@ void expect_distributed_step_is_whole(int ranks, std::size_t sensors) {
   const std::string name = "sensor_blocks_" + std::to_string(ranks) + "_" + std::to_string(sensors);
   std::atomic<int> whole{0}, blocks{0};
   std::vector<std::string> taken(static_cast<std::size_t>(ranks));
-  const auto errors = dist::test::run_ranks(ranks, [&](dist::Communicator& comm) {
+  test::run_ranks_expecting_no_error(ranks, [&](dist::Communicator& comm) {
     const ArtifactStore store(fresh_dir(name + "_rank" + std::to_string(comm.rank())).string());
     const auto executor = make_distributed_executor(comm, store, false, 8);
     CountingGridStep g(sensors, "k");
@@ -260,14 +273,6 @@ void expect_distributed_step_is_whole(int ranks, std::size_t sensors) {
     if (comm.rank() == dist::RootRank ? stored.value_or("") != expected : stored.has_value())
       throw std::runtime_error("rank " + std::to_string(comm.rank()) + ": wrong store");
   });
-  for (const std::exception_ptr& e : errors)
-    if (e) {
-      try {
-        std::rethrow_exception(e);
-      } catch (const std::exception& x) {
-        ADD_FAILURE() << x.what();
-      }
-    }
   for (const std::string& t : taken) EXPECT_EQ(t, expected);
   const std::size_t block_count = sensor_blocks(sensors, 8).size();
   if (ranks > 1 && block_count >= 2) {
@@ -296,17 +301,10 @@ TEST(SensorBlocks, AFailingBlockFailsEveryRankNamingTheGridAndItsSensors) {
     CountingGridStep g(30, "k", 17);
     executor->run(g.step);
   });
-  for (const std::exception_ptr& e : errors) {
-    ASSERT_TRUE(e);
-    try {
-      std::rethrow_exception(e);
-    } catch (const dist::DistributedJobError& x) {
-      EXPECT_NE(std::string(x.what()).find("direct sun 3, sensors 16 to 23"), std::string::npos) << x.what();
-      EXPECT_EQ(x.job_message(), "no light at sensor 17");
-    } catch (const std::exception& x) {
-      ADD_FAILURE() << "not a DistributedJobError: " << x.what();
-    }
-  }
+  expect_every_rank_failed(errors, [](const dist::DistributedJobError& x) {
+    EXPECT_NE(std::string(x.what()).find("direct sun 3, sensors 16 to 23"), std::string::npos) << x.what();
+    EXPECT_EQ(x.job_message(), "no light at sensor 17");
+  });
 }
 
 /// An annual study of the Oakland weather file for synthetic coefficients (20 sensors), with
@@ -398,17 +396,10 @@ TEST(SensorBlocks, AnOverflowInTheAnnualMultiplyNamesTheGridsOwnSensor) {
     const auto executor = make_distributed_executor(comm, store, false, 8);
     annual_study_in_blocks(*executor, "grid", sky_c, ss.sky, settings);
   });
-  for (const std::exception_ptr& e : errors) {
-    ASSERT_TRUE(e);
-    try {
-      std::rethrow_exception(e);
-    } catch (const dist::DistributedJobError& x) {
-      EXPECT_EQ(x.job_message(), alone);
-      EXPECT_NE(std::string(x.what()).find("sensors 8 to 15"), std::string::npos) << x.what();
-    } catch (const std::exception& x) {
-      ADD_FAILURE() << "not a DistributedJobError: " << x.what();
-    }
-  }
+  expect_every_rank_failed(errors, [&](const dist::DistributedJobError& x) {
+    EXPECT_EQ(x.job_message(), alone);
+    EXPECT_NE(std::string(x.what()).find("sensors 8 to 15"), std::string::npos) << x.what();
+  });
 }
 
 TEST(SensorBlocks, TheAnnualMultiplyByBlocksIsTheWholeStudyOnRankZero) {

@@ -31,11 +31,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = test::process_temp_dir() / name;
-  fs::remove_all(dir);
-  return dir;
-}
+using test::fresh_dir;
 
 const std::string RoomYaml = test::side_lit_room_yaml("[4, 5, 3]", "3", 1000);
 

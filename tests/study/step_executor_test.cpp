@@ -32,11 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = test::process_temp_dir() / name;
-  fs::remove_all(dir);
-  return dir;
-}
+using test::fresh_dir;
 
 /// A step whose value is a string made from its index; counts its computations.
 Step counting_step(std::size_t index, std::string& slot, std::atomic<int>& computed) {

@@ -7,7 +7,6 @@
 // reported, not chased (accuracy_policy.h).
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -29,6 +28,7 @@
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/sun_accuracy_rounds.h"
+#include "counting_round_work.h"
 #include "in_process_study.h"
 
 namespace dayphoton::study {
@@ -230,30 +230,7 @@ TEST(SunAccuracyTarget, OneAndTwoThreadsGiveTheSameBytes) {
   EXPECT_EQ(a.variance[0], b.variance[0]);
 }
 
-/// A RoundWork that counts what passes through it (around the executor's).
-class CountingWork final : public RoundWork {
- public:
-  explicit CountingWork(RoundWork& inner) : m_inner(inner) {}
-  std::vector<engine::AttemptRange> trace(const std::vector<AttemptRequest>& requests, const RangeTracer& t) override {
-    requests_total += requests.size();
-    return m_inner.trace(requests, [&](std::size_t p, std::uint64_t first, std::uint64_t last) {
-      ++ranges;
-      return t(p, first, last);
-    });
-  }
-  std::vector<std::string> estimate(std::size_t sensors, const RowEstimator& rows, const std::string& name) override {
-    std::vector<std::string> b = m_inner.estimate(sensors, rows, name);
-    blocks += b.size();
-    return b;
-  }
-  double agreed(double value) override { return m_inner.agreed(value); }
-  std::size_t requests_total = 0;
-  std::atomic<int> ranges{0};
-  std::size_t blocks = 0;
-
- private:
-  RoundWork& m_inner;
-};
+using test::CountingWork;
 
 // The sun rounds on 1, 2 and 3 in-process ranks (the distributed executor's RoundWork, sensor
 // blocks of 8 of the 48 sensors) give every rank the one-process rounds' bytes: outcome,
