@@ -454,6 +454,85 @@ TEST(GatherPhotonRounds, OneAndTwoThreadsAndOneToThreeRanksGiveTheSameBytes) {
   }
 }
 
+
+/// A RoundWork whose clock (agreed, the one measurement the rounds' decisions read) runs as the
+/// local one's until an estimate named `after...` (e.g. "accuracy round 3,"): from then on it
+/// reads `late_s`, so the time budget is spent at a chosen point of the rounds, on any machine.
+class LateClockWork final : public RoundWork {
+ public:
+  LateClockWork(std::string after, double late_s) : m_after(std::move(after)), m_late_s(late_s) {}
+  std::vector<engine::AttemptRange> trace(const std::vector<AttemptRequest>& requests, const RangeTracer& t) override {
+    return m_inner->trace(requests, t);
+  }
+  std::vector<std::string> estimate(std::size_t sensors, const RowEstimator& rows, const std::string& name) override {
+    if (name.rfind(m_after, 0) == 0) late = true;
+    return m_inner->estimate(sensors, rows, name);
+  }
+  double agreed(double value) override { return late ? m_late_s : m_inner->agreed(value); }
+  bool late = false;
+
+ private:
+  std::unique_ptr<RoundWork> m_inner = make_local_round_work();
+  std::string m_after;
+  double m_late_s;
+};
+
+/// The photon-part office with two gathered grids of 8 work-plane sensors each (sensors 24-31
+/// and 32-39, no receiver plane): with seed 3 both ask for photons after the pilot; after that
+/// round `near` meets the target at 1024 rays in one gather round while `far` (2.01 %) asks
+/// for a third photon round, whose estimate at the project's rays is above the target for both.
+Office two_gathered_grids() {
+  Office office(true, true);
+  office.photons_per_source = PhotonPartReference;
+  office.direct_samples = PhotonPartDirectSamples;
+  const SensorGrid plane = office.description.grids[0];
+  office.description.grids.clear();
+  office.plane_of_grid.clear();
+  office.planes.clear();
+  for (const auto& [name, first] : {std::pair<const char*, std::ptrdiff_t>{"near", 24}, {"far", 32}}) {
+    SensorGrid g = plane;
+    g.name = name;
+    g.points.assign(plane.points.begin() + first, plane.points.begin() + first + 8);
+    office.description.grids.push_back(g);
+    office.plane_of_grid.push_back(-1);
+  }
+  return office;
+}
+
+// The time budget spent after a later photon round (for the other grid): neither grid is
+// gathered again, and each keeps its last gather estimate; its reported accuracy, rays and
+// rounds are that estimate's, and the grid that had met the target still meets it.
+TEST(GatherPhotonRounds, NoTimeToGatherAgainKeepsTheLastGatherEstimate) {
+  const Office office = two_gathered_grids();
+  AccuracyGoal goal;
+  goal.target_percent = PhotonPartTarget;
+  goal.max_seconds = 1e6;  // reached only by the late clock
+  LateClockWork work("accuracy round 3,", 1e9);
+  std::vector<std::string> lines;
+  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(3, PhotonPartRays), goal, [&](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    lines.push_back(line);
+  }, work);
+  const AccuracyOutcome& o = r.outcome;
+  ASSERT_TRUE(work.late) << "no third photon round";
+  ASSERT_EQ(o.gather.size(), 2u);
+  EXPECT_EQ(o.rounds, 3u);
+  for (std::size_t g = 0; g < 2; ++g) {
+    SCOPED_TRACE(office.description.grids[g].name);
+    const GatherAccuracy& a = o.gather[g];
+    // Each grid's estimate is the one of its gather round on the second round's photons.
+    EXPECT_EQ(a.rays, 1024);
+    EXPECT_EQ(a.rounds, 1u);
+    EXPECT_EQ(o.reached_percent[g], reached_from_coefficients(r.coefficients[g], office));
+    EXPECT_EQ(o.grid_status[g], o.reached_percent[g] <= PhotonPartTarget ? "met" : "above target");
+  }
+  EXPECT_EQ(o.gather[0].stop_reason, "target met");
+  EXPECT_EQ(o.grid_status[0], "met");
+  EXPECT_EQ(o.gather[1].stop_reason, "time budget");
+  EXPECT_EQ(o.grid_status[1], "above target");
+  EXPECT_EQ(o.stop_reason, "time budget");
+}
+
 // ---- more shadow rays for a gathered grid's direct part --------------------------------------
 
 // The gathered grid alone at 1 shadow ray per bin: after its gather rounds its sensors are

@@ -199,9 +199,20 @@ struct AccuracyCase {
   double horizontal_illuminance_lux = 0;
 };
 
+/// A gathered grid's last estimate at more gather rays than the photon rounds' (its gather
+/// rounds' result): kept while later photon rounds serve other grids, so that when it cannot be
+/// gathered again its reported accuracy, rays and rounds still describe the estimate written
+/// (gather_accuracy_rounds.h).
+struct GatheredEstimate {
+  engine::DaylightCoefficients coefficients;
+  double reached_percent = 0;
+  GatherAccuracy accuracy;  ///< accuracy.rays == 0: none yet
+};
+
 struct AccuracyResult {
   std::vector<engine::DaylightCoefficients> coefficients;  ///< per grid
   AccuracyOutcome outcome;
+  std::vector<GatheredEstimate> gathered;  ///< per grid, filled by the gather rounds (not cached)
 };
 
 /// The rounds of one case; `log` receives one line per round and the stop. The tracing (the
