@@ -26,6 +26,13 @@ double cost_per_attempt(const engine::SourcePhotonRecord& r) {
 
 }  // namespace
 
+std::string direct_rays_limit_words(int samples_per_bin) {
+  return std::to_string(samples_per_bin) + " shadow rays per bin, " +
+         (samples_per_bin > MaxDirectSamplesPerBin
+              ? "the project's own count (above the rounds' limit of " + std::to_string(MaxDirectSamplesPerBin) + ")"
+              : std::string("the rounds' limit"));
+}
+
 std::string round_number(double x, const char* format) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, format, x);
@@ -189,7 +196,7 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
           stop = "direct rays limit";
           log(text.name + ": " + std::to_string(direct_plan.sensors_at_limit) +
               " sensor(s) miss the target by their direct component alone at " +
-              std::to_string(MaxDirectSamplesPerBin) + " shadow rays per bin, the rounds' limit");
+              direct_rays_limit_words(direct_plan.samples_at_limit));
         } else {
           stop = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
           if (plan.sensors_direct_limited > 0)

@@ -19,6 +19,7 @@
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/plan_policy.h"
 #include "dayphoton/study/sensor_blocks.h"
+#include "accuracy_round_loop.h"
 #include "lazy_value.h"
 
 namespace dayphoton::study {
@@ -386,7 +387,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           a.stop_reason = "direct rays limit";
           log("accuracy: grid " + grids[g].name + ": " + std::to_string(d.sensors_at_limit) +
               " sensor(s) miss the target by their direct component alone at " +
-              std::to_string(MaxDirectSamplesPerBin) + " shadow rays per bin, the rounds' limit");
+              direct_rays_limit_words(d.samples_at_limit));
           break;
         }
       }

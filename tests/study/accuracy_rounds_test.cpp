@@ -108,9 +108,13 @@ TEST(AccuracyRounds, DirectRoundRaisesWhatPhotonsCannotReduce) {
   const DirectRoundPlan c = one_sensor_direct_round(2e-4, 1e-5, 100.0, MaxDirectSamplesPerBin);
   EXPECT_FALSE(c.raised());
   EXPECT_EQ(c.sensors_at_limit, 1u);
+  EXPECT_EQ(c.samples_at_limit, MaxDirectSamplesPerBin);
   const DirectRoundPlan d = one_sensor_direct_round(2e-4, 1e-5, 100.0, 400);
   EXPECT_FALSE(d.raised());
   EXPECT_EQ(d.samples_per_bin, std::vector<int>{400});
+  EXPECT_EQ(d.sensors_at_limit, 1u);
+  EXPECT_EQ(d.samples_at_limit, 400);  // the count the sensor is at, not the rounds' limit
+  EXPECT_EQ(a.samples_at_limit, 0);
 }
 
 // Direct 0.6e-4 and photons 0.6e-4 (1.1 % against the aim of 1 %): photons alone need

@@ -605,25 +605,44 @@ TEST(GatherDirectRounds, DirectPartAboveTheTargetGetsMoreShadowRays) {
 }
 
 // Shadow rays already at the rounds' limit: the grid is not raised, and when only its direct
-// part keeps it above the target its gather stop (and the case's) is `direct rays limit`.
+// part keeps it above the target its gather stop (and the case's) is `direct rays limit`; the
+// log names the count the sensors are at, the limit or a project's own count above it. The
+// two sensors of the gathered grid whose direct part alone at the limit is above the target
+// (sensors 0 and 5; 200 photons per source, since photons do not change that), so the stop
+// comes at the grid's first estimate.
 TEST(GatherDirectRounds, AtTheLimitTheStopIsDirectRaysLimit) {
-  Office office(true, false);
-  office.direct_samples = MaxDirectSamplesPerBin;
-  AccuracyGoal goal;
-  goal.target_percent = DirectLimitTarget;
-  std::vector<std::string> lines;
-  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(6, DirectPartRays), goal, [&](const std::string& line) {
-    std::printf("%s\n", line.c_str());
-    lines.push_back(line);
-  });
-  const AccuracyOutcome& o = r.outcome;
-  ASSERT_EQ(o.gather.size(), 1u);
-  for (const std::string& l : lines) EXPECT_EQ(l.find(": shadow rays per bin "), std::string::npos) << l;
-  EXPECT_EQ(o.direct_samples_per_bin, std::vector<int>({MaxDirectSamplesPerBin}));
-  EXPECT_EQ(o.gather[0].stop_reason, "direct rays limit");
-  EXPECT_EQ(o.grid_status[0], "above target");
-  EXPECT_EQ(o.stop_reason, "direct rays limit");
-  EXPECT_GT(o.reached_percent[0], DirectLimitTarget);
+  for (const int samples : {MaxDirectSamplesPerBin, 400}) {
+    SCOPED_TRACE(std::to_string(samples) + " shadow rays per bin");
+    Office office(true, false);
+    office.photons_per_source = 200;
+    office.direct_samples = std::size_t(samples);
+    std::vector<SensorPoint>& points = office.description.grids.at(0).points;
+    points = {points.at(0), points.at(5)};
+    AccuracyGoal goal;
+    goal.target_percent = DirectLimitTarget;
+    std::vector<std::string> lines;
+    const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(6, DirectPartRays), goal, [&](const std::string& line) {
+      std::printf("%s\n", line.c_str());
+      lines.push_back(line);
+    });
+    const AccuracyOutcome& o = r.outcome;
+    ASSERT_EQ(o.gather.size(), 1u);
+    for (const std::string& l : lines) EXPECT_EQ(l.find(": shadow rays per bin "), std::string::npos) << l;
+    EXPECT_EQ(o.direct_samples_per_bin, std::vector<int>({samples}));
+    EXPECT_EQ(o.gather[0].stop_reason, "direct rays limit");
+    EXPECT_EQ(o.grid_status[0], "above target");
+    EXPECT_EQ(o.stop_reason, "direct rays limit");
+    EXPECT_GT(o.reached_percent[0], DirectLimitTarget);
+    const std::string words =
+        samples > MaxDirectSamplesPerBin
+            ? " by their direct component alone at 400 shadow rays per bin, the project's own count (above the "
+              "rounds' limit of " + std::to_string(MaxDirectSamplesPerBin) + ")"
+            : " by their direct component alone at " + std::to_string(MaxDirectSamplesPerBin) +
+                  " shadow rays per bin, the rounds' limit";
+    std::size_t named = 0;
+    for (const std::string& l : lines) named += l.find(words) != std::string::npos;
+    EXPECT_EQ(named, 1u) << words;
+  }
 }
 
 // The gather's fixed part (engine/final_gather.h, "How the variance falls with the rays": the

@@ -144,6 +144,10 @@ struct DirectRoundPlan {
   /// Sensors above their budget by the direct variance alone in grids already at
   /// MaxDirectSamplesPerBin (plan_policy.h): neither photons nor the rounds' rays help them.
   std::size_t sensors_at_limit = 0;
+  /// The shadow rays per bin those sensors are at (the largest over their grids, rounded up to a
+  /// square as the direct component traces them): MaxDirectSamplesPerBin, or a project's own
+  /// count above it; 0 when sensors_at_limit is 0.
+  int samples_at_limit = 0;
   bool raised() const { return rays > 0; }
 };
 
