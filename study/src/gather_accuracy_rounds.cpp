@@ -332,18 +332,12 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
         a.stop_reason = "target met";
         break;
       }
-      if (rounds_now >= GatherMaxRounds) {
-        a.stop_reason = "round limit";
-        break;
-      }
-      if (a.rays >= GatherMaxRays) {
-        a.stop_reason = "gather ray limit";
-        break;
-      }
       const GatherRayPlan plan = next_gather_rays(now.df_percent, now.direct_variance, now.gather_variance,
                                                   now.fixed_variance, a.rays, AccuracyRoundAim * goal.target_percent,
                                                   AccuracyPercentile);
-      if (plan.rays <= a.rays && plan.sensors_direct_limited > 0 && raise_direct) {
+      // No more gather rays (none would help, or the ray or round limit): the direct part's raise.
+      const bool no_more_rays = plan.rays <= a.rays || rounds_now >= GatherMaxRounds || a.rays >= GatherMaxRays;
+      if (no_more_rays && plan.sensors_direct_limited > 0 && raise_direct) {
         // More shadow rays by the photon rounds' rule (header comment), for this grid alone.
         GridVariance v;
         v.df_percent = now.df_percent;
@@ -383,13 +377,21 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
               " %)");
           continue;
         }
-        if (d.sensors_at_limit > 0 && plan.sensors_photon_limited == 0) {
+        if (d.sensors_at_limit > 0 && plan.sensors_photon_limited == 0 && plan.rays <= a.rays) {
           a.stop_reason = "direct rays limit";
           log("accuracy: grid " + grids[g].name + ": " + std::to_string(d.sensors_at_limit) +
               " sensor(s) miss the target by their direct component alone at " +
               direct_rays_limit_words(d.samples_at_limit));
           break;
         }
+      }
+      if (rounds_now >= GatherMaxRounds) {
+        a.stop_reason = "round limit";
+        break;
+      }
+      if (a.rays >= GatherMaxRays) {
+        a.stop_reason = "gather ray limit";
+        break;
       }
       if (plan.rays <= a.rays) {
         a.stop_reason = plan.sensors_photon_limited > 0 ? "gather photon part" : "direct component";

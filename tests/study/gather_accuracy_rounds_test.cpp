@@ -604,6 +604,37 @@ TEST(GatherDirectRounds, DirectPartAboveTheTargetGetsMoreShadowRays) {
   }
 }
 
+// A grid at the gather ray limit from the start (the project's rays are GatherMaxRays) whose
+// direct part, at 1 shadow ray per bin, keeps it above the target: more rays are out of reach,
+// so its shadow rays are raised (not the stop `gather ray limit`), and it meets the target at
+// the same rays, with no gather round. Two of the gathered grid's sensors, 0 and 5, keep the
+// gathers at 65536 rays cheap.
+TEST(GatherDirectRounds, AtTheGatherRayLimitTheDirectPartIsStillRaised) {
+  Office office(true, false);
+  office.direct_samples = 1;
+  std::vector<SensorPoint>& points = office.description.grids.at(0).points;
+  points = {points.at(0), points.at(5)};
+  AccuracyGoal goal;
+  goal.target_percent = DirectPartTarget;
+  std::vector<std::string> lines;
+  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(6, GatherMaxRays), goal, [&](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    lines.push_back(line);
+  });
+  const AccuracyOutcome& o = r.outcome;
+  ASSERT_EQ(o.gather.size(), 1u);
+  std::size_t raises = 0;
+  for (const std::string& l : lines) raises += l.find(": shadow rays per bin 1 -> ") != std::string::npos;
+  EXPECT_GE(raises, 1u) << "the gather rounds did not raise the shadow rays at the ray limit";
+  EXPECT_GT(o.direct_samples_per_bin.at(0), 1);
+  EXPECT_EQ(o.gather[0].rays, GatherMaxRays);
+  EXPECT_EQ(o.gather[0].rounds, 0u);
+  EXPECT_EQ(o.gather[0].stop_reason, "target met");
+  EXPECT_EQ(o.grid_status[0], "met");
+  EXPECT_LE(o.reached_percent[0], DirectPartTarget);
+  EXPECT_DOUBLE_EQ(o.reached_percent[0], reached_from_coefficients(r.coefficients[0], office));
+}
+
 // Shadow rays already at the rounds' limit: the grid is not raised, and when only its direct
 // part keeps it above the target its gather stop (and the case's) is `direct rays limit`; the
 // log names the count the sensors are at, the limit or a project's own count above it. The
