@@ -457,10 +457,12 @@ TEST(GatherPhotonRounds, OneAndTwoThreadsAndOneToThreeRanksGiveTheSameBytes) {
 
 /// A RoundWork whose clock (agreed, the one measurement the rounds' decisions read) runs as the
 /// local one's until an estimate named `after...` (e.g. "accuracy round 3,"): from then on it
-/// reads `late_s`, so the time budget is spent at a chosen point of the rounds, on any machine.
+/// reads `late_s`, so the time budget is spent at a chosen point of the rounds, on any machine;
+/// with `late_readings` > 0 only that many readings are late, then it runs as the local one's.
 class LateClockWork final : public RoundWork {
  public:
-  LateClockWork(std::string after, double late_s) : m_after(std::move(after)), m_late_s(late_s) {}
+  LateClockWork(std::string after, double late_s, int late_readings = 0)
+      : m_after(std::move(after)), m_late_s(late_s), m_left(late_readings), m_limited(late_readings > 0) {}
   std::vector<engine::AttemptRange> trace(const std::vector<AttemptRequest>& requests, const RangeTracer& t) override {
     return m_inner->trace(requests, t);
   }
@@ -468,13 +470,19 @@ class LateClockWork final : public RoundWork {
     if (name.rfind(m_after, 0) == 0) late = true;
     return m_inner->estimate(sensors, rows, name);
   }
-  double agreed(double value) override { return late ? m_late_s : m_inner->agreed(value); }
+  double agreed(double value) override {
+    if (!late || (m_limited && m_left == 0)) return m_inner->agreed(value);
+    if (m_limited) --m_left;
+    return m_late_s;
+  }
   bool late = false;
 
  private:
   std::unique_ptr<RoundWork> m_inner = make_local_round_work();
   std::string m_after;
   double m_late_s;
+  int m_left;
+  bool m_limited;
 };
 
 /// The photon-part office with two gathered grids of 8 work-plane sensors each (sensors 24-31
@@ -528,6 +536,46 @@ TEST(GatherPhotonRounds, NoTimeToGatherAgainKeepsTheLastGatherEstimate) {
   }
   EXPECT_EQ(o.gather[0].stop_reason, "target met");
   EXPECT_EQ(o.grid_status[0], "met");
+  EXPECT_EQ(o.gather[1].stop_reason, "time budget");
+  EXPECT_EQ(o.grid_status[1], "above target");
+  EXPECT_EQ(o.stop_reason, "time budget");
+}
+
+// A raise of the shadow rays that the time budget has no room for stops the grids the photons
+// serve on `time budget`, and the gathered grids' photon round is refused for the same reason.
+// The work plane cut to its sensor 0, whose direct part at 1 shadow ray per bin alone is above
+// the 2 % target (photons cannot help it: the round is the raise or nothing); the gathered grid
+// (the photon-part case) asks for photons after the pilot. The clock reads late exactly once,
+// when the rounds predict the raise's time after the pilot, and on time otherwise.
+TEST(GatherPhotonRounds, ATimeBudgetRefusingAShadowRayRaiseRefusesTheGatheredGridsPhotonRound) {
+  Office office(true, true);
+  office.photons_per_source = PhotonPartReference;
+  office.direct_samples = 1;
+  std::vector<SensorPoint>& plane_points = office.description.grids.at(0).points;
+  plane_points.resize(1);
+  AccuracyGoal goal;
+  goal.target_percent = PhotonPartTarget;
+  goal.max_seconds = 1e6;
+  LateClockWork work("accuracy round 1, grid gathered", 1e9, 1);
+  std::vector<std::string> lines;
+  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(3, PhotonPartRays), goal, [&](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    lines.push_back(line);
+  }, work);
+  auto logged_line = [&](const std::string& words) {
+    for (const std::string& l : lines)
+      if (l.find(words) != std::string::npos) return true;
+    return false;
+  };
+  const AccuracyOutcome& o = r.outcome;
+  EXPECT_TRUE(logged_line("accuracy: no raise of shadow rays in round 2: the time budget leaves no room for it"));
+  EXPECT_TRUE(logged_line("ask for more photons for the gather's photon part"));
+  EXPECT_TRUE(logged_line("accuracy: no round 2 for the gathered grids' photon part: the time budget"));
+  EXPECT_EQ(o.rounds, 1u);
+  EXPECT_EQ(o.final_attempts, o.pilot_attempts);
+  EXPECT_EQ(o.direct_samples_per_bin.at(0), 1);
+  EXPECT_EQ(o.grid_status.at(0), "above target");
+  ASSERT_EQ(o.gather.size(), 2u);
   EXPECT_EQ(o.gather[1].stop_reason, "time budget");
   EXPECT_EQ(o.grid_status[1], "above target");
   EXPECT_EQ(o.stop_reason, "time budget");
