@@ -66,13 +66,15 @@ std::string gather_why_and_what_to_do(const Reached& r) {
            "(<code>simulation.photons_per_bin</code>, instead of the accuracy target) above the photons the "
            "rounds traced, or ask for a looser target.";
   if (r.gather_stop_reason == "photon budget")
-    return gathered + ", and what remains of their error comes from the photons the gather rays read; the "
-           "photon rounds traced more photons for it until the photon budget was reached. What to do: raise "
+    return gathered + ", and what remains of their error comes from the photons the gather rays read, which "
+           "more gather rays do not reduce; more photons would, but the photon budget left no room for them. "
+           "What to do: raise "
            "<code>simulation.accuracy.max_photons</code> (by default <code>limits.photons</code>), or ask for a "
            "looser target.";
   if (r.gather_stop_reason == "photon round limit")
-    return gathered + ", and what remains of their error comes from the photons the gather rays read; the "
-           "photon rounds traced more photons for it until their limit of " +
+    return gathered + ", and what remains of their error comes from the photons the gather rays read, which "
+           "more gather rays do not reduce; more photons would, but the photon rounds had reached their limit "
+           "of " +
            std::to_string(study::MaxAccuracyRounds) +
            " rounds. What to do: give fixed photon counts (<code>simulation.photons_per_bin</code>, instead of "
            "the accuracy target) above the photons the rounds traced, or ask for a looser target.";

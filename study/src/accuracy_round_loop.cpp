@@ -26,6 +26,13 @@ double cost_per_attempt(const engine::SourcePhotonRecord& r) {
 
 }  // namespace
 
+std::string direct_rays_limit_words(int samples_per_bin) {
+  return std::to_string(samples_per_bin) + " shadow rays per bin, " +
+         (samples_per_bin > MaxDirectSamplesPerBin
+              ? "the project's own count (above the rounds' limit of " + std::to_string(MaxDirectSamplesPerBin) + ")"
+              : std::string("the rounds' limit"));
+}
+
 std::string round_number(double x, const char* format) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, format, x);
@@ -160,7 +167,8 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
     bool direct_timed_out = false;  // a raise the time budget left no room for
     if (m.met) {
       stop = met_stop_reason(m.grid_status);
-    } else if (!pending.empty()) {
+    } else if (!pending.empty() && (pending != "photon budget" || !direct.plan || round >= MaxAccuracyRounds)) {
+      // A photon budget spent leaves the shadow rays their rounds (below); any other cut ends them.
       stop = pending;
     } else if (round >= MaxAccuracyRounds) {
       stop = "round limit";
@@ -182,14 +190,16 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
         if (direct_plan.raised()) plan = direct_plan.photons;
       }
       plan_next(plan.scale);
-      if (!(more_attempts > 0) && !direct_plan.raised()) {
+      if (!pending.empty() && !direct_plan.raised()) {
+        stop = pending;  // the photon budget is spent and no raise of shadow rays is planned
+      } else if (!(more_attempts > 0) && !direct_plan.raised()) {
         if (direct_timed_out) {
           stop = "time budget";
         } else if (direct_plan.sensors_at_limit > 0) {
           stop = "direct rays limit";
           log(text.name + ": " + std::to_string(direct_plan.sensors_at_limit) +
               " sensor(s) miss the target by their direct component alone at " +
-              std::to_string(MaxDirectSamplesPerBin) + " shadow rays per bin, the rounds' limit");
+              direct_rays_limit_words(direct_plan.samples_at_limit));
         } else {
           stop = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
           if (plan.sensors_direct_limited > 0)
@@ -252,7 +262,7 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
         for (std::size_t p = 0; p < n; ++p) next[p] = records[p].attempts;
         pending = cut;
         log(text.name + ": round " + std::to_string(round + 1) + " raises the shadow rays only: the " + cut +
-            " leaves no room for photons; the last round");
+            " leaves no room for photons" + (cut == "photon budget" ? "" : "; the last round"));
       } else if (share < 0.05) {
         log(text.name + ": no round " + std::to_string(round + 1) + ": the " + cut + " leaves room for " +
             round_number(100.0 * share) + " % of it");

@@ -137,6 +137,11 @@ std::string round_outcome_sentence(const std::string& measure, double reached_pe
                                    const std::string& detail, const std::string& stop_reason, std::size_t rounds,
                                    std::uint64_t photons);
 
+/// "256 shadow rays per bin, the rounds' limit", or for a project's own count above
+/// MaxDirectSamplesPerBin "400 shadow rays per bin, the project's own count (above the rounds'
+/// limit of 256)": the words of a "direct rays limit" log line.
+std::string direct_rays_limit_words(int samples_per_bin);
+
 /// "%.3g" and the like, for the log lines.
 std::string round_number(double x, const char* format = "%.3g");
 

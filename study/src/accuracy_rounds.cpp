@@ -209,6 +209,7 @@ DirectRoundPlan next_direct_round(const std::vector<GridVariance>& grids, const 
     const int k = static_cast<int>(std::ceil(std::sqrt(double(std::max(1, samples_per_bin[g])))));
     if (k >= max_k) {
       plan.sensors_at_limit += limited;
+      if (limited > 0) plan.samples_at_limit = std::max(plan.samples_at_limit, k * k);
       continue;
     }
     // k' = 2k, else 4k, so that every such sensor's predicted direct variance is half its budget.

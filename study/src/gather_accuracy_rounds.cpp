@@ -19,6 +19,7 @@
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/plan_policy.h"
 #include "dayphoton/study/sensor_blocks.h"
+#include "accuracy_round_loop.h"
 #include "lazy_value.h"
 
 namespace dayphoton::study {
@@ -90,6 +91,26 @@ std::vector<double> relative_stderr_percent(const std::vector<double>& df_percen
                       ? 100.0 * std::sqrt(std::max(0.0, direct_variance[i] + gather_variance[i])) / df_percent[i]
                       : 0.0;
   return relative;
+}
+
+/// Grid g, which the time budget leaves no gather round on the photons traced since its last
+/// gather estimate: that estimate stands, with its accuracy, rays and rounds (the photon rounds'
+/// estimate at the project's rays if it has none), and its stop is the time budget unless it
+/// had met the target.
+void keep_last_gather(AccuracyResult& result, std::size_t g, double target_percent) {
+  AccuracyOutcome& outcome = result.outcome;
+  GatherAccuracy& a = outcome.gather[g];
+  GatheredEstimate& last = result.gathered[g];
+  if (last.accuracy.rays > 0) {
+    result.coefficients[g] = std::move(last.coefficients);
+    outcome.reached_percent[g] = last.reached_percent;
+    a = last.accuracy;
+    last = GatheredEstimate{};
+  } else {
+    a.rounds = 0;  // a.rays is the project's: the photon rounds' estimate is the one written
+  }
+  if (!(outcome.reached_percent[g] <= target_percent)) a.stop_reason = "time budget";
+  outcome.grid_status[g] = outcome.reached_percent[g] <= target_percent ? "met" : "above target";
 }
 
 }  // namespace
@@ -186,6 +207,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
   AccuracyOutcome& outcome = result.outcome;
   // After a photon round asked for by an earlier call, each grid starts from the rays it reached.
   if (outcome.gather.size() != grids.size()) outcome.gather.assign(grids.size(), GatherAccuracy{});
+  if (result.gathered.size() != grids.size()) result.gathered.assign(grids.size(), GatheredEstimate{});
   const std::string photon_stop = outcome.stop_reason;
   GatherPhotonRequest request;
   request.scale.assign(n, 1.0);
@@ -272,14 +294,17 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     a.first_rays = a.rays = first_rays;  // the photon rounds' estimate, until another replaces it
     a.stop_reason.clear();
     if (outcome.reached_percent[g] <= goal.target_percent) {
+      // The photon rounds' estimate at the project's rays is the one written: no gather round.
+      a.rounds = 0;
       a.stop_reason = "target met";
       outcome.grid_status[g] = "met";
+      result.gathered[g] = GatheredEstimate{};
       continue;
     }
     if (goal.max_seconds > 0 && work.agreed(elapsed_s + seconds_since(start)) >= goal.max_seconds) {
-      a.stop_reason = "time budget";
-      outcome.grid_status[g] = "above target";
-      log("accuracy: grid " + grids[g].name + ": no gather round: the time budget is spent");
+      log("accuracy: grid " + grids[g].name + ": no gather round: the time budget is spent" +
+          (result.gathered[g].accuracy.rays > 0 ? "; its last gather estimate stands" : ""));
+      keep_last_gather(result, g, goal.target_percent);
       continue;
     }
     // The photon rounds' estimate again, with its fixed part (the same coefficients: the
@@ -307,18 +332,12 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
         a.stop_reason = "target met";
         break;
       }
-      if (rounds_now >= GatherMaxRounds) {
-        a.stop_reason = "round limit";
-        break;
-      }
-      if (a.rays >= GatherMaxRays) {
-        a.stop_reason = "gather ray limit";
-        break;
-      }
       const GatherRayPlan plan = next_gather_rays(now.df_percent, now.direct_variance, now.gather_variance,
                                                   now.fixed_variance, a.rays, AccuracyRoundAim * goal.target_percent,
                                                   AccuracyPercentile);
-      if (plan.rays <= a.rays && plan.sensors_direct_limited > 0 && raise_direct) {
+      // No more gather rays (none would help, or the ray or round limit): the direct part's raise.
+      const bool no_more_rays = plan.rays <= a.rays || rounds_now >= GatherMaxRounds || a.rays >= GatherMaxRays;
+      if (no_more_rays && plan.sensors_direct_limited > 0 && raise_direct) {
         // More shadow rays by the photon rounds' rule (header comment), for this grid alone.
         GridVariance v;
         v.df_percent = now.df_percent;
@@ -358,13 +377,21 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
               " %)");
           continue;
         }
-        if (d.sensors_at_limit > 0 && plan.sensors_photon_limited == 0) {
+        if (d.sensors_at_limit > 0 && plan.sensors_photon_limited == 0 && plan.rays <= a.rays) {
           a.stop_reason = "direct rays limit";
           log("accuracy: grid " + grids[g].name + ": " + std::to_string(d.sensors_at_limit) +
               " sensor(s) miss the target by their direct component alone at " +
-              std::to_string(MaxDirectSamplesPerBin) + " shadow rays per bin, the rounds' limit");
+              direct_rays_limit_words(d.samples_at_limit));
           break;
         }
+      }
+      if (rounds_now >= GatherMaxRounds) {
+        a.stop_reason = "round limit";
+        break;
+      }
+      if (a.rays >= GatherMaxRays) {
+        a.stop_reason = "gather ray limit";
+        break;
       }
       if (plan.rays <= a.rays) {
         a.stop_reason = plan.sensors_photon_limited > 0 ? "gather photon part" : "direct component";
@@ -418,8 +445,10 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
             " times the photons of " + std::to_string(growing) + " source(s)");
       }
     }
-    result.coefficients[g] = std::move(now.dc);
     outcome.grid_status[g] = outcome.reached_percent[g] <= goal.target_percent ? "met" : "above target";
+    result.gathered[g] = GatheredEstimate{};
+    if (a.rays > first_rays) result.gathered[g] = GatheredEstimate{now.dc, outcome.reached_percent[g], a};
+    result.coefficients[g] = std::move(now.dc);
   }
   settle_case_stop(outcome, photon_stop);
   if (request.grids.empty()) request.scale.clear();

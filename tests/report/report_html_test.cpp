@@ -635,8 +635,9 @@ TEST(ReportHtml, AGatheredGridsDirectRaysLimitNamesTheKeyToChange) {
 
 TEST(ReportHtml, AGatheredGridsPhotonPartStopNamesTheBudgetOrLimit) {
   // Gathered grids whose photon part (what more gather rays do not reduce) kept them above the
-  // target: the photon rounds traced more photons for them until the photon budget, or their
-  // round limit; each sentence names that stop and the key to change.
+  // target and the photon budget, or the photon rounds' limit, left no room for more photons:
+  // each sentence names that stop and the key to change, and does not claim photon rounds were
+  // traced for the grid (the budget may have refused its first request).
   const std::string dir = temp_dir("accuracy_gather_photons");
   ResultsModel m = results_model(dir);
   using Acc = DaylightFactorSummary::AccuracyReached;
@@ -649,15 +650,17 @@ TEST(ReportHtml, AGatheredGridsPhotonPartStopNamesTheBudgetOrLimit) {
   const std::string part = accuracy_statements(html);
   ASSERT_FALSE(part.empty());
   const std::string wall = accuracy_item(part, "data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
-  EXPECT_NE(wall.find("the photon rounds traced more photons for it until the photon budget was reached. What to "
-                      "do: raise <code>simulation.accuracy.max_photons</code>"),
+  EXPECT_NE(wall.find("more photons would, but the photon budget left no room for them. What to do: raise "
+                      "<code>simulation.accuracy.max_photons</code>"),
             std::string::npos)
       << wall;
+  EXPECT_EQ(wall.find("traced more photons for it"), std::string::npos) << wall;
   const std::string limit = accuracy_item(part, "data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
-  EXPECT_NE(limit.find("the photon rounds traced more photons for it until their limit of " +
+  EXPECT_NE(limit.find("more photons would, but the photon rounds had reached their limit of " +
                        std::to_string(study::MaxAccuracyRounds) + " rounds."),
             std::string::npos)
       << limit;
+  EXPECT_EQ(limit.find("traced more photons for it"), std::string::npos) << limit;
 }
 
 TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {

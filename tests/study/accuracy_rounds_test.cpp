@@ -108,9 +108,13 @@ TEST(AccuracyRounds, DirectRoundRaisesWhatPhotonsCannotReduce) {
   const DirectRoundPlan c = one_sensor_direct_round(2e-4, 1e-5, 100.0, MaxDirectSamplesPerBin);
   EXPECT_FALSE(c.raised());
   EXPECT_EQ(c.sensors_at_limit, 1u);
+  EXPECT_EQ(c.samples_at_limit, MaxDirectSamplesPerBin);
   const DirectRoundPlan d = one_sensor_direct_round(2e-4, 1e-5, 100.0, 400);
   EXPECT_FALSE(d.raised());
   EXPECT_EQ(d.samples_per_bin, std::vector<int>{400});
+  EXPECT_EQ(d.sensors_at_limit, 1u);
+  EXPECT_EQ(d.samples_at_limit, 400);  // the count the sensor is at, not the rounds' limit
+  EXPECT_EQ(a.samples_at_limit, 0);
 }
 
 // Direct 0.6e-4 and photons 0.6e-4 (1.1 % against the aim of 1 %): photons alone need
@@ -383,9 +387,39 @@ TEST(AccuracyTarget, DirectPartDominatesThenTheRoundsRaiseItsRaysAndMeetTheTarge
   EXPECT_LT(sum, bound);
 }
 
+// The photon budget spent does not end the shadow rays' rounds: at a 1 % target the direct
+// part still keeps some sensors above after the first raise (1 -> 16), and round 3 raises it
+// again (16 -> 64), shadow rays alone; the estimate is then the pilot's at 64 shadow rays.
+TEST(AccuracyTarget, APhotonBudgetSpentLeavesTheShadowRaysTheirFurtherRaises) {
+  AccuracyGoal goal;
+  goal.target_percent = 1.0;
+  goal.max_photons = 1000;
+  Office office(7);
+  office.direct_samples = 1;
+  std::vector<std::string> lines;
+  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(), goal, [&](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    lines.push_back(line);
+  });
+  std::size_t raise_only = 0;
+  for (const std::string& l : lines) raise_only += l.find("raises the shadow rays only: the photon budget") != std::string::npos;
+  EXPECT_EQ(raise_only, 2u);
+  EXPECT_EQ(r.outcome.stop_reason, "photon budget");
+  EXPECT_EQ(r.outcome.rounds, 3u);
+  EXPECT_EQ(r.outcome.final_attempts, r.outcome.pilot_attempts);
+  EXPECT_EQ(r.outcome.direct_samples_per_bin, std::vector<int>({64}));
+  office.direct_samples = 64;
+  goal.max_photons = 0;  // the pilot alone at the raised count: the same estimate
+  goal.target_percent = 100.0;
+  const AccuracyResult pilot = run_accuracy_rounds(office.accuracy_case(), goal, [](const std::string&) {});
+  EXPECT_EQ(pilot.outcome.rounds, 1u);
+  EXPECT_TRUE(encode_coefficients(pilot.coefficients[0]) == encode_coefficients(r.coefficients[0]));
+}
+
 // A photon budget below the pilot's photons leaves no room for photons after it, but the
-// shadow rays are no photons: round 2 raises them alone (no attempt after the pilot) and is
-// the last, stopping on the photon budget with the error the raise brought down.
+// shadow rays are no photons: round 2 raises them alone (no attempt after the pilot) and, the
+// direct part no longer keeping the grid above, is the last, stopping on the photon budget
+// with the error the raise brought down.
 TEST(AccuracyTarget, APhotonBudgetLeavesTheShadowRaysTheirRound) {
   AccuracyGoal goal;
   goal.target_percent = Target;
@@ -412,6 +446,7 @@ using test::CountingWork;
 // The rounds on 1, 2 and 3 in-process ranks (the distributed executor's RoundWork, sensor
 // blocks of 8 of the 48 sensors, a time budget checked) give every rank the one-process rounds' bytes: outcome,
 // attempts per source, coefficients with their variances. With several ranks the requests
+
 // go out in more ranges than there are requests (a big source split) and the grid in 6 blocks.
 TEST(AccuracyTarget, OneToThreeRanksGiveTheOneProcessBytes) {
   AccuracyGoal goal;

@@ -454,6 +454,133 @@ TEST(GatherPhotonRounds, OneAndTwoThreadsAndOneToThreeRanksGiveTheSameBytes) {
   }
 }
 
+
+/// A RoundWork whose clock (agreed, the one measurement the rounds' decisions read) runs as the
+/// local one's until an estimate named `after...` (e.g. "accuracy round 3,"): from then on it
+/// reads `late_s`, so the time budget is spent at a chosen point of the rounds, on any machine;
+/// with `late_readings` > 0 only that many readings are late, then it runs as the local one's.
+class LateClockWork final : public RoundWork {
+ public:
+  LateClockWork(std::string after, double late_s, int late_readings = 0)
+      : m_after(std::move(after)), m_late_s(late_s), m_left(late_readings), m_limited(late_readings > 0) {}
+  std::vector<engine::AttemptRange> trace(const std::vector<AttemptRequest>& requests, const RangeTracer& t) override {
+    return m_inner->trace(requests, t);
+  }
+  std::vector<std::string> estimate(std::size_t sensors, const RowEstimator& rows, const std::string& name) override {
+    if (name.rfind(m_after, 0) == 0) late = true;
+    return m_inner->estimate(sensors, rows, name);
+  }
+  double agreed(double value) override {
+    if (!late || (m_limited && m_left == 0)) return m_inner->agreed(value);
+    if (m_limited) --m_left;
+    return m_late_s;
+  }
+  bool late = false;
+
+ private:
+  std::unique_ptr<RoundWork> m_inner = make_local_round_work();
+  std::string m_after;
+  double m_late_s;
+  int m_left;
+  bool m_limited;
+};
+
+/// The photon-part office with two gathered grids of 8 work-plane sensors each (sensors 24-31
+/// and 32-39, no receiver plane): with seed 3 both ask for photons after the pilot; after that
+/// round `near` meets the target at 1024 rays in one gather round while `far` (2.01 %) asks
+/// for a third photon round, whose estimate at the project's rays is above the target for both.
+Office two_gathered_grids() {
+  Office office(true, true);
+  office.photons_per_source = PhotonPartReference;
+  office.direct_samples = PhotonPartDirectSamples;
+  const SensorGrid plane = office.description.grids[0];
+  office.description.grids.clear();
+  office.plane_of_grid.clear();
+  office.planes.clear();
+  for (const auto& [name, first] : {std::pair<const char*, std::ptrdiff_t>{"near", 24}, {"far", 32}}) {
+    SensorGrid g = plane;
+    g.name = name;
+    g.points.assign(plane.points.begin() + first, plane.points.begin() + first + 8);
+    office.description.grids.push_back(g);
+    office.plane_of_grid.push_back(-1);
+  }
+  return office;
+}
+
+// The time budget spent after a later photon round (for the other grid): neither grid is
+// gathered again, and each keeps its last gather estimate; its reported accuracy, rays and
+// rounds are that estimate's, and the grid that had met the target still meets it.
+TEST(GatherPhotonRounds, NoTimeToGatherAgainKeepsTheLastGatherEstimate) {
+  const Office office = two_gathered_grids();
+  AccuracyGoal goal;
+  goal.target_percent = PhotonPartTarget;
+  goal.max_seconds = 1e6;  // reached only by the late clock
+  LateClockWork work("accuracy round 3,", 1e9);
+  std::vector<std::string> lines;
+  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(3, PhotonPartRays), goal, [&](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    lines.push_back(line);
+  }, work);
+  const AccuracyOutcome& o = r.outcome;
+  ASSERT_TRUE(work.late) << "no third photon round";
+  ASSERT_EQ(o.gather.size(), 2u);
+  EXPECT_EQ(o.rounds, 3u);
+  for (std::size_t g = 0; g < 2; ++g) {
+    SCOPED_TRACE(office.description.grids[g].name);
+    const GatherAccuracy& a = o.gather[g];
+    // Each grid's estimate is the one of its gather round on the second round's photons.
+    EXPECT_EQ(a.rays, 1024);
+    EXPECT_EQ(a.rounds, 1u);
+    EXPECT_EQ(o.reached_percent[g], reached_from_coefficients(r.coefficients[g], office));
+    EXPECT_EQ(o.grid_status[g], o.reached_percent[g] <= PhotonPartTarget ? "met" : "above target");
+  }
+  EXPECT_EQ(o.gather[0].stop_reason, "target met");
+  EXPECT_EQ(o.grid_status[0], "met");
+  EXPECT_EQ(o.gather[1].stop_reason, "time budget");
+  EXPECT_EQ(o.grid_status[1], "above target");
+  EXPECT_EQ(o.stop_reason, "time budget");
+}
+
+// A raise of the shadow rays that the time budget has no room for stops the grids the photons
+// serve on `time budget`, and the gathered grids' photon round is refused for the same reason.
+// The work plane cut to its sensor 0, whose direct part at 1 shadow ray per bin alone is above
+// the 2 % target (photons cannot help it: the round is the raise or nothing); the gathered grid
+// (the photon-part case) asks for photons after the pilot. The clock reads late exactly once,
+// when the rounds predict the raise's time after the pilot, and on time otherwise.
+TEST(GatherPhotonRounds, ATimeBudgetRefusingAShadowRayRaiseRefusesTheGatheredGridsPhotonRound) {
+  Office office(true, true);
+  office.photons_per_source = PhotonPartReference;
+  office.direct_samples = 1;
+  std::vector<SensorPoint>& plane_points = office.description.grids.at(0).points;
+  plane_points.resize(1);
+  AccuracyGoal goal;
+  goal.target_percent = PhotonPartTarget;
+  goal.max_seconds = 1e6;
+  LateClockWork work("accuracy round 1, grid gathered", 1e9, 1);
+  std::vector<std::string> lines;
+  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(3, PhotonPartRays), goal, [&](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    lines.push_back(line);
+  }, work);
+  auto logged_line = [&](const std::string& words) {
+    for (const std::string& l : lines)
+      if (l.find(words) != std::string::npos) return true;
+    return false;
+  };
+  const AccuracyOutcome& o = r.outcome;
+  EXPECT_TRUE(logged_line("accuracy: no raise of shadow rays in round 2: the time budget leaves no room for it"));
+  EXPECT_TRUE(logged_line("ask for more photons for the gather's photon part"));
+  EXPECT_TRUE(logged_line("accuracy: no round 2 for the gathered grids' photon part: the time budget"));
+  EXPECT_EQ(o.rounds, 1u);
+  EXPECT_EQ(o.final_attempts, o.pilot_attempts);
+  EXPECT_EQ(o.direct_samples_per_bin.at(0), 1);
+  EXPECT_EQ(o.grid_status.at(0), "above target");
+  ASSERT_EQ(o.gather.size(), 2u);
+  EXPECT_EQ(o.gather[1].stop_reason, "time budget");
+  EXPECT_EQ(o.grid_status[1], "above target");
+  EXPECT_EQ(o.stop_reason, "time budget");
+}
+
 // ---- more shadow rays for a gathered grid's direct part --------------------------------------
 
 // The gathered grid alone at 1 shadow ray per bin: after its gather rounds its sensors are
@@ -525,26 +652,76 @@ TEST(GatherDirectRounds, DirectPartAboveTheTargetGetsMoreShadowRays) {
   }
 }
 
-// Shadow rays already at the rounds' limit: the grid is not raised, and when only its direct
-// part keeps it above the target its gather stop (and the case's) is `direct rays limit`.
-TEST(GatherDirectRounds, AtTheLimitTheStopIsDirectRaysLimit) {
+// A grid at the gather ray limit from the start (the project's rays are GatherMaxRays) whose
+// direct part, at 1 shadow ray per bin, keeps it above the target: more rays are out of reach,
+// so its shadow rays are raised (not the stop `gather ray limit`), and it meets the target at
+// the same rays, with no gather round. Two of the gathered grid's sensors, 0 and 5, keep the
+// gathers at 65536 rays cheap.
+TEST(GatherDirectRounds, AtTheGatherRayLimitTheDirectPartIsStillRaised) {
   Office office(true, false);
-  office.direct_samples = MaxDirectSamplesPerBin;
+  office.direct_samples = 1;
+  std::vector<SensorPoint>& points = office.description.grids.at(0).points;
+  points = {points.at(0), points.at(5)};
   AccuracyGoal goal;
-  goal.target_percent = DirectLimitTarget;
+  goal.target_percent = DirectPartTarget;
   std::vector<std::string> lines;
-  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(6, DirectPartRays), goal, [&](const std::string& line) {
+  const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(6, GatherMaxRays), goal, [&](const std::string& line) {
     std::printf("%s\n", line.c_str());
     lines.push_back(line);
   });
   const AccuracyOutcome& o = r.outcome;
   ASSERT_EQ(o.gather.size(), 1u);
-  for (const std::string& l : lines) EXPECT_EQ(l.find(": shadow rays per bin "), std::string::npos) << l;
-  EXPECT_EQ(o.direct_samples_per_bin, std::vector<int>({MaxDirectSamplesPerBin}));
-  EXPECT_EQ(o.gather[0].stop_reason, "direct rays limit");
-  EXPECT_EQ(o.grid_status[0], "above target");
-  EXPECT_EQ(o.stop_reason, "direct rays limit");
-  EXPECT_GT(o.reached_percent[0], DirectLimitTarget);
+  std::size_t raises = 0;
+  for (const std::string& l : lines) raises += l.find(": shadow rays per bin 1 -> ") != std::string::npos;
+  EXPECT_GE(raises, 1u) << "the gather rounds did not raise the shadow rays at the ray limit";
+  EXPECT_GT(o.direct_samples_per_bin.at(0), 1);
+  EXPECT_EQ(o.gather[0].rays, GatherMaxRays);
+  EXPECT_EQ(o.gather[0].rounds, 0u);
+  EXPECT_EQ(o.gather[0].stop_reason, "target met");
+  EXPECT_EQ(o.grid_status[0], "met");
+  EXPECT_LE(o.reached_percent[0], DirectPartTarget);
+  EXPECT_DOUBLE_EQ(o.reached_percent[0], reached_from_coefficients(r.coefficients[0], office));
+}
+
+// Shadow rays already at the rounds' limit: the grid is not raised, and when only its direct
+// part keeps it above the target its gather stop (and the case's) is `direct rays limit`; the
+// log names the count the sensors are at, the limit or a project's own count above it. The
+// two sensors of the gathered grid whose direct part alone at the limit is above the target
+// (sensors 0 and 5; 200 photons per source, since photons do not change that), so the stop
+// comes at the grid's first estimate.
+TEST(GatherDirectRounds, AtTheLimitTheStopIsDirectRaysLimit) {
+  for (const int samples : {MaxDirectSamplesPerBin, 400}) {
+    SCOPED_TRACE(std::to_string(samples) + " shadow rays per bin");
+    Office office(true, false);
+    office.photons_per_source = 200;
+    office.direct_samples = std::size_t(samples);
+    std::vector<SensorPoint>& points = office.description.grids.at(0).points;
+    points = {points.at(0), points.at(5)};
+    AccuracyGoal goal;
+    goal.target_percent = DirectLimitTarget;
+    std::vector<std::string> lines;
+    const AccuracyResult r = run_accuracy_rounds(office.accuracy_case(6, DirectPartRays), goal, [&](const std::string& line) {
+      std::printf("%s\n", line.c_str());
+      lines.push_back(line);
+    });
+    const AccuracyOutcome& o = r.outcome;
+    ASSERT_EQ(o.gather.size(), 1u);
+    for (const std::string& l : lines) EXPECT_EQ(l.find(": shadow rays per bin "), std::string::npos) << l;
+    EXPECT_EQ(o.direct_samples_per_bin, std::vector<int>({samples}));
+    EXPECT_EQ(o.gather[0].stop_reason, "direct rays limit");
+    EXPECT_EQ(o.grid_status[0], "above target");
+    EXPECT_EQ(o.stop_reason, "direct rays limit");
+    EXPECT_GT(o.reached_percent[0], DirectLimitTarget);
+    const std::string words =
+        samples > MaxDirectSamplesPerBin
+            ? " by their direct component alone at 400 shadow rays per bin, the project's own count (above the "
+              "rounds' limit of " + std::to_string(MaxDirectSamplesPerBin) + ")"
+            : " by their direct component alone at " + std::to_string(MaxDirectSamplesPerBin) +
+                  " shadow rays per bin, the rounds' limit";
+    std::size_t named = 0;
+    for (const std::string& l : lines) named += l.find(words) != std::string::npos;
+    EXPECT_EQ(named, 1u) << words;
+  }
 }
 
 // The gather's fixed part (engine/final_gather.h, "How the variance falls with the rays": the

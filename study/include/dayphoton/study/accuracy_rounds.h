@@ -144,6 +144,10 @@ struct DirectRoundPlan {
   /// Sensors above their budget by the direct variance alone in grids already at
   /// MaxDirectSamplesPerBin (plan_policy.h): neither photons nor the rounds' rays help them.
   std::size_t sensors_at_limit = 0;
+  /// The shadow rays per bin those sensors are at (the largest over their grids, rounded up to a
+  /// square as the direct component traces them): MaxDirectSamplesPerBin, or a project's own
+  /// count above it; 0 when sensors_at_limit is 0.
+  int samples_at_limit = 0;
   bool raised() const { return rays > 0; }
 };
 
@@ -199,9 +203,20 @@ struct AccuracyCase {
   double horizontal_illuminance_lux = 0;
 };
 
+/// A gathered grid's last estimate at more gather rays than the photon rounds' (its gather
+/// rounds' result): kept while later photon rounds serve other grids, so that when it cannot be
+/// gathered again its reported accuracy, rays and rounds still describe the estimate written
+/// (gather_accuracy_rounds.h).
+struct GatheredEstimate {
+  engine::DaylightCoefficients coefficients;
+  double reached_percent = 0;
+  GatherAccuracy accuracy;  ///< accuracy.rays == 0: none yet
+};
+
 struct AccuracyResult {
   std::vector<engine::DaylightCoefficients> coefficients;  ///< per grid
   AccuracyOutcome outcome;
+  std::vector<GatheredEstimate> gathered;  ///< per grid, filled by the gather rounds (not cached)
 };
 
 /// The rounds of one case; `log` receives one line per round and the stop. The tracing (the

@@ -44,7 +44,8 @@
 // "photon round limit" (refuse_gather_photons).
 //
 // More shadow rays for the direct part. A grid whose ray plan leaves direct-limited sensors
-// (B <= 0) raises its shadow rays per bin by the photon rounds' rule (next_direct_round,
+// (B <= 0) when no more rays can be had (none would help, or the gather ray or round limit
+// is reached) raises its shadow rays per bin by the photon rounds' rule (next_direct_round,
 // accuracy_rounds.h: k -> 2k or 4k strata per bin, at most MaxDirectSamplesPerBin) through
 // GatherDirectRaise, which traces the grid's direct part again by sensor blocks through the
 // work; the grid's estimate takes the new direct part (its gather part is unchanged) and the
