@@ -181,6 +181,9 @@ json grid_json(const GridResult& g) {
                          {"photons", sa->photons},
                          {"stop_reason", sa->stop_reason},
                          {"status", sa->status}};
+  if (const auto& sa = g.sun_accuracy; sa && sa->gather_rays > 0)
+    j["sun_accuracy"]["gather"] = {
+        {"rays", sa->gather_rays}, {"rounds", sa->gather_rounds}, {"stop_reason", sa->gather_stop_reason}};
   json points = json::array();
   for (const PointInTimeSummary& p : g.points_in_time)
     points.push_back({{"name", p.name}, {"sky", p.sky}, {"mean_lux", p.mean_lux}, {"median_lux", p.median_lux},
@@ -290,6 +293,18 @@ struct Reader {
       fail(name(k, "status"), "is not met, above target or not reachable by photons");
     own(block, k, r);
     return r;
+  }
+  /// An accuracy block's "gather" (the sky's or the sun bins'), present for a grid estimated by
+  /// final gather only.
+  template <class Accuracy>
+  void gather_reached(const json& acc, const std::string& ck, Accuracy& r) const {
+    if (!acc.contains("gather")) return;
+    const std::string gk = ck + ".gather";
+    const json& ga = at(acc, ck, "gather");
+    r.gather_rays = static_cast<int>(count(ga, gk, "rays"));
+    if (r.gather_rays < 1) fail(name(gk, "rays"), "is not at least 1");
+    r.gather_rounds = count(ga, gk, "rounds");
+    r.gather_stop_reason = text(ga, gk, "stop_reason");
   }
   const json& array(const json& j, const std::string& parent, const char* key) const {
     const json& v = at(j, parent, key);
@@ -448,20 +463,14 @@ struct Reader {
       d.sensors_with_daylight = count(df, dk, "sensors_with_daylight");
       d.accuracy = accuracy_reached<DaylightFactorSummary::AccuracyReached>(
           df, dk, "accuracy", [this](const json& acc, const std::string& ck, DaylightFactorSummary::AccuracyReached& r) {
-            // "gather": present for a grid estimated by final gather only.
-            if (!acc.contains("gather")) return;
-            const std::string gk = ck + ".gather";
-            const json& ga = at(acc, ck, "gather");
-            r.gather_rays = static_cast<int>(count(ga, gk, "rays"));
-            if (r.gather_rays < 1) fail(name(gk, "rays"), "is not at least 1");
-            r.gather_rounds = count(ga, gk, "rounds");
-            r.gather_stop_reason = text(ga, gk, "stop_reason");
+            gather_reached(acc, ck, r);
           });
       g.daylight_factor = d;
     }
     g.sun_accuracy = accuracy_reached<SunAccuracyReached>(
         j, at_grid, "sun_accuracy", [this](const json& sa, const std::string& sak, SunAccuracyReached& r) {
           r.hourly_percent = number(sa, sak, "hourly_percent");
+          gather_reached(sa, sak, r);
         });
     const json& an = at(j, at_grid, "annual");
     if (!an.is_null()) {
@@ -616,7 +625,8 @@ bool DaylightFactorSummary::AccuracyReached::operator==(const AccuracyReached& o
 bool SunAccuracyReached::operator==(const SunAccuracyReached& o) const {
   return target_percent == o.target_percent && reached_percent == o.reached_percent &&
          hourly_percent == o.hourly_percent && rounds == o.rounds && photons == o.photons &&
-         stop_reason == o.stop_reason && status == o.status;
+         stop_reason == o.stop_reason && status == o.status && gather_rays == o.gather_rays &&
+         gather_rounds == o.gather_rounds && gather_stop_reason == o.gather_stop_reason;
 }
 bool OccupancySummary::operator==(const OccupancySummary& o) const {
   return kind == o.kind && start_h == o.start_h && end_h == o.end_h && description == o.description &&

@@ -149,5 +149,7 @@ void settle_case_stop(AccuracyOutcome& outcome, const std::string& photon_stop);
 /// The words the run log adds for a gathered grid (" (final gather, 4096 rays per sensor, 2
 /// gather round(s) from 1024: target met)"), empty for another grid.
 std::string gather_accuracy_note(const AccuracyOutcome& outcome, std::size_t grid);
+/// The same from the grids' gather rounds alone (the sun rounds' outcome, sun_accuracy_rounds.h).
+std::string gather_accuracy_note(const std::vector<GatherAccuracy>& gather, std::size_t grid);
 
 }  // namespace dayphoton::study
