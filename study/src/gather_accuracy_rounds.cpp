@@ -240,9 +240,14 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           engine::DaylightCoefficients dc;
           dc.sensors = end - begin;
           dc.sources = n;
-          dc.direct.assign(direct[g].begin() + std::ptrdiff_t(begin * n), direct[g].begin() + std::ptrdiff_t(end * n));
-          dc.direct_variance.assign(direct_variance[g].begin() + std::ptrdiff_t(begin * n),
-                                    direct_variance[g].begin() + std::ptrdiff_t(end * n));
+          if (direct[g].empty()) {  // no direct part (the sun bins'): zeros
+            dc.direct.assign(dc.sensors * n, Vec3{});
+            dc.direct_variance.assign(dc.sensors * n, 0.0);
+          } else {
+            dc.direct.assign(direct[g].begin() + std::ptrdiff_t(begin * n), direct[g].begin() + std::ptrdiff_t(end * n));
+            dc.direct_variance.assign(direct_variance[g].begin() + std::ptrdiff_t(begin * n),
+                                      direct_variance[g].begin() + std::ptrdiff_t(end * n));
+          }
           // The gather of photon_coefficients, with the part more rays do not reduce.
           engine::GatheredCoefficients gathered = engine::gather_photon_coefficients(
               *c.scene, *c.materials, *c.sources, gp.all(), grid.points, options.gather, &gp.groups(), {begin, end});

@@ -263,14 +263,9 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   gathered.relabel_sources = true;
   gathered.round_name = "sun accuracy";
   gathered.measure_name = SunMeasure;
-  // No direct part (the sun bins' coefficients are indirect): zero for the gathered grids.
-  std::vector<std::vector<Vec3>> no_direct(grids.size());
-  std::vector<std::vector<double>> no_direct_variance(grids.size());
-  for (std::size_t g = 0; g < grids.size(); ++g)
-    if (!chased[g]) {
-      no_direct[g].assign(grids[g].points.size() * n, Vec3{});
-      no_direct_variance[g].assign(grids[g].points.size() * n, 0.0);
-    }
+  // No direct part (the sun bins' coefficients are indirect): empty, zeros to the gather rounds.
+  const std::vector<std::vector<Vec3>> no_direct(grids.size());
+  const std::vector<std::vector<double>> no_direct_variance(grids.size());
   AccuracyResult gather_result;  // the gather rounds' view of the outcome (their rounds kept across calls)
   GatherPhotonRequest asked;     // of the last gather rounds
   std::string photon_stop;       // the photon rounds' stop they were given
