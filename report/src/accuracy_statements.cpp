@@ -171,7 +171,8 @@ std::string sky_accuracy_statement(const study::DaylightFactorSummary::AccuracyR
 
 std::string sun_accuracy_statement(const study::SunAccuracyReached& a) {
   return statement("Annual sun-bin illuminance (the indirect sunlight of every sun hour, summed over the year)",
-                   Reached{a.target_percent, a.reached_percent, a.rounds, a.photons, a.stop_reason, a.status}) +
+                   Reached{a.target_percent, a.reached_percent, a.rounds, a.photons, a.stop_reason, a.status,
+                           a.gather_rays, a.gather_rounds, a.gather_stop_reason}) +
          " One hour's sun-bin value carries more: " + format_value(a.hourly_percent, Precision::DaylightFactor) +
          " % at the same percentile (reported, not targeted; the annual metrics count hours over thresholds).";
 }

@@ -9,8 +9,6 @@
 #include <cstring>
 #include <stdexcept>
 
-#include <tbb/parallel_for.h>
-
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/daylight_coefficients.h"
 #include "dayphoton/engine/final_gather.h"
@@ -251,11 +249,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
 
   // The photons of the last round, merged once, for any grid that needs more rays.
   LazyValue<engine::GridPhotons> maps;
-  auto build = [&] {
-    std::vector<engine::TracedPhotons> scaled(n);
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t p) { scaled[p] = engine::scaled_source_photons(records[p]); });
-    return engine::GridPhotons::for_gather(engine::merge_traced_photons(std::move(scaled)).surface, n);
-  };
+  auto build = [&] { return engine::GridPhotons::for_gather(round_photons(records, c.relabel_sources).surface, n); };
   auto estimate = [&](std::size_t g, int rays, const std::string& name) {
     const SensorGrid& grid = grids[g];
     engine::CoefficientOptions options = c.estimating;
@@ -267,9 +261,14 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           engine::DaylightCoefficients dc;
           dc.sensors = end - begin;
           dc.sources = n;
-          dc.direct.assign(direct[g].begin() + std::ptrdiff_t(begin * n), direct[g].begin() + std::ptrdiff_t(end * n));
-          dc.direct_variance.assign(direct_variance[g].begin() + std::ptrdiff_t(begin * n),
-                                    direct_variance[g].begin() + std::ptrdiff_t(end * n));
+          if (direct[g].empty()) {  // no direct part (the sun bins'): zeros
+            dc.direct.assign(dc.sensors * n, Vec3{});
+            dc.direct_variance.assign(dc.sensors * n, 0.0);
+          } else {
+            dc.direct.assign(direct[g].begin() + std::ptrdiff_t(begin * n), direct[g].begin() + std::ptrdiff_t(end * n));
+            dc.direct_variance.assign(direct_variance[g].begin() + std::ptrdiff_t(begin * n),
+                                      direct_variance[g].begin() + std::ptrdiff_t(end * n));
+          }
           // The gather of photon_coefficients, with the part more rays do not reduce.
           engine::GatheredCoefficients gathered = engine::gather_photon_coefficients(
               *c.scene, *c.materials, *c.sources, gp.all(), grid.points, options.gather, &gp.groups(), {begin, end});
@@ -302,7 +301,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
       continue;
     }
     if (goal.max_seconds > 0 && work.agreed(elapsed_s + seconds_since(start)) >= goal.max_seconds) {
-      log("accuracy: grid " + grids[g].name + ": no gather round: the time budget is spent" +
+      log(c.round_name + ": grid " + grids[g].name + ": no gather round: the time budget is spent" +
           (result.gathered[g].accuracy.rays > 0 ? "; its last gather estimate stands" : ""));
       keep_last_gather(result, g, goal.target_percent);
       continue;
@@ -313,7 +312,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     Clock::time_point t = Clock::now();
     GridEstimate now = estimate(
         g, start_rays,
-        "accuracy gather round " + (start_rays > first_rays ? std::to_string(a.rounds + 1) : std::string("0")) +
+        c.round_name + " gather round " + (start_rays > first_rays ? std::to_string(a.rounds + 1) : std::string("0")) +
             ", grid " + grids[g].name);
     double seconds_per_ray = seconds_since(t) / start_rays;  // of the last estimate, per gather ray per sensor
     std::size_t rounds_now = 0;  // gather rounds on these photons
@@ -321,9 +320,9 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
       a.rays = start_rays;
       ++a.rounds;
       ++rounds_now;
-      log("accuracy gather round " + std::to_string(a.rounds) + ", grid " + grids[g].name + ": " +
-          std::to_string(a.rays) + " gather rays per sensor (the rays reached before this photon round); DF relative "
-          "standard error (" + number(AccuracyPercentile, "%.0f") + "th percentile) " + number(now.reached_percent) +
+      log(c.round_name + " gather round " + std::to_string(a.rounds) + ", grid " + grids[g].name + ": " +
+          std::to_string(a.rays) + " gather rays per sensor (the rays reached before this photon round); " + c.measure_name + " "
+          "(" + number(AccuracyPercentile, "%.0f") + "th percentile) " + number(now.reached_percent) +
           " % (target " + number(goal.target_percent) + " %)");
     }
     for (;;) {
@@ -357,12 +356,12 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
             const double need = raise_direct.seconds(d.rays);
             if (spent + need > goal.max_seconds) {
               a.stop_reason = "time budget";
-              log("accuracy: grid " + grids[g].name + ": no raise of shadow rays: it would take about " + number(need) +
+              log(c.round_name + ": grid " + grids[g].name + ": no raise of shadow rays: it would take about " + number(need) +
                   " s of the " + number(goal.max_seconds - spent) + " s left");
               break;
             }
           }
-          log("accuracy: grid " + grids[g].name + ": shadow rays per bin " + std::to_string(samples) + " -> " +
+          log(c.round_name + ": grid " + grids[g].name + ": shadow rays per bin " + std::to_string(samples) + " -> " +
               std::to_string(d.samples_per_bin[0]) + " (its direct part keeps it above the target)");
           raise_direct.raise(g, d.samples_per_bin[0]);
           // The same gather (photons, rays, seed) with the new direct part.
@@ -371,7 +370,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           dc.direct_variance = direct_variance[g];
           const std::vector<double> fixed = std::move(now.fixed);
           now = measure(std::move(dc), fixed);
-          log("accuracy: grid " + grids[g].name + ": DF relative standard error (" +
+          log(c.round_name + ": grid " + grids[g].name + ": " + c.measure_name + " (" +
               number(AccuracyPercentile, "%.0f") + "th percentile) " + number(now.reached_percent) + " % at " +
               std::to_string(d.samples_per_bin[0]) + " shadow rays per bin (target " + number(goal.target_percent) +
               " %)");
@@ -379,7 +378,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
         }
         if (d.sensors_at_limit > 0 && plan.sensors_photon_limited == 0 && plan.rays <= a.rays) {
           a.stop_reason = "direct rays limit";
-          log("accuracy: grid " + grids[g].name + ": " + std::to_string(d.sensors_at_limit) +
+          log(c.round_name + ": grid " + grids[g].name + ": " + std::to_string(d.sensors_at_limit) +
               " sensor(s) miss the target by their direct component alone at " +
               direct_rays_limit_words(d.samples_at_limit));
           break;
@@ -395,7 +394,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
       }
       if (plan.rays <= a.rays) {
         a.stop_reason = plan.sensors_photon_limited > 0 ? "gather photon part" : "direct component";
-        log("accuracy: grid " + grids[g].name + ": " + std::to_string(plan.sensors_photon_limited) +
+        log(c.round_name + ": grid " + grids[g].name + ": " + std::to_string(plan.sensors_photon_limited) +
             " sensor(s) above the aim by the gather's photon part (which more rays do not reduce: more photons "
             "or simulation.gather_bandwidth would) and " +
             std::to_string(plan.sensors_direct_limited) +
@@ -409,20 +408,20 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
         const double need = work.agreed(seconds_per_ray * plan.rays);
         if (spent + need > goal.max_seconds) {
           a.stop_reason = "time budget";
-          log("accuracy: grid " + grids[g].name + ": no gather round with " + std::to_string(plan.rays) +
+          log(c.round_name + ": grid " + grids[g].name + ": no gather round with " + std::to_string(plan.rays) +
               " rays: it would take about " + number(need) + " s of the " + number(goal.max_seconds - spent) +
               " s left");
           break;
         }
       }
       t = Clock::now();
-      now = estimate(g, plan.rays, "accuracy gather round " + std::to_string(a.rounds + 1) + ", grid " + grids[g].name);
+      now = estimate(g, plan.rays, c.round_name + " gather round " + std::to_string(a.rounds + 1) + ", grid " + grids[g].name);
       seconds_per_ray = seconds_since(t) / plan.rays;
       a.rays = plan.rays;
       ++a.rounds;
       ++rounds_now;
-      log("accuracy gather round " + std::to_string(a.rounds) + ", grid " + grids[g].name + ": " +
-          std::to_string(a.rays) + " gather rays per sensor; DF relative standard error (" +
+      log(c.round_name + " gather round " + std::to_string(a.rounds) + ", grid " + grids[g].name + ": " +
+          std::to_string(a.rays) + " gather rays per sensor; " + c.measure_name + " (" +
           number(AccuracyPercentile, "%.0f") + "th percentile) " + number(now.reached_percent) + " % (target " +
           number(goal.target_percent) + " %)");
     }
@@ -440,7 +439,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
       }
       if (growing > 0) {
         request.grids.push_back(g);
-        log("accuracy: grid " + grids[g].name + ": " + std::to_string(photons.sensors) +
+        log(c.round_name + ": grid " + grids[g].name + ": " + std::to_string(photons.sensors) +
             " sensor(s) ask for more photons for the gather's photon part: up to " + number(largest) +
             " times the photons of " + std::to_string(growing) + " source(s)");
       }
@@ -456,8 +455,12 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
 }
 
 std::string gather_accuracy_note(const AccuracyOutcome& outcome, std::size_t grid) {
-  if (grid >= outcome.gather.size() || !outcome.gather[grid].gathered) return "";
-  const GatherAccuracy& a = outcome.gather[grid];
+  return gather_accuracy_note(outcome.gather, grid);
+}
+
+std::string gather_accuracy_note(const std::vector<GatherAccuracy>& gather, std::size_t grid) {
+  if (grid >= gather.size() || !gather[grid].gathered) return "";
+  const GatherAccuracy& a = gather[grid];
   return " (final gather, " + std::to_string(a.rays) + " rays per sensor" +
          (a.rounds > 0 ? ", " + std::to_string(a.rounds) + " gather round(s) from " + std::to_string(a.first_rays)
                        : std::string()) +

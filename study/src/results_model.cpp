@@ -73,11 +73,14 @@ json occupancy_json(const OccupancySummary& o) {
 
 /// An accuracy block of a grid, the sky's (daylight_factor.accuracy) or the sun bins'
 /// (sun_accuracy): the fields both kinds have, which the reader's accuracy_reached reads back;
-/// the caller adds the fields of its kind.
+/// the caller adds the fields of its kind (the sun's hourly value).
 template <class Accuracy>
 json accuracy_json(const Accuracy& a) {
-  return {{"target_percent", a.target_percent}, {"reached_percent", a.reached_percent}, {"rounds", a.rounds},
-          {"photons", a.photons}, {"stop_reason", a.stop_reason}, {"status", a.status}};
+  json j = {{"target_percent", a.target_percent}, {"reached_percent", a.reached_percent}, {"rounds", a.rounds},
+            {"photons", a.photons}, {"stop_reason", a.stop_reason}, {"status", a.status}};
+  // A grid estimated by final gather: its gather rays and rounds.
+  if (a.gather_rays > 0) j["gather"] = {{"rays", a.gather_rays}, {"rounds", a.gather_rounds}, {"stop_reason", a.gather_stop_reason}};
+  return j;
 }
 
 json grid_json(const GridResult& g) {
@@ -129,9 +132,7 @@ json grid_json(const GridResult& g) {
                             {"sensors_with_daylight", d->sensors_with_daylight},
                             {"accuracy", nullptr}};
     if (const auto& acc = d->accuracy) {
-      json& block = j["daylight_factor"]["accuracy"] = accuracy_json(*acc);
-      if (acc->gather_rays > 0)
-        block["gather"] = {{"rays", acc->gather_rays}, {"rounds", acc->gather_rounds}, {"stop_reason", acc->gather_stop_reason}};
+      j["daylight_factor"]["accuracy"] = accuracy_json(*acc);
     }
   }
   if (const auto& a = g.annual) {
@@ -290,6 +291,18 @@ struct Reader {
     own(block, k, r);
     return r;
   }
+  /// An accuracy block's "gather" (the sky's or the sun bins'), present for a grid estimated by
+  /// final gather only.
+  template <class Accuracy>
+  void gather_reached(const json& acc, const std::string& ck, Accuracy& r) const {
+    if (!acc.contains("gather")) return;
+    const std::string gk = ck + ".gather";
+    const json& ga = at(acc, ck, "gather");
+    r.gather_rays = static_cast<int>(count(ga, gk, "rays"));
+    if (r.gather_rays < 1) fail(name(gk, "rays"), "is not at least 1");
+    r.gather_rounds = count(ga, gk, "rounds");
+    r.gather_stop_reason = text(ga, gk, "stop_reason");
+  }
   const json& array(const json& j, const std::string& parent, const char* key) const {
     const json& v = at(j, parent, key);
     if (!v.is_array()) fail(name(parent, key), "is not an array");
@@ -447,20 +460,14 @@ struct Reader {
       d.sensors_with_daylight = count(df, dk, "sensors_with_daylight");
       d.accuracy = accuracy_reached<DaylightFactorSummary::AccuracyReached>(
           df, dk, "accuracy", [this](const json& acc, const std::string& ck, DaylightFactorSummary::AccuracyReached& r) {
-            // "gather": present for a grid estimated by final gather only.
-            if (!acc.contains("gather")) return;
-            const std::string gk = ck + ".gather";
-            const json& ga = at(acc, ck, "gather");
-            r.gather_rays = static_cast<int>(count(ga, gk, "rays"));
-            if (r.gather_rays < 1) fail(name(gk, "rays"), "is not at least 1");
-            r.gather_rounds = count(ga, gk, "rounds");
-            r.gather_stop_reason = text(ga, gk, "stop_reason");
+            gather_reached(acc, ck, r);
           });
       g.daylight_factor = d;
     }
     g.sun_accuracy = accuracy_reached<SunAccuracyReached>(
         j, at_grid, "sun_accuracy", [this](const json& sa, const std::string& sak, SunAccuracyReached& r) {
           r.hourly_percent = number(sa, sak, "hourly_percent");
+          gather_reached(sa, sak, r);
         });
     const json& an = at(j, at_grid, "annual");
     if (!an.is_null()) {
@@ -615,7 +622,8 @@ bool DaylightFactorSummary::AccuracyReached::operator==(const AccuracyReached& o
 bool SunAccuracyReached::operator==(const SunAccuracyReached& o) const {
   return target_percent == o.target_percent && reached_percent == o.reached_percent &&
          hourly_percent == o.hourly_percent && rounds == o.rounds && photons == o.photons &&
-         stop_reason == o.stop_reason && status == o.status;
+         stop_reason == o.stop_reason && status == o.status && gather_rays == o.gather_rays &&
+         gather_rounds == o.gather_rounds && gather_stop_reason == o.gather_stop_reason;
 }
 bool OccupancySummary::operator==(const OccupancySummary& o) const {
   return kind == o.kind && start_h == o.start_h && end_h == o.end_h && description == o.description &&

@@ -276,6 +276,12 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
             sun_accuracy->target_percent, sun_accuracy->reached_percent[g], sun_accuracy->hourly_percent[g],
             sun_accuracy->rounds,         sun_accuracy->photons,            sun_accuracy->stop_reason,
             sun_accuracy->grid_status[g]};
+        if (g < sun_accuracy->gather.size() && sun_accuracy->gather[g].gathered) {
+          SunAccuracyReached& r = *ctx.results->grids[g].sun_accuracy;
+          r.gather_rays = sun_accuracy->gather[g].rays;
+          r.gather_rounds = sun_accuracy->gather[g].rounds;
+          r.gather_stop_reason = sun_accuracy->gather[g].stop_reason;
+        }
         grids_json[g]["accuracy"]["sun"] = {
             {"target_relative_stderr_percent", sun_accuracy->target_percent},
             {"reached_relative_stderr_percent", sun_accuracy->reached_percent[g]},
@@ -287,6 +293,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
             {"photons", sun_accuracy->photons},
             {"attempts", sun_accuracy->attempts},
             {"stop_reason", sun_accuracy->stop_reason}};
+        if (g < sun_accuracy->gather.size() && sun_accuracy->gather[g].gathered) {
+          grids_json[g]["accuracy"]["sun"]["gather"] = gather_accuracy_json(sun_accuracy->gather[g]);
+          grids_json[g]["accuracy"]["sun"]["gather"].erase("gathered");
+        }
       }
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];

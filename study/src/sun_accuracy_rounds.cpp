@@ -15,6 +15,7 @@
 #include "dayphoton/study/accuracy_policy.h"
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/artifact_codec.h"
+#include "dayphoton/study/gather_accuracy_rounds.h"
 #include "dayphoton/study/sensor_blocks.h"
 #include "accuracy_round_loop.h"
 #include "lazy_value.h"
@@ -185,6 +186,15 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   SunAccuracyResult result;
   SunAccuracyOutcome& o = result.outcome;
   o.target_percent = goal.target_percent;
+  // Grid g's hourly measure at the percentile over the sensors with sun-bin light (`annual`: each
+  // sensor's annual value), from its coefficients and variances in `result`.
+  auto hourly_percent = [&](std::size_t g, const std::vector<double>& annual) {
+    const std::vector<double> hourly =
+        sun_hourly_relative_stderr_percent(result.coefficients[g], result.variance[g], bins, *c.suns, weights);
+    std::vector<double> se(hourly.size());
+    for (std::size_t s = 0; s < se.size(); ++s) se[s] = hourly[s] / 100.0 * annual[s];
+    return percentile_relative_stderr_percent(annual, se, AccuracyPercentile);
+  };
   // Each round: every grid's sun-bin coefficients and variances by sensor blocks, then the
   // annual measure (the target's) and the hourly one (reported).
   const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
@@ -219,17 +229,10 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
         stderr_value[s] = std::sqrt(std::max(0.0, x));
       }
       o.reached_percent[g] = percentile_relative_stderr_percent(v.df_percent, stderr_value, AccuracyPercentile);
-      // The hourly measure at the same percentile, over the sensors with sun-bin light.
-      const std::vector<double> hourly =
-          sun_hourly_relative_stderr_percent(result.coefficients[g], result.variance[g], bins, *c.suns, weights);
-      o.hourly_percent[g] = percentile_relative_stderr_percent(v.df_percent, [&] {
-        std::vector<double> se(hourly.size());
-        for (std::size_t s = 0; s < se.size(); ++s) se[s] = hourly[s] / 100.0 * v.df_percent[s];
-        return se;
-      }(), AccuracyPercentile);
+      o.hourly_percent[g] = hourly_percent(g, v.df_percent);
       m.grid_status[g] = accuracy_grid_status(chased[g], o.reached_percent[g], goal.target_percent);
       m.grids += (g ? ", " : " ") + grids[g].name + " " + round_number(o.reached_percent[g]) + " % (hourly " +
-                 round_number(o.hourly_percent[g]) + " %" + (chased[g] ? "" : ", gathered: not chased") + ")";
+                 round_number(o.hourly_percent[g]) + " %" + (chased[g] ? "" : ", gathered: its gather rays follow") + ")";
       if (chased[g]) {
         m.met = m.met && o.reached_percent[g] <= goal.target_percent;
         m.chased.push_back(std::move(v));
@@ -238,9 +241,72 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
     o.grid_status = m.grid_status;
     return m;
   };
-  const RoundLoopOutcome loop = run_round_loop(
-      bin_sources, goal, measure, {"sun accuracy", SunMeasure}, log, work,
-      start);
+  // Gathered grids above the target: the sky's gather rounds (gather_accuracy_rounds.h) on the
+  // annual measure. Its "DF" is 100 sum_k w . C_k L_k / E: with L_k the grey A_k and E = 100 x
+  // 179 lx (w's efficacy) it is sum_k A_k (luminance of C_k), the annual value, and its
+  // per-source weights A_k^2 those of sun_annual_variance.
+  RadianceMatrix annual_weights(n, 1, 3);
+  for (std::size_t k = 0; k < n; ++k)
+    for (int i = 0; i < 3; ++i) annual_weights.at(k, 0, i) = static_cast<float>(weights.annual[k]);
+  AccuracyCase gathered;
+  gathered.scene = &scene;
+  gathered.materials = &materials;
+  gathered.sources = &sources;
+  gathered.planes = &planes;
+  gathered.plane_of_grid = c.plane_of_grid;
+  gathered.grids = &grids;
+  gathered.gather = c.gather;
+  gathered.tracing = c.tracing;
+  gathered.estimating = c.estimating;
+  gathered.overcast_vector = &annual_weights;
+  gathered.horizontal_illuminance_lux = 100.0 * RadianceWhiteEfficacy_lm_per_W;
+  gathered.relabel_sources = true;
+  gathered.round_name = "sun accuracy";
+  gathered.measure_name = SunMeasure;
+  // No direct part (the sun bins' coefficients are indirect): empty, zeros to the gather rounds.
+  const std::vector<std::vector<Vec3>> no_direct(grids.size());
+  const std::vector<std::vector<double>> no_direct_variance(grids.size());
+  AccuracyResult gather_result;  // the gather rounds' view of the outcome (their rounds kept across calls)
+  GatherPhotonRequest asked;     // of the last gather rounds
+  std::string photon_stop;       // the photon rounds' stop they were given
+  RoundLoopFinish gather_rounds;
+  gather_rounds.finish = [&](RoundLoopOutcome& lo, const std::vector<engine::SourcePhotonRecord>& records) {
+    AccuracyOutcome& a = gather_result.outcome;
+    a.target_percent = goal.target_percent;
+    a.reached_percent = o.reached_percent;
+    a.grid_status = o.grid_status;
+    photon_stop = a.stop_reason = lo.stop_reason;
+    a.rounds = lo.rounds;
+    gather_result.coefficients.assign(grids.size(), {});
+    asked = run_gather_accuracy_rounds(gathered, goal, records, no_direct, no_direct_variance, 0.0, work, log,
+                                       gather_result);
+    for (std::size_t g = 0; g < grids.size(); ++g) {
+      engine::DaylightCoefficients& dc = gather_result.coefficients[g];
+      if (chased[g] || dc.sensors != grids[g].points.size()) continue;  // not estimated again
+      // As sun_bin_coefficients keeps them: caustic + global, and the variance of its luminance.
+      RadianceMatrix m(dc.sensors, n, 3);
+      for (std::size_t i = 0; i < dc.sensors * n; ++i) {
+        const Vec3 total = Vec3{} + dc.caustic[i] + dc.global[i];
+        for (int k = 0; k < 3; ++k) m.at(i / n, i % n, k) = static_cast<float>(total[k]);
+      }
+      result.coefficients[g] = std::move(m);
+      result.variance[g] = std::move(dc.photon_variance);
+      o.hourly_percent[g] =
+          hourly_percent(g, sun_annual_variance(result.coefficients[g], result.variance[g], weights).df_percent);
+    }
+    o.reached_percent = a.reached_percent;
+    o.grid_status = a.grid_status;
+    o.gather = a.gather;
+    lo.stop_reason = a.stop_reason;
+    return asked.scale;
+  };
+  gather_rounds.refused = [&](RoundLoopOutcome& lo, const std::string& reason) {
+    refuse_gather_photons(gather_result.outcome, asked, reason, photon_stop);
+    o.gather = gather_result.outcome.gather;
+    lo.stop_reason = gather_result.outcome.stop_reason;
+  };
+  const RoundLoopOutcome loop = run_round_loop(bin_sources, goal, measure, {"sun accuracy", SunMeasure}, log, work,
+                                               start, gather_rounds);
   o.rounds = loop.rounds;
   o.photons = loop.photons;
   o.attempts = loop.attempts;
@@ -255,8 +321,9 @@ std::string sun_accuracy_sentence(const SunAccuracyOutcome& o, std::size_t grid)
   const double hourly = grid < o.hourly_percent.size() ? o.hourly_percent[grid] : 0.0;
   const std::string status = grid < o.grid_status.size() ? o.grid_status[grid] : "";
   return round_outcome_sentence(SunMeasure, reached, o.target_percent,
-                                " (" + status + "; hourly " + round_number(hourly) + " %)", o.stop_reason, o.rounds,
-                                o.photons);
+                                " (" + status + "; hourly " + round_number(hourly) + " %)" +
+                                    gather_accuracy_note(o.gather, grid),
+                                o.stop_reason, o.rounds, o.photons);
 }
 
 }  // namespace dayphoton::study

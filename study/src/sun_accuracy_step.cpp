@@ -9,7 +9,9 @@
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/content_hash.h"
+#include "dayphoton/study/gather_accuracy_rounds.h"
 #include "dayphoton/study/step_executor.h"
+#include "gather_accuracy_json.h"
 
 namespace dayphoton::study {
 namespace {
@@ -56,7 +58,11 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
   std::string rounds = "sun-accuracy:" + exact(goal.target_percent) + ":" + std::to_string(goal.max_photons) + ":" +
                        exact(AccuracyPercentile) + ":" + std::to_string(MaxAccuracyRounds) + ":" +
                        exact(AccuracyPilotFraction) + ":" + exact(AccuracyRoundAim) + ":" + exact(AccuracyMaxGrowth) +
-                       ":" + (c.gather ? "gather-not-chased" : "surface") + ":" + year.hex();
+                       ":" +
+                       (c.gather ? "gather-rays-photons:" + std::to_string(GatherMaxRounds) + ":" +
+                                       exact(GatherMaxGrowth) + ":" + std::to_string(GatherMaxRays)
+                                 : std::string("surface")) +
+                       ":" + year.hex();
   for (std::string& k : keys) k += "|" + rounds;
   std::string all_grids;
   for (const SensorGrid& g : grids)
@@ -81,7 +87,8 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
     return nlohmann::json{{"target_percent", o.target_percent}, {"reached_percent", o.reached_percent},
                           {"hourly_percent", o.hourly_percent}, {"grid_status", o.grid_status},
                           {"rounds", o.rounds},                 {"photons", o.photons},
-                          {"attempts", o.attempts},             {"stop_reason", o.stop_reason}}
+                          {"attempts", o.attempts},             {"stop_reason", o.stop_reason},
+                          {"gather", gather_accuracy_json(o.gather)}}
         .dump();
   };
   step.compute = [&]() -> std::vector<std::string> {
@@ -121,8 +128,10 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
     o.photons = j.at("photons").get<std::uint64_t>();
     o.attempts = j.at("attempts").get<std::uint64_t>();
     o.stop_reason = j.at("stop_reason").get<std::string>();
+    if (!j.contains("gather")) return false;  // made before the sun's gather rounds
+    o.gather = gather_accuracy_from_json(j.at("gather"));
     if (o.reached_percent.size() != grids.size() || o.hourly_percent.size() != grids.size() ||
-        o.grid_status.size() != grids.size())
+        o.grid_status.size() != grids.size() || o.gather.size() != grids.size())
       return false;
     outcome = std::move(o);
     return true;

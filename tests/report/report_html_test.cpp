@@ -663,6 +663,30 @@ TEST(ReportHtml, AGatheredGridsPhotonPartStopNamesTheBudgetOrLimit) {
   EXPECT_EQ(limit.find("traced more photons for it"), std::string::npos) << limit;
 }
 
+TEST(ReportHtml, AGatheredGridsSunBinsStateTheirGatherRounds) {
+  // A grid estimated by final gather in the sun bins' rounds: its sun sentence gives the gather
+  // rays and rounds on the annual measure and, above the target, its own gather stop (the
+  // photon budget the sun's photon rounds reached for its photon part) and the key to change.
+  const std::string dir = temp_dir("accuracy_sun_gather");
+  ResultsModel m = results_model(dir);
+  m.cases[0].grids[1].sun_accuracy =
+      SunAccuracyReached{1.0, 1.4, 8.1, 3, 2100000, "photon budget", "above target", 2304, 2, "photon budget"};
+  write_results_model(m, dir);
+  const std::string html = report_html(dir);
+  const std::string sun =
+      accuracy_item(accuracy_statements(html), "data-part=\"sun\" data-case=\"base\" data-grid=\"east_wall\"");
+  ASSERT_FALSE(sun.empty()) << html;
+  EXPECT_NE(sun.find("Reached 1.4 % by final gather at 2304 rays per sensor, after 2 gather rounds following 3 rounds "
+                     "of photon tracing (2.1 million photons)."),
+            std::string::npos)
+      << sun;
+  EXPECT_NE(sun.find("the photon rounds traced more photons for it until the photon budget was reached. What to do: "
+                     "raise <code>simulation.accuracy.max_photons</code>"),
+            std::string::npos)
+      << sun;
+  EXPECT_EQ(sun.find("not reachable by photons"), std::string::npos) << sun;
+}
+
 TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {
   // A run with an accuracy target: the base grid's sky met it, its sun bins stopped on the
   // photon budget above it; the wall grid (gathered) is not reachable by photons; the variant

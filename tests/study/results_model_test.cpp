@@ -87,7 +87,7 @@ ResultsModel full_model() {
   g.daylight_factor->accuracy =
       DaylightFactorSummary::AccuracyReached{2.0, 2.4, 3, 4100000, "photon budget", "above target", 4096, 2,
                                              "gather ray limit"};
-  g.sun_accuracy = SunAccuracyReached{2.0, 1.75, 9.5, 2, 3200000, "target met", "met"};
+  g.sun_accuracy = SunAccuracyReached{2.0, 1.75, 9.5, 2, 3200000, "target met", "met", 1024, 1, "target met"};
   AnnualSummary a;
   a.sensors = 3;
   a.time_steps = 8760;
@@ -189,6 +189,12 @@ TEST(ResultsModel, RoundTripsEveryField) {
   EXPECT_FALSE(changed == m);
   changed = back;
   changed.cases[1].grids[0].sun_accuracy->hourly_percent = 9.4;
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].sun_accuracy->gather_rays = 4096;
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].sun_accuracy->gather_stop_reason = "gather ray limit";
   EXPECT_FALSE(changed == m);
   changed = back;
   changed.cases[1].grids[0].sun_accuracy->status = "above target";

@@ -8,7 +8,10 @@
 #    traced);
 #  - the sun bins' rounds: the annual study of the same room in Oakland with `sun: bins` on
 #    Reinhart MF 1 (85 bins, 63 lit) and target 3 %: the sky's pilot meets it (2.3 %), the sun
-#    bins' pilot does not (about 9 %), so the sun rounds trace a second round.
+#    bins' pilot does not (about 9 %), so the sun rounds trace a second round;
+#  - a gathered grid in the sun bins' rounds: tests/cli/cases/gathered_sun_accuracy.yaml (a
+#    back-wall grid of 18 sensors at 16 gather rays, sun bins on MF 1, draft target 5 %): after
+#    the sun's pilot its gather rounds raise its rays (by sensor blocks over the ranks).
 # Every rank runs the rounds: the pilot's doublings and round 2's extension traced in attempt
 # ranges over the ranks, the estimates by sensor blocks (80 sensors, blocks of 16). Every file
 # of the results folders must be byte-identical to the one-process run's, apart from run.log
@@ -55,11 +58,17 @@ check() {
     same_results "$base/serial" "$out" || { echo "$name: mpirun -np $np wrote other results than the one-process run"; ok=0; }
     same_cache "$tmp/cache/$name/serial" "$tmp/cache/$name/np$np" ||
       { echo "$name: mpirun -np $np cached other artefacts than the one-process run"; ok=0; }
-    [ $ok -eq 1 ] && echo "ok   $name: mpirun -np $np: two rounds, results and cache byte-identical to the one-process run"
+    [ $ok -eq 1 ] && echo "ok   $name: mpirun -np $np: the expected rounds, results and cache byte-identical to the one-process run"
     [ $ok -eq 1 ] || fail=1
   done
 }
 
 check sky "$tmp/project.yaml" two_rounds
 check sun "$tmp/sun/project.yaml" two_sun_rounds
+
+gathered_sun_rounds() {
+  grep -q '^sun accuracy gather round 1, grid back_wall: ' "$1/run.log" &&
+    grep -q '^sun accuracy: target met after 1 round(s)$' "$1/run.log"
+}
+check gathered_sun "$source_dir/tests/cli/cases/gathered_sun_accuracy.yaml" gathered_sun_rounds
 exit $fail

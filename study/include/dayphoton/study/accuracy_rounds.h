@@ -199,8 +199,17 @@ struct AccuracyCase {
   bool gather = true;  ///< grids off a plane: final gather (else surface photons)
   engine::TracingOptions tracing;       ///< seed, region of interest, photons_per_source = the reference count
   engine::CoefficientOptions estimating;
+  /// The measure's weights per source: DF = 100 sum_p w . C_p L_p / horizontal_illuminance_lux
+  /// (the overcast sky; for the sun rounds' gathered grids, sun_accuracy_rounds.h, the year's
+  /// weight A_k of each bin as a grey vector, so that the "DF" is the annual sun-bin value).
   const RadianceMatrix* overcast_vector = nullptr;
   double horizontal_illuminance_lux = 0;
+  /// Each source was traced alone as source 0 (the sun bins): its photons are relabelled as
+  /// source p when merged (round_photons, accuracy_round_loop.h).
+  bool relabel_sources = false;
+  /// The words of the gather rounds' log lines: "<round_name> gather round 2, grid ...;
+  /// <measure_name> (95th percentile) ...".
+  std::string round_name = "accuracy", measure_name = "DF relative standard error";
 };
 
 /// A gathered grid's last estimate at more gather rays than the photon rounds' (its gather

@@ -126,7 +126,8 @@ struct GatherDirectRaise {
 /// photons starts each grid from the rays it reached and adds to its rounds), and settles the
 /// case's stop reason from result.outcome.stop_reason, the photon rounds' (settle_case_stop).
 /// `records`: the photon rounds' photons so far; `direct`, `direct_variance`: each grid's
-/// direct part (the whole grid's rows; `raise_direct`, if given, replaces a raised grid's);
+/// direct part (the whole grid's rows, or empty for none: zeros; `raise_direct`, if given,
+/// replaces a raised grid's);
 /// `seconds_so_far`: the rounds' time before (for the time budget). Collective through `work`
 /// like the photon rounds. Returns the photons the grids ask for.
 GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
@@ -150,5 +151,7 @@ void settle_case_stop(AccuracyOutcome& outcome, const std::string& photon_stop);
 /// The words the run log adds for a gathered grid (" (final gather, 4096 rays per sensor, 2
 /// gather round(s) from 1024: target met)"), empty for another grid.
 std::string gather_accuracy_note(const AccuracyOutcome& outcome, std::size_t grid);
+/// The same from the grids' gather rounds alone (the sun rounds' outcome, sun_accuracy_rounds.h).
+std::string gather_accuracy_note(const std::vector<GatherAccuracy>& gather, std::size_t grid);
 
 }  // namespace dayphoton::study

@@ -204,6 +204,11 @@ struct SunAccuracyReached {
   std::uint64_t photons = 0;   ///< stored photons of all sun bins of the case
   std::string stop_reason;     ///< "target met", "not reachable by photons", "photon budget", "round limit", "no light"
   std::string status;          ///< the grid's own: "met", "above target", "not reachable by photons"
+  /// A grid estimated by final gather: its gather rounds on the annual measure, as the sky's
+  /// (DaylightFactorSummary::AccuracyReached); gather_rays 0 for a grid the photons serve.
+  int gather_rays = 0;
+  std::size_t gather_rounds = 0;
+  std::string gather_stop_reason{};
 
   bool operator==(const SunAccuracyReached& o) const;
 };

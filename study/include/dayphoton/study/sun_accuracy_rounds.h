@@ -24,8 +24,13 @@
 // (GridPhotons::set_source_scale). Stops: target met, photon budget (stored photons of the sun
 // bins, the goal's max_photons again, apart from the sky's), round limit, no light. No time
 // budget (the run's goal for the sun has none: max_seconds bounds the sky's rounds). Grids
-// estimated by final gather are not chased (accuracy_policy.h): their outcome says "not
-// reachable by photons" when above the target. Deterministic: every round is a pure function
+// estimated by final gather are not chased by the photon rounds (accuracy_policy.h): when the
+// rounds would stop, such a grid above the target gets the sky's gather rounds
+// (gather_accuracy_rounds.h: more gather rays, then more photons of the bins for the gather's
+// photon part through a further round, within the same photon budget and round limit) with
+// the annual measure as their "DF" (each bin weighted by A_k); the sun bins' coefficients have
+// no direct part (the direct sun is exact, annual_sun.h), so no shadow rays are raised.
+// Deterministic: every round is a pure function
 // of the project and the seed, the same bytes for any number of threads and of MPI ranks
 // (under MPI the bins' attempt ranges and each round's sensor blocks are shared over the
 // ranks, round_work.h; docs/cluster.md "Accuracy rounds").
@@ -88,11 +93,14 @@ struct SunAccuracyOutcome {
   double target_percent = 0;
   std::vector<double> reached_percent;  ///< per grid: annual measure at the percentile
   std::vector<double> hourly_percent;   ///< per grid: hourly measure at the percentile (not targeted)
-  std::vector<std::string> grid_status; ///< per grid: "met", "above target", "not reachable by photons"
+  std::vector<std::string> grid_status; ///< per grid: "met", "above target"
+  std::vector<GatherAccuracy> gather;    ///< per grid: its gather rounds (gather_accuracy_rounds.h)
   std::size_t rounds = 0;
   std::uint64_t photons = 0;            ///< stored photons of all sun bins
   std::uint64_t attempts = 0;
-  std::string stop_reason;  ///< "target met", "photon budget", "round limit", "no light", "only gathered grids left"
+  /// "target met", "photon budget", "round limit", "no light", or, when only gathered grids
+  /// were left above the target, the first such grid's gather stop (settle_case_stop)
+  std::string stop_reason;
   std::vector<std::uint64_t> pilot_attempts, final_attempts;  ///< per bin (of a run that traced)
 };
 
