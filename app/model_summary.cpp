@@ -199,6 +199,8 @@ ModelSummary summarize_model(const project::Project& proj) {
       study::check_placement(scene, s.scene.grids, proj);
   for (const study::SensorSetPlacement& set : placement.sets)
     if (set.dropped) s.placement_lines.push_back(set.description);
+  // Outlines past the walls, exterior geometry that only shades: printed with the scene's warnings.
+  s.scene.warnings.insert(s.scene.warnings.end(), placement.warnings.begin(), placement.warnings.end());
   auto area_of = [&](const std::string& surface_name) {
     for (const Surface& surface : s.scene.surfaces)
       if (surface.name == surface_name) return polygon_area_m2(surface.vertices);

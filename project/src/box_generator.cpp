@@ -53,6 +53,7 @@ void generate_box(const BoxSpec& box, MaterialLookup& materials, Diagnostics& di
     surface.material = mat;
     for (const auto& v : f.v) surface.vertices.push_back(corner(v[0], v[1], v[2]));
     surface.solid_face = true;
+    surface.outdoor_scatterer = box.outdoor;
     surface.location = box.location;
     out.push_back(std::move(surface));
   }

@@ -799,6 +799,7 @@ class Loader {
     if (r.read_string("material", p.material)) use_material(r, "material", p.material);
     r.read_bool("port", p.port);
     read_facing(r, p.port, p.facing);
+    read_outdoor(r, p.port, p.outdoor);
     r.finish();
     return p;
   }
@@ -812,6 +813,7 @@ class Loader {
     r.read_vec3("size", b.size_m);
     r.read_number("rotation", b.rotation_deg);
     if (r.read_string("material", b.material)) use_material(r, "material", b.material);
+    read_outdoor(r, false, b.outdoor);
     r.finish();
     return b;
   }
@@ -843,8 +845,18 @@ class Loader {
     r.read_number("rotation", m.rotation_deg);
     r.read_bool("port", m.port);
     read_facing(r, m.port, m.facing);
+    read_outdoor(r, m.port, m.outdoor);
     r.finish();
     return m;
+  }
+
+  /// `outdoor` of a polygon, box or mesh: not for ports (light enters a port; an outdoor
+  /// scatterer sends light toward one).
+  void read_outdoor(ParamReader& r, bool port, bool& outdoor) {
+    if (!r.read_bool("outdoor", outdoor) || !outdoor || !port) return;
+    m_reporter.error(r.location_of("outdoor"), "a photon port cannot be 'outdoor' too (light enters the room "
+                                               "through a port; an outdoor surface sends light toward the ports): "
+                                               "remove 'port: true' or 'outdoor: true'");
   }
 
   /// `facing` of a polygon or mesh: only for ports.

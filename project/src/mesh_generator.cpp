@@ -87,6 +87,7 @@ void generate_mesh(const MeshSpec& mesh, MaterialLookup& materials, Diagnostics&
     // OBJ faces are wound counter-clockwise seen from outside (the format's convention), so
     // a closed mesh is a solid with outward normals; a mesh of ports is an opening.
     surface.solid_face = !mesh.port;
+    surface.outdoor_scatterer = mesh.outdoor;
     surface.location = face.location;
     out.push_back(std::move(surface));
   }

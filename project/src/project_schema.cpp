@@ -246,6 +246,7 @@ std::vector<SectionSchema> build_schema() {
       P("material", T::String, "material name").required(),
       P("port", T::Boolean, "photons from sky and sun enter through it").def("false"),
       P("facing", T::Choice, "ports: which side is the room: auto (the side that does not see the sky), in (the normal by the vertex order points into the room) or out").choices({"auto", "in", "out"}).def("auto"),
+      P("outdoor", T::Boolean, "outside the building: sky and sun photons also land on it, and the light it reflects or transmits toward the ports is traced (an outdoor scatterer, as exterior systems' parts); false: it only shades the ports").def("false"),
   }});
   s.push_back({"box", "a solid box with outward faces", {
       P("name", T::String, "unique box name").required(),
@@ -253,6 +254,7 @@ std::vector<SectionSchema> build_schema() {
       P("size", T::Vec3, "x, y, z extents").unit("m").above(0).required(),
       P("rotation", T::Number, "counter-clockwise rotation about +Z around the origin").unit("deg").range(-360, 360).def("0"),
       P("material", T::String, "material name").required(),
+      P("outdoor", T::Boolean, "outside the building: sky and sun photons also land on it, and the light it reflects or transmits toward the ports is traced (an outdoor scatterer, as exterior systems' parts); false: it only shades the ports").def("false"),
   }});
   s.push_back({"mesh", "a Wavefront OBJ mesh; usemtl groups map to project materials", {
       P("name", T::String, "unique mesh name").required(),
@@ -264,6 +266,7 @@ std::vector<SectionSchema> build_schema() {
       P("rotation", T::Number, "counter-clockwise rotation about +Z after scaling").unit("deg").range(-360, 360).def("0"),
       P("port", T::Boolean, "all faces are photon ports").def("false"),
       P("facing", T::Choice, "ports: which side is the room: auto (the side that does not see the sky), in (the normal of each face by its vertex order points into the room) or out").choices({"auto", "in", "out"}).def("auto"),
+      P("outdoor", T::Boolean, "outside the building: sky and sun photons also land on it, and the light it reflects or transmits toward the ports is traced (an outdoor scatterer, as exterior systems' parts); false: it only shades the ports").def("false"),
   }});
   // Daylight systems (docs/daylight-systems.md). Heights are above the room floor; `offset`
   // and `depth` are measured perpendicular to the wall; angles in degrees.

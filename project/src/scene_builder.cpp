@@ -104,6 +104,7 @@ void generate_polygon(const PolygonSpec& spec, detail::MaterialLookup& materials
   s.vertices = spec.vertices;
   s.port = spec.port;
   s.facing = spec.facing;
+  s.outdoor_scatterer = spec.outdoor;
   s.location = spec.location;
   out.push_back(std::move(s));
 }

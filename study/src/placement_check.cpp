@@ -1,7 +1,9 @@
 // Placement check: see placement_check.h.
 #include "dayphoton/study/placement_check.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include "dayphoton/core/diagnostics.h"
@@ -32,6 +34,160 @@ std::string point_text(const Vec3& p) {
 std::string sky_fractions(const engine::Port& port) {
   return "sky seen by " + percent(port.sky_fraction_winding) + " of the test rays on the side its vertex order "
          "faces, " + percent(port.sky_fraction_opposite) + " on the other";
+}
+
+Diagnostic warning_at(const SourceLocation& where, const std::string& message) {
+  Diagnostic d;
+  d.severity = Severity::Warning;
+  d.location = where;
+  d.message = message;
+  return d;
+}
+
+/// Probes along a receiver plane's outline (OutlineProbeInset_m inside it, about
+/// OutlineProbeSpacing_m apart), facing as the grid's sensors.
+std::vector<SensorPoint> outline_probes(const SensorGrid& grid) {
+  std::vector<SensorPoint> probes;
+  const std::vector<Vec3>& o = grid.outline;
+  const std::size_t n = o.size();
+  if (n < 3) return probes;
+  double twice_area = 0;  // > 0: counter-clockwise seen from above
+  for (std::size_t i = 0; i < n; ++i) twice_area += o[i].x * o[(i + 1) % n].y - o[(i + 1) % n].x * o[i].y;
+  const double side = twice_area >= 0 ? 1.0 : -1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 a = o[i], b = o[(i + 1) % n];
+    const double dx = b.x - a.x, dy = b.y - a.y, length = std::hypot(dx, dy);
+    if (!(length > 2 * OutlineProbeInset_m)) continue;
+    const Vec3 inward{-dy / length * side, dx / length * side, 0};
+    const int count = std::max(2, static_cast<int>(std::ceil(length / OutlineProbeSpacing_m)));
+    for (int k = 0; k < count; ++k) {
+      // Along the edge, OutlineProbeInset_m clear of its ends (the corners are the next edge's).
+      const double s = OutlineProbeInset_m / length + (1 - 2 * OutlineProbeInset_m / length) * (k + 0.5) / count;
+      probes.push_back({a + (b - a) * s + inward * OutlineProbeInset_m, grid.plane_normal});
+    }
+  }
+  return probes;
+}
+
+/// The warning for a receiver-plane grid whose outline reaches outside every room (header).
+void check_outline(const engine::Scene& scene, const SensorGrid& grid, double north_deg,
+                   std::vector<Diagnostic>& warnings) {
+  if (!grid.planar) return;
+  const std::vector<SensorPoint> probes = outline_probes(grid);
+  const std::vector<engine::SensorPlacementTest> tests = engine::test_sensor_placements(scene, probes);
+  std::size_t outside = 0, first = 0;
+  for (std::size_t i = 0; i < tests.size(); ++i)
+    if (tests[i].placement == engine::SensorPlacement::OutsideRooms && outside++ == 0) first = i;
+  if (outside == 0) return;
+  warnings.push_back(warning_at(
+      grid.location,
+      "sensor set '" + grid.name + "': its outline reaches outside every room (" + std::to_string(outside) + " of " +
+          std::to_string(probes.size()) + " points " + format_number(OutlineProbeInset_m) +
+          " m inside it, first at " + point_text(project::world_to_model(probes[first].position, north_deg)) +
+          " m, see the sky without a port); the work plane counts the light crossing it inside the outline, "
+          "and none crosses beyond the walls, so the sensors near that part read low. Draw the outline along "
+          "the room's inside faces"));
+}
+
+/// Cosine-distributed direction of the stratum (i, j) of a k x k lattice about `normal`
+/// (Malley's method: a uniform point of the unit disc lifted onto the hemisphere).
+Vec3 cosine_direction(const Vec3& normal, int i, int j, int k) {
+  const double u = (i + 0.5) / k, v = (j + 0.5) / k;
+  const double r = std::sqrt(u), phi = 2 * 3.14159265358979323846 * v;
+  const Vec3 helper = std::fabs(normal.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+  const Vec3 t = normalize(cross(helper, normal));
+  const Vec3 b = cross(normal, t);
+  return normalize(t * (r * std::cos(phi)) + b * (r * std::sin(phi)) + normal * std::sqrt(std::max(0.0, 1 - u)));
+}
+
+bool sends_light(const MaterialSpec& m) {
+  const double rho = std::max({m.reflectance.x, m.reflectance.y, m.reflectance.z});
+  switch (m.type) {
+    case MaterialType::Lambertian:
+    case MaterialType::Metal:
+    case MaterialType::Mirror: return rho > 0;
+    default: return true;
+  }
+}
+
+bool same_place(const SourceLocation& a, const SourceLocation& b) {
+  return a.file == b.file && a.line == b.line && a.column == b.column;
+}
+
+/// The warning for geometry outside the ports that only shades them (header comment).
+void check_exterior_geometry(const engine::Scene& scene, const project::Project& proj,
+                             std::vector<Diagnostic>& warnings) {
+  const SceneDescription& description = scene.description();
+  const engine::PortSet& ports = scene.ports();
+  // One entry per element (a box's faces share its location; an OBJ face names its mesh
+  // before ':'): the largest share of a port's outward view, that port, its first surface.
+  struct Seen {
+    double fraction = 0;
+    std::size_t port = 0;
+    int surface = -1;
+  };
+  std::map<std::string, Seen> seen;
+  // Only the elements that take `outdoor` (polygons, boxes, meshes) are named: a daylight
+  // system's `port` setting says how its light is traced, and a room's own envelope seen from
+  // outside (a roof under a light pipe's collector) is the documented limit of
+  // daylight-systems.md, "Ports".
+  const project::Geometry& g = proj.geometry;
+  auto may_be_outdoor = [&](const Surface& s) {
+    const std::size_t colon = s.name.find(':');
+    if (colon != std::string::npos)
+      return std::any_of(g.meshes.begin(), g.meshes.end(),
+                         [&](const project::MeshSpec& m) { return m.name == s.name.substr(0, colon); });
+    return std::any_of(g.polygons.begin(), g.polygons.end(),
+                       [&](const project::PolygonSpec& p) { return same_place(p.location, s.location); }) ||
+           std::any_of(g.boxes.begin(), g.boxes.end(),
+                       [&](const project::BoxSpec& b) { return same_place(b.location, s.location); });
+  };
+  auto element_of = [&](const Surface& s) {
+    const std::size_t colon = s.name.find(':');
+    return colon == std::string::npos ? s.location.to_string() : s.name.substr(0, colon);
+  };
+  constexpr int Strata = 4, Directions = 16;
+  static_assert(Strata * Strata == ExteriorViewPoints && Directions * Directions == ExteriorViewDirections,
+                "square lattices of points and directions");
+  for (std::size_t k = 0; k < ports.size(); ++k) {
+    const engine::Port& port = ports[k];
+    const Vec3 outward = port.normal * -1.0;
+    std::map<std::string, std::pair<int, int>> hits;  // element -> (rays, first surface)
+    for (int i = 0; i < Strata; ++i)
+      for (int j = 0; j < Strata; ++j) {
+        const Vec3 p = ports.sample(k, (i + 0.5) / Strata, (j + 0.5) / Strata).position;
+        for (int a = 0; a < Directions; ++a)
+          for (int b = 0; b < Directions; ++b) {
+            const Vec3 d = cosine_direction(outward, a, b, Directions);
+            const std::optional<engine::Hit> hit = scene.intersect(engine::Ray{scene.offset_ray_origin(p, outward, d), d});
+            if (!hit || hit->port >= 0 || hit->scatterer >= 0) continue;
+            const Surface& s = description.surfaces[static_cast<std::size_t>(hit->surface)];
+            if (!sends_light(description.materials[static_cast<std::size_t>(s.material)])) continue;
+            if (!may_be_outdoor(s)) continue;
+            auto [it, fresh] = hits.try_emplace(element_of(s), 0, hit->surface);
+            ++it->second.first;
+            if (!fresh && hit->surface < it->second.second) it->second.second = hit->surface;
+          }
+      }
+    const double rays = double(ExteriorViewPoints) * ExteriorViewDirections;
+    for (const auto& [element, h] : hits) {
+      Seen& e = seen[element];
+      if (h.first / rays > e.fraction) e = {h.first / rays, k, h.second};
+    }
+  }
+  std::vector<Seen> named;
+  for (const auto& [element, e] : seen)
+    if (e.fraction >= ExteriorViewWarnFraction) named.push_back(e);
+  std::sort(named.begin(), named.end(), [](const Seen& a, const Seen& b) { return a.surface < b.surface; });
+  for (const Seen& e : named) {
+    const Surface& s = description.surfaces[static_cast<std::size_t>(e.surface)];
+    warnings.push_back(warning_at(
+        s.location, "'" + s.name + "' lies outside port '" + ports[e.port].name + "' and fills " +
+                        percent(e.fraction) + " of its outward view (cosine-weighted): its shadow is traced, but "
+                        "not the light it reflects or transmits toward the port, so the sensors read low (a 0.4 m "
+                        "window reveal of reflectance 0.8: 13 % on the reference office). To trace that light, "
+                        "give the polygon, box or mesh 'outdoor: true' (an outdoor scatterer)"));
+  }
 }
 
 }  // namespace
@@ -147,8 +303,10 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
                "'drop_occluded: true' to leave them out");
       }
     }
+    check_outline(scene, grid, north_deg, out.warnings);
     out.sets.push_back(std::move(set));
   }
+  check_exterior_geometry(scene, proj, out.warnings);
   if (grids.empty())
     report(diag, project, "the project has no sensors: add a grid or a point set under 'sensors'");
   diag.throw_if_errors();

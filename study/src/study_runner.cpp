@@ -133,6 +133,11 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       log.line(prefix + set.description);
       report.notes.push_back(prefix + set.description);
     }
+  // Where the numbers read low without an error (placement_check.h): in the log and the report.
+  for (const Diagnostic& w : placement.warnings) {
+    log.line(prefix + "warning: " + w.location.to_string() + ": " + w.message);
+    report.notes.push_back(prefix + "warning: " + w.message);
+  }
   std::vector<engine::Material> materials;
   for (const MaterialSpec& m : description.materials)
     materials.push_back(engine::Material::from_spec(m));

@@ -610,6 +610,31 @@ TEST(ProjectLoader, PortFacingAndDropOccluded) {
   EXPECT_TRUE(sensors.sensors.points[0].drop_occluded);
 }
 
+TEST(ProjectLoader, OutdoorPolygonsBoxesAndMeshesAreOutdoorScatterers) {
+  // `outdoor: true` makes every surface of the element an outdoor scatterer (its reflected
+  // light is traced toward the ports); the default keeps it a shade; a port cannot be one.
+  const std::string materials = "materials: {w: {type: lambertian, reflectance: 0.5}}\n";
+  auto polygon = [&](const std::string& keys) {
+    return Head + materials + "geometry:\n  polygons:\n    - {name: p, material: w, " + keys +
+           "vertices: [[0, 0, 3], [1, 0, 3], [1, 1, 3]]}\n";
+  };
+  const Project shade = load_project_from_string(polygon(""), FakePath);
+  EXPECT_FALSE(shade.geometry.polygons[0].outdoor);
+  EXPECT_FALSE(build_scene_description(shade).surfaces[0].outdoor_scatterer);
+  const Project outdoor = load_project_from_string(polygon("outdoor: true, "), FakePath);
+  EXPECT_TRUE(outdoor.geometry.polygons[0].outdoor);
+  EXPECT_TRUE(build_scene_description(outdoor).surfaces[0].outdoor_scatterer);
+  EXPECT_EQ(errors_of(polygon("port: true, outdoor: true, ")),
+            std::vector<std::string>{"6:51: a photon port cannot be 'outdoor' too (light enters the room through a "
+                                     "port; an outdoor surface sends light toward the ports): remove 'port: true' "
+                                     "or 'outdoor: true'"});
+  const Project box = load_project_from_string(
+      Head + materials + "geometry:\n  boxes:\n    - {name: b, size: [1, 1, 1], material: w, outdoor: true}\n", FakePath);
+  const SceneDescription d = build_scene_description(box);
+  ASSERT_EQ(d.surfaces.size(), 6u);
+  for (const Surface& s : d.surfaces) EXPECT_TRUE(s.outdoor_scatterer) << s.name;
+}
+
 TEST(ProjectLoader, SimulationRegionOfInterest) {
   // Read as written (model coordinates); every sensor must lie inside it, else the one
   // message per grid points at the key.

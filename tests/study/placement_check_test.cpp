@@ -184,5 +184,88 @@ TEST(PlacementCheck, APortWhoseRoomSideCannotBeToldIsALocatedError) {
                          "'facing: in' (its normal by the vertex order points into the room) or 'facing: out'");
 }
 
+std::string warning_text(const Diagnostic& d) {
+  return std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + ": " + d.message;
+}
+
+TEST(PlacementCheck, AnOutlineDrawnPastTheWallsIsALocatedWarning) {
+  // The office's floor drawn 0.3 m past its walls (at the outer face of 0.3 m walls): the
+  // probes 2 cm inside that outline lie outside the room along the whole of it (edges of 6.6
+  // and 8.6 m, ceil(length / 0.1 m) probes each in floating point: 67 + 86 + 67 + 86); the
+  // same outline along the inside faces gives no warning, nor does the room grid.
+  const std::string grids = R"(sensors:
+  grids:
+    - {name: room, room: office, height: 0.8, spacing: 0.5, inset: 0.5}
+    - {name: inner, polygon: [[0, 0, 0], [6, 0, 0], [6, 8, 0], [0, 8, 0]], height: 0.8, spacing: 0.5, inset: 0.5}
+    - {name: outer, polygon: [[-0.3, -0.3, 0], [6.3, -0.3, 0], [6.3, 8.3, 0], [-0.3, 8.3, 0]], height: 0.8, spacing: 0.5, inset: 0.8}
+)";
+  const Outcome o = check_text(Head + Office + grids);
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  ASSERT_EQ(o.check.warnings.size(), 1u);
+  EXPECT_EQ(o.check.warnings[0].severity, Severity::Warning);
+  EXPECT_EQ(warning_text(o.check.warnings[0]).rfind(
+                "17:7: sensor set 'outer': its outline reaches outside every room (306 of 306 points 0.02 m inside it, "
+                "first at (",
+                0),
+            0u)
+      << warning_text(o.check.warnings[0]);
+  EXPECT_NE(o.check.warnings[0].message.find("Draw the outline along the room's inside faces"), std::string::npos);
+}
+
+TEST(PlacementCheck, AnOutlineReachingPastOneWallIsNamedToo) {
+  // Only the east edge lies 0.2 m past the wall (x = 6.2): its 80 probes and the two probes of
+  // the north and south edges that lie beyond x = 6.
+  const Outcome o = check_text(Head + Office + R"(sensors:
+  grids:
+    - {name: wide, polygon: [[0, 0, 0], [6.2, 0, 0], [6.2, 8, 0], [0, 8, 0]], height: 0.8, spacing: 0.5, inset: 0.5}
+)");
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  ASSERT_EQ(o.check.warnings.size(), 1u);
+  EXPECT_NE(o.check.warnings[0].message.find("its outline reaches outside every room (8"), std::string::npos)
+      << o.check.warnings[0].message;
+}
+
+const std::string Reveal = R"(  boxes:
+    - {name: sill, origin: [1, -0.4, 0.6], size: [4, 0.399, 0.3], material: walls%s}
+    - {name: far_away, origin: [1, -400, 0], size: [4, 1, 0.1], material: walls}
+sensors:
+  grids:
+    - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5}
+)";
+
+std::string reveal(const std::string& extra) {
+  std::string text = Reveal;
+  text.replace(text.find("%s"), 2, extra);
+  return Head + Office + text;
+}
+
+TEST(PlacementCheck, GeometryThatOnlyShadesAPortIsALocatedWarning) {
+  // A 0.4 m deep sill box in front of the window (x 1 .. 5 of a 4 m window centred at x 1 .. 5,
+  // sill 0.9): its top face fills about a tenth of the window's outward view. A low slab
+  // 400 m away fills none of it (below 1 %): not named.
+  const Outcome o = check_text(reveal(""));
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  ASSERT_EQ(o.check.warnings.size(), 1u);
+  const std::string w = warning_text(o.check.warnings[0]);
+  EXPECT_EQ(w.rfind("14:7: 'sill.top' lies outside port 'office.south' and fills ", 0), 0u) << w;
+  EXPECT_NE(w.find("give the polygon, box or mesh 'outdoor: true'"), std::string::npos) << w;
+}
+
+TEST(PlacementCheck, AnOutdoorBoxIsTracedAndNotNamed) {
+  const Outcome o = check_text(reveal(", outdoor: true"));
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  EXPECT_TRUE(o.check.warnings.empty()) << warning_text(o.check.warnings[0]);
+}
+
+TEST(PlacementCheck, ABlackBoxOutsideIsNotNamed) {
+  // Nothing to trace: a black surface reflects nothing toward the window.
+  std::string text = reveal("");
+  text.replace(text.find("material: walls}\n    - {name: far_away"), 15, "material: black");
+  text.replace(text.find("materials:\n"), 11, "materials:\n  black: {type: lambertian, reflectance: 0}\n");
+  const Outcome o = check_text(text);
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  EXPECT_TRUE(o.check.warnings.empty()) << warning_text(o.check.warnings[0]);
+}
+
 }  // namespace
 }  // namespace dayphoton::study

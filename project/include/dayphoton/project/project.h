@@ -141,6 +141,9 @@ struct PolygonSpec {
   bool port = false;
   /// Ports: which side is the room (`facing`: auto, in = the winding normal points into it, out).
   PortFacing facing = PortFacing::Auto;
+  /// `outdoor`: an outdoor scatterer (Surface::outdoor_scatterer): sky and sun photons also
+  /// land on it and the light it sends toward the ports is traced; otherwise it only shades.
+  bool outdoor = false;
   SourceLocation location;
 };
 
@@ -152,6 +155,9 @@ struct BoxSpec {
   Vec3 size_m{0, 0, 0};
   double rotation_deg = 0;
   std::string material;
+  /// `outdoor`: an outdoor scatterer (Surface::outdoor_scatterer): sky and sun photons also
+  /// land on it and the light it sends toward the ports is traced; otherwise it only shades.
+  bool outdoor = false;
   SourceLocation location;
 };
 
@@ -168,6 +174,9 @@ struct MeshSpec {
   bool port = false;
   /// Ports: which side of every face is the room (`facing`: auto, in, out), as for polygons.
   PortFacing facing = PortFacing::Auto;
+  /// `outdoor`: an outdoor scatterer (Surface::outdoor_scatterer): sky and sun photons also
+  /// land on it and the light it sends toward the ports is traced; otherwise it only shades.
+  bool outdoor = false;
   SourceLocation location;
 };
 
