@@ -9,8 +9,6 @@
 #include <cstring>
 #include <stdexcept>
 
-#include <tbb/parallel_for.h>
-
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/daylight_coefficients.h"
 #include "dayphoton/engine/final_gather.h"
@@ -229,11 +227,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
 
   // The photons of the last round, merged once, for any grid that needs more rays.
   LazyValue<engine::GridPhotons> maps;
-  auto build = [&] {
-    std::vector<engine::TracedPhotons> scaled(n);
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t p) { scaled[p] = engine::scaled_source_photons(records[p]); });
-    return engine::GridPhotons::for_gather(engine::merge_traced_photons(std::move(scaled)).surface, n);
-  };
+  auto build = [&] { return engine::GridPhotons::for_gather(engine::scaled_merged_photons(records, false).surface, n); };
   auto estimate = [&](std::size_t g, int rays, const std::string& name) {
     const SensorGrid& grid = grids[g];
     engine::CoefficientOptions options = c.estimating;
