@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/parallel_for.h>
+
 namespace dayphoton::engine {
 namespace {
 
@@ -110,6 +112,60 @@ TracedPhotons scaled_source_photons(const SourcePhotonRecord& record) {
   };
   rescale(out.surface);
   for (auto& plane : out.planes) rescale(plane);
+  return out;
+}
+
+TracedPhotons scaled_merged_photons(const std::vector<SourcePhotonRecord>& records, bool label_by_record) {
+  const std::size_t n = records.size();
+  TracedPhotons out;
+  std::size_t plane_count = 0;
+  for (const SourcePhotonRecord& r : records) plane_count = std::max(plane_count, r.raw.planes.size());
+  // Each record's offsets in the merged vectors (merge_traced_photons' order: record by record).
+  std::vector<std::size_t> surface_at(n + 1, 0);
+  std::vector<std::vector<std::size_t>> plane_at(plane_count, std::vector<std::size_t>(n + 1, 0));
+  for (std::size_t p = 0; p < n; ++p) {
+    const TracedPhotons& raw = records[p].raw;
+    surface_at[p + 1] = surface_at[p] + raw.surface.size();
+    for (std::size_t g = 0; g < plane_count; ++g)
+      plane_at[g][p + 1] = plane_at[g][p] + (g < raw.planes.size() ? raw.planes[g].size() : 0);
+  }
+  out.surface.resize(surface_at[n]);
+  out.planes.resize(plane_count);
+  for (std::size_t g = 0; g < plane_count; ++g) out.planes[g].resize(plane_at[g][n]);
+  // The tallies as scaled_source_photons sets them (one per record; a record without one gets one).
+  for (const SourcePhotonRecord& r : records) {
+    const std::size_t first = out.tallies.size();
+    if (r.raw.tallies.empty())
+      out.tallies.emplace_back();
+    else
+      out.tallies.insert(out.tallies.end(), r.raw.tallies.begin(), r.raw.tallies.end());
+    SourceTally& t = out.tallies[first];
+    t.prepass_attempts = r.attempts;
+    t.mainpass_attempts = 0;
+    t.storage_probability_global = t.storage_probability_caustic = t.storage_probability_direct = 1;
+    t.flux_per_attempt = r.attempts > 0 ? t.bound_flux / double(r.attempts) : 0.0;
+  }
+  std::vector<float> scale(n);
+  {
+    std::size_t first = 0;
+    for (std::size_t p = 0; p < n; ++p) {
+      scale[p] = static_cast<float>(out.tallies[first].flux_per_attempt);
+      first += std::max<std::size_t>(1, records[p].raw.tallies.size());
+    }
+  }
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t p) {
+    auto copy = [&](const std::vector<Photon>& from, Photon* to) {
+      for (const Photon& ph : from) {
+        Photon q = ph;
+        for (float& f : q.flux) f *= scale[p];
+        if (label_by_record) q.source = static_cast<std::uint32_t>(p);
+        *to++ = q;
+      }
+    };
+    const TracedPhotons& raw = records[p].raw;
+    copy(raw.surface, out.surface.data() + surface_at[p]);
+    for (std::size_t g = 0; g < raw.planes.size(); ++g) copy(raw.planes[g], out.planes[g].data() + plane_at[g][p]);
+  });
   return out;
 }
 

@@ -5,10 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include <tbb/parallel_for.h>
-
 #include "dayphoton/study/accuracy_policy.h"
-#include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/plan_policy.h"
 
 namespace dayphoton::study {
@@ -49,25 +46,7 @@ std::string round_outcome_sentence(const std::string& measure, double reached_pe
 }
 
 engine::TracedPhotons round_photons(const std::vector<engine::SourcePhotonRecord>& records, bool relabel) {
-  std::vector<engine::TracedPhotons> scaled(records.size());
-  tbb::parallel_for(std::size_t(0), records.size(), [&](std::size_t p) {
-    scaled[p] = engine::scaled_source_photons(records[p]);
-    if (relabel) relabel_photons(scaled[p], static_cast<std::uint32_t>(p));
-  });
-  return engine::merge_traced_photons(std::move(scaled));
-}
-
-engine::GridPhotons round_grid_photons(const std::vector<engine::ReceiverPlane>& planes,
-                                       const std::vector<int>& plane_of_grid, bool gather, std::size_t g,
-                                       const engine::TracedPhotons& photons, const std::vector<double>& scale) {
-  const std::size_t n = scale.size();
-  const int plane = plane_of_grid[g];
-  engine::GridPhotons gp =
-      plane >= 0 ? engine::GridPhotons::for_plane(planes[std::size_t(plane)], photons.planes[std::size_t(plane)], n)
-      : gather   ? engine::GridPhotons::for_gather(photons.surface, n)
-                 : engine::GridPhotons::for_surfaces(photons.surface, n);
-  if (!gp.gather()) gp.set_source_scale(scale);
-  return gp;
+  return engine::scaled_merged_photons(records, relabel);
 }
 
 RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal& goal, const RoundMeasure& measure,

@@ -120,16 +120,9 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
                                 const RoundLoopFinish& finish = {}, const RoundDirect& direct = {});
 
 /// Every record's photons with their flux (engine::scaled_source_photons) merged in source
-/// order; with `relabel`, source p's photons labelled p (a source traced alone as source 0,
-/// as each sun bin is).
+/// order, in one copy (engine::scaled_merged_photons); with `relabel`, source p's photons
+/// labelled p (a source traced alone as source 0, as each sun bin is).
 engine::TracedPhotons round_photons(const std::vector<engine::SourcePhotonRecord>& records, bool relabel);
-
-/// Grid g's photon maps of a round: its receiver plane's photons, else the surface photons for
-/// a final gather or a surface estimate; the kernel at the reference size (`scale`) except for
-/// a gather.
-engine::GridPhotons round_grid_photons(const std::vector<engine::ReceiverPlane>& planes,
-                                       const std::vector<int>& plane_of_grid, bool gather, std::size_t g,
-                                       const engine::TracedPhotons& photons, const std::vector<double>& scale);
 
 /// The outcome's sentence of the run log and the report: "<measure> (95th percentile of the
 /// sensors) 0.93 % <= target 1 %<detail>: target met after 3 round(s), 4100000 photons".

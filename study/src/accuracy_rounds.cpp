@@ -19,10 +19,10 @@
 #include "dayphoton/study/plan_policy.h"
 #include "gather_accuracy_json.h"
 #include "dayphoton/study/round_work.h"
+#include "dayphoton/study/round_grid_maps.h"
 #include "dayphoton/study/sensor_blocks.h"
 #include "dayphoton/study/step_executor.h"
 #include "accuracy_round_loop.h"
-#include "lazy_value.h"
 #include <nlohmann/json.hpp>
 
 namespace dayphoton::study {
@@ -47,21 +47,19 @@ std::vector<double> bin_luminance(const RadianceMatrix& sky) {
 
 /// Grid g's coefficients of one round, estimated by sensor blocks through `work` (round_work.h):
 /// the direct part given (`direct`, `direct_variance`, the whole grid's), the photon part from
-/// `photons` with the sources' scales. Every block's rows are the whole grid's (sensor_range.h),
-/// so the joined coefficients are those of the grid estimated at once.
-engine::DaylightCoefficients round_coefficients(const AccuracyCase& c, std::size_t g,
-                                                const engine::TracedPhotons& photons, const std::vector<double>& scale,
+/// the round's maps (`maps`: built once in a process that estimates some block). Every block's
+/// rows are the whole grid's (sensor_range.h), so the joined coefficients are those of the grid
+/// estimated at once.
+engine::DaylightCoefficients round_coefficients(const AccuracyCase& c, std::size_t g, RoundGridMaps& maps,
                                                 const std::vector<Vec3>& direct,
                                                 const std::vector<double>& direct_variance, RoundWork& work,
                                                 const std::string& name) {
   const std::size_t n = c.sources->size();
   const SensorGrid& grid = (*c.grids)[g];
-  LazyValue<engine::GridPhotons> maps;  // built once in a process that estimates some block
-  auto build = [&] { return round_grid_photons(*c.planes, *c.plane_of_grid, c.gather, g, photons, scale); };
   const std::vector<std::string> blocks = work.estimate(
       grid.points.size(),
       [&](std::size_t begin, std::size_t end) {
-        const engine::GridPhotons& gp = maps.get(build);
+        const engine::GridPhotons& gp = maps.of_grid(g);
         engine::DaylightCoefficients dc;
         dc.sensors = end - begin;
         dc.sources = n;
@@ -303,7 +301,7 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   // Each round: every grid estimated from the photons so far, its DF and their variances.
   const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
                                    const std::vector<double>& scale) {
-    const engine::TracedPhotons photons = round_photons(records, false);
+    RoundGridMaps maps(*c.planes, *c.plane_of_grid, c.gather, round_photons(records, false), scale);
     chased_grid.clear();
     result.coefficients.assign(grids.size(), {});
     result.outcome.reached_percent.assign(grids.size(), 0.0);
@@ -312,8 +310,9 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     m.met = true;
     for (std::size_t g = 0; g < grids.size(); ++g) {
       engine::DaylightCoefficients& dc = result.coefficients[g];
-      dc = round_coefficients(c, g, photons, scale, direct[g], direct_variance[g], work,
+      dc = round_coefficients(c, g, maps, direct[g], direct_variance[g], work,
                               "accuracy round " + std::to_string(round) + ", grid " + grids[g].name);
+      maps.done(g);
       GridVariance v;
       v.df_percent = daylight_factor_percent(dc.to_matrix(), *c.overcast_vector, c.horizontal_illuminance_lux);
       v.direct_variance.assign(dc.sensors, 0.0);

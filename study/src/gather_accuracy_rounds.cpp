@@ -249,7 +249,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
 
   // The photons of the last round, merged once, for any grid that needs more rays.
   LazyValue<engine::GridPhotons> maps;
-  auto build = [&] { return engine::GridPhotons::for_gather(round_photons(records, c.relabel_sources).surface, n); };
+  auto build = [&] { return engine::GridPhotons::for_gather(engine::scaled_merged_photons(records, c.relabel_sources).surface, n); };
   auto estimate = [&](std::size_t g, int rays, const std::string& name) {
     const SensorGrid& grid = grids[g];
     engine::CoefficientOptions options = c.estimating;

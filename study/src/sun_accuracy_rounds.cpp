@@ -16,9 +16,9 @@
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/gather_accuracy_rounds.h"
+#include "dayphoton/study/round_grid_maps.h"
 #include "dayphoton/study/sensor_blocks.h"
 #include "accuracy_round_loop.h"
-#include "lazy_value.h"
 
 namespace dayphoton::study {
 namespace {
@@ -199,7 +199,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   // annual measure (the target's) and the hourly one (reported).
   const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
                                    const std::vector<double>& scale) {
-    const engine::TracedPhotons photons = round_photons(records, true);
+    RoundGridMaps maps(planes, *c.plane_of_grid, c.gather, round_photons(records, true), scale);
     result.coefficients.assign(grids.size(), {});
     result.variance.assign(grids.size(), {});
     o.reached_percent.assign(grids.size(), 0.0);
@@ -208,18 +208,17 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
     m.grid_status.assign(grids.size(), "");
     m.met = true;
     for (std::size_t g = 0; g < grids.size(); ++g) {
-      LazyValue<engine::GridPhotons> maps;  // built once in a process that estimates some block
       const std::vector<std::string> blocks = work.estimate(
           grids[g].points.size(),
           [&](std::size_t begin, std::size_t end) {
-            const engine::GridPhotons& gp = maps.get(
-                [&] { return round_grid_photons(planes, *c.plane_of_grid, c.gather, g, photons, scale); });
+            const engine::GridPhotons& gp = maps.of_grid(g);  // built once in a process that estimates some block
             std::vector<double> variance;
             const RadianceMatrix coefficients = sun_bin_coefficients(scene, materials, sources, gp, grids[g].points,
                                                                      c.estimating, &variance, {begin, end});
             return encode_sun_block(coefficients, variance);
           },
           "sun accuracy round " + std::to_string(round) + ", grid " + grids[g].name);
+      maps.done(g);
       join_sun_blocks(blocks, grids[g].points.size(), n, result.coefficients[g], result.variance[g]);
       GridVariance v = sun_annual_variance(result.coefficients[g], result.variance[g], weights);
       std::vector<double> stderr_value(v.df_percent.size(), 0.0);

@@ -719,5 +719,61 @@ TEST(PhotonRounds, ThePilotInRangesEqualsThePilotAtOnce) {
   }
 }
 
+// The round's photons in one copy (scaled_merged_photons) are those of every record scaled
+// (scaled_source_photons) and merged (merge_traced_photons), bit for bit, with the same tallies,
+// and labelled by record when asked; a round then holds no per-source copies beside the merged
+// one (docs/photon-tracing.md "Scale").
+TEST(PhotonRounds, ScaledMergedPhotonsAreTheScaledSourcesMergedInOneCopy) {
+  const SceneDescription d = window_room(MaterialType::Glass);
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models_of(d);
+  const std::vector<ReceiverPlane> planes = {work_plane(3, 4, 0.8), work_plane(3, 4, 1.2)};
+  const SourceSet sources = SourceSet::sky_bins(sky::PatchBasis::tregenza());
+  const PortEmitter emitter(scene, sources);
+  TracingOptions o;
+  o.seed = 13;
+  o.store_direct_on_surfaces = true;
+  // Two sky bins and the ground, each at its own attempts, and a record never traced.
+  std::vector<SourcePhotonRecord> records;
+  for (const std::size_t source : {std::size_t(10), std::size_t(140), std::size_t(0)}) {
+    SourcePhotonRecord r = empty_source_record(scene, materials, emitter, planes, source);
+    extend_source_photons(scene, materials, emitter, planes, o, source, 3000 + 500 * records.size(), r);
+    records.push_back(std::move(r));
+  }
+  records.push_back(SourcePhotonRecord{});  // never traced: no tally, no planes
+  for (const bool label : {false, true}) {
+    std::vector<TracedPhotons> scaled;
+    for (std::size_t p = 0; p < records.size(); ++p) {
+      scaled.push_back(scaled_source_photons(records[p]));
+      if (label) {
+        for (Photon& ph : scaled.back().surface) ph.source = std::uint32_t(p);
+        for (auto& plane : scaled.back().planes)
+          for (Photon& ph : plane) ph.source = std::uint32_t(p);
+      }
+    }
+    const TracedPhotons expected = merge_traced_photons(std::move(scaled));
+    const TracedPhotons merged = scaled_merged_photons(records, label);
+    ASSERT_GT(expected.surface.size(), 0u);
+    ASSERT_EQ(merged.surface.size(), expected.surface.size());
+    EXPECT_EQ(0, std::memcmp(merged.surface.data(), expected.surface.data(), expected.surface.size() * sizeof(Photon)));
+    ASSERT_EQ(merged.planes.size(), expected.planes.size());
+    for (std::size_t g = 0; g < planes.size(); ++g) {
+      ASSERT_GT(expected.planes[g].size(), 0u) << "plane " << g;
+      ASSERT_EQ(merged.planes[g].size(), expected.planes[g].size()) << "plane " << g;
+      EXPECT_EQ(0, std::memcmp(merged.planes[g].data(), expected.planes[g].data(),
+                               expected.planes[g].size() * sizeof(Photon)))
+          << "plane " << g;
+    }
+    ASSERT_EQ(merged.tallies.size(), expected.tallies.size());
+    for (std::size_t p = 0; p < expected.tallies.size(); ++p) {
+      EXPECT_EQ(merged.tallies[p].prepass_attempts, expected.tallies[p].prepass_attempts);
+      EXPECT_EQ(merged.tallies[p].stored_global, expected.tallies[p].stored_global);
+      EXPECT_EQ(merged.tallies[p].rays, expected.tallies[p].rays);
+      EXPECT_EQ(merged.tallies[p].flux_per_attempt, expected.tallies[p].flux_per_attempt);
+      EXPECT_EQ(merged.tallies[p].bound_flux, expected.tallies[p].bound_flux);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace dayphoton::engine

@@ -69,4 +69,11 @@ void extend_source_photons(const Scene& scene, const std::vector<Material>& mate
 /// trace_source_photons reports it (all attempts in prepass_attempts, storage probabilities 1).
 TracedPhotons scaled_source_photons(const SourcePhotonRecord& record);
 
+/// The photons of every record with their flux, merged in record order: exactly what
+/// merge_traced_photons of each record's scaled_source_photons gives, but made in one copy
+/// (each record's photons scaled straight into the merged vectors at their offsets), so a round
+/// holds the records and one merged copy, never the per-source copies beside them. With
+/// `label_by_record`, record p's photons carry source p (a source traced alone as source 0).
+TracedPhotons scaled_merged_photons(const std::vector<SourcePhotonRecord>& records, bool label_by_record);
+
 }  // namespace dayphoton::engine
