@@ -680,7 +680,7 @@ TEST(ReportHtml, AGatheredGridsSunBinsStateTheirGatherRounds) {
                      "of photon tracing (2.1 million photons)."),
             std::string::npos)
       << sun;
-  EXPECT_NE(sun.find("the photon rounds traced more photons for it until the photon budget was reached. What to do: "
+  EXPECT_NE(sun.find("more photons would, but the photon budget left no room for them. What to do: "
                      "raise <code>simulation.accuracy.max_photons</code>"),
             std::string::npos)
       << sun;
