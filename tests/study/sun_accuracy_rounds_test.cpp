@@ -31,6 +31,7 @@
 #include "dayphoton/study/sun_accuracy_rounds.h"
 #include "counting_round_work.h"
 #include "in_process_study.h"
+#include "office_rounds.h"
 
 namespace dayphoton::study {
 namespace {
@@ -101,34 +102,12 @@ TEST(AccuracyPolicy, GatheredGridsAreNotChased) {
 
 // ---- whole rounds on the office -------------------------------------------------------------
 
-struct Office {
-  project::Project project;
-  SceneDescription description;
-  std::unique_ptr<engine::Scene> scene;
-  std::vector<engine::Material> materials;
-  std::vector<engine::ReceiverPlane> planes;
-  std::vector<int> plane_of_grid;
+struct Office : test::OfficeRounds {
   std::vector<sky::SunRecord> suns = test_suns();
   engine::SunBins bins = bins_of(suns);
 
-  explicit Office(bool wall_grid = false)
-      : project(project::load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/project.yaml")) {
-    project.sensors.grids.at(0).spacing_m = 1.0;  // 48 sensors
-    description = project::build_scene_description(project);
-    scene = std::make_unique<engine::Scene>(engine::Scene::build(description));
-    for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
-    for (const SensorGrid& g : description.grids) {
-      plane_of_grid.push_back(static_cast<int>(planes.size()));
-      planes.push_back(engine::ReceiverPlane::from_grid(g));
-    }
-    if (wall_grid) {
-      // The work plane's first 8 sensors again, as a grid off every plane: a final gather.
-      SensorGrid g = description.grids[0];
-      g.name = "gathered";
-      g.points.resize(8);
-      description.grids.push_back(g);
-      plane_of_grid.push_back(-1);
-    }
+  explicit Office(bool wall_grid = false) {
+    if (wall_grid) add_gathered_grid();
   }
   SunAccuracyCase accuracy_case(std::uint64_t seed) const {
     SunAccuracyCase c;
@@ -393,10 +372,7 @@ constexpr double SunPhotonPartTarget = 5.0;
 constexpr std::size_t SunPhotonPartReference = 100;
 
 struct GatheredOffice : Office {
-  GatheredOffice() : Office(true) {
-    description.grids.erase(description.grids.begin());
-    plane_of_grid.erase(plane_of_grid.begin());
-  }
+  GatheredOffice() : Office(true) { drop_work_plane_grid(); }
   SunAccuracyCase gathered_case(std::uint64_t seed) const {
     SunAccuracyCase c = accuracy_case(seed);
     c.tracing.photons_per_source = SunPhotonPartReference;
@@ -498,29 +474,24 @@ TEST(SunAccuracyTarget, GatheredGridOneAndTwoThreadsAndOneToThreeRanksGiveTheSam
 // pilot; the gather rounds (gather_accuracy_rounds.h) then raise the gathered grid's rays.
 TEST(AccuracyTarget, GatheredGridIsChasedByRaysNotPhotons) {
   const Office office(true);
-  const engine::SourceSet sources = engine::SourceSet::sky_bins(sky::PatchBasis::tregenza());
-  const double lux = 10000.0, rho = 0.2;
-  const auto overcast_sky = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(lux));
-  const RadianceMatrix overcast = sky::sky_vector(*overcast_sky, sky::PatchBasis::tregenza(),
-                                                  sky::ground_radiance_rgb({rho, rho, rho}, lux, 0, {0, 0, -1}));
   AccuracyCase c;
   c.scene = office.scene.get();
   c.materials = &office.materials;
-  c.sources = &sources;
+  c.sources = &office.sources;
   c.planes = &office.planes;
   c.plane_of_grid = &office.plane_of_grid;
   c.grids = &office.description.grids;
   c.gather = true;
   c.tracing.seed = 3;
   c.tracing.photons_per_source = 2000;
-  c.tracing.source_photon_factor.assign(sources.size(), 1.0);
+  c.tracing.source_photon_factor.assign(office.sources.size(), 1.0);
   c.tracing.source_photon_factor[0] = 16.0;
   c.tracing.keep_surface_photons = true;
   c.estimating.density.bandwidth = 20;
   c.estimating.direct.samples_per_source = 16;
   c.estimating.gather.rays_per_sensor = 1;
-  c.overcast_vector = &overcast;
-  c.horizontal_illuminance_lux = lux;
+  c.overcast_vector = &office.overcast;
+  c.horizontal_illuminance_lux = Office::OvercastLux;
   AccuracyGoal goal;
   goal.target_percent = 10.0;
   const AccuracyResult r = run_accuracy_rounds(c, goal, [](const std::string& line) { std::printf("%s\n", line.c_str()); });
