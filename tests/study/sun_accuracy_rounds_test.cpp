@@ -88,6 +88,23 @@ TEST(SunAccuracy, AnnualMeasureIsTheWeightedSumAndItsVariance) {
   EXPECT_EQ(g.direct_variance[0], 0.0);
 }
 
+// The gather's variance weights of the annual measure are the bins' A_k (one per bin, whatever
+// the options had), and nothing else of the options changes.
+TEST(SunAccuracy, AnnualEstimatingWeighsTheGatherRaysByTheYearsWeights) {
+  const std::vector<sky::SunRecord> suns = test_suns();
+  const engine::SunBins bins = bins_of(suns);
+  const SunYearWeights w = sun_year_weights(bins, suns);
+  engine::CoefficientOptions o;
+  o.density.bandwidth = 8;
+  o.gather.rays_per_sensor = 64;
+  o.gather.variance_weights = {1.0, 2.0};  // replaced
+  const engine::CoefficientOptions a = sun_annual_estimating(o, w);
+  ASSERT_EQ(a.gather.variance_weights.size(), bins.size());
+  EXPECT_EQ(a.gather.variance_weights, w.annual);
+  EXPECT_EQ(a.density.bandwidth, 8u);
+  EXPECT_EQ(a.gather.rays_per_sensor, 64);
+}
+
 TEST(AccuracyPolicy, GatheredGridsAreNotChased) {
   const std::vector<int> plane_of_grid = {0, -1};
   EXPECT_TRUE(grid_chased_by_photons(plane_of_grid, true, 0));
