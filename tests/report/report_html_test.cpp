@@ -666,7 +666,8 @@ TEST(ReportHtml, AGatheredGridsPhotonPartStopNamesTheBudgetOrLimit) {
 TEST(ReportHtml, AGatheredGridsSunBinsStateTheirGatherRounds) {
   // A grid estimated by final gather in the sun bins' rounds: its sun sentence gives the gather
   // rays and rounds on the annual measure and, above the target, its own gather stop (the
-  // photon budget the sun's photon rounds reached for its photon part) and the key to change.
+  // photon budget, which left no room for the photons its photon part asked for) and the key
+  // to change.
   const std::string dir = temp_dir("accuracy_sun_gather");
   ResultsModel m = results_model(dir);
   m.cases[0].grids[1].sun_accuracy =
@@ -680,10 +681,11 @@ TEST(ReportHtml, AGatheredGridsSunBinsStateTheirGatherRounds) {
                      "of photon tracing (2.1 million photons)."),
             std::string::npos)
       << sun;
-  EXPECT_NE(sun.find("the photon rounds traced more photons for it until the photon budget was reached. What to do: "
-                     "raise <code>simulation.accuracy.max_photons</code>"),
+  EXPECT_NE(sun.find("more photons would, but the photon budget left no room for them. What to do: raise "
+                     "<code>simulation.accuracy.max_photons</code>"),
             std::string::npos)
       << sun;
+  EXPECT_EQ(sun.find("traced more photons for it"), std::string::npos) << sun;
   EXPECT_EQ(sun.find("not reachable by photons"), std::string::npos) << sun;
 }
 
