@@ -52,6 +52,17 @@ struct Reached {
   std::string gather_stop_reason{};
 };
 
+/// The shadow rays at their limit, true whichever count the rounds ended at (results.json does
+/// not carry it): `who` raises them up to MaxDirectSamplesPerBin per sky patch and keeps a
+/// project's own larger direct_samples_per_bin unchanged.
+std::string direct_rays_at_limit(const std::string& who) {
+  const std::string limit = std::to_string(study::MaxDirectSamplesPerBin);
+  return "those rays were at their limit: " + who + " raise them up to " + limit +
+         " per sky patch, and keep the project's own <code>simulation.direct_samples_per_bin</code> where it is "
+         "higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " + limit +
+         " and above the project's present count, or ask for a looser target.";
+}
+
 /// Why a grid estimated by final gather is above the target and what to change, from its own
 /// gather rounds' stop (study/gather_accuracy.h).
 std::string gather_why_and_what_to_do(const Reached& r) {
@@ -91,12 +102,8 @@ std::string gather_why_and_what_to_do(const Reached& r) {
            "raise <code>simulation.direct_samples_per_bin</code>.";
   if (r.gather_stop_reason == "direct rays limit")
     return gathered + "; the sensors still above the target are so by the noise of their direct light (the "
-           "shadow rays toward the sky through the openings), and the gather rounds raised those rays to their "
-           "limit of " +
-           std::to_string(study::MaxDirectSamplesPerBin) +
-           " per sky patch. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
-           std::to_string(study::MaxDirectSamplesPerBin) + " (the rounds keep a larger count), or ask for a looser "
-           "target.";
+           "shadow rays toward the sky through the openings), and " +
+           direct_rays_at_limit("the gather rounds");
   return gathered + "; the gather rounds stopped with \"" + esc(r.gather_stop_reason) + "\".";
 }
 
@@ -125,11 +132,8 @@ std::string why_and_what_to_do(const Reached& r) {
            "<code>simulation.direct_samples_per_bin</code>.";
   if (r.stop_reason == "direct rays limit")
     return "Why: the sensors still above the target are so by the noise of their direct light (the shadow rays "
-           "toward the sky through the openings), and the rounds raised those rays to their limit of " +
-           std::to_string(study::MaxDirectSamplesPerBin) +
-           " per sky patch. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
-           std::to_string(study::MaxDirectSamplesPerBin) + " (the rounds keep a larger count), or ask for a looser "
-           "target.";
+           "toward the sky through the openings), and " +
+           direct_rays_at_limit("the rounds");
   if (r.stop_reason == "no light") return "Why: no light reaches the grid's sensors, so there is nothing to measure.";
   return "Why: the rounds stopped with \"" + esc(r.stop_reason) + "\".";
 }

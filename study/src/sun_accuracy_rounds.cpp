@@ -79,6 +79,11 @@ void join_sun_blocks(const std::vector<std::string>& blocks, std::size_t sensors
 
 }  // namespace
 
+engine::CoefficientOptions sun_annual_estimating(engine::CoefficientOptions estimating, const SunYearWeights& weights) {
+  estimating.gather.variance_weights = weights.annual;
+  return estimating;
+}
+
 SunYearWeights sun_year_weights(const engine::SunBins& bins, const std::vector<sky::SunRecord>& suns) {
   SunYearWeights w;
   w.annual.assign(bins.size(), 0.0);
@@ -180,6 +185,12 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   };
 
   const SunYearWeights weights = sun_year_weights(bins, *c.suns);
+  // A gathered grid's rays' variance split over the bins as the annual measure sums them:
+  // weighted by A_k (engine::GatherOptions::variance_weights, final_gather.h "Variance"), so
+  // that sum_k A_k^2 var_k is the variance of the annual value's own rays; unit weights
+  // overstate it (the rays are shared by the bins), and the rounds then traced more rays than
+  // the target needs.
+  const engine::CoefficientOptions estimating = sun_annual_estimating(c.estimating, weights);
   std::vector<char> chased(grids.size());
   for (std::size_t g = 0; g < grids.size(); ++g) chased[g] = grid_chased_by_photons(*c.plane_of_grid, c.gather, g);
 
@@ -214,7 +225,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
             const engine::GridPhotons& gp = maps.of_grid(g);  // built once in a process that estimates some block
             std::vector<double> variance;
             const RadianceMatrix coefficients = sun_bin_coefficients(scene, materials, sources, gp, grids[g].points,
-                                                                     c.estimating, &variance, {begin, end});
+                                                                     estimating, &variance, {begin, end});
             return encode_sun_block(coefficients, variance);
           },
           "sun accuracy round " + std::to_string(round) + ", grid " + grids[g].name);
@@ -256,7 +267,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   gathered.grids = &grids;
   gathered.gather = c.gather;
   gathered.tracing = c.tracing;
-  gathered.estimating = c.estimating;
+  gathered.estimating = estimating;
   gathered.overcast_vector = &annual_weights;
   gathered.horizontal_illuminance_lux = 100.0 * RadianceWhiteEfficacy_lm_per_W;
   gathered.relabel_sources = true;

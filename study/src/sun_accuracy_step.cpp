@@ -41,7 +41,9 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
   c.grids = &grids;
   c.gather = plan.point_estimate == project::PointEstimate::Gather;
   c.tracing = plan.tracing_for(plan.sun_tracing, cs.layout);
-  c.estimating = plan.sun_estimating;
+  // As the rounds estimate (the gather's variance weights are the bins' yearly weights): so in
+  // the keys too.
+  c.estimating = sun_annual_estimating(plan.sun_estimating, sun_year_weights(bins, suns));
   AccuracyGoal goal;
   goal.target_percent = sim.accuracy->target_df_relative_stderr_percent;
   goal.max_photons = sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons;

@@ -3,7 +3,7 @@
 # (docs/photon-tracing.md "Accuracy target", "Gathered grids in the sun bins' rounds"):
 # tests/cli/cases/gathered_sun_accuracy.yaml has one grid on the back wall (18 sensors off every
 # receiver plane), sun bins, the draft target (5 %) and 16 gather rays per sensor, far too few
-# for the annual sun-bin illuminance (about 50 % after the sun's pilot). The sun rounds must
+# for the annual sun-bin illuminance (about 40 % after the sun's pilot). The sun rounds must
 # give it gather rounds until it meets the target, and say so:
 #   - summary.json grids[0].accuracy.sun: status "met", stop_reason "target met", reached <= 5 %,
 #     gather {first_gather_rays 16, gather_rays > 16 (a square), rounds >= 1, stop_reason

@@ -587,8 +587,10 @@ TEST(ReportHtml, AGatheredGridsAccuracyIsExplainedByItsOwnGatherRounds) {
 }
 
 TEST(ReportHtml, TheDirectRaysLimitNamesTheKeyToChange) {
-  // The rounds raised the shadow rays to their limit and stopped there: the sentence says so,
-  // with the limit, and names direct_samples_per_bin (not the photon keys).
+  // The shadow rays were at the rounds' limit and the rounds stopped there: the sentence says
+  // so, with the limit and the project's own larger count the rounds keep (results.json does
+  // not say which it was, so the sentence never claims the rounds raised them to 256), and
+  // names direct_samples_per_bin (not the photon keys).
   const std::string dir = temp_dir("accuracy_direct_limit");
   ResultsModel m = results_model(dir);
   using Acc = DaylightFactorSummary::AccuracyReached;
@@ -599,18 +601,20 @@ TEST(ReportHtml, TheDirectRaysLimitNamesTheKeyToChange) {
   ASSERT_NE(at, std::string::npos);
   const std::string item = html.substr(at, html.find("</li>", at) - at);
   EXPECT_NE(item.find("<strong>Above the target.</strong> Why: the sensors still above the target are so by the "
-                      "noise of their direct light (the shadow rays toward the sky through the openings), and the "
-                      "rounds raised those rays to their limit of " +
+                      "noise of their direct light (the shadow rays toward the sky through the openings), and "
+                      "those rays were at their limit: the rounds raise them up to " +
                       std::to_string(MaxDirectSamplesPerBin) +
-                      " per sky patch. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
-                      std::to_string(MaxDirectSamplesPerBin)),
+                      " per sky patch, and keep the project's own <code>simulation.direct_samples_per_bin</code> "
+                      "where it is higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
+                      std::to_string(MaxDirectSamplesPerBin) + " and above the project's present count"),
             std::string::npos)
       << item;
+  EXPECT_EQ(item.find("raised those rays"), std::string::npos) << item;
   EXPECT_EQ(item.find("max_photons"), std::string::npos) << item;
 }
 
 TEST(ReportHtml, AGatheredGridsDirectRaysLimitNamesTheKeyToChange) {
-  // A grid estimated by final gather whose gather rounds raised its shadow rays to their limit:
+  // A grid estimated by final gather whose gather rounds stopped with its shadow rays at their limit:
   // its own sentence says so and names direct_samples_per_bin, not the gather or photon keys.
   const std::string dir = temp_dir("accuracy_gather_direct_limit");
   ResultsModel m = results_model(dir);
@@ -623,12 +627,14 @@ TEST(ReportHtml, AGatheredGridsDirectRaysLimitNamesTheKeyToChange) {
       accuracy_item(accuracy_statements(html), "data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
   ASSERT_FALSE(wall.empty()) << html;
   EXPECT_NE(wall.find("estimated by final gather"), std::string::npos) << wall;
-  EXPECT_NE(wall.find("the gather rounds raised those rays to their limit of " +
+  EXPECT_NE(wall.find("those rays were at their limit: the gather rounds raise them up to " +
                       std::to_string(MaxDirectSamplesPerBin) +
-                      " per sky patch. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
-                      std::to_string(MaxDirectSamplesPerBin)),
+                      " per sky patch, and keep the project's own <code>simulation.direct_samples_per_bin</code> "
+                      "where it is higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
+                      std::to_string(MaxDirectSamplesPerBin) + " and above the project's present count"),
             std::string::npos)
       << wall;
+  EXPECT_EQ(wall.find("raised those rays"), std::string::npos) << wall;
   EXPECT_EQ(wall.find("stopped with"), std::string::npos) << wall;
   EXPECT_EQ(wall.find("gather_rays"), std::string::npos) << wall;
 }
@@ -666,7 +672,8 @@ TEST(ReportHtml, AGatheredGridsPhotonPartStopNamesTheBudgetOrLimit) {
 TEST(ReportHtml, AGatheredGridsSunBinsStateTheirGatherRounds) {
   // A grid estimated by final gather in the sun bins' rounds: its sun sentence gives the gather
   // rays and rounds on the annual measure and, above the target, its own gather stop (the
-  // photon budget the sun's photon rounds reached for its photon part) and the key to change.
+  // photon budget, which left no room for the photons its photon part asked for) and the key
+  // to change.
   const std::string dir = temp_dir("accuracy_sun_gather");
   ResultsModel m = results_model(dir);
   m.cases[0].grids[1].sun_accuracy =
@@ -680,10 +687,11 @@ TEST(ReportHtml, AGatheredGridsSunBinsStateTheirGatherRounds) {
                      "of photon tracing (2.1 million photons)."),
             std::string::npos)
       << sun;
-  EXPECT_NE(sun.find("more photons would, but the photon budget left no room for them. What to do: "
-                     "raise <code>simulation.accuracy.max_photons</code>"),
+  EXPECT_NE(sun.find("more photons would, but the photon budget left no room for them. What to do: raise "
+                     "<code>simulation.accuracy.max_photons</code>"),
             std::string::npos)
       << sun;
+  EXPECT_EQ(sun.find("traced more photons for it"), std::string::npos) << sun;
   EXPECT_EQ(sun.find("not reachable by photons"), std::string::npos) << sun;
 }
 

@@ -34,6 +34,7 @@
 #include "dayphoton/study/plan_policy.h"
 #include "counting_round_work.h"
 #include "in_process_study.h"
+#include "office_rounds.h"
 
 namespace dayphoton::study {
 namespace {
@@ -154,32 +155,8 @@ TEST(AccuracyRounds, SensorsBeyondThePercentileAreNotChased) {
 // ---- whole rounds on the office ------------------------------------------------------------
 
 /// The reference office as run_study sets it up, DF only, with test settings.
-struct Office {
-  project::Project project;
-  SceneDescription description;
-  std::unique_ptr<engine::Scene> scene;
-  std::vector<engine::Material> materials;
-  engine::SourceSet sources;
-  std::vector<engine::ReceiverPlane> planes;
-  std::vector<int> plane_of_grid;
-  RadianceMatrix overcast;
-
-  explicit Office(std::uint64_t seed)
-      : project(project::load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/project.yaml")),
-        sources(engine::SourceSet::sky_bins(sky::PatchBasis::tregenza())) {
-    project.sensors.grids.at(0).spacing_m = 1.0;  // 6 x 8 = 48 sensors: a quarter of the time
-    description = project::build_scene_description(project);
-    scene = std::make_unique<engine::Scene>(engine::Scene::build(description));
-    for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
-    for (const SensorGrid& g : description.grids) {
-      plane_of_grid.push_back(static_cast<int>(planes.size()));
-      planes.push_back(engine::ReceiverPlane::from_grid(g));
-    }
-    const double lux = 10000.0, rho = 0.2;
-    const auto sky = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(lux));
-    overcast = sky::sky_vector(*sky, sky::PatchBasis::tregenza(), sky::ground_radiance_rgb({rho, rho, rho}, lux, 0, {0, 0, -1}));
-    this->seed = seed;
-  }
+struct Office : test::OfficeRounds {
+  explicit Office(std::uint64_t seed) { this->seed = seed; }
   AccuracyCase accuracy_case() const {
     AccuracyCase c;
     c.scene = scene.get();

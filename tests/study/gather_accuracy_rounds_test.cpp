@@ -34,6 +34,7 @@
 #include "dayphoton/study/gather_accuracy_rounds.h"
 #include "dayphoton/study/plan_policy.h"
 #include "in_process_study.h"
+#include "office_rounds.h"
 
 namespace dayphoton::study {
 namespace {
@@ -151,44 +152,17 @@ TEST(GatherPhotonPlan, NoPhotonsWhenTheyCannotHelpOrAreNotTheProblem) {
 
 // ---- whole rounds on the office -------------------------------------------------------------
 
-struct Office {
-  project::Project project;
-  SceneDescription description;
-  std::unique_ptr<engine::Scene> scene;
-  std::vector<engine::Material> materials;
-  engine::SourceSet sources = engine::SourceSet::sky_bins(sky::PatchBasis::tregenza());
-  std::vector<engine::ReceiverPlane> planes;
-  std::vector<int> plane_of_grid;
-  RadianceMatrix overcast;
-
+struct Office : test::OfficeRounds {
   std::size_t photons_per_source = 2000;  ///< the reference count of the rounds
   std::size_t direct_samples = 16;        ///< shadow rays per source and sensor
 
   /// `plane_grid` false: the gathered grid alone (no receiver plane, no grid the photons serve).
-  explicit Office(bool gathered_grid = true, bool plane_grid = true)
-      : project(project::load_project(std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/project.yaml")) {
-    project.sensors.grids.at(0).spacing_m = 1.0;  // 48 sensors
-    description = project::build_scene_description(project);
-    scene = std::make_unique<engine::Scene>(engine::Scene::build(description));
-    for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
-    plane_of_grid.push_back(0);
-    planes.push_back(engine::ReceiverPlane::from_grid(description.grids[0]));
-    if (gathered_grid) {
-      // The work plane's first 8 sensors again, off every plane: a final gather.
-      SensorGrid g = description.grids[0];
-      g.name = "gathered";
-      g.points.resize(8);
-      description.grids.push_back(g);
-      plane_of_grid.push_back(-1);
-    }
+  explicit Office(bool gathered_grid = true, bool plane_grid = true) {
+    if (gathered_grid) add_gathered_grid();
     if (!plane_grid) {
-      description.grids.erase(description.grids.begin());
-      plane_of_grid.erase(plane_of_grid.begin());
+      drop_work_plane_grid();
       planes.clear();
     }
-    const double lux = 10000.0, rho = 0.2;
-    const auto sky = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(lux));
-    overcast = sky::sky_vector(*sky, sky::PatchBasis::tregenza(), sky::ground_radiance_rgb({rho, rho, rho}, lux, 0, {0, 0, -1}));
   }
   AccuracyCase accuracy_case(std::uint64_t seed, int gather_rays) const {
     AccuracyCase c;

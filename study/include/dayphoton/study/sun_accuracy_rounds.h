@@ -28,7 +28,8 @@
 // rounds would stop, such a grid above the target gets the sky's gather rounds
 // (gather_accuracy_rounds.h: more gather rays, then more photons of the bins for the gather's
 // photon part through a further round, within the same photon budget and round limit) with
-// the annual measure as their "DF" (each bin weighted by A_k); the sun bins' coefficients have
+// the annual measure as their "DF" (each bin weighted by A_k, in the gather's rays' variance
+// too: sun_annual_estimating); the sun bins' coefficients have
 // no direct part (the direct sun is exact, annual_sun.h), so no shadow rays are raised.
 // Deterministic: every round is a pure function
 // of the project and the seed, the same bytes for any number of threads and of MPI ranks
@@ -60,6 +61,12 @@ struct SunYearWeights {
 };
 SunYearWeights sun_year_weights(const engine::SunBins& bins, const std::vector<sky::SunRecord>& suns);
 
+/// `estimating` with the gather's variance weights of the annual measure: each bin's A_k
+/// (engine::GatherOptions::variance_weights), so that a gathered grid's per-bin variances,
+/// summed with the weights A_k^2, give the variance of its annual value (final_gather.h,
+/// "Variance"). The rounds estimate with it whatever `estimating` had.
+engine::CoefficientOptions sun_annual_estimating(engine::CoefficientOptions estimating, const SunYearWeights& weights);
+
 /// One grid's sun-bin measures from its coefficients (sensors x bins x RGB) and variances
 /// (sensors x bins, of each entry's luminance): per sensor the annual sun-bin value
 /// sum_k A_k C_k(s) (luminance units), and the GridVariance of next_round_scale in those units
@@ -85,7 +92,7 @@ struct SunAccuracyCase {
   const std::vector<SensorGrid>* grids = nullptr;
   bool gather = true;                    ///< grids off a plane: final gather (else surface photons)
   engine::TracingOptions tracing;        ///< the sun's: seed, photons_per_source = the reference count
-  engine::CoefficientOptions estimating; ///< the sun's (sun-bin bandwidth)
+  engine::CoefficientOptions estimating; ///< the sun's (sun-bin bandwidth); its gather weights: sun_annual_estimating
 };
 
 /// What the sun rounds did (summary.json `accuracy.sun` of each grid, docs/outputs.md).
