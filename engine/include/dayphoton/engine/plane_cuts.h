@@ -12,7 +12,9 @@
 // plane's height, blocks no photon crossing it). The room's own walls cut the plane along
 // the outline, which the outline clip already handles: segments lying on the outline (both
 // ends within OnOutline_m of one edge) or outside it are left out, and so are the openings
-// (ports), which light passes.
+// (ports), which light passes. A segment that crosses the outline (a partition that runs on
+// out of a grid outline smaller than the room) is split where it crosses, and the pieces
+// inside are kept.
 #pragma once
 
 #include <vector>
