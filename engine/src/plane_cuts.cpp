@@ -2,6 +2,8 @@
 #include "dayphoton/engine/plane_cuts.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cmath>
 
 namespace dayphoton::engine {
@@ -60,6 +62,11 @@ void add_inside_pieces(const ReceiverPlane& plane, const PlaneSegment& s, std::v
 std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const ReceiverPlane& plane) {
   std::vector<PlaneSegment> cuts;
   const double z = plane.height_m();
+  // Edges lying in the plane, (x0, y0, x1, y1) with the lesser end first, and the sides their
+  // triangles reach (1 above, 2 below): a seam that both sides reach (a partition of two
+  // panels meeting at the plane's height, a column mesh with a ring of vertices there) cuts
+  // the plane; one side alone (the top edges of a desk whose top is the plane) does not.
+  std::map<std::array<double, 4>, int> in_plane_edges;
   for (std::size_t t = 0; t < scene.triangle_count(); ++t) {
     const SceneTriangle& tri = scene.triangle(static_cast<std::uint32_t>(t));
     if (scene.is_port(tri.surface)) continue;
@@ -70,7 +77,19 @@ std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const Receiver
       above = above || d[k] > 0;
       below = below || d[k] < 0;
     }
-    if (!above || !below) continue;
+    if (!above || !below) {
+      for (int k = 0; k < 3; ++k) {
+        const Vec3& p = tri.vertices[k];
+        const Vec3& q = tri.vertices[(k + 1) % 3];
+        if (d[k] != 0 || d[(k + 1) % 3] != 0 || (p.x == q.x && p.y == q.y)) continue;
+        if (!above && !below) continue;  // the triangle lies in the plane
+        const bool p_first = p.x < q.x || (p.x == q.x && p.y < q.y);
+        const std::array<double, 4> key = p_first ? std::array<double, 4>{p.x, p.y, q.x, q.y}
+                                                  : std::array<double, 4>{q.x, q.y, p.x, p.y};
+        in_plane_edges[key] |= above ? 1 : 2;
+      }
+      continue;
+    }
     // The two points where the triangle's boundary meets the plane: a vertex on it, or an
     // edge whose ends lie on opposite sides.
     PlanePoint ends[2];
@@ -91,6 +110,8 @@ std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const Receiver
     if (cut.a.x == cut.b.x && cut.a.y == cut.b.y) continue;
     add_inside_pieces(plane, cut, cuts);
   }
+  for (const auto& [edge, sides] : in_plane_edges)
+    if (sides == 3) add_inside_pieces(plane, {{edge[0], edge[1]}, {edge[2], edge[3]}}, cuts);
   return cuts;
 }
 

@@ -133,6 +133,25 @@ TEST(PlaneCuts, APartitionCutsTheWorkPlaneTheWallsAndALowDeskDoNot) {
   EXPECT_TRUE(interior_plane_cuts(Scene::build(low), plane).empty());
 }
 
+TEST(PlaneCuts, ASeamAtThePlanesHeightCutsItADeskTopThereDoesNot) {
+  // A partition of two panels meeting at the plane's height (0-0.8 m and 0.8-1.4 m, x 0.5-3.5
+  // at y = 2): no triangle has vertices strictly on both sides, yet the seam is a wall across
+  // the plane, 3 m long. A desk box whose top is the plane (x 1-2, y 0.5-1.2, 0-0.8 m) touches
+  // it from below only: no cut.
+  SceneDescription d = test::box_room({4, 4, 3});
+  test::add_surface(d, "lower", 0, {{0.5, 2, 0}, {3.5, 2, 0}, {3.5, 2, 0.8}, {0.5, 2, 0.8}});
+  test::add_surface(d, "upper", 0, {{0.5, 2, 0.8}, {3.5, 2, 0.8}, {3.5, 2, 1.4}, {0.5, 2, 1.4}});
+  test::add_surface(d, "desk_top", 0, {{1, 0.5, 0.8}, {2, 0.5, 0.8}, {2, 1.2, 0.8}, {1, 1.2, 0.8}});
+  test::add_surface(d, "desk_south", 0, {{1, 0.5, 0}, {2, 0.5, 0}, {2, 0.5, 0.8}, {1, 0.5, 0.8}});
+  test::add_surface(d, "desk_east", 0, {{2, 0.5, 0}, {2, 1.2, 0}, {2, 1.2, 0.8}, {2, 0.5, 0.8}});
+  const ReceiverPlane plane(0.8, true, Square4);
+  const std::vector<PlaneSegment> cuts = interior_plane_cuts(Scene::build(d), plane);
+  ASSERT_EQ(cuts.size(), 1u);
+  EXPECT_NEAR(cuts[0].a.y, 2, 1e-12);
+  EXPECT_NEAR(cuts[0].b.y, 2, 1e-12);
+  EXPECT_NEAR(std::fabs(cuts[0].b.x - cuts[0].a.x), 3.0, 1e-12);
+}
+
 TEST(PlaneCuts, ACutPartlyInsideTheOutlineKeepsItsPartInside) {
   // A grid outline smaller than the room (the square 0-4 m of an 8 x 8 m room): a partition
   // along y = 2 from x = 3 to 6.5 m cuts the plane inside over x 3-4 m, though the middle of
