@@ -2,6 +2,8 @@
 #include "dayphoton/engine/plane_cuts.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cmath>
 
 namespace dayphoton::engine {
@@ -25,11 +27,46 @@ bool on_outline(const ReceiverPlane& plane, const PlaneSegment& s) {
   return false;
 }
 
+// The parts of a cut inside the outline: the cut split where it meets the outline's edges,
+// the pieces whose middle lies inside kept. A partition that runs on out of a grid outline
+// smaller than the room (or a triangle's cut longer than the room) still hides what lies
+// behind it from the sensors inside; its part outside lies behind the outline anyway.
+void add_inside_pieces(const ReceiverPlane& plane, const PlaneSegment& s, std::vector<PlaneSegment>& cuts) {
+  const std::vector<PlanePoint>& outline = plane.outline();
+  std::vector<double> at = {0.0, 1.0};
+  const double ex = s.b.x - s.a.x, ey = s.b.y - s.a.y;
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const PlanePoint& p = outline[i];
+    const PlanePoint& q = outline[(i + 1) % outline.size()];
+    const double fx = q.x - p.x, fy = q.y - p.y;
+    const double den = ex * fy - ey * fx;
+    if (den == 0) continue;  // parallel: the neighbouring edges bound any stretch along it
+    // s.a + t e = p + u f
+    const double t = ((p.x - s.a.x) * fy - (p.y - s.a.y) * fx) / den;
+    const double u = ((p.x - s.a.x) * ey - (p.y - s.a.y) * ex) / den;
+    if (t > 0 && t < 1 && u >= 0 && u <= 1) at.push_back(t);
+  }
+  std::sort(at.begin(), at.end());
+  for (std::size_t k = 0; k + 1 < at.size(); ++k) {
+    if (!(at[k + 1] > at[k])) continue;
+    const PlaneSegment piece{{s.a.x + at[k] * ex, s.a.y + at[k] * ey}, {s.a.x + at[k + 1] * ex, s.a.y + at[k + 1] * ey}};
+    const PlanePoint middle{0.5 * (piece.a.x + piece.b.x), 0.5 * (piece.a.y + piece.b.y)};
+    if (!plane.contains(middle.x, middle.y) || on_outline(plane, piece)) continue;
+    // A cut wholly inside is kept as computed (k = 0 and the end 1: no division).
+    cuts.push_back(at.size() == 2 ? s : piece);
+  }
+}
+
 }  // namespace
 
 std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const ReceiverPlane& plane) {
   std::vector<PlaneSegment> cuts;
   const double z = plane.height_m();
+  // Edges lying in the plane, (x0, y0, x1, y1) with the lesser end first, and the sides their
+  // triangles reach (1 above, 2 below): a seam that both sides reach (a partition of two
+  // panels meeting at the plane's height, a column mesh with a ring of vertices there) cuts
+  // the plane; one side alone (the top edges of a desk whose top is the plane) does not.
+  std::map<std::array<double, 4>, int> in_plane_edges;
   for (std::size_t t = 0; t < scene.triangle_count(); ++t) {
     const SceneTriangle& tri = scene.triangle(static_cast<std::uint32_t>(t));
     if (scene.is_port(tri.surface)) continue;
@@ -40,7 +77,19 @@ std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const Receiver
       above = above || d[k] > 0;
       below = below || d[k] < 0;
     }
-    if (!above || !below) continue;
+    if (!above || !below) {
+      for (int k = 0; k < 3; ++k) {
+        const Vec3& p = tri.vertices[k];
+        const Vec3& q = tri.vertices[(k + 1) % 3];
+        if (d[k] != 0 || d[(k + 1) % 3] != 0 || (p.x == q.x && p.y == q.y)) continue;
+        if (!above && !below) continue;  // the triangle lies in the plane
+        const bool p_first = p.x < q.x || (p.x == q.x && p.y < q.y);
+        const std::array<double, 4> key = p_first ? std::array<double, 4>{p.x, p.y, q.x, q.y}
+                                                  : std::array<double, 4>{q.x, q.y, p.x, p.y};
+        in_plane_edges[key] |= above ? 1 : 2;
+      }
+      continue;
+    }
     // The two points where the triangle's boundary meets the plane: a vertex on it, or an
     // edge whose ends lie on opposite sides.
     PlanePoint ends[2];
@@ -59,10 +108,10 @@ std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const Receiver
     if (found < 2) continue;
     const PlaneSegment cut{ends[0], ends[1]};
     if (cut.a.x == cut.b.x && cut.a.y == cut.b.y) continue;
-    const PlanePoint middle{0.5 * (cut.a.x + cut.b.x), 0.5 * (cut.a.y + cut.b.y)};
-    if (!plane.contains(middle.x, middle.y) || on_outline(plane, cut)) continue;
-    cuts.push_back(cut);
+    add_inside_pieces(plane, cut, cuts);
   }
+  for (const auto& [edge, sides] : in_plane_edges)
+    if (sides == 3) add_inside_pieces(plane, {{edge[0], edge[1]}, {edge[2], edge[3]}}, cuts);
   return cuts;
 }
 

@@ -75,19 +75,37 @@ double distance_to_segment_m(double x, double y, const PlanePoint& a, const Plan
   return std::hypot(x - (a.x + t * dx), y - (a.y + t * dy));
 }
 
+// distance_to_segment_m(x, y, a, b) < r_m, the segments whose bounding box lies farther than
+// r_m from the point (by a margin above the rounding) turned away without it: a disc about a
+// sensor meets few of a plane's cuts.
+bool within_m(double x, double y, const PlanePoint& a, const PlanePoint& b, double r_m) {
+  const double margin = r_m * (1 + 1e-9);
+  if (std::min(a.x, b.x) - x > margin || x - std::max(a.x, b.x) > margin || std::min(a.y, b.y) - y > margin ||
+      y - std::max(a.y, b.y) > margin)
+    return false;
+  return distance_to_segment_m(x, y, a, b) < r_m;
+}
+
 // The order up to which moments are summed: 2 for AreaMoments, 4 for ScaledMoments4.
-ScaledMoments4 scaled_moments(const PlaneVisibility& v, const std::vector<int>& blocked, double r_m, int order) {
+// The wedges that cut the disc of radius r_m (reach below it and below the largest radius),
+// in ascending order; a run of BlockWedges wedges whose nearest reach is r_m or more cuts
+// nothing and is passed over whole, so a small disc near one wall costs the wedges that face it.
+ScaledMoments4 scaled_moments(const PlaneVisibility& v, double r_m, int order) {
   const WedgeTable& table = wedges();
   ScaledMoments4 m = table.disc;
-  for (int k : blocked) {
-    const double rho = v.reach_m(k) / r_m;
-    if (rho >= 1) continue;
-    const ScaledMoments4& w = table.unit[std::size_t(k)];
-    double power = rho * rho;  // rho^(a + b + 2)
-    for (int n = 0; n <= order; ++n) {
-      const double deficit = 1 - power;
-      for (int a = 0; a <= n; ++a) m.at(a, n - a) -= w.at(a, n - a) * deficit;
-      power *= rho;
+  for (int block = 0; block < N / PlaneVisibility::BlockWedges; ++block) {
+    if (!(v.block_min_reach_m(block) < r_m)) continue;
+    for (int k = block * PlaneVisibility::BlockWedges; k < (block + 1) * PlaneVisibility::BlockWedges; ++k) {
+      if (!v.cuts_wedge(k)) continue;
+      const double rho = v.reach_m(k) / r_m;
+      if (rho >= 1) continue;
+      const ScaledMoments4& w = table.unit[std::size_t(k)];
+      double power = rho * rho;  // rho^(a + b + 2)
+      for (int n = 0; n <= order; ++n) {
+        const double deficit = 1 - power;
+        for (int a = 0; a <= n; ++a) m.at(a, n - a) -= w.at(a, n - a) * deficit;
+        power *= rho;
+      }
     }
   }
   return m;
@@ -110,13 +128,15 @@ int PlaneVisibility::sector_of(double dx, double dy) {
 }
 
 PlaneVisibility::PlaneVisibility(double x, double y, double max_radius_m)
-    : m_x(x), m_y(y), m_reach_m(std::size_t(N), max_radius_m) {}
+    : m_x(x), m_y(y), m_max_radius_m(max_radius_m), m_reach_m(std::size_t(N), max_radius_m) {
+  m_block_min_reach_m.fill(std::numeric_limits<double>::infinity());
+}
 
 std::optional<PlaneVisibility> PlaneVisibility::around(const ReceiverPlane& plane, double x, double y,
                                                        double max_radius_m) {
   bool cut = false;
   for (const PlaneSegment& s : plane.interior_cuts())
-    if (distance_to_segment_m(x, y, s.a, s.b) < max_radius_m) {
+    if (within_m(x, y, s.a, s.b, max_radius_m)) {
       cut = true;
       break;
     }
@@ -125,7 +145,7 @@ std::optional<PlaneVisibility> PlaneVisibility::around(const ReceiverPlane& plan
   if (!cut) return std::nullopt;
   PlaneVisibility v(x, y, max_radius_m);
   for (const PlaneSegment& s : plane.interior_cuts())
-    if (distance_to_segment_m(x, y, s.a, s.b) < max_radius_m) v.block(s.a, s.b);
+    if (within_m(x, y, s.a, s.b, max_radius_m)) v.block(s.a, s.b);
   const std::vector<PlanePoint>& outline = plane.outline();
   for (std::size_t i = 0; i < outline.size(); ++i) {
     const PlanePoint& a = outline[i];
@@ -133,7 +153,10 @@ std::optional<PlaneVisibility> PlaneVisibility::around(const ReceiverPlane& plan
     if (distance_to_segment_m(x, y, a, b) < max_radius_m) v.block(a, b);
   }
   for (int k = 0; k < N; ++k)
-    if (v.m_reach_m[std::size_t(k)] < max_radius_m) v.m_blocked.push_back(k);
+    if (v.cuts_wedge(k)) {
+      double& nearest = v.m_block_min_reach_m[std::size_t(k / BlockWedges)];
+      nearest = std::min(nearest, v.m_reach_m[std::size_t(k)]);
+    }
   return v;
 }
 
@@ -168,13 +191,13 @@ bool PlaneVisibility::sees(double x, double y) const {
 
 double PlaneVisibility::area_m2(double r_m) const {
   if (!(r_m > 0)) return 0;
-  return scaled_moments(*this, m_blocked, r_m, 0).at(0, 0) * r_m * r_m;
+  return scaled_moments(*this, r_m, 0).at(0, 0) * r_m * r_m;
 }
 
 AreaMoments PlaneVisibility::moments(double r_m) const {
   AreaMoments m;
   if (!(r_m > 0)) return m;
-  const ScaledMoments4 s = scaled_moments(*this, m_blocked, r_m, 2);
+  const ScaledMoments4 s = scaled_moments(*this, r_m, 2);
   const double r2 = r_m * r_m, r3 = r2 * r_m, r4 = r2 * r2;
   m.area = s.at(0, 0) * r2;
   m.mx = s.at(1, 0) * r3;
@@ -187,7 +210,7 @@ AreaMoments PlaneVisibility::moments(double r_m) const {
 
 ScaledMoments4 PlaneVisibility::moments4(double r_m) const {
   if (!(r_m > 0)) return {};
-  return scaled_moments(*this, m_blocked, r_m, 4);
+  return scaled_moments(*this, r_m, 4);
 }
 
 }  // namespace dayphoton::engine

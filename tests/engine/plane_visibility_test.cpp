@@ -133,6 +133,66 @@ TEST(PlaneCuts, APartitionCutsTheWorkPlaneTheWallsAndALowDeskDoNot) {
   EXPECT_TRUE(interior_plane_cuts(Scene::build(low), plane).empty());
 }
 
+TEST(PlaneCuts, ASeamAtThePlanesHeightCutsItADeskTopThereDoesNot) {
+  // A partition of two panels meeting at the plane's height (0-0.8 m and 0.8-1.4 m, x 0.5-3.5
+  // at y = 2): no triangle has vertices strictly on both sides, yet the seam is a wall across
+  // the plane, 3 m long. A desk box whose top is the plane (x 1-2, y 0.5-1.2, 0-0.8 m) touches
+  // it from below only: no cut.
+  SceneDescription d = test::box_room({4, 4, 3});
+  test::add_surface(d, "lower", 0, {{0.5, 2, 0}, {3.5, 2, 0}, {3.5, 2, 0.8}, {0.5, 2, 0.8}});
+  test::add_surface(d, "upper", 0, {{0.5, 2, 0.8}, {3.5, 2, 0.8}, {3.5, 2, 1.4}, {0.5, 2, 1.4}});
+  test::add_surface(d, "desk_top", 0, {{1, 0.5, 0.8}, {2, 0.5, 0.8}, {2, 1.2, 0.8}, {1, 1.2, 0.8}});
+  test::add_surface(d, "desk_south", 0, {{1, 0.5, 0}, {2, 0.5, 0}, {2, 0.5, 0.8}, {1, 0.5, 0.8}});
+  test::add_surface(d, "desk_east", 0, {{2, 0.5, 0}, {2, 1.2, 0}, {2, 1.2, 0.8}, {2, 0.5, 0.8}});
+  const ReceiverPlane plane(0.8, true, Square4);
+  const std::vector<PlaneSegment> cuts = interior_plane_cuts(Scene::build(d), plane);
+  ASSERT_EQ(cuts.size(), 1u);
+  EXPECT_NEAR(cuts[0].a.y, 2, 1e-12);
+  EXPECT_NEAR(cuts[0].b.y, 2, 1e-12);
+  EXPECT_NEAR(std::fabs(cuts[0].b.x - cuts[0].a.x), 3.0, 1e-12);
+}
+
+TEST(PlaneCuts, ACutPartlyInsideTheOutlineKeepsItsPartInside) {
+  // A grid outline smaller than the room (the square 0-4 m of an 8 x 8 m room): a partition
+  // along y = 2 from x = 3 to 6.5 m cuts the plane inside over x 3-4 m, though the middle of
+  // its triangles' cuts (x 3-5 and 5-6.5: the quad's diagonal meets the plane at x = 5) lies
+  // outside; it hides the sensors at x 3.5 m behind it from those in front. Kept: that part,
+  // 1 m. One outside the outline altogether (x 5-7 m), and the room's walls, are left out.
+  SceneDescription d = test::box_room({8, 8, 3});
+  test::add_surface(d, "partition", 0, {{3, 2, 0}, {6.5, 2, 0}, {6.5, 2, 1.4}, {3, 2, 1.4}});
+  test::add_surface(d, "outside", 0, {{5, 3, 0}, {7, 3, 0}, {7, 3, 1.4}, {5, 3, 1.4}});
+  const ReceiverPlane plane(0.8, true, Square4);
+  const std::vector<PlaneSegment> cuts = interior_plane_cuts(Scene::build(d), plane);
+  ASSERT_EQ(cuts.size(), 1u);
+  EXPECT_NEAR(cuts[0].a.y, 2, 1e-12);
+  EXPECT_NEAR(cuts[0].b.y, 2, 1e-12);
+  EXPECT_NEAR(std::min(cuts[0].a.x, cuts[0].b.x), 3, 1e-12);
+  EXPECT_NEAR(std::max(cuts[0].a.x, cuts[0].b.x), 4, 1e-12);
+  ReceiverPlane with = plane;
+  with.set_interior_cuts(cuts);
+  const std::optional<PlaneVisibility> v = PlaneVisibility::around(with, 3.5, 1.8, 1.0);
+  ASSERT_TRUE(v.has_value());
+  EXPECT_FALSE(v->sees(3.5, 2.3));
+  EXPECT_TRUE(v->sees(3.5, 1.3));
+
+  // A triangle whose cut runs from (0.5, -1) to (7, 5.5): both ends and the middle outside
+  // an L-shaped outline; the stretch from (1.5, 0) to (2.5, 1) crosses its lower arm.
+  const std::vector<PlanePoint> ell = {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+  const double f = 0.8 / 3;  // the cut's height on the triangle's sides, from the base
+  const Vec3 apex{3.75, 2.25, 3};
+  auto base = [&](double x, double y) {
+    return Vec3{apex.x + (x - apex.x) / (1 - f), apex.y + (y - apex.y) / (1 - f), 0};
+  };
+  SceneDescription slanted = test::box_room({8, 8, 3});
+  test::add_surface(slanted, "slanted", 0, {base(0.5, -1), base(7, 5.5), apex});
+  const std::vector<PlaneSegment> crossing = interior_plane_cuts(Scene::build(slanted), ReceiverPlane(0.8, true, ell));
+  ASSERT_EQ(crossing.size(), 1u);
+  EXPECT_NEAR(std::min(crossing[0].a.x, crossing[0].b.x), 1.5, 1e-9);
+  EXPECT_NEAR(std::max(crossing[0].a.x, crossing[0].b.x), 2.5, 1e-9);
+  EXPECT_NEAR(std::min(crossing[0].a.y, crossing[0].b.y), 0, 1e-9);
+  EXPECT_NEAR(std::max(crossing[0].a.y, crossing[0].b.y), 1, 1e-9);
+}
+
 /// Photons on the 1 cm lattice of the 4 x 4 m plane at z = 0.8, flux E(x, y) x cell area,
 /// one source, global; the plane cut along `cuts`.
 template <typename Field>

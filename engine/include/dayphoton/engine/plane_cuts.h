@@ -9,10 +9,14 @@
 //
 // A cut is the segment where a triangle with vertices strictly on both sides of the plane
 // crosses it (a triangle that only touches the plane, e.g. furniture whose top lies at the
-// plane's height, blocks no photon crossing it). The room's own walls cut the plane along
+// plane's height, blocks no photon crossing it), and an edge lying in the plane that
+// triangles above and below it share (a partition of two panels meeting at the plane's
+// height, a column mesh with a ring of vertices there). The room's own walls cut the plane along
 // the outline, which the outline clip already handles: segments lying on the outline (both
 // ends within OnOutline_m of one edge) or outside it are left out, and so are the openings
-// (ports), which light passes.
+// (ports), which light passes. A segment that crosses the outline (a partition that runs on
+// out of a grid outline smaller than the room) is split where it crosses, and the pieces
+// inside are kept.
 #pragma once
 
 #include <vector>

@@ -20,6 +20,7 @@
 // angles t0 and t1 are exact: int u^a v^b dA = int cos^a sin^b dt rho^(a+b+2) / (a+b+2).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -47,8 +48,14 @@ class PlaneVisibility {
   AreaMoments moments(double r_m) const;
   /// Its moments up to order 4 in the disc's scaled coordinates (receiver_plane.h).
   ScaledMoments4 moments4(double r_m) const;
+  /// Wedges per run whose nearest reach is kept (the moments pass over runs a disc does not cut).
+  static constexpr int BlockWedges = 64;
   /// Wedge k's reach, metres (k < Sectors).
   double reach_m(int k) const { return m_reach_m[static_cast<std::size_t>(k)]; }
+  /// Whether something cuts wedge k within the largest radius (its reach is below it).
+  bool cuts_wedge(int k) const { return m_reach_m[std::size_t(k)] < m_max_radius_m; }
+  /// The nearest reach of the wedges k with k / BlockWedges = block that something cuts.
+  double block_min_reach_m(int block) const { return m_block_min_reach_m[std::size_t(block)]; }
   /// The wedge of a direction (dx, dy) from the centre, by its pseudo-angle.
   static int sector_of(double dx, double dy);
   /// For PhotonFilter: whether the centre sees a photon's crossing point.
@@ -59,7 +66,10 @@ class PlaneVisibility {
   void block(const PlanePoint& a, const PlanePoint& b);
   double m_x = 0, m_y = 0;
   std::vector<double> m_reach_m;
-  std::vector<int> m_blocked;  ///< the wedges whose reach is below max_radius_m, ascending
+  double m_max_radius_m = 0;
+  /// Per run of BlockWedges wedges, the nearest reach among those below max_radius_m
+  /// (infinite if none): a disc no larger cuts none of the run.
+  std::array<double, Sectors / BlockWedges> m_block_min_reach_m{};
 };
 
 }  // namespace dayphoton::engine
