@@ -9,19 +9,12 @@
 namespace dayphoton::engine {
 namespace {
 
-double distance_to_segment_m(const PlanePoint& p, const PlanePoint& a, const PlanePoint& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double length2 = dx * dx + dy * dy;
-  const double t = length2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
-}
-
 bool on_outline(const ReceiverPlane& plane, const PlaneSegment& s) {
   const std::vector<PlanePoint>& outline = plane.outline();
   for (std::size_t i = 0; i < outline.size(); ++i) {
     const PlanePoint& a = outline[i];
     const PlanePoint& b = outline[(i + 1) % outline.size()];
-    if (distance_to_segment_m(s.a, a, b) <= OnOutline_m && distance_to_segment_m(s.b, a, b) <= OnOutline_m)
+    if (distance_to_segment_m(s.a.x, s.a.y, a, b) <= OnOutline_m && distance_to_segment_m(s.b.x, s.b.y, a, b) <= OnOutline_m)
       return true;
   }
   return false;

@@ -68,13 +68,6 @@ const WedgeTable& wedges() {
   return table;
 }
 
-double distance_to_segment_m(double x, double y, const PlanePoint& a, const PlanePoint& b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double length2 = dx * dx + dy * dy;
-  const double t = length2 > 0 ? std::clamp(((x - a.x) * dx + (y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
-  return std::hypot(x - (a.x + t * dx), y - (a.y + t * dy));
-}
-
 // distance_to_segment_m(x, y, a, b) < r_m, the segments whose bounding box lies farther than
 // r_m from the point (by a margin above the rounding) turned away without it: a disc about a
 // sensor meets few of a plane's cuts.
@@ -128,7 +121,7 @@ int PlaneVisibility::sector_of(double dx, double dy) {
 }
 
 PlaneVisibility::PlaneVisibility(double x, double y, double max_radius_m)
-    : m_x(x), m_y(y), m_max_radius_m(max_radius_m), m_reach_m(std::size_t(N), max_radius_m) {
+    : m_x(x), m_y(y), m_reach_m(std::size_t(N), max_radius_m), m_max_radius_m(max_radius_m) {
   m_block_min_reach_m.fill(std::numeric_limits<double>::infinity());
 }
 
@@ -157,6 +150,8 @@ std::optional<PlaneVisibility> PlaneVisibility::around(const ReceiverPlane& plan
       double& nearest = v.m_block_min_reach_m[std::size_t(k / BlockWedges)];
       nearest = std::min(nearest, v.m_reach_m[std::size_t(k)]);
     }
+  const double clear_m = *std::min_element(v.m_reach_m.begin(), v.m_reach_m.end());
+  v.m_clear_m2 = clear_m * clear_m;
   return v;
 }
 
@@ -185,8 +180,10 @@ bool visible_in_plane(const PlaneVisibility& visibility, const Photon& photon) {
 
 bool PlaneVisibility::sees(double x, double y) const {
   const double dx = x - m_x, dy = y - m_y;
+  const double d2 = dx * dx + dy * dy;
+  if (d2 <= m_clear_m2) return true;  // nearer than every wedge's reach
   const double reach = m_reach_m[std::size_t(sector_of(dx, dy))];
-  return dx * dx + dy * dy <= reach * reach;
+  return d2 <= reach * reach;
 }
 
 double PlaneVisibility::area_m2(double r_m) const {

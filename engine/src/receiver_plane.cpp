@@ -290,6 +290,13 @@ double ReceiverPlane::disc_area_inside_m2(double x, double y, double r_m) const 
   return std::fabs(area);  // the outline may wind either way
 }
 
+double distance_to_segment_m(double x, double y, const PlanePoint& a, const PlanePoint& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double length2 = dx * dx + dy * dy;
+  const double t = length2 > 0 ? std::clamp(((x - a.x) * dx + (y - a.y) * dy) / length2, 0.0, 1.0) : 0.0;
+  return std::hypot(x - (a.x + t * dx), y - (a.y + t * dy));
+}
+
 double ReceiverPlane::outline_area_m2() const { return 0.5 * std::fabs(outline_area_signed_twice(m_outline)); }
 
 }  // namespace dayphoton::engine

@@ -70,6 +70,9 @@ class PlaneVisibility {
   /// Per run of BlockWedges wedges, the nearest reach among those below max_radius_m
   /// (infinite if none): a disc no larger cuts none of the run.
   std::array<double, Sectors / BlockWedges> m_block_min_reach_m{};
+  /// The square of the nearest reach over all wedges: every point nearer is seen (sees()
+  /// answers it without finding the wedge).
+  double m_clear_m2 = 0;
 };
 
 }  // namespace dayphoton::engine

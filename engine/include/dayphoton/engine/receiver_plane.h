@@ -45,6 +45,9 @@ struct PlaneSegment {
   PlanePoint a, b;
 };
 
+/// The distance from (x, y) to the segment a-b, metres.
+double distance_to_segment_m(double x, double y, const PlanePoint& a, const PlanePoint& b);
+
 class ReceiverPlane {
  public:
   /// The plane of a planar grid (SensorGrid::planar, normal +Z or -Z). Throws
