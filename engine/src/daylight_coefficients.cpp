@@ -313,7 +313,7 @@ class LookupHint {
 /// Caustic and global estimates from the photons of `map` passing `filter`, within the disc
 /// of density.bandwidth of them (density_estimate.h): local-linear on a receiver plane with
 /// the uniform kernel (local-quadratic where the outline cuts the disc, for
-/// `quadratic_at_walls`, or on every full disc for options.quadratic_fit_everywhere), otherwise the kernel estimate times the boundary factor.
+/// `quadratic_at_walls`, and on every whole disc for options.quadratic_fit_everywhere), otherwise the kernel estimate times the boundary factor.
 /// `rng_index` seeds the bias-compensating operator.
 ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane, const Vec3& at,
                                 const PhotonFilter& filter, const DensityEstimateOptions& density,
@@ -328,19 +328,20 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     if (disc.photon_count == 0) return out;
     // The region the disc's photons come from: the disc clipped to the outline, or the part
     // of it the centre sees (filter.visibility, which the lookup applied).
-    // The local-quadratic fit: everywhere for options.quadratic_fit_everywhere on a disc that
-    // holds its whole bandwidth, at least QuadraticEverywhereMinimumPhotons (a short disc, a
-    // sparse source's, keeps the plane: few photons under the quadratic's negative lobes would
-    // make its clamp at 0 bias it upwards), or where the region is cut for the sources of
-    // quadratic_at_walls.
+    // The local-quadratic fit: for options.quadratic_fit_everywhere on a whole disc (none of
+    // it cut) that holds its whole bandwidth, at least QuadraticEverywhereMinimumPhotons (a
+    // short disc, a sparse source's, keeps the plane: few photons under the quadratic's
+    // negative lobes would make its clamp at 0 bias it upwards); on a cut disc for the
+    // sources of quadratic_at_walls.
     const PlaneVisibility* visible = filter.visibility;
-    const bool everywhere = options.quadratic_fit_everywhere && disc.photon_count >= density.bandwidth &&
-                            disc.photon_count >= QuadraticEverywhereMinimumPhotons;
-    if (disc.radius_m > 0 &&
-        (everywhere ||
-         (quadratic_at_walls &&
-          (visible ? visible->area_m2(disc.radius_m) : plane->disc_area_inside_m2(at.x, at.y, disc.radius_m)) <
-              Pi * disc.radius_m * disc.radius_m * (1 - 1e-9)))) {
+    const bool cut =
+        (quadratic_at_walls || options.quadratic_fit_everywhere) && disc.radius_m > 0 &&
+        (visible ? visible->area_m2(disc.radius_m) : plane->disc_area_inside_m2(at.x, at.y, disc.radius_m)) <
+            Pi * disc.radius_m * disc.radius_m * (1 - 1e-9);
+    const bool whole = options.quadratic_fit_everywhere && disc.radius_m > 0 && !cut &&
+                       disc.photon_count >= density.bandwidth &&
+                       disc.photon_count >= QuadraticEverywhereMinimumPhotons;
+    if (whole || (quadratic_at_walls && cut)) {
       const LocalQuadraticKernel kernel = local_quadratic_kernel(
           visible ? visible->moments4(disc.radius_m) : plane->clipped_disc_moments4(at.x, at.y, disc.radius_m));
       if (kernel.valid) return local_quadratic_estimate(map, at, found, disc, kernel);
