@@ -19,6 +19,12 @@
 namespace dayphoton::engine {
 namespace {
 
+/// Fewest photons in a disc for quadratic_fit_everywhere. On a whole disc the quadratic's
+/// relative standard deviation is 2 / sqrt(n) (4 times the plane's variance), and the clamp
+/// of a normal N(1, s^2) at 0 raises its mean by s phi(1/s) - Phi(-1/s): 2.5 % at the sparse
+/// sources' 8 photons (MinimumSourceBandwidth), 0.02 % at 32.
+constexpr std::size_t QuadraticEverywhereMinimumPhotons = 32;
+
 std::vector<PhotonMap> split_by_source(const std::vector<Photon>& photons, std::size_t sources) {
   std::vector<std::vector<Photon>> parts(sources);
   for (const Photon& p : photons)
@@ -307,7 +313,7 @@ class LookupHint {
 /// Caustic and global estimates from the photons of `map` passing `filter`, within the disc
 /// of density.bandwidth of them (density_estimate.h): local-linear on a receiver plane with
 /// the uniform kernel (local-quadratic where the outline cuts the disc, for
-/// `quadratic_at_walls`), otherwise the kernel estimate times the boundary factor.
+/// `quadratic_at_walls`, and on every whole disc for options.quadratic_fit_everywhere), otherwise the kernel estimate times the boundary factor.
 /// `rng_index` seeds the bias-compensating operator.
 ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane, const Vec3& at,
                                 const PhotonFilter& filter, const DensityEstimateOptions& density,
@@ -322,10 +328,20 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     if (disc.photon_count == 0) return out;
     // The region the disc's photons come from: the disc clipped to the outline, or the part
     // of it the centre sees (filter.visibility, which the lookup applied).
+    // The local-quadratic fit: for options.quadratic_fit_everywhere on a whole disc (none of
+    // it cut) that holds its whole bandwidth, at least QuadraticEverywhereMinimumPhotons (a
+    // short disc, a sparse source's, keeps the plane: few photons under the quadratic's
+    // negative lobes would make its clamp at 0 bias it upwards); on a cut disc for the
+    // sources of quadratic_at_walls.
     const PlaneVisibility* visible = filter.visibility;
-    if (quadratic_at_walls && disc.radius_m > 0 &&
+    const bool cut =
+        (quadratic_at_walls || options.quadratic_fit_everywhere) && disc.radius_m > 0 &&
         (visible ? visible->area_m2(disc.radius_m) : plane->disc_area_inside_m2(at.x, at.y, disc.radius_m)) <
-            Pi * disc.radius_m * disc.radius_m * (1 - 1e-9)) {
+            Pi * disc.radius_m * disc.radius_m * (1 - 1e-9);
+    const bool whole = options.quadratic_fit_everywhere && disc.radius_m > 0 && !cut &&
+                       disc.photon_count >= density.bandwidth &&
+                       disc.photon_count >= QuadraticEverywhereMinimumPhotons;
+    if (whole || (quadratic_at_walls && cut)) {
       const LocalQuadraticKernel kernel = local_quadratic_kernel(
           visible ? visible->moments4(disc.radius_m) : plane->clipped_disc_moments4(at.x, at.y, disc.radius_m));
       if (kernel.valid) return local_quadratic_estimate(map, at, found, disc, kernel);

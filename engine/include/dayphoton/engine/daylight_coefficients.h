@@ -43,6 +43,13 @@
 // direct (computed without a disc), so its photon part's curvature bias is a small share. Where the fitted total (caustic +
 // global) is negative it is set to 0; each class alone is not clamped (a class with few
 // photons in the disc would otherwise be biased upwards by its clamp).
+// Curvature away from walls (quadratic_fit_everywhere): the local-linear fit over a whole
+// disc of radius r reads a curved field E off by (E_xx + E_yy) r^2 / 8 (the disc's second
+// moment r^2 / 4 times the Taylor term's 1/2), a bias its stated variance does not contain.
+// Under an accuracy target the disc keeps its size as photons are added, so this bias never
+// falls: behind a partition, where the light rises concavely away from it, the plane read
+// 3 % low (4 standard errors). The quadratic fit on every whole disc removes it at 4 times
+// the variance (docs/photon-map.md, "Curvature away from walls").
 // Sparse sources: a source with fewer photons than the median source (a low-yield source cut
 // by the photon cap, a sky patch seen through a sliver) would need a disc far wider than the
 // others' for the same N, and the plane fitted over it would smear its light over the room.
@@ -110,6 +117,12 @@ struct CoefficientOptions {
   /// fit (local_quadratic_fit.h) where the outline cuts them (see the header comment). Empty:
   /// none. The study lists the ground bin of the sky's sources (SimulationPlan).
   std::vector<std::size_t> quadratic_fit_sources;
+  /// With local_linear: the local-quadratic fit for every source on every whole disc (none of
+  /// it cut by the outline or the visibility clip) that holds its whole bandwidth (see the
+  /// header comment, "Curvature away from walls"); cut discs keep quadratic_fit_sources' rule.
+  /// Its variance (4 times the plane's on a whole disc) is reported, so accuracy rounds trace
+  /// what it needs. Off: quadratic_fit_sources alone.
+  bool quadratic_fit_everywhere = false;
   /// Receiver planes: where an interior cut (a partition, a column: plane_cuts.h, set on the
   /// plane) or a re-entrant corner of the outline lies within a sensor's widest disc, count
   /// only the photons the sensor's position sees in the plane, over the region it sees
