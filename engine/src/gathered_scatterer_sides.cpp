@@ -113,6 +113,11 @@ std::vector<std::uint8_t> gathered_scatterer_sides(const Scene& scene, const std
       }
       if (read == ScattererBothSides) break;
     }
+    // A diffusely transmitting scatterer: a lookup at a hit on one side also reads the other
+    // side's photons (the transmitted light, final_gather.h).
+    const Material& material = materials[static_cast<std::size_t>(description.surfaces[static_cast<std::size_t>(scatterer.surface)].material)];
+    const Vec3 tau_d = material.diffuse_transmittance();
+    if (read != 0 && std::max({tau_d.x, tau_d.y, tau_d.z}) > 0) read = ScattererBothSides;
     sides[s] = read;
   }
   return sides;

@@ -33,7 +33,7 @@ std::vector<Material> models_of(const SceneDescription& d) {
   return m;
 }
 
-enum class Overhang { Diffuse, Glossy, DiffuseUnderMirror };
+enum class Overhang { Diffuse, Glossy, DiffuseUnderMirror, Translucent };
 
 // 4 x 6 x 3 m room (floor 0.3, ceiling 0.8, walls 0.5), glazed window (Tn 0.7) in the south
 // wall x 0.5..3.5, z 1.0..2.5; outside, a Lambertian 0.5 overhang box x 0.3..3.7,
@@ -47,6 +47,10 @@ SceneDescription overhang_scene(Overhang kind) {
   const int glazing = test::add_spec(d, test::glass_of("glazing", 0.7));
   MaterialSpec shade = test::grey("shade", MaterialType::Lambertian, 0.5);
   if (kind == Overhang::Glossy) shade.specularity = 0.05;
+  if (kind == Overhang::Translucent) {
+    shade.type = MaterialType::Translucent;
+    shade.transmissivity = 0.5;  // diffuse transmission only (transmitted_specular 0)
+  }
   const int overhang = test::add_spec(d, shade);
   test::add_room(d, {4, 6, 3}, floor, ceiling, walls, test::SouthWindow{0.5, 3.5, 1.0, 2.5, glazing});
   test::add_box(d, "overhang", {0.3, -1.0, 2.7}, {3.7, -0.001, 2.8}, overhang, overhang);
@@ -126,6 +130,16 @@ TEST(GatheredScattererSides, AnOverhangKeepsOnlyTheSidesAWindowOrASensorFaces) {
   EXPECT_TRUE(sides_of(mirrored, under_mirror, "overhang.top") & ScattererNormalSide);
   EXPECT_EQ(sides_of(mirrored, under_mirror, "overhang.ymin"), ScattererOppositeSide);
 
+  // A translucent (diffusely transmitting) overhang: a lookup on its underside also reads
+  // the photons on the other side of the bottom face; its top, which no ray hits, still loses
+  // them.
+  const SceneDescription t = overhang_scene(Overhang::Translucent);
+  const Scene translucent = Scene::build(t);
+  const std::vector<Material> translucent_models = models_of(t);
+  ASSERT_FALSE(continues_gather(translucent_models.back()));
+  const std::vector<std::uint8_t> through = gathered_scatterer_sides(translucent, translucent_models, positions(room_sensors()));
+  EXPECT_EQ(sides_of(translucent, through, "overhang.bottom"), ScattererBothSides);
+  EXPECT_EQ(sides_of(translucent, through, "overhang.top"), ScattererBothSides);  // its inner side is read
   // A glossy overhang sends gather rays on from every face: every side is kept.
   const SceneDescription g = overhang_scene(Overhang::Glossy);
   const Scene glossy = Scene::build(g);

@@ -15,7 +15,9 @@
 // of a port or of a surface that is not purely diffuse lies in front of a side's plane (for
 // any triangle of the scatterer), no gather ray can hit that side and its Direct photons are
 // never read there. The test counts points within a tolerance of the plane as in front, so
-// it errs only toward storing. Decided once per scene and set of sensors, from the geometry
+// it errs only toward storing. A scatterer that transmits diffusely (a translucent panel)
+// keeps both sides when either is read: the lookup at a hit on one side also reads the
+// photons of the other (the transmitted light). Decided once per scene and set of sensors, from the geometry
 // and the materials alone, with no ray cast.
 //
 // What the rule drops is read by no lookup on that side; a lookup on ANOTHER surface facing
