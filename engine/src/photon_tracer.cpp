@@ -1,6 +1,7 @@
 // Photon tracer: see photon_tracer.h for the method, its sources and the storage rules.
 #include "dayphoton/engine/photon_tracer.h"
 
+#include "dayphoton/engine/gathered_scatterer_sides.h"
 #include "dayphoton/engine/source_passes.h"
 
 #include <algorithm>
@@ -171,6 +172,17 @@ std::optional<PathStart> pass_port(const Scene& scene, const PortPane& pane, con
   return start;
 }
 
+// Whether a Direct photon on side `side` of outdoor scatterer `scatterer` is stored:
+// always with store_direct, else with store_direct_on_surfaces where a gather can read it
+// (TracingOptions::scatterer_direct_sides).
+bool stores_direct_on_scatterer(const Scene& scene, const TracingOptions& options, int scatterer, const Vec3& side) {
+  if (options.store_direct) return true;
+  if (!options.store_direct_on_surfaces) return false;
+  if (options.scatterer_direct_sides.empty()) return true;
+  const std::size_t s = static_cast<std::size_t>(scatterer);
+  return (options.scatterer_direct_sides[s] & scatterer_side_bit(side, scene.outdoor_scatterers()[s].normal)) != 0;
+}
+
 // A photon that lands on an outdoor scatterer straight from its source: its Direct record
 // there (the scatterer's irradiance, which a final gather looking at the scatterer needs),
 // then the scatterer's own scattering event, outdoors. Returns the path start, or nothing if
@@ -183,7 +195,7 @@ std::optional<PathStart> land_on_scatterer(const Scene& scene, const std::vector
   const Material& material =
       materials[static_cast<std::size_t>(scene.description().surfaces[scatterer.surface].material)];
   const Vec3 lit_side = dot(entry.direction, scatterer.normal) < 0 ? scatterer.normal : scatterer.normal * -1.0;
-  if ((options.store_direct || options.store_direct_on_surfaces) && material.stores_photons())
+  if (material.stores_photons() && stores_direct_on_scatterer(scene, options, entry.scatterer, lit_side))
     sink.record(-1, make_photon(entry.position, {1, 1, 1}, lit_side, source, PathClass::Direct));
   std::optional<PathStart> start = first_event(scene, material, entry.position, scatterer.normal, entry.direction,
                                                source, scattering, roulette_rng);
@@ -237,7 +249,10 @@ bool trace_path_to(const Scene& scene, const std::vector<Material>& materials,
     if ((store || options.store_direct_on_surfaces) && material.stores_photons() &&
         (!outdoors || hit->scatterer >= 0)) {
       const Vec3 side = hit->front_face ? hit->normal : hit->normal * -1.0;
-      sink.record(-1, make_photon(hit->position, flux, side, start.source, path_class));
+      // A Direct photon outdoors (on a scatterer, after straight passes only): where a
+      // gather can read it.
+      if (store || !outdoors || stores_direct_on_scatterer(scene, options, hit->scatterer, side))
+        sink.record(-1, make_photon(hit->position, flux, side, start.source, path_class));
     }
     const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
     const std::optional<ScatterSample> s = material.sample(ray.direction, hit->normal, u0, u1, u2);
@@ -290,6 +305,11 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
                              const std::vector<ReceiverPlane>& planes, const PortEmitter& emitter,
                              std::uint32_t source, std::uint64_t first, std::uint64_t last,
                              const StorageProbabilities& d, const TracingOptions& options, AttemptRange& result) {
+  if (!options.scatterer_direct_sides.empty() &&
+      options.scatterer_direct_sides.size() != scene.outdoor_scatterers().size())
+    throw std::invalid_argument("photon tracing: scatterer_direct_sides has " +
+                                std::to_string(options.scatterer_direct_sides.size()) + " entries but the scene " +
+                                std::to_string(scene.outdoor_scatterers().size()) + " outdoor scatterers");
   result.planes.resize(planes.size());
   AttemptCounts c;
   if (last <= first) return c;

@@ -65,6 +65,10 @@ void add_tracing_options(ContentHash& h, std::size_t source, const engine::Traci
   h.integer(static_cast<std::int64_t>(o.max_mainpass_attempts_per_target));
   h.integer(o.store_direct ? 1 : 0).integer(o.keep_surface_photons ? 1 : 0).integer(o.max_events);
   h.integer(o.store_direct_on_surfaces ? 1 : 0);
+  // Which scatterer sides keep their Direct photons (since the rule of
+  // gathered_scatterer_sides.h: photons cached before it differ).
+  h.text("scatterer direct sides").integer(static_cast<std::int64_t>(o.scatterer_direct_sides.size()));
+  for (const std::uint8_t sides : o.scatterer_direct_sides) h.integer(sides);
   h.integer(o.region_of_interest ? 1 : 0);
   if (o.region_of_interest) h.vec3(o.region_of_interest->lower).vec3(o.region_of_interest->upper);
 }

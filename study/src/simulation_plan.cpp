@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "dayphoton/core/units.h"
+#include "dayphoton/engine/gathered_scatterer_sides.h"
 #include "dayphoton/engine/plane_cuts.h"
 #include "dayphoton/project/north_rotation.h"
 #include "dayphoton/sky/sky_matrix.h"
@@ -79,9 +80,15 @@ CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids) {
   return l;
 }
 
-CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids, const engine::Scene& scene) {
+CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids, const engine::Scene& scene,
+                          const std::vector<engine::Material>& materials) {
   CaseLayout l = of(grids);
   for (engine::ReceiverPlane& plane : l.planes) plane.set_interior_cuts(engine::interior_plane_cuts(scene, plane));
+  // Every grid's sensors, the planar ones included (they gather nothing: it only keeps more).
+  std::vector<Vec3> sensors;
+  for (const SensorGrid& g : grids)
+    for (const SensorPoint& p : g.points) sensors.push_back(p.position);
+  l.gathered_scatterer_sides = engine::gathered_scatterer_sides(scene, materials, sensors);
   return l;
 }
 
@@ -141,6 +148,7 @@ engine::TracingOptions SimulationPlan::tracing_for(const engine::TracingOptions&
   engine::TracingOptions o = base;
   o.keep_surface_photons = layout.keep_surface_photons;
   o.store_direct_on_surfaces = layout.keep_surface_photons && point_estimate == project::PointEstimate::Gather;
+  if (o.store_direct_on_surfaces) o.scatterer_direct_sides = layout.gathered_scatterer_sides;
   return o;
 }
 

@@ -146,7 +146,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   set_plan_geometry(*ctx.results, description);
   set_building(*ctx.results, project, description);
   const engine::SourceSet sources = engine::SourceSet::sky_bins(basis);
-  const CaseLayout layout = CaseLayout::of(description.grids, scene);
+  const CaseLayout layout = CaseLayout::of(description.grids, scene, materials);
   const CaseScene cs{description, scene, materials, layout, scene_key(description), planes_key(description.grids)};
   progress.advance(1);
   progress.end();

@@ -22,7 +22,8 @@
 // being the contribution estimate at y (density_estimate.h: the N_g nearest surface photons
 // of ALL sources passing the side filter, binned by source). The surface photons here must
 // include the DIRECT ones (TracingOptions::store_direct_on_surfaces): light that reached y
-// straight from the sky and is reflected once toward x is indirect at x. The lookups are
+// straight from the sky and is reflected once toward x is indirect at x (on outdoor
+// scatterers only on the sides a gather can reach: gathered_scatterer_sides.h). The lookups are
 // noisy one by one (a few photons per source), but the N gather rays average them: the
 // estimate's noise is that of the gather, and its bias the (small) kernel bias at y.
 //

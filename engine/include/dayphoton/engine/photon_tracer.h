@@ -48,7 +48,8 @@
 //
 // Outdoor scatterers (port_emission.h): a photon that lands on one is stored there as
 // Direct (with store_direct or store_direct_on_surfaces: a final gather looking out of a
-// window at the scatterer reads it) and scattered by its material, outdoors (trace_path).
+// window at the scatterer reads it; with scatterer_direct_sides only on the sides a gather
+// can read, gathered_scatterer_sides.h) and scattered by its material, outdoors (trace_path).
 // Many of these photons never enter a room (a mirror shelf under a high north sky reflects
 // everything back up), so the low-yield cap and the pre-pass give-up limit count attempts
 // in port-equivalents: every attempt on a port counts, and of the attempts on scatterers
@@ -108,6 +109,12 @@ struct TracingOptions {
   /// a final gather (final_gather.h). Their main-pass storage probability follows the
   /// photon-count control like the other classes' (SourceTally::storage_probability_direct).
   bool store_direct_on_surfaces = false;
+  /// With store_direct_on_surfaces: per outdoor scatterer (Scene::outdoor_scatterers order),
+  /// the sides whose Direct photons are stored (gathered_scatterer_sides.h: the sides a gather
+  /// can read; ScattererNormalSide / ScattererOppositeSide bits). Empty: every side, as
+  /// without the rule. Direct photons on the other sides are neither stored nor counted.
+  /// store_direct (diagnostics) stores them all.
+  std::vector<std::uint8_t> scatterer_direct_sides;
   /// Keep the photons stored on surfaces. When every sensor grid is a receiver plane they
   /// are not used: they are then still counted (the counts control is unchanged, so the
   /// same settings give the same plane photons) but not kept, which saves ~70 % of memory.

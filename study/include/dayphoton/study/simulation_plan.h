@@ -33,11 +33,16 @@ struct CaseLayout {
   std::vector<engine::ReceiverPlane> planes;
   std::vector<int> plane_of_grid;  ///< per grid its plane, or -1
   bool keep_surface_photons = false;  ///< some grid is not planar
+  /// Per outdoor scatterer of the scene, the sides a final gather from the grids' sensors can
+  /// read (engine/gathered_scatterer_sides.h); empty when not decided (every side kept).
+  std::vector<std::uint8_t> gathered_scatterer_sides;
 
   static CaseLayout of(const std::vector<SensorGrid>& grids);
   /// The planes with where `scene`'s surfaces cut them (engine/plane_cuts.h), for the
-  /// estimates' visibility clip; the tracing does not use them.
-  static CaseLayout of(const std::vector<SensorGrid>& grids, const engine::Scene& scene);
+  /// estimates' visibility clip (the tracing does not use them), and the scatterer sides a
+  /// gather from any grid's sensor can read (`materials` model the scene's materials).
+  static CaseLayout of(const std::vector<SensorGrid>& grids, const engine::Scene& scene,
+                       const std::vector<engine::Material>& materials);
 };
 
 struct SimulationPlan {
@@ -65,7 +70,8 @@ struct SimulationPlan {
   RadianceMatrix daylight_factor_sky() const;
 
   /// `base` (sky_tracing or sun_tracing) for a case: surface photons kept when some grid is
-  /// not planar, and with them the direct hits for a final gather.
+  /// not planar, and with them the direct hits for a final gather (on outdoor scatterers
+  /// only on the sides the gather can read: CaseLayout::gathered_scatterer_sides).
   engine::TracingOptions tracing_for(const engine::TracingOptions& base, const CaseLayout& layout) const;
 };
 
