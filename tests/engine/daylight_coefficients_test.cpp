@@ -17,6 +17,7 @@
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/sky/solar_position.h"
 #include "light_tracing_reference.h"
+#include "photon_lattice.h"
 #include "test_scenes.h"
 
 namespace dayphoton::engine {
@@ -420,23 +421,7 @@ GridPhotons lattice_photons(Field irradiance) {
 /// As lattice_photons, with E(x, y).
 template <typename Field>
 GridPhotons lattice_photons_xy(Field irradiance) {
-  const ReceiverPlane plane(0.8, true, {{0, 0}, {4, 0}, {4, 4}, {0, 4}});
-  std::vector<Photon> photons;
-  const int n = 400;
-  const double h = 4.0 / n;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      Photon p;
-      const double x = (i + 0.5) * h, y = (j + 0.5) * h;
-      p.position = {float(x), float(y), 0.8f};
-      const float f = static_cast<float>(irradiance(x, y) * h * h);
-      p.flux = {f, f, f};
-      p.source = 0;
-      p.path_class = PathClass::Global;
-      p.set_normal({0, 0, 1});
-      photons.push_back(p);
-    }
-  return GridPhotons::for_plane(plane, photons, 1);
+  return test::lattice_photons_on(ReceiverPlane(0.8, true, {{0, 0}, {4, 0}, {4, 4}, {0, 4}}), irradiance);
 }
 
 DaylightCoefficients lattice_estimate(const GridPhotons& grid, const std::vector<SensorPoint>& sensors,
@@ -618,25 +603,7 @@ TEST(DaylightCoefficients, LocalQuadraticEstimateReportsItsOwnVariance) {
 /// centre the outline contains), each repeated for sources 0 .. sources - 1.
 template <typename Field>
 GridPhotons lattice_photons_in(const std::vector<PlanePoint>& outline, Field irradiance, std::size_t sources) {
-  const ReceiverPlane plane(0.8, true, outline);
-  std::vector<Photon> photons;
-  const int n = 400;
-  const double h = 4.0 / n;
-  for (std::size_t source = 0; source < sources; ++source)
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        const double x = (i + 0.5) * h, y = (j + 0.5) * h;
-        if (!plane.contains(x, y)) continue;
-        Photon p;
-        p.position = {float(x), float(y), 0.8f};
-        const float f = static_cast<float>(irradiance(x, y) * h * h);
-        p.flux = {f, f, f};
-        p.source = static_cast<std::uint32_t>(source);
-        p.path_class = PathClass::Global;
-        p.set_normal({0, 0, 1});
-        photons.push_back(p);
-      }
-  return GridPhotons::for_plane(plane, photons, sources);
+  return test::lattice_photons_on(ReceiverPlane(0.8, true, outline), irradiance, sources);
 }
 
 TEST(DaylightCoefficients, LocalQuadraticFitOnlyForTheListedSources) {

@@ -14,6 +14,7 @@
 #include "dayphoton/engine/plane_visibility.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
+#include "photon_lattice.h"
 #include "test_scenes.h"
 
 namespace dayphoton::engine {
@@ -193,27 +194,10 @@ TEST(PlaneCuts, ACutPartlyInsideTheOutlineKeepsItsPartInside) {
   EXPECT_NEAR(std::max(crossing[0].a.y, crossing[0].b.y), 1, 1e-9);
 }
 
-/// Photons on the 1 cm lattice of the 4 x 4 m plane at z = 0.8, flux E(x, y) x cell area,
-/// one source, global; the plane cut along `cuts`.
+/// The photon lattice (photon_lattice.h) of E(x, y) on the 4 x 4 m plane cut along `cuts`.
 template <typename Field>
 GridPhotons lattice(Field irradiance, std::vector<PlaneSegment> cuts) {
-  const ReceiverPlane plane = plane_with_cuts(Square4, std::move(cuts));
-  std::vector<Photon> photons;
-  const int n = 400;
-  const double h = 4.0 / n;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      Photon p;
-      const double x = (i + 0.5) * h, y = (j + 0.5) * h;
-      p.position = {float(x), float(y), 0.8f};
-      const float f = static_cast<float>(irradiance(x, y) * h * h);
-      p.flux = {f, f, f};
-      p.source = 0;
-      p.path_class = PathClass::Global;
-      p.set_normal({0, 0, 1});
-      photons.push_back(p);
-    }
-  return GridPhotons::for_plane(plane, photons, 1);
+  return test::lattice_photons_on(plane_with_cuts(Square4, std::move(cuts)), irradiance);
 }
 
 std::vector<double> estimates(const GridPhotons& grid, const std::vector<SensorPoint>& sensors, std::size_t bandwidth,
