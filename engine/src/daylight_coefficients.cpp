@@ -19,7 +19,7 @@
 namespace dayphoton::engine {
 namespace {
 
-/// Fewest photons in a disc for quadratic_fit_everywhere. On a whole disc the quadratic's
+/// Fewest photons in a disc for the quadratic curvature correction. On a whole disc the quadratic's
 /// relative standard deviation is 2 / sqrt(n) (4 times the plane's variance), and the clamp
 /// of a normal N(1, s^2) at 0 raises its mean by s phi(1/s) - Phi(-1/s): 2.5 % at the sparse
 /// sources' 8 photons (MinimumSourceBandwidth), 0.02 % at 32.
@@ -310,15 +310,46 @@ class LookupHint {
   bool m_short = false;
 };
 
+/// The curvature correction's pilot (daylight_coefficients.h, "Curvature away from walls"):
+/// on a whole disc of radius r, the plane's estimate S0 / (pi r^2) is off by
+/// (E_xx + E_yy) r^2 / 8. A quadratic E = b0 + ... + b3 u^2 + b4 u v + b5 v^2 fitted by moments
+/// over the whole pilot disc of radius R (u = dx / R) gives b3 + b5 = (24 / pi) sum_j
+/// (rho_j^2 - 1/2) Phi_j / R^2 (rho_j = d_j / R: the constant and rho^2 block of the unit
+/// disc's moment matrix, [[pi, pi/2], [pi/2, pi/3]], inverted; u^2 - v^2, u v and the odd terms
+/// are orthogonal to both), and the bias (b3 + b5) r^2 / (4 R^2). So each pilot photon's
+/// weight in the bias is (6 / pi) r^2 (rho_j^2 - 1/2) / R^4, and at R = r the corrected
+/// estimate is the quadratic fit's, (4 - 6 rho^2) / (pi r^2).
+struct CurvaturePilot {
+  double bias_weight = 0;    ///< (6 / pi) r^2 / R^4
+  double inv_pilot_m2 = 0;   ///< 1 / R^2
+  double weight(double distance_squared_m2) const { return bias_weight * (distance_squared_m2 * inv_pilot_m2 - 0.5); }
+};
+
+/// The fewest photons in a disc for the curvature correction at pilot radius R. A corrected
+/// total below 0 is clamped (estimate_classes), which biases it upwards where that happens
+/// often. Under R = 1.5 r the weights tend to the quadratic's, (4 - 6 rho^2) / (pi r^2), negative
+/// over a third of the disc: QuadraticEverywhereMinimumPhotons. From R = 1.5 r the weight of
+/// every photon of the kernel disc is at least 1.07 / (pi r^2) and the most negative, on the
+/// pilot disc's rim, -3 (r / R)^4 / (pi r^2) >= -0.59 / (pi r^2). The photons of negative
+/// weight lie in the pilot disc's outer half, 1.125 times the kernel disc's area at R = 1.5 r:
+/// the N photons of the disc outweigh them unless that half holds some 3 times its expected
+/// count, so the clamp practically never acts and the full bandwidth is enough.
+std::size_t curvature_minimum_photons(double radius_m, double pilot_m) {
+  return pilot_m >= 1.5 * radius_m ? 0 : QuadraticEverywhereMinimumPhotons;
+}
+
 /// Caustic and global estimates from the photons of `map` passing `filter`, within the disc
 /// of density.bandwidth of them (density_estimate.h): local-linear on a receiver plane with
 /// the uniform kernel (local-quadratic where the outline cuts the disc, for
-/// `quadratic_at_walls`, and on every whole disc for options.quadratic_fit_everywhere), otherwise the kernel estimate times the boundary factor.
-/// `rng_index` seeds the bias-compensating operator.
+/// `quadratic_at_walls`; on every whole disc the curvature correction of
+/// options.curvature_correction, its pilot disc no wider than `pilot_limit_m`, the distance
+/// from the centre to the nearest boundary, negative for no correction), otherwise the kernel
+/// estimate times the boundary factor. `rng_index` seeds the bias-compensating operator.
 ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane, const Vec3& at,
                                 const PhotonFilter& filter, const DensityEstimateOptions& density,
-                                const CoefficientOptions& options, bool quadratic_at_walls, std::size_t rng_index,
-                                LookupHint& hint, std::vector<NeighbourPhoton>& found) {
+                                const CoefficientOptions& options, bool quadratic_at_walls, double pilot_limit_m,
+                                std::size_t rng_index, LookupHint& hint, std::vector<NeighbourPhoton>& found,
+                                std::vector<NeighbourPhoton>& pilot_found) {
   ClassEstimates out;
   if (plane && options.local_linear && !options.bias_compensation && density.kernel == KernelType::Uniform) {
     const std::size_t k = neighbours_needed(density.bandwidth, density.radius);
@@ -328,20 +359,24 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     if (disc.photon_count == 0) return out;
     // The region the disc's photons come from: the disc clipped to the outline, or the part
     // of it the centre sees (filter.visibility, which the lookup applied).
-    // The local-quadratic fit: for options.quadratic_fit_everywhere on a whole disc (none of
-    // it cut) that holds its whole bandwidth, at least QuadraticEverywhereMinimumPhotons (a
-    // short disc, a sparse source's, keeps the plane: few photons under the quadratic's
-    // negative lobes would make its clamp at 0 bias it upwards); on a cut disc for the
-    // sources of quadratic_at_walls.
+    // The curvature correction on a whole disc (none of it cut) that holds its whole
+    // bandwidth, and enough photons (a short disc, a sparse source's, keeps the plane: few
+    // photons under the correction's negative lobes would make its clamp at 0 bias it
+    // upwards); the local-quadratic fit on a cut disc for the sources of quadratic_at_walls.
     const PlaneVisibility* visible = filter.visibility;
+    const CurvatureCorrection curvature = pilot_limit_m >= 0 ? options.curvature_correction : CurvatureCorrection::None;
     const bool cut =
-        (quadratic_at_walls || options.quadratic_fit_everywhere) && disc.radius_m > 0 &&
+        (quadratic_at_walls || curvature != CurvatureCorrection::None) && disc.radius_m > 0 &&
         (visible ? visible->area_m2(disc.radius_m) : plane->disc_area_inside_m2(at.x, at.y, disc.radius_m)) <
             Pi * disc.radius_m * disc.radius_m * (1 - 1e-9);
-    const bool whole = options.quadratic_fit_everywhere && disc.radius_m > 0 && !cut &&
-                       disc.photon_count >= density.bandwidth &&
-                       disc.photon_count >= QuadraticEverywhereMinimumPhotons;
-    if (whole || (quadratic_at_walls && cut)) {
+    const bool whole = curvature != CurvatureCorrection::None && disc.radius_m > 0 && !cut &&
+                       disc.photon_count >= density.bandwidth;
+    const double pilot_m = curvature == CurvatureCorrection::Pilot
+                               ? std::max(disc.radius_m, std::min({CurvaturePilotRadiusFactor * disc.radius_m,
+                                                                   pilot_limit_m, density.max_radius_m}))
+                               : disc.radius_m;
+    const bool corrected = whole && disc.photon_count >= curvature_minimum_photons(disc.radius_m, pilot_m);
+    if ((corrected && curvature == CurvatureCorrection::Quadratic) || (quadratic_at_walls && cut)) {
       const LocalQuadraticKernel kernel = local_quadratic_kernel(
           visible ? visible->moments4(disc.radius_m) : plane->clipped_disc_moments4(at.x, at.y, disc.radius_m));
       if (kernel.valid) return local_quadratic_estimate(map, at, found, disc, kernel);
@@ -370,6 +405,39 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     out.caustic = local_linear_density(m, s0[0], s1x[0], s1y[0]);
     out.global = local_linear_density(m, s0[1], s1x[1], s1y[1]);
     out.variance = local_linear_variance(m, q);
+    if (!(corrected && curvature == CurvatureCorrection::Pilot)) return out;
+    // The pilot's bias, subtracted per class; the variance of the difference: the plane's
+    // weight on a whole disc is 1 / area for each of its photons, so
+    // var = var_plane - 2 sum_disc w_pilot y^2 / area + sum_pilot w_pilot^2 y^2.
+    CurvaturePilot pilot;
+    pilot.inv_pilot_m2 = 1.0 / (pilot_m * pilot_m);
+    pilot.bias_weight = 6.0 / Pi * disc.radius_m * disc.radius_m * pilot.inv_pilot_m2 * pilot.inv_pilot_m2;
+    map.within(at, pilot_m, filter, pilot_found);
+    Vec3 bias[2] = {Vec3{0, 0, 0}, Vec3{0, 0, 0}};
+    double pilot_variance = 0;
+    for (const NeighbourPhoton& n : pilot_found) {
+      const Photon& ph = map.photons()[n.index];
+      const Vec3 flux = ph.flux_rgb();
+      const double w = pilot.weight(n.distance_squared_m2);
+      bias[ph.path_class == PathClass::Caustic ? 0 : 1] += flux * w;
+      const double wy = w * luminance_of(flux);
+      pilot_variance += wy * wy;
+    }
+    double covariance = 0;
+    for (std::size_t j = 0; j < disc.photon_count; ++j) {
+      const double y = luminance_of(map.photons()[found[j].index].flux_rgb());
+      covariance += pilot.weight(found[j].distance_squared_m2) * y * y;
+    }
+    out.caustic -= bias[0];
+    out.global -= bias[1];
+    // A negative total (the correction of a small value against its noise) is set to 0 in
+    // both classes, as the quadratic's (local_quadratic_estimate).
+    for (int c = 0; c < 3; ++c)
+      if (out.caustic[c] + out.global[c] < 0) {
+        out.caustic[c] = 0;
+        out.global[c] = 0;
+      }
+    out.variance = std::max(0.0, out.variance - 2 * covariance / m.area + pilot_variance);
     return out;
   }
   const DensityEstimate all =
@@ -457,6 +525,26 @@ void estimate_photon_coefficients(const GridPhotons& photons,
       }
     return v;
   };
+  // The curvature correction's limit on the pilot disc (estimate_classes): the distance from
+  // each sensor to the nearest outline edge, or cut where the clip bounds the discs, so that
+  // the pilot disc is whole.
+  const bool correct_curvature = plane && options.curvature_correction != CurvatureCorrection::None;
+  auto pilot_limits_of = [&](const tbb::blocked_range<std::size_t>& range) {
+    std::vector<double> limit_m(range.size(), -1.0);
+    if (!correct_curvature) return limit_m;
+    const std::vector<PlanePoint>& outline = plane->outline();
+    for (std::size_t s = range.begin(); s != range.end(); ++s) {
+      const Vec3 at = query_point(sensors[s]);
+      double nearest_m = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < outline.size(); ++i)
+        nearest_m = std::min(nearest_m, distance_to_segment_m(at.x, at.y, outline[i], outline[(i + 1) % outline.size()]));
+      if (clip)
+        for (const PlaneSegment& cut : plane->interior_cuts())
+          nearest_m = std::min(nearest_m, distance_to_segment_m(at.x, at.y, cut.a, cut.b));
+      limit_m[s - range.begin()] = nearest_m;
+    }
+    return limit_m;
+  };
   // Tasks of consecutive sensors, neighbours on the grid. With one map per source, a task
   // goes source by source over its sensors: the source's photons near them stay in the cache
   // from one sensor to the next, and each lookup's hint (LookupHint) comes from the sensor
@@ -464,12 +552,13 @@ void estimate_photon_coefficients(const GridPhotons& photons,
   tbb::parallel_for(tbb::blocked_range<std::size_t>(rows.begin, rows.end),
                     [&](const tbb::blocked_range<std::size_t>& range) {
     const std::vector<std::optional<PlaneVisibility>> visibility = visibility_of(range);
+    const std::vector<double> pilot_limit_m = pilot_limits_of(range);
     auto visibility_at = [&](std::size_t s) {
       const std::optional<PlaneVisibility>& v = visibility[s - range.begin()];
       return v ? &*v : nullptr;
     };
     if (options.estimator == PhotonEstimator::PerSource) {
-      std::vector<NeighbourPhoton> found;
+      std::vector<NeighbourPhoton> found, pilot_found;
       for (std::size_t p = 0; p < n_src && p < photons.source_count(); ++p) {
         const PhotonMap& map = photons.of_source(p);
         if (map.empty()) continue;
@@ -498,21 +587,24 @@ void estimate_photon_coefficients(const GridPhotons& photons,
           const std::size_t i = (s - rows.begin) * n_src + p;  // in `out`
           const std::size_t stream = s * n_src + p;            // random numbers
           const PlaneVisibility* visible = visibility_at(s);
+          const double pilot_m = pilot_limit_m[s - range.begin()];
           if (options.caustic_bandwidth == 0) {
             PhotonFilter both = filter_for(sensor, PathClass::Global, visible);
             both.path_classes = IndirectPathClasses;
-            const ClassEstimates e =
-                estimate_classes(map, plane, at, both, scaled, options, quadratic, stream, global_hint, found);
+            const ClassEstimates e = estimate_classes(map, plane, at, both, scaled, options, quadratic, pilot_m,
+                                                      stream, global_hint, found, pilot_found);
             out.caustic[i] = e.caustic;
             out.global[i] = e.global;
             out.photon_variance[i] = e.variance;
             continue;
           }
-          const ClassEstimates g = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global, visible),
-                                                    global_scaled, options, quadratic, stream, global_hint, found);
-          const ClassEstimates c = estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic, visible),
-                                                    caustic_scaled, options, false, stream + grid_pairs, caustic_hint,
-                                                    found);
+          const ClassEstimates g =
+              estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global, visible), global_scaled, options,
+                               quadratic, pilot_m, stream, global_hint, found, pilot_found);
+          // A caustic map's discs keep the plane (the header comment's "Caustic map").
+          const ClassEstimates c =
+              estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic, visible), caustic_scaled,
+                               options, false, -1.0, stream + grid_pairs, caustic_hint, found, pilot_found);
           out.global[i] = g.global;
           out.caustic[i] = c.caustic;
           // Each lookup's photons are of its own class (the filter), so the two are independent.

@@ -276,6 +276,17 @@ bool PhotonMap::nearest(const Vec3& point, std::size_t k, double max_radius_m, d
   return hint_radius_m == max_radius_m;
 }
 
+void PhotonMap::within(const Vec3& point, double radius_m, const PhotonFilter& filter,
+                       std::vector<NeighbourPhoton>& out) const {
+  out.clear();
+  if (!(radius_m >= 0) || !std::isfinite(radius_m))
+    throw std::invalid_argument("PhotonMap::within: the radius must be finite and >= 0");
+  if (m_photons.empty()) return;
+  const double no_offset[3] = {0, 0, 0};
+  Traversal<CollectWithin>(m_photons.data(), m_axis.data(), point, radius_m, filter, CollectWithin{out})
+      .visit(0, m_photons.size(), no_offset);
+}
+
 std::size_t PhotonMap::memory_bytes() const {
   return m_photons.capacity() * sizeof(Photon) + m_axis.capacity() * sizeof(std::uint8_t);
 }

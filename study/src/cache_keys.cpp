@@ -90,7 +90,7 @@ void add_estimate_options(ContentHash& h, const engine::CoefficientOptions& o) {
   h.integer(static_cast<std::int64_t>(o.quadratic_fit_sources.size()));
   for (std::size_t p : o.quadratic_fit_sources) h.integer(static_cast<std::int64_t>(p));
   h.integer(o.visibility_clip ? 1 : 0);
-  h.integer(o.quadratic_fit_everywhere ? 1 : 0);
+  h.integer(static_cast<int>(o.curvature_correction));
   h.integer(o.direct.samples_per_source).integer(static_cast<std::int64_t>(o.direct.seed));
   h.integer(o.gather.rays_per_sensor).integer(static_cast<std::int64_t>(o.gather.bandwidth));
   h.integer(o.gather.max_specular_events).integer(static_cast<std::int64_t>(o.gather.seed));

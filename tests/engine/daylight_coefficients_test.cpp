@@ -512,26 +512,32 @@ TEST(DaylightCoefficients, LocalQuadraticEstimateIsExactForACurvedFieldAtCorners
   }
 }
 
-TEST(DaylightCoefficients, QuadraticFitEverywhereRemovesTheInteriorCurvatureBias) {
+TEST(DaylightCoefficients, CurvatureCorrectionRemovesTheInteriorCurvatureBias) {
   // Closed form: the curved field of the test above (E_xx + E_yy = -1.2 W/m^2 per m^2) on the
-  // 1 cm lattice, a whole disc of 20 000 photons at the room's centre (pi r^2 = 2 m^2) and a
-  // disc the wall cuts at an edge. The local-linear fit over a whole disc of radius r reads
-  // the field off by (E_xx + E_yy) r^2 / 8 (the disc's second moment r^2 / 4 per axis times the
-  // Taylor term's 1/2): -0.0955 here, 1.22 % of the field; the fit only at walls leaves it.
-  // quadratic_fit_everywhere is exact on the whole disc up to the lattice's count error in a
-  // disc (the 2e-3 of the tests above); the disc the wall cuts keeps the walls' rule
-  // (quadratic_fit_sources: exact when the source is listed, the plane's -1.4 % when not). On
-  // a uniform field its whole-disc variance is 4 times the plane's (equivalent kernel
-  // (4 - 6 s^2) / (pi r^2): E[(4 - 6 t)^2] = 4 for t = s^2 uniform).
-  const std::vector<SensorPoint> sensors = {{{2.0037, 2.0061, 0.8}, {0, 0, 1}},   // whole disc
-                                            {{2.0037, 3.7561, 0.8}, {0, 0, 1}}};  // edge
+  // 1 cm lattice, whole discs of 20 000 photons (pi r^2 = 2 m^2, r = 0.798 m) at the room's
+  // centre and 1.09 m from a wall, and a disc the wall cuts at an edge. The local-linear fit
+  // over a whole disc of radius r reads the field off by (E_xx + E_yy) r^2 / 8 (the disc's
+  // second moment r^2 / 4 per axis times the Taylor term's 1/2): -0.0955 here, 1.22 % of the
+  // field; CurvatureCorrection::None leaves it. Quadratic and Pilot are exact on the whole discs
+  // up to the lattice's count error in a disc (the 2e-3 of the tests above): the pilot reads the
+  // curvature over a disc of 2r at the centre, and of the 1.09 m to the wall near it; the disc
+  // the wall cuts keeps the walls' rule (quadratic_fit_sources: exact when the source is
+  // listed, the plane's -1.4 % when not). On a uniform field the whole-disc variance is, in
+  // the plane's units: 4 for the quadratic (equivalent kernel (4 - 6 s^2) / (pi r^2):
+  // E[(4 - 6 t)^2] = 4 for t = s^2 uniform); for the pilot at R = 2r, with t = rho^2 / R^2
+  // uniform on [0, 1] over the pilot disc (area 4 pi r^2), weights pi r^2 w = 19/16 - 3t/8
+  // inside the disc (t < 1/4) and (3/8)(t - 1/2) outside it, so pi r^2 times the integral of
+  // w^2 is (32/9) ((19/16)^3 - (35/32)^3) + 27/1024 = 1.329.
+  const std::vector<SensorPoint> sensors = {{{2.0037, 2.0061, 0.8}, {0, 0, 1}},   // whole disc, pilot 2r
+                                            {{2.0037, 3.7561, 0.8}, {0, 0, 1}},   // edge: cut
+                                            {{2.0037, 2.9061, 0.8}, {0, 0, 1}}};  // whole, pilot to the wall
   auto curved = [](double x, double y) { return 6.0 + x + y - 0.3 * x * x + 0.05 * x * y - 0.3 * y * y; };
   const GridPhotons grid = lattice_photons_xy(curved);
-  auto estimate = [&sensors](const GridPhotons& g, bool everywhere, bool listed = true) {
+  auto estimate = [&sensors](const GridPhotons& g, CurvatureCorrection correction, bool listed = true) {
     CoefficientOptions o;
     o.density.bandwidth = 20000;
     if (listed) o.quadratic_fit_sources = {0};
-    o.quadratic_fit_everywhere = everywhere;
+    o.curvature_correction = correction;
     DaylightCoefficients c;
     c.sensors = sensors.size();
     c.sources = 1;
@@ -540,21 +546,30 @@ TEST(DaylightCoefficients, QuadraticFitEverywhereRemovesTheInteriorCurvatureBias
     estimate_photon_coefficients(g, sensors, o, c);
     return c;
   };
-  const DaylightCoefficients walls_only = estimate(grid, false);
-  const DaylightCoefficients everywhere = estimate(grid, true);
+  const DaylightCoefficients walls_only = estimate(grid, CurvatureCorrection::None);
   const double truth_centre = curved(2.0037, 2.0061);
   const double r2 = 20000 * 1e-4 / Pi;
   EXPECT_NEAR(walls_only.global[0].x - truth_centre, -1.2 * r2 / 8, 2e-3 * truth_centre);
-  for (std::size_t s = 0; s < sensors.size(); ++s) {
-    const Vec3 q = sensors[s].position;
-    EXPECT_NEAR(everywhere.global[s].x / curved(q.x, q.y), 1.0, 2e-3) << "sensor " << s;
+  EXPECT_NEAR(walls_only.global[2].x - curved(2.0037, 2.9061), -1.2 * r2 / 8, 2e-3 * truth_centre);
+  for (CurvatureCorrection correction : {CurvatureCorrection::Quadratic, CurvatureCorrection::Pilot}) {
+    const DaylightCoefficients corrected = estimate(grid, correction);
+    for (std::size_t s = 0; s < sensors.size(); ++s) {
+      const Vec3 q = sensors[s].position;
+      EXPECT_NEAR(corrected.global[s].x / curved(q.x, q.y), 1.0, 2e-3) << "sensor " << s;
+    }
+    const DaylightCoefficients unlisted = estimate(grid, correction, false);
+    EXPECT_NEAR(unlisted.global[0].x / truth_centre, 1.0, 2e-3);
+    EXPECT_LT(unlisted.global[1].x / curved(2.0037, 3.7561), 1.0 - 1e-2);  // the cut disc: the plane
   }
-  const DaylightCoefficients unlisted = estimate(grid, true, false);
-  EXPECT_NEAR(unlisted.global[0].x / truth_centre, 1.0, 2e-3);
-  EXPECT_LT(unlisted.global[1].x / curved(2.0037, 3.7561), 1.0 - 1e-2);  // the cut disc: the plane
   const GridPhotons flat = lattice_photons_xy([](double, double) { return 2.0; });
-  const DaylightCoefficients plane = estimate(flat, false), quadratic = estimate(flat, true);
+  const DaylightCoefficients plane = estimate(flat, CurvatureCorrection::None);
+  const DaylightCoefficients quadratic = estimate(flat, CurvatureCorrection::Quadratic);
+  const DaylightCoefficients pilot = estimate(flat, CurvatureCorrection::Pilot);
   EXPECT_NEAR(quadratic.photon_variance[0] / plane.photon_variance[0], 4.0, 0.05);
+  EXPECT_NEAR(pilot.photon_variance[0] / plane.photon_variance[0], 1.329, 0.03);
+  // Near the wall the pilot is narrower (R = 1.094 m = 1.37 r), its variance between the two.
+  EXPECT_GT(pilot.photon_variance[2] / plane.photon_variance[2], 1.329 + 0.1);
+  EXPECT_LT(pilot.photon_variance[2] / plane.photon_variance[2], 4.0 - 0.1);
 }
 
 TEST(DaylightCoefficients, LocalQuadraticEstimateReportsItsOwnVariance) {

@@ -334,6 +334,37 @@ TEST(PhotonMap, HintedSearchMatchesBruteForce) {
   EXPECT_LT(repeats, hinted);
 }
 
+TEST(PhotonMap, RangeQueryMatchesBruteForce) {
+  // within() returns brute force's photons within the radius (the rim included, ties of
+  // coincident photons all kept), in some order: compared as sorted lists. A radius of 0
+  // keeps only photons on the query point; a bad radius throws.
+  const PhotonMap map(random_photons(3000, 17, [](std::mt19937_64& rng) {
+    std::uniform_int_distribution<int> cell(0, 30);  // duplicates: photons exactly on the rim
+    return std::array<float, 3>{0.1f * static_cast<float>(cell(rng)), 0.1f * static_cast<float>(cell(rng)), 0.8f};
+  }));
+  std::mt19937_64 rng(18);
+  std::uniform_real_distribution<double> u(-0.2, 3.2);
+  std::vector<NeighbourPhoton> got;
+  for (const PhotonFilter& filter : test_filters())
+    for (double radius : {0.0, 0.1, 0.35, 1.2, 5.0})
+      for (int i = 0; i < 6; ++i) {
+        // Every third query on a lattice point, so that the rim and zero distances are hit.
+        const Vec3 q = i % 3 == 0 ? Vec3{0.1 * (i + 3), 0.1 * (2 * i + 1), 0.8} : Vec3{u(rng), u(rng), 0.8};
+        const std::vector<NeighbourPhoton> want = brute_force(map, q, map.size() + 1, radius, filter);
+        map.within(q, radius, filter, got);
+        std::sort(got.begin(), got.end(), [](const NeighbourPhoton& a, const NeighbourPhoton& b) {
+          return a.distance_squared_m2 != b.distance_squared_m2 ? a.distance_squared_m2 < b.distance_squared_m2
+                                                                : a.index < b.index;
+        });
+        expect_same(got, want, "range query");
+        if (::testing::Test::HasFatalFailure()) return;
+      }
+  EXPECT_THROW(map.within(Vec3{1, 1, 0.8}, -1.0, PhotonFilter{}, got), std::invalid_argument);
+  EXPECT_THROW(map.within(Vec3{1, 1, 0.8}, Inf, PhotonFilter{}, got), std::invalid_argument);
+  EXPECT_THROW(map.within(Vec3{1, 1, 0.8}, std::numeric_limits<double>::quiet_NaN(), PhotonFilter{}, got),
+               std::invalid_argument);
+}
+
 TEST(PhotonMap, BuildDoesNotDependOnThreadCount) {
   // Above the parallel build threshold (2^16) so that subtrees are built concurrently.
   const auto photons = random_photons(200000, 12, [](std::mt19937_64& rng) {

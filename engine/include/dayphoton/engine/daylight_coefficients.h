@@ -43,13 +43,24 @@
 // direct (computed without a disc), so its photon part's curvature bias is a small share. Where the fitted total (caustic +
 // global) is negative it is set to 0; each class alone is not clamped (a class with few
 // photons in the disc would otherwise be biased upwards by its clamp).
-// Curvature away from walls (quadratic_fit_everywhere): the local-linear fit over a whole
-// disc of radius r reads a curved field E off by (E_xx + E_yy) r^2 / 8 (the disc's second
-// moment r^2 / 4 times the Taylor term's 1/2), a bias its stated variance does not contain.
-// Under an accuracy target the disc keeps its size as photons are added, so this bias never
-// falls: behind a partition, where the light rises concavely away from it, the plane read
-// 3 % low (4 standard errors). The quadratic fit on every whole disc removes it at 4 times
-// the variance (docs/photon-map.md, "Curvature away from walls").
+// Curvature away from walls (curvature_correction): the local-linear fit over a whole disc
+// of radius r reads a curved field E off by (E_xx + E_yy) r^2 / 8 (the disc's second moment
+// r^2 / 4 times the Taylor term's 1/2), a bias its stated variance does not contain. Under
+// an accuracy target the disc keeps its size as photons are added, so this bias never falls:
+// behind a partition, where the light rises concavely away from it, the plane read 3 % low
+// (4 standard errors). Two corrections (docs/photon-map.md, "Curvature away from walls"):
+//   - Pilot (the default): the bias is estimated and subtracted. A quadratic fitted over the
+//     pilot disc of radius R about the same centre (every photon of the source within R,
+//     R = CurvaturePilotRadiusFactor r, kept inside the outline and off every cut) gives
+//     E_xx + E_yy, and the estimate is the plane's minus (E_xx + E_yy) r^2 / 8. It is the
+//     bias correction with a pilot bandwidth of Calonico, Cattaneo and Farrell ("On the
+//     effect of bias estimation on coverage accuracy in nonparametric inference", JASA
+//     113(522), 2018), whose standard error includes the bias estimate's own variance: the
+//     reported variance is that of the corrected estimate, sum_j (w_lin,j - w_pilot,j)^2 y_j^2,
+//     about 1.3 times the plane's at R = 2r (the pilot's 4 R^2 / r^2 times more photons
+//     average its noise out), 4 times at R = r, where it is the quadratic fit itself.
+//   - Quadratic: the local-quadratic fit on the disc itself, exact for every quadratic field
+//     at 4 times the variance.
 // Sparse sources: a source with fewer photons than the median source (a low-yield source cut
 // by the photon cap, a sky patch seen through a sliver) would need a disc far wider than the
 // others' for the same N, and the plane fitted over it would smear its light over the room.
@@ -75,6 +86,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -95,6 +107,19 @@
 namespace dayphoton::engine {
 
 enum class PhotonEstimator { PerSource, Contribution };
+
+/// The pilot disc of the curvature correction is at most this many times the kernel disc's
+/// radius (header comment, "Curvature away from walls"): wider averages the bias estimate's
+/// noise further (its variance falls as (r / R)^6) at the cost of the pilot's lookup, and
+/// reads the curvature over a wider field.
+constexpr double CurvaturePilotRadiusFactor = 2.0;
+
+/// How a whole disc's curvature bias is treated on a receiver plane (header comment).
+enum class CurvatureCorrection : std::uint8_t {
+  None,       ///< the local-linear fit alone; its bias stays
+  Pilot,      ///< the plane's estimate minus the bias a wider pilot disc's quadratic estimates
+  Quadratic,  ///< the local-quadratic fit on the disc itself
+};
 
 /// Per-source bandwidths are never scaled below this many photons (sparse sources, above).
 constexpr std::size_t MinimumSourceBandwidth = 8;
@@ -117,12 +142,12 @@ struct CoefficientOptions {
   /// fit (local_quadratic_fit.h) where the outline cuts them (see the header comment). Empty:
   /// none. The study lists the ground bin of the sky's sources (SimulationPlan).
   std::vector<std::size_t> quadratic_fit_sources;
-  /// With local_linear: the local-quadratic fit for every source on every whole disc (none of
-  /// it cut by the outline or the visibility clip) that holds its whole bandwidth (see the
-  /// header comment, "Curvature away from walls"); cut discs keep quadratic_fit_sources' rule.
-  /// Its variance (4 times the plane's on a whole disc) is reported, so accuracy rounds trace
-  /// what it needs. Off: quadratic_fit_sources alone.
-  bool quadratic_fit_everywhere = false;
+  /// With local_linear: the correction of the curvature bias on every whole disc (none of it
+  /// cut by the outline or the visibility clip) that holds its whole bandwidth, for every
+  /// source (see the header comment, "Curvature away from walls"); cut discs keep
+  /// quadratic_fit_sources' rule. Its variance is reported, so accuracy rounds trace what it
+  /// needs.
+  CurvatureCorrection curvature_correction = CurvatureCorrection::Pilot;
   /// Receiver planes: where an interior cut (a partition, a column: plane_cuts.h, set on the
   /// plane) or a re-entrant corner of the outline lies within a sensor's widest disc, count
   /// only the photons the sensor's position sees in the plane, over the region it sees

@@ -117,6 +117,13 @@ class PhotonMap {
   bool nearest(const Vec3& point, std::size_t k, double max_radius_m, double hint_radius_m,
                const PhotonFilter& filter, std::vector<NeighbourPhoton>& out) const;
 
+  /// Every photon within radius_m of `point` (distance <= radius_m) that passes `filter`, in
+  /// the tree's order, not sorted (a fixed-radius range query: the order is deterministic, so
+  /// sums over it are too). `out` is cleared first. A negative, NaN or infinite radius throws
+  /// std::invalid_argument.
+  void within(const Vec3& point, double radius_m, const PhotonFilter& filter,
+              std::vector<NeighbourPhoton>& out) const;
+
   /// Bytes used by photons and tree (for bench/).
   std::size_t memory_bytes() const;
 
