@@ -587,6 +587,20 @@ TEST(ReportHtml, AGatheredGridsAccuracyIsExplainedByItsOwnGatherRounds) {
   EXPECT_EQ(met.find("stopped with"), std::string::npos) << met;
 }
 
+namespace {
+
+/// The words of a direct-rays-limit stop: `who` ("the rounds", "the gather rounds") and the
+/// grid's shadow rays per sky patch at the end, `samples`, at or above the rounds' limit.
+std::string direct_rays_limit_words(const std::string& who, int samples) {
+  return "those rays were at their limit, " + std::to_string(samples) + " per sky patch for this grid: " + who +
+         " raise them up to " + std::to_string(MaxDirectSamplesPerBin) +
+         " per sky patch, and keep the project's own <code>simulation.direct_samples_per_bin</code> where it is "
+         "higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " + std::to_string(samples) +
+         ", or ask for a looser target.";
+}
+
+}  // namespace
+
 TEST(ReportHtml, TheDirectRaysLimitNamesTheKeyToChange) {
   // The shadow rays were at the rounds' limit and the rounds stopped there: the sentence says
   // so with the grid's own count from results.json (the rounds' limit, or the project's own
@@ -604,13 +618,8 @@ TEST(ReportHtml, TheDirectRaysLimitNamesTheKeyToChange) {
     ASSERT_NE(at, std::string::npos);
     const std::string item = html.substr(at, html.find("</li>", at) - at);
     EXPECT_NE(item.find("<strong>Above the target.</strong> Why: the sensors still above the target are so by the "
-                        "noise of their direct light (the shadow rays toward the sky through the openings), and "
-                        "those rays were at their limit, " +
-                        std::to_string(samples) + " per sky patch for this grid: the rounds raise them up to " +
-                        std::to_string(MaxDirectSamplesPerBin) +
-                        " per sky patch, and keep the project's own <code>simulation.direct_samples_per_bin</code> "
-                        "where it is higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
-                        std::to_string(samples) + ", or ask for a looser target."),
+                        "noise of their direct light (the shadow rays toward the sky through the openings), and " +
+                        direct_rays_limit_words("the rounds", samples)),
               std::string::npos)
         << item;
     EXPECT_EQ(item.find("raised those rays"), std::string::npos) << item;
@@ -625,20 +634,15 @@ TEST(ReportHtml, AGatheredGridsDirectRaysLimitNamesTheKeyToChange) {
   ResultsModel m = results_model(dir);
   using Acc = DaylightFactorSummary::AccuracyReached;
   m.cases[0].grids[1].daylight_factor->accuracy =
-      Acc{1.0, 1.4, 3, 4000000, "direct rays limit", "above target", 4096, 4, "direct rays limit", 256};
+      Acc{1.0, 1.4, 3, 4000000, "direct rays limit", "above target", 4096, 4, "direct rays limit",
+          MaxDirectSamplesPerBin};
   write_results_model(m, dir);
   const std::string html = report_html(dir);
   const std::string wall =
       accuracy_item(accuracy_statements(html), "data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
   ASSERT_FALSE(wall.empty()) << html;
   EXPECT_NE(wall.find("estimated by final gather"), std::string::npos) << wall;
-  EXPECT_NE(wall.find("those rays were at their limit, 256 per sky patch for this grid: the gather rounds raise "
-                      "them up to " +
-                      std::to_string(MaxDirectSamplesPerBin) +
-                      " per sky patch, and keep the project's own <code>simulation.direct_samples_per_bin</code> "
-                      "where it is higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
-                      std::to_string(MaxDirectSamplesPerBin) + ", or ask for a looser target."),
-            std::string::npos)
+  EXPECT_NE(wall.find(direct_rays_limit_words("the gather rounds", MaxDirectSamplesPerBin)), std::string::npos)
       << wall;
   EXPECT_EQ(wall.find("raised those rays"), std::string::npos) << wall;
   EXPECT_EQ(wall.find("stopped with"), std::string::npos) << wall;
