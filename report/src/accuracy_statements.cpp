@@ -4,6 +4,7 @@
 // value reached, the rounds and photons, why the rounds stopped and, when the grid is above
 // the target, why and what to change (docs/photon-tracing.md, "Accuracy target"). From the
 // results model's typed values alone.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -50,17 +51,20 @@ struct Reached {
   int gather_rays = 0;  ///< > 0: a grid estimated by final gather (its own rounds and stop below)
   std::size_t gather_rounds = 0;
   std::string gather_stop_reason{};
+  int direct_samples_per_bin = 0;  ///< the sky's shadow rays per patch at the end; 0 for the sun (none)
 };
 
-/// The shadow rays at their limit, true whichever count the rounds ended at (results.json does
-/// not carry it): `who` raises them up to MaxDirectSamplesPerBin per sky patch and keeps a
-/// project's own larger direct_samples_per_bin unchanged.
-std::string direct_rays_at_limit(const std::string& who) {
+/// The shadow rays at their limit, with the count the grid ended at (`samples_per_bin`, from
+/// results.json): `who` raises them up to MaxDirectSamplesPerBin per sky patch and keeps a
+/// project's own larger direct_samples_per_bin unchanged, so the advice is a count above both.
+std::string direct_rays_at_limit(const std::string& who, int samples_per_bin) {
   const std::string limit = std::to_string(study::MaxDirectSamplesPerBin);
-  return "those rays were at their limit: " + who + " raise them up to " + limit +
+  const std::string above = std::to_string(std::max(samples_per_bin, study::MaxDirectSamplesPerBin));
+  return "those rays were at their limit, " + std::to_string(samples_per_bin) +
+         " per sky patch for this grid: " + who + " raise them up to " + limit +
          " per sky patch, and keep the project's own <code>simulation.direct_samples_per_bin</code> where it is "
-         "higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " + limit +
-         " and above the project's present count, or ask for a looser target.";
+         "higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " + above +
+         ", or ask for a looser target.";
 }
 
 /// Why a grid estimated by final gather is above the target and what to change, from its own
@@ -103,7 +107,7 @@ std::string gather_why_and_what_to_do(const Reached& r) {
   if (r.gather_stop_reason == "direct rays limit")
     return gathered + "; the sensors still above the target are so by the noise of their direct light (the "
            "shadow rays toward the sky through the openings), and " +
-           direct_rays_at_limit("the gather rounds");
+           direct_rays_at_limit("the gather rounds", r.direct_samples_per_bin);
   return gathered + "; the gather rounds stopped with \"" + esc(r.gather_stop_reason) + "\".";
 }
 
@@ -133,7 +137,7 @@ std::string why_and_what_to_do(const Reached& r) {
   if (r.stop_reason == "direct rays limit")
     return "Why: the sensors still above the target are so by the noise of their direct light (the shadow rays "
            "toward the sky through the openings), and " +
-           direct_rays_at_limit("the rounds");
+           direct_rays_at_limit("the rounds", r.direct_samples_per_bin);
   if (r.stop_reason == "no light") return "Why: no light reaches the grid's sensors, so there is nothing to measure.";
   return "Why: the rounds stopped with \"" + esc(r.stop_reason) + "\".";
 }
@@ -170,7 +174,7 @@ std::string statement(const std::string& what, const Reached& r) {
 std::string sky_accuracy_statement(const study::DaylightFactorSummary::AccuracyReached& a) {
   return statement("Daylight factor (sky patches)",
                    Reached{a.target_percent, a.reached_percent, a.rounds, a.photons, a.stop_reason, a.status,
-                           a.gather_rays, a.gather_rounds, a.gather_stop_reason});
+                           a.gather_rays, a.gather_rounds, a.gather_stop_reason, a.direct_samples_per_bin});
 }
 
 std::string sun_accuracy_statement(const study::SunAccuracyReached& a) {

@@ -133,6 +133,7 @@ json grid_json(const GridResult& g) {
                             {"accuracy", nullptr}};
     if (const auto& acc = d->accuracy) {
       j["daylight_factor"]["accuracy"] = accuracy_json(*acc);
+      j["daylight_factor"]["accuracy"]["direct_samples_per_bin"] = acc->direct_samples_per_bin;
     }
   }
   if (const auto& a = g.annual) {
@@ -460,6 +461,8 @@ struct Reader {
       d.sensors_with_daylight = count(df, dk, "sensors_with_daylight");
       d.accuracy = accuracy_reached<DaylightFactorSummary::AccuracyReached>(
           df, dk, "accuracy", [this](const json& acc, const std::string& ck, DaylightFactorSummary::AccuracyReached& r) {
+            r.direct_samples_per_bin = integer(acc, ck, "direct_samples_per_bin");
+            if (r.direct_samples_per_bin < 1) fail(name(ck, "direct_samples_per_bin"), "is not at least 1");
             gather_reached(acc, ck, r);
           });
       g.daylight_factor = d;
@@ -617,7 +620,7 @@ bool DaylightFactorSummary::AccuracyReached::operator==(const AccuracyReached& o
   return target_percent == o.target_percent && reached_percent == o.reached_percent && rounds == o.rounds &&
          photons == o.photons && stop_reason == o.stop_reason && status == o.status &&
          gather_rays == o.gather_rays && gather_rounds == o.gather_rounds &&
-         gather_stop_reason == o.gather_stop_reason;
+         gather_stop_reason == o.gather_stop_reason && direct_samples_per_bin == o.direct_samples_per_bin;
 }
 bool SunAccuracyReached::operator==(const SunAccuracyReached& o) const {
   return target_percent == o.target_percent && reached_percent == o.reached_percent &&

@@ -126,7 +126,9 @@ SimulationPlan SimulationPlan::of(const project::Project& project) {
   p.sun_estimating.density.bandwidth = sun_bin_bandwidth(p.sky_estimating.density.bandwidth);
   p.ground_reflectance = sim.ground_reflectance;
   // The sky gather's rays' variance is taken on the daylight factor's sky (final_gather.h,
-  // "Variance"); the sun bins are other sources, with unit weights.
+  // "Variance"). The sun bins' weights are the year's, known once the suns are
+  // (sun_annual_estimating, in sun_bin_steps.cpp and the sun rounds), so sun_estimating,
+  // copied above, has none.
   const RadianceMatrix df_sky = p.daylight_factor_sky();
   std::vector<double>& w = p.sky_estimating.gather.variance_weights;
   w.resize(df_sky.rows());

@@ -228,6 +228,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
           reached.gather_rounds = accuracy->gather[g].rounds;
           reached.gather_stop_reason = accuracy->gather[g].stop_reason;
         }
+        reached.direct_samples_per_bin = accuracy->direct_samples_per_bin.at(g);
         ctx.results->grids.back().daylight_factor->accuracy = reached;
       }
     }

@@ -26,7 +26,8 @@ std::string exact(double x) {
 
 SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, const std::string& prefix,
                                              const CaseScene& cs, const std::vector<sky::SunRecord>& suns,
-                                             const engine::SunBins& bins, RunContext& ctx,
+                                             const engine::SunBins& bins,
+                                             const engine::CoefficientOptions& estimating, RunContext& ctx,
                                              std::vector<GridSun>& result) {
   const project::Simulation& sim = project.simulation;
   const SimulationPlan& plan = ctx.plan;
@@ -43,7 +44,7 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
   c.tracing = plan.tracing_for(plan.sun_tracing, cs.layout);
   // As the rounds estimate (the gather's variance weights are the bins' yearly weights): so in
   // the keys too.
-  c.estimating = sun_annual_estimating(plan.sun_estimating, sun_year_weights(bins, suns));
+  c.estimating = estimating;
   AccuracyGoal goal;
   goal.target_percent = sim.accuracy->target_df_relative_stderr_percent;
   goal.max_photons = sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons;

@@ -17,11 +17,13 @@
 
 namespace dayphoton::study {
 
-/// Fills bin_coefficients and bin_variance of every grid in `result` (sized to the grids);
-/// logs each round and a sentence per grid; returns the outcome.
+/// Fills bin_coefficients and bin_variance of every grid in `result` (sized to the grids),
+/// estimated with `estimating` (the sun's, with the year's gather weights:
+/// sun_annual_estimating); logs each round and a sentence per grid; returns the outcome.
 SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, const std::string& prefix,
                                              const CaseScene& cs, const std::vector<sky::SunRecord>& suns,
-                                             const engine::SunBins& bins, RunContext& ctx,
+                                             const engine::SunBins& bins,
+                                             const engine::CoefficientOptions& estimating, RunContext& ctx,
                                              std::vector<GridSun>& result);
 
 }  // namespace dayphoton::study

@@ -5,11 +5,13 @@
 #include <memory>
 
 #include "dayphoton/engine/port_emission.h"
+#include "dayphoton/study/accuracy_policy.h"
 #include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/photon_range_step.h"
 #include "dayphoton/study/sensor_blocks.h"
+#include "dayphoton/study/sun_accuracy_rounds.h"
 #include "lazy_value.h"
 #include "photon_pass_notes.h"
 #include "sun_accuracy_step.h"
@@ -47,18 +49,21 @@ Step direct_sun_step(const CaseScene& cs, const SensorGrid& grid, std::size_t g,
 }
 
 /// The count-controlled sun: one photon step per lit bin (one batch, traced only when some
-/// grid's sun coefficients are missing), then one coefficient step per grid.
+/// grid's sun coefficients are missing), then one coefficient step per grid. A grid estimated
+/// by final gather is estimated with `estimating` (the sun's, with the year's gather weights:
+/// run_sun_bins); the others, which the weights do not change, with the plan's sun options, so
+/// that their keys do not hold the weather file's irradiances (docs/sun.md, "Sun bins").
 void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, const engine::SunBins& bins,
                             const engine::SourceSet& sources, const std::vector<char>& to_trace,
                             const std::vector<std::string>& keys, const engine::TracingOptions& tracing,
-                            RunContext& ctx, std::vector<GridSun>& result) {
+                            const engine::CoefficientOptions& estimating, RunContext& ctx,
+                            std::vector<GridSun>& result) {
   const SimulationPlan& plan = ctx.plan;
   Progress& progress = ctx.progress;
   RunLog& log = ctx.log;
   RunReport& report = ctx.report;
   const std::vector<SensorGrid>& grids = cs.description.grids;
   const std::size_t n_grids = grids.size();
-  const engine::CoefficientOptions& estimating = plan.sun_estimating;
   const std::size_t n_lit = static_cast<std::size_t>(std::count(to_trace.begin(), to_trace.end(), 1));
   // The sun-coefficient steps first: the bins' photons are needed only if one is missing.
   engine::TracedPhotons photons;
@@ -67,18 +72,21 @@ void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, cons
   bool all_cached = true;
   for (std::size_t g = 0; g < n_grids; ++g) {
     const SensorGrid& grid = grids[g];
-    const std::string key = sun_coefficients_key(keys, plan.sun_bin_minimum_bound_fraction, grid, estimating);
+    const bool gathered = !grid_chased_by_photons(cs.layout.plane_of_grid,
+                                                  plan.point_estimate == project::PointEstimate::Gather, g);
+    const engine::CoefficientOptions* options = gathered ? &estimating : &plan.sun_estimating;
+    const std::string key = sun_coefficients_key(keys, plan.sun_bin_minimum_bound_fraction, grid, *options);
     GridSun& out = result[g];
     Step& s = grid_steps[g];
     s.kind = StepKind::SunCoefficients;
     s.index = g;
     s.outputs = {{"sun-coefficients", key}, {"sun-coefficients-variance", key}};
-    s.compute = [&, g]() -> std::vector<std::string> {
+    s.compute = [&, g, options]() -> std::vector<std::string> {
       const engine::GridPhotons grid_photons =
           grid_photons_for(g, cs.layout, photons, bins.size(), plan.point_estimate);
       std::vector<double> bin_variance;
       out.bin_coefficients =
-          sun_bin_coefficients(cs.scene, cs.materials, sources, grid_photons, grid.points, estimating, &bin_variance);
+          sun_bin_coefficients(cs.scene, cs.materials, sources, grid_photons, grid.points, *options, &bin_variance);
       // The variances as the cache keeps them (single precision), so a cached run gives the
       // same verdicts.
       RadianceMatrix variance(grid.points.size(), bins.size(), 1);
@@ -90,13 +98,13 @@ void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, cons
     // By sensor blocks over the ranks of an MPI run (plan_step.h): the same two matrices.
     SensorBlocks blocks;
     blocks.sensors = grid.points.size();
-    blocks.compute_rows = [&, g, maps = std::make_shared<LazyValue<engine::GridPhotons>>()](std::size_t begin,
-                                                                                             std::size_t end) {
+    blocks.compute_rows = [&, g, options, maps = std::make_shared<LazyValue<engine::GridPhotons>>()](
+                              std::size_t begin, std::size_t end) {
       const engine::GridPhotons& grid_photons =
           maps->get([&] { return grid_photons_for(g, cs.layout, photons, bins.size(), plan.point_estimate); });
       std::vector<double> block_variance;
       const RadianceMatrix c = sun_bin_coefficients(cs.scene, cs.materials, sources, grid_photons, grid.points,
-                                                    estimating, &block_variance, {begin, end});
+                                                    *options, &block_variance, {begin, end});
       RadianceMatrix variance(end - begin, bins.size(), 1);
       for (std::size_t i = 0; i < block_variance.size(); ++i)
         variance.data()[i] = static_cast<float>(block_variance[i]);
@@ -185,7 +193,13 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   const std::vector<SensorGrid>& grids = cs.description.grids;
   const std::size_t n_grids = grids.size();
   const engine::TracingOptions tracing = plan.tracing_for(plan.sun_tracing, cs.layout);
-  const engine::CoefficientOptions& estimating = plan.sun_estimating;
+  // A gathered grid's rays' variance split over the bins by the year's weights A_k, as the
+  // accuracy rounds split it (sun_annual_estimating): the annual value's variance is then that
+  // of its own rays, and the hours' variances (verdict_uncertainty.h) come nearer the spread
+  // of seeds than with unit weights (SunAccuracy.GatherWeightsOfARunWithPhotonCountsAgainst-
+  // TheSpreadOfSeeds); a run with photon counts and one with a target state them alike.
+  const engine::CoefficientOptions estimating =
+      sun_annual_estimating(plan.sun_estimating, sun_year_weights(bins, ss.suns));
 
   const engine::SourceSet sources = bins.sources(sky::SunHalfAngle_rad);
   const std::vector<char> to_trace = sun_bins_to_trace(engine::PortEmitter(cs.scene, sources), bins.size());
@@ -207,9 +221,9 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   std::optional<SunAccuracyOutcome> accuracy;
   if (sim.accuracy) {
     // The accuracy target's sun rounds (sun_accuracy_step.h) instead of the count's steps.
-    accuracy = accuracy_sun_coefficients(project, prefix, cs, ss.suns, bins, ctx, result);
+    accuracy = accuracy_sun_coefficients(project, prefix, cs, ss.suns, bins, estimating, ctx, result);
   } else {
-    count_sun_coefficients(prefix, cs, bins, sources, to_trace, keys, tracing, ctx, result);
+    count_sun_coefficients(prefix, cs, bins, sources, to_trace, keys, tracing, estimating, ctx, result);
   }
   if (accuracy_outcome) *accuracy_outcome = accuracy;
 

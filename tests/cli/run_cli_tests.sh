@@ -234,7 +234,8 @@ summary = json.load(open(d + "/summary.json"))["grids"][0]["accuracy"]
 sky, sun, ssun = grid["daylight_factor"]["accuracy"], grid["sun_accuracy"], summary["sun"]
 assert sky == {"target_percent": summary["target_df_relative_stderr_percent"],
                "reached_percent": summary["reached_df_relative_stderr_percent"], "rounds": summary["rounds"],
-               "photons": summary["photons"], "stop_reason": summary["stop_reason"], "status": summary["status"]}, sky
+               "photons": summary["photons"], "stop_reason": summary["stop_reason"], "status": summary["status"],
+               "direct_samples_per_bin": summary["direct_samples_per_bin"]}, sky
 assert sun == {"target_percent": ssun["target_relative_stderr_percent"],
                "reached_percent": ssun["reached_relative_stderr_percent"],
                "hourly_percent": ssun["hourly_relative_stderr_percent"], "rounds": ssun["rounds"],

@@ -11,18 +11,8 @@
 #   - run.log has a line per gather round and the grid's sentence;
 #   - 1 and 2 threads give the same result bytes (run.log and timings.json aside).
 # Usage: DAYPHOTON=path/to/dayphoton bash run_gathered_accuracy_test.sh (from the source root)
-set -eu
-bin=${DAYPHOTON:?set DAYPHOTON to the dayphoton executable}
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
 case_file=tests/cli/cases/gathered_accuracy.yaml
-# The same output path for both runs (summary.json names it), each without a cache.
-for threads in 1 2; do
-  rm -rf "$scratch/run" "$scratch/.run-cache"
-  "$bin" run "$case_file" --output "$scratch/run" --threads $threads --quiet
-  mv "$scratch/run" "$scratch/$threads"
-done
-failed=0
+. "$(dirname "$0")/thread_runs.sh"
 python3 - "$scratch/1" <<'PY' || failed=1
 import csv, json, math, sys
 out = sys.argv[1]
@@ -56,9 +46,5 @@ assert "(final gather, %d rays per sensor, %d gather round(s) from 16: target me
 print("ok   gathered grid met the target: %.3g %% with %d rays per sensor after %d gather round(s)"
       % (reached, g["gather_rays"], g["rounds"]))
 PY
-if diff -r -q -x run.log -x timings.json "$scratch/1" "$scratch/2"; then
-  echo "ok   1 and 2 threads give the same bytes"
-else
-  echo "FAIL 1 and 2 threads differ"; failed=1
-fi
+check_same_bytes
 exit $failed

@@ -398,14 +398,7 @@ DaylightCoefficients one_sensor_coefficients(const GridPhotons& grid, const std:
   CoefficientOptions o;
   o.density.bandwidth = bandwidth;
   o.quadratic_fit_sources = std::move(fitted);
-  DaylightCoefficients c;
-  c.sensors = 1;
-  c.sources = sources;
-  c.caustic.assign(sources, Vec3{0, 0, 0});
-  c.global.assign(sources, Vec3{0, 0, 0});
-  c.photon_variance.assign(sources, 0.0);
-  estimate_photon_coefficients(grid, sensors, o, c);
-  return c;
+  return test::estimate_coefficients(grid, sensors, o, sources, true);
 }
 
 /// Deterministic photons on a 1 cm lattice over a 4 x 4 m receiver plane at z = 0.8, flux
@@ -430,13 +423,7 @@ DaylightCoefficients lattice_estimate(const GridPhotons& grid, const std::vector
   o.density.bandwidth = bandwidth;
   o.local_linear = local_linear;
   if (quadratic_at_walls) o.quadratic_fit_sources = {0};
-  DaylightCoefficients c;
-  c.sensors = sensors.size();
-  c.sources = 1;
-  c.caustic.assign(sensors.size(), Vec3{0, 0, 0});
-  c.global.assign(sensors.size(), Vec3{0, 0, 0});
-  estimate_photon_coefficients(grid, sensors, o, c);
-  return c;
+  return test::estimate_coefficients(grid, sensors, o);
 }
 
 TEST(DaylightCoefficients, LocalLinearEstimateRemovesTheWallGradientBias) {
@@ -538,13 +525,7 @@ TEST(DaylightCoefficients, CurvatureCorrectionRemovesTheInteriorCurvatureBias) {
     o.density.bandwidth = 20000;
     if (listed) o.quadratic_fit_sources = {0};
     o.curvature_correction = correction;
-    DaylightCoefficients c;
-    c.sensors = sensors.size();
-    c.sources = 1;
-    c.caustic.assign(sensors.size(), Vec3{0, 0, 0});
-    c.global.assign(sensors.size(), Vec3{0, 0, 0});
-    estimate_photon_coefficients(g, sensors, o, c);
-    return c;
+    return test::estimate_coefficients(g, sensors, o);
   };
   const DaylightCoefficients walls_only = estimate(grid, CurvatureCorrection::None);
   const double truth_centre = curved(2.0037, 2.0061);

@@ -1,6 +1,7 @@
 // Deterministic photons for the receiver-plane estimate tests: one photon per 1 cm cell of
 // the 4 x 4 m square [0, 4]^2 at z = 0.8, of flux E(x, y) x the cell's area, so a density
-// estimate of them is a closed-form field up to the lattice's count error in a disc.
+// estimate of them is a closed-form field up to the lattice's count error in a disc; and the
+// coefficients' estimate those tests share.
 #pragma once
 
 #include <cstddef>
@@ -34,6 +35,22 @@ GridPhotons lattice_photons_on(const ReceiverPlane& plane, Field irradiance, std
         photons.push_back(p);
       }
   return GridPhotons::for_plane(plane, photons, sources);
+}
+
+/// The photon coefficients of `grid` at `sensors` for `sources` sources by `options`, sized
+/// here (caustic and global zero before the estimate; with `keep_variance` the photon variance
+/// too).
+inline DaylightCoefficients estimate_coefficients(const GridPhotons& grid, const std::vector<SensorPoint>& sensors,
+                                                const CoefficientOptions& options, std::size_t sources = 1,
+                                                bool keep_variance = false) {
+  DaylightCoefficients c;
+  c.sensors = sensors.size();
+  c.sources = sources;
+  c.caustic.assign(sensors.size() * sources, Vec3{0, 0, 0});
+  c.global.assign(sensors.size() * sources, Vec3{0, 0, 0});
+  if (keep_variance) c.photon_variance.assign(sensors.size() * sources, 0.0);
+  estimate_photon_coefficients(grid, sensors, options, c);
+  return c;
 }
 
 }  // namespace dayphoton::engine::test

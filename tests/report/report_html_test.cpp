@@ -557,11 +557,12 @@ TEST(ReportHtml, AGatheredGridsAccuracyIsExplainedByItsOwnGatherRounds) {
   const std::string dir = temp_dir("accuracy_gather");
   ResultsModel m = results_model(dir);
   using Acc = DaylightFactorSummary::AccuracyReached;
-  m.cases[0].grids[0].daylight_factor->accuracy = Acc{1.0, 1.4, 8, 33500000, "photon budget", "above target"};
+  m.cases[0].grids[0].daylight_factor->accuracy =
+      Acc{1.0, 1.4, 8, 33500000, "photon budget", "above target", 0, 0, "", 16};
   m.cases[0].grids[1].daylight_factor->accuracy =
-      Acc{1.0, 1.9, 8, 33500000, "photon budget", "above target", 65536, 4, "gather ray limit"};
+      Acc{1.0, 1.9, 8, 33500000, "photon budget", "above target", 65536, 4, "gather ray limit", 16};
   m.cases[1].grids[0].daylight_factor->accuracy =
-      Acc{1.0, 0.9, 2, 950000, "photon budget", "met", 4096, 2, "target met"};
+      Acc{1.0, 0.9, 2, 950000, "photon budget", "met", 4096, 2, "target met", 16};
   write_results_model(m, dir);
   const std::string html = report_html(dir);
   const std::string part = accuracy_statements(html);
@@ -586,31 +587,44 @@ TEST(ReportHtml, AGatheredGridsAccuracyIsExplainedByItsOwnGatherRounds) {
   EXPECT_EQ(met.find("stopped with"), std::string::npos) << met;
 }
 
+namespace {
+
+/// The words of a direct-rays-limit stop: `who` ("the rounds", "the gather rounds") and the
+/// grid's shadow rays per sky patch at the end, `samples`, at or above the rounds' limit.
+std::string direct_rays_limit_words(const std::string& who, int samples) {
+  return "those rays were at their limit, " + std::to_string(samples) + " per sky patch for this grid: " + who +
+         " raise them up to " + std::to_string(MaxDirectSamplesPerBin) +
+         " per sky patch, and keep the project's own <code>simulation.direct_samples_per_bin</code> where it is "
+         "higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " + std::to_string(samples) +
+         ", or ask for a looser target.";
+}
+
+}  // namespace
+
 TEST(ReportHtml, TheDirectRaysLimitNamesTheKeyToChange) {
   // The shadow rays were at the rounds' limit and the rounds stopped there: the sentence says
-  // so, with the limit and the project's own larger count the rounds keep (results.json does
-  // not say which it was, so the sentence never claims the rounds raised them to 256), and
-  // names direct_samples_per_bin (not the photon keys).
-  const std::string dir = temp_dir("accuracy_direct_limit");
-  ResultsModel m = results_model(dir);
-  using Acc = DaylightFactorSummary::AccuracyReached;
-  m.cases[0].grids[0].daylight_factor->accuracy = Acc{1.0, 1.3, 3, 4000000, "direct rays limit", "above target"};
-  write_results_model(m, dir);
-  const std::string html = report_html(dir);
-  const std::size_t at = html.find("data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
-  ASSERT_NE(at, std::string::npos);
-  const std::string item = html.substr(at, html.find("</li>", at) - at);
-  EXPECT_NE(item.find("<strong>Above the target.</strong> Why: the sensors still above the target are so by the "
-                      "noise of their direct light (the shadow rays toward the sky through the openings), and "
-                      "those rays were at their limit: the rounds raise them up to " +
-                      std::to_string(MaxDirectSamplesPerBin) +
-                      " per sky patch, and keep the project's own <code>simulation.direct_samples_per_bin</code> "
-                      "where it is higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
-                      std::to_string(MaxDirectSamplesPerBin) + " and above the project's present count"),
-            std::string::npos)
-      << item;
-  EXPECT_EQ(item.find("raised those rays"), std::string::npos) << item;
-  EXPECT_EQ(item.find("max_photons"), std::string::npos) << item;
+  // so with the grid's own count from results.json (the rounds' limit, or the project's own
+  // larger count the rounds keep), advises a count above it, and names direct_samples_per_bin
+  // (not the photon keys).
+  for (const int samples : {MaxDirectSamplesPerBin, 2 * MaxDirectSamplesPerBin}) {
+    const std::string dir = temp_dir("accuracy_direct_limit_" + std::to_string(samples));
+    ResultsModel m = results_model(dir);
+    using Acc = DaylightFactorSummary::AccuracyReached;
+    m.cases[0].grids[0].daylight_factor->accuracy =
+        Acc{1.0, 1.3, 3, 4000000, "direct rays limit", "above target", 0, 0, "", samples};
+    write_results_model(m, dir);
+    const std::string html = report_html(dir);
+    const std::size_t at = html.find("data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
+    ASSERT_NE(at, std::string::npos);
+    const std::string item = html.substr(at, html.find("</li>", at) - at);
+    EXPECT_NE(item.find("<strong>Above the target.</strong> Why: the sensors still above the target are so by the "
+                        "noise of their direct light (the shadow rays toward the sky through the openings), and " +
+                        direct_rays_limit_words("the rounds", samples)),
+              std::string::npos)
+        << item;
+    EXPECT_EQ(item.find("raised those rays"), std::string::npos) << item;
+    EXPECT_EQ(item.find("max_photons"), std::string::npos) << item;
+  }
 }
 
 TEST(ReportHtml, AGatheredGridsDirectRaysLimitNamesTheKeyToChange) {
@@ -620,19 +634,15 @@ TEST(ReportHtml, AGatheredGridsDirectRaysLimitNamesTheKeyToChange) {
   ResultsModel m = results_model(dir);
   using Acc = DaylightFactorSummary::AccuracyReached;
   m.cases[0].grids[1].daylight_factor->accuracy =
-      Acc{1.0, 1.4, 3, 4000000, "direct rays limit", "above target", 4096, 4, "direct rays limit"};
+      Acc{1.0, 1.4, 3, 4000000, "direct rays limit", "above target", 4096, 4, "direct rays limit",
+          MaxDirectSamplesPerBin};
   write_results_model(m, dir);
   const std::string html = report_html(dir);
   const std::string wall =
       accuracy_item(accuracy_statements(html), "data-part=\"sky\" data-case=\"base\" data-grid=\"east_wall\"");
   ASSERT_FALSE(wall.empty()) << html;
   EXPECT_NE(wall.find("estimated by final gather"), std::string::npos) << wall;
-  EXPECT_NE(wall.find("those rays were at their limit: the gather rounds raise them up to " +
-                      std::to_string(MaxDirectSamplesPerBin) +
-                      " per sky patch, and keep the project's own <code>simulation.direct_samples_per_bin</code> "
-                      "where it is higher. What to do: set <code>simulation.direct_samples_per_bin</code> above " +
-                      std::to_string(MaxDirectSamplesPerBin) + " and above the project's present count"),
-            std::string::npos)
+  EXPECT_NE(wall.find(direct_rays_limit_words("the gather rounds", MaxDirectSamplesPerBin)), std::string::npos)
       << wall;
   EXPECT_EQ(wall.find("raised those rays"), std::string::npos) << wall;
   EXPECT_EQ(wall.find("stopped with"), std::string::npos) << wall;
@@ -648,9 +658,9 @@ TEST(ReportHtml, AGatheredGridsPhotonPartStopNamesTheBudgetOrLimit) {
   ResultsModel m = results_model(dir);
   using Acc = DaylightFactorSummary::AccuracyReached;
   m.cases[0].grids[1].daylight_factor->accuracy =
-      Acc{1.0, 1.6, 5, 33500000, "photon budget", "above target", 16384, 7, "photon budget"};
+      Acc{1.0, 1.6, 5, 33500000, "photon budget", "above target", 16384, 7, "photon budget", 16};
   m.cases[1].grids[0].daylight_factor->accuracy =
-      Acc{1.0, 1.2, 8, 12000000, "photon round limit", "above target", 4096, 9, "photon round limit"};
+      Acc{1.0, 1.2, 8, 12000000, "photon round limit", "above target", 4096, 9, "photon round limit", 16};
   write_results_model(m, dir);
   const std::string html = report_html(dir);
   const std::string part = accuracy_statements(html);
@@ -702,12 +712,13 @@ TEST(ReportHtml, AccuracyOfTheSkyAndTheSunBinsInPlainWords) {
   const std::string dir = temp_dir("accuracy");
   ResultsModel m = results_model(dir);
   using Acc = DaylightFactorSummary::AccuracyReached;
-  m.cases[0].grids[0].daylight_factor->accuracy = Acc{1.0, 0.934, 3, 4105000, "not reachable by photons", "met"};
+  m.cases[0].grids[0].daylight_factor->accuracy =
+      Acc{1.0, 0.934, 3, 4105000, "not reachable by photons", "met", 0, 0, "", 16};
   m.cases[0].grids[0].sun_accuracy = SunAccuracyReached{1.0, 1.62, 11.4, 5, 33500000, "photon budget", "above target"};
   m.cases[0].grids[1].daylight_factor->accuracy =
-      Acc{1.0, 1.27, 3, 4105000, "not reachable by photons", "not reachable by photons"};
+      Acc{1.0, 1.27, 3, 4105000, "not reachable by photons", "not reachable by photons", 0, 0, "", 16};
   m.cases[0].grids[1].sun_accuracy = SunAccuracyReached{1.0, 0.8, 7.2, 5, 33500000, "photon budget", "met"};
-  m.cases[1].grids[0].daylight_factor->accuracy = Acc{1.0, 0.81, 2, 950000, "target met", "met"};
+  m.cases[1].grids[0].daylight_factor->accuracy = Acc{1.0, 0.81, 2, 950000, "target met", "met", 0, 0, "", 16};
   m.cases[1].grids[0].sun_accuracy = SunAccuracyReached{1.0, 0.76, 9.6, 3, 4410000, "target met", "met"};
   write_results_model(m, dir);
   const std::string html = report_html(dir);

@@ -122,12 +122,13 @@ path = sys.argv[1]
 model = json.load(open(path))
 base, variant = model["cases"][0]["grids"][0], model["cases"][1]["grids"][0]
 base["daylight_factor"]["accuracy"] = {"target_percent": 1.0, "reached_percent": 0.934, "rounds": 3,
-                                       "photons": 4105000, "stop_reason": "target met", "status": "met"}
+                                       "photons": 4105000, "stop_reason": "target met", "status": "met",
+                                       "direct_samples_per_bin": 16}
 base["sun_accuracy"] = {"target_percent": 1.0, "reached_percent": 1.62, "hourly_percent": 11.4, "rounds": 5,
                         "photons": 33500000, "stop_reason": "photon budget", "status": "above target"}
 variant["daylight_factor"]["accuracy"] = {"target_percent": 1.0, "reached_percent": 1.27, "rounds": 1,
                                           "photons": 950000, "stop_reason": "not reachable by photons",
-                                          "status": "not reachable by photons"}
+                                          "status": "not reachable by photons", "direct_samples_per_bin": 16}
 json.dump(model, open(path, "w"), indent=2)
 PY
 "$bin" report "$work/accuracy" --no-images -o "$work/accuracy.html" --quiet || fail "dayphoton report of the accuracy fixture failed"

@@ -86,7 +86,7 @@ ResultsModel full_model() {
   g.daylight_factor = DaylightFactorSummary{1.5, 1.25, 0.1, 3.3, 0.0667, {{2.0, 33.3}, {1.0, 66.7}}, 4.5, 9.25, 3, std::nullopt};
   g.daylight_factor->accuracy =
       DaylightFactorSummary::AccuracyReached{2.0, 2.4, 3, 4100000, "photon budget", "above target", 4096, 2,
-                                             "gather ray limit"};
+                                             "gather ray limit", 64};
   g.sun_accuracy = SunAccuracyReached{2.0, 1.75, 9.5, 2, 3200000, "target met", "met", 1024, 1, "target met"};
   AnnualSummary a;
   a.sensors = 3;
@@ -188,6 +188,9 @@ TEST(ResultsModel, RoundTripsEveryField) {
   changed.cases[1].grids[0].daylight_factor->accuracy->gather_rays = 1024;
   EXPECT_FALSE(changed == m);
   changed = back;
+  changed.cases[1].grids[0].daylight_factor->accuracy->direct_samples_per_bin = 256;
+  EXPECT_FALSE(changed == m);
+  changed = back;
   changed.cases[1].grids[0].sun_accuracy->hourly_percent = 9.4;
   EXPECT_FALSE(changed == m);
   changed = back;
@@ -220,13 +223,20 @@ TEST(ResultsModel, BadFieldsAreErrorsNamingTheKey) {
   EXPECT_NE(error_of(std::regex_replace(text, std::regex(",\\s*\"weather_file\": \"w.epw\""), ""))
                 .find("'weather_file' is missing"),
             std::string::npos);
-  const std::string version = error_of(std::regex_replace(text, std::regex("\"schema_version\": 3"), "\"schema_version\": 2"));
-  EXPECT_NE(version.find("schema version 2"), std::string::npos) << version;
-  const std::string version4 = error_of(std::regex_replace(text, std::regex("\"schema_version\": 3"), "\"schema_version\": 4"));
-  EXPECT_NE(version4.find("schema version 4"), std::string::npos) << version4;
+  const std::string version = error_of(std::regex_replace(text, std::regex("\"schema_version\": 4"), "\"schema_version\": 3"));
+  EXPECT_NE(version.find("schema version 3"), std::string::npos) << version;
+  const std::string version5 = error_of(std::regex_replace(text, std::regex("\"schema_version\": 4"), "\"schema_version\": 5"));
+  EXPECT_NE(version5.find("schema version 5"), std::string::npos) << version5;
   // The accuracy statuses are known words, and every field of the sun's accuracy is required.
   EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"status\": \"above target\""), "\"status\": \"above\""))
                 .find("daylight_factor.accuracy.status' is not met, above target or not reachable by photons"),
+            std::string::npos);
+  // The sky's shadow-ray count is required (schema 4) and at least 1.
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"direct_samples_per_bin\": 64,\\s*"), ""))
+                .find("'cases[tinted].grids[workplane].daylight_factor.accuracy.direct_samples_per_bin' is missing"),
+            std::string::npos);
+  EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"direct_samples_per_bin\": 64"), "\"direct_samples_per_bin\": 0"))
+                .find("daylight_factor.accuracy.direct_samples_per_bin' is not at least 1"),
             std::string::npos);
   EXPECT_NE(error_of(std::regex_replace(text, std::regex("\"hourly_percent\": 9.5,\\s*"), ""))
                 .find("'cases[tinted].grids[workplane].sun_accuracy.hourly_percent' is missing"),

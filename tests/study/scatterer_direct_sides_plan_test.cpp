@@ -8,6 +8,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/simulation_plan.h"
+#include "side_lit_room.h"
 
 namespace dayphoton::study {
 namespace {
@@ -15,24 +16,9 @@ namespace {
 // A side-lit room (window head at 2.4 m) with an exterior overhang at 2.5 m (its parts
 // outdoor scatterers); `grid` its sensors.
 std::string overhang_room_yaml(const std::string& grid) {
-  return "site: {latitude: 51.5, longitude: -0.12, time_zone: 0}\n"
-         "study: daylight_factor\n"
-         "materials:\n"
-         "  walls: {type: lambertian, reflectance: 0.5}\n"
-         "  glass: {type: glass, transmittance: 0.6}\n"
-         "geometry:\n"
-         "  rooms:\n"
-         "    - name: office\n"
-         "      size: [4, 5, 3]\n"
-         "      materials: {floor: walls, ceiling: walls, walls: walls}\n"
-         "      windows: [{name: w, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]\n"
-         "  systems:\n"
-         "    - {type: overhang, name: overhang, window: w, height: 2.5, depth: 0.6, thickness: 0.1, material: walls}\n"
-         "sensors:\n"
-         "  grids:\n"
-         "    - " + grid + "\n"
-         "simulation:\n"
-         "  photons_per_bin: 1000\n";
+  return test::side_lit_room_yaml(
+      "[4, 5, 3]", "3", 1000, grid,
+      "{type: overhang, name: overhang, window: w, height: 2.5, depth: 0.6, thickness: 0.1, material: walls}");
 }
 
 struct Case {

@@ -24,8 +24,9 @@
 
 namespace dayphoton::study {
 
-/// Version of results.json's layout; raised when a field changes meaning or is removed.
-constexpr int ResultsSchemaVersion = 3;
+/// Version of results.json's layout; raised when a field changes meaning, is removed, or a
+/// required one is added.
+constexpr int ResultsSchemaVersion = 4;
 /// The file's name in the output folder.
 constexpr const char* ResultsFileName = "results.json";
 
@@ -95,6 +96,10 @@ struct DaylightFactorSummary {
     int gather_rays = 0;
     std::size_t gather_rounds = 0;
     std::string gather_stop_reason{};
+    /// The shadow rays per sky patch (direct samples per bin) of the grid's final estimate: the
+    /// project's direct_samples_per_bin unless the rounds raised it (up to
+    /// MaxDirectSamplesPerBin, plan_policy.h), which says where a "direct rays limit" stopped.
+    int direct_samples_per_bin = 0;
 
     bool operator==(const AccuracyReached& o) const;
   };
