@@ -17,11 +17,15 @@
 //     outline drawn 0.3 m past the walls of the reference office: 4-6.5 % at the sensors
 //     0.5 m from them). Probes OutlineProbeInset_m inside the outline, every
 //     OutlineProbeSpacing_m along it, are tested as sensors (engine/sensor_placement.h);
-//   - geometry outside the ports that is not an outdoor scatterer (a polygon, box or mesh
-//     without `outdoor: true`, a room's facade, imported context) and takes at least
+//   - geometry outside the ports that is not an outdoor scatterer and takes at least
 //     ExteriorViewWarnFraction of a port's outward view: only its shadow is traced, not the
 //     light it reflects toward the window (a 0.4 m window reveal of reflectance 0.8 on the
-//     reference office: DF 12.7 % low). Cosine-distributed rays from the port's outside.
+//     reference office: DF 12.7 % low). Cosine-distributed rays from the port's outside; the
+//     first surface hit is judged by its origin (Surface::origin): every input element is
+//     named (a polygon, box or mesh without `outdoor: true`, a RADIANCE primitive whose
+//     modifier is not listed under `outdoor`, a room of the generator seen from another's
+//     port, a Honeybee face), located where it is written, with what makes its light traced;
+//     only a daylight system's parts are not (their `port` says how their light is traced).
 #pragma once
 
 #include <cstddef>
