@@ -301,6 +301,35 @@ TEST(PlacementCheck, AnotherRoomOfTheGeneratorSeenFromAPortIsNamed) {
   EXPECT_NE(w.find("The room generator's walls, floor and ceiling only shade from outside"), std::string::npos) << w;
 }
 
+TEST(PlacementCheck, ALightPipesDomeFacetsAreOneOpening) {
+  // The roof around a dome collector 1.5 m up: the lowest ring's facets see it, the upper
+  // ones hardly; the share is of the whole dome's view, weighted by the facets' areas, and
+  // the warning names the dome's first facet and counts the others.
+  const Outcome o = check_text(Head + R"(  mirror: {type: mirror, reflectance: 0.95}
+geometry:
+  rooms:
+    - name: core
+      size: [4, 6, 2.7]
+      materials: {floor: walls, ceiling: walls, walls: walls}
+  systems:
+    - {type: light_pipe, name: pipe, room: core, x: 2, y: 3, diameter: 0.35, length: 1.5, sides: 8,
+       collector: dome, dome_rings: 2, tube_material: mirror, diffuser_material: glazing,
+       collector_material: glazing}
+)" + R"(sensors:
+  grids:
+    - {name: workplane, room: core, height: 0.8, spacing: 1, inset: 0.5}
+)");
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  ASSERT_EQ(o.check.warnings.size(), 1u);
+  const std::string w = warning_text(o.check.warnings[0]);
+  EXPECT_EQ(w.rfind("9:7: 'core.ceiling.1' lies outside port 'pipe.collector.1.1' and the 15 others written with it "
+                    "and fills ",
+                    0),
+            0u)
+      << w;
+  EXPECT_NE(w.find("of their outward view (cosine-weighted, by area)"), std::string::npos) << w;
+}
+
 const std::string WingRad = R"(void plastic facade
 0
 0

@@ -18,9 +18,11 @@
 //     0.5 m from them). Probes OutlineProbeInset_m inside the outline, every
 //     OutlineProbeSpacing_m along it, are tested as sensors (engine/sensor_placement.h);
 //   - geometry outside the ports that is not an outdoor scatterer and takes at least
-//     ExteriorViewWarnFraction of a port's outward view: only its shadow is traced, not the
-//     light it reflects toward the window (a 0.4 m window reveal of reflectance 0.8 on the
-//     reference office: DF 12.7 % low). Cosine-distributed rays from the port's outside; the
+//     ExteriorViewWarnFraction of an opening's outward view (an opening: the ports written as
+//     one element, a window or a light pipe's collector of dome facets, their views weighted
+//     by area): only its shadow is traced, not the light it reflects toward the window (a
+//     0.4 m window reveal of reflectance 0.8 on the reference office: DF 12.7 % low).
+//     Cosine-distributed rays from each port's outside; the
 //     first surface hit is judged by its origin (Surface::origin): every input element is
 //     named (a polygon, box or mesh without `outdoor: true`, a RADIANCE primitive whose
 //     modifier is not listed under `outdoor`, a room of the generator seen from another's
@@ -49,7 +51,7 @@ constexpr std::size_t PlacementExamples = 3;
 constexpr double OutlineProbeInset_m = 0.02;
 constexpr double OutlineProbeSpacing_m = 0.1;
 /// Exterior geometry: rays per port (points x directions, both square lattices) and the share
-/// of a port's cosine-weighted outward view above which an element that only shades is named.
+/// of an opening's cosine-weighted outward view above which an element that only shades is named.
 constexpr int ExteriorViewPoints = 16;
 constexpr int ExteriorViewDirections = 256;
 constexpr double ExteriorViewWarnFraction = 0.01;
