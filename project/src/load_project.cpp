@@ -616,7 +616,7 @@ class Loader {
   }
 
   /// A RADIANCE scene entry: its files (each must exist; read when the scene is built),
-  /// `ports` (auto or modifier names), `unsupported`.
+  /// `ports` (auto or modifier names), `outdoor` (modifier names), `unsupported`.
   RadianceSceneSpec read_radiance(const YamlNode& node) {
     RadianceSceneSpec spec;
     spec.location = node.location;
@@ -641,6 +641,7 @@ class Loader {
         r.take("ports");
       }
     }
+    spec.outdoor_modifiers = read_names(r, "outdoor");
     std::string unsupported = "error";
     if (r.has("unsupported")) r.read_choice("unsupported", unsupported);
     spec.skip_unsupported = unsupported == "skip";

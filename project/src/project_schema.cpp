@@ -200,6 +200,7 @@ std::vector<SectionSchema> build_schema() {
   s.push_back({"radiance scene", "RADIANCE scene description files (.rad) read as oconv reads them; metres, +Y north (docs/radiance-import.md)", {
       P("files", T::NameList, "scene files read in order (a modifier must be defined before it is used), relative to the project file; each must exist").required(),
       P("ports", T::Special, "auto: the surfaces of transmitting materials (glass, dielectric, trans, ...) with exactly one side seeing the sky become photon ports; or a list of modifier names whose surfaces are ports (facing auto)").def("auto"),
+      P("outdoor", T::NameList, "modifier names whose surfaces lie outside the building and are outdoor scatterers: sky and sun photons also land on them, and the light they reflect or transmit toward the ports is traced (as `outdoor: true` on a polygon); the others only shade the ports"),
       P("unsupported", T::Choice, "modifiers and primitives dayphoton does not model (patterns, BSDFs, meshes, ...): an error, or left out with a warning").choices({"error", "skip"}).def("error"),
   }});
   s.push_back({"room", "a box-shaped room, surfaces facing inward", {

@@ -74,16 +74,27 @@ void generate_radiance(const RadianceSceneSpec& spec, std::size_t project_materi
     index[i] = static_cast<int>(scene_materials.size()) - 1;
   }
 
-  for (const auto& name : spec.port_modifiers)
-    if (std::find(scene.modifier_names.begin(), scene.modifier_names.end(), name.value) ==
-        scene.modifier_names.end()) {
-      const std::string hint = closest_match(name.value, scene.modifier_names);
-      report(diag, name.location,
-             "ports: modifier '" + name.value + "' is not defined in the RADIANCE scene's files" +
-                 (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)"));
-    }
-  auto listed = [&](const RadianceSurface& s) {
-    for (const auto& name : spec.port_modifiers)
+  // A `ports` or `outdoor` name must be a modifier of the files, and not in both lists.
+  auto check_listed = [&](const std::vector<Located<std::string>>& names, const char* key) {
+    for (const auto& name : names)
+      if (std::find(scene.modifier_names.begin(), scene.modifier_names.end(), name.value) ==
+          scene.modifier_names.end()) {
+        const std::string hint = closest_match(name.value, scene.modifier_names);
+        report(diag, name.location,
+               std::string(key) + ": modifier '" + name.value + "' is not defined in the RADIANCE scene's files" +
+                   (hint.empty() ? std::string() : " (did you mean '" + hint + "'?)"));
+      }
+  };
+  check_listed(spec.port_modifiers, "ports");
+  check_listed(spec.outdoor_modifiers, "outdoor");
+  for (const auto& name : spec.outdoor_modifiers)
+    for (const auto& port : spec.port_modifiers)
+      if (name.value == port.value)
+        report(diag, name.location,
+               "outdoor: modifier '" + name.value + "' is also listed under 'ports' (at " + port.location.to_string() +
+                   "): light enters the room through a port; an outdoor surface sends light toward the ports");
+  auto listed = [](const std::vector<Located<std::string>>& names, const RadianceSurface& s) {
+    for (const auto& name : names)
       if (name.value == s.modifier || name.value == s.material_modifier) return true;
     return false;
   };
@@ -96,9 +107,11 @@ void generate_radiance(const RadianceSceneSpec& spec, std::size_t project_materi
     s.location = r.location;
     s.solid_face = r.solid_face;
     const MaterialSpec& m = scene_materials[static_cast<std::size_t>(s.material)];
-    if (spec.ports_auto) {
+    if (listed(spec.outdoor_modifiers, r)) {
+      s.outdoor_scatterer = true;
+    } else if (spec.ports_auto) {
       s.port_if_outdoors = transmits(m);
-    } else if (listed(r)) {
+    } else if (listed(spec.port_modifiers, r)) {
       s.port = true;
       s.facing = PortFacing::Auto;
       s.solid_face = false;

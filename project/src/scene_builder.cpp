@@ -187,19 +187,31 @@ SceneDescription build_scene_description(const Project& project) {
                            "'; mount it inside (side: interior) or model it in that room");
   }
   std::vector<Surface> surfaces;
+  // Each generator's surfaces are marked with their origin once they are all made.
+  std::size_t marked = 0;
+  auto mark = [&](SurfaceOrigin origin) {
+    for (; marked < surfaces.size(); ++marked) surfaces[marked].origin = origin;
+  };
   static const detail::RoomCutouts unchanged;
   for (const RoomSpec& room : g.rooms) {
     const auto cut = systems.rooms.find(room.name);
     detail::generate_room(room, cut == systems.rooms.end() ? unchanged : cut->second, materials,
                           diag, surfaces);
   }
+  mark(SurfaceOrigin::Room);
   for (const PolygonSpec& poly : g.polygons) generate_polygon(poly, materials, surfaces);
+  mark(SurfaceOrigin::Polygon);
   for (const BoxSpec& box : g.boxes) detail::generate_box(box, materials, diag, surfaces);
+  mark(SurfaceOrigin::Box);
   for (const MeshSpec& mesh : g.meshes) detail::generate_mesh(mesh, materials, diag, surfaces);
+  mark(SurfaceOrigin::Mesh);
   for (const RadianceSceneSpec& rad : g.radiance)
     detail::generate_radiance(rad, project.materials.size(), scene.materials, diag, surfaces);
+  mark(SurfaceOrigin::Radiance);
   if (g.honeybee) generate_honeybee(*g.honeybee, materials, surfaces);
+  mark(SurfaceOrigin::Honeybee);
   surfaces.insert(surfaces.end(), systems.surfaces.begin(), systems.surfaces.end());
+  mark(SurfaceOrigin::System);
   for (const Surface& s : surfaces) detail::validate_surface(s, diag);
   scene.surfaces = std::move(surfaces);
 

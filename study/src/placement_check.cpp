@@ -145,49 +145,60 @@ bool sends_light(const MaterialSpec& m) {
   }
 }
 
-bool same_place(const SourceLocation& a, const SourceLocation& b) {
-  return a.file == b.file && a.line == b.line && a.column == b.column;
+/// What makes the light of `s` (an outdoor surface that only shades) traced, by its origin;
+/// empty for a daylight system's part, whose `port` setting says how its light is traced.
+std::string tracing_remedy(const Surface& s, const SceneDescription& description) {
+  switch (s.origin) {
+    case SurfaceOrigin::Polygon:
+    case SurfaceOrigin::Box:
+    case SurfaceOrigin::Mesh: return "To trace that light, give the polygon, box or mesh 'outdoor: true' (an outdoor scatterer)";
+    case SurfaceOrigin::Radiance: {
+      const std::string& material = description.materials[static_cast<std::size_t>(s.material)].name;
+      const bool renamed = material.find('@') != std::string::npos;  // radiance_generator.cpp
+      return "To trace that light, list its modifier" + (renamed ? std::string() : " '" + material + "'") +
+             " under the RADIANCE scene's 'outdoor' (its surfaces become outdoor scatterers)";
+    }
+    case SurfaceOrigin::Room:
+      return "The room generator's walls, floor and ceiling only shade from outside: to trace that light, draw "
+             "that facade as a polygon or box with 'outdoor: true' just outside them (the wall's thickness)";
+    case SurfaceOrigin::Honeybee:
+      return "A Honeybee face, aperture, door or indoor shade only shades from outside: to trace that light, draw "
+             "that facade as an outdoor shade of the model, or as a polygon with 'outdoor: true', just outside it";
+    case SurfaceOrigin::Other: return "To trace that light, make it an outdoor scatterer";
+    case SurfaceOrigin::System: return "";
+  }
+  return "";
 }
 
 /// The warning for geometry outside the ports that only shades them (header comment).
-void check_exterior_geometry(const engine::Scene& scene, const project::Project& proj,
-                             std::vector<Diagnostic>& warnings) {
+void check_exterior_geometry(const engine::Scene& scene, std::vector<Diagnostic>& warnings) {
   const SceneDescription& description = scene.description();
   const engine::PortSet& ports = scene.ports();
-  // One entry per element (a box's faces share its location; an OBJ face names its mesh
-  // before ':'): the largest share of a port's outward view, that port, its first surface.
-  struct Seen {
-    double fraction = 0;
-    std::size_t port = 0;
-    int surface = -1;
-  };
-  std::map<std::string, Seen> seen;
-  // Only the elements that take `outdoor` (polygons, boxes, meshes) are named: a daylight
-  // system's `port` setting says how its light is traced, and a room's own envelope seen from
-  // outside (a roof under a light pipe's collector) is the documented limit of
-  // daylight-systems.md, "Ports".
-  const project::Geometry& g = proj.geometry;
-  auto may_be_outdoor = [&](const Surface& s) {
+  // An element: a box's or a room's faces and a RADIANCE primitive's or an HBJSON object's
+  // triangles share its location; an OBJ face names its mesh before ':'.
+  auto element_of = [](const Surface& s) {
     const std::size_t colon = s.name.find(':');
-    if (colon != std::string::npos)
-      return std::any_of(g.meshes.begin(), g.meshes.end(),
-                         [&](const project::MeshSpec& m) { return m.name == s.name.substr(0, colon); });
-    return std::any_of(g.polygons.begin(), g.polygons.end(),
-                       [&](const project::PolygonSpec& p) { return same_place(p.location, s.location); }) ||
-           std::any_of(g.boxes.begin(), g.boxes.end(),
-                       [&](const project::BoxSpec& b) { return same_place(b.location, s.location); });
+    if (s.origin == SurfaceOrigin::Mesh && colon != std::string::npos) return "mesh " + s.name.substr(0, colon);
+    return s.location.known() ? s.location.to_string() : "surface " + s.name;
   };
-  auto element_of = [&](const Surface& s) {
-    const std::size_t colon = s.name.find(':');
-    return colon == std::string::npos ? s.location.to_string() : s.name.substr(0, colon);
-  };
+  // An opening: the ports written as one element (a window; a light pipe's collector, whose
+  // dome facets are ports of their own), its view the area-weighted mean of theirs.
+  std::map<std::string, std::vector<std::size_t>> openings;
+  for (std::size_t k = 0; k < ports.size(); ++k)
+    openings[ports[k].location.known() ? ports[k].location.to_string() : "port " + ports[k].name].push_back(k);
+
   constexpr int Strata = 4, Directions = 16;
   static_assert(Strata * Strata == ExteriorViewPoints && Directions * Directions == ExteriorViewDirections,
                 "square lattices of points and directions");
-  for (std::size_t k = 0; k < ports.size(); ++k) {
-    const engine::Port& port = ports[k];
-    const Vec3 outward = port.normal * -1.0;
-    std::map<std::string, std::pair<int, int>> hits;  // element -> (rays, first surface)
+  const double rays = double(ExteriorViewPoints) * ExteriorViewDirections;
+  struct Share {
+    double fraction = 0;  ///< of the opening's outward view
+    int surface = -1;     ///< the element's first surface seen
+  };
+  // Per port: element -> its share of the port's outward view.
+  auto port_view = [&](std::size_t k) {
+    std::map<std::string, Share> view;
+    const Vec3 outward = ports[k].normal * -1.0;
     for (int i = 0; i < Strata; ++i)
       for (int j = 0; j < Strata; ++j) {
         const Vec3 p = ports.sample(k, (i + 0.5) / Strata, (j + 0.5) / Strata).position;
@@ -197,31 +208,50 @@ void check_exterior_geometry(const engine::Scene& scene, const project::Project&
             const std::optional<engine::Hit> hit = scene.intersect(engine::Ray{scene.offset_ray_origin(p, outward, d), d});
             if (!hit || hit->port >= 0 || hit->scatterer >= 0) continue;
             const Surface& s = description.surfaces[static_cast<std::size_t>(hit->surface)];
+            if (s.origin == SurfaceOrigin::System) continue;
             if (!sends_light(description.materials[static_cast<std::size_t>(s.material)])) continue;
-            if (!may_be_outdoor(s)) continue;
-            auto [it, fresh] = hits.try_emplace(element_of(s), 0, hit->surface);
-            ++it->second.first;
-            if (!fresh && hit->surface < it->second.second) it->second.second = hit->surface;
+            Share& e = view[element_of(s)];
+            e.fraction += 1 / rays;
+            if (e.surface < 0 || hit->surface < e.surface) e.surface = hit->surface;
           }
       }
-    const double rays = double(ExteriorViewPoints) * ExteriorViewDirections;
-    for (const auto& [element, h] : hits) {
+    return view;
+  };
+  // Per element: the largest share of an opening's view, that opening's first port.
+  struct Seen {
+    Share share;
+    std::size_t port = 0, ports = 1;
+  };
+  std::map<std::string, Seen> seen;
+  for (const auto& [opening, members] : openings) {
+    double area_m2 = 0;
+    for (std::size_t k : members) area_m2 += ports[k].area_m2;
+    std::map<std::string, Share> view;
+    for (std::size_t k : members)
+      for (const auto& [element, share] : port_view(k)) {
+        Share& e = view[element];
+        e.fraction += share.fraction * ports[k].area_m2 / area_m2;
+        if (e.surface < 0 || share.surface < e.surface) e.surface = share.surface;
+      }
+    for (const auto& [element, share] : view) {
       Seen& e = seen[element];
-      if (h.first / rays > e.fraction) e = {h.first / rays, k, h.second};
+      if (share.fraction > e.share.fraction) e = {share, members.front(), members.size()};
     }
   }
   std::vector<Seen> named;
   for (const auto& [element, e] : seen)
-    if (e.fraction >= ExteriorViewWarnFraction) named.push_back(e);
-  std::sort(named.begin(), named.end(), [](const Seen& a, const Seen& b) { return a.surface < b.surface; });
+    if (e.share.fraction >= ExteriorViewWarnFraction) named.push_back(e);
+  std::sort(named.begin(), named.end(), [](const Seen& a, const Seen& b) { return a.share.surface < b.share.surface; });
   for (const Seen& e : named) {
-    const Surface& s = description.surfaces[static_cast<std::size_t>(e.surface)];
+    const Surface& s = description.surfaces[static_cast<std::size_t>(e.share.surface)];
+    const std::string port = "port '" + ports[e.port].name + "'" +
+                             (e.ports > 1 ? " and the " + std::to_string(e.ports - 1) + " others written with it" : "");
     warnings.push_back(warning_at(
-        s.location, "'" + s.name + "' lies outside port '" + ports[e.port].name + "' and fills " +
-                        percent(e.fraction) + " of its outward view (cosine-weighted): its shadow is traced, but "
-                        "not the light it reflects or transmits toward the port, so the sensors read low (a 0.4 m "
-                        "window reveal of reflectance 0.8: 13 % on the reference office). To trace that light, "
-                        "give the polygon, box or mesh 'outdoor: true' (an outdoor scatterer)"));
+        s.location, "'" + s.name + "' lies outside " + port + " and fills " + percent(e.share.fraction) + " of " +
+                        (e.ports > 1 ? "their" : "its") + " outward view (cosine-weighted" +
+                        (e.ports > 1 ? ", by area" : "") + "): its shadow is traced, but not the light it reflects "
+                        "or transmits toward the port, so the sensors read low (a 0.4 m window reveal of reflectance "
+                        "0.8: 13 % on the reference office). " + tracing_remedy(s, description)));
   }
 }
 
@@ -342,7 +372,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
     check_near_cuts(scene, grid, north_deg, out.warnings);
     out.sets.push_back(std::move(set));
   }
-  check_exterior_geometry(scene, proj, out.warnings);
+  check_exterior_geometry(scene, out.warnings);
   if (grids.empty())
     report(diag, project, "the project has no sensors: add a grid or a point set under 'sensors'");
   diag.throw_if_errors();

@@ -93,6 +93,45 @@ TEST(RadianceImport, AProjectMaterialReplacesTheImportedOne) {
   EXPECT_EQ(scene.warnings[0].location.file, Data + "/materials.rad");
 }
 
+TEST(RadianceImport, OutdoorModifiersMakeOutdoorScatterers) {
+  // `outdoor` takes modifiers as `ports` does; their surfaces are outdoor scatterers (their
+  // light traced, placement_check.h names the others outside a port) and never ports, even
+  // of glass under `ports: auto`. Every imported surface says where it comes from.
+  const Project p = load_project_from_string(
+      project_text("    - files: [materials.rad, office.rad]\n      outdoor: [wall_mat, glass_mat]\n"), ProjectPath);
+  ASSERT_EQ(p.geometry.radiance[0].outdoor_modifiers.size(), 2u);
+  EXPECT_EQ(p.geometry.radiance[0].outdoor_modifiers[1].location.line, 6);
+  const SceneDescription scene = build_scene_description(p);
+  for (const Surface& s : scene.surfaces) {
+    const std::string& material = scene.materials[static_cast<std::size_t>(s.material)].name;
+    EXPECT_EQ(s.outdoor_scatterer, material == "wall_mat" || material == "glass_mat") << s.name;
+    EXPECT_FALSE(s.port || s.port_if_outdoors) << s.name;
+    EXPECT_EQ(s.origin, SurfaceOrigin::Radiance) << s.name;
+  }
+  EXPECT_TRUE(surface_named(scene, "wall_north").outdoor_scatterer);
+  EXPECT_FALSE(surface_named(scene, "floor").outdoor_scatterer);
+}
+
+TEST(RadianceImport, OutdoorErrorsAreLocated) {
+  const Project misspelt = load_project_from_string(
+      project_text("    - files: [materials.rad, office.rad]\n      outdoor: [wal_mat]\n"), ProjectPath);
+  EXPECT_EQ(test::located_errors([&] { build_scene_description(misspelt); }),
+            std::vector<std::string>{
+                "6:17: outdoor: modifier 'wal_mat' is not defined in the RADIANCE scene's files (did you mean "
+                "'wall_mat'?)"});
+  const Project both = load_project_from_string(
+      project_text("    - files: [materials.rad, office.rad]\n      ports: [glass_mat]\n      outdoor: [glass_mat]\n"),
+      ProjectPath);
+  EXPECT_EQ(test::located_errors([&] { build_scene_description(both); }),
+            std::vector<std::string>{"7:17: outdoor: modifier 'glass_mat' is also listed under 'ports' (at " +
+                                     ProjectPath + ":6:15): light enters the room through a port; an outdoor "
+                                     "surface sends light toward the ports"});
+  EXPECT_EQ(test::located_errors([&] {
+              load_project_from_string(project_text("    - files: [office.rad]\n      outdoor: []\n"), ProjectPath);
+            }),
+            std::vector<std::string>{"6:16: expected a list of one or more names for 'outdoor', got an empty list"});
+}
+
 TEST(RadianceImport, YamlSideErrorsAreLocated) {
   EXPECT_EQ(test::located_errors([&] {
               load_project_from_string(project_text("    - files: [materials.rad, offfice.rad]\n"), ProjectPath);

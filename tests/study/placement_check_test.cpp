@@ -4,6 +4,7 @@
 // instead. `check` (app/model_summary.cpp) and `run` (study_runner.cpp) call the same check.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/placement_check.h"
+#include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
@@ -295,6 +297,148 @@ TEST(PlacementCheck, ABlackBoxOutsideIsNotNamed) {
   const Outcome o = check_text(text);
   ASSERT_TRUE(o.errors.empty()) << o.errors[0];
   EXPECT_TRUE(o.check.warnings.empty()) << warning_text(o.check.warnings[0]);
+}
+
+// ---- every origin of outdoor geometry: rooms, RADIANCE primitives, Honeybee objects -----------
+//
+// A facade across a 6 m courtyard, 14 m wide and 9 m high (x -4 .. 10, y -6, z 0 .. 9), fills
+// about a third of the south window's outward view, whatever made it.
+
+const std::string Sensors = R"(sensors:
+  grids:
+    - {name: workplane, room: office, height: 0.8, spacing: 1, inset: 0.5}
+)";
+
+std::string written(const std::string& name, const std::string& text) {
+  const std::string path = (test::process_temp_dir() / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(PlacementCheck, AnotherRoomOfTheGeneratorSeenFromAPortIsNamed) {
+  // The wing's walls and roof are the room generator's: their outside only shades. The
+  // office's own walls, coplanar with its window, are never in its outward view.
+  const Outcome o = check_text(Head + Office + R"(    - name: wing
+      origin: [-4, -10, 0]
+      size: [14, 4, 9]
+      materials: {floor: walls, ceiling: walls, walls: walls}
+)" + Sensors);
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  ASSERT_EQ(o.check.warnings.size(), 1u);
+  const std::string w = warning_text(o.check.warnings[0]);
+  EXPECT_EQ(w.rfind("13:7: 'wing.", 0), 0u) << w;
+  EXPECT_NE(w.find("lies outside port 'office.south'"), std::string::npos) << w;
+  EXPECT_NE(w.find("The room generator's walls, floor and ceiling only shade from outside"), std::string::npos) << w;
+}
+
+TEST(PlacementCheck, ALightPipesDomeFacetsAreOneOpening) {
+  // The roof around a dome collector 1.5 m up: the lowest ring's facets see it, the upper
+  // ones hardly; the share is of the whole dome's view, weighted by the facets' areas, and
+  // the warning names the dome's first facet and counts the others.
+  const Outcome o = check_text(Head + R"(  mirror: {type: mirror, reflectance: 0.95}
+geometry:
+  rooms:
+    - name: core
+      size: [4, 6, 2.7]
+      materials: {floor: walls, ceiling: walls, walls: walls}
+  systems:
+    - {type: light_pipe, name: pipe, room: core, x: 2, y: 3, diameter: 0.35, length: 1.5, sides: 8,
+       collector: dome, dome_rings: 2, tube_material: mirror, diffuser_material: glazing,
+       collector_material: glazing}
+)" + R"(sensors:
+  grids:
+    - {name: workplane, room: core, height: 0.8, spacing: 1, inset: 0.5}
+)");
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  ASSERT_EQ(o.check.warnings.size(), 1u);
+  const std::string w = warning_text(o.check.warnings[0]);
+  EXPECT_EQ(w.rfind("9:7: 'core.ceiling.1' lies outside port 'pipe.collector.1.1' and the 15 others written with it "
+                    "and fills ",
+                    0),
+            0u)
+      << w;
+  EXPECT_NE(w.find("of their outward view (cosine-weighted, by area)"), std::string::npos) << w;
+}
+
+const std::string WingRad = R"(void plastic facade
+0
+0
+5 0.5 0.5 0.5 0 0
+
+facade polygon wing.north
+0
+0
+12  -4 -6 0   10 -6 0   10 -6 9   -4 -6 9
+)";
+
+TEST(PlacementCheck, ARadiancePrimitiveSeenFromAPortIsNamedUnlessOutdoor) {
+  const std::string rad = written("wing.rad", WingRad);
+  const std::string entry = "  radiance:\n    - files: [" + rad + "]\n";
+  const Outcome shading = check_text(Head + Office + entry + Sensors);
+  ASSERT_TRUE(shading.errors.empty()) << shading.errors[0];
+  ASSERT_EQ(shading.check.warnings.size(), 1u);
+  const Diagnostic& w = shading.check.warnings[0];
+  EXPECT_EQ(w.location.file, rad);
+  EXPECT_EQ(w.location.line, 6);  // the polygon's line in wing.rad
+  EXPECT_EQ(w.message.rfind("'wing.north' lies outside port 'office.south' and fills ", 0), 0u) << w.message;
+  EXPECT_NE(w.message.find("list its modifier 'facade' under the RADIANCE scene's 'outdoor'"), std::string::npos)
+      << w.message;
+
+  const Outcome traced = check_text(Head + Office + entry + "      outdoor: [facade]\n" + Sensors);
+  ASSERT_TRUE(traced.errors.empty()) << traced.errors[0];
+  EXPECT_TRUE(traced.check.warnings.empty()) << warning_text(traced.check.warnings[0]);
+}
+
+std::string hb_face(const std::string& id, const std::string& points, const std::string& extra = "") {
+  return R"({"type": "Face", "identifier": ")" + id + R"(", "face_type": "Wall", "boundary_condition": )"
+         R"({"type": "Outdoors"}, "geometry": {"type": "Face3D", "boundary": )" + points + "}" + extra + "}";
+}
+
+/// A Honeybee room (the office's box, faces outward, a 4 x 1.5 m south window) and, across
+/// the courtyard, the facade as an orphaned face (`shade` false) or a detached orphaned shade.
+std::string hb_model(bool shade) {
+  const std::string window =
+      R"(, "apertures": [{"type": "Aperture", "identifier": "window", "boundary_condition": {"type": "Outdoors"}, )"
+      R"("geometry": {"type": "Face3D", "boundary": [[1, 0, 0.9], [5, 0, 0.9], [5, 0, 2.4], [1, 0, 2.4]]}}])";
+  const std::string faces =
+      hb_face("south", "[[0, 0, 0], [6, 0, 0], [6, 0, 3], [0, 0, 3]]", window) + ", " +
+      hb_face("north", "[[6, 8, 0], [0, 8, 0], [0, 8, 3], [6, 8, 3]]") + ", " +
+      hb_face("west", "[[0, 8, 0], [0, 0, 0], [0, 0, 3], [0, 8, 3]]") + ", " +
+      hb_face("east", "[[6, 0, 0], [6, 8, 0], [6, 8, 3], [6, 0, 3]]") + ", " +
+      hb_face("floor", "[[0, 0, 0], [0, 8, 0], [6, 8, 0], [6, 0, 0]]") + ", " +
+      hb_face("roof", "[[0, 0, 3], [6, 0, 3], [6, 8, 3], [0, 8, 3]]");
+  const std::string facade_points = "[[-4, -6, 0], [10, -6, 0], [10, -6, 9], [-4, -6, 9]]";
+  const std::string facade =
+      shade ? R"("orphaned_shades": [{"type": "Shade", "identifier": "facade", "is_detached": true, )"
+              R"("geometry": {"type": "Face3D", "boundary": )" + facade_points + "}}]"
+            : R"("orphaned_faces": [)" + hb_face("facade", facade_points) + "]";
+  return R"({"type": "Model", "identifier": "courtyard", "units": "Meters", "rooms": [{"type": "Room", )"
+         R"("identifier": "office", "faces": [)" + faces + "]}],\n" + facade + "}";
+}
+
+TEST(PlacementCheck, AHoneybeeFaceSeenFromAPortIsNamedAContextShadeIsNot) {
+  const std::string yaml = R"(site: {latitude: 37.72, longitude: -122.22, time_zone: -8}
+outputs: {annual_illuminance: false, metrics: false}
+materials: {}
+sensors:
+  points:
+    - {name: desk, points: [[3, 2, 0.8, 0, 0, 1]]}
+geometry:
+  honeybee: )";
+  const Outcome face = check_text(yaml + written("courtyard_face.hbjson", hb_model(false)) + "\n");
+  ASSERT_TRUE(face.errors.empty()) << face.errors[0];
+  ASSERT_EQ(face.check.warnings.size(), 1u);
+  const Diagnostic& w = face.check.warnings[0];
+  EXPECT_EQ(w.location.file, (test::process_temp_dir() / "courtyard_face.hbjson").string());
+  EXPECT_EQ(w.location.line, 2);  // the orphaned face's object
+  EXPECT_EQ(w.message.rfind("'facade' lies outside port 'window' and fills ", 0), 0u) << w.message;
+  EXPECT_NE(w.message.find("A Honeybee face, aperture, door or indoor shade only shades from outside"),
+            std::string::npos)
+      << w.message;
+
+  const Outcome shade = check_text(yaml + written("courtyard_shade.hbjson", hb_model(true)) + "\n");
+  ASSERT_TRUE(shade.errors.empty()) << shade.errors[0];
+  EXPECT_TRUE(shade.check.warnings.empty()) << warning_text(shade.check.warnings[0]);
 }
 
 }  // namespace

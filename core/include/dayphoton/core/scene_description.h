@@ -118,6 +118,19 @@ enum class PortFacing {
 /// Name used in project files and messages ("auto", "in", "out"; "winding" for generated ports).
 const char* port_facing_name(PortFacing facing);
 
+/// The input element a surface was generated from. The warning about outdoor geometry that
+/// only shades the ports (study/placement_check.h) names it and what makes its light traced.
+enum class SurfaceOrigin {
+  Other,     ///< made by code, not by a project element (tests, tools)
+  Room,      ///< a room generator's wall, floor, ceiling or light well
+  Polygon,   ///< geometry.polygons
+  Box,       ///< geometry.boxes
+  Mesh,      ///< geometry.meshes (an OBJ face; its name is the mesh's, ':', the face's)
+  Radiance,  ///< geometry.radiance (a RADIANCE primitive)
+  Honeybee,  ///< geometry.honeybee (an HBJSON face, aperture, door or shade)
+  System,    ///< a daylight system's part (its `port` says how its light is traced)
+};
+
 /// A planar polygon with a material. Ports are openings through which photons from distant
 /// sources enter (windows become ports automatically).
 struct Surface {
@@ -139,6 +152,7 @@ struct Surface {
   /// the sky (engine/port_facing.h), and an ordinary surface otherwise (interior glazing, a
   /// free-standing pane, the inner pane of a double glazing). `port` must be false.
   bool port_if_outdoors = false;
+  SurfaceOrigin origin = SurfaceOrigin::Other;
 };
 
 struct SensorPoint {

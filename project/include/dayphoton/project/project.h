@@ -345,6 +345,11 @@ struct RadianceSceneSpec {
   /// are ports (facing auto); an empty list makes no port.
   bool ports_auto = true;
   std::vector<Located<std::string>> port_modifiers;
+  /// `outdoor`: the surfaces of these modifiers (matched as port_modifiers) are outdoor
+  /// scatterers (Surface::outdoor_scatterer): context whose reflected light is traced.
+  /// Never also ports: such a surface is no port candidate, and a modifier in both lists
+  /// is an error.
+  std::vector<Located<std::string>> outdoor_modifiers;
   bool skip_unsupported = false;  ///< `unsupported: skip` (else `error`)
   SourceLocation location;
 };

@@ -26,11 +26,17 @@
 //     (z -21 and +14), at 0.3 m within 2 %, from 0.5 m within the noise; the same sensors as a
 //     point set (final gather) within 1.8 %. 0.1 m from the room's walls the estimate is right
 //     (the outline clip and the local-linear fit), so walls are not named;
-//   - geometry outside the ports that is not an outdoor scatterer (a polygon, box or mesh
-//     without `outdoor: true`, a room's facade, imported context) and takes at least
-//     ExteriorViewWarnFraction of a port's outward view: only its shadow is traced, not the
-//     light it reflects toward the window (a 0.4 m window reveal of reflectance 0.8 on the
-//     reference office: DF 12.7 % low). Cosine-distributed rays from the port's outside.
+//   - geometry outside the ports that is not an outdoor scatterer and takes at least
+//     ExteriorViewWarnFraction of an opening's outward view (an opening: the ports written as
+//     one element, a window or a light pipe's collector of dome facets, their views weighted
+//     by area): only its shadow is traced, not the light it reflects toward the window (a
+//     0.4 m window reveal of reflectance 0.8 on the reference office: DF 12.7 % low).
+//     Cosine-distributed rays from each port's outside; the
+//     first surface hit is judged by its origin (Surface::origin): every input element is
+//     named (a polygon, box or mesh without `outdoor: true`, a RADIANCE primitive whose
+//     modifier is not listed under `outdoor`, a room of the generator seen from another's
+//     port, a Honeybee face), located where it is written, with what makes its light traced;
+//     only a daylight system's parts are not (their `port` says how their light is traced).
 #pragma once
 
 #include <cstddef>
@@ -57,7 +63,7 @@ constexpr double OutlineProbeSpacing_m = 0.1;
 /// (header comment), metres.
 constexpr double NearCutWarning_m = 0.3;
 /// Exterior geometry: rays per port (points x directions, both square lattices) and the share
-/// of a port's cosine-weighted outward view above which an element that only shades is named.
+/// of an opening's cosine-weighted outward view above which an element that only shades is named.
 constexpr int ExteriorViewPoints = 16;
 constexpr int ExteriorViewDirections = 256;
 constexpr double ExteriorViewWarnFraction = 0.01;
