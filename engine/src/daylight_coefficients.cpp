@@ -365,10 +365,9 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     // upwards); the local-quadratic fit on a cut disc for the sources of quadratic_at_walls.
     const PlaneVisibility* visible = filter.visibility;
     const CurvatureCorrection curvature = pilot_limit_m >= 0 ? options.curvature_correction : CurvatureCorrection::None;
-    const bool cut =
-        (quadratic_at_walls || curvature != CurvatureCorrection::None) && disc.radius_m > 0 &&
-        (visible ? visible->area_m2(disc.radius_m) : plane->disc_area_inside_m2(at.x, at.y, disc.radius_m)) <
-            Pi * disc.radius_m * disc.radius_m * (1 - 1e-9);
+    const AreaMoments m =
+        visible ? visible->moments(disc.radius_m) : plane->clipped_disc_moments(at.x, at.y, disc.radius_m);
+    const bool cut = disc.radius_m > 0 && m.area < Pi * disc.radius_m * disc.radius_m * (1 - 1e-9);
     const bool whole = curvature != CurvatureCorrection::None && disc.radius_m > 0 && !cut &&
                        disc.photon_count >= density.bandwidth;
     const double pilot_m = curvature == CurvatureCorrection::Pilot
@@ -400,8 +399,6 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
       q[4] += y2 * dx * dy;
       q[5] += y2 * dy * dy;
     }
-    const AreaMoments m =
-        visible ? visible->moments(disc.radius_m) : plane->clipped_disc_moments(at.x, at.y, disc.radius_m);
     out.caustic = local_linear_density(m, s0[0], s1x[0], s1y[0]);
     out.global = local_linear_density(m, s0[1], s1x[1], s1y[1]);
     out.variance = local_linear_variance(m, q);
