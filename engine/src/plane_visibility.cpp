@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "dayphoton/core/units.h"
 
@@ -131,13 +132,16 @@ std::optional<PlaneVisibility> PlaneVisibility::around(const ReceiverPlane& plan
 
 void PlaneVisibility::index_cut_wedges() {
   static_assert(N <= 65536, "wedge indices are kept in 16 bits");
+  std::vector<std::pair<double, std::uint16_t>> cut;  // (reach, wedge): sorted by reach, ties by wedge
   for (int k = 0; k < N; ++k)
-    if (m_reach_m[std::size_t(k)] < m_max_radius_m) m_cut_wedge.push_back(static_cast<std::uint16_t>(k));
-  std::sort(m_cut_wedge.begin(), m_cut_wedge.end(), [&](std::uint16_t i, std::uint16_t j) {
-    return m_reach_m[i] < m_reach_m[j] || (m_reach_m[i] == m_reach_m[j] && i < j);
-  });
-  m_cut_reach_m.reserve(m_cut_wedge.size());
-  for (std::uint16_t k : m_cut_wedge) m_cut_reach_m.push_back(m_reach_m[k]);
+    if (m_reach_m[std::size_t(k)] < m_max_radius_m) cut.emplace_back(m_reach_m[std::size_t(k)], std::uint16_t(k));
+  std::sort(cut.begin(), cut.end());
+  m_cut_wedge.reserve(cut.size());
+  m_cut_reach_m.reserve(cut.size());
+  for (const auto& [reach, k] : cut) {
+    m_cut_reach_m.push_back(reach);
+    m_cut_wedge.push_back(k);
+  }
   // Sums over the first j PrefixStride wedges, j = 0 .. cut / PrefixStride.
   const std::size_t kept = m_cut_wedge.size() / PrefixStride + 1;
   m_prefix.assign(kept * PrefixDoubles, 0.0);
