@@ -2,9 +2,9 @@
 #include "dayphoton/engine/plane_visibility.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "dayphoton/core/units.h"
 
@@ -79,30 +79,9 @@ bool within_m(double x, double y, const PlanePoint& a, const PlanePoint& b, doub
   return distance_to_segment_m(x, y, a, b) < r_m;
 }
 
-// The order up to which moments are summed: 2 for AreaMoments, 4 for ScaledMoments4.
-// The wedges that cut the disc of radius r_m (reach below it and below the largest radius),
-// in ascending order; a run of BlockWedges wedges whose nearest reach is r_m or more cuts
-// nothing and is passed over whole, so a small disc near one wall costs the wedges that face it.
-ScaledMoments4 scaled_moments(const PlaneVisibility& v, double r_m, int order) {
-  const WedgeTable& table = wedges();
-  ScaledMoments4 m = table.disc;
-  for (int block = 0; block < N / PlaneVisibility::BlockWedges; ++block) {
-    if (!(v.block_min_reach_m(block) < r_m)) continue;
-    for (int k = block * PlaneVisibility::BlockWedges; k < (block + 1) * PlaneVisibility::BlockWedges; ++k) {
-      if (!v.cuts_wedge(k)) continue;
-      const double rho = v.reach_m(k) / r_m;
-      if (rho >= 1) continue;
-      const ScaledMoments4& w = table.unit[std::size_t(k)];
-      double power = rho * rho;  // rho^(a + b + 2)
-      for (int n = 0; n <= order; ++n) {
-        const double deficit = 1 - power;
-        for (int a = 0; a <= n; ++a) m.at(a, n - a) -= w.at(a, n - a) * deficit;
-        power *= rho;
-      }
-    }
-  }
-  return m;
-}
+// Moments per order n = a + b: n + 1 of them, the first at ScaledMoments4::index(n, 0).
+constexpr int Moments4 = 15;
+constexpr int PrefixDoubles = 2 * Moments4;  // W then P (plane_visibility.h)
 
 }  // namespace
 
@@ -121,9 +100,9 @@ int PlaneVisibility::sector_of(double dx, double dy) {
 }
 
 PlaneVisibility::PlaneVisibility(double x, double y, double max_radius_m)
-    : m_x(x), m_y(y), m_reach_m(std::size_t(N), max_radius_m), m_max_radius_m(max_radius_m) {
-  m_block_min_reach_m.fill(std::numeric_limits<double>::infinity());
-}
+    : m_x(x), m_y(y), m_reach_m(std::size_t(N), max_radius_m), m_max_radius_m(max_radius_m) {}
+
+const ScaledMoments4& PlaneVisibility::unit_wedge_moments(int k) { return wedges().unit[std::size_t(k)]; }
 
 std::optional<PlaneVisibility> PlaneVisibility::around(const ReceiverPlane& plane, double x, double y,
                                                        double max_radius_m) {
@@ -145,14 +124,81 @@ std::optional<PlaneVisibility> PlaneVisibility::around(const ReceiverPlane& plan
     const PlanePoint& b = outline[(i + 1) % outline.size()];
     if (distance_to_segment_m(x, y, a, b) < max_radius_m) v.block(a, b);
   }
-  for (int k = 0; k < N; ++k)
-    if (v.cuts_wedge(k)) {
-      double& nearest = v.m_block_min_reach_m[std::size_t(k / BlockWedges)];
-      nearest = std::min(nearest, v.m_reach_m[std::size_t(k)]);
-    }
+  v.index_cut_wedges();
   const double clear_m = *std::min_element(v.m_reach_m.begin(), v.m_reach_m.end());
   v.m_clear_m2 = clear_m * clear_m;
   return v;
+}
+
+void PlaneVisibility::index_cut_wedges() {
+  static_assert(N <= 65536, "wedge indices are kept in 16 bits");
+  std::vector<std::pair<double, std::uint16_t>> cut;  // (reach, wedge): sorted by reach, ties by wedge
+  for (int k = 0; k < N; ++k)
+    if (m_reach_m[std::size_t(k)] < m_max_radius_m) cut.emplace_back(m_reach_m[std::size_t(k)], std::uint16_t(k));
+  std::sort(cut.begin(), cut.end());
+  m_cut_wedge.reserve(cut.size());
+  m_cut_reach_m.reserve(cut.size());
+  for (const auto& [reach, k] : cut) {
+    m_cut_reach_m.push_back(reach);
+    m_cut_wedge.push_back(k);
+  }
+  // Sums over the first j PrefixStride wedges, j = 0 .. cut / PrefixStride.
+  const std::size_t kept = m_cut_wedge.size() / PrefixStride + 1;
+  m_prefix.assign(kept * PrefixDoubles, 0.0);
+  double sum[PrefixDoubles] = {};
+  const WedgeTable& table = wedges();
+  for (std::size_t j = 0; j < m_cut_wedge.size(); ++j) {
+    if (j % PrefixStride == 0) std::copy(sum, sum + PrefixDoubles, &m_prefix[j / PrefixStride * PrefixDoubles]);
+    const ScaledMoments4& w = table.unit[m_cut_wedge[j]];
+    const double reach = m_cut_reach_m[j];
+    double power = reach * reach;  // reach^(n + 2)
+    for (int n = 0; n <= 4; ++n) {
+      for (int i = ScaledMoments4::index(n, 0); i <= ScaledMoments4::index(0, n); ++i) {
+        sum[i] += w.value[i];
+        sum[Moments4 + i] += w.value[i] * power;
+      }
+      power *= reach;
+    }
+  }
+  if (m_cut_wedge.size() % PrefixStride == 0)
+    std::copy(sum, sum + PrefixDoubles, &m_prefix[(kept - 1) * PrefixDoubles]);
+}
+
+// The moments up to `order` (0: the area; 2: AreaMoments; 4: ScaledMoments4) of the disc of
+// radius r_m, scaled (header comment): the sums kept at the last stride below the i cut
+// wedges nearer than r_m, then those after it one by one, in ascending reach. Where
+// r_m^(order+2) is not a normal double (a disc under 1e-51 m or over 1e51 m), the sums kept
+// could divide 0 by 0 or overflow: every cut wedge is then summed one by one, as rho = reach / r_m.
+ScaledMoments4 PlaneVisibility::scaled_moments(double r_m, int order) const {
+  const WedgeTable& table = wedges();
+  ScaledMoments4 m = table.disc;
+  const std::size_t cut =
+      std::size_t(std::lower_bound(m_cut_reach_m.begin(), m_cut_reach_m.end(), r_m) - m_cut_reach_m.begin());
+  if (cut == 0) return m;
+  double scale = r_m * r_m;  // r_m^(order + 2)
+  for (int n = 0; n < order; ++n) scale *= r_m;
+  std::size_t first = 0;  // the first cut wedge summed one by one
+  if (std::isnormal(scale) && scale < std::numeric_limits<double>::max() / 16) {
+    first = cut / PrefixStride * PrefixStride;
+    const double* sums = &m_prefix[first / PrefixStride * PrefixDoubles];
+    double power = r_m * r_m;  // r_m^(n + 2)
+    for (int n = 0; n <= order; ++n) {
+      for (int i = ScaledMoments4::index(n, 0); i <= ScaledMoments4::index(0, n); ++i)
+        m.value[i] += sums[Moments4 + i] / power - sums[i];
+      power *= r_m;
+    }
+  }
+  for (std::size_t j = first; j < cut; ++j) {
+    const ScaledMoments4& w = table.unit[m_cut_wedge[j]];
+    const double rho = m_cut_reach_m[j] / r_m;
+    double power = rho * rho;  // rho^(n + 2)
+    for (int n = 0; n <= order; ++n) {
+      const double deficit = 1 - power;
+      for (int i = ScaledMoments4::index(n, 0); i <= ScaledMoments4::index(0, n); ++i) m.value[i] -= w.value[i] * deficit;
+      power *= rho;
+    }
+  }
+  return m;
 }
 
 void PlaneVisibility::block(const PlanePoint& a_world, const PlanePoint& b_world) {
@@ -188,13 +234,13 @@ bool PlaneVisibility::sees(double x, double y) const {
 
 double PlaneVisibility::area_m2(double r_m) const {
   if (!(r_m > 0)) return 0;
-  return scaled_moments(*this, r_m, 0).at(0, 0) * r_m * r_m;
+  return scaled_moments(r_m, 0).at(0, 0) * r_m * r_m;
 }
 
 AreaMoments PlaneVisibility::moments(double r_m) const {
   AreaMoments m;
   if (!(r_m > 0)) return m;
-  const ScaledMoments4 s = scaled_moments(*this, r_m, 2);
+  const ScaledMoments4 s = scaled_moments(r_m, 2);
   const double r2 = r_m * r_m, r3 = r2 * r_m, r4 = r2 * r2;
   m.area = s.at(0, 0) * r2;
   m.mx = s.at(1, 0) * r3;
@@ -207,7 +253,7 @@ AreaMoments PlaneVisibility::moments(double r_m) const {
 
 ScaledMoments4 PlaneVisibility::moments4(double r_m) const {
   if (!(r_m > 0)) return {};
-  return scaled_moments(*this, r_m, 4);
+  return scaled_moments(r_m, 4);
 }
 
 }  // namespace dayphoton::engine

@@ -4,7 +4,9 @@
 // (daylight_coefficients.h) on deterministic photon lattices with closed-form fields.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -108,6 +110,100 @@ TEST(PlaneVisibility, ThePointsSeenFillTheRegionsArea) {
   EXPECT_TRUE(v->sees(0.5, 1.2));
   EXPECT_TRUE(v->sees(2.1, 0.9));
   EXPECT_LT(area, plane.disc_area_inside_m2(x, y, r) - 0.05);
+}
+
+// The moments summed wedge by wedge, as a disc's are defined (plane_visibility.h): the whole
+// disc less, for every wedge cut within max_radius_m short of r, its unit moments times
+// 1 - (reach / r)^(n+2); and, per moment, the sum of the magnitudes of its terms, the scale
+// its rounding is measured against.
+struct DirectMoments {
+  ScaledMoments4 value, scale;
+};
+DirectMoments direct_wedge_sum(const PlaneVisibility& v, double max_radius_m, double r) {
+  DirectMoments d;
+  for (int k = 0; k < PlaneVisibility::Sectors; ++k) {
+    const ScaledMoments4& w = PlaneVisibility::unit_wedge_moments(k);
+    for (int i = 0; i < 15; ++i) {
+      d.value.value[i] += w.value[i];
+      d.scale.value[i] += std::fabs(w.value[i]);
+    }
+  }
+  for (int k = 0; k < PlaneVisibility::Sectors; ++k) {
+    const double reach = v.reach_m(k);
+    if (!(reach < max_radius_m) || !(reach < r)) continue;
+    const ScaledMoments4& w = PlaneVisibility::unit_wedge_moments(k);
+    for (int a = 0; a <= 4; ++a)
+      for (int b = 0; a + b <= 4; ++b) {
+        const double term = w.at(a, b) * (1 - std::pow(reach / r, a + b + 2));
+        d.value.at(a, b) -= term;
+        d.scale.at(a, b) += std::fabs(term);
+      }
+  }
+  return d;
+}
+
+TEST(PlaneVisibility, PrefixSumMomentsEqualTheWedgeSum) {
+  // Random rooms (a square or an L with its re-entrant corner) with 1-8 random partitions, a
+  // random centre and widest radius: at radii below the nearest reach, at and between the
+  // sorted reaches (each PrefixStride-th and its neighbours, where the sums kept and the
+  // wedges summed one by one meet, and at random), and beyond the farthest, the moments of
+  // every order equal the wedge-by-wedge sum to 1e-12 of the sum of its terms' magnitudes.
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> u(0, 1);
+  const std::vector<PlanePoint> ell = {{0, 0}, {12, 0}, {12, 5}, {5, 5}, {5, 12}, {0, 12}};
+  const std::vector<PlanePoint> square = {{0, 0}, {12, 0}, {12, 12}, {0, 12}};
+  int checked = 0, cut_radii = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::vector<PlanePoint>& outline = trial % 2 == 0 ? ell : square;
+    std::vector<PlaneSegment> cuts;
+    const int count = 1 + int(u(rng) * 8);
+    for (int c = 0; c < count; ++c) {
+      const PlanePoint a{0.5 + 11 * u(rng), 0.5 + 4 * u(rng)};
+      const double angle = 2 * Pi * u(rng), length = 0.3 + 4 * u(rng);
+      cuts.push_back({a, {a.x + length * std::cos(angle), a.y + length * std::sin(angle)}});
+    }
+    const ReceiverPlane plane = plane_with_cuts(outline, cuts);
+    const double x = 0.2 + 11.6 * u(rng), y = 0.2 + 4.6 * u(rng), max_radius_m = 0.5 + 15 * u(rng);
+    const std::optional<PlaneVisibility> v = PlaneVisibility::around(plane, x, y, max_radius_m);
+    if (!v) continue;
+    std::vector<double> reaches;
+    for (int k = 0; k < PlaneVisibility::Sectors; ++k)
+      if (v->reach_m(k) < max_radius_m) reaches.push_back(v->reach_m(k));
+    std::sort(reaches.begin(), reaches.end());
+    std::vector<double> radii = {1e-60, 1e60, 2 * max_radius_m};
+    if (!reaches.empty()) {
+      radii.push_back(0.5 * reaches.front());
+      radii.push_back(1.5 * reaches.back());
+      for (std::size_t j = 0; j < reaches.size(); ++j) {
+        const std::size_t phase = j % PlaneVisibility::PrefixStride;
+        if (phase == 0 || phase + 1 == PlaneVisibility::PrefixStride || u(rng) < 0.02) {
+          radii.push_back(reaches[j]);
+          if (j + 1 < reaches.size()) radii.push_back(0.5 * (reaches[j] + reaches[j + 1]));
+        }
+      }
+    }
+    for (double r : radii) {
+      const DirectMoments d = direct_wedge_sum(*v, max_radius_m, r);
+      if (d.value.at(0, 0) < Pi * (1 - 1e-12)) ++cut_radii;
+      const ScaledMoments4 m4 = v->moments4(r);
+      const AreaMoments m2 = v->moments(r);
+      const double r2 = r * r, r3 = r2 * r, r4 = r2 * r2;
+      const double order2[6] = {m2.area / r2, m2.mx / r3, m2.my / r3, m2.mxx / r4, m2.mxy / r4, m2.myy / r4};
+      for (int i = 0; i < 15; ++i) {
+        ASSERT_NEAR(m4.value[i], d.value.value[i], 1e-12 * d.scale.value[i])
+            << "trial " << trial << ", r " << r << ", moment " << i;
+        if (i < 6 && r > 1e-50 && r < 1e50) {
+          ASSERT_NEAR(order2[i], d.value.value[i], 1e-12 * d.scale.value[i]) << "trial " << trial << ", r " << r;
+        }
+      }
+      if (r > 1e-50 && r < 1e50) {
+        ASSERT_NEAR(v->area_m2(r) / r2, d.value.at(0, 0), 1e-12 * d.scale.at(0, 0)) << "trial " << trial << ", r " << r;
+      }
+      ++checked;
+    }
+  }
+  std::printf("%d radii on random visibilities, %d of them cut\n", checked, cut_radii);
+  EXPECT_GT(cut_radii, 2000);
 }
 
 TEST(PlaneCuts, APartitionCutsTheWorkPlaneTheWallsAndALowDeskDoNot) {
