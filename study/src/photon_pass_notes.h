@@ -1,5 +1,6 @@
 // The run-log notes on a photon pass (sky sources or sun bins): sources capped by the
-// low-yield rule, sources that stored nothing.
+// low-yield rule, sources that stored nothing, and the warning when the capped sources
+// bring so much of the light that the stated error does not cover their kernel bias.
 #pragma once
 
 #include <string>
@@ -13,6 +14,31 @@ namespace dayphoton::study {
 /// names the sources ("sources", "sun bins"); the stored share is of the global target.
 std::string capped_note(const engine::TracedPhotons& photons, const engine::TracingOptions& tracing,
                         const std::string& what);
+
+/// Share of the stored photon flux (luminance, per unit radiance of each source; surface and
+/// plane photons) that the capped sources which stored fewer than `below_photons` global
+/// photons carry (infinity: every capped source); 0 when none or nothing is stored.
+double capped_flux_share(const engine::TracedPhotons& photons, double below_photons);
+
+/// A capped source that stored fewer global photons than this many bandwidths is starved: a
+/// disc of `bandwidth` photons then covers a quarter or more of the area its photons reach,
+/// and the kernel bias grows with the disc's area (photon-map.md, "Curvature away from
+/// walls"); where such sources are the median source the sparse-source rule no longer keeps
+/// their discs narrow (photon-map.md, "Sparse sources"). On projects/overhang at its own
+/// settings the capped sources store more and the result stays within its noise.
+inline constexpr int StarvedBandwidths = 4;
+
+/// Above this share of the stored photon flux from starved capped sources the run warns
+/// (capped_warning): their kernel bias, which the reported standard error does not include,
+/// becomes a bias of the result (docs/photon-tracing.md, "Low-yield cap": a light pipe under
+/// an outdoor roof read 6.6 % low on average over 24 seeds).
+inline constexpr double CappedFluxWarningShare = 0.2;
+
+/// The run-log warning (without location) when starved capped sources carry
+/// CappedFluxWarningShare or more of the stored photon flux, else "". `bandwidth` is the
+/// estimate's photons per disc (engine::DensityOptions::bandwidth); `what` as for capped_note.
+std::string capped_warning(const engine::TracedPhotons& photons, const engine::TracingOptions& tracing,
+                           std::size_t bandwidth, const std::string& what);
 
 /// Sources whose photon pass stored nothing (engine::trace_source_photons): none traced when
 /// nothing in the scene can store a photon, or stopped after the pre-pass's entries showed

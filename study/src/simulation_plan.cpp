@@ -110,6 +110,7 @@ SimulationPlan SimulationPlan::of(const project::Project& project) {
   p.point_estimate = sim.point_estimate;
   p.seed = sim.seed;
   p.sky_tracing = shared_tracing_options(project);
+  p.cap_location = sim.location;
   p.sky_tracing.photons_per_source = static_cast<std::size_t>(sim.photons_per_bin);
   p.sky_tracing.source_photon_factor = sky_photon_factors(p.basis.bin_count());
   p.sky_estimating = coefficient_options(sim);

@@ -105,6 +105,8 @@ void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, con
     photons = engine::merge_traced_photons(std::move(per_source));
     for (const std::string& note : {capped_note(photons, tracing, "sources"), nothing_stored_note(photons, "sources")})
       if (!note.empty()) ctx.log.line(prefix + "photons: " + note);
+    if (const std::string w = capped_warning(photons, tracing, plan.sky_estimating.density.bandwidth, "sources"); !w.empty())
+      ctx.log.line(prefix + "warning: " + plan.cap_location.to_string() + ": " + w);
     for (const engine::SourceTally& t : photons.tallies) report.sources_capped += t.capped ? 1 : 0;
   }
 

@@ -160,6 +160,8 @@ void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, cons
     photons = engine::merge_traced_photons(std::move(per_bin));
     for (const std::string& note : {capped_note(photons, tracing, "sun bins"), nothing_stored_note(photons, "sun bins")})
       if (!note.empty()) log.line(prefix + "sun photons: " + note);
+    if (const std::string w = capped_warning(photons, tracing, plan.sun_estimating.density.bandwidth, "sun bins"); !w.empty())
+      log.line(prefix + "warning: " + plan.cap_location.to_string() + ": " + w);
     for (const engine::SourceTally& t : photons.tallies) report.sun_bins_capped += t.capped ? 1 : 0;
   }
 

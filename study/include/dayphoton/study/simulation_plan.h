@@ -62,6 +62,9 @@ struct SimulationPlan {
   double overcast_horizontal_lux = OvercastHorizontalLux;
   double ground_photon_factor = GroundPhotonFactor;
   double ground_reflectance = 0.2;  ///< simulation.ground_reflectance
+  /// Where the low-yield cap (simulation.max_attempts_per_photon) is set: the `simulation`
+  /// section as written (unknown when the project has none), for the capped-flux warning.
+  SourceLocation cap_location;
 
   static SimulationPlan of(const project::Project& project);
 
