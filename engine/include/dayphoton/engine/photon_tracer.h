@@ -41,10 +41,13 @@
 // than ~1 photon per that many attempts (a sky patch seen by a port through a sliver, or
 // passing straight through a port enclosure) then keeps fewer photons instead of running for
 // minutes. Each pass's attempt count is fixed before it is traced, so its attempts are
-// i.i.d. and bound_flux / attempts keeps their flux unbiased whatever the count; only the
-// variance grows, and only for sources that bring little light (docs/photon-tracing.md,
+// i.i.d. and bound_flux / attempts keeps their flux unbiased whatever the count. Where the
+// capped sources bring little light only the variance grows (docs/photon-tracing.md,
 // "Low-yield cap": a capped source's absolute noise is at most that of a source whose yield
-// is exactly at the cap).
+// is exactly at the cap). Where a large outdoor scatterer takes nearly every attempt, every
+// source is capped far below its target, and the density estimates of sources with a handful
+// of photons spread their light over the room: a bias the stated error does not contain,
+// which the study names in run.log (docs/photon-tracing.md, "When the cap biases the result").
 //
 // Outdoor scatterers (port_emission.h): a photon that lands on one is stored there as
 // Direct (with store_direct or store_direct_on_surfaces: a final gather looking out of a
