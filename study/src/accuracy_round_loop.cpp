@@ -152,7 +152,8 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
     } else if (round >= MaxAccuracyRounds) {
       stop = "round limit";
     } else {
-      RoundPlan plan = next_round_scale(m.chased, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+      RoundPlan plan =
+          next_round_scale(m.chased, cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile, goal.max_growth);
       if (direct.plan) {
         direct_plan = direct.plan(cost, plan, AccuracyRoundAim * goal.target_percent);
         if (direct_plan.raised() && goal.max_seconds > 0) {

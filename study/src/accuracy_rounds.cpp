@@ -130,7 +130,7 @@ double percentile_relative_stderr_percent(const std::vector<double>& df_percent,
 }
 
 RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::vector<double>& cost,
-                           double aim_percent, double percentile) {
+                           double aim_percent, double percentile, double max_growth) {
   const std::size_t n = cost.size();
   RoundPlan plan;
   plan.scale.assign(n, 1.0);
@@ -154,7 +154,7 @@ RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::ve
       raise_to_neyman_scale(&g.photon_variance[i * n], cost, budget, plan.scale);
     }
   }
-  for (double& s : plan.scale) s = std::min(s, AccuracyMaxGrowth);
+  for (double& s : plan.scale) s = std::min(s, max_growth);
   return plan;
 }
 
@@ -419,7 +419,7 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
                              std::to_string(goal.max_photons) + ":" + number(goal.max_seconds, "%.17g") + ":" +
                              number(AccuracyPercentile, "%.17g") + ":" + std::to_string(MaxAccuracyRounds) + ":" +
                              number(AccuracyPilotFraction, "%.17g") + ":" + number(AccuracyRoundAim, "%.17g") + ":" +
-                             number(AccuracyMaxGrowth, "%.17g") + ":direct-rays:" +
+                             number(goal.max_growth, "%.17g") + ":direct-rays:" +
                              std::to_string(MaxDirectSamplesPerBin) + ":" + number(DirectVarianceExponent, "%.17g") +
                              ":" + (c.gather ? "gather-rays-photons:" + std::to_string(GatherMaxRounds) + ":" +
                                                    number(GatherMaxGrowth, "%.17g") + ":" + std::to_string(GatherMaxRays)

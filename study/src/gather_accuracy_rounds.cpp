@@ -145,7 +145,8 @@ GatherRayPlan next_gather_rays(const std::vector<double>& df_percent, const std:
 GatherPhotonPlan next_gather_photons(const std::vector<double>& df_percent, const std::vector<double>& direct_variance,
                                      const std::vector<double>& gather_variance,
                                      const std::vector<double>& fixed_per_source, int rays,
-                                     const std::vector<double>& cost, double aim_percent, double percentile) {
+                                     const std::vector<double>& cost, double aim_percent, double percentile,
+                                     double max_growth) {
   const std::size_t n = cost.size();
   const std::vector<double> relative = relative_stderr_percent(df_percent, direct_variance, gather_variance);
   GatherPhotonPlan plan;
@@ -169,7 +170,7 @@ GatherPhotonPlan next_gather_photons(const std::vector<double>& df_percent, cons
     ++plan.sensors;
     raise_to_neyman_scale(&fixed_per_source[i * n], cost, photon_budget, plan.scale);
   }
-  for (double& x : plan.scale) x = std::min(x, AccuracyMaxGrowth);
+  for (double& x : plan.scale) x = std::min(x, max_growth);
   return plan;
 }
 
@@ -429,7 +430,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     if (a.stop_reason == "gather photon part" || a.stop_reason == "gather ray limit") {
       const GatherPhotonPlan photons =
           next_gather_photons(now.df_percent, now.direct_variance, now.gather_variance, now.fixed_per_source, a.rays,
-                              cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile);
+                              cost, AccuracyRoundAim * goal.target_percent, AccuracyPercentile, goal.max_growth);
       double largest = 1.0;
       std::size_t growing = 0;
       for (std::size_t p = 0; p < n; ++p) {

@@ -60,7 +60,7 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
   for (const sky::SunRecord& s : suns) year.integer(std::int64_t(s.step)).vec3(s.direction).number(s.disc_radiance);
   std::string rounds = "sun-accuracy:" + exact(goal.target_percent) + ":" + std::to_string(goal.max_photons) + ":" +
                        exact(AccuracyPercentile) + ":" + std::to_string(MaxAccuracyRounds) + ":" +
-                       exact(AccuracyPilotFraction) + ":" + exact(AccuracyRoundAim) + ":" + exact(AccuracyMaxGrowth) +
+                       exact(AccuracyPilotFraction) + ":" + exact(AccuracyRoundAim) + ":" + exact(goal.max_growth) +
                        ":" +
                        (c.gather ? "gather-rays-photons:" + std::to_string(GatherMaxRounds) + ":" +
                                        exact(GatherMaxGrowth) + ":" + std::to_string(GatherMaxRays)

@@ -72,8 +72,11 @@ constexpr double AccuracyPilotFraction = 0.25;
 /// estimate) passes without a round for the last few per cent.
 constexpr double AccuracyRoundAim = 0.9;
 /// No source's photons grow more than this factor in one round (the variances are measured
-/// again before the next).
-constexpr double AccuracyMaxGrowth = 16.0;
+/// again before the next). The pilot's photons are a quarter of the reference count, and a
+/// pilot 4 times above the target (the curvature correction's variance near walls) asks for a
+/// 20-fold fall of the variance: 16 made such runs trace a third round
+/// (docs/photon-tracing.md, "Allocation").
+constexpr double AccuracyMaxGrowth = 32.0;
 
 /// Presets of simulation.accuracy.preset: name and target (relative standard error of DF, %).
 struct AccuracyPreset {
@@ -86,6 +89,9 @@ struct AccuracyGoal {
   double target_percent = 1.0;    ///< relative standard error of DF at the percentile, %
   std::uint64_t max_photons = 0;  ///< stored photons of all sky sources; 0 = no budget
   double max_seconds = 0;         ///< tracing and estimating; 0 = no budget
+  /// No source's photons grow more than this factor in one round (tests set other caps to
+  /// build rounds of their own).
+  double max_growth = AccuracyMaxGrowth;
 };
 
 /// Nearest-rank percentile of 100 x stderr / DF over the sensors with DF > 0 (0 if none).
@@ -119,9 +125,11 @@ void raise_to_neyman_scale(const double* variance, const std::vector<double>& co
 
 /// The next round's photon count of each source as a factor of its current count, for every
 /// grid's sensors at or below the percentile whose relative standard error exceeds `aim_percent`
-/// (header comment). `cost` is the cost of a source's photons so far (rays cast).
+/// (header comment), each at most `max_growth`. `cost` is the cost of a source's photons so
+/// far (rays cast).
 RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::vector<double>& cost,
-                           double aim_percent, double percentile);
+                           double aim_percent, double percentile,
+                           double max_growth = AccuracyMaxGrowth);
 
 /// The direct component's variance at a sensor falls with its shadow rays per bin n as
 /// n^(-DirectVarianceExponent) when planning a raise: the stratified estimator's law at a

@@ -94,13 +94,14 @@ GatherRayPlan next_gather_rays(const std::vector<double>& df_percent, const std:
 /// direct variance, gather variance and the gather's fixed part by source ([sensor x sources +
 /// source], (DF percent)^2) at `rays`; `cost`: each source's rays so far.
 struct GatherPhotonPlan {
-  std::vector<double> scale;  ///< per source: photons relative to now (>= 1, <= AccuracyMaxGrowth)
+  std::vector<double> scale;  ///< per source: photons relative to now (>= 1, <= max_growth)
   std::size_t sensors = 0;    ///< sensors whose photon part is above their share of the budget
 };
 GatherPhotonPlan next_gather_photons(const std::vector<double>& df_percent, const std::vector<double>& direct_variance,
                                      const std::vector<double>& gather_variance,
                                      const std::vector<double>& fixed_per_source, int rays,
-                                     const std::vector<double>& cost, double aim_percent, double percentile);
+                                     const std::vector<double>& cost, double aim_percent, double percentile,
+                                     double max_growth = AccuracyMaxGrowth);
 
 /// What the gathered grids ask of the photon rounds after their gather rounds.
 struct GatherPhotonRequest {
