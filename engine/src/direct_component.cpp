@@ -202,6 +202,37 @@ struct PortSampling {
   }
 };
 
+/// The direct irradiance under the continuous skies (header comment, "Continuous skies"):
+/// every sample's value per unit radiance, times each sky's radiance at its direction, into
+/// one sum per sky, with the variance by the same collapsed strata as the coefficients'.
+/// Null when there are no skies: then nothing is evaluated.
+class SkyTally {
+ public:
+  SkyTally(const std::vector<ContinuousSky>& skies, Vec3* sum, double* variance)
+      : m_skies(skies), m_sum(sum), m_variance(variance) {}
+  /// A new set of strata rows of `row_length` (one source's strata, one side's port points).
+  void begin_strata(int row_length) {
+    m_strata.clear();
+    for (std::size_t k = 0; k < m_skies.size(); ++k) m_strata.emplace_back(row_length, m_variance + k);
+  }
+  /// The next stratum's sample: direction `w`, value per unit radiance; `credited` false for a
+  /// port point that belongs to no source (its value is 0).
+  void add(bool credited, const Vec3& w, const Vec3& value) {
+    const bool zero = value.x == 0.0 && value.y == 0.0 && value.z == 0.0;
+    for (std::size_t k = 0; k < m_skies.size(); ++k) {
+      const Vec3 v = zero ? Vec3{} : mul(value, m_skies[k].radiance_rgb(w));
+      m_sum[k] += v;
+      m_strata[k].add(credited ? 0 : -1, luminance_of(v));
+    }
+  }
+
+ private:
+  const std::vector<ContinuousSky>& m_skies;
+  Vec3* m_sum;
+  double* m_variance;
+  std::vector<StratifiedVariance> m_strata;
+};
+
 /// L(w) T(w) cos: the integrand, L = 1 when `radiance` is null.
 Vec3 source_value(const Vec3& t, const Vec3& w, double cos_theta, const std::function<Vec3(const Vec3&)>* radiance) {
   return (radiance ? mul(t, (*radiance)(w)) : t) * cos_theta;
@@ -216,11 +247,12 @@ Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Mater
                                      const SourceSet& sources, std::size_t p, const Vec3& origin,
                                      const Vec3& normal, int k, std::uint64_t seed, std::uint64_t sensor_index,
                                      const std::function<Vec3(const Vec3&)>* radiance, const PortSampling* ports,
-                                     const PortView* view, double* variance) {
+                                     const PortView* view, double* variance, SkyTally* skies) {
   Rng rng(seed, p, sensor_index, RandomStream::Direct);
   const double density_a = static_cast<double>(k) * k / sources[p].solid_angle_sr;
   Vec3 sum;
   StratifiedVariance strata(k, variance);  // along j, row by row (estimate_variance.h)
+  if (skies) skies->begin_strata(k);
   for (int i = 0; i < k; ++i) {
     for (int j = 0; j < k; ++j) {
       // Draw both numbers before any early exit so that every stratum uses the same pair
@@ -240,6 +272,7 @@ Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Mater
       }
       sum += value;
       if (variance) strata.add(0, luminance_of(value));
+      if (skies) skies->add(true, w, value);
     }
   }
   return sum;
@@ -252,7 +285,7 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
                           const SourceSet& sources, const Vec3& origin, const Vec3& normal, int k,
                           int kb, std::uint64_t seed, std::uint64_t sensor_index,
                           const std::function<Vec3(const Vec3&)>* radiance, const PortView* view, Vec3* row,
-                          double* variance_row) {
+                          double* variance_row, SkyTally* skies) {
   const PortSet& ports = scene.ports();
   const std::vector<PortPiece> pieces = port_pieces(ports, origin.z);
   PortSide sides[2];  // [0] below the sensor's height, [1] above
@@ -270,7 +303,7 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
     const bool with_ports = sources[p].solid_angle_sr >= PortSampledMinimumSolidAngle_sr;
     row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, seed, sensor_index,
                                               radiance, with_ports ? &port_sampling : nullptr, view,
-                                              variance_row ? variance_row + p : nullptr);
+                                              variance_row ? variance_row + p : nullptr, skies);
   }
   // Strategy B: points uniform over each side's port pieces, each direction credited to the
   // source containing it.
@@ -280,14 +313,15 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
     Rng rng(seed, static_cast<std::uint64_t>(side_index), sensor_index, RandomStream::DirectPort);
     // Each point credited to its source (estimate_variance.h).
     StratifiedVariance strata(kb, variance_row);
-    // One port point: the source it is credited to (-1: none) and its value.
-    auto sample = [&](double u1, double u2, Vec3& value) -> int {
+    if (skies) skies->begin_strata(kb);
+    // One port point: the source it is credited to (-1: none), its value and direction.
+    auto sample = [&](double u1, double u2, Vec3& value, Vec3& w) -> int {
       const PortPiece& piece = side.choose(u1);
       const Port& port = ports[static_cast<std::size_t>(piece.port)];
       const Vec3 to = piece.point(u1, u2) - origin;
       const double d2 = dot(to, to);
       if (!(d2 > 0.0)) return -1;
-      const Vec3 w = to / std::sqrt(d2);
+      w = to / std::sqrt(d2);
       const double cos_theta = dot(w, normal);
       const double cos_port = std::fabs(dot(w, port.normal));
       if (!(cos_theta > 0.0) || !(cos_port > 0.0)) return -1;
@@ -306,10 +340,11 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
       for (int j = 0; j < kb; ++j) {
         const double u1 = std::min((i + rng.uniform()) / kb, OneMinusEpsilon);
         const double u2 = std::min((j + rng.uniform()) / kb, OneMinusEpsilon);
-        Vec3 value;
-        const int p = sample(u1, u2, value);
+        Vec3 value, w;
+        const int p = sample(u1, u2, value, w);
         if (p >= 0) row[static_cast<std::size_t>(p)] += value;
         if (variance_row) strata.add(p, luminance_of(value));
+        if (skies) skies->add(p >= 0, w, p >= 0 ? value : Vec3{});
       }
     }
   }
@@ -321,7 +356,7 @@ void integrate_sensor(const Scene& scene, const std::vector<Material>& materials
                       const SourceSet& sources, const Vec3& origin, const Vec3& normal,
                       const DirectOptions& options, std::uint64_t sensor_index,
                       const std::function<Vec3(const Vec3&)>* radiance, double pad_m, Vec3* row,
-                      double* variance_row) {
+                      double* variance_row, SkyTally* skies) {
   const int k = strata_per_axis(options.samples_per_source);
   // The ports seen from the sensor: most sampled directions of a deep room meet a ceiling or
   // wall and cross no window, and need no shadow ray (port_view.h). Without ports every ray
@@ -331,13 +366,13 @@ void integrate_sensor(const Scene& scene, const std::vector<Material>& materials
   const PortView* seen = view ? &*view : nullptr;
   if (options.port_sampling && !scene.ports().empty()) {
     integrate_sensor_mis(scene, materials, sources, origin, normal, k, PortStrataFactor * k, options.seed,
-                         sensor_index, radiance, seen, row, variance_row);
+                         sensor_index, radiance, seen, row, variance_row, skies);
     return;
   }
   for (std::size_t p = 0; p < sources.size(); ++p)
     row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, options.seed,
                                               sensor_index, radiance, nullptr, seen,
-                                              variance_row ? variance_row + p : nullptr);
+                                              variance_row ? variance_row + p : nullptr, skies);
 }
 
 }  // namespace
@@ -381,7 +416,7 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
                                       const SourceSet& sources,
                                       const std::vector<SensorPoint>& sensors,
                                       const DirectOptions& options, std::vector<double>* variance,
-                                      SensorRange rows) {
+                                      SensorRange rows, DirectOnSkies* on_skies) {
   check_materials(scene, materials);
   (void)strata_per_axis(options.samples_per_source);  // validates the count
   rows = rows.within(sensors.size());
@@ -392,6 +427,12 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
   const std::size_t n_sources = sources.size();
   std::vector<Vec3> result(rows.size() * n_sources);
   if (variance) variance->assign(rows.size() * n_sources, 0.0);
+  const std::size_t n_skies = on_skies ? options.skies.size() : 0;
+  if (on_skies) {
+    on_skies->skies = n_skies;
+    on_skies->irradiance.assign(rows.size() * n_skies, Vec3{});
+    on_skies->variance.assign(rows.size() * n_skies, 0.0);
+  }
   const double pad_m = port_view_pad_m(scene, materials);
   // One sensor per task item: each writes only its own row, and its random numbers depend
   // on (seed, source, sensor index in the whole grid) alone, so neither the partition into
@@ -402,9 +443,14 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
                         const std::size_t s = rows.begin + r;
                         const Vec3 origin = sensors[s].position +
                                             normals[r] * scene.ray_epsilon_m();
+                        std::optional<SkyTally> skies;
+                        if (n_skies > 0)
+                          skies.emplace(options.skies, on_skies->irradiance.data() + r * n_skies,
+                                        on_skies->variance.data() + r * n_skies);
                         integrate_sensor(scene, materials, sources, origin, normals[r], options, s,
                                          nullptr, pad_m, result.data() + r * n_sources,
-                                         variance ? variance->data() + r * n_sources : nullptr);
+                                         variance ? variance->data() + r * n_sources : nullptr,
+                                         skies ? &*skies : nullptr);
                       }
                     });
   return result;
@@ -424,7 +470,7 @@ Vec3 direct_irradiance(const Scene& scene, const std::vector<Material>& material
   const Vec3 origin = sensor.position + normal * scene.ray_epsilon_m();
   std::vector<Vec3> row(sources.size());
   integrate_sensor(scene, materials, sources, origin, normal, options, 0, &radiance, port_view_pad_m(scene, materials),
-                   row.data(), nullptr);
+                   row.data(), nullptr, nullptr);
   Vec3 sum;
   for (const Vec3& v : row) sum += v;
   return sum;

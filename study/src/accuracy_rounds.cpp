@@ -21,6 +21,7 @@
 #include "dayphoton/study/round_work.h"
 #include "dayphoton/study/round_grid_maps.h"
 #include "dayphoton/study/sensor_blocks.h"
+#include "dayphoton/study/simulation_plan.h"
 #include "dayphoton/study/step_executor.h"
 #include "accuracy_round_loop.h"
 #include <nlohmann/json.hpp>
@@ -35,24 +36,13 @@ constexpr const char* DfMeasure = "DF relative standard error";
 
 std::string number(double x, const char* format = "%.3g") { return round_number(x, format); }
 
-/// The luminance-weighted radiance of each bin of the sky vector (as daylight_factor.cpp).
-std::vector<double> bin_luminance(const RadianceMatrix& sky) {
-  std::vector<double> l(sky.rows());
-  for (std::size_t p = 0; p < l.size(); ++p)
-    l[p] = sky.components() == 3 ? RgbLuminanceWeights.x * sky.at(p, 0, 0) + RgbLuminanceWeights.y * sky.at(p, 0, 1) +
-                                        RgbLuminanceWeights.z * sky.at(p, 0, 2)
-                                  : double(sky.at(p, 0, 0));
-  return l;
-}
-
 /// Grid g's coefficients of one round, estimated by sensor blocks through `work` (round_work.h):
-/// the direct part given (`direct`, `direct_variance`, the whole grid's), the photon part from
+/// the direct part given (`direct`, the whole grid's), the photon part from
 /// the round's maps (`maps`: built once in a process that estimates some block). Every block's
 /// rows are the whole grid's (sensor_range.h), so the joined coefficients are those of the grid
 /// estimated at once.
 engine::DaylightCoefficients round_coefficients(const AccuracyCase& c, std::size_t g, RoundGridMaps& maps,
-                                                const std::vector<Vec3>& direct,
-                                                const std::vector<double>& direct_variance, RoundWork& work,
+                                                const engine::DaylightCoefficients& direct, RoundWork& work,
                                                 const std::string& name) {
   const std::size_t n = c.sources->size();
   const SensorGrid& grid = (*c.grids)[g];
@@ -61,11 +51,7 @@ engine::DaylightCoefficients round_coefficients(const AccuracyCase& c, std::size
       [&](std::size_t begin, std::size_t end) {
         const engine::GridPhotons& gp = maps.of_grid(g);
         engine::DaylightCoefficients dc;
-        dc.sensors = end - begin;
-        dc.sources = n;
-        dc.direct.assign(direct.begin() + std::ptrdiff_t(begin * n), direct.begin() + std::ptrdiff_t(end * n));
-        dc.direct_variance.assign(direct_variance.begin() + std::ptrdiff_t(begin * n),
-                                  direct_variance.begin() + std::ptrdiff_t(end * n));
+        copy_direct_rows(direct, begin, end, n, dc);
         dc.caustic.assign(dc.sensors * n, Vec3{0, 0, 0});
         dc.global.assign(dc.sensors * n, Vec3{0, 0, 0});
         engine::photon_coefficients(*c.scene, *c.materials, *c.sources, gp, grid.points, c.estimating, dc,
@@ -77,10 +63,9 @@ engine::DaylightCoefficients round_coefficients(const AccuracyCase& c, std::size
 }
 
 /// Grid g's direct component at `samples_per_bin` shadow rays per bin (the same every round
-/// until a round raises them: next_direct_round) and its variance, by sensor blocks through
-/// `work`.
-void grid_direct(const AccuracyCase& c, std::size_t g, int samples_per_bin, RoundWork& work, std::vector<Vec3>& direct,
-                 std::vector<double>& variance) {
+/// until a round raises them: next_direct_round), its variance and its values on the
+/// continuous skies, by sensor blocks through `work`.
+engine::DaylightCoefficients grid_direct(const AccuracyCase& c, std::size_t g, int samples_per_bin, RoundWork& work) {
   engine::DirectOptions options = c.estimating.direct;
   options.samples_per_source = samples_per_bin;
   const std::size_t n = c.sources->size();
@@ -92,7 +77,7 @@ void grid_direct(const AccuracyCase& c, std::size_t g, int samples_per_bin, Roun
         dc.sensors = end - begin;
         dc.sources = n;
         dc.direct = engine::direct_coefficients(*c.scene, *c.materials, *c.sources, grid.points, options,
-                                                &dc.direct_variance, {begin, end});
+                                                &dc.direct_variance, {begin, end}, &dc.direct_on_skies);
         dc.caustic.assign(dc.sensors * n, Vec3{0, 0, 0});
         dc.global.assign(dc.sensors * n, Vec3{0, 0, 0});
         dc.photon_variance.assign(dc.sensors * n, 0.0);
@@ -101,11 +86,35 @@ void grid_direct(const AccuracyCase& c, std::size_t g, int samples_per_bin, Roun
       "accuracy rounds: direct component of grid " + grid.name + " at " + std::to_string(samples_per_bin) +
           " shadow rays per bin");
   engine::DaylightCoefficients joined = decode_coefficients(join_coefficient_blocks(blocks));
-  direct = std::move(joined.direct);
-  variance = std::move(joined.direct_variance);
+  joined.caustic.clear();
+  joined.global.clear();
+  joined.photon_variance.clear();
+  return joined;
 }
 
 }  // namespace
+
+void copy_direct_rows(const engine::DaylightCoefficients& whole, std::size_t begin, std::size_t end,
+                      std::size_t sources, engine::DaylightCoefficients& out) {
+  out.sensors = end - begin;
+  out.sources = sources;
+  if (whole.direct.empty()) {
+    out.direct.assign(out.sensors * sources, Vec3{});
+    out.direct_variance.assign(out.sensors * sources, 0.0);
+    out.direct_on_skies = {};
+    return;
+  }
+  auto rows = [&](const auto& v, std::size_t per_row) {
+    return std::vector<typename std::decay_t<decltype(v)>::value_type>(v.begin() + std::ptrdiff_t(begin * per_row),
+                                                                       v.begin() + std::ptrdiff_t(end * per_row));
+  };
+  out.direct = rows(whole.direct, sources);
+  out.direct_variance = rows(whole.direct_variance, sources);
+  const engine::DirectOnSkies& skies = whole.direct_on_skies;
+  out.direct_on_skies.skies = skies.skies;
+  out.direct_on_skies.irradiance = rows(skies.irradiance, skies.skies);
+  out.direct_on_skies.variance = rows(skies.variance, skies.skies);
+}
 
 std::vector<std::size_t> sensors_at_or_below_percentile(const std::vector<double>& relative, const std::vector<double>& df,
                                                         double percentile) {
@@ -279,13 +288,12 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
 
   // The direct component: the project's shadow rays until a round raises a grid's
   // (next_direct_round). Its time per shadow ray (the first process's clock) predicts a raise's.
-  std::vector<std::vector<Vec3>> direct(grids.size());
-  std::vector<std::vector<double>> direct_variance(grids.size());
+  std::vector<engine::DaylightCoefficients> direct(grids.size());  // each grid's direct part alone
   std::vector<int> direct_samples(grids.size(), c.estimating.direct.samples_per_source);
   double direct_seconds = 0, direct_rays = 0;
   auto trace_direct = [&](std::size_t g) {
     const Clock::time_point t = Clock::now();
-    grid_direct(c, g, direct_samples[g], work, direct[g], direct_variance[g]);
+    direct[g] = grid_direct(c, g, direct_samples[g], work);
     direct_seconds += std::chrono::duration<double>(Clock::now() - t).count();
     direct_rays += double(grids[g].points.size()) *
                    direct_rays_per_sensor(direct_samples[g], n, c.estimating.direct.port_sampling);
@@ -294,8 +302,6 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   std::vector<std::size_t> chased_grid;  // the grid of each of the last measure's chased variances
   std::vector<GridVariance> chased_variance;
 
-  const std::vector<double> luminance = bin_luminance(*c.overcast_vector);
-  const double df_scale = 100.0 * RadianceWhiteEfficacy_lm_per_W / c.horizontal_illuminance_lux;
   AccuracyResult result;
   result.outcome.target_percent = goal.target_percent;
   // Each round: every grid estimated from the photons so far, its DF and their variances.
@@ -310,23 +316,16 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
     m.met = true;
     for (std::size_t g = 0; g < grids.size(); ++g) {
       engine::DaylightCoefficients& dc = result.coefficients[g];
-      dc = round_coefficients(c, g, maps, direct[g], direct_variance[g], work,
+      dc = round_coefficients(c, g, maps, direct[g], work,
                               "accuracy round " + std::to_string(round) + ", grid " + grids[g].name);
       maps.done(g);
       GridVariance v;
-      v.df_percent = daylight_factor_percent(dc.to_matrix(), *c.overcast_vector, c.horizontal_illuminance_lux);
-      v.direct_variance.assign(dc.sensors, 0.0);
-      v.photon_variance.assign(dc.sensors * n, 0.0);
-      std::vector<double> stderr_percent(dc.sensors, 0.0);
-      for (std::size_t i = 0; i < dc.sensors; ++i) {
-        for (std::size_t p = 0; p < n; ++p) {
-          const double w = df_scale * df_scale * luminance[p] * luminance[p];
-          v.direct_variance[i] += w * dc.direct_variance[i * n + p];
-          v.photon_variance[i * n + p] = w * dc.photon_variance[i * n + p];
-          stderr_percent[i] += w * (dc.direct_variance[i * n + p] + dc.photon_variance[i * n + p]);
-        }
-        stderr_percent[i] = std::sqrt(std::max(0.0, stderr_percent[i]));
-      }
+      DaylightFactorParts parts =
+          daylight_factor_parts(dc, *c.overcast_vector, c.horizontal_illuminance_lux, DaylightFactorSkyIndex);
+      const std::vector<double> stderr_percent = parts.stderr_percent();
+      v.df_percent = std::move(parts.df_percent);
+      v.direct_variance = std::move(parts.direct_variance);
+      v.photon_variance = std::move(parts.photon_variance);
       const double reached = percentile_relative_stderr_percent(v.df_percent, stderr_percent, AccuracyPercentile);
       result.outcome.reached_percent[g] = reached;
       const bool chased = grid_chased_by_photons(*c.plane_of_grid, c.gather, g);
@@ -388,7 +387,7 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   gather_rounds.finish = [&](RoundLoopOutcome& o, const std::vector<engine::SourcePhotonRecord>& records) {
     photon_stop = result.outcome.stop_reason = o.stop_reason;
     result.outcome.rounds = o.rounds;
-    asked = run_gather_accuracy_rounds(c, goal, records, direct, direct_variance,
+    asked = run_gather_accuracy_rounds(c, goal, records, direct,
                                        std::chrono::duration<double>(Clock::now() - start).count(), work, log, result,
                                        gather_direct);
     o.stop_reason = result.outcome.stop_reason;

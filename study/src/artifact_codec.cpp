@@ -21,6 +21,8 @@ constexpr std::size_t TallyBytes = 6 * 8 + 5 * 8 + 8 + 8;
 constexpr std::size_t Vec3Bytes = 24;
 /// Per (sensor, source): direct, caustic, global (Vec3) and the two variances (f64).
 constexpr std::size_t CoefficientPairBytes = 3 * Vec3Bytes + 2 * 8;
+/// Per (sensor, continuous sky): the direct irradiance (Vec3) and its variance (f64).
+constexpr std::size_t SkyDirectBytes = Vec3Bytes + 8;
 constexpr std::size_t PreambleBytes = 8;  // tag + version
 
 class Writer {
@@ -249,14 +251,23 @@ std::string encode_coefficients(const engine::DaylightCoefficients& c) {
                                 std::to_string(c.caustic.size()) + ", " +
                                 std::to_string(c.global.size()) + ", " + std::to_string(c.direct_variance.size()) +
                                 ", " + std::to_string(c.photon_variance.size()) + ")");
-  Writer w(PreambleBytes + 16 + n * CoefficientPairBytes);
+  const engine::DirectOnSkies& skies = c.direct_on_skies;
+  const std::size_t m = c.sensors * skies.skies;
+  if ((skies.skies != 0 && m / skies.skies != c.sensors) || skies.irradiance.size() != m || skies.variance.size() != m)
+    throw std::invalid_argument("daylight coefficients: the direct part on " + std::to_string(skies.skies) +
+                                " skies must hold " + std::to_string(c.sensors) + " x " +
+                                std::to_string(skies.skies) + " values");
+  Writer w(PreambleBytes + 24 + n * CoefficientPairBytes + m * SkyDirectBytes);
   w.tag("DCOF", CoefficientLayoutVersion);
   w.u64(c.sensors);
   w.u64(c.sources);
+  w.u64(skies.skies);
   for (const auto* part : {&c.direct, &c.caustic, &c.global})
     for (const Vec3& v : *part) w.vec3(v);
   for (const auto* part : {&c.direct_variance, &c.photon_variance})
     for (const double v : *part) w.f64(v);
+  for (const Vec3& v : skies.irradiance) w.vec3(v);
+  for (const double v : skies.variance) w.f64(v);
   return w.finish();
 }
 
@@ -266,14 +277,17 @@ engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
   engine::DaylightCoefficients c;
   const std::uint64_t sensors = r.u64("sensor count");
   const std::uint64_t sources = r.u64("source count");
-  // The five arrays need CoefficientPairBytes per (sensor, source) pair: check without overflow.
-  const std::size_t remaining = bytes.size() - (PreambleBytes + 16);
+  const std::uint64_t skies = r.u64("sky count");
+  // The five arrays need CoefficientPairBytes per (sensor, source) pair and the two of the
+  // skies SkyDirectBytes per (sensor, sky): check without overflow.
+  const std::size_t remaining = bytes.size() - (PreambleBytes + 24);
   const std::uint64_t max_pairs = remaining / CoefficientPairBytes;
-  if ((sensors != 0 && sources > max_pairs / sensors) || sensors * sources != max_pairs ||
-      remaining % CoefficientPairBytes != 0)
+  const bool fits = (sensors == 0 || (sources <= max_pairs / sensors && skies <= remaining / SkyDirectBytes / sensors));
+  if (!fits || sensors * sources * CoefficientPairBytes + sensors * skies * SkyDirectBytes != remaining)
     r.fail("size mismatch: " + std::to_string(sensors) + " sensors x " + std::to_string(sources) +
-           " sources need " + std::to_string(CoefficientPairBytes) + " bytes each, " +
-           std::to_string(remaining) + " bytes remain");
+           " sources need " + std::to_string(CoefficientPairBytes) + " bytes each and x " + std::to_string(skies) +
+           " skies " + std::to_string(SkyDirectBytes) + " bytes each, " + std::to_string(remaining) +
+           " bytes remain");
   c.sensors = static_cast<std::size_t>(sensors);
   c.sources = static_cast<std::size_t>(sources);
   const std::size_t n = c.sensors * c.sources;
@@ -285,6 +299,12 @@ engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
     part->resize(n);
     for (double& v : *part) v = r.f64("variance");
   }
+  engine::DirectOnSkies& on_skies = c.direct_on_skies;
+  on_skies.skies = static_cast<std::size_t>(skies);
+  on_skies.irradiance.resize(c.sensors * on_skies.skies);
+  for (Vec3& v : on_skies.irradiance) v = r.vec3("direct irradiance on a sky");
+  on_skies.variance.resize(c.sensors * on_skies.skies);
+  for (double& v : on_skies.variance) v = r.f64("variance on a sky");
   r.done();
   return c;
 }

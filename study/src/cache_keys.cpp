@@ -92,6 +92,8 @@ void add_estimate_options(ContentHash& h, const engine::CoefficientOptions& o) {
   h.integer(o.visibility_clip ? 1 : 0);
   h.integer(static_cast<int>(o.curvature_correction));
   h.integer(o.direct.samples_per_source).integer(static_cast<std::int64_t>(o.direct.seed));
+  h.integer(static_cast<std::int64_t>(o.direct.skies.size()));
+  for (const engine::ContinuousSky& sky : o.direct.skies) h.text(sky.key);
   h.integer(o.gather.rays_per_sensor).integer(static_cast<std::int64_t>(o.gather.bandwidth));
   h.integer(o.gather.max_specular_events).integer(static_cast<std::int64_t>(o.gather.seed));
   h.integer(static_cast<std::int64_t>(o.gather.variance_weights.size()));

@@ -27,6 +27,8 @@ std::vector<double> photometric_weights(int components) {
   throw std::invalid_argument("matrices must have 1 or 3 components, not " + std::to_string(components));
 }
 
+double luminance_of_rgb(const Vec3& rgb) { return dot(RgbLuminanceWeights, rgb); }
+
 }  // namespace
 
 std::vector<double> daylight_factor_percent(const RadianceMatrix& coefficients,
@@ -82,6 +84,94 @@ std::vector<double> daylight_factor_stderr_percent(const std::vector<double>& va
     for (std::size_t p = 0; p < bins; ++p) v += luminance[p] * luminance[p] * variance[s * bins + p];
     out[s] = scale * std::sqrt(std::max(0.0, v));
   }
+  return out;
+}
+
+std::vector<double> DaylightFactorParts::stderr_percent() const {
+  const std::size_t sensors = df_percent.size();
+  const std::size_t bins = sensors ? photon_variance.size() / sensors : 0;
+  std::vector<double> out(sensors, 0.0);
+  for (std::size_t s = 0; s < sensors; ++s) {
+    double v = direct_variance[s];
+    for (std::size_t p = 0; p < bins; ++p) v += photon_variance[s * bins + p];
+    out[s] = std::sqrt(std::max(0.0, v));
+  }
+  return out;
+}
+
+DaylightFactorParts daylight_factor_parts(const engine::DaylightCoefficients& c, const RadianceMatrix& sky_vector,
+                                          double horizontal_illuminance_lux, std::size_t sky_index) {
+  if (!(horizontal_illuminance_lux > 0) || !std::isfinite(horizontal_illuminance_lux))
+    throw std::invalid_argument("daylight factor: the horizontal illuminance must be positive and finite");
+  const std::size_t bins = c.sources, sensors = c.sensors;
+  if (sky_vector.columns() != 1 || sky_vector.rows() != bins)
+    throw std::invalid_argument("daylight factor: " + std::to_string(bins) + " coefficient bins but a sky vector of " +
+                                std::to_string(sky_vector.rows()) + " x " + std::to_string(sky_vector.columns()));
+  if (!c.has_variance() || c.direct.size() != sensors * bins)
+    throw std::invalid_argument("daylight factor: coefficients without their parts' variances");
+  const engine::DirectOnSkies& skies = c.direct_on_skies;
+  const bool continuous = skies.skies > 0;
+  if (continuous && sky_index >= skies.skies)
+    throw std::invalid_argument("daylight factor: sky " + std::to_string(sky_index) + " of " +
+                                std::to_string(skies.skies) + " continuous skies");
+  const int nc = sky_vector.components();
+  const std::vector<double> w = photometric_weights(nc);
+  auto lux = [&](const Vec3& rgb, std::size_t p) {  // 179 lm/W x the sky-weighted luminance of rgb
+    if (nc == 1) return w[0] * luminance_of_rgb(rgb) * double(sky_vector.at(p, 0, 0));
+    return w[0] * rgb.x * double(sky_vector.at(p, 0, 0)) + w[1] * rgb.y * double(sky_vector.at(p, 0, 1)) +
+           w[2] * rgb.z * double(sky_vector.at(p, 0, 2));
+  };
+  std::vector<double> luminance(bins, 0.0);  // the luminance-weighted radiance of each bin
+  for (std::size_t p = 0; p < bins; ++p)
+    luminance[p] = nc == 3 ? RgbLuminanceWeights.x * sky_vector.at(p, 0, 0) + RgbLuminanceWeights.y * sky_vector.at(p, 0, 1) +
+                                 RgbLuminanceWeights.z * sky_vector.at(p, 0, 2)
+                           : static_cast<double>(sky_vector.at(p, 0, 0));
+  const double scale = 100.0 / horizontal_illuminance_lux;  // lux -> DF points
+  const double variance_scale = std::pow(scale * RadianceWhiteEfficacy_lm_per_W, 2);
+  DaylightFactorParts out;
+  out.df_percent.assign(sensors, 0.0);
+  out.direct_variance.assign(sensors, 0.0);
+  out.photon_variance.assign(sensors * bins, 0.0);
+  for (std::size_t s = 0; s < sensors; ++s) {
+    double e_lux = 0;
+    for (std::size_t p = 0; p < bins; ++p) {
+      const std::size_t i = s * bins + p;
+      e_lux += lux(c.caustic[i] + c.global[i], p);
+      out.photon_variance[i] = variance_scale * luminance[p] * luminance[p] * c.photon_variance[i];
+      if (!continuous) {
+        e_lux += lux(c.direct[i], p);
+        out.direct_variance[s] += variance_scale * luminance[p] * luminance[p] * c.direct_variance[i];
+      }
+    }
+    if (continuous) {
+      const std::size_t k = s * skies.skies + sky_index;
+      e_lux += RadianceWhiteEfficacy_lm_per_W * luminance_of_rgb(skies.irradiance[k]);
+      out.direct_variance[s] = variance_scale * skies.variance[k];
+    }
+    out.df_percent[s] = scale * e_lux;
+  }
+  return out;
+}
+
+std::vector<double> continuous_sky_direct_correction_lux(const engine::DaylightCoefficients& c,
+                                                         const RadianceMatrix& sky_vector, std::size_t sky_index) {
+  const engine::DirectOnSkies& skies = c.direct_on_skies;
+  std::vector<double> out(c.sensors, 0.0);
+  if (skies.skies == 0) return out;
+  // Both parts through daylight_factor_parts at E_h = 100 lux, where DF points are lux; its
+  // photon part cancels in the difference, so only the direct parts are compared.
+  engine::DaylightCoefficients direct_only;
+  direct_only.sensors = c.sensors;
+  direct_only.sources = c.sources;
+  direct_only.direct = c.direct;
+  direct_only.direct_variance = c.direct_variance;
+  direct_only.caustic.assign(c.direct.size(), Vec3{});
+  direct_only.global.assign(c.direct.size(), Vec3{});
+  direct_only.photon_variance.assign(c.direct.size(), 0.0);
+  const std::vector<double> basis = daylight_factor_parts(direct_only, sky_vector, 100.0, sky_index).df_percent;
+  direct_only.direct_on_skies = skies;
+  const std::vector<double> continuous = daylight_factor_parts(direct_only, sky_vector, 100.0, sky_index).df_percent;
+  for (std::size_t s = 0; s < c.sensors; ++s) out[s] = continuous[s] - basis[s];
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include "dayphoton/study/accuracy_policy.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/simulation_plan.h"
 #include "dayphoton/study/plan_policy.h"
 #include "dayphoton/study/sensor_blocks.h"
 #include "accuracy_round_loop.h"
@@ -196,8 +197,7 @@ void settle_case_stop(AccuracyOutcome& outcome, const std::string& photon_stop) 
 
 GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
                                 const std::vector<engine::SourcePhotonRecord>& records,
-                                const std::vector<std::vector<Vec3>>& direct,
-                                const std::vector<std::vector<double>>& direct_variance, double seconds_so_far,
+                                const std::vector<engine::DaylightCoefficients>& direct, double seconds_so_far,
                                 RoundWork& work, const std::function<void(const std::string&)>& log,
                                 AccuracyResult& result, const GatherDirectRaise& raise_direct) {
   const Clock::time_point start = Clock::now();
@@ -229,18 +229,17 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     GridEstimate e;
     e.fixed_variance.assign(dc.sensors, 0.0);
     e.fixed_per_source.assign(dc.sensors * n, 0.0);
-    e.df_percent = daylight_factor_percent(dc.to_matrix(), sky, c.horizontal_illuminance_lux);
-    e.direct_variance.assign(dc.sensors, 0.0);
+    DaylightFactorParts parts = daylight_factor_parts(dc, sky, c.horizontal_illuminance_lux, DaylightFactorSkyIndex);
+    const std::vector<double> stderr_percent = parts.stderr_percent();
+    e.df_percent = std::move(parts.df_percent);
+    e.direct_variance = std::move(parts.direct_variance);
     e.gather_variance.assign(dc.sensors, 0.0);
-    std::vector<double> stderr_percent(dc.sensors, 0.0);
     for (std::size_t i = 0; i < dc.sensors; ++i) {
       for (std::size_t p = 0; p < n; ++p) {
-        e.direct_variance[i] += weight[p] * dc.direct_variance[i * n + p];
-        e.gather_variance[i] += weight[p] * dc.photon_variance[i * n + p];
+        e.gather_variance[i] += parts.photon_variance[i * n + p];
         e.fixed_per_source[i * n + p] = weight[p] * fixed[i * n + p];
         e.fixed_variance[i] += e.fixed_per_source[i * n + p];
       }
-      stderr_percent[i] = std::sqrt(std::max(0.0, e.direct_variance[i] + e.gather_variance[i]));
     }
     e.reached_percent = percentile_relative_stderr_percent(e.df_percent, stderr_percent, AccuracyPercentile);
     e.dc = std::move(dc);
@@ -260,16 +259,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
         [&](std::size_t begin, std::size_t end) {
           const engine::GridPhotons& gp = maps.get(build);
           engine::DaylightCoefficients dc;
-          dc.sensors = end - begin;
-          dc.sources = n;
-          if (direct[g].empty()) {  // no direct part (the sun bins'): zeros
-            dc.direct.assign(dc.sensors * n, Vec3{});
-            dc.direct_variance.assign(dc.sensors * n, 0.0);
-          } else {
-            dc.direct.assign(direct[g].begin() + std::ptrdiff_t(begin * n), direct[g].begin() + std::ptrdiff_t(end * n));
-            dc.direct_variance.assign(direct_variance[g].begin() + std::ptrdiff_t(begin * n),
-                                      direct_variance[g].begin() + std::ptrdiff_t(end * n));
-          }
+          copy_direct_rows(direct[g], begin, end, n, dc);  // the sun bins' gathered grids: none, zeros
           // The gather of photon_coefficients, with the part more rays do not reduce.
           engine::GatheredCoefficients gathered = engine::gather_photon_coefficients(
               *c.scene, *c.materials, *c.sources, gp.all(), grid.points, options.gather, &gp.groups(), {begin, end});
@@ -367,8 +357,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           raise_direct.raise(g, d.samples_per_bin[0]);
           // The same gather (photons, rays, seed) with the new direct part.
           engine::DaylightCoefficients dc = std::move(now.dc);
-          dc.direct = direct[g];
-          dc.direct_variance = direct_variance[g];
+          copy_direct_rows(direct[g], 0, dc.sensors, n, dc);
           const std::vector<double> fixed = std::move(now.fixed);
           now = measure(std::move(dc), fixed);
           log(c.round_name + ": grid " + grids[g].name + ": " + c.measure_name + " (" +

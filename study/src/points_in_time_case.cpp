@@ -20,6 +20,7 @@ namespace dayphoton::study {
 /// grid and each grid's summary.json `point_in_time` entries (`grids_json[g]`).
 void run_points_in_time(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                         const std::vector<RadianceMatrix>& sky_coefficients,
+                        const std::vector<std::vector<double>>& overcast_direct_correction_lux,
                         const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx) {
   const project::Simulation& sim = project.simulation;
   const std::vector<project::PointInTimeSpec>& cases = project.points_in_time;
@@ -58,6 +59,14 @@ void run_points_in_time(const project::Project& project, const std::string& pref
         for (std::size_t i = 0; i < table.sensor_count(); ++i)
           table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + double(direct.lux(k, i)) +
                                                double(indirect.lux(k, i)));
+    }
+    // The overcast cases' sky component from the continuous sky, as the daylight factor's.
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      if (cases[k].sky != project::PointSky::CieOvercast) continue;
+      const double scale = cases[k].diffuse_horizontal_illuminance_lux / ctx.plan.overcast_horizontal_lux;
+      for (std::size_t i = 0; i < table.sensor_count(); ++i)
+        table.lux(k, i) =
+            static_cast<float>(double(table.lux(k, i)) + scale * overcast_direct_correction_lux.at(g).at(i));
     }
     const std::string path = join_path(folders[g], "point_in_time.csv");
     write_point_in_time_csv(grid.points, names, table, path);

@@ -32,6 +32,11 @@ std::string join_coefficient_blocks(const std::vector<std::string>& blocks) {
     append(whole.global, part.global);
     append(whole.direct_variance, part.direct_variance);
     append(whole.photon_variance, part.photon_variance);
+    if (part.direct_on_skies.skies != whole.direct_on_skies.skies)
+      throw std::invalid_argument("sensor blocks: a coefficient block on " + std::to_string(part.direct_on_skies.skies) +
+                                  " skies joined to one on " + std::to_string(whole.direct_on_skies.skies));
+    append(whole.direct_on_skies.irradiance, part.direct_on_skies.irradiance);
+    append(whole.direct_on_skies.variance, part.direct_on_skies.variance);
   }
   return encode_coefficients(whole);
 }

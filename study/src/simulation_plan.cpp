@@ -126,6 +126,8 @@ SimulationPlan SimulationPlan::of(const project::Project& project) {
   p.sun_estimating.quadratic_fit_sources.clear();  // the sun bins have no ground bin
   p.sun_estimating.density.bandwidth = sun_bin_bandwidth(p.sky_estimating.density.bandwidth);
   p.ground_reflectance = sim.ground_reflectance;
+  // The daylight factor's sky component from the continuous sky (the sun bins have none).
+  p.sky_estimating.direct.skies = {p.daylight_factor_continuous_sky()};
   // The sky gather's rays' variance is taken on the daylight factor's sky (final_gather.h,
   // "Variance"). The sun bins' weights are the year's, known once the suns are
   // (sun_annual_estimating, in sun_bin_steps.cpp and the sun rounds), so sun_estimating,
@@ -145,6 +147,18 @@ RadianceMatrix SimulationPlan::daylight_factor_sky() const {
   const double rho_g = ground_reflectance;
   return sky::sky_vector(*overcast, basis,
                          sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, overcast_horizontal_lux, 0, {0, 0, -1}));
+}
+
+engine::ContinuousSky SimulationPlan::daylight_factor_continuous_sky() const {
+  const std::shared_ptr<const sky::SkyModel> overcast =
+      sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(overcast_horizontal_lux));
+  const double rho_g = ground_reflectance;
+  const Vec3 ground = sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, overcast_horizontal_lux, 0, {0, 0, -1});
+  engine::ContinuousSky sky;
+  sky.key = overcast->description() + "; ground " + std::to_string(rho_g);
+  // The basis's ground bin 0 is every direction with z <= 0 (sky::PatchBasis::find_bin).
+  sky.radiance_rgb = [overcast, ground](const Vec3& w) { return w.z > 0 ? overcast->radiance_rgb(w) : ground; };
+  return sky;
 }
 
 engine::TracingOptions SimulationPlan::tracing_for(const engine::TracingOptions& base, const CaseLayout& layout) const {

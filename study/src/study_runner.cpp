@@ -170,6 +170,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   nlohmann::json grids_json = nlohmann::json::array();
   std::vector<RadianceMatrix> coefficient_matrices;
   std::vector<std::vector<double>> sky_variances;  // sensors x sources per grid (sky_variance_of)
+  // Per grid: the lux the basis misses of the DF sky's sky component (point-in-time overcast cases).
+  std::vector<std::vector<double>> overcast_direct_correction_lux;
   std::vector<std::string> folders;
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
@@ -195,13 +197,12 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       ctx.outputs.record(join_path(folder, "coefficients_sky.mtx"));
     }
     if (project.outputs.daylight_factor) {
-      const std::vector<double> df = daylight_factor_percent(c, overcast_vector, plan.overcast_horizontal_lux);
-      // The Monte Carlo standard error beside each value (engine/estimate_variance.h).
-      const engine::DaylightCoefficients& dc = *coefficients[g];
-      std::vector<double> variance(dc.sensors * dc.sources);
-      for (std::size_t i = 0; i < variance.size(); ++i) variance[i] = dc.direct_variance[i] + dc.photon_variance[i];
-      const std::vector<double> df_stderr =
-          daylight_factor_stderr_percent(variance, dc.sensors, overcast_vector, plan.overcast_horizontal_lux);
+      // The sky component from the continuous sky, the rest over the basis, with the Monte
+      // Carlo standard error beside each value (daylight_factor.h, engine/estimate_variance.h).
+      const DaylightFactorParts parts = daylight_factor_parts(*coefficients[g], overcast_vector,
+                                                              plan.overcast_horizontal_lux, DaylightFactorSkyIndex);
+      const std::vector<double>& df = parts.df_percent;
+      const std::vector<double> df_stderr = parts.stderr_percent();
       if (ctx.executor.writes_results()) {
         write_daylight_factor_csv(grid.points, df, join_path(folder, "daylight_factor.csv"), df_stderr);
         ctx.outputs.record(join_path(folder, "daylight_factor.csv"));
@@ -249,6 +250,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     grids_json.push_back(gj);
     // Of the sky coefficients' parts only the matrix and the variances are needed from here on.
     sky_variances.push_back(sky_variance_of(*coefficients[g]));
+    overcast_direct_correction_lux.push_back(
+        continuous_sky_direct_correction_lux(*coefficients[g], overcast_vector, DaylightFactorSkyIndex));
     coefficients[g].reset();
   }
 
@@ -411,7 +414,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   }
   // 7. Point-in-time cases.
   if (!project.points_in_time.empty())
-    run_points_in_time(project, prefix, cs, coefficient_matrices, folders, grids_json, ctx);
+    run_points_in_time(project, prefix, cs, coefficient_matrices, overcast_direct_correction_lux, folders, grids_json,
+                       ctx);
   return grids_json;
 }
 

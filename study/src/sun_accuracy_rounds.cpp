@@ -274,8 +274,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   gathered.round_name = "sun accuracy";
   gathered.measure_name = SunMeasure;
   // No direct part (the sun bins' coefficients are indirect): empty, zeros to the gather rounds.
-  const std::vector<std::vector<Vec3>> no_direct(grids.size());
-  const std::vector<std::vector<double>> no_direct_variance(grids.size());
+  const std::vector<engine::DaylightCoefficients> no_direct(grids.size());
   AccuracyResult gather_result;  // the gather rounds' view of the outcome (their rounds kept across calls)
   GatherPhotonRequest asked;     // of the last gather rounds
   std::string photon_stop;       // the photon rounds' stop they were given
@@ -288,7 +287,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
     photon_stop = a.stop_reason = lo.stop_reason;
     a.rounds = lo.rounds;
     gather_result.coefficients.assign(grids.size(), {});
-    asked = run_gather_accuracy_rounds(gathered, goal, records, no_direct, no_direct_variance, 0.0, work, log,
+    asked = run_gather_accuracy_rounds(gathered, goal, records, no_direct, 0.0, work, log,
                                        gather_result);
     for (std::size_t g = 0; g < grids.size(); ++g) {
       engine::DaylightCoefficients& dc = gather_result.coefficients[g];

@@ -165,7 +165,10 @@ else
 fi
 
 # annual --sky-vector: the CIE overcast sky of `dayphoton sky` applied to the exported sky
-# coefficients gives DF x E_h / 100 at every sensor (the run's DF sky is the same sky).
+# coefficients gives DF x E_h / 100 at every sensor (the run's DF sky is the same sky), up to
+# the DF's sky component, which the run takes from the continuous sky instead of the patches
+# (docs/outputs.md, daylight_factor.csv): within 3 % here (its largest share, a few per cent
+# deep in a room); another sky level (8950 lx) would miss by 11 %.
 "$bin" sky --cie overcast --illuminance 10000 -o "$scratch/overcast.mtx" &&
 "$bin" annual --coefficients "$scratch/df_study/workplane" --sky-vector "$scratch/overcast.mtx" -o "$scratch/sv" --quiet
 if python3 - "$scratch/df_study/workplane/daylight_factor.csv" "$scratch/sv/sky_vector_illuminance.csv" <<'PY'
@@ -173,7 +176,7 @@ import csv, sys
 df = [float(r["df_percent"]) for r in csv.DictReader(open(sys.argv[1]))]
 lux = [float(r["illuminance_lux"]) for r in csv.DictReader(open(sys.argv[2]))]
 # DF printed with 4 decimals (0.5e-4 % of 10000 lx = 0.005 lx), lux with 1 (0.05 lx).
-sys.exit(0 if len(df) == len(lux) > 0 and all(abs(e - 100 * d) <= 0.06 for d, e in zip(df, lux)) else 1)
+sys.exit(0 if len(df) == len(lux) > 0 and all(abs(e - 100 * d) <= 0.03 * 100 * d + 0.06 for d, e in zip(df, lux)) else 1)
 PY
 then
   echo "ok   annual_sky_vector"; passed=$((passed + 1))

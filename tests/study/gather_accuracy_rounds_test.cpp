@@ -30,6 +30,7 @@
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/simulation_plan.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/gather_accuracy_rounds.h"
 #include "dayphoton/study/plan_policy.h"
@@ -205,11 +206,9 @@ AccuracyResult run(const Office& office, std::uint64_t seed, int threads = 0, do
 
 /// The reported measure recomputed from the coefficients' own variances.
 double reached_from_coefficients(const engine::DaylightCoefficients& dc, const Office& office) {
-  const std::vector<double> df = daylight_factor_percent(dc.to_matrix(), office.overcast, 10000.0);
-  std::vector<double> variance(dc.sensors * dc.sources);
-  for (std::size_t i = 0; i < variance.size(); ++i) variance[i] = dc.direct_variance[i] + dc.photon_variance[i];
-  const std::vector<double> se = daylight_factor_stderr_percent(variance, dc.sensors, office.overcast, 10000.0);
-  return percentile_relative_stderr_percent(df, se, AccuracyPercentile);
+  // As the study writes daylight_factor.csv (study_runner.cpp).
+  const DaylightFactorParts parts = daylight_factor_parts(dc, office.overcast, 10000.0, DaylightFactorSkyIndex);
+  return percentile_relative_stderr_percent(parts.df_percent, parts.stderr_percent(), AccuracyPercentile);
 }
 
 // The work plane takes a photon round, the gathered grid gather rounds (4 rays per sensor at

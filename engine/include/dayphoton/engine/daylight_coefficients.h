@@ -172,6 +172,10 @@ struct DaylightCoefficients {
   /// are independent, so the variance of any sky-weighted sum at a sensor is
   /// sum_p L_p^2 variance(s, p). Empty when not estimated.
   std::vector<double> direct_variance, photon_variance;
+  /// The direct part under each continuous sky of CoefficientOptions::direct.skies, from the
+  /// same shadow rays (direct_component.h, "Continuous skies"): [sensor * skies + k], with
+  /// its variance; empty without skies.
+  DirectOnSkies direct_on_skies;
 
   Vec3 total(std::size_t s, std::size_t p) const {
     const std::size_t i = s * sources + p;

@@ -62,6 +62,23 @@
 // port_sampling off, or in a scene without ports, the estimator is the plain one above.
 // Rays per sensor: k^2 x sources + (PortStrataFactor k)^2 per side with ports (64 x samples).
 
+// Continuous skies (DirectOptions::skies). A coefficient is per unit radiance of its source,
+// so a sky-weighted sum sum_p C[s][p] L_p treats each sky patch as uniformly bright at its
+// mean radiance L_p. Within a patch the sky is not: the CIE overcast sky's lowest
+// 12-degree band rises from 1.0 to 1.42 times its horizon luminance, and a sensor sees only
+// part of a patch through an opening, or weights it by its cosine, which correlates with the
+// gradient. For a horizontal sensor that sees the whole lowest band the patch-uniform sum
+// is 5.7 % low; for one that sees only its lower half (deep in a room) 6 % high. So the same
+// samples also estimate the direct irradiance under each listed continuous sky,
+//
+//   D_k[s] = integral over all directions of L_k(w) T(x_s, w) max(0, dot(w, n_s)) dw,
+//
+// each sample's value per unit radiance times L_k at its own direction: the same unbiased
+// estimator as the coefficients' (both strategies, the balance heuristic), with its variance
+// by the same collapsed strata. It costs no shadow ray. A study whose sky is known (the
+// daylight factor's CIE overcast sky) reads its sky component from D_k instead of the
+// patch-uniform sum; the photon part stays on the basis.
+
 // Shadow rays start at the sensor moved ray_epsilon_m() along its normal (only directions
 // with dot(w, n_s) > 0 are traced), so a sensor lying on a surface does not see that
 // surface. A ray that would have to cross more than MaxShadowRayCrossings surfaces is
@@ -70,6 +87,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "dayphoton/core/scene_description.h"
@@ -98,12 +116,34 @@ struct SkyPath {
   int port = -1;
 };
 
+/// A sky whose direct irradiance the shadow rays also estimate (header comment, "Continuous
+/// skies").
+struct ContinuousSky {
+  /// What the sky is, with every parameter its radiance depends on: cache keys hash it.
+  std::string key;
+  /// Direction toward the sky (unit, world axes, +Z up) -> RGB radiance W/(sr m^2), the
+  /// ground's below the horizon (the basis's ground bin 0 is the lower hemisphere).
+  std::function<Vec3(const Vec3&)> radiance_rgb;
+};
+
 struct DirectOptions {
   int samples_per_source = 64;  ///< shadow rays per (sensor, source), >= 1; rounded up to a square
   std::uint64_t seed = 1;
   /// Also sample the ports and combine by the balance heuristic (header comment); off: the
   /// plain solid-angle estimator (whose variance has the closed form given above).
   bool port_sampling = true;
+  /// The direct irradiance under each of these skies is estimated from the same samples
+  /// (header comment, "Continuous skies"; direct_coefficients' `on_skies`).
+  std::vector<ContinuousSky> skies;
+};
+
+/// The direct irradiance of every sensor under each sky of DirectOptions::skies: [row *
+/// skies + k], RGB W/m^2, and the variance of its luminance (the same collapsed strata as the
+/// coefficients').
+struct DirectOnSkies {
+  std::size_t skies = 0;
+  std::vector<Vec3> irradiance;
+  std::vector<double> variance;
 };
 
 /// Transmittance (RGB) from `origin` along `direction` (unit, toward the sky) to the sky
@@ -126,12 +166,14 @@ SkyPath trace_to_sky(const Scene& scene, const std::vector<Material>& materials,
 /// (estimate_variance.h), both strategies' strata added (they are independent); the
 /// estimates themselves do not change. `rows`: only those sensors' rows (sensor_range.h:
 /// random numbers by the index in the whole of `sensors`, so they equal the whole result's rows).
+/// `on_skies`, if given, receives the rows' direct irradiance under options.skies (header
+/// comment, "Continuous skies"), from the very samples of the coefficients.
 std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Material>& materials,
                                       const SourceSet& sources,
                                       const std::vector<SensorPoint>& sensors,
                                       const DirectOptions& options,
                                       std::vector<double>* variance = nullptr,
-                                      SensorRange rows = {});
+                                      SensorRange rows = {}, DirectOnSkies* on_skies = nullptr);
 
 /// Direct irradiance at one sensor from a continuous sky radiance function
 /// (direction toward the sky -> RGB radiance), integrated over the sources of `sources`

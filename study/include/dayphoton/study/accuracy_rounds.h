@@ -220,6 +220,13 @@ struct AccuracyCase {
   std::string round_name = "accuracy", measure_name = "DF relative standard error";
 };
 
+/// Rows [begin, end) of one grid's direct part into `out` (out.sensors = end - begin,
+/// out.sources = `sources`): `whole` holds the whole grid's direct, direct_variance and
+/// direct_on_skies (the rounds trace it once per shadow-ray count), or nothing (no direct
+/// part, the sun bins' gathered grids: zeros).
+void copy_direct_rows(const engine::DaylightCoefficients& whole, std::size_t begin, std::size_t end,
+                      std::size_t sources, engine::DaylightCoefficients& out);
+
 /// A gathered grid's last estimate at more gather rays than the photon rounds' (its gather
 /// rounds' result): kept while later photon rounds serve other grids, so that when it cannot be
 /// gathered again its reported accuracy, rays and rounds still describe the estimate written

@@ -33,7 +33,7 @@ namespace dayphoton::study {
 /// Layout versions: bump one whenever its layout changes, so older artefacts are refused
 /// (and recomputed) instead of misread.
 inline constexpr std::uint32_t PhotonLayoutVersion = 3;  // 2: SourceTally::capped; 3: storage_probability_direct, nothing_stores
-inline constexpr std::uint32_t CoefficientLayoutVersion = 2;  // 2: the variances
+inline constexpr std::uint32_t CoefficientLayoutVersion = 3;  // 2: the variances; 3: the direct part on skies
 inline constexpr std::uint32_t MatrixLayoutVersion = 1;
 
 std::string encode_photons(const engine::TracedPhotons& photons);

@@ -2,7 +2,9 @@
 // E_s = sum_p C[s][p] . L_p (photometric: 179 lm/W and RADIANCE's RGB weights) for the
 // CIE overcast sky vector L (ground bin 0 included, ground radiance from the project's
 // ground reflectance, sky/sky_model.h ground_radiance_rgb) and E_h the unobstructed
-// horizontal illuminance of that sky (the nominal value the vector was scaled to).
+// horizontal illuminance of that sky (the nominal value the vector was scaled to). The
+// study's DF (daylight_factor_parts) takes the direct part from the shadow rays' estimate
+// under the continuous sky instead, where the coefficients carry it.
 #pragma once
 
 #include <cstddef>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/engine/daylight_coefficients.h"
 
 namespace dayphoton::study {
 
@@ -30,6 +33,34 @@ std::vector<double> daylight_factor_percent(const RadianceMatrix& coefficients,
 std::vector<double> daylight_factor_stderr_percent(const std::vector<double>& variance, std::size_t sensors,
                                                    const RadianceMatrix& sky_vector,
                                                    double horizontal_illuminance_lux);
+
+/// A grid's DF and its variance by part, from coefficients that may carry the direct part
+/// under the DF sky itself (engine::DaylightCoefficients::direct_on_skies; engine/
+/// direct_component.h, "Continuous skies"): with it, the direct part (the sky component) is
+/// the continuous sky's, free of the basis's patch-uniform radiance, and only the photon part
+/// is the sky-weighted sum over the basis; without it both are sky-weighted sums.
+struct DaylightFactorParts {
+  std::vector<double> df_percent;       ///< per sensor
+  std::vector<double> direct_variance;  ///< per sensor, (DF points)^2
+  std::vector<double> photon_variance;  ///< [sensor x bins + bin], (DF points)^2
+  /// sqrt(direct + photon variance) per sensor.
+  std::vector<double> stderr_percent() const;
+};
+/// `sky_vector`: the DF sky over the basis (bins x 1, 1 or 3 components); `sky_index`: the
+/// DF sky's index among the coefficients' continuous skies (used when they carry any).
+/// Throws std::invalid_argument on a size mismatch, missing variances or a non-positive
+/// illuminance.
+DaylightFactorParts daylight_factor_parts(const engine::DaylightCoefficients& coefficients,
+                                          const RadianceMatrix& sky_vector, double horizontal_illuminance_lux,
+                                          std::size_t sky_index);
+
+/// Per sensor, the direct illuminance (lux) of continuous sky `sky_index` minus the
+/// sky-weighted sum of the direct coefficients under `sky_vector`, the same sky over the basis:
+/// what the basis's patch-uniform radiance misses of the sky component (zeros when the
+/// coefficients carry no continuous sky). Added to an illuminance computed through the
+/// coefficients under a multiple of that sky, scaled alike, it makes it the continuous sky's.
+std::vector<double> continuous_sky_direct_correction_lux(const engine::DaylightCoefficients& coefficients,
+                                                         const RadianceMatrix& sky_vector, std::size_t sky_index);
 
 /// The uncertainty of a grid's DF (docs/outputs.md, summary.json `uncertainty`).
 struct DaylightFactorUncertainty {

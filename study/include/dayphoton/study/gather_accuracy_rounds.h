@@ -114,7 +114,7 @@ struct GatherPhotonRequest {
 struct GatherDirectRaise {
   std::function<int(std::size_t grid)> samples_per_bin;  ///< the grid's shadow rays per bin now
   /// Traces the grid's direct part at `samples_per_bin` (collective, through the work) into the
-  /// `direct` and `direct_variance` given to run_gather_accuracy_rounds.
+  /// `direct` given to run_gather_accuracy_rounds.
   std::function<void(std::size_t grid, int samples_per_bin)> raise;
   std::function<double(double rays)> seconds;  ///< a raise's predicted time (the first process's clock)
   bool port_sampling = false;                  ///< engine::DirectOptions::port_sampling (its rays' count)
@@ -126,15 +126,14 @@ struct GatherDirectRaise {
 /// result.outcome.gather (every grid; gathered = false for the others; a second call after more
 /// photons starts each grid from the rays it reached and adds to its rounds), and settles the
 /// case's stop reason from result.outcome.stop_reason, the photon rounds' (settle_case_stop).
-/// `records`: the photon rounds' photons so far; `direct`, `direct_variance`: each grid's
-/// direct part (the whole grid's rows, or empty for none: zeros; `raise_direct`, if given,
-/// replaces a raised grid's);
+/// `records`: the photon rounds' photons so far; `direct`: each grid's direct part (the whole
+/// grid's rows of direct, direct_variance and direct_on_skies, copy_direct_rows; empty for
+/// none: zeros; `raise_direct`, if given, replaces a raised grid's);
 /// `seconds_so_far`: the rounds' time before (for the time budget). Collective through `work`
 /// like the photon rounds. Returns the photons the grids ask for.
 GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& goal,
                                 const std::vector<engine::SourcePhotonRecord>& records,
-                                const std::vector<std::vector<Vec3>>& direct,
-                                const std::vector<std::vector<double>>& direct_variance, double seconds_so_far,
+                                const std::vector<engine::DaylightCoefficients>& direct, double seconds_so_far,
                                 RoundWork& work, const std::function<void(const std::string&)>& log,
                                 AccuracyResult& result, const GatherDirectRaise& raise_direct = {});
 

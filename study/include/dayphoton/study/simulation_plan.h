@@ -45,6 +45,10 @@ struct CaseLayout {
                        const std::vector<engine::Material>& materials);
 };
 
+/// The daylight factor's sky among the sky coefficients' continuous skies
+/// (engine::DirectOptions::skies, SimulationPlan::daylight_factor_continuous_sky).
+constexpr std::size_t DaylightFactorSkyIndex = 0;
+
 struct SimulationPlan {
   sky::PatchBasis basis = sky::PatchBasis::tregenza();
   project::PointEstimate point_estimate = project::PointEstimate::Surface;
@@ -71,6 +75,10 @@ struct SimulationPlan {
   /// The daylight-factor sky as a vector over the basis: CIE overcast of
   /// overcast_horizontal_lux, the ground of ground_reflectance (1 x bins x RGB).
   RadianceMatrix daylight_factor_sky() const;
+  /// The same sky as a continuous radiance (engine/direct_component.h, "Continuous skies"):
+  /// sky_estimating.direct.skies[DaylightFactorSkyIndex], so the daylight factor's sky
+  /// component is the continuous sky's (daylight_factor.h, daylight_factor_parts).
+  engine::ContinuousSky daylight_factor_continuous_sky() const;
 
   /// `base` (sky_tracing or sun_tracing) for a case: surface photons kept when some grid is
   /// not planar, and with them the direct hits for a final gather (on outdoor scatterers
