@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "dayphoton/core/diagnostics.h"
@@ -84,6 +86,12 @@ std::string sky_text(const project::PointInTimeSpec& c) {
 
 }  // namespace
 
+sky::SolarSite point_in_time_site(const project::Project& project, const SunSite* sun_site) {
+  if (sun_site) return sun_site->solar;
+  const project::Site& ps = project.site;
+  return sky::SolarSite{ps.latitude_deg, ps.longitude_deg, ps.time_zone_h, ps.elevation_m};
+}
+
 std::vector<std::string> check_points_in_time(const std::vector<project::PointInTimeSpec>& cases,
                                               const sky::SolarSite& site) {
   Diagnostics diagnostics;
@@ -103,12 +111,66 @@ std::vector<std::string> check_points_in_time(const std::vector<project::PointIn
   return lines;
 }
 
+namespace {
+
+/// A CIE case's sky (overcast or general) and its ground radiance: the one sky model both
+/// the case's patch column and its continuous sky come from. Throws InputError for a
+/// general sky whose sun is below the horizon.
+struct CieCaseSky {
+  std::shared_ptr<const sky::SkyModel> sky;
+  Vec3 ground_rgb;
+  sky::SolarPosition sun;  ///< general skies only
+};
+CieCaseSky cie_case_sky(const project::PointInTimeSpec& c, const sky::SolarSite& site, double ground_reflectance) {
+  const Vec3 rho{ground_reflectance, ground_reflectance, ground_reflectance};
+  const sky::SkyScale scale = sky::SkyScale::horizontal_illuminance_lux(c.diffuse_horizontal_illuminance_lux);
+  CieCaseSky out;
+  if (c.sky == project::PointSky::CieOvercast) {
+    // As the daylight factor's sky (SimulationPlan::daylight_factor_sky), so E = DF x E_h / 100.
+    out.sky = sky::make_cie_overcast_sky(scale);
+    out.ground_rgb = sky::ground_radiance_rgb(rho, c.diffuse_horizontal_illuminance_lux, 0, {0, 0, -1});
+    return out;
+  }
+  out.sun = cie_sun(c, site);
+  if (!out.sun.sun_up) throw InputError(c.time_location, sun_below_horizon(c, out.sun));
+  out.sky = sky::make_cie_general_sky(c.cie_type, out.sun.direction, scale);
+  out.ground_rgb = sky::ground_radiance_rgb(rho, out.sky->horizontal_illuminance_lux(), c.direct_normal_illuminance_lux,
+                                            out.sun.direction);
+  return out;
+}
+
+}  // namespace
+
+std::vector<engine::ContinuousSky> point_in_time_continuous_skies(const std::vector<project::PointInTimeSpec>& cases,
+                                                                  const sky::SolarSite& site, double ground_reflectance,
+                                                                  std::vector<int>& sky_of_case) {
+  std::vector<engine::ContinuousSky> skies;
+  sky_of_case.assign(cases.size(), -1);
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const project::PointInTimeSpec& c = cases[k];
+    if (c.sky == project::PointSky::Weather) continue;
+    if (c.sky != project::PointSky::CieOvercast && !cie_sun(c, site).sun_up) continue;
+    const CieCaseSky cs = cie_case_sky(c, site, ground_reflectance);
+    engine::ContinuousSky sky;
+    std::ostringstream key;
+    key.precision(17);
+    key << "point in time " << cs.sky->description() << "; ground " << cs.ground_rgb.x << ' ' << cs.ground_rgb.y << ' '
+        << cs.ground_rgb.z;
+    sky.key = key.str();
+    sky.radiance_rgb = [model = cs.sky, ground = cs.ground_rgb](const Vec3& w) {
+      return w.z > 0 ? model->radiance_rgb(w) : ground;
+    };
+    sky_of_case[k] = static_cast<int>(skies.size());
+    skies.push_back(std::move(sky));
+  }
+  return skies;
+}
+
 SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& cases, const sky::SolarSite& site,
                                const sky::PatchBasis& basis, double ground_reflectance,
                                const SkyAndSuns* annual) {
   SkyAndSuns out;
   out.sky.matrix = RadianceMatrix(static_cast<std::size_t>(basis.bin_count()), cases.size(), 3);
-  const Vec3 rho{ground_reflectance, ground_reflectance, ground_reflectance};
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const project::PointInTimeSpec& c = cases[k];
     out.sky.steps.push_back({c.month, c.day, c.hour_lst});
@@ -127,25 +189,10 @@ SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& case
         }
       continue;
     }
-    const sky::SkyScale scale = sky::SkyScale::horizontal_illuminance_lux(c.diffuse_horizontal_illuminance_lux);
-    if (c.sky == project::PointSky::CieOvercast) {
-      // As the daylight factor's sky (SimulationPlan::daylight_factor_sky), so E = DF x E_h / 100.
-      const auto overcast = sky::make_cie_overcast_sky(scale);
-      const RadianceMatrix v = sky::sky_vector(
-          *overcast, basis, sky::ground_radiance_rgb(rho, c.diffuse_horizontal_illuminance_lux, 0, {0, 0, -1}));
-      copy_column(v, 0, out.sky.matrix, k);
-      continue;
-    }
-    const sky::SolarPosition sun = cie_sun(c, site);
-    if (!sun.sun_up) throw InputError(c.time_location, sun_below_horizon(c, sun));
-    const auto general = sky::make_cie_general_sky(c.cie_type, sun.direction, scale);
-    const RadianceMatrix v = sky::sky_vector(
-        *general, basis,
-        sky::ground_radiance_rgb(rho, general->horizontal_illuminance_lux(), c.direct_normal_illuminance_lux,
-                                 sun.direction));
-    copy_column(v, 0, out.sky.matrix, k);
-    if (c.direct_normal_illuminance_lux > 0)
-      out.suns.push_back(sky::sun_record(k, sun.direction, c.direct_normal_illuminance_lux));
+    const CieCaseSky cs = cie_case_sky(c, site, ground_reflectance);
+    copy_column(sky::sky_vector(*cs.sky, basis, cs.ground_rgb), 0, out.sky.matrix, k);
+    if (c.sky != project::PointSky::CieOvercast && c.direct_normal_illuminance_lux > 0)
+      out.suns.push_back(sky::sun_record(k, cs.sun.direction, c.direct_normal_illuminance_lux));
   }
   out.sky.description = "point-in-time skies: " + std::to_string(cases.size()) + " case(s)";
   return out;

@@ -20,7 +20,7 @@ namespace dayphoton::study {
 /// grid and each grid's summary.json `point_in_time` entries (`grids_json[g]`).
 void run_points_in_time(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                         const std::vector<RadianceMatrix>& sky_coefficients,
-                        const std::vector<std::vector<double>>& overcast_direct_correction_lux,
+                        const std::vector<engine::DaylightCoefficients>& direct_parts,
                         const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx) {
   const project::Simulation& sim = project.simulation;
   const std::vector<project::PointInTimeSpec>& cases = project.points_in_time;
@@ -30,10 +30,7 @@ void run_points_in_time(const project::Project& project, const std::string& pref
   const SceneDescription& description = cs.description;
   const sky::PatchBasis& basis = ctx.plan.basis;
   const SkyAndSuns* annual = weather_cases ? &sky_and_suns(project, ctx) : nullptr;
-  const project::Site& ps = project.site;
-  const sky::SolarSite site = ctx.sun_site ? ctx.sun_site->solar
-                                           : sky::SolarSite{ps.latitude_deg, ps.longitude_deg, ps.time_zone_h,
-                                                            ps.elevation_m};
+  const sky::SolarSite site = point_in_time_site(project, ctx.sun_site);
   const SkyAndSuns skies = point_in_time_skies(cases, site, basis, sim.ground_reflectance, annual);
   for (const std::string& line : describe_points_in_time(cases, skies)) ctx.log.line(prefix + "point in time " + line);
   std::vector<GridSun> sun;
@@ -60,13 +57,17 @@ void run_points_in_time(const project::Project& project, const std::string& pref
           table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + double(direct.lux(k, i)) +
                                                double(indirect.lux(k, i)));
     }
-    // The overcast cases' sky component from the continuous sky, as the daylight factor's.
+    // The CIE cases' direct part from their continuous skies, as the daylight factor's.
     for (std::size_t k = 0; k < cases.size(); ++k) {
-      if (cases[k].sky != project::PointSky::CieOvercast) continue;
-      const double scale = cases[k].diffuse_horizontal_illuminance_lux / ctx.plan.overcast_horizontal_lux;
+      const int sky_index = k < ctx.plan.point_in_time_sky.size() ? ctx.plan.point_in_time_sky[k] : -1;
+      if (sky_index < 0) continue;
+      RadianceMatrix column(skies.sky.matrix.rows(), 1, skies.sky.matrix.components());
+      for (std::size_t p = 0; p < column.rows(); ++p)
+        for (int c = 0; c < column.components(); ++c) column.at(p, 0, c) = skies.sky.matrix.at(p, k, c);
+      const std::vector<double> correction =
+          continuous_sky_direct_correction_lux(direct_parts.at(g), column, static_cast<std::size_t>(sky_index));
       for (std::size_t i = 0; i < table.sensor_count(); ++i)
-        table.lux(k, i) =
-            static_cast<float>(double(table.lux(k, i)) + scale * overcast_direct_correction_lux.at(g).at(i));
+        table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + correction.at(i));
     }
     const std::string path = join_path(folders[g], "point_in_time.csv");
     write_point_in_time_csv(grid.points, names, table, path);

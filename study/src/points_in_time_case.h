@@ -14,12 +14,13 @@ namespace dayphoton::study {
 
 /// The point-in-time cases of one case (point_in_time.h) at every grid: point_in_time.csv per
 /// grid and each grid's summary.json `point_in_time` entries (`grids_json[g]`).
-/// `overcast_direct_correction_lux`: per grid and sensor, the lux the basis misses of the
-/// daylight factor sky's sky component (continuous_sky_direct_correction_lux), added to the
-/// CIE overcast cases scaled by their illuminance, so that such a case is DF x E_h / 100.
+/// `direct_parts`: per grid, the sky coefficients' direct part with its continuous skies
+/// (engine::DaylightCoefficients::direct_on_skies): a CIE case's direct part is taken from its
+/// continuous sky (SimulationPlan::point_in_time_sky) instead of the patch means, as the
+/// daylight factor's is (so a cie_overcast case stays DF x E_h / 100).
 void run_points_in_time(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                         const std::vector<RadianceMatrix>& sky_coefficients,
-                        const std::vector<std::vector<double>>& overcast_direct_correction_lux,
+                        const std::vector<engine::DaylightCoefficients>& direct_parts,
                         const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx);
 
 }  // namespace dayphoton::study

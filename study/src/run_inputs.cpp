@@ -16,11 +16,8 @@ RunInputs read_run_inputs(const project::Project& project) {
     inputs.below_horizon = annual_below_horizon_direct(*inputs.weather, *inputs.sun_site);
   }
   // The points in time whose sun needs no tracing.
-  const SunSite* site = inputs.sun_site ? &*inputs.sun_site : nullptr;
   check_points_in_time(project.points_in_time,
-                       site ? site->solar
-                            : sky::SolarSite{project.site.latitude_deg, project.site.longitude_deg,
-                                             project.site.time_zone_h, project.site.elevation_m});
+                       point_in_time_site(project, inputs.sun_site ? &*inputs.sun_site : nullptr));
   // Operated shading needs each hour's direct sun (the loader says so for project files).
   if (project.operation && project.simulation.sun != project::SunMode::Bins)
     throw InputError(project.operation->location, "operation needs the direct sun of every hour: set simulation.sun to 'bins'");

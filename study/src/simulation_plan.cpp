@@ -12,6 +12,7 @@
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/study/annual_sun.h"
+#include "dayphoton/study/point_in_time.h"
 
 namespace dayphoton::study {
 namespace {
@@ -103,7 +104,7 @@ sky::PatchBasis basis_of(const project::Simulation& sim) {
                                                   : sky::PatchBasis::reinhart(sim.reinhart_mf);
 }
 
-SimulationPlan SimulationPlan::of(const project::Project& project) {
+SimulationPlan SimulationPlan::of(const project::Project& project, const SunSite* sun_site) {
   const project::Simulation& sim = project.simulation;
   SimulationPlan p;
   p.basis = basis_of(sim);
@@ -128,6 +129,12 @@ SimulationPlan SimulationPlan::of(const project::Project& project) {
   p.ground_reflectance = sim.ground_reflectance;
   // The daylight factor's sky component from the continuous sky (the sun bins have none).
   p.sky_estimating.direct.skies = {p.daylight_factor_continuous_sky()};
+  // Then each point-in-time CIE case's sky, so its direct part is the continuous sky's too.
+  std::vector<engine::ContinuousSky> cases = point_in_time_continuous_skies(
+      project.points_in_time, point_in_time_site(project, sun_site), sim.ground_reflectance, p.point_in_time_sky);
+  for (int& k : p.point_in_time_sky)
+    if (k >= 0) k += static_cast<int>(p.sky_estimating.direct.skies.size());
+  for (engine::ContinuousSky& sky : cases) p.sky_estimating.direct.skies.push_back(std::move(sky));
   // The sky gather's rays' variance is taken on the daylight factor's sky (final_gather.h,
   // "Variance"). The sun bins' weights are the year's, known once the suns are
   // (sun_annual_estimating, in sun_bin_steps.cpp and the sun rounds), so sun_estimating,

@@ -170,8 +170,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   nlohmann::json grids_json = nlohmann::json::array();
   std::vector<RadianceMatrix> coefficient_matrices;
   std::vector<std::vector<double>> sky_variances;  // sensors x sources per grid (sky_variance_of)
-  // Per grid: the lux the basis misses of the DF sky's sky component (point-in-time overcast cases).
-  std::vector<std::vector<double>> overcast_direct_correction_lux;
+  // Per grid, for the point-in-time cases: the direct part alone (with its continuous skies).
+  std::vector<engine::DaylightCoefficients> point_direct_parts;
   std::vector<std::string> folders;
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
@@ -250,8 +250,15 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     grids_json.push_back(gj);
     // Of the sky coefficients' parts only the matrix and the variances are needed from here on.
     sky_variances.push_back(sky_variance_of(*coefficients[g]));
-    overcast_direct_correction_lux.push_back(
-        continuous_sky_direct_correction_lux(*coefficients[g], overcast_vector, DaylightFactorSkyIndex));
+    if (!project.points_in_time.empty()) {
+      engine::DaylightCoefficients part;
+      part.sensors = coefficients[g]->sensors;
+      part.sources = coefficients[g]->sources;
+      part.direct = std::move(coefficients[g]->direct);
+      part.direct_variance = std::move(coefficients[g]->direct_variance);
+      part.direct_on_skies = std::move(coefficients[g]->direct_on_skies);
+      point_direct_parts.push_back(std::move(part));
+    }
     coefficients[g].reset();
   }
 
@@ -414,8 +421,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   }
   // 7. Point-in-time cases.
   if (!project.points_in_time.empty())
-    run_points_in_time(project, prefix, cs, coefficient_matrices, overcast_direct_correction_lux, folders, grids_json,
-                       ctx);
+    run_points_in_time(project, prefix, cs, coefficient_matrices, point_direct_parts, folders, grids_json, ctx);
   return grids_json;
 }
 
@@ -433,7 +439,7 @@ void run_case_steps(const project::Project& project, const RunInputs& inputs, st
     throw std::logic_error("run_case_steps: case " + std::to_string(case_index) + " of a project of " +
                            std::to_string(1 + project.variants.size()) + " cases");
   const std::string output_dir = settings.output_dir.empty() ? project.outputs.folder : settings.output_dir;
-  const SimulationPlan plan = SimulationPlan::of(project);
+  const SimulationPlan plan = SimulationPlan::of(project, inputs.sun_site ? &*inputs.sun_site : nullptr);
   OutputManifest outputs = OutputManifest::none(output_dir);
   RunReport report;
   report.output_dir = output_dir;
@@ -554,7 +560,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   };
 
   // The plan, built once (simulation_plan.h).
-  const SimulationPlan plan = SimulationPlan::of(project);
+  const SimulationPlan plan = SimulationPlan::of(project, sun_site ? &*sun_site : nullptr);
   RunContext ctx{settings, progress, log, report, store, outputs, plan, *executor, std::nullopt, std::nullopt,
                  weather ? &*weather : nullptr, sun_site ? &*sun_site : nullptr};
   // With at least as many cases as MPI ranks, whole cases are the units (case_units.h), dealt

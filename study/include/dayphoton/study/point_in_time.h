@@ -24,11 +24,13 @@
 #include <vector>
 
 #include "dayphoton/core/scene_description.h"
+#include "dayphoton/engine/direct_component.h"
 #include "dayphoton/metrics/illuminance_table.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/solar_position.h"
 #include "dayphoton/study/annual_sun.h"
+#include "dayphoton/study/sun_site.h"
 
 namespace dayphoton::study {
 
@@ -36,6 +38,10 @@ namespace dayphoton::study {
 /// refraction, for this year (a date of the study has no year; the sun's position at a given
 /// date and time moves by less than 0.02 degree from one year to the next within a leap cycle).
 constexpr int PointInTimeSolarYear = 2001;
+
+/// The site the CIE cases' sun is computed for: the annual study's sun site (`sun_site`, the
+/// weather header's under `site.from_weather`), else the project's own.
+sky::SolarSite point_in_time_site(const project::Project& project, const SunSite* sun_site);
 
 /// The project's checks of the cases that need no tracing, for `check` and before `run`
 /// writes anything: a CIE general sky needs its sun above the horizon at the site (an
@@ -54,6 +60,17 @@ std::vector<std::string> check_points_in_time(const std::vector<project::PointIn
 SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& cases, const sky::SolarSite& site,
                                const sky::PatchBasis& basis, double ground_reflectance,
                                const SkyAndSuns* annual);
+
+/// The CIE cases' skies as continuous radiance (engine/direct_component.h, "Continuous
+/// skies"), the ground of the same sky below the horizon: the sky of point_in_time_skies'
+/// column, so the direct part of a case's illuminance can be taken from the continuous sky
+/// instead of the patch means (points_in_time_case.h). `sky_of_case[k]` receives the index
+/// into the result of case k's sky, or -1 (a weather case: its sky is the annual study's
+/// patch column). A CIE general sky whose sun is below the horizon gets none (-1; run's
+/// checks refuse it first).
+std::vector<engine::ContinuousSky> point_in_time_continuous_skies(const std::vector<project::PointInTimeSpec>& cases,
+                                                                  const sky::SolarSite& site, double ground_reflectance,
+                                                                  std::vector<int>& sky_of_case);
 
 /// One sentence per case for the run log and summary.json: "winter_noon: 12-21 12:00 LST,
 /// CIE general sky type 12, sun at 28.8 deg altitude, 180.1 deg azimuth, 80000 lx direct

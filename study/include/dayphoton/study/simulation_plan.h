@@ -24,6 +24,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/study/plan_policy.h"
+#include "dayphoton/study/sun_site.h"
 
 namespace dayphoton::study {
 
@@ -70,7 +71,13 @@ struct SimulationPlan {
   /// section as written (unknown when the project has none), for the capped-flux warning.
   SourceLocation cap_location;
 
-  static SimulationPlan of(const project::Project& project);
+  /// Per point-in-time case (project key `points_in_time`): the index of its continuous sky
+  /// in sky_estimating.direct.skies (point_in_time_continuous_skies), or -1.
+  std::vector<int> point_in_time_sky;
+
+  /// `sun_site`: the annual study's (run_inputs.h), for the point-in-time CIE skies' sun
+  /// (point_in_time_site); null for none.
+  static SimulationPlan of(const project::Project& project, const SunSite* sun_site = nullptr);
 
   /// The daylight-factor sky as a vector over the basis: CIE overcast of
   /// overcast_horizontal_lux, the ground of ground_reflectance (1 x bins x RGB).
