@@ -44,17 +44,19 @@
 // df_cie_continuous_se_percent`.
 //
 // Any sensors: office_backward_reference --pts FILE [--paths N=200000] [--seed S=7]
-//                                        [--csv OUT] [--matrix OUT] [--project YAML]
+//                                        [--csv OUT] [--matrix OUT] [--project YAML] [--mf N=1]
 // reads the sensors (position and normal, any normal) from a RADIANCE .pts file in the
 // scene's world coordinates, traces `paths` paths from each (sensor k of the file uses the
 // random streams (seed, k, path)), and prints and, with --csv, writes per sensor its daylight
 // factor with the standard error of the mean, under two sky vectors: RADIANCE's overcast vector
-// (refdata, as above; columns left empty without ../shared) and dayphoton's own CIE overcast
+// (refdata, as above; columns left empty without ../shared or with --mf > 1) and dayphoton's own CIE overcast
 // vector with the project's ground reflectance (the sky of `dayphoton run`'s
 // daylight_factor.csv), and that sky continuous (columns `df_cie_continuous_percent`,
 // `df_cie_continuous_se_percent` and the standard error of continuous minus vector,
 // `df_cie_continuous_minus_cie_se_percent`). --matrix writes the per-bin coefficients
-// (sensors x 146, RGB, float).
+// (sensors x bins, RGB, float). `--mf N` bins the paths in Reinhart MF:N patches instead of
+// Tregenza's (dayphoton's vector and the continuous sky only; RADIANCE's vector is Tregenza's),
+// for the basis error of a finer basis.
 // The scene is projects/office/project.yaml unless --project names another project.
 // Paths start at the sensor moved off its surface by the scene's ray epsilon along its
 // normal (as the direct component's shadow rays), so sensors may lie on a surface.
@@ -117,18 +119,20 @@ Vec3 cosine_direction(const Vec3& n, double u1, double u2) {
 }
 
 /// A project's scene as both modes trace it: the project, its scene description, the Embree
-/// scene, the materials and the Tregenza basis the escaping paths are binned in.
+/// scene, the materials and the basis the escaping paths are binned in (Tregenza for mf 1,
+/// Reinhart MF:mf otherwise).
 struct Tracer {
-  explicit Tracer(const std::string& project_path)
+  explicit Tracer(const std::string& project_path, int mf = 1)
       : proj(project::load_project(project_path)), description(project::build_scene_description(proj)),
-        scene(engine::Scene::build(description)) {
+        scene(engine::Scene::build(description)),
+        basis(mf == 1 ? sky::PatchBasis::tregenza() : sky::PatchBasis::reinhart(mf)) {
     for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
   }
   project::Project proj;
   SceneDescription description;
   engine::Scene scene;
+  sky::PatchBasis basis;
   std::vector<engine::Material> materials;
-  sky::PatchBasis basis = sky::PatchBasis::tregenza();
 };
 
 /// A sky as the paths see it: the RGB radiance (W/(sr m^2)) seen along an escape direction
@@ -286,6 +290,7 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
   std::string pts_path, csv_path, matrix_path, project_path = source_dir + "/projects/office/project.yaml";
   std::size_t paths = 200000;
   std::uint64_t seed = DefaultSeed;
+  int mf = 1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
@@ -299,13 +304,14 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
     } else if (a == "--csv" && has_value) csv_path = argv[++i];
     else if (a == "--matrix" && has_value) matrix_path = argv[++i];
     else if (a == "--project" && has_value) project_path = argv[++i];
+    else if (a == "--mf" && has_value) mf = std::stoi(argv[++i]);
     else {
       std::fprintf(stderr, "office_backward_reference: unknown or incomplete option '%s'\n", a.c_str());
       return 2;
     }
   }
-  if (pts_path.empty() || paths == 0) {
-    std::fprintf(stderr, "office_backward_reference: --pts FILE and --paths N > 0 are needed\n");
+  if (pts_path.empty() || paths == 0 || mf < 1) {
+    std::fprintf(stderr, "office_backward_reference: --pts FILE, --paths N > 0 and --mf N >= 1 are needed\n");
     return 2;
   }
   Diagnostics diag;
@@ -314,7 +320,7 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
     std::fprintf(stderr, "%s", diag.has_errors() ? diag.format().c_str() : (pts_path + ": no sensors\n").c_str());
     return 1;
   }
-  const Tracer tracer(project_path);
+  const Tracer tracer(project_path, mf);
   const sky::PatchBasis& basis = tracer.basis;
   const std::size_t bins = std::size_t(basis.bin_count());
 
@@ -329,7 +335,7 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
   std::vector<SkyRadiance> skies{binned(basis, vector_rgb(sky::sky_vector(*overcast, basis, ground))),
                                  continuous(overcast, ground)};
   const std::string radiance_vector = shared + "/refdata/results/a_daylight_factor/skyvec_overcast_m1.vec";
-  const bool have_radiance = std::ifstream(radiance_vector).good();
+  const bool have_radiance = mf == 1 && std::ifstream(radiance_vector).good();  // a Tregenza vector
   if (have_radiance) skies.push_back(binned(basis, vector_rgb(RadianceMatrix::read_file(radiance_vector))));
 
   std::vector<SensorSums> sums(sensors.size());
@@ -387,7 +393,7 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
       for (std::size_t p = 0; p < bins; ++p)
         for (int c = 0; c < 3; ++c) out.at(k, p, c) = float(sums[k].coeff[p][c] / double(paths));
     out.header_lines().push_back("office_backward_reference --pts " + pts_path + " --paths " + std::to_string(paths) +
-                                 " --seed " + std::to_string(seed));
+                                 " --seed " + std::to_string(seed) + " --mf " + std::to_string(mf));
     out.write_file(matrix_path, MatrixFormat::Float);
   }
   return 0;
