@@ -25,17 +25,38 @@
 // (scripts/validate_office.py --backward FILE compares those with RADIANCE's). write_csv
 // writes, per traced sensor, its DF under RADIANCE's sky vector with the standard error of
 // the mean (`index,df_radiance_percent,df_radiance_se_percent`), the reference's own noise
-// that a comparison with it has to allow for (scripts/office_df_error.py).
+// that a comparison with it has to allow for (scripts/office_df_error.py), then the DF of the
+// same paths under four more skies (below).
+//
+// Continuous skies. A coefficient is per unit radiance of a UNIFORM patch; the sky's radiance
+// varies within a patch, so coefficients x sky vector differ from the continuous sky's
+// illuminance. The same paths therefore also score pi x throughput x the radiance of the
+// continuous sky along their escape direction. Row mode scores five skies: RADIANCE's vector
+// (genskyvec, as above); the sky rtrace saw (sky_overcast.rad evaluated as skybright.cal does:
+// CIE overcast blended into the ground near the horizon) continuous, and its exact patch means;
+// dayphoton's DF sky vector (project's ground reflectance) and that sky continuous (the sky
+// module's CIE overcast luminance, the uniform ground rho E_h / pi below the horizon). A second
+// table prints per row rtrace / continuous RADIANCE sky and the ratios continuous / patch means
+// (the basis's error), patch means / genskyvec and continuous dayphoton / continuous RADIANCE
+// sky, each with its standard error (ratios of the same paths: their errors are correlated).
+// The CSV adds `df_radiance_continuous_percent,df_radiance_continuous_se_percent,
+// df_radiance_patch_mean_percent,df_cie_percent,df_cie_se_percent,df_cie_continuous_percent,
+// df_cie_continuous_se_percent`.
 //
 // Any sensors: office_backward_reference --pts FILE [--paths N=200000] [--seed S=7]
-//                                        [--csv OUT] [--matrix OUT] [--project YAML]
+//                                        [--csv OUT] [--matrix OUT] [--project YAML] [--mf N=1]
 // reads the sensors (position and normal, any normal) from a RADIANCE .pts file in the
 // scene's world coordinates, traces `paths` paths from each (sensor k of the file uses the
 // random streams (seed, k, path)), and prints and, with --csv, writes per sensor its daylight
 // factor with the standard error of the mean, under two sky vectors: RADIANCE's overcast vector
-// (refdata, as above; columns left empty without ../shared) and dayphoton's own CIE overcast
+// (refdata, as above; columns left empty without ../shared or with --mf > 1) and dayphoton's own CIE overcast
 // vector with the project's ground reflectance (the sky of `dayphoton run`'s
-// daylight_factor.csv). --matrix writes the per-bin coefficients (sensors x 146, RGB, float).
+// daylight_factor.csv), and that sky continuous (columns `df_cie_continuous_percent`,
+// `df_cie_continuous_se_percent` and the standard error of continuous minus vector,
+// `df_cie_continuous_minus_cie_se_percent`). --matrix writes the per-bin coefficients
+// (sensors x bins, RGB, float). `--mf N` bins the paths in Reinhart MF:N patches instead of
+// Tregenza's (dayphoton's vector and the continuous sky only; RADIANCE's vector is Tregenza's),
+// for the basis error of a finer basis.
 // The scene is projects/office/project.yaml unless --project names another project.
 // Paths start at the sensor moved off its surface by the scene's ray epsilon along its
 // normal (as the direct component's shadow rays), so sensors may lie on a surface.
@@ -45,10 +66,13 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -95,49 +119,117 @@ Vec3 cosine_direction(const Vec3& n, double u1, double u2) {
 }
 
 /// A project's scene as both modes trace it: the project, its scene description, the Embree
-/// scene, the materials and the Tregenza basis the escaping paths are binned in.
+/// scene, the materials and the basis the escaping paths are binned in (Tregenza for mf 1,
+/// Reinhart MF:mf otherwise).
 struct Tracer {
-  explicit Tracer(const std::string& project_path)
+  explicit Tracer(const std::string& project_path, int mf = 1)
       : proj(project::load_project(project_path)), description(project::build_scene_description(proj)),
-        scene(engine::Scene::build(description)) {
+        scene(engine::Scene::build(description)),
+        basis(mf == 1 ? sky::PatchBasis::tregenza() : sky::PatchBasis::reinhart(mf)) {
     for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
   }
   project::Project proj;
   SceneDescription description;
   engine::Scene scene;
+  sky::PatchBasis basis;
   std::vector<engine::Material> materials;
-  sky::PatchBasis basis = sky::PatchBasis::tregenza();
 };
 
+/// A sky as the paths see it: the RGB radiance (W/(sr m^2)) seen along an escape direction
+/// (unit; below the horizon the ground). A sky vector in the basis is the step function
+/// binned(); a continuous sky is its own luminance function, so that the two, scored on the
+/// same paths, differ by the basis alone.
+using SkyRadiance = std::function<Vec3(const Vec3& direction)>;
+
+/// The sky vector `v` (per bin) as a step function of the escape direction.
+SkyRadiance binned(const sky::PatchBasis& basis, const std::vector<Vec3>& v) {
+  return [&basis, v](const Vec3& d) { return v[std::size_t(basis.find_bin(d))]; };
+}
+
+/// dayphoton's CIE overcast sky itself (sky::make_cie_overcast_sky, the sky the DF vector
+/// averages over the patches) above the horizon, the uniform ground of `ground_rgb` below it.
+SkyRadiance continuous(std::shared_ptr<const sky::SkyModel> sky_model, const Vec3& ground_rgb) {
+  return [sky_model, ground_rgb](const Vec3& d) { return d.z > 0 ? sky_model->radiance_rgb(d) : ground_rgb; };
+}
+
+/// The sky of the rtrace reference as RADIANCE evaluates it (RADIANCE src/gen/skybright.cal,
+/// CIE overcast case A1 = 2): L(Dz) = (a S + b G) / (a + b) with a = (Dz + 1.01)^10,
+/// b = (Dz + 1.01)^-10, S = A2 (1 + 2 Dz) / 3 (Moon & Spencer's overcast formula, evaluated at
+/// any Dz) and G = A3, the zenith and ground brightnesses gensky wrote into the sky file (as
+/// rounded there). Near the horizon it blends into the ground (below the CIE sky above, above
+/// the ground below). Grey; RADIANCE units (luminance / 179).
+struct RadianceOvercast {
+  double zenith = 0, ground = 0;
+  double operator()(double dz) const {
+    const double a = std::pow(dz + 1.01, 10), b = 1 / a;
+    return (a * zenith * (1 + 2 * dz) / 3 + b * ground) / (a + b);
+  }
+};
+
+/// A2 and A3 of `skyfunc` in a gensky -c sky file (`void brightfunc skyfunc / 2 skybr
+/// skybright.cal / 0 / 3 A1 A2 A3`); throws if the file has no overcast skyfunc.
+RadianceOvercast read_radiance_overcast(const std::string& path) {
+  std::ifstream in(path);
+  std::string token;
+  while (in >> token && token != "skybright.cal") {
+  }
+  int zero = -1, count = 0, type = 0;
+  RadianceOvercast sky;
+  if (!(in >> zero >> count >> type >> sky.zenith >> sky.ground) || zero != 0 || count != 3 || type != 2)
+    throw std::runtime_error(path + ": no CIE overcast skyfunc (skybright.cal 0 / 3 2 A2 A3)");
+  return sky;
+}
+
+/// Per-bin mean of RADIANCE's overcast sky (the basis's exact value of that sky: patch means by
+/// a 64 x 64 midpoint rule in solid angle; the ground bin's mean over the lower hemisphere, where
+/// Dz is uniform in solid angle, by 100 000 midpoints), for the basis error of the same sky.
+std::vector<Vec3> radiance_overcast_means(const RadianceOvercast& sky, const sky::PatchBasis& basis) {
+  std::vector<Vec3> v(std::size_t(basis.bin_count()));
+  constexpr int n = 64, ground_n = 100000;
+  double ground = 0;
+  for (int i = 0; i < ground_n; ++i) ground += sky(-(i + 0.5) / ground_n);
+  v[0] = Vec3{1, 1, 1} * (ground / ground_n);
+  for (int bin = 1; bin < basis.bin_count(); ++bin) {
+    double sum = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) sum += sky(basis.sample_direction(bin, (i + 0.5) / n, (j + 0.5) / n).z);
+    v[std::size_t(bin)] = Vec3{1, 1, 1} * (sum / (n * n));
+  }
+  return v;
+}
+
 /// The backward estimate of one sensor: per-bin sums of pi x throughput (`coeff`, `bins`
-/// entries) and, per sky vector, the sums of the illuminance estimate and of its square.
+/// entries) and, per sky, the sums of the illuminance estimate x_k and of x_k x_j (K x K, so
+/// that the difference of two skies scored on the same paths has its own standard error).
 struct SensorSums {
   std::vector<Vec3> coeff;
-  std::vector<double> sum, sum2;
+  std::vector<double> sum, sum_products;
   std::uint64_t rays = 0;
 };
 
 /// `paths` paths from `sensor`; path i uses the stream (seed, stream_index, i). Each path
-/// scores pi x throughput x the escape bin's radiance under each of `skies` (RGB per bin).
+/// scores pi x throughput x the radiance of each of `skies` along its escape direction.
 SensorSums trace_sensor(const Tracer& t, const SensorPoint& sensor, std::size_t paths, std::uint64_t seed,
-                        std::uint64_t stream_index, const std::vector<std::vector<Vec3>>& skies) {
-  const std::size_t bins = std::size_t(t.basis.bin_count());
+                        std::uint64_t stream_index, const std::vector<SkyRadiance>& skies) {
+  const std::size_t bins = std::size_t(t.basis.bin_count()), k_skies = skies.size();
   SensorSums out;
   out.coeff.assign(bins, Vec3{0, 0, 0});
-  out.sum.assign(skies.size(), 0);
-  out.sum2.assign(skies.size(), 0);
+  out.sum.assign(k_skies, 0);
+  out.sum_products.assign(k_skies * k_skies, 0);
+  std::vector<double> x(k_skies);
   for (std::size_t i = 0; i < paths; ++i) {
     engine::Rng rng(seed, stream_index, i, engine::RandomStream::Scattering);
     Vec3 w{1, 1, 1};
     const Vec3 d0 = cosine_direction(sensor.normal, rng.uniform(), rng.uniform());
     engine::Ray ray{t.scene.offset_ray_origin(sensor.position, sensor.normal, d0), d0};
-    int escape_bin = -1;
+    bool escaped = false;
     for (int depth = 0; depth < 1000; ++depth) {
       ++out.rays;
       const std::optional<engine::Hit> hit = t.scene.intersect(ray);
       if (!hit) {
-        escape_bin = t.basis.find_bin(ray.direction);
+        const int escape_bin = t.basis.find_bin(ray.direction);
         out.coeff[std::size_t(escape_bin)] = out.coeff[std::size_t(escape_bin)] + w * kPi;
+        escaped = true;
         break;
       }
       const auto s = t.materials[std::size_t(hit->material)].sample(ray.direction, hit->normal, rng.uniform(),
@@ -151,10 +243,11 @@ SensorSums trace_sensor(const Tracer& t, const SensorPoint& sensor, std::size_t 
       }
       ray = engine::Ray{t.scene.offset_ray_origin(hit->position, hit->normal, s->direction), s->direction};
     }
-    for (std::size_t k = 0; k < skies.size(); ++k) {
-      const double x = escape_bin < 0 ? 0 : kPi * rgb_to_photometric(mul(w, skies[k][std::size_t(escape_bin)]));
-      out.sum[k] += x;
-      out.sum2[k] += x * x;
+    for (std::size_t k = 0; k < k_skies; ++k)
+      x[k] = escaped ? kPi * rgb_to_photometric(mul(w, skies[k](normalize(ray.direction)))) : 0;
+    for (std::size_t k = 0; k < k_skies; ++k) {
+      out.sum[k] += x[k];
+      for (std::size_t j = 0; j < k_skies; ++j) out.sum_products[k * k_skies + j] += x[k] * x[j];
     }
   }
   return out;
@@ -166,12 +259,24 @@ std::vector<Vec3> vector_rgb(const RadianceMatrix& m) {
   return v;
 }
 
+/// Mean of sky k minus `scale` x sky j's (j < 0: sky k alone) over the paths of one sensor, in
+/// DF percent, and the variance of that mean (percent^2): the sample covariance of the same paths.
+std::pair<double, double> df_moments(const SensorSums& s, int k, int j, double scale, std::size_t paths) {
+  const std::size_t n_skies = s.sum.size(), a = std::size_t(k);
+  const double n = double(paths), to_percent = 100 / HorizontalLux;
+  const double mk = s.sum[a] / n;
+  if (j < 0) return {mk * to_percent, std::max(0.0, s.sum_products[a * n_skies + a] / n - mk * mk) / n * to_percent * to_percent};
+  const std::size_t b = std::size_t(j);
+  const double mj = s.sum[b] / n;
+  const double var = s.sum_products[a * n_skies + a] / n - mk * mk + scale * scale * (s.sum_products[b * n_skies + b] / n - mj * mj) -
+                     2 * scale * (s.sum_products[a * n_skies + b] / n - mk * mj);
+  return {(mk - scale * mj) * to_percent, std::max(0.0, var) / n * to_percent * to_percent};
+}
+
 /// Mean and standard error of the mean of a sensor's DF (percent) under sky k.
 std::pair<double, double> df_percent(const SensorSums& s, std::size_t k, std::size_t paths) {
-  const double n = double(paths), mean = s.sum[k] / n;
-  const double var = std::max(0.0, s.sum2[k] / n - mean * mean) / n;
-  const double to_percent = 100 / HorizontalLux;
-  return {mean * to_percent, std::sqrt(var) * to_percent};
+  const auto [mean, var] = df_moments(s, int(k), -1, 0, paths);
+  return {mean, std::sqrt(var)};
 }
 
 std::string fixed(double v, int decimals) {
@@ -185,6 +290,7 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
   std::string pts_path, csv_path, matrix_path, project_path = source_dir + "/projects/office/project.yaml";
   std::size_t paths = 200000;
   std::uint64_t seed = DefaultSeed;
+  int mf = 1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
@@ -198,13 +304,14 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
     } else if (a == "--csv" && has_value) csv_path = argv[++i];
     else if (a == "--matrix" && has_value) matrix_path = argv[++i];
     else if (a == "--project" && has_value) project_path = argv[++i];
+    else if (a == "--mf" && has_value) mf = std::stoi(argv[++i]);
     else {
       std::fprintf(stderr, "office_backward_reference: unknown or incomplete option '%s'\n", a.c_str());
       return 2;
     }
   }
-  if (pts_path.empty() || paths == 0) {
-    std::fprintf(stderr, "office_backward_reference: --pts FILE and --paths N > 0 are needed\n");
+  if (pts_path.empty() || paths == 0 || mf < 1) {
+    std::fprintf(stderr, "office_backward_reference: --pts FILE, --paths N > 0 and --mf N >= 1 are needed\n");
     return 2;
   }
   Diagnostics diag;
@@ -213,19 +320,23 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
     std::fprintf(stderr, "%s", diag.has_errors() ? diag.format().c_str() : (pts_path + ": no sensors\n").c_str());
     return 1;
   }
-  const Tracer tracer(project_path);
+  const Tracer tracer(project_path, mf);
   const sky::PatchBasis& basis = tracer.basis;
   const std::size_t bins = std::size_t(basis.bin_count());
 
   // Sky 0: dayphoton's CIE overcast vector with the project's ground (as `dayphoton run`'s
   // daylight factor); sky 1: RADIANCE's (gensky -c -B 55.866 -g 0.2 | genskyvec -m 1), if present.
   const double rho = tracer.proj.simulation.ground_reflectance;
-  const auto overcast = sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(HorizontalLux));
-  std::vector<std::vector<Vec3>> skies{vector_rgb(
-      sky::sky_vector(*overcast, basis, sky::ground_radiance_rgb({rho, rho, rho}, HorizontalLux, 0, {0, 0, -1})))};
+  // Sky 1: the same sky continuous (the CIE overcast luminance at the escape direction, the
+  // same uniform ground below the horizon), so that sky 1 - sky 0 is the basis's error.
+  const std::shared_ptr<const sky::SkyModel> overcast =
+      sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(HorizontalLux));
+  const Vec3 ground = sky::ground_radiance_rgb({rho, rho, rho}, HorizontalLux, 0, {0, 0, -1});
+  std::vector<SkyRadiance> skies{binned(basis, vector_rgb(sky::sky_vector(*overcast, basis, ground))),
+                                 continuous(overcast, ground)};
   const std::string radiance_vector = shared + "/refdata/results/a_daylight_factor/skyvec_overcast_m1.vec";
-  const bool have_radiance = std::ifstream(radiance_vector).good();
-  if (have_radiance) skies.push_back(vector_rgb(RadianceMatrix::read_file(radiance_vector)));
+  const bool have_radiance = mf == 1 && std::ifstream(radiance_vector).good();  // a Tregenza vector
+  if (have_radiance) skies.push_back(binned(basis, vector_rgb(RadianceMatrix::read_file(radiance_vector))));
 
   std::vector<SensorSums> sums(sensors.size());
   const auto t0 = Clock::now();
@@ -239,27 +350,32 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
   std::printf("backward reference: %s, %zu sensors from %s, %zu paths per sensor, seed %llu, %.1f s, %.3g rays/s\n",
               project_path.c_str(), sensors.size(), pts_path.c_str(), paths, static_cast<unsigned long long>(seed),
               seconds, double(rays) / seconds);
-  std::printf("index      x       y       z      nx      ny      nz   DF cie %%  (+-se)     DF radiance %% (+-se)\n");
+  std::printf("index      x       y       z      nx      ny      nz   DF cie %%  (+-se)     DF radiance %% (+-se)"
+              "   continuous cie / cie (+-se)\n");
   double worst_relative_se = 0, sum_relative_se2 = 0;
   std::ostringstream csv;
-  csv << "index,x,y,z,nx,ny,nz,df_cie_percent,df_cie_se_percent,df_radiance_percent,df_radiance_se_percent\n";
+  csv << "index,x,y,z,nx,ny,nz,df_cie_percent,df_cie_se_percent,df_radiance_percent,df_radiance_se_percent,"
+         "df_cie_continuous_percent,df_cie_continuous_se_percent,df_cie_continuous_minus_cie_se_percent\n";
   csv << std::setprecision(17);
   for (std::size_t k = 0; k < sensors.size(); ++k) {
     const SensorPoint& sp = sensors[k];
     const auto [cie, cie_se] = df_percent(sums[k], 0, paths);
+    const auto [cont, cont_se] = df_percent(sums[k], 1, paths);
+    const double difference_se = std::sqrt(df_moments(sums[k], 1, 0, 1, paths).second);
     std::optional<std::pair<double, double>> rad;
-    if (have_radiance) rad = df_percent(sums[k], 1, paths);
+    if (have_radiance) rad = df_percent(sums[k], 2, paths);
     const double relative = cie > 0 ? cie_se / cie : 0;
     worst_relative_se = std::max(worst_relative_se, relative);
     sum_relative_se2 += relative * relative;
-    std::printf("%5zu %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f  %8.4f (+-%.4f)   %s\n", k, sp.position.x, sp.position.y,
-                sp.position.z, sp.normal.x, sp.normal.y, sp.normal.z, cie, cie_se,
-                rad ? (fixed(rad->first, 4) + " (+-" + fixed(rad->second, 4) + ")").c_str() : "-");
+    std::printf("%5zu %7.3f %7.3f %7.3f %7.3f %7.3f %7.3f  %8.4f (+-%.4f)   %s   %s\n", k, sp.position.x,
+                sp.position.y, sp.position.z, sp.normal.x, sp.normal.y, sp.normal.z, cie, cie_se,
+                rad ? (fixed(rad->first, 4) + " (+-" + fixed(rad->second, 4) + ")").c_str() : "-",
+                cie > 0 ? (fixed(cont / cie, 4) + " (+-" + fixed(difference_se / cie, 4) + ")").c_str() : "-");
     csv << k << ',' << sp.position.x << ',' << sp.position.y << ',' << sp.position.z << ',' << sp.normal.x << ','
         << sp.normal.y << ',' << sp.normal.z << ',' << std::setprecision(6) << cie << ',' << cie_se << ',';
     if (rad) csv << rad->first << ',' << rad->second;
     else csv << ',';
-    csv << std::setprecision(17) << '\n';
+    csv << ',' << cont << ',' << cont_se << ',' << difference_se << std::setprecision(17) << '\n';
   }
   std::printf("relative standard error of the DF (cie): RMS over sensors %.3f %%, largest %.3f %%\n",
               100 * std::sqrt(sum_relative_se2 / double(sensors.size())), 100 * worst_relative_se);
@@ -277,7 +393,7 @@ int run_pts(int argc, char** argv, const std::string& source_dir, const std::str
       for (std::size_t p = 0; p < bins; ++p)
         for (int c = 0; c < 3; ++c) out.at(k, p, c) = float(sums[k].coeff[p][c] / double(paths));
     out.header_lines().push_back("office_backward_reference --pts " + pts_path + " --paths " + std::to_string(paths) +
-                                 " --seed " + std::to_string(seed));
+                                 " --seed " + std::to_string(seed) + " --mf " + std::to_string(mf));
     out.write_file(matrix_path, MatrixFormat::Float);
   }
   return 0;
@@ -323,15 +439,30 @@ int main(int argc, char** argv) {
   for (int r = first_row; r <= last_row; ++r)
     for (std::size_t c = 0; c < columns; ++c) sensors.push_back(std::size_t(r) * columns + c);
 
-  // RADIANCE's overcast sky vector (gensky -c -B 55.866 -g 0.2 | genskyvec -m 1), photometric.
-  const RadianceMatrix sv = RadianceMatrix::read_file(shared + "/refdata/results/a_daylight_factor/skyvec_overcast_m1.vec");
+  // Sky 0: RADIANCE's overcast sky vector (gensky -c -B 55.866 -g 0.2 | genskyvec -m 1).
+  // Sky 1: the sky rtrace saw (sky_overcast.rad through skybright.cal), continuous; sky 2: its
+  // exact patch means. Sky 3: dayphoton's DF sky vector (SimulationPlan::daylight_factor_sky,
+  // the project's ground reflectance); sky 4: that sky continuous (CIE overcast, uniform ground).
+  const std::string refdata = shared + "/refdata/results/a_daylight_factor";
+  const RadianceMatrix sv = RadianceMatrix::read_file(refdata + "/skyvec_overcast_m1.vec");
   const std::vector<Vec3> sky_rgb = vector_rgb(sv);
+  const RadianceOvercast radiance_sky = read_radiance_overcast(refdata + "/sky_overcast.rad");
+  const double rho = tracer.proj.simulation.ground_reflectance;
+  const std::shared_ptr<const sky::SkyModel> overcast =
+      sky::make_cie_overcast_sky(sky::SkyScale::horizontal_illuminance_lux(HorizontalLux));
+  const Vec3 ground = sky::ground_radiance_rgb({rho, rho, rho}, HorizontalLux, 0, {0, 0, -1});
+  const std::vector<SkyRadiance> skies{
+      binned(basis, sky_rgb),
+      [radiance_sky](const Vec3& d) { return Vec3{1, 1, 1} * radiance_sky(d.z); },
+      binned(basis, radiance_overcast_means(radiance_sky, basis)),
+      binned(basis, vector_rgb(sky::sky_vector(*overcast, basis, ground))),
+      continuous(overcast, ground)};
 
   // Per sensor: per-bin sums of pi x throughput, and the DF estimate's first two moments.
   std::vector<SensorSums> sums(sensors.size());
   const auto t0 = Clock::now();
   tbb::parallel_for(std::size_t(0), sensors.size(), [&](std::size_t k) {
-    sums[k] = trace_sensor(tracer, grid.points[sensors[k]], paths, seed, sensors[k], {sky_rgb});
+    sums[k] = trace_sensor(tracer, grid.points[sensors[k]], paths, seed, sensors[k], skies);
   });
   const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   std::uint64_t rays = 0;
@@ -353,10 +484,18 @@ int main(int argc, char** argv) {
   }
   if (!csv_path.empty()) {
     std::ofstream out(csv_path, std::ios::binary);
-    out << "index,df_radiance_percent,df_radiance_se_percent\n" << std::setprecision(6);
+    out << "index,df_radiance_percent,df_radiance_se_percent,df_radiance_continuous_percent,"
+           "df_radiance_continuous_se_percent,df_radiance_patch_mean_percent,df_cie_percent,df_cie_se_percent,"
+           "df_cie_continuous_percent,df_cie_continuous_se_percent\n"
+        << std::setprecision(6);
     for (std::size_t k = 0; k < sensors.size(); ++k) {
-      const auto [df, se] = df_percent(sums[k], 0, paths);
-      out << sensors[k] << ',' << df << ',' << se << '\n';
+      out << sensors[k];
+      for (std::size_t sky = 0; sky < skies.size(); ++sky) {
+        const auto [df, se] = df_percent(sums[k], sky, paths);
+        out << ',' << df;
+        if (sky != 2) out << ',' << se;
+      }
+      out << '\n';
     }
     if (!out) {
       std::fprintf(stderr, "office_backward_reference: cannot write %s\n", csv_path.c_str());
@@ -383,10 +522,9 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < sensors.size(); ++k) {
       if (sensors[k] / columns != std::size_t(r)) continue;
       const std::size_t s = sensors[k];
-      const double mean = sums[k].sum[0] / double(paths);
-      const double v = (sums[k].sum2[0] / double(paths) - mean * mean) / double(paths);
-      bw += mean / 100;  // lux -> DF %
-      var += v / 1e4;
+      const auto [df, se] = df_percent(sums[k], 0, paths);
+      bw += df;
+      var += se * se;
       o += matrix_df(ours, s, 0, bins);
       a += matrix_df(dc, s, 0, bins);
       a2 += matrix_df(dc2, s, 0, bins);
@@ -395,6 +533,36 @@ int main(int argc, char** argv) {
     std::printf("%3d  %4.1f   %8.4f (+-%.4f)     %.4f    %.4f          %.4f           %.4f\n", r,
                 0.5 + 0.5 * r, bw / double(columns), std::sqrt(var) / double(columns), o / bw, a / bw, a2 / bw,
                 rt / bw);
+  }
+  // The continuous skies: ratios of row sums over the same paths, each with the standard error of
+  // the reference's own noise (of a ratio A/B of sums over the same paths: SE(A - (A/B) B) / B).
+  std::printf("row   rtrace/cont.rad (+-se)   cont.rad/means.rad (+-se)   means.rad/genskyvec (+-se)   "
+              "cont.cie/cie vector (+-se)   cont.cie/cont.rad (+-se)\n");
+  auto row_ratio = [&](int r, int a, int b) {
+    double sa = 0, sb = 0;
+    for (std::size_t k = 0; k < sensors.size(); ++k)
+      if (sensors[k] / columns == std::size_t(r)) {
+        sa += df_percent(sums[k], std::size_t(a), paths).first;
+        sb += df_percent(sums[k], std::size_t(b), paths).first;
+      }
+    double var = 0;
+    for (std::size_t k = 0; k < sensors.size(); ++k)
+      if (sensors[k] / columns == std::size_t(r)) var += df_moments(sums[k], a, b, sa / sb, paths).second;
+    return fixed(sa / sb, 4) + " (+-" + fixed(std::sqrt(var) / sb, 4) + ")";
+  };
+  for (int r = first_row; r <= last_row; ++r) {
+    double cont = 0, var = 0, rt = 0;
+    for (std::size_t k = 0; k < sensors.size(); ++k)
+      if (sensors[k] / columns == std::size_t(r)) {
+        const auto [df, se] = df_percent(sums[k], 1, paths);
+        cont += df;
+        var += se * se;
+        rt += ref[sensors[k]];
+      }
+    std::printf("%3d   %s        %s           %s            %s           %s\n", r,
+                (fixed(rt / cont, 4) + " (+-" + fixed(rt / cont * std::sqrt(var) / cont, 4) + ")").c_str(),
+                row_ratio(r, 1, 2).c_str(), row_ratio(r, 2, 0).c_str(), row_ratio(r, 4, 3).c_str(),
+                row_ratio(r, 4, 1).c_str());
   }
   // Per 12-degree band (ground, rows 0..6 of the sky, zenith cap), all chosen sensors.
   std::printf("band     share of bw   ours/bw   rfluxmtx65k/bw  rfluxmtx131k/bw\n");
