@@ -57,7 +57,8 @@ std::string methods_section(const study::ResultsModel& m) {
        "other openings (photon ports) into the model; at every sensor a density estimate of the photons (a "
        "contribution photon map: each photon remembers which patch it came from) gives that patch's daylight "
        "coefficient. Light reaching a sensor straight through an opening is computed separately by shadow rays "
-       "toward the opening. Photons per sky patch: "
+       "toward the opening; for the daylight factor (and a point-in-time CIE sky) each shadow ray takes the sky's "
+       "luminance in its own direction, not its patch's mean. Photons per sky patch: "
     << esc(setting(m, "photons per bin").empty() ? "see the appendix" : setting(m, "photons per bin"))
     << "; photons per density estimate: " << esc(setting(m, "bandwidth").empty() ? "-" : setting(m, "bandwidth"))
     << ". Materials act on visible light in three colour channels (RGB); reported values are photometric.</p>";

@@ -30,6 +30,7 @@
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/simulation_plan.h"
 #include "dayphoton/study/distributed_executor.h"
 #include "dayphoton/study/plan_policy.h"
 #include "counting_round_work.h"
@@ -216,10 +217,10 @@ TEST(AccuracyTarget, MetAndConsistentWithTheSpreadOfThreeSeeds) {
     EXPECT_LE(r.outcome.reached_percent[0], Target);
     EXPECT_GE(r.outcome.rounds, 2u) << "the pilot alone met the target: the test checks no round";
     const engine::DaylightCoefficients& c = r.coefficients[0];
-    std::vector<double> v(c.sensors * c.sources);
-    for (std::size_t i = 0; i < v.size(); ++i) v[i] = c.direct_variance[i] + c.photon_variance[i];
-    const std::vector<double> se = daylight_factor_stderr_percent(v, c.sensors, office.overcast, 10000.0);
-    df.push_back(df_of(c, office.overcast));
+    // As the study writes daylight_factor.csv (study_runner.cpp).
+    const DaylightFactorParts parts = daylight_factor_parts(c, office.overcast, 10000.0, DaylightFactorSkyIndex);
+    const std::vector<double> se = parts.stderr_percent();
+    df.push_back(parts.df_percent);
     EXPECT_NEAR(percentile_relative_stderr_percent(df.back(), se, AccuracyPercentile), r.outcome.reached_percent[0], 1e-9);
     std::vector<double> se2(se.size());
     for (std::size_t i = 0; i < se.size(); ++i) se2[i] = se[i] * se[i];
