@@ -72,23 +72,28 @@ std::vector<std::vector<double>> read_csv(const fs::path& path, std::vector<std:
   return rows;
 }
 
+/// Writes `yaml` as dir/project.yaml and runs it into dir/out (a fresh dir).
+void run_project(const fs::path& dir, const std::string& yaml) {
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "project.yaml") << yaml;
+  project::LoadOptions options;
+  options.output_folder_overridden = true;
+  const project::Project project = project::load_project((dir / "project.yaml").string(), options);
+  RunSettings settings;
+  settings.output_dir = (dir / "out").string();
+  std::ostringstream quiet;
+  Progress progress(quiet, ProgressStyle::Quiet);
+  run_study(project, settings, progress);
+}
+
 class PointInTime : public ::testing::Test {
  protected:
   // One run for both tests.
   static void SetUpTestSuite() {
     s_dir = test::process_temp_dir() /
             ("dayphoton_point_in_time_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-    fs::remove_all(s_dir);
-    fs::create_directories(s_dir);
-    std::ofstream(s_dir / "project.yaml") << Project;
-    project::LoadOptions options;
-    options.output_folder_overridden = true;
-    const project::Project project = project::load_project((s_dir / "project.yaml").string(), options);
-    RunSettings settings;
-    settings.output_dir = (s_dir / "out").string();
-    std::ostringstream quiet;
-    Progress progress(quiet, ProgressStyle::Quiet);
-    run_study(project, settings, progress);
+    run_project(s_dir, Project);
     std::vector<std::string> header;
     s_df = read_csv(s_dir / "out" / "floor" / "daylight_factor.csv", header);
     s_pit = read_csv(s_dir / "out" / "floor" / "point_in_time.csv", s_pit_header);
@@ -178,10 +183,8 @@ TEST_F(PointInTime, NoSunStepAndTheTimesAreNotAResult) {
 TEST(PointInTimeSkyComponent, ACieClearSkysSkyComponentIsTheContinuousSkys) {
   const fs::path dir = test::process_temp_dir() / ("dayphoton_point_in_time_clear_" +
                                                    std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "project.yaml")
-      << "site: {latitude: 37.72, longitude: -122.22, time_zone: -8}\n"
+  run_project(dir,
+      "site: {latitude: 37.72, longitude: -122.22, time_zone: -8}\n"
          "study: daylight_factor\n"
          "materials:\n"
          "  black: {type: lambertian, reflectance: 0}\n"
@@ -200,15 +203,7 @@ TEST(PointInTimeSkyComponent, ACieClearSkysSkyComponentIsTheContinuousSkys) {
          "outputs: {images: false, report: false}\n"
          "points_in_time:\n"
          "  - {name: clear, date: 12-21, time: \"12:00\", sky: cie, cie_type: 12, diffuse_horizontal_illuminance: 10000,\n"
-         "     direct_normal_illuminance: 0}\n";
-  project::LoadOptions options;
-  options.output_folder_overridden = true;
-  const project::Project project = project::load_project((dir / "project.yaml").string(), options);
-  RunSettings settings;
-  settings.output_dir = (dir / "out").string();
-  std::ostringstream quiet;
-  Progress progress(quiet, ProgressStyle::Quiet);
-  run_study(project, settings, progress);
+         "     direct_normal_illuminance: 0}\n");
   std::vector<std::string> header;
   const std::vector<std::vector<double>> rows = read_csv(dir / "out" / "depth" / "point_in_time.csv", header);
   fs::remove_all(dir);
