@@ -15,27 +15,16 @@
 #include "dayphoton/study/accuracy_rounds.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/simulation_plan.h"
+#include "placement_project_text.h"
 
 namespace dayphoton::study {
 namespace {
 
 /// A 6 x 8 m room, a grid every 0.5 m from 0.5 m, and (with `column`) a 0.3 m column at x
-/// 2.6-2.9, y 3.6-3.9: the sensor at (2.5, 3.5) lies 0.141 m from its corner, (3, 3.5) 0.1 m and
-/// (2.5, 4) 0.1 m from its faces, (3, 4) 0.141 m; the next ones 0.35 m or more.
+/// 2.6-2.9, y 3.6-3.9: the four sensors around it, x 2.5 or 3, y 3.5 or 4, lie 0.141 m from its
+/// corners; the next ones 0.6 m or more.
 std::string project_text(bool column, const std::string& point_estimate) {
-  std::string text = R"(site: {latitude: 37.72, longitude: -122.22, time_zone: -8}
-study: daylight_factor
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glazing: {type: glass, transmittance: 0.6}
-geometry:
-  rooms:
-    - name: office
-      size: [6, 8, 3]
-      materials: {floor: walls, ceiling: walls, walls: walls}
-      windows:
-        - {name: south, wall: south, width: 4, height: 1.5, sill: 0.9, material: glazing}
-)";
+  std::string text = PlacementHead + "study: daylight_factor\n" + PlacementOffice;
   if (column) text += "  boxes:\n    - {name: column, origin: [2.6, 3.6, 0], size: [0.3, 0.3, 3], material: walls}\n";
   text += "sensors:\n  grids:\n    - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5}\n";
   text += "simulation: {point_estimate: " + point_estimate + "}\n";

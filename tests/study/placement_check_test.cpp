@@ -12,26 +12,14 @@
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/placement_check.h"
+#include "placement_project_text.h"
 #include "../temp_folder.h"
 
 namespace dayphoton::study {
 namespace {
 
-const std::string Head = R"(site: {latitude: 37.72, longitude: -122.22, time_zone: -8}
-outputs: {annual_illuminance: false, metrics: false}
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glazing: {type: glass, transmittance: 0.6}
-)";
-
-const std::string Office = R"(geometry:
-  rooms:
-    - name: office
-      size: [6, 8, 3]
-      materials: {floor: walls, ceiling: walls, walls: walls}
-      windows:
-        - {name: south, wall: south, width: 4, height: 1.5, sill: 0.9, material: glazing}
-)";
+const std::string& Head = PlacementHead;
+const std::string& Office = PlacementOffice;
 
 struct Outcome {
   std::vector<std::string> errors;  ///< "line:col: message"
