@@ -201,6 +201,8 @@ ModelSummary summarize_model(const project::Project& proj) {
     if (set.dropped) s.placement_lines.push_back(set.description);
   // Outlines past the walls, exterior geometry that only shades: printed with the scene's warnings.
   s.scene.warnings.insert(s.scene.warnings.end(), placement.warnings.begin(), placement.warnings.end());
+  // Sensors next to a cut, gathered: printed as notes.
+  s.scene.warnings.insert(s.scene.warnings.end(), placement.notes.begin(), placement.notes.end());
   auto area_of = [&](const std::string& surface_name) {
     for (const Surface& surface : s.scene.surfaces)
       if (surface.name == surface_name) return polygon_area_m2(surface.vertices);
@@ -371,7 +373,8 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
   for (const std::string& line : s.placement_lines) out << "  " << line << '\n';
   // What an imported RADIANCE scene left out or approximated (docs/radiance-import.md).
   for (const Diagnostic& w : s.scene.warnings)
-    out << "warning  " << w.location.to_string() << ": " << w.message << '\n';
+    out << (w.severity == Severity::Note ? "note     " : "warning  ") << w.location.to_string() << ": " << w.message
+        << '\n';
   if (!s.point_in_time_lines.empty()) {
     out << "points in time " << s.point_in_time_lines.size() << '\n';
     for (const std::string& line : s.point_in_time_lines) out << "  " << line << '\n';

@@ -14,6 +14,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/estimate_variance.h"
 #include "dayphoton/engine/local_quadratic_fit.h"
+#include "dayphoton/engine/plane_cuts.h"
 #include "dayphoton/engine/plane_visibility.h"
 
 namespace dayphoton::engine {
@@ -206,6 +207,14 @@ GridPhotons GridPhotons::for_gather(std::vector<Photon> surface_photons, std::si
                  [&] { g.m_all->map = PhotonMap(std::move(surface_photons), tree_to_input); });
   g.m_groups.to_tree_order(tree_to_input);
   return g;
+}
+
+void GridPhotons::set_near_cut_gather(std::shared_ptr<const GridPhotons> gather) {
+  if (!m_plane) throw std::invalid_argument("near-cut gather photons: only a receiver plane's sensors are gathered");
+  if (gather && (!gather->gather() || gather->source_count() != m_source_count))
+    throw std::invalid_argument("near-cut gather photons: gather photons of " + std::to_string(m_source_count) +
+                                " sources are needed");
+  m_near_cut_gather = std::move(gather);
 }
 
 const PhotonMap& GridPhotons::all() const {
@@ -662,6 +671,23 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
                          const CoefficientOptions& options, DaylightCoefficients& out, SensorRange rows) {
   if (!photons.gather()) {
     estimate_photon_coefficients(photons, sensors, options, out, rows);
+    const GridPhotons* gather = photons.near_cut_gather();
+    if (!gather) return;
+    // The sensors next to a cut (header comment): their rows replaced by the final gather's.
+    rows = rows.within(sensors.size());
+    const std::vector<std::size_t> near = sensors_near_cuts(*photons.plane(), sensors, rows);
+    if (near.empty()) return;
+    // From the sensor's position about its normal, the plane's (SensorGrid::planar).
+    const GatheredCoefficients g = gather_photon_coefficients_at(scene, materials, sources, gather->all(), sensors,
+                                                                 options.gather, &gather->groups(), near);
+    const std::size_t n = out.sources;
+    for (std::size_t r = 0; r < near.size(); ++r)
+      for (std::size_t p = 0; p < n; ++p) {
+        const std::size_t i = (near[r] - rows.begin) * n + p;
+        out.caustic[i] = g.caustic[r * n + p];
+        out.global[i] = g.global[r * n + p];
+        out.photon_variance[i] = g.variance[r * n + p];
+      }
     return;
   }
   GatheredCoefficients g = gather_photon_coefficients(scene, materials, sources, photons.all(), sensors, options.gather,

@@ -314,11 +314,13 @@ void PhotonGroups::to_tree_order(const std::vector<std::uint32_t>& tree_to_input
   group_of = std::move(in_tree);
 }
 
-GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::vector<Material>& materials,
-                                                const SourceSet& sources, const PhotonMap& surface_photons,
-                                                const std::vector<SensorPoint>& sensors,
-                                                const GatherOptions& options, const PhotonGroups* groups,
-                                                SensorRange rows) {
+namespace {
+
+/// The gather at sensors[which[r]] into row r.
+GatheredCoefficients gather_rows(const Scene& scene, const std::vector<Material>& materials, const SourceSet& sources,
+                                 const PhotonMap& surface_photons, const std::vector<SensorPoint>& sensors,
+                                 const GatherOptions& options, const PhotonGroups* groups,
+                                 const std::vector<std::size_t>& which) {
   if (options.rays_per_sensor < 1 || options.bandwidth < 1)
     throw std::invalid_argument("final gather: at least 1 ray per sensor and 1 photon per lookup are needed");
   if (materials.size() < scene.description().materials.size())
@@ -326,10 +328,9 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
   int k = static_cast<int>(std::sqrt(static_cast<double>(options.rays_per_sensor)));
   while (k * k < options.rays_per_sensor) ++k;
   const std::size_t n_src = sources.size();
-  rows = rows.within(sensors.size());
   GatheredCoefficients out;
-  out.caustic.assign(rows.size() * n_src, Vec3{});
-  out.global.assign(rows.size() * n_src, Vec3{});
+  out.caustic.assign(which.size() * n_src, Vec3{});
+  out.global.assign(which.size() * n_src, Vec3{});
   GatherOptions effective = options;
   effective.rays_per_sensor = k * k;
   const Vec3 ray_weight = Vec3{1, 1, 1} * (1.0 / (double(k) * k));
@@ -344,20 +345,22 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
   if (groups) {
     if (groups->group_of.size() != surface_photons.size())
       throw std::invalid_argument("final gather: the photon groups are not those of the map");
-    out.variance.assign(rows.size() * n_src, 0.0);
-    out.fixed_photon_variance.assign(rows.size() * n_src, 0.0);
+    out.variance.assign(which.size() * n_src, 0.0);
+    out.fixed_photon_variance.assign(which.size() * n_src, 0.0);
   }
   // Scratch of the variance per thread (sized by the groups, reset after each sensor, so
   // which thread runs a sensor changes nothing).
   tbb::enumerable_thread_specific<std::unique_ptr<GatherVariance>> scratch;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(rows.begin, rows.end), [&](const tbb::blocked_range<std::size_t>& range) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size()), [&](const tbb::blocked_range<std::size_t>& range) {
     SensorSums sums;
     if (groups) {
       std::unique_ptr<GatherVariance>& v = scratch.local();
       if (!v) v = std::make_unique<GatherVariance>(*groups, n_src, k, options.variance_weights);
       sums.variance = v.get();
     }
-    for (std::size_t s = range.begin(); s != range.end(); ++s) {
+    for (std::size_t at_row = range.begin(); at_row != range.end(); ++at_row) {
+      const std::size_t s = which[at_row];
+      if (s >= sensors.size()) throw std::invalid_argument("final gather: a sensor index is not within the grid");
       const double len = length(sensors[s].normal);
       if (!is_finite(sensors[s].normal) || !(len > 0.0) || !is_finite(sensors[s].position))
         throw std::invalid_argument("final gather: a sensor needs a finite position and a finite non-zero normal");
@@ -380,20 +383,41 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
           if (sums.variance) sums.variance->end_ray();
         }
       if (sums.variance) {
-        double* row = out.variance.data() + (s - rows.begin) * n_src;
-        double* fixed = out.fixed_photon_variance.data() + (s - rows.begin) * n_src;
+        double* row = out.variance.data() + at_row * n_src;
+        double* fixed = out.fixed_photon_variance.data() + at_row * n_src;
         sums.variance->end_sensor(row, fixed);
         for (std::size_t p = 0; p < n_src; ++p) {
           row[p] = std::max(0.0, row[p]);
           fixed[p] = std::clamp(fixed[p], 0.0, row[p]);
         }
       }
-      const auto at = static_cast<std::ptrdiff_t>((s - rows.begin) * n_src);
+      const auto at = static_cast<std::ptrdiff_t>(at_row * n_src);
       std::copy(sums.caustic.begin(), sums.caustic.end(), out.caustic.begin() + at);
       std::copy(sums.global.begin(), sums.global.end(), out.global.begin() + at);
     }
   });
   return out;
+}
+
+}  // namespace
+
+GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::vector<Material>& materials,
+                                                const SourceSet& sources, const PhotonMap& surface_photons,
+                                                const std::vector<SensorPoint>& sensors,
+                                                const GatherOptions& options, const PhotonGroups* groups,
+                                                SensorRange rows) {
+  rows = rows.within(sensors.size());
+  std::vector<std::size_t> which(rows.size());
+  for (std::size_t r = 0; r < which.size(); ++r) which[r] = rows.begin + r;
+  return gather_rows(scene, materials, sources, surface_photons, sensors, options, groups, which);
+}
+
+GatheredCoefficients gather_photon_coefficients_at(const Scene& scene, const std::vector<Material>& materials,
+                                                const SourceSet& sources, const PhotonMap& surface_photons,
+                                                const std::vector<SensorPoint>& sensors,
+                                                const GatherOptions& options, const PhotonGroups* groups,
+                                                const std::vector<std::size_t>& which) {
+  return gather_rows(scene, materials, sources, surface_photons, sensors, options, groups, which);
 }
 
 }  // namespace dayphoton::engine

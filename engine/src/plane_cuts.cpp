@@ -5,6 +5,7 @@
 #include <array>
 #include <map>
 #include <cmath>
+#include <limits>
 
 namespace dayphoton::engine {
 namespace {
@@ -106,6 +107,23 @@ std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const Receiver
   for (const auto& [edge, sides] : in_plane_edges)
     if (sides == 3) add_inside_pieces(plane, {{edge[0], edge[1]}, {edge[2], edge[3]}}, cuts);
   return cuts;
+}
+
+double distance_to_interior_cut_m(const ReceiverPlane& plane, double x, double y) {
+  double nearest_m = std::numeric_limits<double>::infinity();
+  for (const PlaneSegment& cut : plane.interior_cuts()) nearest_m = std::min(nearest_m, distance_to_segment_m(x, y, cut.a, cut.b));
+  return nearest_m;
+}
+
+std::vector<std::size_t> sensors_near_cuts(const ReceiverPlane& plane, const std::vector<SensorPoint>& sensors,
+                                           SensorRange rows) {
+  rows = rows.within(sensors.size());
+  std::vector<std::size_t> near;
+  if (plane.interior_cuts().empty()) return near;
+  for (std::size_t s = rows.begin; s < rows.end; ++s)
+    if (distance_to_interior_cut_m(plane, sensors[s].position.x, sensors[s].position.y) < NearCutGather_m)
+      near.push_back(s);
+  return near;
 }
 
 }  // namespace dayphoton::engine

@@ -1,6 +1,11 @@
 // Which grids the accuracy rounds chase: see accuracy_policy.h.
 #include "dayphoton/study/accuracy_policy.h"
 
+#include <algorithm>
+
+#include "dayphoton/engine/plane_cuts.h"
+#include "accuracy_round_loop.h"
+
 namespace dayphoton::study {
 
 bool grid_chased_by_photons(const std::vector<int>& plane_of_grid, bool gather, std::size_t g) {
@@ -16,6 +21,33 @@ std::string met_stop_reason(const std::vector<std::string>& grid_status) {
   for (const std::string& s : grid_status)
     if (s != "met") return "not reachable by photons";
   return "target met";
+}
+
+std::size_t near_cut_count(const std::vector<int>& plane_of_grid, const std::vector<std::size_t>* near_cut_sensors,
+                           std::size_t g) {
+  const int plane = g < plane_of_grid.size() ? plane_of_grid[g] : -1;
+  if (!near_cut_sensors || plane < 0 || std::size_t(plane) >= near_cut_sensors->size()) return 0;
+  return (*near_cut_sensors)[std::size_t(plane)];
+}
+
+std::vector<std::size_t> near_cut_rows(const std::vector<engine::ReceiverPlane>& planes,
+                                       const std::vector<int>& plane_of_grid,
+                                       const std::vector<std::size_t>* near_cut_sensors,
+                                       const std::vector<SensorPoint>& points, std::size_t g) {
+  if (near_cut_count(plane_of_grid, near_cut_sensors, g) == 0) return {};
+  return engine::sensors_near_cuts(planes.at(std::size_t(plane_of_grid[g])), points);
+}
+
+std::string take_out_near_cut_rows(const std::vector<std::size_t>& rows, std::vector<double>& value,
+                                   const std::vector<double>& stderr_value) {
+  if (rows.empty()) return "";
+  double largest = 0;
+  for (std::size_t i : rows) {
+    if (i >= value.size()) continue;
+    if (value[i] > 0 && i < stderr_value.size()) largest = std::max(largest, 100.0 * stderr_value[i] / value[i]);
+    value[i] = 0;
+  }
+  return "; " + std::to_string(rows.size()) + " sensors next to a cut gathered, largest " + round_number(largest) + " %";
 }
 
 }  // namespace dayphoton::study

@@ -307,7 +307,8 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   // Each round: every grid estimated from the photons so far, its DF and their variances.
   const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
                                    const std::vector<double>& scale) {
-    RoundGridMaps maps(*c.planes, *c.plane_of_grid, c.gather, round_photons(records, false), scale);
+    RoundGridMaps maps(*c.planes, *c.plane_of_grid, c.gather, round_photons(records, false), scale,
+                       c.near_cut_sensors ? *c.near_cut_sensors : std::vector<std::size_t>{});
     chased_grid.clear();
     result.coefficients.assign(grids.size(), {});
     result.outcome.reached_percent.assign(grids.size(), 0.0);
@@ -322,16 +323,20 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
       GridVariance v;
       DaylightFactorParts parts =
           daylight_factor_parts(dc, *c.overcast_vector, c.horizontal_illuminance_lux, DaylightFactorSkyIndex);
-      const std::vector<double> stderr_percent = parts.stderr_percent();
+      std::vector<double> stderr_percent = parts.stderr_percent();
       v.df_percent = std::move(parts.df_percent);
       v.direct_variance = std::move(parts.direct_variance);
       v.photon_variance = std::move(parts.photon_variance);
+      // A plane's sensors next to a cut are gathered: out of the measure (accuracy_policy.h).
+      const std::string near_cut = take_out_near_cut_rows(
+          near_cut_rows(*c.planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g), v.df_percent,
+          stderr_percent);
       const double reached = percentile_relative_stderr_percent(v.df_percent, stderr_percent, AccuracyPercentile);
       result.outcome.reached_percent[g] = reached;
       const bool chased = grid_chased_by_photons(*c.plane_of_grid, c.gather, g);
       m.grid_status[g] = accuracy_grid_status(chased, reached, goal.target_percent);
       m.grids += (g ? ", " : " ") + grids[g].name + " " + number(reached) + " %" +
-                 (chased ? "" : " (gathered: its gather rays follow)");
+                 (chased ? "" : " (gathered: its gather rays follow)") + near_cut;
       if (chased) {
         m.met = m.met && reached <= goal.target_percent;
         m.chased.push_back(std::move(v));
@@ -429,9 +434,10 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
   std::vector<std::string> grid_keys;
   // Every grid's coefficients depend on all grids' variances (the rounds serve them all).
   std::string all_grids;
-  for (const SensorGrid& g : grids) all_grids += coefficients_key(keys, g, c.estimating) + ";";
+  auto near_cuts = [&](std::size_t g) { return near_cut_count(*c.plane_of_grid, c.near_cut_sensors, g); };
+  for (std::size_t g = 0; g < grids.size(); ++g) all_grids += coefficients_key(keys, grids[g], c.estimating, near_cuts(g)) + ";";
   for (std::string& k : keys) k += "|" + all_grids;
-  for (const SensorGrid& g : grids) grid_keys.push_back(coefficients_key(keys, g, c.estimating));
+  for (std::size_t g = 0; g < grids.size(); ++g) grid_keys.push_back(coefficients_key(keys, grids[g], c.estimating, near_cuts(g)));
   const std::string outcome_key = grid_keys.empty() ? std::string("none") : grid_keys.front();
   // One step (plan_step.h): the coefficients of every grid, then the outcome. Not a pure
   // function of its inputs when max_seconds stops the rounds; collective, so every process

@@ -2,6 +2,8 @@
 // source locations (which do not change results) are not.
 #include "dayphoton/study/cache_keys.h"
 
+#include "dayphoton/engine/plane_cuts.h"
+
 #include "dayphoton/engine/material_registry.h"
 
 namespace dayphoton::study {
@@ -100,6 +102,12 @@ void add_estimate_options(ContentHash& h, const engine::CoefficientOptions& o) {
   for (const double w : o.gather.variance_weights) h.number(w);
 }
 
+/// A plane's sensors gathered next to a cut (engine/plane_cuts.h): nothing without any.
+void add_near_cut_gather(ContentHash& h, std::size_t near_cut_sensors) {
+  if (near_cut_sensors == 0) return;
+  h.text("near-cut gather").number(engine::NearCutGather_m).integer(static_cast<std::int64_t>(near_cut_sensors));
+}
+
 }  // namespace
 
 std::string photon_source_key(const ContentHash& scene, const ContentHash& planes,
@@ -113,12 +121,13 @@ std::string photon_source_key(const ContentHash& scene, const ContentHash& plane
 }
 
 std::string coefficients_key(const std::vector<std::string>& photon_keys, const SensorGrid& grid,
-                             const engine::CoefficientOptions& o) {
+                             const engine::CoefficientOptions& o, std::size_t near_cut_sensors) {
   ContentHash h;
   h.text("coefficients");
   for (const std::string& k : photon_keys) h.text(k);
   add_grid(h, grid);
   add_estimate_options(h, o);
+  add_near_cut_gather(h, near_cut_sensors);
   return h.hex();
 }
 
@@ -144,7 +153,7 @@ std::string sun_photon_key(const ContentHash& scene, const ContentHash& planes, 
 
 std::string sun_coefficients_key(const std::vector<std::string>& sun_photon_keys,
                                  double minimum_bound_fraction, const SensorGrid& grid,
-                                 const engine::CoefficientOptions& o) {
+                                 const engine::CoefficientOptions& o, std::size_t near_cut_sensors) {
   ContentHash h;
   h.text("sun coefficients");
   h.integer(static_cast<std::int64_t>(sun_photon_keys.size()));
@@ -154,6 +163,7 @@ std::string sun_coefficients_key(const std::vector<std::string>& sun_photon_keys
   add_estimate_options(h, o);
   h.integer(o.local_linear ? 1 : 0).integer(o.bias_compensation ? 1 : 0);
   h.integer(static_cast<std::int64_t>(o.bias_compensation_max_factor)).integer(static_cast<std::int64_t>(o.seed));
+  add_near_cut_gather(h, near_cut_sensors);
   return h.hex();
 }
 

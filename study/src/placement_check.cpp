@@ -91,37 +91,34 @@ void check_outline(const engine::Scene& scene, const SensorGrid& grid, double no
           "the room's inside faces"));
 }
 
-/// Receiver-plane sensors within NearCutWarning_m of a surface crossing the plane (header
-/// comment): one warning per set, with the count and the nearest.
-void check_near_cuts(const engine::Scene& scene, const SensorGrid& grid, double north_deg,
-                     std::vector<Diagnostic>& warnings) {
+/// Receiver-plane sensors within engine::NearCutGather_m of a surface crossing the plane
+/// (header comment): one located note per set, with the count and the nearest.
+void note_near_cuts(const engine::Scene& scene, const SensorGrid& grid, double north_deg,
+                    std::vector<Diagnostic>& notes) {
   if (!grid.planar || grid.points.empty()) return;
-  const engine::ReceiverPlane plane = engine::ReceiverPlane::from_grid(grid);
-  const std::vector<engine::PlaneSegment> cuts = engine::interior_plane_cuts(scene, plane);
-  if (cuts.empty()) return;
-  std::size_t near = 0, nearest_sensor = 0;
-  double nearest_m = NearCutWarning_m;
-  for (std::size_t i = 0; i < grid.points.size(); ++i) {
+  engine::ReceiverPlane plane = engine::ReceiverPlane::from_grid(grid);
+  plane.set_interior_cuts(engine::interior_plane_cuts(scene, plane));
+  const std::vector<std::size_t> near = engine::sensors_near_cuts(plane, grid.points);
+  if (near.empty()) return;
+  std::size_t nearest_sensor = near.front();
+  double nearest_m = engine::NearCutGather_m;
+  for (std::size_t i : near) {
     const Vec3& p = grid.points[i].position;
-    double d_m = NearCutWarning_m;
-    for (const engine::PlaneSegment& cut : cuts) d_m = std::min(d_m, engine::distance_to_segment_m(p.x, p.y, cut.a, cut.b));
-    if (!(d_m < NearCutWarning_m)) continue;
-    ++near;
+    const double d_m = engine::distance_to_interior_cut_m(plane, p.x, p.y);
     if (d_m < nearest_m) nearest_m = d_m, nearest_sensor = i;
   }
-  if (near == 0) return;
-  warnings.push_back(warning_at(
+  Diagnostic d = warning_at(
       grid.location,
-      "sensor set '" + grid.name + "': " + std::to_string(near) + " of " + std::to_string(grid.points.size()) +
-          " sensors lie within " + format_number(NearCutWarning_m) +
+      "sensor set '" + grid.name + "': " + std::to_string(near.size()) + " of " + std::to_string(grid.points.size()) +
+          " sensors lie within " + format_number(engine::NearCutGather_m) +
           " m of a surface that crosses the work plane (a column, a partition, furniture), the nearest, sensor " +
           std::to_string(nearest_sensor) + " at " +
           point_text(project::world_to_model(grid.points[nearest_sensor].position, north_deg)) + " m, " +
           format_number(std::round(nearest_m * 1000) / 1000) +
-          " m from it; there the light on the plane changes faster than the photon estimate's disc follows, and "
-          "the estimate can be off beyond its stated error (0.1 m from a column: -9 % in front of it, +19 % "
-          "behind it). Keep the grid that far clear of it, or place sensors there as a point set "
-          "(sensors.points, estimated by final gather)"));
+          " m from it; there the light on the plane changes faster than the photon estimate's disc follows, so "
+          "they are estimated by final gather from their own position, as a point set is");
+  d.severity = Severity::Note;
+  notes.push_back(std::move(d));
 }
 
 /// Cosine-distributed direction of the stratum (i, j) of a k x k lattice about `normal`
@@ -369,7 +366,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
       }
     }
     check_outline(scene, grid, north_deg, out.warnings);
-    check_near_cuts(scene, grid, north_deg, out.warnings);
+    note_near_cuts(scene, grid, north_deg, out.notes);
     out.sets.push_back(std::move(set));
   }
   check_exterior_geometry(scene, out.warnings);

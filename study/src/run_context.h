@@ -88,8 +88,9 @@ struct CaseScene {
   ContentHash planes_hash;  ///< cache_keys.h planes_key
 };
 
-/// The photons grid `g` of a case is estimated from: its plane's crossings, or the surface
-/// photons for a final gather or a surface estimate; `sources` sources.
+/// The photons grid `g` of a case is estimated from: its plane's crossings (and the surface
+/// photons for a final gather at its sensors next to a cut, CaseLayout::near_cut_sensors), or
+/// the surface photons for a final gather or a surface estimate; `sources` sources.
 engine::GridPhotons grid_photons_for(std::size_t g, const CaseLayout& layout, const engine::TracedPhotons& photons,
                                      std::size_t sources, project::PointEstimate estimate);
 

@@ -85,12 +85,29 @@ CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids, const engine::Sc
                           const std::vector<engine::Material>& materials) {
   CaseLayout l = of(grids);
   for (engine::ReceiverPlane& plane : l.planes) plane.set_interior_cuts(engine::interior_plane_cuts(scene, plane));
+  // The planar grids' sensors next to a cut, gathered from the surface photons.
+  l.near_cut_sensors.assign(l.planes.size(), 0);
+  for (std::size_t g = 0; g < grids.size(); ++g)
+    if (const int plane = l.plane_of_grid[g]; plane >= 0)
+      l.near_cut_sensors[std::size_t(plane)] = engine::sensors_near_cuts(l.planes[std::size_t(plane)], grids[g].points).size();
+  if (l.gathers_near_cuts()) l.keep_surface_photons = true;
   // Every grid's sensors, the planar ones included (they gather nothing: it only keeps more).
   std::vector<Vec3> sensors;
   for (const SensorGrid& g : grids)
     for (const SensorPoint& p : g.points) sensors.push_back(p.position);
   l.gathered_scatterer_sides = engine::gathered_scatterer_sides(scene, materials, sensors);
   return l;
+}
+
+bool CaseLayout::gathers_near_cuts() const {
+  for (std::size_t n : near_cut_sensors)
+    if (n > 0) return true;
+  return false;
+}
+
+bool CaseLayout::grid_gathers_near_cuts(std::size_t g) const {
+  const int plane = g < plane_of_grid.size() ? plane_of_grid[g] : -1;
+  return plane >= 0 && std::size_t(plane) < near_cut_sensors.size() && near_cut_sensors[std::size_t(plane)] > 0;
 }
 
 std::vector<double> sky_photon_factors(std::size_t sources) {
@@ -171,7 +188,8 @@ engine::ContinuousSky SimulationPlan::daylight_factor_continuous_sky() const {
 engine::TracingOptions SimulationPlan::tracing_for(const engine::TracingOptions& base, const CaseLayout& layout) const {
   engine::TracingOptions o = base;
   o.keep_surface_photons = layout.keep_surface_photons;
-  o.store_direct_on_surfaces = layout.keep_surface_photons && point_estimate == project::PointEstimate::Gather;
+  o.store_direct_on_surfaces =
+      layout.keep_surface_photons && (point_estimate == project::PointEstimate::Gather || layout.gathers_near_cuts());
   if (o.store_direct_on_surfaces) o.scatterer_direct_sides = layout.gathered_scatterer_sides;
   return o;
 }

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "dayphoton/engine/port_emission.h"
+#include "dayphoton/study/accuracy_policy.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/photon_range_step.h"
@@ -37,7 +38,8 @@ void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, con
   for (std::size_t g = 0; g < grids.size(); ++g) {
     const SensorGrid& grid = grids[g];
     grid_steps.push_back(make_step(
-        StepKind::SkyCoefficients, g, {"coefficients", coefficients_key(photon_keys, grid, plan.sky_estimating)},
+        StepKind::SkyCoefficients, g, {"coefficients", coefficients_key(photon_keys, grid, plan.sky_estimating,
+                                                                 near_cut_count(cs.layout.plane_of_grid, &cs.layout.near_cut_sensors, g))},
         coefficients[g],
         [&cs, &sources, &photons, &plan, &grid, g] {
           const engine::GridPhotons grid_photons =
@@ -144,6 +146,7 @@ AccuracyOutcome accuracy_sky_coefficients(const project::Project& project, const
   c.sources = &sources;
   c.planes = &cs.layout.planes;
   c.plane_of_grid = &cs.layout.plane_of_grid;
+  c.near_cut_sensors = &cs.layout.near_cut_sensors;
   c.grids = &grids;
   c.gather = ctx.plan.point_estimate == project::PointEstimate::Gather;
   c.tracing = tracing;

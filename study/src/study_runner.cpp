@@ -138,6 +138,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     log.line(prefix + "warning: " + w.location.to_string() + ": " + w.message);
     report.notes.push_back(prefix + "warning: " + w.message);
   }
+  for (const Diagnostic& n : placement.notes) log.line(prefix + "note: " + n.location.to_string() + ": " + n.message);
   std::vector<engine::Material> materials;
   for (const MaterialSpec& m : description.materials)
     materials.push_back(engine::Material::from_spec(m));

@@ -210,7 +210,8 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   // annual measure (the target's) and the hourly one (reported).
   const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
                                    const std::vector<double>& scale) {
-    RoundGridMaps maps(planes, *c.plane_of_grid, c.gather, round_photons(records, true), scale);
+    RoundGridMaps maps(planes, *c.plane_of_grid, c.gather, round_photons(records, true), scale,
+                       c.near_cut_sensors ? *c.near_cut_sensors : std::vector<std::size_t>{});
     result.coefficients.assign(grids.size(), {});
     result.variance.assign(grids.size(), {});
     o.reached_percent.assign(grids.size(), 0.0);
@@ -238,11 +239,15 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
         for (std::size_t k = 0; k < n; ++k) x += v.photon_variance[s * n + k];
         stderr_value[s] = std::sqrt(std::max(0.0, x));
       }
+      // A plane's sensors next to a cut are gathered: out of the measure (accuracy_policy.h).
+      const std::string near_cut = take_out_near_cut_rows(
+          near_cut_rows(planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g), v.df_percent, stderr_value);
       o.reached_percent[g] = percentile_relative_stderr_percent(v.df_percent, stderr_value, AccuracyPercentile);
       o.hourly_percent[g] = hourly_percent(g, v.df_percent);
       m.grid_status[g] = accuracy_grid_status(chased[g], o.reached_percent[g], goal.target_percent);
       m.grids += (g ? ", " : " ") + grids[g].name + " " + round_number(o.reached_percent[g]) + " % (hourly " +
-                 round_number(o.hourly_percent[g]) + " %" + (chased[g] ? "" : ", gathered: its gather rays follow") + ")";
+                 round_number(o.hourly_percent[g]) + " %" + (chased[g] ? "" : ", gathered: its gather rays follow") + ")" +
+                 near_cut;
       if (chased[g]) {
         m.met = m.met && o.reached_percent[g] <= goal.target_percent;
         m.chased.push_back(std::move(v));

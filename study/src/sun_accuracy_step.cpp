@@ -1,6 +1,8 @@
 // The sun rounds as one plan step: see sun_accuracy_step.h.
 #include "sun_accuracy_step.h"
 
+#include "dayphoton/study/accuracy_policy.h"
+
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -39,6 +41,7 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
   c.suns = &suns;
   c.planes = &cs.layout.planes;
   c.plane_of_grid = &cs.layout.plane_of_grid;
+  c.near_cut_sensors = &cs.layout.near_cut_sensors;
   c.grids = &grids;
   c.gather = plan.point_estimate == project::PointEstimate::Gather;
   c.tracing = plan.tracing_for(plan.sun_tracing, cs.layout);
@@ -68,12 +71,13 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
                        ":" + year.hex();
   for (std::string& k : keys) k += "|" + rounds;
   std::string all_grids;
-  for (const SensorGrid& g : grids)
-    all_grids += sun_coefficients_key(keys, plan.sun_bin_minimum_bound_fraction, g, c.estimating) + ";";
+  auto near_cuts = [&](std::size_t g) { return near_cut_count(*c.plane_of_grid, c.near_cut_sensors, g); };
+  for (std::size_t g = 0; g < grids.size(); ++g)
+    all_grids += sun_coefficients_key(keys, plan.sun_bin_minimum_bound_fraction, grids[g], c.estimating, near_cuts(g)) + ";";
   for (std::string& k : keys) k += "|" + all_grids;
   std::vector<std::string> grid_keys;
-  for (const SensorGrid& g : grids)
-    grid_keys.push_back(sun_coefficients_key(keys, plan.sun_bin_minimum_bound_fraction, g, c.estimating));
+  for (std::size_t g = 0; g < grids.size(); ++g)
+    grid_keys.push_back(sun_coefficients_key(keys, plan.sun_bin_minimum_bound_fraction, grids[g], c.estimating, near_cuts(g)));
   const std::string outcome_key = grid_keys.empty() ? std::string("none") : grid_keys.front();
 
   SunAccuracyOutcome outcome;

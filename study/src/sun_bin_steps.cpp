@@ -74,14 +74,20 @@ void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, cons
     const SensorGrid& grid = grids[g];
     const bool gathered = !grid_chased_by_photons(cs.layout.plane_of_grid,
                                                   plan.point_estimate == project::PointEstimate::Gather, g);
-    const engine::CoefficientOptions* options = gathered ? &estimating : &plan.sun_estimating;
-    const std::string key = sun_coefficients_key(keys, plan.sun_bin_minimum_bound_fraction, grid, *options);
+    // A plane's sensors next to a cut are gathered with the gathered grids' weights of the
+    // rays' variance (the year's: sun_annual_estimating).
+    auto near_cut_options = std::make_shared<engine::CoefficientOptions>(plan.sun_estimating);
+    near_cut_options->gather = estimating.gather;
+    const engine::CoefficientOptions* options =
+        gathered ? &estimating : cs.layout.grid_gathers_near_cuts(g) ? near_cut_options.get() : &plan.sun_estimating;
+    const std::string key = sun_coefficients_key(keys, plan.sun_bin_minimum_bound_fraction, grid, *options,
+                                                 near_cut_count(cs.layout.plane_of_grid, &cs.layout.near_cut_sensors, g));
     GridSun& out = result[g];
     Step& s = grid_steps[g];
     s.kind = StepKind::SunCoefficients;
     s.index = g;
     s.outputs = {{"sun-coefficients", key}, {"sun-coefficients-variance", key}};
-    s.compute = [&, g, options]() -> std::vector<std::string> {
+    s.compute = [&, g, options, near_cut_options]() -> std::vector<std::string> {
       const engine::GridPhotons grid_photons =
           grid_photons_for(g, cs.layout, photons, bins.size(), plan.point_estimate);
       std::vector<double> bin_variance;
@@ -98,7 +104,7 @@ void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, cons
     // By sensor blocks over the ranks of an MPI run (plan_step.h): the same two matrices.
     SensorBlocks blocks;
     blocks.sensors = grid.points.size();
-    blocks.compute_rows = [&, g, options, maps = std::make_shared<LazyValue<engine::GridPhotons>>()](
+    blocks.compute_rows = [&, g, options, near_cut_options, maps = std::make_shared<LazyValue<engine::GridPhotons>>()](
                               std::size_t begin, std::size_t end) {
       const engine::GridPhotons& grid_photons =
           maps->get([&] { return grid_photons_for(g, cs.layout, photons, bins.size(), plan.point_estimate); });

@@ -98,5 +98,51 @@ TEST(RoundGridMaps, SurfaceGridsShareTheScaledMapAndUnbuiltMapsAreReleased) {
   EXPECT_FALSE(maps.holds(2));
 }
 
+// A plane with sensors next to a cut (near_cut_sensors) reads the gather map too: with a
+// gathered grid, the same shared map (grid 0's plane map points at grid 1's), kept until the
+// later of the two is done; without one (the surface estimate for the other grids), a gather map
+// of its own from a copy of the surface photons, while the surface grid keeps its map.
+TEST(RoundGridMaps, APlaneWithSensorsNextToACutReadsTheGatherMap) {
+  const std::vector<Photon> surface = photons_of(3000, Sources, false, 7);
+  const std::vector<Photon> plane = photons_of(1000, Sources, true, 8);
+  {
+    RoundGridMaps maps(Planes, {0, -1}, true, round_of(surface, plane), std::vector<double>(Sources, 1.0), {5});
+    const engine::GridPhotons& on_plane = maps.of_grid(0);
+    EXPECT_TRUE(on_plane.planar());
+    EXPECT_EQ(on_plane.near_cut_gather(), &maps.of_grid(1));
+    maps.done(0);
+    EXPECT_FALSE(maps.holds(0));
+    EXPECT_TRUE(maps.holds(1));
+    maps.done(1);
+    EXPECT_FALSE(maps.holds(1));
+  }
+  {
+    RoundGridMaps maps(Planes, {-1, 0}, true, round_of(surface, plane), std::vector<double>(Sources, 1.0), {5});
+    maps.done(0);
+    EXPECT_TRUE(maps.holds(1)) << "grid 1's plane still reads the gather map";
+    EXPECT_TRUE(maps.holds(0));
+    ASSERT_NE(maps.of_grid(1).near_cut_gather(), nullptr);
+    EXPECT_EQ(maps.of_grid(1).near_cut_gather()->all().size(), surface.size());
+    maps.done(1);
+    EXPECT_FALSE(maps.holds(0));
+    EXPECT_FALSE(maps.holds(1));
+  }
+  {
+    RoundGridMaps maps(Planes, {-1, 0}, false, round_of(surface, plane), std::vector<double>(Sources, 1.0), {5});
+    const engine::GridPhotons& surface_map = maps.of_grid(0);
+    EXPECT_FALSE(surface_map.gather());
+    maps.done(0);
+    const engine::GridPhotons* gather = maps.of_grid(1).near_cut_gather();
+    ASSERT_NE(gather, nullptr);
+    EXPECT_TRUE(gather->gather());
+    EXPECT_EQ(gather->all().size(), surface.size());  // Direct photons kept, unlike the surface map's
+    maps.done(1);
+    EXPECT_FALSE(maps.holds(1));
+  }
+  // Without sensors next to a cut the plane reads no gather map.
+  RoundGridMaps maps(Planes, {0, -1}, true, round_of(surface, plane), std::vector<double>(Sources, 1.0), {0});
+  EXPECT_EQ(maps.of_grid(0).near_cut_gather(), nullptr);
+}
+
 }  // namespace
 }  // namespace dayphoton::study

@@ -11,7 +11,11 @@
 #    bins' pilot does not (about 9 %), so the sun rounds trace a second round;
 #  - a gathered grid in the sun bins' rounds: tests/cli/cases/gathered_sun_accuracy.yaml (a
 #    back-wall grid of 18 sensors at 16 gather rays, sun bins on MF 1, draft target 5 %): after
-#    the sun's pilot its gather rounds raise its rays (by sensor blocks over the ranks).
+#    the sun's pilot its gather rounds raise its rays (by sensor blocks over the ranks);
+#  - a work plane with sensors next to a column (engine/plane_cuts.h, "Sensors next to a cut"):
+#    the sun bins' room with a 0.4 m column at x 1.55-1.95, y 2.05-2.45, whose 4 nearest sensors
+#    (0.07 m from its corners) are gathered inside the plane's grid in the sky's and the sun's
+#    rounds (by sensor blocks over the ranks, their rays seeded by their index in the grid).
 # Every rank runs the rounds: the pilot's doublings and round 2's extension traced in attempt
 # ranges over the ranks, the estimates by sensor blocks (80 sensors, blocks of 16). Every file
 # of the results folders must be byte-identical to the one-process run's, apart from run.log
@@ -71,4 +75,13 @@ gathered_sun_rounds() {
     grep -q '^sun accuracy: target met after 1 round(s)$' "$1/run.log"
 }
 check gathered_sun "$source_dir/tests/cli/cases/gathered_sun_accuracy.yaml" gathered_sun_rounds
+
+sun_room "$tmp/column" "$source_dir" 3 || exit 1
+sed -i 's/^      windows: \[{name: w, .*$/&\n  boxes:\n    - {name: column, origin: [1.55, 2.05, 0], size: [0.4, 0.4, 3], material: walls}/' "$tmp/column/project.yaml"
+grep -q '^    - {name: column, ' "$tmp/column/project.yaml" || { echo "column: the box was not added"; exit 1; }
+near_cut_rounds() {
+  grep -q '^accuracy round 1 (pilot): .*; 4 sensors next to a cut gathered, largest ' "$1/run.log" &&
+    grep -q '^sun accuracy round 1 (pilot): .*; 4 sensors next to a cut gathered, largest ' "$1/run.log"
+}
+check near_cut "$tmp/column/project.yaml" near_cut_rounds
 exit $fail

@@ -153,4 +153,13 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene,
                                                 const PhotonGroups* groups = nullptr,
                                                 SensorRange rows = {});
 
+/// The same at the sensors `which` (indices into `sensors`, any order): row r of the result is
+/// sensor which[r], bit for bit that sensor's row of the whole grid's gather (its rays are
+/// seeded by its index). Also throws std::invalid_argument for an index not within `sensors`.
+GatheredCoefficients gather_photon_coefficients_at(const Scene& scene, const std::vector<Material>& materials,
+                                                const SourceSet& sources, const PhotonMap& surface_photons,
+                                                const std::vector<SensorPoint>& sensors,
+                                                const GatherOptions& options, const PhotonGroups* groups,
+                                                const std::vector<std::size_t>& which);
+
 }  // namespace dayphoton::engine

@@ -17,12 +17,25 @@
 // (ports), which light passes. A segment that crosses the outline (a partition that runs on
 // out of a grid outline smaller than the room) is split where it crosses, and the pieces
 // inside are kept.
+//
+// Sensors next to a cut. Within a kernel disc's reach of a cut the light on the plane changes
+// faster than the disc follows (the lit face's reflection in front of a column, the column's
+// own shade behind it), even with the disc clipped to what the sensor sees: against a backward
+// path-tracing reference, 0.1 m from a 0.4 m column the plane's estimate read -9 % in front
+// and +19 % behind it, at 0.3 m within 2 %, from 0.5 m within the noise, while a final gather
+// from the same points (final_gather.h) read within 1.8 % (docs/validation.md). So receiver-
+// plane sensors nearer than NearCutGather_m to an interior cut are estimated by final gather
+// (daylight_coefficients.h, GridPhotons::set_near_cut_gather); the room's walls are not cuts
+// (0.1 m from them the plane's estimate is right: the outline clip and the local-linear fit).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
+#include "dayphoton/core/scene_description.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/engine/sensor_range.h"
 
 namespace dayphoton::engine {
 
@@ -30,7 +43,20 @@ namespace dayphoton::engine {
 /// (a wall along the outline), metres.
 constexpr double OnOutline_m = 1e-3;
 
+/// Receiver-plane sensors nearer than this to an interior cut of their plane are estimated
+/// by final gather (header comment, "Sensors next to a cut"), metres.
+constexpr double NearCutGather_m = 0.3;
+
 /// The interior cuts of `plane` by `scene`'s surfaces, in triangle order (header comment).
 std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const ReceiverPlane& plane);
+
+/// The distance in the plane from (x, y) to the nearest of `plane`'s interior cuts, metres;
+/// infinity without cuts.
+double distance_to_interior_cut_m(const ReceiverPlane& plane, double x, double y);
+
+/// The indices (ascending) of the sensors within `rows` whose position (x, y) lies nearer than
+/// NearCutGather_m to one of `plane`'s interior cuts (set_interior_cuts).
+std::vector<std::size_t> sensors_near_cuts(const ReceiverPlane& plane, const std::vector<SensorPoint>& sensors,
+                                           SensorRange rows = {});
 
 }  // namespace dayphoton::engine

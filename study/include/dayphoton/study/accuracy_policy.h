@@ -12,11 +12,22 @@
 // target"); only the part rays cannot lower, the photons the gather reads, asks for further
 // photon rounds (next_gather_photons). The sun bins' rounds still report it as "not reachable
 // by photons".
+//
+// A receiver plane's sensors next to a cut (engine/plane_cuts.h, "Sensors next to a cut") are
+// estimated by final gather inside their grid. The same holds for them: their error is mostly
+// the gather's rays', which photons do not lower, so the rounds' measure of the grid leaves
+// them out (the grid's percentile, the photon and shadow-ray plans are over its plane rows);
+// their gather stays at simulation.gather_rays, each row's standard error is its own gather's
+// (final_gather.h, "Variance"), and the rounds' log names their count and largest relative error
+// (near_cut_note). The gather rounds raise the rays of whole gathered grids only.
 #pragma once
 
 #include <cstddef>
 #include <string>
 #include <vector>
+
+#include "dayphoton/core/scene_description.h"
+#include "dayphoton/engine/receiver_plane.h"
 
 namespace dayphoton::study {
 
@@ -31,5 +42,25 @@ std::string accuracy_grid_status(bool chased, double reached_percent, double tar
 /// The run's stop reason when every chased grid met the target: "target met" if every grid
 /// did, else "not reachable by photons" (some gathered grid is above it).
 std::string met_stop_reason(const std::vector<std::string>& grid_status);
+
+/// How many of grid g's sensors are gathered next to a cut: near_cut_sensors (per plane,
+/// CaseLayout::near_cut_sensors; null: none) of its plane, 0 off a plane.
+std::size_t near_cut_count(const std::vector<int>& plane_of_grid, const std::vector<std::size_t>* near_cut_sensors,
+                           std::size_t g);
+
+/// The rows of grid g (on plane plane_of_grid[g] of `planes`, with `points` its sensors) that are
+/// gathered next to a cut (header comment): none off a plane or when near_cut_sensors (per
+/// plane, CaseLayout::near_cut_sensors) is null or counts none on its plane.
+std::vector<std::size_t> near_cut_rows(const std::vector<engine::ReceiverPlane>& planes,
+                                       const std::vector<int>& plane_of_grid,
+                                       const std::vector<std::size_t>* near_cut_sensors,
+                                       const std::vector<SensorPoint>& points, std::size_t g);
+
+/// Takes `rows` out of the rounds' measure (their `value`, DF or annual value, set to 0: the
+/// measure's percentile counts only sensors with light) and returns the log's words on them
+/// ("; 12 sensors next to a cut gathered, largest 1.4 %", the largest relative standard error
+/// of `stderr_value`), or "" without rows.
+std::string take_out_near_cut_rows(const std::vector<std::size_t>& rows, std::vector<double>& value,
+                                   const std::vector<double>& stderr_value);
 
 }  // namespace dayphoton::study

@@ -203,6 +203,8 @@ struct AccuracyCase {
   const engine::SourceSet* sources = nullptr;
   const std::vector<engine::ReceiverPlane>* planes = nullptr;
   const std::vector<int>* plane_of_grid = nullptr;  ///< receiver plane of each grid, or -1
+  /// Per plane, its sensors next to a cut, gathered (CaseLayout::near_cut_sensors); null: none.
+  const std::vector<std::size_t>* near_cut_sensors = nullptr;
   const std::vector<SensorGrid>* grids = nullptr;
   bool gather = true;  ///< grids off a plane: final gather (else surface photons)
   engine::TracingOptions tracing;       ///< seed, region of interest, photons_per_source = the reference count

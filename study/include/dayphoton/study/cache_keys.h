@@ -48,8 +48,10 @@ ContentHash planes_key(const std::vector<SensorGrid>& grids);
 std::string photon_source_key(const ContentHash& scene, const ContentHash& planes,
                               const sky::PatchBasis& basis, std::size_t source,
                               const engine::TracingOptions& options);
+/// `near_cut_sensors`: the grid's sensors gathered next to a cut (CaseLayout::near_cut_sensors;
+/// with engine::NearCutGather_m in the key when there are any, so other grids' keys stay).
 std::string coefficients_key(const std::vector<std::string>& photon_keys, const SensorGrid& grid,
-                             const engine::CoefficientOptions& options);
+                             const engine::CoefficientOptions& options, std::size_t near_cut_sensors = 0);
 
 /// Sky matrix of a weather file for the sun of `site`: `sun_excluded` false = the
 /// RADIANCE-compatible matrix with the sun spread into patches, true = the same without the
@@ -63,7 +65,7 @@ std::string sun_photon_key(const ContentHash& scene, const ContentHash& planes, 
 /// selects the bins traced (annual_sun.h).
 std::string sun_coefficients_key(const std::vector<std::string>& sun_photon_keys,
                                  double minimum_bound_fraction, const SensorGrid& grid,
-                                 const engine::CoefficientOptions& options);
+                                 const engine::CoefficientOptions& options, std::size_t near_cut_sensors = 0);
 /// Exact direct sun of a grid for these suns (steps and directions), RGB or luminance values.
 std::string direct_sun_key(const ContentHash& scene, const SensorGrid& grid,
                            const std::vector<std::size_t>& steps, const std::vector<Vec3>& directions,

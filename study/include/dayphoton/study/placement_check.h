@@ -17,15 +17,6 @@
 //     outline drawn 0.3 m past the walls of the reference office: 4-6.5 % at the sensors
 //     0.5 m from them). Probes OutlineProbeInset_m inside the outline, every
 //     OutlineProbeSpacing_m along it, are tested as sensors (engine/sensor_placement.h);
-//   - receiver-plane sensors nearer than NearCutWarning_m to a surface that crosses the work
-//     plane inside its outline (a column, a partition, tall furniture: engine/plane_cuts.h):
-//     there the light on the plane changes faster than the photon estimate's disc can follow
-//     (the lit face's reflection in front, the surface's own shade behind), and the estimate
-//     reads off beyond its stated error. Against a backward path-tracing reference, 0.1 m from
-//     a 0.4 m column (room 8 x 6 m, default accuracy): -9 % in front of it and +19 % behind it
-//     (z -21 and +14), at 0.3 m within 2 %, from 0.5 m within the noise; the same sensors as a
-//     point set (final gather) within 1.8 %. 0.1 m from the room's walls the estimate is right
-//     (the outline clip and the local-linear fit), so walls are not named;
 //   - geometry outside the ports that is not an outdoor scatterer and takes at least
 //     ExteriorViewWarnFraction of an opening's outward view (an opening: the ports written as
 //     one element, a window or a light pipe's collector of dome facets, their views weighted
@@ -37,6 +28,13 @@
 //     modifier is not listed under `outdoor`, a room of the generator seen from another's
 //     port, a Honeybee face), located where it is written, with what makes its light traced;
 //     only a daylight system's parts are not (their `port` says how their light is traced).
+//
+// And it notes (located, printed by `check`, written to run.log) the receiver-plane sensors
+// nearer than engine::NearCutGather_m to a surface that crosses the work plane inside its
+// outline (a column, a partition, tall furniture: engine/plane_cuts.h): there the light on the
+// plane changes faster than the photon estimate's disc can follow, so those sensors are
+// estimated by final gather inside their grid (engine/plane_cuts.h, "Sensors next to a cut").
+// The room's walls are not cuts (0.1 m from them the plane's estimate is right).
 #pragma once
 
 #include <cstddef>
@@ -59,9 +57,6 @@ constexpr std::size_t PlacementExamples = 3;
 /// Outline probes: this far inside a receiver plane's outline, this far apart along it.
 constexpr double OutlineProbeInset_m = 0.02;
 constexpr double OutlineProbeSpacing_m = 0.1;
-/// Receiver-plane sensors nearer than this to an interior cut of their plane are named
-/// (header comment), metres.
-constexpr double NearCutWarning_m = 0.3;
 /// Exterior geometry: rays per port (points x directions, both square lattices) and the share
 /// of an opening's cosine-weighted outward view above which an element that only shades is named.
 constexpr int ExteriorViewPoints = 16;
@@ -80,6 +75,7 @@ struct SensorSetPlacement {
 struct PlacementCheck {
   std::vector<SensorSetPlacement> sets;  ///< in the order of the grids
   std::vector<Diagnostic> warnings;      ///< located (header comment), in a fixed order
+  std::vector<Diagnostic> notes;         ///< located, Severity::Note: sensors gathered next to a cut
   std::size_t dropped() const;
 };
 

@@ -33,7 +33,12 @@ namespace dayphoton::study {
 struct CaseLayout {
   std::vector<engine::ReceiverPlane> planes;
   std::vector<int> plane_of_grid;  ///< per grid its plane, or -1
-  bool keep_surface_photons = false;  ///< some grid is not planar
+  /// Some grid is not planar, or some planar grid has sensors next to a cut (below).
+  bool keep_surface_photons = false;
+  /// Per plane: how many of its grid's sensors lie nearer than engine::NearCutGather_m to an
+  /// interior cut (engine/plane_cuts.h); they are estimated by final gather from the surface
+  /// photons (engine::GridPhotons::set_near_cut_gather). Empty before the cuts are known.
+  std::vector<std::size_t> near_cut_sensors;
   /// Per outdoor scatterer of the scene, the sides a final gather from the grids' sensors can
   /// read (engine/gathered_scatterer_sides.h); empty when not decided (every side kept).
   std::vector<std::uint8_t> gathered_scatterer_sides;
@@ -44,6 +49,10 @@ struct CaseLayout {
   /// gather from any grid's sensor can read (`materials` model the scene's materials).
   static CaseLayout of(const std::vector<SensorGrid>& grids, const engine::Scene& scene,
                        const std::vector<engine::Material>& materials);
+  /// Whether some plane's sensors next to a cut are gathered (near_cut_sensors).
+  bool gathers_near_cuts() const;
+  /// Whether grid g lies on a plane with sensors next to a cut.
+  bool grid_gathers_near_cuts(std::size_t g) const;
 };
 
 /// The daylight factor's sky among the sky coefficients' continuous skies
@@ -88,8 +97,9 @@ struct SimulationPlan {
   engine::ContinuousSky daylight_factor_continuous_sky() const;
 
   /// `base` (sky_tracing or sun_tracing) for a case: surface photons kept when some grid is
-  /// not planar, and with them the direct hits for a final gather (on outdoor scatterers
-  /// only on the sides the gather can read: CaseLayout::gathered_scatterer_sides).
+  /// not planar or some plane has sensors next to a cut, and with them the direct hits for a
+  /// final gather (on outdoor scatterers only on the sides the gather can read:
+  /// CaseLayout::gathered_scatterer_sides).
   engine::TracingOptions tracing_for(const engine::TracingOptions& base, const CaseLayout& layout) const;
 };
 

@@ -1,0 +1,112 @@
+// A receiver plane's sensors next to a cut (engine/plane_cuts.h, "Sensors next to a cut") in the
+// study: the case layout counts them and keeps the surface photons with their direct ones for
+// their gather (simulation_plan.h), the cache keys change only for a grid that has them
+// (cache_keys.h), and the accuracy rounds leave them out of their measure (accuracy_policy.h).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "dayphoton/engine/material.h"
+#include "dayphoton/engine/plane_cuts.h"
+#include "dayphoton/engine/scene.h"
+#include "dayphoton/project/project.h"
+#include "dayphoton/study/accuracy_policy.h"
+#include "dayphoton/study/accuracy_rounds.h"
+#include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/simulation_plan.h"
+#include "placement_project_text.h"
+
+namespace dayphoton::study {
+namespace {
+
+/// A 6 x 8 m room, a grid every 0.5 m from 0.5 m, and (with `column`) a 0.3 m column at x
+/// 2.6-2.9, y 3.6-3.9: the four sensors around it, x 2.5 or 3, y 3.5 or 4, lie 0.141 m from its
+/// corners; the next ones 0.6 m or more.
+std::string project_text(bool column, const std::string& point_estimate) {
+  std::string text = PlacementHead + "study: daylight_factor\n" + PlacementOffice;
+  if (column) text += "  boxes:\n    - {name: column, origin: [2.6, 3.6, 0], size: [0.3, 0.3, 3], material: walls}\n";
+  text += "sensors:\n  grids:\n    - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5}\n";
+  text += "simulation: {point_estimate: " + point_estimate + "}\n";
+  return text;
+}
+
+struct Case {
+  project::Project project;
+  SceneDescription description;
+  CaseLayout layout;
+};
+
+Case case_of(bool column, const std::string& point_estimate = "gather") {
+  Case c{project::load_project_from_string(project_text(column, point_estimate), "near_cut.yaml"), {}, {}};
+  c.description = project::build_scene_description(c.project);
+  const engine::Scene scene = engine::Scene::build(c.description);
+  std::vector<engine::Material> materials;
+  for (const MaterialSpec& m : c.description.materials) materials.push_back(engine::Material::from_spec(m));
+  c.layout = CaseLayout::of(c.description.grids, scene, materials);
+  return c;
+}
+
+TEST(NearCutGatherPlan, TheLayoutCountsTheSensorsAndKeepsTheSurfacePhotonsForThem) {
+  const Case with = case_of(true, "surface");
+  ASSERT_EQ(with.layout.near_cut_sensors.size(), 1u);
+  EXPECT_EQ(with.layout.near_cut_sensors[0], 4u);
+  EXPECT_TRUE(with.layout.gathers_near_cuts());
+  EXPECT_TRUE(with.layout.grid_gathers_near_cuts(0));
+  EXPECT_TRUE(with.layout.keep_surface_photons);
+  // The gather reads the direct hits on surfaces, with point_estimate: surface too.
+  const SimulationPlan plan = SimulationPlan::of(with.project);
+  EXPECT_TRUE(plan.tracing_for(plan.sky_tracing, with.layout).store_direct_on_surfaces);
+  EXPECT_TRUE(plan.tracing_for(plan.sun_tracing, with.layout).keep_surface_photons);
+
+  const Case without = case_of(false);
+  ASSERT_EQ(without.layout.near_cut_sensors.size(), 1u);
+  EXPECT_EQ(without.layout.near_cut_sensors[0], 0u);
+  EXPECT_FALSE(without.layout.gathers_near_cuts());
+  EXPECT_FALSE(without.layout.keep_surface_photons);
+  const SimulationPlan plain = SimulationPlan::of(without.project);
+  EXPECT_FALSE(plain.tracing_for(plain.sky_tracing, without.layout).store_direct_on_surfaces);
+}
+
+TEST(NearCutGatherPlan, CacheKeysChangeOnlyForAGridWithSensorsNextToACut) {
+  const Case c = case_of(true);
+  const SimulationPlan plan = SimulationPlan::of(c.project);
+  const SensorGrid& grid = c.description.grids[0];
+  const std::vector<std::string> photons = {"a", "b"};
+  const std::string none = coefficients_key(photons, grid, plan.sky_estimating);
+  EXPECT_EQ(coefficients_key(photons, grid, plan.sky_estimating, 0), none);
+  EXPECT_NE(coefficients_key(photons, grid, plan.sky_estimating, 4), none);
+  EXPECT_NE(coefficients_key(photons, grid, plan.sky_estimating, 4), coefficients_key(photons, grid, plan.sky_estimating, 5));
+  const std::string sun = sun_coefficients_key(photons, 0.01, grid, plan.sun_estimating);
+  EXPECT_EQ(sun_coefficients_key(photons, 0.01, grid, plan.sun_estimating, 0), sun);
+  EXPECT_NE(sun_coefficients_key(photons, 0.01, grid, plan.sun_estimating, 4), sun);
+}
+
+TEST(NearCutGatherPlan, TheRoundsMeasureLeavesTheGatheredRowsOut) {
+  const Case c = case_of(true);
+  const std::vector<SensorPoint>& points = c.description.grids[0].points;
+  const std::vector<std::size_t> rows =
+      near_cut_rows(c.layout.planes, c.layout.plane_of_grid, &c.layout.near_cut_sensors, points, 0);
+  ASSERT_EQ(rows.size(), 4u);
+  for (std::size_t i : rows)
+    EXPECT_LT(engine::distance_to_interior_cut_m(c.layout.planes[0], points[i].position.x, points[i].position.y),
+              engine::NearCutGather_m);
+  EXPECT_EQ(near_cut_count(c.layout.plane_of_grid, &c.layout.near_cut_sensors, 0), 4u);
+  EXPECT_EQ(near_cut_count(c.layout.plane_of_grid, nullptr, 0), 0u);
+  EXPECT_TRUE(near_cut_rows(c.layout.planes, c.layout.plane_of_grid, nullptr, points, 0).empty());
+  EXPECT_EQ(near_cut_count({-1}, &c.layout.near_cut_sensors, 0), 0u);
+
+  // Every plane row at 1 % relative error, the gathered ones at 5 % and 10 %: the measure's
+  // percentile is over the plane rows (1 %), and the note names the gathered rows' largest error.
+  std::vector<double> df(points.size(), 2.0), se(points.size(), 0.02);
+  for (std::size_t i : rows) se[i] = 0.1;
+  df[rows[1]] = 1.0;  // 10 %
+  std::vector<double> measured = df;
+  EXPECT_EQ(take_out_near_cut_rows(rows, measured, se), "; 4 sensors next to a cut gathered, largest 10 %");
+  for (std::size_t i : rows) EXPECT_EQ(measured[i], 0.0);
+  EXPECT_NEAR(percentile_relative_stderr_percent(measured, se, AccuracyPercentile), 1.0, 1e-12);
+  EXPECT_EQ(take_out_near_cut_rows({}, measured, se), "");
+}
+
+}  // namespace
+}  // namespace dayphoton::study
