@@ -87,9 +87,15 @@ CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids, const engine::Sc
   for (engine::ReceiverPlane& plane : l.planes) plane.set_interior_cuts(engine::interior_plane_cuts(scene, plane));
   // The planar grids' sensors next to a cut, gathered from the surface photons.
   l.near_cut_sensors.assign(l.planes.size(), 0);
+  std::vector<std::size_t> plane_sensors(l.planes.size(), 0);
   for (std::size_t g = 0; g < grids.size(); ++g)
-    if (const int plane = l.plane_of_grid[g]; plane >= 0)
+    if (const int plane = l.plane_of_grid[g]; plane >= 0) {
       l.near_cut_sensors[std::size_t(plane)] = engine::sensors_near_cuts(l.planes[std::size_t(plane)], grids[g].points).size();
+      plane_sensors[std::size_t(plane)] = grids[g].points.size();
+    }
+  const std::vector<bool> gathered = near_cut_gathered(l.near_cut_sensors, plane_sensors, l.keep_surface_photons);
+  for (std::size_t p = 0; p < gathered.size(); ++p)
+    if (!gathered[p]) l.near_cut_sensors[p] = 0;
   if (l.gathers_near_cuts()) l.keep_surface_photons = true;
   // Every grid's sensors, the planar ones included (they gather nothing: it only keeps more).
   std::vector<Vec3> sensors;
@@ -97,6 +103,16 @@ CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids, const engine::Sc
     for (const SensorPoint& p : g.points) sensors.push_back(p.position);
   l.gathered_scatterer_sides = engine::gathered_scatterer_sides(scene, materials, sensors);
   return l;
+}
+
+std::vector<bool> near_cut_gathered(const std::vector<std::size_t>& near_cut, const std::vector<std::size_t>& sensors,
+                                    bool surface_photons_kept) {
+  bool kept = surface_photons_kept;
+  for (std::size_t i = 0; i < near_cut.size() && !kept; ++i)
+    kept = near_cut[i] > 0 && double(near_cut[i]) >= NearCutGatherMinShare * double(sensors.at(i));
+  std::vector<bool> out(near_cut.size());
+  for (std::size_t i = 0; i < near_cut.size(); ++i) out[i] = kept && near_cut[i] > 0;
+  return out;
 }
 
 bool CaseLayout::gathers_near_cuts() const {

@@ -247,6 +247,29 @@ TEST(PlacementCheck, SensorsNearAColumnAreALocatedNote) {
   EXPECT_TRUE(clear.check.notes.empty()) << clear.check.notes[0].message;
 }
 
+// Fewer than NearCutGatherMinShare of a case of planar grids alone next to a cut: not worth
+// keeping every surface photon for (simulation_plan.h), so they keep the plane's estimate and
+// a located warning says so, with the remedies. A 0.1 m post at x, y 0.55-0.65 and a grid every
+// 0.5 m from 0.5 m (11 x 15 = 165 sensors): sensor 0 at (0.5, 0.5) lies 0.071 m from it, the
+// next ones 0.35 m away; 1 of 165 is 0.6 %.
+TEST(PlacementCheck, AFewSensorsNearAPostAreALocatedWarning) {
+  const Outcome o = check_text(Head + Office +
+                               "  boxes:\n    - {name: post, origin: [0.55, 0.55, 0], size: [0.1, 0.1, 3], material: walls}\n"
+                               "sensors:\n  grids:\n    - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5}\n");
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  EXPECT_TRUE(o.check.notes.empty()) << o.check.notes[0].message;
+  ASSERT_EQ(o.check.warnings.size(), 1u);
+  EXPECT_EQ(o.check.warnings[0].location.line, 17);
+  const std::string& m = o.check.warnings[0].message;
+  EXPECT_EQ(m.rfind("sensor set 'workplane': 1 of 165 sensors lie within 0.3 m of a surface that crosses the work "
+                    "plane (a column, a partition, furniture), the nearest, sensor 0 at (0.5, 0.5, 0.8) m, 0.071 m from it;",
+                    0),
+            0u)
+      << m;
+  EXPECT_NE(m.find("They are fewer than 2 % of the set"), std::string::npos) << m;
+  EXPECT_NE(m.find("list those points as a point set"), std::string::npos) << m;
+}
+
 const std::string Reveal = R"(  boxes:
     - {name: sill, origin: [1, -0.4, 0.6], size: [4, 0.399, 0.3], material: walls%s}
     - {name: far_away, origin: [1, -400, 0], size: [4, 1, 0.1], material: walls}

@@ -28,6 +28,20 @@
 
 namespace dayphoton::study {
 
+/// Sensors next to a cut are gathered only where it pays (near_cut_gathered): the gather
+/// reads the surface photons of the whole case, which a case of planar grids alone does not
+/// otherwise keep, at 2-4 times its memory (measured: a 10 000-sensor open plan 889 MiB ->
+/// 1737 MiB for its 69 sensors next to columns, a room with one column 386 MB -> 1.6 GB). So a
+/// case keeps them for that when some planar grid has at least this share of its sensors next
+/// to a cut; below it, such sensors keep the plane's estimate and a located warning.
+constexpr double NearCutGatherMinShare = 0.02;
+
+/// Per planar grid (`near_cut[i]` of `sensors[i]` sensors next to a cut): whether they are
+/// gathered (NearCutGatherMinShare): all of them when `surface_photons_kept` (some grid is
+/// not planar) or some grid reaches the share, none otherwise.
+std::vector<bool> near_cut_gathered(const std::vector<std::size_t>& near_cut, const std::vector<std::size_t>& sensors,
+                                    bool surface_photons_kept);
+
 /// The receiver planes of a case's grids: planar grids are estimated from their plane's
 /// crossings, the others (walls, points) from the photons stored on surfaces.
 struct CaseLayout {
@@ -37,7 +51,8 @@ struct CaseLayout {
   bool keep_surface_photons = false;
   /// Per plane: how many of its grid's sensors lie nearer than engine::NearCutGather_m to an
   /// interior cut (engine/plane_cuts.h); they are estimated by final gather from the surface
-  /// photons (engine::GridPhotons::set_near_cut_gather). Empty before the cuts are known.
+  /// photons (engine::GridPhotons::set_near_cut_gather). 0 where they are not gathered
+  /// (near_cut_gathered). Empty before the cuts are known.
   std::vector<std::size_t> near_cut_sensors;
   /// Per outdoor scatterer of the scene, the sides a final gather from the grids' sensors can
   /// read (engine/gathered_scatterer_sides.h); empty when not decided (every side kept).
