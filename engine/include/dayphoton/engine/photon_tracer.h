@@ -107,6 +107,12 @@ struct TracingOptions {
   /// one photon per this many attempts are affected: they keep fewer photons, their flux
   /// stays unbiased (see above), and SourceTally::capped is set.
   std::size_t max_mainpass_attempts_per_target = 256;
+  /// Per source (missing entries: 0): 1 makes this source's main-pass cap count raw
+  /// attempts, max_mainpass_attempts_per_target x target, without the scaling by the useful
+  /// share that outdoor scatterers bring ("Outdoor scatterers" above). The pipeline sets it
+  /// for the sources it traces again because the scaled cap starved the sources that carry
+  /// the light (study/src/photon_pass_notes.h, lifted_cap_sources).
+  std::vector<char> raw_attempt_cap;
   bool store_direct = false;             ///< also store Direct photons (diagnostics)
   /// Store Direct photons on surfaces (not on planes), with the global photons' target, for
   /// a final gather (final_gather.h). Their main-pass storage probability follows the
