@@ -46,8 +46,9 @@
 // "Low-yield cap": a capped source's absolute noise is at most that of a source whose yield
 // is exactly at the cap). Where a large outdoor scatterer takes nearly every attempt, every
 // source is capped far below its target, and the density estimates of sources with a handful
-// of photons spread their light over the room: a bias the stated error does not contain,
-// which the study names in run.log (docs/photon-tracing.md, "When the cap biases the result").
+// of photons spread their light over the room: a bias the stated error does not contain.
+// The study then traces those sources again with the cap in raw attempts (raw_attempt_cap
+// below), and names in run.log what stays starved (docs/photon-tracing.md, "Low-yield cap").
 //
 // Outdoor scatterers (port_emission.h): a photon that lands on one is stored there as
 // Direct (with store_direct or store_direct_on_surfaces: a final gather looking out of a
