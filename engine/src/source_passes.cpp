@@ -20,7 +20,8 @@ SourcePasses::SourcePasses(const Scene& scene, const std::vector<Material>& mate
     : m_prepass_fraction(options.prepass_fraction),
       m_max_prepass_per_target(options.max_prepass_attempts_per_target),
       m_max_mainpass_per_target(options.max_mainpass_attempts_per_target),
-      m_planes(planes.size()) {
+      m_planes(planes.size()),
+      m_raw_cap(source < options.raw_attempt_cap.size() && options.raw_attempt_cap[source] != 0) {
   const auto s = static_cast<std::uint32_t>(source);
   m_tally.bound_flux = emitter.bound_flux(s);
   if (!can_store_photons(scene, materials, planes)) {
@@ -168,9 +169,11 @@ void SourcePasses::start_main_pass() {
   tally.storage_probability_global = r_g / r_max;
   tally.storage_probability_caustic = m_target_c > 0 ? r_c / r_max : r_g / r_max;
   if (m_target_d > 0) tally.storage_probability_direct = r_d / r_max;
-  // The low-yield cap (photon_tracer.h): fixed before any of these attempts is traced.
+  // The low-yield cap (photon_tracer.h): fixed before any of these attempts is traced; in raw
+  // attempts where the pipeline lifted the useful-share scaling (TracingOptions::raw_attempt_cap).
   m_cap = m_max_mainpass_per_target == 0 ? std::numeric_limits<std::uint64_t>::max()
-                                         : scaled_limit(m_max_mainpass_per_target, m_prepass);
+          : m_raw_cap ? static_cast<std::uint64_t>(m_max_mainpass_per_target) * m_largest
+                      : scaled_limit(m_max_mainpass_per_target, m_prepass);
   const double planned = std::ceil(double(m_prepass) * r_max);
   tally.capped = planned > double(m_cap);
   m_main = tally.capped ? m_cap : static_cast<std::uint64_t>(planned);

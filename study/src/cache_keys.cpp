@@ -65,6 +65,8 @@ void add_tracing_options(ContentHash& h, std::size_t source, const engine::Traci
   h.integer(static_cast<std::int64_t>(o.seed)).number(o.prepass_fraction);
   h.integer(static_cast<std::int64_t>(o.max_prepass_attempts_per_target));
   h.integer(static_cast<std::int64_t>(o.max_mainpass_attempts_per_target));
+  // Hashed only where set, so the keys of every other source stay as they were.
+  if (source < o.raw_attempt_cap.size() && o.raw_attempt_cap[source]) h.text("raw attempt cap");
   h.integer(o.store_direct ? 1 : 0).integer(o.keep_surface_photons ? 1 : 0).integer(o.max_events);
   h.integer(o.store_direct_on_surfaces ? 1 : 0);
   // Which scatterer sides keep their Direct photons (since the rule of

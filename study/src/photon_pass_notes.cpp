@@ -52,6 +52,39 @@ double capped_flux_share(const engine::TracedPhotons& photons, double below_phot
   return all > 0 ? capped / all : 0.0;
 }
 
+LiftedCap lifted_cap_sources(const std::vector<engine::TracedPhotons>& per_source, std::size_t bandwidth,
+                             bool scatterers) {
+  LiftedCap lifted;
+  if (!scatterers) return lifted;
+  const double starved = StarvedBandwidths * double(bandwidth);
+  double capped = 0, all = 0;
+  for (std::size_t p = 0; p < per_source.size(); ++p) {
+    const engine::TracedPhotons& t = per_source[p];
+    double y = 0;
+    for (const engine::Photon& ph : t.surface) y += engine::luminance_of(ph.flux_rgb());
+    for (const std::vector<engine::Photon>& plane : t.planes)
+      for (const engine::Photon& ph : plane) y += engine::luminance_of(ph.flux_rgb());
+    all += y;
+    if (!t.tallies.empty() && t.tallies[0].capped && double(t.tallies[0].stored_global) < starved) {
+      lifted.sources.push_back(p);
+      capped += y;
+    }
+  }
+  lifted.flux_share = all > 0 ? capped / all : 0.0;
+  if (lifted.flux_share < CappedFluxWarningShare) lifted.sources.clear();
+  return lifted;
+}
+
+std::string lifted_cap_note(const LiftedCap& lifted, const engine::TracingOptions& tracing, std::size_t bandwidth,
+                            const std::string& what) {
+  if (lifted.sources.empty()) return "";
+  return std::to_string(lifted.sources.size()) + " " + what + " capped below " +
+         std::to_string(static_cast<long long>(StarvedBandwidths * double(bandwidth))) + " photons carried " +
+         percent_text(lifted.flux_share) + " % of the stored photon flux: traced again with the cap in raw attempts (" +
+         std::to_string(tracing.max_mainpass_attempts_per_target) +
+         " per target photon, not scaled by the outdoor scatterers' share)";
+}
+
 std::string capped_warning(const engine::TracedPhotons& photons, const engine::TracingOptions& tracing,
                            std::size_t bandwidth, const std::string& what) {
   const CappedCount c = count_capped(photons, tracing);
@@ -66,8 +99,8 @@ std::string capped_warning(const engine::TracedPhotons& photons, const engine::T
          percent_text(c.least) + "-" + percent_text(c.most) + " % of their target) carry " + percent_text(share) +
          " % of the stored photon flux: their density estimates spread over wide discs, a kernel bias that "
          "df_stderr_percent and the photon variance do not include, so the stated uncertainty does not cover "
-         "these results (a light pipe under an outdoor roof read 6.6 % low on average, -39 to +82 % per sensor). "
-         "Set max_attempts_per_photon: 0 (no cap), or let a large outdoor scatterer only shade";
+         "these results (a light pipe under an outdoor roof, starved this way, read 6.6 % low on average, -39 to +82 % "
+         "per sensor). Raise max_attempts_per_photon or set it to 0 (no cap), or let a large outdoor scatterer only shade";
 }
 
 std::string capped_note(const engine::TracedPhotons& photons, const engine::TracingOptions& tracing,

@@ -3,7 +3,9 @@
 // bring so much of the light that the stated error does not cover their kernel bias.
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include "dayphoton/engine/photon_tracer.h"
 
@@ -28,11 +30,37 @@ double capped_flux_share(const engine::TracedPhotons& photons, double below_phot
 /// settings the capped sources store more and the result stays within its noise.
 inline constexpr int StarvedBandwidths = 4;
 
-/// Above this share of the stored photon flux from starved capped sources the run warns
-/// (capped_warning): their kernel bias, which the reported standard error does not include,
-/// becomes a bias of the result (docs/photon-tracing.md, "Low-yield cap": a light pipe under
-/// an outdoor roof read 6.6 % low on average over 24 seeds).
+/// At this share of the stored photon flux from starved capped sources or more, the sources
+/// are traced again with the cap in raw attempts where outdoor scatterers scaled it
+/// (lifted_cap_sources), and the run warns if it is still reached (capped_warning): their
+/// kernel bias, which the reported standard error does not include, becomes a bias of the
+/// result (docs/photon-tracing.md, "Low-yield cap": a light pipe under an outdoor roof read
+/// 6.6 % low on average over 24 seeds with the scaled cap alone).
 inline constexpr double CappedFluxWarningShare = 0.2;
+
+/// The sources to trace again with the cap counting raw attempts
+/// (engine::TracingOptions::raw_attempt_cap), in increasing order, and the share of the stored
+/// photon flux they carried.
+struct LiftedCap {
+  std::vector<std::size_t> sources;
+  double flux_share = 0;
+};
+
+/// Every source of `per_source` (one traced source each, as trace_source_photons gives them)
+/// that was capped and stored fewer than StarvedBandwidths x `bandwidth` global photons, when
+/// these carry CappedFluxWarningShare or more of the stored photon flux; else none. With
+/// outdoor scatterers the cap is scaled by a source's useful share, so its port gets about
+/// M x target x share^2 attempts: a large scatterer around a small port (a roof around a light
+/// pipe's collector) starves every source whatever its port brings, against the cap's premise
+/// that capped sources bring little light. `scatterers`: the scene has outdoor scatterers
+/// (without them the raw cap is the cap, and none is returned).
+LiftedCap lifted_cap_sources(const std::vector<engine::TracedPhotons>& per_source, std::size_t bandwidth,
+                             bool scatterers);
+
+/// The run-log note on a LiftedCap ("" if it has no source): how many, the share of the flux
+/// they carried, and the cap they were traced again with.
+std::string lifted_cap_note(const LiftedCap& lifted, const engine::TracingOptions& tracing, std::size_t bandwidth,
+                            const std::string& what);
 
 /// The run-log warning (without location) when starved capped sources carry
 /// CappedFluxWarningShare or more of the stored photon flux, else "". `bandwidth` is the

@@ -1,6 +1,7 @@
 // The sky side of a case as plan steps: see sky_coefficient_steps.h.
 #include "sky_coefficient_steps.h"
 
+#include <algorithm>
 #include <memory>
 
 #include "dayphoton/engine/port_emission.h"
@@ -80,34 +81,52 @@ void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, con
     progress.start(prefix + "photons", sources.size(), "sources");
     const engine::PortEmitter emitter(cs.scene, sources);
     std::vector<engine::TracedPhotons> per_source(sources.size());
-    std::vector<Step> steps;
-    for (std::size_t p = 0; p < sources.size(); ++p)
-      steps.push_back(make_step(
-          StepKind::SourcePhotons, p, {"photons", photon_keys[p]}, per_source[p],
-          [&cs, &emitter, &tracing, p] {
-            return engine::trace_source_photons(cs.scene, cs.materials, emitter, cs.layout.planes, tracing, p);
-          },
-          encode_photons, decode_photons, [](const engine::TracedPhotons&) { return true; }));
-    for (std::size_t p = 0; p < sources.size(); ++p)
-      steps[p].ranges = sky_source_ranges(cs.scene, cs.materials, emitter, cs.layout.planes, tracing, p);
-    // Costs for an MPI run: a short pilot of each source (photon_step_cost.h).
-    for (std::size_t p = 0; p < sources.size(); ++p)
-      steps[p].cost = [&cs, &emitter, &tracing, p] {
-        return photon_step_cost(cs.scene, cs.materials, emitter, cs.layout.planes, tracing, p);
-      };
-    const std::vector<char> traced =
-        ctx.executor.run_batch(steps, [&](std::size_t, bool) { progress.advance(1); });
+    // One batch of photon steps: the sources `which`, traced with `options` under `keys`.
+    auto trace_batch = [&](const engine::TracingOptions& options, const std::vector<std::size_t>& which,
+                           const std::vector<std::string>& keys) {
+      std::vector<Step> steps;
+      for (std::size_t p : which) {
+        steps.push_back(make_step(
+            StepKind::SourcePhotons, p, {"photons", keys[p]}, per_source[p],
+            [&cs, &emitter, &options, p] {
+              return engine::trace_source_photons(cs.scene, cs.materials, emitter, cs.layout.planes, options, p);
+            },
+            encode_photons, decode_photons, [](const engine::TracedPhotons&) { return true; }));
+        steps.back().ranges = sky_source_ranges(cs.scene, cs.materials, emitter, cs.layout.planes, options, p);
+        // Costs for an MPI run: a short pilot of each source (photon_step_cost.h).
+        steps.back().cost = [&cs, &emitter, &options, p] {
+          return photon_step_cost(cs.scene, cs.materials, emitter, cs.layout.planes, options, p);
+        };
+      }
+      const std::vector<char> traced =
+          ctx.executor.run_batch(steps, [&](std::size_t, bool) { progress.advance(1); });
+      return static_cast<std::size_t>(std::count(traced.begin(), traced.end(), 1));
+    };
+    std::vector<std::size_t> all(sources.size());
+    for (std::size_t p = 0; p < sources.size(); ++p) all[p] = p;
+    const std::size_t n_traced = trace_batch(tracing, all, photon_keys);
     progress.end();
-    std::size_t n_traced = 0;
-    for (char t : traced) n_traced += t ? 1 : 0;
     report.sources_traced += n_traced;
     report.sources_cached += sources.size() - n_traced;
     ctx.log.line(prefix + "photons: traced " + std::to_string(n_traced) + " of " + std::to_string(sources.size()) +
                  " sources (" + std::to_string(sources.size() - n_traced) + " cached)");
+    // Where the scaled cap starved the sources that carry the light, they are traced again
+    // with the cap in raw attempts (photon_pass_notes.h, lifted_cap_sources).
+    const std::size_t bandwidth = plan.sky_estimating.density.bandwidth;
+    const LiftedCap lifted = lifted_cap_sources(per_source, bandwidth, !cs.scene.outdoor_scatterers().empty());
+    if (!lifted.sources.empty()) {
+      ctx.log.line(prefix + "photons: " + lifted_cap_note(lifted, tracing, bandwidth, "sources"));
+      engine::TracingOptions raw = tracing;
+      raw.raw_attempt_cap.assign(sources.size(), 1);
+      const std::vector<std::string> raw_keys = sky_photon_keys(cs, plan.basis, sources.size(), raw);
+      progress.start(prefix + "photons, raw cap", lifted.sources.size(), "sources");
+      trace_batch(raw, lifted.sources, raw_keys);
+      progress.end();
+    }
     photons = engine::merge_traced_photons(std::move(per_source));
     for (const std::string& note : {capped_note(photons, tracing, "sources"), nothing_stored_note(photons, "sources")})
       if (!note.empty()) ctx.log.line(prefix + "photons: " + note);
-    if (const std::string w = capped_warning(photons, tracing, plan.sky_estimating.density.bandwidth, "sources"); !w.empty())
+    if (const std::string w = capped_warning(photons, tracing, bandwidth, "sources"); !w.empty())
       ctx.log.line(prefix + "warning: " + plan.cap_location.to_string() + ": " + w);
     for (const engine::SourceTally& t : photons.tallies) report.sources_capped += t.capped ? 1 : 0;
   }

@@ -140,33 +140,58 @@ void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, cons
   } else {
     progress.start(prefix + "sun photons", n_lit, "sun bins");
     std::vector<engine::TracedPhotons> per_bin(bins.size());
-    std::vector<Step> steps;
+    // One batch of photon steps: the bins `which`, traced with `options` under `bin_keys`.
+    auto trace_batch = [&](const engine::TracingOptions& options, const std::vector<std::size_t>& which,
+                           const std::vector<std::string>& bin_keys) {
+      std::vector<Step> steps;
+      for (std::size_t i : which) {
+        steps.push_back(make_step(
+            StepKind::SunBinPhotons, i, {"sun-photons", bin_keys[i]}, per_bin[i],
+            [&cs, &bins, &options, i] { return trace_sun_bin(cs.scene, cs.materials, bins, i, cs.layout.planes, options); },
+            encode_photons, decode_photons, [](const engine::TracedPhotons&) { return true; }));
+        steps.back().ranges = sun_bin_ranges(cs.scene, cs.materials, bins, i, cs.layout.planes, options);
+      }
+      const std::vector<char> traced = ctx.executor.run_batch(steps, [&](std::size_t k, bool) {
+        const std::size_t bin = steps[k].index;
+        relabel_photons(per_bin[bin], static_cast<std::uint32_t>(bin));
+        progress.advance(1);
+      });
+      return static_cast<std::size_t>(std::count(traced.begin(), traced.end(), 1));
+    };
+    std::vector<std::size_t> lit;
     for (std::size_t i = 0; i < bins.size(); ++i) {
-      if (!to_trace[i]) {
-        per_bin[i].planes.resize(cs.layout.planes.size());
-        per_bin[i].tallies.resize(1);
+      if (to_trace[i]) {
+        lit.push_back(i);
         continue;
       }
-      steps.push_back(make_step(
-          StepKind::SunBinPhotons, i, {"sun-photons", keys[i]}, per_bin[i],
-          [&cs, &bins, &tracing, i] { return trace_sun_bin(cs.scene, cs.materials, bins, i, cs.layout.planes, tracing); },
-          encode_photons, decode_photons, [](const engine::TracedPhotons&) { return true; }));
-      steps.back().ranges = sun_bin_ranges(cs.scene, cs.materials, bins, i, cs.layout.planes, tracing);
+      per_bin[i].planes.resize(cs.layout.planes.size());
+      per_bin[i].tallies.resize(1);
     }
-    const std::vector<char> traced = ctx.executor.run_batch(steps, [&](std::size_t k, bool) {
-      const std::size_t bin = steps[k].index;
-      relabel_photons(per_bin[bin], static_cast<std::uint32_t>(bin));
-      progress.advance(1);
-    });
+    const std::size_t n_traced = trace_batch(tracing, lit, keys);
     progress.end();
-    const std::size_t n_traced = static_cast<std::size_t>(std::count(traced.begin(), traced.end(), 1));
     report.sun_bins_traced += n_traced;
     log.line(prefix + "sun photons: traced " + std::to_string(n_traced) + " of " + std::to_string(n_lit) +
              " sun bins (" + std::to_string(n_lit - n_traced) + " cached)");
+    // Where the scaled cap starved the bins that carry the light, they are traced again with
+    // the cap in raw attempts (photon_pass_notes.h, lifted_cap_sources).
+    const std::size_t bandwidth = plan.sun_estimating.density.bandwidth;
+    const LiftedCap lifted = lifted_cap_sources(per_bin, bandwidth, !cs.scene.outdoor_scatterers().empty());
+    if (!lifted.sources.empty()) {
+      log.line(prefix + "sun photons: " + lifted_cap_note(lifted, tracing, bandwidth, "sun bins"));
+      engine::TracingOptions raw = tracing;
+      raw.raw_attempt_cap.assign(1, 1);  // each bin is source 0 of its own emitter (trace_sun_bin)
+      std::vector<std::string> raw_keys(bins.size());
+      for (std::size_t i : lifted.sources)
+        raw_keys[i] = sun_photon_key(cs.scene_hash, cs.planes_hash, bins.multiplication_factor(), bins.patch(i),
+                                     sky::SunHalfAngle_rad, raw);
+      progress.start(prefix + "sun photons, raw cap", lifted.sources.size(), "sun bins");
+      trace_batch(raw, lifted.sources, raw_keys);
+      progress.end();
+    }
     photons = engine::merge_traced_photons(std::move(per_bin));
     for (const std::string& note : {capped_note(photons, tracing, "sun bins"), nothing_stored_note(photons, "sun bins")})
       if (!note.empty()) log.line(prefix + "sun photons: " + note);
-    if (const std::string w = capped_warning(photons, tracing, plan.sun_estimating.density.bandwidth, "sun bins"); !w.empty())
+    if (const std::string w = capped_warning(photons, tracing, bandwidth, "sun bins"); !w.empty())
       log.line(prefix + "warning: " + plan.cap_location.to_string() + ": " + w);
     for (const engine::SourceTally& t : photons.tallies) report.sun_bins_capped += t.capped ? 1 : 0;
   }

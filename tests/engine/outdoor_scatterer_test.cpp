@@ -10,6 +10,9 @@
 //   - Faces of closed solids are lit on their outside only; thin parts on both sides.
 //   - Shadow rays of the direct component pass a scatterer's straight transmission (a
 //     glazed canopy) after the port, and nothing else.
+//   - The low-yield cap: a roof around a small roof opening, drawn as an outdoor scatterer,
+//     takes nearly every emission attempt, and the cap scaled by the useful share starves
+//     the source; with TracingOptions::raw_attempt_cap the cap is M x target raw attempts.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,6 +22,7 @@
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/engine/scatterer_sides.h"
+#include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/solar_position.h"
 #include "system_scenes.h"
 
@@ -234,6 +238,61 @@ TEST(OutdoorScatterers, ShadowRaysPassAScattererCanopyAfterThePort) {
     const Vec3 t = sky_transmittance(scene, materials, {0, 0.5, 0}, {0, -1, 0});
     EXPECT_NEAR(mean3(t), scatterer ? 0.7 * 0.8 : 0.0, 1e-9) << (scatterer ? "scatterer" : "plain");
   }
+}
+
+// 4 x 4 x 3 m room (Lambertian 0.5) whose only opening is a 0.5 x 0.5 m hole in the ceiling,
+// closed by an `opening` port; around it on the roof a 0.3 Lambertian slab 4 x 4 m, drawn as an
+// outdoor scatterer: the port's share of the zenith bin's emission bound is 0.8 %.
+SceneDescription roof_opening_scene() {
+  SceneDescription d;
+  const int grey = test::add_spec(d, test::grey("grey", MaterialType::Lambertian, 0.5));
+  const int roof = test::add_spec(d, test::grey("roof", MaterialType::Lambertian, 0.3));
+  const int open = test::add_spec(d, test::material_of("open", MaterialType::Opening));
+  test::add_room(d, {4, 4, 3}, grey, grey, grey, std::nullopt, std::array<double, 4>{1.75, 2.25, 1.75, 2.25});
+  test::add_facing(d, "port", open, test::rect_z(1.75, 2.25, 1.75, 2.25, 3), {0, 0, -1}, true);
+  test::add_box(d, "roof.w", {0, 0, 3.01}, {1.75, 4, 3.03}, roof, roof);
+  test::add_box(d, "roof.e", {2.25, 0, 3.01}, {4, 4, 3.03}, roof, roof);
+  test::add_box(d, "roof.s", {1.75, 0, 3.01}, {2.25, 1.75, 3.03}, roof, roof);
+  test::add_box(d, "roof.n", {1.75, 2.25, 3.01}, {2.25, 4, 3.03}, roof, roof);
+  mark_scatterers(d, "roof.");
+  return d;
+}
+
+TEST(OutdoorScatterers, RawAttemptCapGivesAStarvedSourceItsTarget) {
+  const SceneDescription d = roof_opening_scene();
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models_of(d);
+  const SourceSet sources = SourceSet::sky_bins(sky::PatchBasis::tregenza());
+  const PortEmitter emitter(scene, sources);
+  const std::size_t zenith = sources.size() - 1;
+  const double share = emitter.port_bound_flux(static_cast<std::uint32_t>(zenith)) /
+                       emitter.bound_flux(static_cast<std::uint32_t>(zenith));
+  ASSERT_GT(share, 0.005);
+  ASSERT_LT(share, 0.05) << "the roof does not dominate the emission bound";
+  TracingOptions scaled;
+  scaled.photons_per_source = 400;
+  scaled.seed = 3;
+  TracingOptions raw = scaled;
+  raw.raw_attempt_cap = std::vector<char>(sources.size(), 0);
+  raw.raw_attempt_cap[zenith] = 1;
+  const SourceTally a = trace_source_photons(scene, materials, emitter, {}, scaled, zenith).tallies[0];
+  const SourceTally b = trace_source_photons(scene, materials, emitter, {}, raw, zenith).tallies[0];
+  const std::uint64_t M = scaled.max_mainpass_attempts_per_target, T = scaled.photons_per_source;
+  // The scaled cap: at most M x T x (share + what the roof sends in, an upper bound from the
+  // pre-pass) raw attempts, so the port gets ~M T share^2 of them: far below the target
+  // (seed 3: 998 main-pass attempts, 32 of 400 photons).
+  EXPECT_TRUE(a.capped);
+  EXPECT_LT(a.mainpass_attempts, M * T / 10);
+  EXPECT_LT(a.stored_global, T / 2);
+  // The raw cap: the same pre-pass, then at most M x T main-pass attempts, which the port's
+  // yield (about 2 stored photons per port attempt, ~share x 2 per raw attempt) turns into
+  // the target within its noise (seed 3: 32,085 attempts, 494 photons).
+  EXPECT_EQ(b.prepass_attempts, a.prepass_attempts);
+  EXPECT_LE(b.mainpass_attempts, M * T);
+  EXPECT_GT(b.mainpass_attempts, a.mainpass_attempts);
+  EXPECT_GE(double(b.stored_global), double(T) * (1 - 4 / std::sqrt(double(T))));
+  // Both are unbiased: every attempt carries the bound flux over all attempts.
+  EXPECT_DOUBLE_EQ(b.flux_per_attempt * double(b.prepass_attempts + b.mainpass_attempts), b.bound_flux);
 }
 
 }  // namespace

@@ -70,17 +70,18 @@ TEST(NearCutGatherPlan, TheLayoutCountsTheSensorsAndKeepsTheSurfacePhotonsForThe
 
 // The gather keeps every surface photon of the case (2-4 times its memory), so a case of
 // planar grids alone gathers its sensors next to a cut only where some grid has at least
-// NearCutGatherMinShare (2 %) of its sensors there; once the photons are kept (that, or a grid
+// NearCutGatherMinShare (1 %) of its sensors there; once the photons are kept (that, or a grid
 // off the plane), every such sensor is gathered. Closed-form cases of the rule.
 TEST(NearCutGatherPlan, TheSurfacePhotonsAreKeptOnlyWhereEnoughSensorsAreNextToACut) {
   using V = std::vector<bool>;
-  EXPECT_EQ(near_cut_gathered({1}, {100}, false), V{false});   // 1 % of one grid
-  EXPECT_EQ(near_cut_gathered({2}, {100}, false), V{true});    // 2 %
-  EXPECT_EQ(near_cut_gathered({1}, {100}, true), V{true});     // kept for a wall grid anyway
-  EXPECT_EQ(near_cut_gathered({0}, {100}, true), V{false});    // nothing next to a cut
-  EXPECT_EQ(near_cut_gathered({1, 5}, {100, 100}, false), (V{true, true}));  // the second keeps them
-  EXPECT_EQ(near_cut_gathered({1, 0}, {100, 10}, false), (V{false, false}));
+  EXPECT_EQ(near_cut_gathered({1}, {200}, false), V{false});   // 0.5 % of one grid
+  EXPECT_EQ(near_cut_gathered({2}, {200}, false), V{true});    // 1 %
+  EXPECT_EQ(near_cut_gathered({1}, {200}, true), V{true});     // kept for a wall grid anyway
+  EXPECT_EQ(near_cut_gathered({0}, {200}, true), V{false});    // nothing next to a cut
+  EXPECT_EQ(near_cut_gathered({1, 5}, {200, 200}, false), (V{true, true}));  // the second keeps them
+  EXPECT_EQ(near_cut_gathered({1, 0}, {200, 10}, false), (V{false, false}));
   EXPECT_EQ(near_cut_gathered({69}, {9984}, false), V{false});  // the open-plan bench's columns: 0.7 %
+  EXPECT_EQ(near_cut_gathered({18}, {1196}, false), V{true});   // one column, a grid every 0.2 m: 1.5 %
 }
 
 TEST(NearCutGatherPlan, CacheKeysChangeOnlyForAGridWithSensorsNextToACut) {

@@ -266,7 +266,7 @@ TEST(PlacementCheck, AFewSensorsNearAPostAreALocatedWarning) {
                     0),
             0u)
       << m;
-  EXPECT_NE(m.find("They are fewer than 2 % of the set"), std::string::npos) << m;
+  EXPECT_NE(m.find("They are fewer than 1 % of the set"), std::string::npos) << m;
   EXPECT_NE(m.find("list those points as a point set"), std::string::npos) << m;
 }
 

@@ -46,8 +46,9 @@
 // "Low-yield cap": a capped source's absolute noise is at most that of a source whose yield
 // is exactly at the cap). Where a large outdoor scatterer takes nearly every attempt, every
 // source is capped far below its target, and the density estimates of sources with a handful
-// of photons spread their light over the room: a bias the stated error does not contain,
-// which the study names in run.log (docs/photon-tracing.md, "When the cap biases the result").
+// of photons spread their light over the room: a bias the stated error does not contain.
+// The study then traces those sources again with the cap in raw attempts (raw_attempt_cap
+// below), and names in run.log what stays starved (docs/photon-tracing.md, "Low-yield cap").
 //
 // Outdoor scatterers (port_emission.h): a photon that lands on one is stored there as
 // Direct (with store_direct or store_direct_on_surfaces: a final gather looking out of a
@@ -107,6 +108,12 @@ struct TracingOptions {
   /// one photon per this many attempts are affected: they keep fewer photons, their flux
   /// stays unbiased (see above), and SourceTally::capped is set.
   std::size_t max_mainpass_attempts_per_target = 256;
+  /// Per source (missing entries: 0): 1 makes this source's main-pass cap count raw
+  /// attempts, max_mainpass_attempts_per_target x target, without the scaling by the useful
+  /// share that outdoor scatterers bring ("Outdoor scatterers" above). The pipeline sets it
+  /// for the sources it traces again because the scaled cap starved the sources that carry
+  /// the light (study/src/photon_pass_notes.h, lifted_cap_sources).
+  std::vector<char> raw_attempt_cap;
   bool store_direct = false;             ///< also store Direct photons (diagnostics)
   /// Store Direct photons on surfaces (not on planes), with the global photons' target, for
   /// a final gather (final_gather.h). Their main-pass storage probability follows the

@@ -79,6 +79,7 @@ class SourcePasses {
   std::size_t m_target_g = 0, m_target_c = 0, m_target_d = 0, m_largest = 0;
   std::uint64_t m_initial = 1;
   double m_port_share = 1;
+  bool m_raw_cap = false;  ///< TracingOptions::raw_attempt_cap for this source
   bool m_normalised = false;  ///< traced at all: the flux per attempt is set by finish
 
   // The passes so far.

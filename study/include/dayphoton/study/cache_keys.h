@@ -40,8 +40,9 @@ namespace dayphoton::study {
 
 /// Bumped whenever the engine's output for the same inputs changes (invalidates old caches).
 /// 4: photons outdoors after leaving through a port are no longer stored (photon_tracer.h,
-/// "Indoors and outdoors").
-constexpr int EngineCacheVersion = 4;
+/// "Indoors and outdoors"). 5: sources the scaled low-yield cap starved while they carry the
+/// light are traced again with the cap in raw attempts (docs/photon-tracing.md, "Low-yield cap").
+constexpr int EngineCacheVersion = 5;
 
 ContentHash scene_key(const SceneDescription& scene);
 ContentHash planes_key(const std::vector<SensorGrid>& grids);

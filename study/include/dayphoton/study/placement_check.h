@@ -35,7 +35,7 @@
 // plane changes faster than the photon estimate's disc can follow, so those sensors are
 // estimated by final gather inside their grid (engine/plane_cuts.h, "Sensors next to a cut"),
 // unless the case would keep its surface photons for them alone and they are fewer than
-// NearCutGatherMinShare of every planar set (simulation_plan.h, near_cut_gathered): then it
+// NearCutGatherMinShare (1 %) of every planar set (simulation_plan.h, near_cut_gathered): then it
 // warns instead, with the remedies.
 // The room's walls are not cuts (0.1 m from them the plane's estimate is right).
 #pragma once

@@ -31,10 +31,11 @@ namespace dayphoton::study {
 /// Sensors next to a cut are gathered only where it pays (near_cut_gathered): the gather
 /// reads the surface photons of the whole case, which a case of planar grids alone does not
 /// otherwise keep, at 2-4 times its memory (measured: a 10 000-sensor open plan 889 MiB ->
-/// 1737 MiB for its 69 sensors next to columns, a room with one column 386 MB -> 1.6 GB). So a
-/// case keeps them for that when some planar grid has at least this share of its sensors next
-/// to a cut; below it, such sensors keep the plane's estimate and a located warning.
-constexpr double NearCutGatherMinShare = 0.02;
+/// 1737 MiB for its 69 sensors next to columns, 0.7 % of them; a room with one column gridded
+/// every 0.2 m, 18 of 1196 sensors, 386 MB -> 1.6 GB). So a case keeps them for that when some
+/// planar grid has at least this share of its sensors next to a cut (that room 1.5 %, obj_mesh
+/// 5.5 %); below it, such sensors keep the plane's estimate and a located warning.
+constexpr double NearCutGatherMinShare = 0.01;
 
 /// Per planar grid (`near_cut[i]` of `sensors[i]` sensors next to a cut): whether they are
 /// gathered (NearCutGatherMinShare): all of them when `surface_photons_kept` (some grid is
