@@ -121,7 +121,7 @@ std::vector<std::size_t> sensors_near_cuts(const ReceiverPlane& plane, const std
   std::vector<std::size_t> near;
   if (plane.interior_cuts().empty()) return near;
   for (std::size_t s = rows.begin; s < rows.end; ++s)
-    if (distance_to_interior_cut_m(plane, sensors[s].position.x, sensors[s].position.y) < NearCutGather_m)
+    if (distance_to_interior_cut_m(plane, sensors[s].position.x, sensors[s].position.y) < NearCutGather_m - NearCutMargin_m)
       near.push_back(s);
   return near;
 }

@@ -152,10 +152,15 @@ std::vector<engine::ContinuousSky> point_in_time_continuous_skies(const std::vec
     if (c.sky != project::PointSky::CieOvercast && !cie_sun(c, site).sun_up) continue;
     const CieCaseSky cs = cie_case_sky(c, site, ground_reflectance);
     engine::ContinuousSky sky;
+    // Every parameter the radiance depends on, at full precision: the description rounds the
+    // sun's altitude and leaves out its azimuth, so two times either side of noon would share
+    // a cache entry.
     std::ostringstream key;
     key.precision(17);
-    key << "point in time " << cs.sky->description() << "; ground " << cs.ground_rgb.x << ' ' << cs.ground_rgb.y << ' '
-        << cs.ground_rgb.z;
+    key << "point in time " << (c.sky == project::PointSky::CieOvercast ? 0 : c.cie_type) << " diffuse "
+        << c.diffuse_horizontal_illuminance_lux << " direct normal " << c.direct_normal_illuminance_lux << " sun "
+        << cs.sun.direction.x << ' ' << cs.sun.direction.y << ' ' << cs.sun.direction.z << " ground " << cs.ground_rgb.x
+        << ' ' << cs.ground_rgb.y << ' ' << cs.ground_rgb.z;
     sky.key = key.str();
     sky.radiance_rgb = [model = cs.sky, ground = cs.ground_rgb](const Vec3& w) {
       return w.z > 0 ? model->radiance_rgb(w) : ground;

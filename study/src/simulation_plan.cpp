@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/gathered_scatterer_sides.h"
@@ -195,7 +196,11 @@ engine::ContinuousSky SimulationPlan::daylight_factor_continuous_sky() const {
   const double rho_g = ground_reflectance;
   const Vec3 ground = sky::ground_radiance_rgb({rho_g, rho_g, rho_g}, overcast_horizontal_lux, 0, {0, 0, -1});
   engine::ContinuousSky sky;
-  sky.key = overcast->description() + "; ground " + std::to_string(rho_g);
+  std::ostringstream key;  // every parameter of the radiance, at full precision
+  key.precision(17);
+  key << "daylight factor CIE overcast " << overcast_horizontal_lux << " lx, ground " << ground.x << ' ' << ground.y
+      << ' ' << ground.z;
+  sky.key = key.str();
   // The basis's ground bin 0 is every direction with z <= 0 (sky::PatchBasis::find_bin).
   sky.radiance_rgb = [overcast, ground](const Vec3& w) { return w.z > 0 ? overcast->radiance_rgb(w) : ground; };
   return sky;

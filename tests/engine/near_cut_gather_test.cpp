@@ -142,5 +142,17 @@ TEST(NearCutGather, SensorsNextToAColumnAreGatheredTheOthersKeepThePlane) {
                std::invalid_argument);
 }
 
+// Sensors exactly NearCutGather_m from a cut, on either side of a 0.4 m column's faces at x
+// 2.8 and 3.2 (sensors at 2.5 and 3.5, whose differences round 0.3 down on one side and up on
+// the other), are both out; 1 mm nearer both are in (NearCutMargin_m).
+TEST(NearCutGather, SensorsExactlyAtTheDistanceAreOutOnEitherSide) {
+  ReceiverPlane plane(0.8, true, {{0, 0}, {6, 0}, {6, 6}, {0, 6}});
+  plane.set_interior_cuts({{{2.8, 2.8}, {2.8, 3.2}}, {{2.8, 3.2}, {3.2, 3.2}}, {{3.2, 3.2}, {3.2, 2.8}},
+                           {{3.2, 2.8}, {2.8, 2.8}}});
+  auto at = [](double x) { return SensorPoint{{x, 3.0, 0.8}, {0, 0, 1}}; };
+  EXPECT_TRUE(sensors_near_cuts(plane, {at(2.5), at(3.5)}).empty());
+  EXPECT_EQ(sensors_near_cuts(plane, {at(2.501), at(3.499)}), (std::vector<std::size_t>{0, 1}));
+}
+
 }  // namespace
 }  // namespace dayphoton::engine

@@ -46,6 +46,11 @@ constexpr double OnOutline_m = 1e-3;
 /// Receiver-plane sensors nearer than this to an interior cut of their plane are estimated
 /// by final gather (header comment, "Sensors next to a cut"), metres.
 constexpr double NearCutGather_m = 0.3;
+/// A sensor counts as nearer than NearCutGather_m only by more than this, metres: on a grid
+/// whose spacing divides the distance (sensors every 0.5 m, a cut 0.3 m from two of them on
+/// either side) the rounding of the cut's and the sensor's coordinates would otherwise gather
+/// one and not its mirror image.
+constexpr double NearCutMargin_m = 1e-9;
 
 /// The interior cuts of `plane` by `scene`'s surfaces, in triangle order (header comment).
 std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const ReceiverPlane& plane);
@@ -55,7 +60,8 @@ std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const Receiver
 double distance_to_interior_cut_m(const ReceiverPlane& plane, double x, double y);
 
 /// The indices (ascending) of the sensors within `rows` whose position (x, y) lies nearer than
-/// NearCutGather_m to one of `plane`'s interior cuts (set_interior_cuts).
+/// NearCutGather_m to one of `plane`'s interior cuts (set_interior_cuts), by more than
+/// NearCutMargin_m.
 std::vector<std::size_t> sensors_near_cuts(const ReceiverPlane& plane, const std::vector<SensorPoint>& sensors,
                                            SensorRange rows = {});
 
