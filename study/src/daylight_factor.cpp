@@ -11,6 +11,7 @@
 #include <string>
 
 #include "dayphoton/core/units.h"
+#include "dayphoton/engine/estimate_variance.h"
 
 namespace dayphoton::study {
 
@@ -27,9 +28,27 @@ std::vector<double> photometric_weights(int components) {
   throw std::invalid_argument("matrices must have 1 or 3 components, not " + std::to_string(components));
 }
 
-double luminance_of_rgb(const Vec3& rgb) { return dot(RgbLuminanceWeights, rgb); }
+/// The luminance of `rgb` weighted by bin p of the sky vector, lux: `w` its
+/// photometric_weights (per component for RGB vectors; a one-component vector weights the
+/// luminance).
+double sky_weighted_lux(const Vec3& rgb, const std::vector<double>& w, const RadianceMatrix& sky_vector,
+                        std::size_t p) {
+  if (w.size() == 1) return w[0] * engine::luminance_of(rgb) * double(sky_vector.at(p, 0, 0));
+  return w[0] * rgb.x * double(sky_vector.at(p, 0, 0)) + w[1] * rgb.y * double(sky_vector.at(p, 0, 1)) +
+         w[2] * rgb.z * double(sky_vector.at(p, 0, 2));
+}
 
 }  // namespace
+
+std::vector<double> sky_vector_luminance(const RadianceMatrix& sky_vector) {
+  const int nc = sky_vector.components();
+  std::vector<double> luminance(sky_vector.rows(), 0.0);
+  for (std::size_t p = 0; p < luminance.size(); ++p)
+    luminance[p] = nc == 3 ? RgbLuminanceWeights.x * sky_vector.at(p, 0, 0) + RgbLuminanceWeights.y * sky_vector.at(p, 0, 1) +
+                                 RgbLuminanceWeights.z * sky_vector.at(p, 0, 2)
+                           : static_cast<double>(sky_vector.at(p, 0, 0));
+  return luminance;
+}
 
 std::vector<double> daylight_factor_percent(const RadianceMatrix& coefficients,
                                             const RadianceMatrix& sky_vector,
@@ -70,13 +89,7 @@ std::vector<double> daylight_factor_stderr_percent(const std::vector<double>& va
     throw std::invalid_argument("daylight factor uncertainty: " + std::to_string(variance.size()) +
                                 " variances for " + std::to_string(sensors) + " sensors x " + std::to_string(bins) +
                                 " bins");
-  const int nc = sky_vector.components();
-  // The luminance-weighted radiance of each bin (one-component vectors: the value itself).
-  std::vector<double> luminance(bins, 0.0);
-  for (std::size_t p = 0; p < bins; ++p)
-    luminance[p] = nc == 3 ? RgbLuminanceWeights.x * sky_vector.at(p, 0, 0) + RgbLuminanceWeights.y * sky_vector.at(p, 0, 1) +
-                                 RgbLuminanceWeights.z * sky_vector.at(p, 0, 2)
-                           : static_cast<double>(sky_vector.at(p, 0, 0));
+  const std::vector<double> luminance = sky_vector_luminance(sky_vector);
   const double scale = 100.0 * RadianceWhiteEfficacy_lm_per_W / horizontal_illuminance_lux;
   std::vector<double> out(sensors, 0.0);
   for (std::size_t s = 0; s < sensors; ++s) {
@@ -114,18 +127,9 @@ DaylightFactorParts daylight_factor_parts(const engine::DaylightCoefficients& c,
   if (continuous && sky_index >= skies.skies)
     throw std::invalid_argument("daylight factor: sky " + std::to_string(sky_index) + " of " +
                                 std::to_string(skies.skies) + " continuous skies");
-  const int nc = sky_vector.components();
-  const std::vector<double> w = photometric_weights(nc);
-  auto lux = [&](const Vec3& rgb, std::size_t p) {  // 179 lm/W x the sky-weighted luminance of rgb
-    if (nc == 1) return w[0] * luminance_of_rgb(rgb) * double(sky_vector.at(p, 0, 0));
-    return w[0] * rgb.x * double(sky_vector.at(p, 0, 0)) + w[1] * rgb.y * double(sky_vector.at(p, 0, 1)) +
-           w[2] * rgb.z * double(sky_vector.at(p, 0, 2));
-  };
-  std::vector<double> luminance(bins, 0.0);  // the luminance-weighted radiance of each bin
-  for (std::size_t p = 0; p < bins; ++p)
-    luminance[p] = nc == 3 ? RgbLuminanceWeights.x * sky_vector.at(p, 0, 0) + RgbLuminanceWeights.y * sky_vector.at(p, 0, 1) +
-                                 RgbLuminanceWeights.z * sky_vector.at(p, 0, 2)
-                           : static_cast<double>(sky_vector.at(p, 0, 0));
+  const std::vector<double> w = photometric_weights(sky_vector.components());
+  auto lux = [&](const Vec3& rgb, std::size_t p) { return sky_weighted_lux(rgb, w, sky_vector, p); };
+  const std::vector<double> luminance = sky_vector_luminance(sky_vector);
   const double scale = 100.0 / horizontal_illuminance_lux;  // lux -> DF points
   const double variance_scale = std::pow(scale * RadianceWhiteEfficacy_lm_per_W, 2);
   DaylightFactorParts out;
@@ -145,7 +149,7 @@ DaylightFactorParts daylight_factor_parts(const engine::DaylightCoefficients& c,
     }
     if (continuous) {
       const std::size_t k = s * skies.skies + sky_index;
-      e_lux += RadianceWhiteEfficacy_lm_per_W * luminance_of_rgb(skies.irradiance[k]);
+      e_lux += RadianceWhiteEfficacy_lm_per_W * engine::luminance_of(skies.irradiance[k]);
       out.direct_variance[s] = variance_scale * skies.variance[k];
     }
     out.df_percent[s] = scale * e_lux;
@@ -158,20 +162,18 @@ std::vector<double> continuous_sky_direct_correction_lux(const engine::DaylightC
   const engine::DirectOnSkies& skies = c.direct_on_skies;
   std::vector<double> out(c.sensors, 0.0);
   if (skies.skies == 0) return out;
-  // Both parts through daylight_factor_parts at E_h = 100 lux, where DF points are lux; its
-  // photon part cancels in the difference, so only the direct parts are compared.
-  engine::DaylightCoefficients direct_only;
-  direct_only.sensors = c.sensors;
-  direct_only.sources = c.sources;
-  direct_only.direct = c.direct;
-  direct_only.direct_variance = c.direct_variance;
-  direct_only.caustic.assign(c.direct.size(), Vec3{});
-  direct_only.global.assign(c.direct.size(), Vec3{});
-  direct_only.photon_variance.assign(c.direct.size(), 0.0);
-  const std::vector<double> basis = daylight_factor_parts(direct_only, sky_vector, 100.0, sky_index).df_percent;
-  direct_only.direct_on_skies = skies;
-  const std::vector<double> continuous = daylight_factor_parts(direct_only, sky_vector, 100.0, sky_index).df_percent;
-  for (std::size_t s = 0; s < c.sensors; ++s) out[s] = continuous[s] - basis[s];
+  if (sky_index >= skies.skies || sky_vector.rows() != c.sources || c.direct.size() != c.sensors * c.sources)
+    throw std::invalid_argument("sky component correction: sky " + std::to_string(sky_index) + " of " +
+                                std::to_string(skies.skies) + ", a vector of " + std::to_string(sky_vector.rows()) +
+                                " bins for " + std::to_string(c.sources));
+  const std::vector<double> w = photometric_weights(sky_vector.components());
+  for (std::size_t s = 0; s < c.sensors; ++s) {
+    double basis_lux = 0;
+    for (std::size_t p = 0; p < c.sources; ++p)
+      basis_lux += sky_weighted_lux(c.direct[s * c.sources + p], w, sky_vector, p);
+    out[s] = RadianceWhiteEfficacy_lm_per_W * engine::luminance_of(skies.irradiance[s * skies.skies + sky_index]) -
+             basis_lux;
+  }
   return out;
 }
 

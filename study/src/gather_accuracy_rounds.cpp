@@ -217,12 +217,10 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
   // The overcast sky's weights: a sensor's DF variance is sum_p (df_scale L_p)^2 var_p.
   const RadianceMatrix& sky = *c.overcast_vector;
   const double df_scale = 100.0 * RadianceWhiteEfficacy_lm_per_W / c.horizontal_illuminance_lux;
+  const std::vector<double> luminance = sky_vector_luminance(sky);
   std::vector<double> weight(n);
   for (std::size_t p = 0; p < n; ++p) {
-    const double l = sky.components() == 3 ? RgbLuminanceWeights.x * sky.at(p, 0, 0) +
-                                                 RgbLuminanceWeights.y * sky.at(p, 0, 1) +
-                                                 RgbLuminanceWeights.z * sky.at(p, 0, 2)
-                                           : double(sky.at(p, 0, 0));
+    const double l = luminance[p];
     weight[p] = df_scale * df_scale * l * l;
   }
   auto measure = [&](engine::DaylightCoefficients dc, const std::vector<double>& fixed) {

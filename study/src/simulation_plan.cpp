@@ -13,6 +13,7 @@
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/study/annual_sun.h"
+#include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/point_in_time.h"
 
 namespace dayphoton::study {
@@ -174,12 +175,7 @@ SimulationPlan SimulationPlan::of(const project::Project& project, const SunSite
   // (sun_annual_estimating, in sun_bin_steps.cpp and the sun rounds), so sun_estimating,
   // copied above, has none.
   const RadianceMatrix df_sky = p.daylight_factor_sky();
-  std::vector<double>& w = p.sky_estimating.gather.variance_weights;
-  w.resize(df_sky.rows());
-  for (std::size_t b = 0; b < w.size(); ++b)
-    w[b] = df_sky.components() == 3 ? RgbLuminanceWeights.x * df_sky.at(b, 0, 0) + RgbLuminanceWeights.y * df_sky.at(b, 0, 1) +
-                                          RgbLuminanceWeights.z * df_sky.at(b, 0, 2)
-                                    : double(df_sky.at(b, 0, 0));
+  p.sky_estimating.gather.variance_weights = sky_vector_luminance(df_sky);
   return p;
 }
 

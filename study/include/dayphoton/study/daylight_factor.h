@@ -16,6 +16,12 @@
 
 namespace dayphoton::study {
 
+/// The luminance-weighted radiance of each bin of a sky vector (bins x 1; RADIANCE's RGB
+/// weights, a one-component vector's value itself): the L_p whose squares weight the
+/// coefficients' variances in every DF variance (daylight_factor_stderr_percent below, the
+/// accuracy rounds, the gather's variance weights).
+std::vector<double> sky_vector_luminance(const RadianceMatrix& sky_vector);
+
 /// DF in percent per sensor. `coefficients`: sensors x bins x 3 (RADIANCE layout);
 /// `sky_vector`: bins x 1 x 3 (one-component matrices are also accepted, weight 179);
 /// `horizontal_illuminance_lux` > 0. Throws std::invalid_argument on a size or component
