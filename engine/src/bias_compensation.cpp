@@ -106,7 +106,8 @@ Choice choose_bandwidth(const PhotonMap& map, const std::vector<NeighbourPhoton>
     return choice;
   };
   auto evaluate = [&](Choice& choice) {
-    choice.irradiance = accumulate_disc(map, neighbours, choice.disc, options.kernel);
+    choice.irradiance =
+        accumulate_disc(map, neighbours, choice.disc, options.kernel, nullptr, nullptr, nullptr, options.flux);
   };
   auto weight = [&](std::size_t j) { return std::pow(static_cast<double>(j), options.weight_power); };
 
@@ -164,7 +165,8 @@ DensityEstimate estimate_irradiance_bias_compensated(const PhotonMap& map, const
   // The variance of the estimate at the chosen bandwidth (estimate_variance.h): the choice
   // itself depends on the photons, which this leaves out.
   if (choice.disc.photon_count > 0)
-    (void)accumulate_disc(map, neighbours, choice.disc, options.kernel, nullptr, &result.luminance_variance);
+    (void)accumulate_disc(map, neighbours, choice.disc, options.kernel, nullptr, &result.luminance_variance, nullptr,
+                          options.flux);
   return result;
 }
 
@@ -181,7 +183,7 @@ DensityEstimate estimate_contributions_bias_compensated(const PhotonMap& map,
   DensityEstimate result;
   result.irradiance =
       accumulate_disc(map, neighbours, choice.disc, options.kernel, &per_source, &result.luminance_variance,
-                      per_source_variance);
+                      per_source_variance, options.flux);
   result.radius_m = choice.disc.radius_m;
   result.photon_count = choice.disc.photon_count;
   return result;

@@ -14,6 +14,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/estimate_variance.h"
 #include "dayphoton/engine/local_quadratic_fit.h"
+#include "dayphoton/engine/photon_part_on_sky.h"
 #include "dayphoton/engine/plane_cuts.h"
 #include "dayphoton/engine/plane_visibility.h"
 
@@ -56,6 +57,7 @@ BiasCompensationOptions bias_options(const CoefficientOptions& options,
   b.kernel = density.kernel;
   b.rng_seed = options.seed;
   b.rng_index = index;
+  b.flux = density.flux;
   return b;
 }
 
@@ -265,13 +267,14 @@ double local_linear_variance(const AreaMoments& m, const double q[6]) {
 /// as not, and clamping it would bias it upwards. Every consumer reads the total
 /// (DaylightCoefficients::total). The variance leaves the clamp out (it only removes variance).
 ClassEstimates local_quadratic_estimate(const PhotonMap& map, const Vec3& at, const std::vector<NeighbourPhoton>& found,
-                                        const KernelDisc& disc, const LocalQuadraticKernel& kernel) {
+                                        const KernelDisc& disc, const LocalQuadraticKernel& kernel,
+                                        PhotonFlux photon_flux) {
   const double inv_r = 1.0 / disc.radius_m, inv_r2 = inv_r * inv_r;
   Vec3 sum[2] = {Vec3{0, 0, 0}, Vec3{0, 0, 0}};
   double variance = 0;
   for (std::size_t j = 0; j < disc.photon_count; ++j) {
     const Photon& ph = map.photons()[found[j].index];
-    const Vec3 flux = ph.flux_rgb();
+    const Vec3 flux = flux_of(ph, photon_flux);
     const double w = kernel.weight((double(ph.position[0]) - at.x) * inv_r, (double(ph.position[1]) - at.y) * inv_r);
     sum[ph.path_class == PathClass::Caustic ? 0 : 1] += flux * w;
     const double wy = w * luminance_of(flux);
@@ -387,7 +390,7 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     if ((corrected && curvature == CurvatureCorrection::Quadratic) || (quadratic_at_walls && cut)) {
       const LocalQuadraticKernel kernel = local_quadratic_kernel(
           visible ? visible->moments4(disc.radius_m) : plane->clipped_disc_moments4(at.x, at.y, disc.radius_m));
-      if (kernel.valid) return local_quadratic_estimate(map, at, found, disc, kernel);
+      if (kernel.valid) return local_quadratic_estimate(map, at, found, disc, kernel, density.flux);
     }
     Vec3 s0[2], s1x[2], s1y[2];
     for (int c = 0; c < 2; ++c) s0[c] = s1x[c] = s1y[c] = Vec3{0, 0, 0};
@@ -395,7 +398,7 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     for (std::size_t j = 0; j < disc.photon_count; ++j) {
       const Photon& ph = map.photons()[found[j].index];
       const int c = ph.path_class == PathClass::Caustic ? 0 : 1;
-      const Vec3 flux = ph.flux_rgb();
+      const Vec3 flux = flux_of(ph, density.flux);
       const double dx = double(ph.position[0]) - at.x, dy = double(ph.position[1]) - at.y;
       s0[c] += flux;
       s1x[c] += flux * dx;
@@ -423,7 +426,7 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     double pilot_variance = 0;
     for (const NeighbourPhoton& n : pilot_found) {
       const Photon& ph = map.photons()[n.index];
-      const Vec3 flux = ph.flux_rgb();
+      const Vec3 flux = flux_of(ph, density.flux);
       const double w = pilot.weight(n.distance_squared_m2);
       bias[ph.path_class == PathClass::Caustic ? 0 : 1] += flux * w;
       const double wy = w * luminance_of(flux);
@@ -431,7 +434,7 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     }
     double covariance = 0;
     for (std::size_t j = 0; j < disc.photon_count; ++j) {
-      const double y = luminance_of(map.photons()[found[j].index].flux_rgb());
+      const double y = luminance_of(flux_of(map.photons()[found[j].index], density.flux));
       covariance += pilot.weight(found[j].distance_squared_m2) * y * y;
     }
     out.caustic -= bias[0];
@@ -662,6 +665,8 @@ DaylightCoefficients daylight_coefficients(const Scene& scene,
   c.direct = direct_coefficients(scene, materials, sources, sensors, options.direct, &c.direct_variance, rows,
                                  &c.direct_on_skies);
   photon_coefficients(scene, materials, sources, photons, sensors, options, c, rows);
+  if (!options.photon_sky_bin_radiance_rgb.empty())
+    c.photon_on_sky = photon_part_on_sky(photons, sensors, options, c, options.photon_sky_bin_radiance_rgb, rows);
   return c;
 }
 

@@ -29,7 +29,7 @@ std::size_t lookup_count(const DensityEstimateOptions& options) {
 
 Vec3 accumulate_disc(const PhotonMap& map, const std::vector<NeighbourPhoton>& sorted,
                      const KernelDisc& disc, KernelType kernel, std::vector<Vec3>* per_source,
-                     double* luminance_variance, std::vector<double>* per_source_variance) {
+                     double* luminance_variance, std::vector<double>* per_source_variance, PhotonFlux flux) {
   if (disc.photon_count == 0) return Vec3{};
   const auto& photons = map.photons();
   if (!(disc.radius_m > 0)) {
@@ -57,7 +57,7 @@ Vec3 accumulate_disc(const PhotonMap& map, const std::vector<NeighbourPhoton>& s
     const double weight =
         uniform ? uniform_weight
                 : kernel_weight(kernel, std::sqrt(sorted[j].distance_squared_m2), disc.radius_m);
-    const Vec3 term = photon.flux_rgb() * weight;
+    const Vec3 term = flux_of(photon, flux) * weight;
     sum += term;
     if (per_source) (*per_source)[photon.source] += term;
     if (luminance_variance || per_source_variance) {
@@ -107,7 +107,8 @@ DensityEstimate estimate_irradiance(const PhotonMap& map, const Vec3& point,
   DensityEstimate estimate;
   estimate.radius_m = disc.radius_m;
   estimate.photon_count = disc.photon_count;
-  estimate.irradiance = accumulate_disc(map, neighbours, disc, options.kernel, nullptr, &estimate.luminance_variance);
+  estimate.irradiance =
+      accumulate_disc(map, neighbours, disc, options.kernel, nullptr, &estimate.luminance_variance, nullptr, options.flux);
   return estimate;
 }
 
@@ -127,7 +128,7 @@ DensityEstimate estimate_contributions(const PhotonMap& map, const Vec3& point,
   estimate.radius_m = disc.radius_m;
   estimate.photon_count = disc.photon_count;
   estimate.irradiance = accumulate_disc(map, neighbours, disc, options.kernel, &per_source,
-                                       &estimate.luminance_variance, per_source_variance);
+                                       &estimate.luminance_variance, per_source_variance, options.flux);
   return estimate;
 }
 

@@ -26,11 +26,12 @@ bool inside(const Bounds3& b, const Vec3& p) {
 }
 
 Photon make_photon(const Vec3& position, const Vec3& flux, const Vec3& normal,
-                   std::uint32_t source, PathClass path_class) {
+                   std::uint32_t source, std::uint32_t sky_ratio_code, PathClass path_class) {
   Photon ph;
   ph.position = {float(position.x), float(position.y), float(position.z)};
   ph.flux = {float(flux.x), float(flux.y), float(flux.z)};
-  ph.source = source;
+  ph.source = source;  // < MaxPhotonSources (PortEmitter)
+  ph.sky_ratio_code = sky_ratio_code;
   ph.set_normal(normal);
   ph.path_class = path_class;
   return ph;
@@ -189,14 +190,14 @@ bool stores_direct_on_scatterer(const Scene& scene, const TracingOptions& option
 // the photon is absorbed.
 std::optional<PathStart> land_on_scatterer(const Scene& scene, const std::vector<Material>& materials,
                                            const PortEntry& entry, std::uint32_t source,
-                                           const TracingOptions& options, Rng& scattering,
-                                           Rng& roulette_rng, PhotonSink& sink) {
+                                           std::uint32_t sky_ratio_code, const TracingOptions& options,
+                                           Rng& scattering, Rng& roulette_rng, PhotonSink& sink) {
   const Port& scatterer = scene.outdoor_scatterers()[static_cast<std::size_t>(entry.scatterer)];
   const Material& material =
       materials[static_cast<std::size_t>(scene.description().surfaces[scatterer.surface].material)];
   const Vec3 lit_side = dot(entry.direction, scatterer.normal) < 0 ? scatterer.normal : scatterer.normal * -1.0;
   if (material.stores_photons() && stores_direct_on_scatterer(scene, options, entry.scatterer, lit_side))
-    sink.record(-1, make_photon(entry.position, {1, 1, 1}, lit_side, source, PathClass::Direct));
+    sink.record(-1, make_photon(entry.position, {1, 1, 1}, lit_side, source, sky_ratio_code, PathClass::Direct));
   std::optional<PathStart> start = first_event(scene, material, entry.position, scatterer.normal, entry.direction,
                                                source, scattering, roulette_rng);
   if (start) start->outdoors = true;
@@ -236,7 +237,7 @@ bool trace_path_to(const Scene& scene, const std::vector<Material>& materials,
         if (!planes[g].contains(p.x, p.y)) continue;
         sink.record(static_cast<int>(g),
                     make_photon({p.x, p.y, planes[g].height_m()}, flux, planes[g].normal(),
-                                start.source, path_class));
+                                start.source, start.sky_ratio_code, path_class));
       }
     }
     if (!hit) return was_indoors;
@@ -252,7 +253,7 @@ bool trace_path_to(const Scene& scene, const std::vector<Material>& materials,
       // A Direct photon outdoors (on a scatterer, after straight passes only): where a
       // gather can read it.
       if (store || !outdoors || stores_direct_on_scatterer(scene, options, hit->scatterer, side))
-        sink.record(-1, make_photon(hit->position, flux, side, start.source, path_class));
+        sink.record(-1, make_photon(hit->position, flux, side, start.source, start.sky_ratio_code, path_class));
     }
     const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
     const std::optional<ScatterSample> s = material.sample(ray.direction, hit->normal, u0, u1, u2);
@@ -317,6 +318,13 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
   std::vector<BlockResult> block_results(blocks);
   const RngSourceKey key = Rng::source_key(options.seed, source);
   const std::vector<PortPane> panes = port_panes(scene, materials);
+  // The sky ratio's bin: the bins of a sky basis only (a sun disc's photons keep ratio 1).
+  const DistantSource& emitted = emitter.sources()[source];
+  const bool sky_bin = options.sky_ratios && emitted.kind == SourceKind::SkyBin;
+  const std::size_t sky_bin_index = static_cast<std::size_t>(std::max(0, emitted.bin));
+  if (sky_bin && sky_bin_index >= options.sky_ratios->bins())
+    throw std::invalid_argument("photon tracing: sky ratios of " + std::to_string(options.sky_ratios->bins()) +
+                                " bins for sky bin " + std::to_string(sky_bin_index));
   tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t b) {
     BlockResult& out = block_results[b];
     out.planes.resize(planes.size());
@@ -331,11 +339,16 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
       Rng scattering(key, i, RandomStream::Scattering);
       Rng roulette_rng(key, i, RandomStream::Roulette);
       sink.set_attempt(key, i);
-      const std::optional<PathStart> start =
+      const std::uint32_t ratio_code =
+          sky_bin ? Photon::sky_ratio_code_of(options.sky_ratios->ratio(sky_bin_index, entry->direction * -1.0))
+                  : SkyRatioOne;
+      std::optional<PathStart> start =
           entry->port >= 0
               ? pass_port(scene, panes[static_cast<std::size_t>(entry->port)], *entry, source, scattering, roulette_rng)
-              : land_on_scatterer(scene, materials, *entry, source, options, scattering, roulette_rng, sink);
+              : land_on_scatterer(scene, materials, *entry, source, ratio_code, options, scattering, roulette_rng,
+                                  sink);
       if (!start) continue;
+      start->sky_ratio_code = ratio_code;
       const bool indoors = trace_path_to(scene, materials, planes, *start, options, scattering, roulette_rng,
                                          sink, &out.rays);
       if (entry->scatterer >= 0 && indoors) ++out.scattered_indoors;

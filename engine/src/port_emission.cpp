@@ -1,12 +1,16 @@
 // PortEmitter: see port_emission.h for the method and why it is exact.
 #include "dayphoton/engine/port_emission.h"
 
+#include "dayphoton/engine/photon.h"
+
 #include "dayphoton/engine/patch_cosine_bound.h"
 #include "dayphoton/engine/scatterer_sides.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <limits>
 #include <map>
 
@@ -137,6 +141,9 @@ int cells_for(const SourceSet& sources, std::size_t p, std::size_t sites) {
 
 PortEmitter::PortEmitter(const Scene& scene, const SourceSet& sources)
     : m_scene(&scene), m_sources(&sources) {
+  if (sources.size() > MaxPhotonSources)
+    throw std::invalid_argument("photon emission: " + std::to_string(sources.size()) + " sources, but a photon record names at most " +
+                                std::to_string(MaxPhotonSources));
   const PortSet& ports = scene.ports();
   for (std::size_t k = 0; k < ports.size(); ++k)
     m_sites.push_back(Site{&ports, k, ports[k].normal, static_cast<int>(k), -1});

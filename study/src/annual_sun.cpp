@@ -119,6 +119,9 @@ engine::TracingOptions sun_bin_tracing(const engine::TracingOptions& options, co
 }
 
 void relabel_photons(engine::TracedPhotons& photons, std::uint32_t source) {
+  if (source >= engine::MaxPhotonSources)
+    throw std::invalid_argument("sun photons: source " + std::to_string(source) + " beyond the photon record's " +
+                                std::to_string(engine::MaxPhotonSources));
   for (engine::Photon& p : photons.surface) p.source = source;
   for (std::vector<engine::Photon>& plane : photons.planes)
     for (engine::Photon& p : plane) p.source = source;

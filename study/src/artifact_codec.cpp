@@ -24,6 +24,9 @@ constexpr std::size_t CoefficientPairBytes = 3 * Vec3Bytes + 2 * 8;
 /// Per (sensor, continuous sky): the direct irradiance (Vec3) and its variance (f64).
 constexpr std::size_t SkyDirectBytes = Vec3Bytes + 8;
 constexpr std::size_t PreambleBytes = 8;  // tag + version
+/// A coefficient artefact's counts: sensors, sources, skies, photon part on the sky (0 or 1)
+/// and its basis rows, u64 each.
+constexpr std::size_t CoefficientHeaderBytes = 5 * 8;
 
 class Writer {
  public:
@@ -60,7 +63,7 @@ class Writer {
   void photon(const Photon& p) {
     for (const float x : p.position) f32(x);
     for (const float x : p.flux) f32(x);
-    u32(p.source);
+    u32(p.source_word());
     for (const std::int8_t x : p.normal) u8(static_cast<std::uint8_t>(x));
     u8(static_cast<std::uint8_t>(p.path_class));
   }
@@ -132,7 +135,7 @@ class Reader {
     Photon p;
     for (float& x : p.position) x = f32("photon position");
     for (float& x : p.flux) x = f32("photon flux");
-    p.source = u32("photon source");
+    p.set_source_word(u32("photon source"));
     for (std::int8_t& x : p.normal) x = static_cast<std::int8_t>(u8("photon normal"));
     const std::uint8_t c = u8("photon path class");
     if (c > static_cast<std::uint8_t>(engine::PathClass::Global))
@@ -257,17 +260,28 @@ std::string encode_coefficients(const engine::DaylightCoefficients& c) {
     throw std::invalid_argument("daylight coefficients: the direct part on " + std::to_string(skies.skies) +
                                 " skies must hold " + std::to_string(c.sensors) + " x " +
                                 std::to_string(skies.skies) + " values");
-  Writer w(PreambleBytes + 24 + n * CoefficientPairBytes + m * SkyDirectBytes);
+  const engine::PhotonOnSky& photon_sky = c.photon_on_sky;
+  const std::size_t photon_rows = photon_sky.empty() ? 0 : c.sensors;
+  if (!photon_sky.empty() && (photon_sky.irradiance.size() != c.sensors || photon_sky.variance.size() != c.sensors ||
+                              photon_sky.basis_rows > c.sensors))
+    throw std::invalid_argument("daylight coefficients: the photon part on the sky must hold " +
+                                std::to_string(c.sensors) + " values");
+  Writer w(PreambleBytes + CoefficientHeaderBytes + n * CoefficientPairBytes + m * SkyDirectBytes +
+           photon_rows * SkyDirectBytes);
   w.tag("DCOF", CoefficientLayoutVersion);
   w.u64(c.sensors);
   w.u64(c.sources);
   w.u64(skies.skies);
+  w.u64(photon_rows > 0 ? 1 : 0);
+  w.u64(photon_sky.basis_rows);
   for (const auto* part : {&c.direct, &c.caustic, &c.global})
     for (const Vec3& v : *part) w.vec3(v);
   for (const auto* part : {&c.direct_variance, &c.photon_variance})
     for (const double v : *part) w.f64(v);
   for (const Vec3& v : skies.irradiance) w.vec3(v);
   for (const double v : skies.variance) w.f64(v);
+  for (const Vec3& v : photon_sky.irradiance) w.vec3(v);
+  for (const double v : photon_sky.variance) w.f64(v);
   return w.finish();
 }
 
@@ -278,14 +292,21 @@ engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
   const std::uint64_t sensors = r.u64("sensor count");
   const std::uint64_t sources = r.u64("source count");
   const std::uint64_t skies = r.u64("sky count");
+  const std::uint64_t photon_sky = r.u64("photon part on the sky");
+  const std::uint64_t basis_rows = r.u64("photon part's basis rows");
+  if (photon_sky > 1) r.fail("photon part on the sky: " + std::to_string(photon_sky) + " skies, at most 1");
+  if (basis_rows > sensors) r.fail("photon part on the sky: " + std::to_string(basis_rows) + " basis rows");
   // The five arrays need CoefficientPairBytes per (sensor, source) pair and the two of the
-  // skies SkyDirectBytes per (sensor, sky): check without overflow.
-  const std::size_t remaining = bytes.size() - (PreambleBytes + 24);
+  // skies (and of the photon part on the sky) SkyDirectBytes per (sensor, sky): check without
+  // overflow.
+  const std::size_t remaining = bytes.size() - (PreambleBytes + CoefficientHeaderBytes);
   const std::uint64_t max_pairs = remaining / CoefficientPairBytes;
-  const bool fits = (sensors == 0 || (sources <= max_pairs / sensors && skies <= remaining / SkyDirectBytes / sensors));
-  if (!fits || sensors * sources * CoefficientPairBytes + sensors * skies * SkyDirectBytes != remaining)
+  const std::uint64_t sky_rows = skies + photon_sky;
+  const bool fits = (sensors == 0 || (sources <= max_pairs / sensors && skies <= remaining / SkyDirectBytes / sensors &&
+                                      sky_rows <= remaining / SkyDirectBytes / sensors));
+  if (!fits || sensors * sources * CoefficientPairBytes + sensors * sky_rows * SkyDirectBytes != remaining)
     r.fail("size mismatch: " + std::to_string(sensors) + " sensors x " + std::to_string(sources) +
-           " sources need " + std::to_string(CoefficientPairBytes) + " bytes each and x " + std::to_string(skies) +
+           " sources need " + std::to_string(CoefficientPairBytes) + " bytes each and x " + std::to_string(sky_rows) +
            " skies " + std::to_string(SkyDirectBytes) + " bytes each, " + std::to_string(remaining) +
            " bytes remain");
   c.sensors = static_cast<std::size_t>(sensors);
@@ -305,6 +326,14 @@ engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
   for (Vec3& v : on_skies.irradiance) v = r.vec3("direct irradiance on a sky");
   on_skies.variance.resize(c.sensors * on_skies.skies);
   for (double& v : on_skies.variance) v = r.f64("variance on a sky");
+  if (photon_sky == 1) {
+    engine::PhotonOnSky& p = c.photon_on_sky;
+    p.basis_rows = static_cast<std::size_t>(basis_rows);
+    p.irradiance.resize(c.sensors);
+    for (Vec3& v : p.irradiance) v = r.vec3("photon part on the sky");
+    p.variance.resize(c.sensors);
+    for (double& v : p.variance) v = r.f64("variance of the photon part on the sky");
+  }
   r.done();
   return c;
 }

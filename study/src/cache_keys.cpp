@@ -75,6 +75,8 @@ void add_tracing_options(ContentHash& h, std::size_t source, const engine::Traci
   for (const std::uint8_t sides : o.scatterer_direct_sides) h.integer(sides);
   h.integer(o.region_of_interest ? 1 : 0);
   if (o.region_of_interest) h.vec3(o.region_of_interest->lower).vec3(o.region_of_interest->upper);
+  // The records' sky ratios (engine/photon.h): hashed only where set.
+  if (o.sky_ratios) h.text("sky ratios").text(o.sky_ratios->key());
 }
 
 /// The grid's geometry and sensors.
@@ -102,6 +104,8 @@ void add_estimate_options(ContentHash& h, const engine::CoefficientOptions& o) {
   h.integer(o.gather.max_specular_events).integer(static_cast<std::int64_t>(o.gather.seed));
   h.integer(static_cast<std::int64_t>(o.gather.variance_weights.size()));
   for (const double w : o.gather.variance_weights) h.number(w);
+  h.text("photon sky").integer(static_cast<std::int64_t>(o.photon_sky_bin_radiance_rgb.size()));
+  for (const Vec3& l : o.photon_sky_bin_radiance_rgb) h.vec3(l);
 }
 
 /// A plane's sensors gathered next to a cut (engine/plane_cuts.h): nothing without any.

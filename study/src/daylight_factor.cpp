@@ -106,7 +106,10 @@ std::vector<double> DaylightFactorParts::stderr_percent() const {
   std::vector<double> out(sensors, 0.0);
   for (std::size_t s = 0; s < sensors; ++s) {
     double v = direct_variance[s];
-    for (std::size_t p = 0; p < bins; ++p) v += photon_variance[s * bins + p];
+    if (!photon_sky_variance.empty())
+      v += photon_sky_variance[s];
+    else
+      for (std::size_t p = 0; p < bins; ++p) v += photon_variance[s * bins + p];
     out[s] = std::sqrt(std::max(0.0, v));
   }
   return out;
@@ -127,6 +130,13 @@ DaylightFactorParts daylight_factor_parts(const engine::DaylightCoefficients& c,
   if (continuous && sky_index >= skies.skies)
     throw std::invalid_argument("daylight factor: sky " + std::to_string(sky_index) + " of " +
                                 std::to_string(skies.skies) + " continuous skies");
+  // The photon part under the continuous sky: the coefficients carry it for their first sky.
+  const engine::PhotonOnSky& photon_sky = c.photon_on_sky;
+  const bool photon_continuous = continuous && sky_index == 0 && !photon_sky.empty();
+  if (photon_continuous && (photon_sky.irradiance.size() != sensors || photon_sky.variance.size() != sensors))
+    throw std::invalid_argument("daylight factor: the photon part on the sky holds " +
+                                std::to_string(photon_sky.irradiance.size()) + " values for " +
+                                std::to_string(sensors) + " sensors");
   const std::vector<double> w = photometric_weights(sky_vector.components());
   auto lux = [&](const Vec3& rgb, std::size_t p) { return sky_weighted_lux(rgb, w, sky_vector, p); };
   const std::vector<double> luminance = sky_vector_luminance(sky_vector);
@@ -136,11 +146,16 @@ DaylightFactorParts daylight_factor_parts(const engine::DaylightCoefficients& c,
   out.df_percent.assign(sensors, 0.0);
   out.direct_variance.assign(sensors, 0.0);
   out.photon_variance.assign(sensors * bins, 0.0);
+  if (photon_continuous) out.photon_sky_variance.assign(sensors, 0.0);
   for (std::size_t s = 0; s < sensors; ++s) {
     double e_lux = 0;
+    if (photon_continuous) {
+      e_lux += RadianceWhiteEfficacy_lm_per_W * engine::luminance_of(photon_sky.irradiance[s]);
+      out.photon_sky_variance[s] = variance_scale * photon_sky.variance[s];
+    }
     for (std::size_t p = 0; p < bins; ++p) {
       const std::size_t i = s * bins + p;
-      e_lux += lux(c.caustic[i] + c.global[i], p);
+      if (!photon_continuous) e_lux += lux(c.caustic[i] + c.global[i], p);
       out.photon_variance[i] = variance_scale * luminance[p] * luminance[p] * c.photon_variance[i];
       if (!continuous) {
         e_lux += lux(c.direct[i], p);
@@ -173,6 +188,29 @@ std::vector<double> continuous_sky_direct_correction_lux(const engine::DaylightC
       basis_lux += sky_weighted_lux(c.direct[s * c.sources + p], w, sky_vector, p);
     out[s] = RadianceWhiteEfficacy_lm_per_W * engine::luminance_of(skies.irradiance[s * skies.skies + sky_index]) -
              basis_lux;
+  }
+  return out;
+}
+
+std::vector<double> continuous_sky_photon_correction_lux(const engine::DaylightCoefficients& c,
+                                                         const RadianceMatrix& sky_vector) {
+  const engine::PhotonOnSky& on_sky = c.photon_on_sky;
+  std::vector<double> out(c.sensors, 0.0);
+  if (on_sky.empty()) return out;
+  if (on_sky.irradiance.size() != c.sensors || sky_vector.rows() != c.sources ||
+      c.caustic.size() != c.sensors * c.sources || c.global.size() != c.sensors * c.sources)
+    throw std::invalid_argument("photon part correction: a vector of " + std::to_string(sky_vector.rows()) +
+                                " bins for " + std::to_string(c.sources) + " and " +
+                                std::to_string(on_sky.irradiance.size()) + " values for " +
+                                std::to_string(c.sensors) + " sensors");
+  const std::vector<double> w = photometric_weights(sky_vector.components());
+  for (std::size_t s = 0; s < c.sensors; ++s) {
+    double basis_lux = 0;
+    for (std::size_t p = 0; p < c.sources; ++p) {
+      const std::size_t i = s * c.sources + p;
+      basis_lux += sky_weighted_lux(c.caustic[i] + c.global[i], w, sky_vector, p);
+    }
+    out[s] = RadianceWhiteEfficacy_lm_per_W * engine::luminance_of(on_sky.irradiance[s]) - basis_lux;
   }
   return out;
 }

@@ -21,6 +21,7 @@ namespace dayphoton::study {
 void run_points_in_time(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                         const std::vector<RadianceMatrix>& sky_coefficients,
                         const std::vector<engine::DaylightCoefficients>& direct_parts,
+                        const std::vector<std::vector<double>>& df_photon_corrections_lux,
                         const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx) {
   const project::Simulation& sim = project.simulation;
   const std::vector<project::PointInTimeSpec>& cases = project.points_in_time;
@@ -43,6 +44,7 @@ void run_points_in_time(const project::Project& project, const std::string& pref
   }
   // The rest makes the files: not on the other ranks of an MPI run (they write nothing).
   if (!ctx.executor.writes_results()) return;
+  const std::vector<double> df_luminance = sky_vector_luminance(ctx.plan.daylight_factor_sky());
   std::vector<std::string> names;
   for (const project::PointInTimeSpec& c : cases) names.push_back(c.name);
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
@@ -64,8 +66,21 @@ void run_points_in_time(const project::Project& project, const std::string& pref
       RadianceMatrix column(skies.sky.matrix.rows(), 1, skies.sky.matrix.components());
       for (std::size_t p = 0; p < column.rows(); ++p)
         for (int c = 0; c < column.components(); ++c) column.at(p, 0, c) = skies.sky.matrix.at(p, k, c);
-      const std::vector<double> correction =
+      std::vector<double> correction =
           continuous_sky_direct_correction_lux(direct_parts.at(g), column, static_cast<std::size_t>(sky_index));
+      // A cie_overcast case's photon part: the DF's miss scaled to its sky (the ratio of
+      // the two vectors' sky bins, equal for every bin; ground bin 0 left out).
+      if (cases[k].sky == project::PointSky::CieOvercast) {
+        const std::vector<double> case_luminance = sky_vector_luminance(column);
+        double case_sky = 0, df_sky = 0;
+        for (std::size_t p = 1; p < column.rows(); ++p) {
+          case_sky += case_luminance[p];
+          df_sky += df_luminance.at(p);
+        }
+        const double scale = df_sky > 0 ? case_sky / df_sky : 0.0;
+        const std::vector<double>& miss = df_photon_corrections_lux.at(g);
+        for (std::size_t i = 0; i < correction.size(); ++i) correction[i] += scale * miss.at(i);
+      }
       for (std::size_t i = 0; i < table.sensor_count(); ++i)
         table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + correction.at(i));
     }

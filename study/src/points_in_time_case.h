@@ -17,10 +17,13 @@ namespace dayphoton::study {
 /// `direct_parts`: per grid, the sky coefficients' direct part with its continuous skies
 /// (engine::DaylightCoefficients::direct_on_skies): a CIE case's direct part is taken from its
 /// continuous sky (SimulationPlan::point_in_time_sky) instead of the patch means, as the
-/// daylight factor's is (so a cie_overcast case stays DF x E_h / 100).
+/// daylight factor's is. `df_photon_corrections_lux`: per grid, what the basis misses of the
+/// DF's photon part (continuous_sky_photon_correction_lux), which a cie_overcast case, of the
+/// DF sky's shape, takes scaled to its own sky, so it stays DF x E_h / 100.
 void run_points_in_time(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                         const std::vector<RadianceMatrix>& sky_coefficients,
                         const std::vector<engine::DaylightCoefficients>& direct_parts,
+                        const std::vector<std::vector<double>>& df_photon_corrections_lux,
                         const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx);
 
 }  // namespace dayphoton::study

@@ -9,6 +9,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/gathered_scatterer_sides.h"
 #include "dayphoton/engine/plane_cuts.h"
+#include "dayphoton/engine/sky_ratios.h"
 #include "dayphoton/project/north_rotation.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
@@ -176,6 +177,21 @@ SimulationPlan SimulationPlan::of(const project::Project& project, const SunSite
   // copied above, has none.
   const RadianceMatrix df_sky = p.daylight_factor_sky();
   p.sky_estimating.gather.variance_weights = sky_vector_luminance(df_sky);
+  // The daylight factor's photon part under the continuous sky too (engine/sky_ratios.h): the
+  // sky photons carry their ratio to the bin's mean, and the sky coefficients the photon part
+  // under the sky itself. The sun bins have no sky ratio (sun_tracing and sun_estimating
+  // were copied before).
+  // The ratios depend on the sky's shape and the bins alone (the photons' keys have the
+  // basis): not on its illuminance, nor on the ground, whose bin is uniform (ratio 1). So
+  // their key names the shape, and changing the ground keeps the cached photons.
+  engine::ContinuousSky ratio_sky = p.daylight_factor_continuous_sky();
+  ratio_sky.key = "CIE overcast, over its means in the basis's bins (sky::sky_vector)";
+  p.sky_tracing.sky_ratios =
+      std::make_shared<const engine::SkyRatios>(std::move(ratio_sky), p.sky_estimating.gather.variance_weights);
+  for (std::size_t b = 0; b < df_sky.rows(); ++b)
+    p.sky_estimating.photon_sky_bin_radiance_rgb.push_back(
+        Vec3{df_sky.at(b, 0, 0), df_sky.at(b, 0, df_sky.components() > 1 ? 1 : 0),
+             df_sky.at(b, 0, df_sky.components() > 2 ? 2 : 0)});
   return p;
 }
 

@@ -173,6 +173,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   std::vector<std::vector<double>> sky_variances;  // sensors x sources per grid (sky_variance_of)
   // Per grid, for the point-in-time cases: the direct part alone (with its continuous skies).
   std::vector<engine::DaylightCoefficients> point_direct_parts;
+  std::vector<std::vector<double>> point_photon_corrections;  // per grid, lux under the DF sky
   std::vector<std::string> folders;
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
@@ -252,6 +253,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     // Of the sky coefficients' parts only the matrix and the variances are needed from here on.
     sky_variances.push_back(sky_variance_of(*coefficients[g]));
     if (!project.points_in_time.empty()) {
+      point_photon_corrections.push_back(continuous_sky_photon_correction_lux(*coefficients[g], overcast_vector));
       engine::DaylightCoefficients part;
       part.sensors = coefficients[g]->sensors;
       part.sources = coefficients[g]->sources;
@@ -422,7 +424,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   }
   // 7. Point-in-time cases.
   if (!project.points_in_time.empty())
-    run_points_in_time(project, prefix, cs, coefficient_matrices, point_direct_parts, folders, grids_json, ctx);
+    run_points_in_time(project, prefix, cs, coefficient_matrices, point_direct_parts, point_photon_corrections, folders,
+                       grids_json, ctx);
   return grids_json;
 }
 

@@ -52,7 +52,8 @@ std::vector<Photon> random_photons(std::size_t n, std::uint64_t seed) {
     for (float& x : p.flux) x = std::abs(u(rng)) * 1e-6f;
     if (i % 5 == 0) p.flux[i % 3] = odd_float(static_cast<int>(i / 5));
     p.source = static_cast<std::uint32_t>(rng() % 146);
-    if (i == 1) p.source = 0xffffffffu;
+    p.sky_ratio_code = static_cast<std::uint32_t>(rng() % 4096);
+    if (i == 1) p.set_source_word(0xffffffffu);
     for (std::int8_t& x : p.normal) x = static_cast<std::int8_t>(static_cast<int>(rng() % 255) - 127);
     p.path_class = static_cast<PathClass>(i % 3);
   }
@@ -151,7 +152,8 @@ TEST(ArtifactCodec, PhotonLayoutIsLittleEndianAsDocumented) {
   Photon p;
   p.position = {1.0f, -2.0f, 0.5f};
   p.flux = {0.25f, 0.0f, 3.0f};
-  p.source = 0x01020304u;
+  p.source = 0x20304u;
+  p.sky_ratio_code = 0x010u;  // the source word 0x01020304
   p.normal = {-127, 0, 127};
   p.path_class = PathClass::Caustic;
   t.surface.push_back(p);
@@ -159,11 +161,11 @@ TEST(ArtifactCodec, PhotonLayoutIsLittleEndianAsDocumented) {
   // tag, version, u64 count, 32-byte photon, u64 plane count, u64 source count.
   ASSERT_EQ(b.size(), 4u + 4 + 8 + 32 + 8 + 8);
   EXPECT_EQ(b.substr(0, 4), "PHOT");
-  EXPECT_EQ(b.substr(4, 4), std::string("\x03\x00\x00\x00", 4));  // layout 3
+  EXPECT_EQ(b.substr(4, 4), std::string("\x04\x00\x00\x00", 4));  // layout 4
   EXPECT_EQ(b.substr(8, 8), std::string("\x01\x00\x00\x00\x00\x00\x00\x00", 8));
   EXPECT_EQ(b.substr(16, 4), std::string("\x00\x00\x80\x3f", 4));  // 1.0f = 0x3f800000
   EXPECT_EQ(b.substr(20, 4), std::string("\x00\x00\x00\xc0", 4));  // -2.0f = 0xc0000000
-  EXPECT_EQ(b.substr(40, 4), std::string("\x04\x03\x02\x01", 4));  // source
+  EXPECT_EQ(b.substr(40, 4), std::string("\x04\x03\x02\x01", 4));  // source, sky ratio code
   EXPECT_EQ(b.substr(44, 4), std::string("\x81\x00\x7f\x01", 4));  // normal, class
   EXPECT_EQ(b.substr(48, 16), std::string(16, '\0'));              // no planes, no sources
 }
@@ -238,7 +240,7 @@ TEST(ArtifactCodec, LayoutVersionAndTagAreChecked) {
     decode_photons(photons);
     FAIL() << "expected runtime_error";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("version 4"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("version 5"), std::string::npos) << e.what();
   }
   EXPECT_THROW(decode_coefficients(coefficients), std::runtime_error);
   EXPECT_THROW(decode_matrix(matrix), std::runtime_error);

@@ -260,5 +260,28 @@ TEST(PointInTimeSkyComponent, EachCasesSkyHasAKeyOfItsOwn) {
             1e-3 * skies[0].radiance_rgb(west).x);
 }
 
+// In a room that reflects, the daylight factor's photon part is the continuous sky's (engine/
+// photon_part_on_sky.h) and so is a cie_overcast case's, scaled to its sky: the case stays
+// DF x E_h / 100 to the printing's precision, and the photon part's correction is not zero (the
+// test would pass without one only in a black room).
+TEST(PointInTimeSkyComponent, AnOvercastCaseInAReflectingRoomIsTheDaylightFactorTimesItsIlluminance) {
+  std::string yaml = Project;
+  const std::string black = "black: {type: lambertian, reflectance: 0}";
+  yaml.replace(yaml.find(black), black.size(), "black: {type: lambertian, reflectance: 0.6}");
+  const fs::path dir = test::process_temp_dir() / "dayphoton_point_in_time_reflecting";
+  run_project(dir, yaml);
+  std::vector<std::string> header;
+  const std::vector<std::vector<double>> df = read_csv(dir / "out" / "floor" / "daylight_factor.csv", header);
+  const std::vector<std::vector<double>> pit = read_csv(dir / "out" / "floor" / "point_in_time.csv", header);
+  ASSERT_EQ(df.size(), pit.size());
+  ASSERT_EQ(header.at(4), "overcast_lux");
+  for (std::size_t i = 0; i < pit.size(); ++i) {
+    const double expected = df[i][4] * OvercastLux / 100.0;
+    const double tolerance = 0.5e-4 * OvercastLux / 100.0 + 0.05 + 1e-6 * expected;
+    EXPECT_NEAR(pit[i][4], expected, tolerance) << "sensor " << i;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace dayphoton::study

@@ -168,6 +168,23 @@ struct CoefficientOptions {
   std::uint64_t seed = 1;  ///< for the operator's random numbers
   DirectOptions direct;
   GatherOptions gather;    ///< sensors estimated by final gather (GridPhotons::for_gather)
+  /// The bin radiances L_p the photons' sky ratios were taken against (sky_ratios.h), RGB
+  /// W/(sr m^2), one per source: daylight_coefficients then also gives the photon part under
+  /// the ratios' continuous sky (DaylightCoefficients::photon_on_sky, photon_part_on_sky.h).
+  /// Empty: not estimated.
+  std::vector<Vec3> photon_sky_bin_radiance_rgb;
+};
+
+/// The photon part (caustic + global) of every sensor under the continuous sky its photons'
+/// sky ratios come from (photon_part_on_sky.h): [row], RGB W/m^2, and the variance of its
+/// luminance. Empty when not estimated.
+struct PhotonOnSky {
+  std::vector<Vec3> irradiance;
+  std::vector<double> variance;
+  /// Rows a final gather estimates (gather photons; sensors next to a cut) keep the sum over
+  /// the basis (photon_part_on_sky.h): how many.
+  std::size_t basis_rows = 0;
+  bool empty() const { return irradiance.empty(); }
 };
 
 /// The three parts of C, each [sensor * sources + source], RGB W/m^2 per unit radiance.
@@ -183,6 +200,9 @@ struct DaylightCoefficients {
   /// same shadow rays (direct_component.h, "Continuous skies"): [sensor * skies + k], with
   /// its variance; empty without skies.
   DirectOnSkies direct_on_skies;
+  /// The photon part under the daylight factor's continuous sky (photon_part_on_sky.h), when
+  /// the photons carry its sky ratios; empty otherwise.
+  PhotonOnSky photon_on_sky;
 
   Vec3 total(std::size_t s, std::size_t p) const {
     const std::size_t i = s * sources + p;

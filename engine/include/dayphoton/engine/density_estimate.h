@@ -51,6 +51,7 @@ struct DensityEstimateOptions {
   double max_radius_m = 1e30;  ///< maximum search radius (> 0)
   KernelType kernel = KernelType::Uniform;
   KernelRadius radius = KernelRadius::NextNeighbour;
+  PhotonFlux flux = PhotonFlux::AsTraced;  ///< the photons' flux or times their sky ratios (photon.h)
 };
 
 struct DensityEstimate {
@@ -79,7 +80,7 @@ KernelDisc kernel_disc(const std::vector<NeighbourPhoton>& sorted, std::size_t b
 Vec3 accumulate_disc(const PhotonMap& map, const std::vector<NeighbourPhoton>& sorted,
                      const KernelDisc& disc, KernelType kernel,
                      std::vector<Vec3>* per_source = nullptr, double* luminance_variance = nullptr,
-                     std::vector<double>* per_source_variance = nullptr);
+                     std::vector<double>* per_source_variance = nullptr, PhotonFlux flux = PhotonFlux::AsTraced);
 
 /// Irradiance from the photons passing `filter`. Throws std::invalid_argument for
 /// bandwidth 0 or a max radius that is not positive.
@@ -113,6 +114,7 @@ struct BiasCompensationOptions {
   int weight_power = 2;        ///< w(j) = j^weight_power (>= 0); 2 is the thesis's choice
   std::uint64_t rng_seed = 1;
   std::uint64_t rng_index = 0;  ///< query point index, so that points draw independent xi
+  PhotonFlux flux = PhotonFlux::AsTraced;  ///< as DensityEstimateOptions::flux
 };
 
 /// The bias-compensated irradiance; photon_count is the bandwidth the search chose.

@@ -92,6 +92,7 @@
 
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/core/vec3.h"
+#include "dayphoton/engine/continuous_sky.h"
 #include "dayphoton/engine/distant_source.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
@@ -114,16 +115,6 @@ constexpr double PortSampledMinimumSolidAngle_sr = 1e-3;
 struct SkyPath {
   Vec3 transmittance;
   int port = -1;
-};
-
-/// A sky whose direct irradiance the shadow rays also estimate (header comment, "Continuous
-/// skies").
-struct ContinuousSky {
-  /// What the sky is, with every parameter its radiance depends on: cache keys hash it.
-  std::string key;
-  /// Direction toward the sky (unit, world axes, +Z up) -> RGB radiance W/(sr m^2), the
-  /// ground's below the horizon (the basis's ground bin 0 is the lower hemisphere).
-  std::function<Vec3(const Vec3&)> radiance_rgb;
 };
 
 struct DirectOptions {

@@ -8,6 +8,15 @@
 // quantised to signed bytes (used only to reject photons from the other side of a thin
 // surface, for which 1/127 is ample).
 //
+// The source shares its 32 bits with the photon's sky ratio: for a sky-bin photon, the
+// radiance of one continuous sky (the daylight factor's) in the direction it was emitted
+// toward, over that sky's mean radiance in the bin (TracingOptions::sky_ratio). A bin's
+// coefficient treats the bin as uniformly bright; the same estimate with each photon's flux
+// times its ratio is the bin's response to the continuous sky within it (daylight_
+// coefficients.h, "The photon part under the continuous sky"). 12 bits in steps of 1/2048
+// (0.05 %, rounded to nearest, so unbiased over many photons), up to 4095/2048; sources get
+// the other 20 bits (MaxPhotonSources, more than Reinhart MF:64's 589,825 bins).
+//
 // Difference from RADIANCE's contribution photons: RADIANCE emits from one continuous sky
 // and stores each photon's primary ray (direction and entry point) so that it can bin them
 // afterwards. dayphoton emits every bin as its own source, so the bin is known at emission
@@ -37,12 +46,41 @@ inline constexpr std::uint8_t path_class_bit(PathClass c) {
 inline constexpr std::uint8_t IndirectPathClasses =
     path_class_bit(PathClass::Caustic) | path_class_bit(PathClass::Global);
 
+/// Sources a photon record can name (20 bits).
+inline constexpr std::uint32_t MaxPhotonSources = 1u << 20;
+/// The sky ratio's fixed point: this value is a ratio of 1 (12 bits, steps of 1/2048).
+inline constexpr std::uint32_t SkyRatioOne = 2048;
+inline constexpr std::uint32_t SkyRatioMaxCode = 4095;
+
 struct Photon {
+  Photon() : source(0), sky_ratio_code(SkyRatioOne) {}
+
   std::array<float, 3> position{};  ///< metres
   std::array<float, 3> flux{};      ///< RGB, watts per unit source radiance (W/(W/(sr m2)))
-  std::uint32_t source = 0;         ///< emitting source (index into the SourceSet)
+  /// Emitting source (index into the SourceSet), < MaxPhotonSources.
+  std::uint32_t source : 20;
+  /// The sky ratio (header comment) x SkyRatioOne; SkyRatioOne for sun photons and when no
+  /// continuous sky was given.
+  std::uint32_t sky_ratio_code : 12;
   std::array<std::int8_t, 3> normal{};  ///< side it arrived on, x 127
   PathClass path_class = PathClass::Global;
+
+  double sky_ratio() const { return double(sky_ratio_code) / double(SkyRatioOne); }
+  /// Whether `ratio` has a code: non-negative and rounding to at most SkyRatioMaxCode (a NaN
+  /// has none).
+  static bool sky_ratio_fits(double ratio) {
+    return ratio >= 0 && ratio * double(SkyRatioOne) < double(SkyRatioMaxCode) + 0.5;
+  }
+  /// The code of a ratio that fits, rounded to nearest.
+  static std::uint32_t sky_ratio_code_of(double ratio) {
+    return static_cast<std::uint32_t>(std::lround(ratio * double(SkyRatioOne)));
+  }
+  /// The source and sky ratio code as one 32-bit word (the artifact codec's layout).
+  std::uint32_t source_word() const { return std::uint32_t(source) | (std::uint32_t(sky_ratio_code) << 20); }
+  void set_source_word(std::uint32_t w) {
+    source = w & (MaxPhotonSources - 1);
+    sky_ratio_code = w >> 20;
+  }
 
   Vec3 position_m() const { return {position[0], position[1], position[2]}; }
   Vec3 flux_rgb() const { return {flux[0], flux[1], flux[2]}; }
@@ -67,6 +105,13 @@ struct Photon {
     return static_cast<std::int8_t>(i);
   }
 };
+/// Which flux an estimate sums: the photons' own, or each times its sky ratio (the response
+/// to the continuous sky the ratios come from, sky_ratios.h).
+enum class PhotonFlux : std::uint8_t { AsTraced, TimesSkyRatio };
+inline Vec3 flux_of(const Photon& p, PhotonFlux f) {
+  return f == PhotonFlux::AsTraced ? p.flux_rgb() : p.flux_rgb() * p.sky_ratio();
+}
+
 static_assert(sizeof(Photon) == 32, "photon record layout is documented as 32 bytes");
 
 }  // namespace dayphoton::engine

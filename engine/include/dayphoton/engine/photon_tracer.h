@@ -68,6 +68,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -79,6 +80,7 @@
 #include "dayphoton/engine/random.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
+#include "dayphoton/engine/sky_ratios.h"
 
 namespace dayphoton::engine {
 
@@ -131,6 +133,11 @@ struct TracingOptions {
   bool keep_surface_photons = true;
   std::optional<Bounds3> region_of_interest;  ///< store only photons inside this box
   int max_events = 512;                  ///< safety cap on scattering events per path
+  /// Each sky-bin photon's sky ratio (photon.h, sky_ratios.h) from the direction it was
+  /// emitted toward; null: every ratio 1. The bins of a SourceSet::sky_bins set only (a sun
+  /// disc's photons keep 1). It changes no flux, no count and no random number: only the
+  /// records' ratio codes.
+  std::shared_ptr<const SkyRatios> sky_ratios;
 };
 
 /// What happened to one source's photons.
@@ -263,6 +270,7 @@ struct PathStart {
   Vec3 direction;        ///< propagation direction, unit
   Vec3 flux{1, 1, 1};    ///< RGB, relative
   std::uint32_t source = 0;
+  std::uint32_t sky_ratio_code = SkyRatioOne;  ///< of the path's photons (photon.h)
   bool scattered = false;         ///< false: the path starts as Direct
   bool diffuse_scattered = false; ///< true: the path is already Global
   /// The path starts outdoors (on an outdoor scatterer), not in a room behind a port.

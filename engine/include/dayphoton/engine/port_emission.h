@@ -73,7 +73,10 @@ struct PortEntry {
 
 class PortEmitter {
  public:
+  /// Throws std::invalid_argument for more than MaxPhotonSources sources (photon.h).
   PortEmitter(const Scene& scene, const SourceSet& sources);
+
+  const SourceSet& sources() const { return *m_sources; }
 
   /// sum_k B_pk: the flux (per unit source radiance, W per W/(sr m^2)) that one attempt
   /// carries times the number of attempts. Zero if no port faces the source.

@@ -42,7 +42,9 @@ namespace dayphoton::study {
 /// 4: photons outdoors after leaving through a port are no longer stored (photon_tracer.h,
 /// "Indoors and outdoors"). 5: sources the scaled low-yield cap starved while they carry the
 /// light are traced again with the cap in raw attempts (docs/photon-tracing.md, "Low-yield cap").
-constexpr int EngineCacheVersion = 5;
+/// 6: photon records carry their sky ratio (engine/photon.h) and the coefficients the photon
+/// part under the daylight factor's continuous sky (engine/photon_part_on_sky.h).
+constexpr int EngineCacheVersion = 6;
 
 ContentHash scene_key(const SceneDescription& scene);
 ContentHash planes_key(const std::vector<SensorGrid>& grids);

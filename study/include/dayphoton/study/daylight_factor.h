@@ -42,18 +42,26 @@ std::vector<double> daylight_factor_stderr_percent(const std::vector<double>& va
 
 /// A grid's DF and its variance by part, from coefficients that may carry the direct part
 /// under the DF sky itself (engine::DaylightCoefficients::direct_on_skies; engine/
-/// direct_component.h, "Continuous skies"): with it, the direct part (the sky component) is
-/// the continuous sky's, free of the basis's patch-uniform radiance, and only the photon part
-/// is the sky-weighted sum over the basis; without it both are sky-weighted sums.
+/// direct_component.h, "Continuous skies") and the photon part under it
+/// (DaylightCoefficients::photon_on_sky; engine/photon_part_on_sky.h): each part the
+/// continuous sky's where the coefficients carry it, free of the basis's patch-uniform
+/// radiance, and the sky-weighted sum over the basis where they do not.
 struct DaylightFactorParts {
   std::vector<double> df_percent;       ///< per sensor
   std::vector<double> direct_variance;  ///< per sensor, (DF points)^2
-  std::vector<double> photon_variance;  ///< [sensor x bins + bin], (DF points)^2
-  /// sqrt(direct + photon variance) per sensor.
+  /// [sensor x bins + bin], (DF points)^2: the basis's, by bin (what the accuracy rounds share
+  /// out over the sources), also when the DF's photon part is the continuous sky's.
+  std::vector<double> photon_variance;
+  /// Per sensor, (DF points)^2: the photon part's under the continuous sky, when the DF takes
+  /// it from there; empty otherwise.
+  std::vector<double> photon_sky_variance;
+  /// sqrt(direct + photon variance) per sensor: the photon part's on the sky when there is
+  /// one, else the sum over the bins.
   std::vector<double> stderr_percent() const;
 };
 /// `sky_vector`: the DF sky over the basis (bins x 1, 1 or 3 components); `sky_index`: the
-/// DF sky's index among the coefficients' continuous skies (used when they carry any).
+/// DF sky's index among the coefficients' continuous skies (used when they carry any; the
+/// photon part on the sky, when there is one, belongs to sky 0, the plan's DF sky).
 /// Throws std::invalid_argument on a size mismatch, missing variances or a non-positive
 /// illuminance.
 DaylightFactorParts daylight_factor_parts(const engine::DaylightCoefficients& coefficients,
@@ -67,6 +75,15 @@ DaylightFactorParts daylight_factor_parts(const engine::DaylightCoefficients& co
 /// coefficients under a multiple of that sky, scaled alike, it makes it the continuous sky's.
 std::vector<double> continuous_sky_direct_correction_lux(const engine::DaylightCoefficients& coefficients,
                                                          const RadianceMatrix& sky_vector, std::size_t sky_index);
+
+/// Per sensor, the photon part (lux) under the continuous sky the coefficients' photon_on_sky
+/// holds (the DF sky) minus the photon coefficients' sum over `sky_vector`, the same sky's bin
+/// means: what the basis's patch-uniform radiance misses of the photon part (zeros without
+/// photon_on_sky). The ground bin's photons have ratio 1 (engine/sky_ratios.h), so for any sky
+/// of the same shape over the sky bins, scaled by k, the miss is k times this, whatever its
+/// ground.
+std::vector<double> continuous_sky_photon_correction_lux(const engine::DaylightCoefficients& coefficients,
+                                                         const RadianceMatrix& sky_vector);
 
 /// The uncertainty of a grid's DF (docs/outputs.md, summary.json `uncertainty`).
 struct DaylightFactorUncertainty {

@@ -1,0 +1,31 @@
+// The photon part of the coefficients under a continuous sky (continuous_sky.h): per sensor,
+//
+//   E_s = sum_p C'_sp . L_p,
+//
+// C' the photon coefficients estimated with every photon's flux times its sky ratio
+// r = L(w) / L_p (sky_ratios.h; DensityEstimateOptions::flux), L_p the bin radiances the ratios
+// were taken against. The same discs, kernels, fits and clamps as the coefficients, so E_s is
+// that estimator's response to the continuous sky itself and its variance is
+// sum_p lum(L_p)^2 Var(y'_sp) (the sources are independent, estimate_variance.h).
+//
+// Rows a final gather estimates (a gathered grid; a receiver plane's sensors next to a cut)
+// keep the basis sum sum_p C_sp . L_p and its variance: a gather ray's specular path to the
+// sky reaches a bin without a photon, so it has no ratio. PhotonOnSky::basis_rows counts them.
+#pragma once
+
+#include <vector>
+
+#include "dayphoton/core/vec3.h"
+#include "dayphoton/engine/daylight_coefficients.h"
+
+namespace dayphoton::engine {
+
+/// `photons`: traced with TracingOptions::sky_ratios; `basis`: the coefficients of the same
+/// rows from the same photons and options (their photon part and photon_variance);
+/// `bin_radiance_rgb[p]`: L_p, RGB W/(sr m^2), the radiances whose luminances the ratios
+/// divide by. Throws std::invalid_argument on a size mismatch.
+PhotonOnSky photon_part_on_sky(const GridPhotons& photons, const std::vector<SensorPoint>& sensors,
+                               const CoefficientOptions& options, const DaylightCoefficients& basis,
+                               const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows = {});
+
+}  // namespace dayphoton::engine

@@ -1,0 +1,251 @@
+// The photon part under a continuous sky (photon_part_on_sky.h, sky_ratios.h).
+//
+// The closed-form case: a black room lit only through a vertical Lambertian diffuser (RADIANCE
+// trans, all of its transmission diffuse) that faces the sky above a distant wall. Every photon leaves
+// the diffuser in a direction independent of where it came from, and the room returns none, so
+// the photon part on the work plane is proportional to the diffuser's irradiance, whatever the
+// sky: its ratio under two skies is the ratio of the diffuser's vertical irradiances,
+//   E_v = integral over the half space in front of the pane of L(w) (w . n) dw.
+// Under the continuous CIE overcast sky that is one number; over the basis, each bin uniformly
+// bright at its mean, another: the wall hides the lower half of the lowest band, whose radiance
+// rises by 42 % toward its top, so the patch means understate what the pane sees. Both by midpoint
+// quadrature here. The estimate's ratio photon_on_sky / (basis sum of the same coefficients) must
+// match the continuous one within 4 standard errors over 48 seeds (|t| > 4 has probability
+// 2.3e-4 with 47 degrees of freedom), and the basis's ratio, 1, must lie outside them (the test
+// can fail). The stated variance of photon_on_sky over the observed one across the seeds must
+// lie within the chi-square bounds of 47 degrees of freedom at 1e-3 two-sided (0.549-2.19).
+#include "dayphoton/engine/photon_part_on_sky.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "dayphoton/core/units.h"
+#include "dayphoton/engine/engine_error.h"
+#include "dayphoton/engine/estimate_variance.h"
+#include "dayphoton/engine/photon_tracer.h"
+#include "dayphoton/engine/scene.h"
+#include "dayphoton/sky/patch_basis.h"
+#include "estimate_statistics.h"
+#include "test_scenes.h"
+
+namespace dayphoton::engine {
+namespace {
+
+using test::add_material;
+using test::add_surface;
+
+constexpr int Seeds = 48;
+constexpr double GroundRadiance = 0.25;
+
+/// CIE standard overcast sky (CIE S 011 / ISO 15469 type 1) with zenith radiance 1 above the
+/// horizon, a uniform ground of GroundRadiance below it.
+Vec3 overcast_with_ground(const Vec3& w) {
+  const double l = w.z > 0.0 ? (1.0 + 2.0 * w.z) / 3.0 : GroundRadiance;
+  return {l, l, l};
+}
+
+/// The same sky's mean in each bin of `basis`: uniform in sin(altitude) over a sky bin (equal
+/// solid angle), so (1 + sin a0 + sin a1) / 3; the ground bin is uniform.
+std::vector<Vec3> bin_means(const sky::PatchBasis& basis) {
+  std::vector<Vec3> means(basis.bin_count());
+  means[0] = {GroundRadiance, GroundRadiance, GroundRadiance};
+  for (int p = 1; p < basis.bin_count(); ++p) {
+    const sky::PatchBounds b = basis.bounds(p);
+    const double l = (1.0 + std::sin(b.altitude_min_rad) + std::sin(b.altitude_max_rad)) / 3.0;
+    means[std::size_t(p)] = {l, l, l};
+  }
+  return means;
+}
+
+/// A black wall OpposingDistance_m in front of the window, up to OpposingTop_m: from the window
+/// (whose height it sees within 0.11 degrees alike) it hides the sky below 6 degrees, half of the
+/// lowest Tregenza band, where the overcast sky's radiance is lowest.
+constexpr double OpposingDistance_m = 500, OpposingHalfWidth_m = 5000;
+const double OpposingTop_m = 1.0 + OpposingDistance_m * std::tan(6.0 * Pi / 180.0);
+
+/// Whether the opposing wall hides direction w (toward the sky) from the window's centre.
+bool hidden(const Vec3& w) {
+  if (w.y <= 0) return false;
+  const double t = OpposingDistance_m / w.y;
+  const double z = 1.0 + t * w.z;
+  return z >= -1.0 && z <= OpposingTop_m && std::fabs(t * w.x) <= OpposingHalfWidth_m;
+}
+
+/// x [-3, 3], y [-3, 2], z [-1, 3], every surface black, the north wall's window (y = 2,
+/// x [-1, 1], z [0.5, 1.5], facing +y) a Lambertian diffuser, and the opposing wall.
+SceneDescription diffuser_room() {
+  SceneDescription d;
+  const int black = add_material(d, "black", MaterialType::Lambertian, 0.0);
+  MaterialSpec diffuser;
+  diffuser.name = "diffuser";
+  diffuser.type = MaterialType::Translucent;
+  diffuser.reflectance = {0.8, 0.8, 0.8};
+  diffuser.transmissivity = 0.75;
+  diffuser.transmitted_specular = 0.0;
+  d.materials.push_back(diffuser);
+  const int pane = static_cast<int>(d.materials.size()) - 1;
+  auto rect_y = [](double y, double x0, double x1, double z0, double z1) {
+    return std::vector<Vec3>{{x0, y, z0}, {x1, y, z0}, {x1, y, z1}, {x0, y, z1}};
+  };
+  add_surface(d, "floor", black, {{-3, -3, -1}, {3, -3, -1}, {3, 2, -1}, {-3, 2, -1}});
+  add_surface(d, "ceiling", black, {{-3, -3, 3}, {-3, 2, 3}, {3, 2, 3}, {3, -3, 3}});
+  add_surface(d, "west", black, {{-3, -3, -1}, {-3, 2, -1}, {-3, 2, 3}, {-3, -3, 3}});
+  add_surface(d, "east", black, {{3, -3, -1}, {3, -3, 3}, {3, 2, 3}, {3, 2, -1}});
+  add_surface(d, "south", black, rect_y(-3, -3, 3, -1, 3));
+  add_surface(d, "north_sill", black, rect_y(2, -3, 3, -1, 0.5));
+  add_surface(d, "north_head", black, rect_y(2, -3, 3, 1.5, 3));
+  add_surface(d, "north_jamb_w", black, rect_y(2, -3, -1, 0.5, 1.5));
+  add_surface(d, "north_jamb_e", black, rect_y(2, 1, 3, 0.5, 1.5));
+  add_surface(d, "window", pane, rect_y(2, -1, 1, 0.5, 1.5), true);
+  const double y = 2 + OpposingDistance_m, w = OpposingHalfWidth_m;
+  add_surface(d, "opposing", black, {{w, y, -1}, {-w, y, -1}, {-w, y, OpposingTop_m}, {w, y, OpposingTop_m}});
+  return d;
+}
+
+/// The window's irradiance (normal +y) from a sky and from its bin means, the directions the
+/// opposing wall hides left out, by midpoint quadrature over sin(altitude) and azimuth (equal
+/// solid angles) in both hemispheres.
+struct VerticalIrradiance {
+  double continuous = 0, bin_means = 0;
+};
+VerticalIrradiance vertical_irradiance(const sky::PatchBasis& basis, const std::vector<Vec3>& means) {
+  constexpr int Nu = 2000, Nphi = 2000;
+  VerticalIrradiance e;
+  const double du = 2.0 / Nu, dphi = 2 * Pi / Nphi;
+  for (int i = 0; i < Nu; ++i) {
+    const double z = -1.0 + (i + 0.5) * du, rho = std::sqrt(1 - z * z);
+    for (int j = 0; j < Nphi; ++j) {
+      const double phi = (j + 0.5) * dphi;
+      const Vec3 w{rho * std::cos(phi), rho * std::sin(phi), z};
+      if (w.y <= 0 || hidden(w)) continue;
+      e.continuous += overcast_with_ground(w).x * w.y * du * dphi;
+      e.bin_means += means[std::size_t(basis.find_bin(w))].x * w.y * du * dphi;
+    }
+  }
+  return e;
+}
+
+std::vector<Material> models(const SceneDescription& d) {
+  std::vector<Material> m;
+  for (const MaterialSpec& spec : d.materials) m.push_back(Material::from_spec(spec));
+  return m;
+}
+
+/// The coefficients of `sensors` on the plane z = 0 with the photon part on the sky.
+DaylightCoefficients coefficients_with_sky(const Scene& scene, const std::vector<Material>& materials,
+                                           const SourceSet& sources, const std::vector<SensorPoint>& sensors,
+                                           const ContinuousSky& sky, const std::vector<Vec3>& means,
+                                           std::uint64_t seed) {
+  const std::vector<ReceiverPlane> planes = {ReceiverPlane(0.0, true, {{-3, -3}, {3, -3}, {3, 2}, {-3, 2}})};
+  std::vector<double> luminance;
+  for (const Vec3& l : means) luminance.push_back(luminance_of(l));
+  TracingOptions t;
+  t.photons_per_source = 1500;
+  t.seed = seed;
+  t.keep_surface_photons = false;
+  t.sky_ratios = std::make_shared<const SkyRatios>(sky, luminance);
+  TracedPhotons photons = trace_photons(scene, materials, sources, planes, t);
+  const GridPhotons grid = GridPhotons::for_plane(planes[0], std::move(photons.planes[0]), sources.size());
+  CoefficientOptions o;
+  o.seed = seed;
+  o.direct.seed = seed;
+  o.direct.samples_per_source = 1;  // the direct part plays no role here
+  o.photon_sky_bin_radiance_rgb = means;
+  return daylight_coefficients(scene, materials, sources, grid, sensors, o);
+}
+
+double basis_sum(const DaylightCoefficients& c, std::size_t s, const std::vector<Vec3>& means) {
+  double e = 0;
+  for (std::size_t p = 0; p < c.sources; ++p)
+    e += luminance_of(mul(c.caustic[s * c.sources + p] + c.global[s * c.sources + p], means[p]));
+  return e;
+}
+
+TEST(PhotonPartOnSky, BehindADiffuserItIsTheContinuousSkysShareOfTheBasisSum) {
+  const SceneDescription d = diffuser_room();
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models(d);
+  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  const SourceSet sources = SourceSet::sky_bins(basis);
+  const std::vector<Vec3> means = bin_means(basis);
+  const VerticalIrradiance e = vertical_irradiance(basis, means);
+  const double expected = e.continuous / e.bin_means;
+  RecordProperty("continuous_over_bin_means", std::to_string(expected));
+  const ContinuousSky sky{"CIE overcast with a ground of 0.25", overcast_with_ground};
+  const std::vector<SensorPoint> sensors = {{{0, 0, 0}, {0, 0, 1}}, {{-2, -2, 0}, {0, 0, 1}}, {{1.5, 1.2, 0}, {0, 0, 1}}};
+  std::vector<test::Stats> ratio(sensors.size()), on_sky(sensors.size());
+  std::vector<double> stated(sensors.size(), 0.0);
+  for (int k = 0; k < Seeds; ++k) {
+    const DaylightCoefficients c =
+        coefficients_with_sky(scene, materials, sources, sensors, sky, means, 7000 + std::uint64_t(k));
+    ASSERT_EQ(c.photon_on_sky.irradiance.size(), sensors.size());
+    EXPECT_EQ(c.photon_on_sky.basis_rows, 0u);
+    for (std::size_t s = 0; s < sensors.size(); ++s) {
+      const double y = luminance_of(c.photon_on_sky.irradiance[s]);
+      ratio[s].add(y / basis_sum(c, s, means));
+      on_sky[s].add(y);
+      stated[s] += c.photon_on_sky.variance[s] / Seeds;
+    }
+  }
+  for (std::size_t s = 0; s < sensors.size(); ++s) {
+    RecordProperty("sensor_" + std::to_string(s) + "_ratio", std::to_string(ratio[s].mean()));
+    EXPECT_NEAR(ratio[s].mean(), expected, ratio[s].tolerance()) << "sensor " << s;
+    EXPECT_GT(std::fabs(1.0 - expected), ratio[s].tolerance()) << "sensor " << s << ": the basis would pass";
+    const double observed = on_sky[s].sigma() * on_sky[s].sigma();
+    EXPECT_GT(stated[s] / observed, 0.549) << "sensor " << s;
+    EXPECT_LT(stated[s] / observed, 2.19) << "sensor " << s;
+  }
+}
+
+TEST(PhotonPartOnSky, ASkyUniformInEachBinGivesTheBasisSumItself) {
+  // Every ratio is exactly 1 (code SkyRatioOne), so the estimate on the sky is the basis sum
+  // of the same coefficients up to the order of summation.
+  const SceneDescription d = diffuser_room();
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models(d);
+  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  const SourceSet sources = SourceSet::sky_bins(basis);
+  const std::vector<Vec3> means = bin_means(basis);
+  const ContinuousSky stepped{"the bin means", [&](const Vec3& w) { return means[std::size_t(basis.find_bin(w))]; }};
+  const std::vector<SensorPoint> sensors = {{{0, 0, 0}, {0, 0, 1}}, {{-2, -2, 0}, {0, 0, 1}}};
+  const DaylightCoefficients c = coefficients_with_sky(scene, materials, sources, sensors, stepped, means, 3);
+  for (std::size_t s = 0; s < sensors.size(); ++s) {
+    const double basis_e = basis_sum(c, s, means);
+    ASSERT_GT(basis_e, 0);
+    EXPECT_NEAR(luminance_of(c.photon_on_sky.irradiance[s]), basis_e, 1e-12 * basis_e);
+    double v = 0;
+    for (std::size_t p = 0; p < c.sources; ++p)
+      v += luminance_of(means[p]) * luminance_of(means[p]) * c.photon_variance[s * c.sources + p];
+    EXPECT_NEAR(c.photon_on_sky.variance[s], v, 1e-12 * v);
+  }
+}
+
+TEST(PhotonPartOnSky, TheRatioCodeRoundsToNearestAndRefusesWhatItCannotHold) {
+  EXPECT_EQ(Photon::sky_ratio_code_of(1.0), SkyRatioOne);
+  EXPECT_EQ(Photon::sky_ratio_code_of(0.8301), 1700u);  // 1700.04
+  EXPECT_EQ(Photon::sky_ratio_code_of(1.18 + 0.25 / 2048), 2417u);  // 2416.89 + 0.25
+  EXPECT_TRUE(Photon::sky_ratio_fits(0.0));
+  EXPECT_TRUE(Photon::sky_ratio_fits(4095.49 / 2048));
+  EXPECT_FALSE(Photon::sky_ratio_fits(4095.5 / 2048));
+  EXPECT_FALSE(Photon::sky_ratio_fits(-1e-9));
+  EXPECT_FALSE(Photon::sky_ratio_fits(std::nan("")));
+  Photon p;
+  EXPECT_EQ(p.sky_ratio_code, SkyRatioOne);
+  p.set_source_word(0xABC12345u);
+  EXPECT_EQ(p.source, 0x12345u);
+  EXPECT_EQ(p.sky_ratio_code, 0xABCu);
+  EXPECT_EQ(p.source_word(), 0xABC12345u);
+  // A sky twice as bright somewhere in a bin as its mean there has no code: an error, not a
+  // silently clamped ratio.
+  const SkyRatios ratios({"steep", [](const Vec3& w) { return Vec3{1, 1, 1} * (w.z > 0.5 ? 3.0 : 1.0); }},
+                         std::vector<double>(146, 1.0));
+  EXPECT_DOUBLE_EQ(ratios.ratio(5, {1, 0, 0.1}), 1.0);
+  EXPECT_THROW(ratios.ratio(5, {0, 0, 1}), EngineError);
+  EXPECT_THROW(ratios.ratio(146, {0, 0, 1}), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace dayphoton::engine
