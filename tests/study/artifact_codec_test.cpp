@@ -185,6 +185,28 @@ TEST(ArtifactCodec, CoefficientsRoundTripBitExact) {
   EXPECT_TRUE(out.photon_variance == in.photon_variance);
 }
 
+TEST(ArtifactCodec, ThePhotonPartOnTheSkyRoundTripsBitExact) {
+  engine::DaylightCoefficients in = sample_coefficients(4, 146);
+  in.photon_on_sky.irradiance = {{1, 2, 3}, {-0.0, 1e-300, 5}, {7, 8, 9}, {0.25, 0.5, 0.75}};
+  in.photon_on_sky.variance = {1e-9, 0, 3, std::numeric_limits<double>::denorm_min()};
+  in.photon_on_sky.basis_rows = 2;
+  const engine::DaylightCoefficients out = decode_coefficients(encode_coefficients(in));
+  ASSERT_EQ(out.photon_on_sky.irradiance.size(), 4u);
+  EXPECT_TRUE(same_bits(out.photon_on_sky.irradiance.data(), in.photon_on_sky.irradiance.data(), 4 * sizeof(Vec3)));
+  EXPECT_TRUE(same_bits(out.photon_on_sky.variance.data(), in.photon_on_sky.variance.data(), 4 * sizeof(double)));
+  EXPECT_EQ(out.photon_on_sky.basis_rows, 2u);
+  EXPECT_TRUE(out.caustic == in.caustic);
+  // Without it, none comes back.
+  EXPECT_TRUE(decode_coefficients(encode_coefficients(sample_coefficients(4, 146))).photon_on_sky.empty());
+  // A part of the wrong length is refused when encoding, a flag other than 0 or 1 when decoding.
+  engine::DaylightCoefficients short_part = in;
+  short_part.photon_on_sky.variance.pop_back();
+  EXPECT_THROW(encode_coefficients(short_part), std::invalid_argument);
+  std::string bytes = encode_coefficients(in);
+  bytes[8 + 24] = 2;  // the u64 after sensors, sources and skies
+  EXPECT_THROW(decode_coefficients(bytes), std::runtime_error);
+}
+
 TEST(ArtifactCodec, InconsistentCoefficientsAreRefusedWhenEncoding) {
   engine::DaylightCoefficients c = sample_coefficients(2, 3);
   c.global.pop_back();

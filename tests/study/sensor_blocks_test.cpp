@@ -158,6 +158,8 @@ void expect_blocks_join_to_whole(const engine::GridPhotons& photons, const engin
   EXPECT_EQ(join_coefficient_blocks(blocks), whole);
   // The grid does receive light (the test is not comparing zeros).
   const engine::DaylightCoefficients c = decode_coefficients(whole);
+  // The photon part under the DF sky is joined too where the options ask for it.
+  EXPECT_EQ(c.photon_on_sky.irradiance.size(), options.photon_sky_bin_radiance_rgb.empty() ? 0 : sensors.size());
   double sum = 0;
   for (std::size_t i = 0; i < c.global.size(); ++i) sum += c.global[i].y + c.direct[i].y;
   EXPECT_GT(sum, 0.0);
