@@ -78,10 +78,6 @@ double lambert_polygon(const std::vector<Vec3>& polygon, const Vec3& receiver, c
   return 0.5 * std::fabs(sum);
 }
 
-/// Rectangle in the plane y = `y`, x in [x0, x1], z in [z0, z1].
-std::vector<Vec3> rect_y(double y, double x0, double x1, double z0, double z1) {
-  return {{x0, y, z0}, {x1, y, z0}, {x1, y, z1}, {x0, y, z1}};
-}
 
 /// Closed black room x [-3, 3], y [-3, 2], z [-1, 3] around an upward sensor at the origin,
 /// with the digest's window (y = 2, x [-1, 1], z [0.5, 1.5]) cut into the north wall and
@@ -93,20 +89,11 @@ SceneDescription window_room(MaterialType window_type, bool window_is_port = tru
   const int black = add_material(d, "black", MaterialType::Lambertian, 0.0);
   const int window = add_material(d, "window", window_type, 0.0);
   if (window_material) *window_material = window;
-  add_surface(d, "floor", black, {{-3, -3, -1}, {3, -3, -1}, {3, 2, -1}, {-3, 2, -1}});
-  add_surface(d, "ceiling", black, {{-3, -3, 3}, {-3, 2, 3}, {3, 2, 3}, {3, -3, 3}});
-  add_surface(d, "west", black, {{-3, -3, -1}, {-3, 2, -1}, {-3, 2, 3}, {-3, -3, 3}});
-  add_surface(d, "east", black, {{3, -3, -1}, {3, -3, 3}, {3, 2, 3}, {3, 2, -1}});
-  add_surface(d, "south", black, rect_y(-3, -3, 3, -1, 3));
-  add_surface(d, "north_sill", black, rect_y(2, -3, 3, -1, 0.5));
-  add_surface(d, "north_head", black, rect_y(2, -3, 3, 1.5, 3));
-  add_surface(d, "north_jamb_w", black, rect_y(2, -3, -1, 0.5, 1.5));
-  add_surface(d, "north_jamb_e", black, rect_y(2, 1, 3, 0.5, 1.5));
-  add_surface(d, "window", window, rect_y(2, -1, 1, 0.5, 1.5), window_is_port);
+  test::add_window_room(d, black, window, window_is_port);
   return d;
 }
 
-const std::vector<Vec3> DigestWindow = rect_y(2, -1, 1, 0.5, 1.5);
+const std::vector<Vec3> DigestWindow = test::rect_at_y(2, -1, 1, 0.5, 1.5);
 
 /// Cube [-1, 1]^3 of openings, every face a port: from the origin every direction leaves
 /// through exactly one port and then meets nothing, i.e. an unobstructed sky.
@@ -483,7 +470,7 @@ TEST(DirectComponent, ShadowRayRule) {
 
   // An interior pane (not a port) before the port multiplies in; so does glazing the port.
   SceneDescription inner = d;
-  add_surface(inner, "inner_pane", glass, rect_y(1, -2.9, 2.9, -0.9, 2.9));
+  add_surface(inner, "inner_pane", glass, test::rect_at_y(1, -2.9, 2.9, -0.9, 2.9));
   EXPECT_NEAR(transmittance(inner, to_window_centre).x, t_pane, 1e-15);
   SceneDescription double_glazed = inner;
   double_glazed.materials[static_cast<std::size_t>(window_index)] =
@@ -493,7 +480,7 @@ TEST(DirectComponent, ShadowRayRule) {
   // Anything beyond the port blocks, transparent or not: no external transmission.
   for (int outside_material : {grey, glass, window_index}) {
     SceneDescription beyond = d;
-    add_surface(beyond, "outside", outside_material, rect_y(3, -50, 50, -1, 10));
+    add_surface(beyond, "outside", outside_material, test::rect_at_y(3, -50, 50, -1, 10));
     EXPECT_EQ(transmittance(beyond, to_window_centre), Vec3{});
   }
 
@@ -531,13 +518,13 @@ TEST(DirectComponent, ObstructionsCutTheSkyExactly) {
   {
     SceneDescription d = open;
     const int grey = add_material(d, "grey", MaterialType::Lambertian, 0.5);
-    add_surface(d, "neighbour", grey, rect_y(3, -50, 50, -1, 1));
-    cases.push_back({"external", d, rect_y(2, -1, 1, 2.0 / 3.0, 1.5)});
+    add_surface(d, "neighbour", grey, test::rect_at_y(3, -50, 50, -1, 1));
+    cases.push_back({"external", d, test::rect_at_y(2, -1, 1, 2.0 / 3.0, 1.5)});
   }
   {
     SceneDescription d = open;
-    add_surface(d, "screen", 0 /* black */, rect_y(1, -2.9, 2.9, -0.9, 0.5));
-    cases.push_back({"internal", d, rect_y(2, -1, 1, 1.0, 1.5)});
+    add_surface(d, "screen", 0 /* black */, test::rect_at_y(1, -2.9, 2.9, -0.9, 0.5));
+    cases.push_back({"internal", d, test::rect_at_y(2, -1, 1, 1.0, 1.5)});
   }
   const Scene open_scene = Scene::build(open);
   const std::vector<Material> open_materials = models(open);

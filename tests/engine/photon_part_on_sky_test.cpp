@@ -87,19 +87,7 @@ SceneDescription diffuser_room() {
   diffuser.transmitted_specular = 0.0;
   d.materials.push_back(diffuser);
   const int pane = static_cast<int>(d.materials.size()) - 1;
-  auto rect_y = [](double y, double x0, double x1, double z0, double z1) {
-    return std::vector<Vec3>{{x0, y, z0}, {x1, y, z0}, {x1, y, z1}, {x0, y, z1}};
-  };
-  add_surface(d, "floor", black, {{-3, -3, -1}, {3, -3, -1}, {3, 2, -1}, {-3, 2, -1}});
-  add_surface(d, "ceiling", black, {{-3, -3, 3}, {-3, 2, 3}, {3, 2, 3}, {3, -3, 3}});
-  add_surface(d, "west", black, {{-3, -3, -1}, {-3, 2, -1}, {-3, 2, 3}, {-3, -3, 3}});
-  add_surface(d, "east", black, {{3, -3, -1}, {3, -3, 3}, {3, 2, 3}, {3, 2, -1}});
-  add_surface(d, "south", black, rect_y(-3, -3, 3, -1, 3));
-  add_surface(d, "north_sill", black, rect_y(2, -3, 3, -1, 0.5));
-  add_surface(d, "north_head", black, rect_y(2, -3, 3, 1.5, 3));
-  add_surface(d, "north_jamb_w", black, rect_y(2, -3, -1, 0.5, 1.5));
-  add_surface(d, "north_jamb_e", black, rect_y(2, 1, 3, 0.5, 1.5));
-  add_surface(d, "window", pane, rect_y(2, -1, 1, 0.5, 1.5), true);
+  test::add_window_room(d, black, pane);
   const double y = 2 + OpposingDistance_m, w = OpposingHalfWidth_m;
   add_surface(d, "opposing", black, {{w, y, -1}, {-w, y, -1}, {-w, y, OpposingTop_m}, {w, y, OpposingTop_m}});
   return d;
@@ -164,13 +152,23 @@ double basis_sum(const DaylightCoefficients& c, std::size_t s, const std::vector
   return e;
 }
 
+/// The diffuser room on the Tregenza basis, with the sky's bin means.
+struct DiffuserRoom {
+  SceneDescription d = diffuser_room();
+  Scene scene = Scene::build(d);
+  std::vector<Material> materials = models(d);
+  sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  SourceSet sources = SourceSet::sky_bins(basis);
+  std::vector<Vec3> means = bin_means(basis);
+};
+
 TEST(PhotonPartOnSky, BehindADiffuserItIsTheContinuousSkysShareOfTheBasisSum) {
-  const SceneDescription d = diffuser_room();
-  const Scene scene = Scene::build(d);
-  const std::vector<Material> materials = models(d);
-  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
-  const SourceSet sources = SourceSet::sky_bins(basis);
-  const std::vector<Vec3> means = bin_means(basis);
+  const DiffuserRoom room;
+  const Scene& scene = room.scene;
+  const std::vector<Material>& materials = room.materials;
+  const sky::PatchBasis& basis = room.basis;
+  const SourceSet& sources = room.sources;
+  const std::vector<Vec3>& means = room.means;
   const VerticalIrradiance e = vertical_irradiance(basis, means);
   const double expected = e.continuous / e.bin_means;
   RecordProperty("continuous_over_bin_means", std::to_string(expected));
@@ -203,15 +201,13 @@ TEST(PhotonPartOnSky, BehindADiffuserItIsTheContinuousSkysShareOfTheBasisSum) {
 TEST(PhotonPartOnSky, ASkyUniformInEachBinGivesTheBasisSumItself) {
   // Every ratio is exactly 1 (code SkyRatioOne), so the estimate on the sky is the basis sum
   // of the same coefficients up to the order of summation.
-  const SceneDescription d = diffuser_room();
-  const Scene scene = Scene::build(d);
-  const std::vector<Material> materials = models(d);
-  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
-  const SourceSet sources = SourceSet::sky_bins(basis);
-  const std::vector<Vec3> means = bin_means(basis);
+  const DiffuserRoom room;
+  const std::vector<Vec3>& means = room.means;
+  const sky::PatchBasis& basis = room.basis;
   const ContinuousSky stepped{"the bin means", [&](const Vec3& w) { return means[std::size_t(basis.find_bin(w))]; }};
   const std::vector<SensorPoint> sensors = {{{0, 0, 0}, {0, 0, 1}}, {{-2, -2, 0}, {0, 0, 1}}};
-  const DaylightCoefficients c = coefficients_with_sky(scene, materials, sources, sensors, stepped, means, 3);
+  const DaylightCoefficients c =
+      coefficients_with_sky(room.scene, room.materials, room.sources, sensors, stepped, means, 3);
   for (std::size_t s = 0; s < sensors.size(); ++s) {
     const double basis_e = basis_sum(c, s, means);
     ASSERT_GT(basis_e, 0);

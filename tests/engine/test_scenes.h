@@ -59,6 +59,26 @@ inline SceneDescription box_room(Vec3 size = {1, 1, 1}, double rotation_rad = 0,
   return d;
 }
 
+/// Rectangle in the plane y = `y`, x in [x0, x1], z in [z0, z1].
+inline std::vector<Vec3> rect_at_y(double y, double x0, double x1, double z0, double z1) {
+  return {{x0, y, z0}, {x1, y, z0}, {x1, y, z1}, {x0, y, z1}};
+}
+
+/// A closed room x [-3, 3], y [-3, 2], z [-1, 3] of material `walls` with the digest's window
+/// (y = 2, x [-1, 1], z [0.5, 1.5], facing +y) of material `window` cut into its north wall.
+inline void add_window_room(SceneDescription& d, int walls, int window, bool window_is_port = true) {
+  add_surface(d, "floor", walls, {{-3, -3, -1}, {3, -3, -1}, {3, 2, -1}, {-3, 2, -1}});
+  add_surface(d, "ceiling", walls, {{-3, -3, 3}, {-3, 2, 3}, {3, 2, 3}, {3, -3, 3}});
+  add_surface(d, "west", walls, {{-3, -3, -1}, {-3, 2, -1}, {-3, 2, 3}, {-3, -3, 3}});
+  add_surface(d, "east", walls, {{3, -3, -1}, {3, -3, 3}, {3, 2, 3}, {3, 2, -1}});
+  add_surface(d, "south", walls, rect_at_y(-3, -3, 3, -1, 3));
+  add_surface(d, "north_sill", walls, rect_at_y(2, -3, 3, -1, 0.5));
+  add_surface(d, "north_head", walls, rect_at_y(2, -3, 3, 1.5, 3));
+  add_surface(d, "north_jamb_w", walls, rect_at_y(2, -3, -1, 0.5, 1.5));
+  add_surface(d, "north_jamb_e", walls, rect_at_y(2, 1, 3, 0.5, 1.5));
+  add_surface(d, "window", window, rect_at_y(2, -1, 1, 0.5, 1.5), window_is_port);
+}
+
 /// The square [-1,1]^2 at z = 0, normal +z (counter-clockwise seen from above).
 inline SceneDescription single_square() {
   SceneDescription d;
