@@ -27,7 +27,6 @@
 //              the annual metrics (DA300, UDI) of the corrected and uncorrected tables.
 // Usage: perez_sky_component_bench hours|year [N|S] [threads]. Writes runs under
 // $TMPDIR/dayphoton_perez_sky_component_bench (or /tmp).
-#include <sys/resource.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -65,17 +64,12 @@
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/epw_reader.h"
 #include "dayphoton/weather/site_clock.h"
+#include "df_only_run.h"
 
 using namespace dayphoton;
 namespace fs = std::filesystem;
 
 namespace {
-
-double cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
 
 std::string load_average() {
   std::ifstream in("/proc/loadavg");
@@ -391,16 +385,17 @@ void hours_mode(const std::vector<Climate>& climates, int per_class, const fs::p
     const Room room = make_room(climates.at(0).proj, false);
     const SensorGrid& g = room.grids.at(0);
     std::vector<engine::ContinuousSky> perez;
-    for (std::size_t t : pick_hours(climates.at(0), 1, 8, 3 * per_class)) perez.push_back(continuous_sky(climates.at(0), t));
+    for (std::size_t t : pick_hours(climates.at(0), 1, 8, 3 * per_class))
+      perez.push_back(continuous_sky(climates.at(0), t));
     const int samples = climates.at(0).proj.simulation.direct_samples_per_bin;
     const std::uint64_t seed = std::uint64_t(climates.at(0).proj.simulation.seed);
     double cpu[3];
     const std::vector<engine::ContinuousSky> none, moments = moment_skies(basis, frames);
     const std::vector<engine::ContinuousSky>* sets[3] = {&none, &moments, &perez};
     for (int k = 0; k < 3; ++k) {
-      const double c0 = cpu_seconds();
+      const double c0 = bench::process_cpu_seconds();
       direct_part(room, g, *sets[k], samples, seed);
-      cpu[k] = cpu_seconds() - c0;
+      cpu[k] = bench::process_cpu_seconds() - c0;
     }
     std::printf("cost, %s (%zu sensors, %d rays per bin): direct part %.2f CPU s; with the moment skies %.2f; with "
                 "%zu continuous skies %.2f\n",
@@ -501,9 +496,10 @@ void hours_mode(const std::vector<Climate>& climates, int per_class, const fs::p
         if (black && x == EstimatorCount) continue;
         const auto& st = stats[label][std::size_t(x)];
         char rms[64];
-        std::snprintf(rms, sizeof rms, "%6.2f %6.2f %6.2f", std::sqrt(st[0].sum2 / double(std::max<std::size_t>(1, st[0].n))),
-                      std::sqrt(st[1].sum2 / double(std::max<std::size_t>(1, st[1].n))),
-                      std::sqrt(st[2].sum2 / double(std::max<std::size_t>(1, st[2].n))));
+        auto class_rms = [&](std::size_t k) {
+          return std::sqrt(st[k].sum2 / double(std::max<std::size_t>(1, st[k].n)));
+        };
+        std::snprintf(rms, sizeof rms, "%6.2f %6.2f %6.2f", class_rms(0), class_rms(1), class_rms(2));
         std::printf("  %-16s %-34s %s | %s\n", label.c_str(),
                     x == EstimatorCount ? "study, share of the run's total" : estimator_name(x), rms,
                     st[3].text().c_str());
@@ -526,9 +522,9 @@ void year_mode(const std::vector<Climate>& climates, int samples, const fs::path
           hours.push_back(t);
       std::vector<engine::ContinuousSky> skies;
       for (std::size_t t : hours) skies.push_back(continuous_sky(c, t));
-      const double cpu0 = cpu_seconds();
+      const double cpu0 = bench::process_cpu_seconds();
       const DirectPart d = direct_part(room, g, skies, samples, std::uint64_t(c.proj.simulation.seed));
-      const double cpu = cpu_seconds() - cpu0;
+      const double cpu = bench::process_cpu_seconds() - cpu0;
       const std::size_t sources = d.coefficients.size() / g.points.size();
       metrics::IlluminanceTable after = before;
       ErrorStats total_error;
@@ -549,7 +545,8 @@ void year_mode(const std::vector<Climate>& climates, int samples, const fs::path
           over_2 += std::fabs(e) > 2.0;
           over_5 += std::fabs(e) > 5.0;
         }
-      const std::vector<metrics::SensorMetrics> m0 = metrics::compute_sensor_metrics(before, occupied, settings.metrics);
+      const std::vector<metrics::SensorMetrics> m0 =
+          metrics::compute_sensor_metrics(before, occupied, settings.metrics);
       const std::vector<metrics::SensorMetrics> m1 = metrics::compute_sensor_metrics(after, occupied, settings.metrics);
       std::size_t da_flips = 0;
       double da_shift = 0, da_worst = 0, udi_worst = 0, udi_shift = 0, mean_lux_shift = 0;
@@ -567,7 +564,8 @@ void year_mode(const std::vector<Climate>& climates, int samples, const fs::path
       const double n = double(m0.size());
       std::printf("  %-8s %-10s %4zu sensors x %4zu hours (%.0f CPU s): hourly total, basis vs continuous "
                   "direct part: %s %%\n"
-                  "      share of sensor-hours off by more than 2 %%: %.2f %%, 5 %%: %.3f %%; the worst at %d/%d %.1f h "
+                  "      share of sensor-hours off by more than 2 %%: %.2f %%, 5 %%: %.3f %%; "
+                  "the worst at %d/%d %.1f h "
                   "(sun %.1f deg up), sensor %zu: %.0f lx in the run, %.0f corrected\n"
                   "      DA300 (run - corrected) mean %+.2f, worst %+.2f points; sensors whose DA300 >= 50 %% "
                   "verdict moves: %zu; UDI 300-3000 mean %+.2f, worst %+.2f points; mean occupied lux %+.2f %%\n",
@@ -602,7 +600,7 @@ int main(int argc, char** argv) {
   const std::string source = DAYPHOTON_BENCH_SOURCE_DIR;
   project::Project proj = project::load_project(source + "/projects/wall_sensors/project.yaml");
   const auto w0 = std::chrono::steady_clock::now();
-  const double c0 = cpu_seconds();
+  const double c0 = bench::process_cpu_seconds();
   std::vector<Climate> climates;
   climates.push_back(make_climate("Oakland", proj, proj.weather.path));
   climates.push_back(make_climate("Mannheim", proj, source + "/tests/data/weather/DEU_Mannheim.epw"));
@@ -613,7 +611,8 @@ int main(int argc, char** argv) {
   else
     year_mode(climates, number, folder);
   std::printf("%.0f s wall, %.0f s CPU, load average %s\n",
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count(), cpu_seconds() - c0,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count(),
+              bench::process_cpu_seconds() - c0,
               load_average().c_str());
   return 0;
 }
