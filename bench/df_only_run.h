@@ -1,6 +1,6 @@
 // Bench support: a project run as a daylight-factor study of its base case alone, quietly, and
 // the values of its grids read back from results.json (examples_accuracy_bench and
-// gathered_grid_honesty_bench).
+// gathered_grid_honesty_bench); the process's CPU seconds (perez_sky_component_bench too).
 #pragma once
 
 #include <sys/resource.h>
