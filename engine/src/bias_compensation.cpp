@@ -97,7 +97,8 @@ struct Choice {
   Vec3 irradiance;
 };
 
-/// Alg. 5.1 on an already gathered, sorted neighbour list.
+/// Alg. 5.1 on an already gathered, sorted neighbour list, on the photons' own fluxes whatever
+/// options.flux says: the estimate with their sky ratios (photon.h) uses the same disc.
 Choice choose_bandwidth(const PhotonMap& map, const std::vector<NeighbourPhoton>& neighbours,
                         const BiasCompensationOptions& options) {
   auto estimate = [&](std::size_t bandwidth) {
@@ -106,8 +107,7 @@ Choice choose_bandwidth(const PhotonMap& map, const std::vector<NeighbourPhoton>
     return choice;
   };
   auto evaluate = [&](Choice& choice) {
-    choice.irradiance =
-        accumulate_disc(map, neighbours, choice.disc, options.kernel, nullptr, nullptr, nullptr, options.flux);
+    choice.irradiance = accumulate_disc(map, neighbours, choice.disc, options.kernel);
   };
   auto weight = [&](std::size_t j) { return std::pow(static_cast<double>(j), options.weight_power); };
 
@@ -159,14 +159,13 @@ DensityEstimate estimate_irradiance_bias_compensated(const PhotonMap& map, const
   std::vector<NeighbourPhoton> neighbours;
   const Choice choice = gather_and_choose(map, point, filter, options, neighbours);
   DensityEstimate result;
-  result.irradiance = choice.irradiance;
   result.radius_m = choice.disc.radius_m;
   result.photon_count = choice.disc.photon_count;
-  // The variance of the estimate at the chosen bandwidth (estimate_variance.h): the choice
-  // itself depends on the photons, which this leaves out.
+  // The estimate at the chosen bandwidth (with options.flux) and its variance
+  // (estimate_variance.h): the choice itself depends on the photons, which this leaves out.
   if (choice.disc.photon_count > 0)
-    (void)accumulate_disc(map, neighbours, choice.disc, options.kernel, nullptr, &result.luminance_variance, nullptr,
-                          options.flux);
+    result.irradiance = accumulate_disc(map, neighbours, choice.disc, options.kernel, nullptr,
+                                        &result.luminance_variance, nullptr, options.flux);
   return result;
 }
 

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include <tbb/parallel_for.h>
 
@@ -117,6 +119,9 @@ TracedPhotons scaled_source_photons(const SourcePhotonRecord& record) {
 
 TracedPhotons scaled_merged_photons(const std::vector<SourcePhotonRecord>& records, bool label_by_record) {
   const std::size_t n = records.size();
+  if (label_by_record && n > MaxPhotonSources)
+    throw std::invalid_argument("photon rounds: " + std::to_string(n) + " records, but a photon record names at most " +
+                                std::to_string(MaxPhotonSources) + " sources");
   TracedPhotons out;
   std::size_t plane_count = 0;
   for (const SourcePhotonRecord& r : records) plane_count = std::max(plane_count, r.raw.planes.size());

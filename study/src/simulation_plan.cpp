@@ -184,8 +184,18 @@ SimulationPlan SimulationPlan::of(const project::Project& project, const SunSite
   // The ratios depend on the sky's shape and the bins alone (the photons' keys have the
   // basis): not on its illuminance, nor on the ground, whose bin is uniform (ratio 1). So
   // their key names the shape, and changing the ground keeps the cached photons.
+  // The key: the sky's name and its sky bins' luminances relative to their sum at full
+  // precision (the means the ratios divide by, free of the illuminance; the ground bin's
+  // ratio is 1 whatever the ground).
   engine::ContinuousSky ratio_sky = p.daylight_factor_continuous_sky();
-  ratio_sky.key = "CIE overcast, over its means in the basis's bins (sky::sky_vector)";
+  const std::vector<double>& bin_luminance = p.sky_estimating.gather.variance_weights;
+  double sky_sum = 0;
+  for (std::size_t b = 1; b < bin_luminance.size(); ++b) sky_sum += bin_luminance[b];
+  std::ostringstream ratio_key;
+  ratio_key.precision(17);
+  ratio_key << "CIE overcast over its bin means, relative:";
+  for (std::size_t b = 1; b < bin_luminance.size(); ++b) ratio_key << ' ' << bin_luminance[b] / sky_sum;
+  ratio_sky.key = ratio_key.str();
   p.sky_tracing.sky_ratios =
       std::make_shared<const engine::SkyRatios>(std::move(ratio_sky), p.sky_estimating.gather.variance_weights);
   for (std::size_t b = 0; b < df_sky.rows(); ++b)

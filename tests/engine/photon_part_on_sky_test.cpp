@@ -126,7 +126,7 @@ std::vector<Material> models(const SceneDescription& d) {
 DaylightCoefficients coefficients_with_sky(const Scene& scene, const std::vector<Material>& materials,
                                            const SourceSet& sources, const std::vector<SensorPoint>& sensors,
                                            const ContinuousSky& sky, const std::vector<Vec3>& means,
-                                           std::uint64_t seed) {
+                                           std::uint64_t seed, CoefficientOptions o = {}) {
   const std::vector<ReceiverPlane> planes = {ReceiverPlane(0.0, true, {{-3, -3}, {3, -3}, {3, 2}, {-3, 2}})};
   std::vector<double> luminance;
   for (const Vec3& l : means) luminance.push_back(luminance_of(l));
@@ -137,7 +137,6 @@ DaylightCoefficients coefficients_with_sky(const Scene& scene, const std::vector
   t.sky_ratios = std::make_shared<const SkyRatios>(sky, luminance);
   TracedPhotons photons = trace_photons(scene, materials, sources, planes, t);
   const GridPhotons grid = GridPhotons::for_plane(planes[0], std::move(photons.planes[0]), sources.size());
-  CoefficientOptions o;
   o.seed = seed;
   o.direct.seed = seed;
   o.direct.samples_per_source = 1;  // the direct part plays no role here
@@ -216,6 +215,46 @@ TEST(PhotonPartOnSky, ASkyUniformInEachBinGivesTheBasisSumItself) {
     for (std::size_t p = 0; p < c.sources; ++p)
       v += luminance_of(means[p]) * luminance_of(means[p]) * c.photon_variance[s * c.sources + p];
     EXPECT_NEAR(c.photon_on_sky.variance[s], v, 1e-12 * v);
+  }
+}
+
+TEST(PhotonPartOnSky, EveryEstimatorPathWeightsByTheRatio) {
+  // A sky of 1.5 times the bin means: every ratio is exactly 1.5 (code 3072), so on every
+  // estimator path (the local-linear plane with the pilot correction, the quadratic fit, the
+  // clipped-disc average, a caustic map of its own, the bias-compensating operator, the
+  // contribution estimate) the estimate on the sky is 1.5 times the basis sum of the same
+  // coefficients: a path that ignored the ratio would give 1.
+  const DiffuserRoom room;
+  const std::vector<Vec3>& means = room.means;
+  const sky::PatchBasis& basis = room.basis;
+  const ContinuousSky brighter{"1.5 x the bin means",
+                               [&](const Vec3& w) { return means[std::size_t(basis.find_bin(w))] * 1.5; }};
+  const std::vector<SensorPoint> sensors = {{{0, 0, 0}, {0, 0, 1}}, {{-2, -2, 0}, {0, 0, 1}}, {{2.9, 1.9, 0}, {0, 0, 1}}};
+  std::vector<std::pair<std::string, CoefficientOptions>> paths(7);
+  paths[0].first = "default";
+  paths[1].first = "quadratic curvature";
+  paths[1].second.curvature_correction = CurvatureCorrection::Quadratic;
+  paths[2].first = "clipped-disc average";
+  paths[2].second.local_linear = false;
+  paths[3].first = "caustic map";
+  paths[3].second.caustic_bandwidth = 20;
+  paths[4].first = "bias compensation";
+  paths[4].second.local_linear = false;
+  paths[4].second.bias_compensation = true;
+  paths[5].first = "contribution";
+  paths[5].second.estimator = PhotonEstimator::Contribution;
+  paths[6].first = "contribution, bias compensation";
+  paths[6].second.estimator = PhotonEstimator::Contribution;
+  paths[6].second.bias_compensation = true;
+  for (const auto& [name, options] : paths) {
+    const DaylightCoefficients c =
+        coefficients_with_sky(room.scene, room.materials, room.sources, sensors, brighter, means, 5, options);
+    for (std::size_t s = 0; s < sensors.size(); ++s) {
+      const double basis_e = basis_sum(c, s, means);
+      ASSERT_GT(basis_e, 0) << name;
+      EXPECT_NEAR(luminance_of(c.photon_on_sky.irradiance[s]), 1.5 * basis_e, 1e-9 * basis_e)
+          << name << ", sensor " << s;
+    }
   }
 }
 
