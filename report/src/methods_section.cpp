@@ -28,7 +28,11 @@ std::string methods_section(const study::ResultsModel& m) {
   s << "<li><strong>Daylight factor</strong> at every sensor: the illuminance under the CIE standard overcast sky "
        "(Moon and Spencer luminance distribution, CIE S 011 / ISO 15469 type 1 without sun) over the unobstructed "
        "horizontal illuminance, ground included (ground reflectance "
-    << format_value(m.ground_reflectance, Precision::Fraction) << ").</li>";
+    << format_value(m.ground_reflectance, Precision::Fraction)
+    << "). Both the light reaching a sensor straight from the sky and the light the room reflects are "
+       "computed under the sky's own luminance in every direction, not a uniform luminance within each sky "
+       "patch (sensors estimated by final gather, such as points and walls, take their reflected light through "
+       "the patches).</li>";
   if (annual) {
     s << "<li><strong>Annual illuminance</strong> for every hour of the weather file, from daylight coefficients "
          "(the illuminance each sky patch of unit radiance gives at each sensor) times the hour's sky: the Perez "
