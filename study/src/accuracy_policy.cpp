@@ -38,16 +38,26 @@ std::vector<std::size_t> near_cut_rows(const std::vector<engine::ReceiverPlane>&
   return engine::sensors_near_cuts(planes.at(std::size_t(plane_of_grid[g])), points);
 }
 
-std::string take_out_near_cut_rows(const std::vector<std::size_t>& rows, std::vector<double>& value,
-                                   const std::vector<double>& stderr_value) {
-  if (rows.empty()) return "";
-  double largest = 0;
+NearCutReached take_out_near_cut_rows(const std::vector<std::size_t>& rows, std::vector<double>& value,
+                                      const std::vector<double>& stderr_value) {
+  NearCutReached out;
+  out.sensors = rows.size();
   for (std::size_t i : rows) {
     if (i >= value.size()) continue;
-    if (value[i] > 0 && i < stderr_value.size()) largest = std::max(largest, 100.0 * stderr_value[i] / value[i]);
+    if (value[i] > 0 && i < stderr_value.size())
+      out.largest_percent = std::max(out.largest_percent, 100.0 * stderr_value[i] / value[i]);
     value[i] = 0;
   }
-  return "; " + std::to_string(rows.size()) + " sensors next to a cut gathered, largest " + round_number(largest) + " %";
+  return out;
+}
+
+std::string near_cut_note(const NearCutReached& reached, double target_percent) {
+  if (reached.sensors == 0) return "";
+  return "; " + std::to_string(reached.sensors) + " sensors next to a cut gathered, largest " +
+         round_number(reached.largest_percent) + " %" +
+         (reached.largest_percent <= target_percent
+              ? std::string()
+              : " > target " + round_number(target_percent) + " %: simulation.gather_rays lowers it");
 }
 
 }  // namespace dayphoton::study

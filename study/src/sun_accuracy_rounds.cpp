@@ -216,6 +216,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
     result.variance.assign(grids.size(), {});
     o.reached_percent.assign(grids.size(), 0.0);
     o.hourly_percent.assign(grids.size(), 0.0);
+    o.near_cut.assign(grids.size(), NearCutReached{});
     RoundMeasurement m;
     m.grid_status.assign(grids.size(), "");
     m.met = true;
@@ -240,8 +241,11 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
         stderr_value[s] = std::sqrt(std::max(0.0, x));
       }
       // A plane's sensors next to a cut are gathered: out of the measure (accuracy_policy.h).
-      const std::string near_cut = take_out_near_cut_rows(
-          near_cut_rows(planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g), v.df_percent, stderr_value);
+      NearCutReached& near = o.near_cut[g];
+      near = take_out_near_cut_rows(near_cut_rows(planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g),
+                                    v.df_percent, stderr_value);
+      near.gather_rays = near.sensors > 0 ? estimating.gather.rays_per_sensor : 0;
+      const std::string near_cut = near_cut_note(near, goal.target_percent);
       o.reached_percent[g] = percentile_relative_stderr_percent(v.df_percent, stderr_value, AccuracyPercentile);
       o.hourly_percent[g] = hourly_percent(g, v.df_percent);
       m.grid_status[g] = accuracy_grid_status(chased[g], o.reached_percent[g], goal.target_percent);
@@ -337,7 +341,8 @@ std::string sun_accuracy_sentence(const SunAccuracyOutcome& o, std::size_t grid)
   return round_outcome_sentence(SunMeasure, reached, o.target_percent,
                                 " (" + status + "; hourly " + round_number(hourly) + " %)" +
                                     gather_accuracy_note(o.gather, grid),
-                                o.stop_reason, o.rounds, o.photons);
+                                o.stop_reason, o.rounds, o.photons) +
+         (grid < o.near_cut.size() ? near_cut_note(o.near_cut[grid], o.target_percent) : std::string());
 }
 
 }  // namespace dayphoton::study

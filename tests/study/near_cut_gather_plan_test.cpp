@@ -118,10 +118,18 @@ TEST(NearCutGatherPlan, TheRoundsMeasureLeavesTheGatheredRowsOut) {
   for (std::size_t i : rows) se[i] = 0.1;
   df[rows[1]] = 1.0;  // 10 %
   std::vector<double> measured = df;
-  EXPECT_EQ(take_out_near_cut_rows(rows, measured, se), "; 4 sensors next to a cut gathered, largest 10 %");
+  NearCutReached reached = take_out_near_cut_rows(rows, measured, se);
+  EXPECT_EQ(reached.sensors, 4u);
+  EXPECT_NEAR(reached.largest_percent, 10.0, 1e-12);
   for (std::size_t i : rows) EXPECT_EQ(measured[i], 0.0);
   EXPECT_NEAR(percentile_relative_stderr_percent(measured, se, AccuracyPercentile), 1.0, 1e-12);
-  EXPECT_EQ(take_out_near_cut_rows({}, measured, se), "");
+  // The verdict states them apart: above the target the note says so and what lowers it.
+  reached.gather_rays = 64;
+  EXPECT_EQ(near_cut_note(reached, 1.0),
+            "; 4 sensors next to a cut gathered, largest 10 % > target 1 %: simulation.gather_rays lowers it");
+  EXPECT_EQ(near_cut_note(reached, 10.0), "; 4 sensors next to a cut gathered, largest 10 %");
+  EXPECT_EQ(take_out_near_cut_rows({}, measured, se).sensors, 0u);
+  EXPECT_EQ(near_cut_note(NearCutReached{}, 1.0), "");
 }
 
 }  // namespace

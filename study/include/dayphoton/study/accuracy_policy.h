@@ -18,8 +18,11 @@
 // the gather's rays', which photons do not lower, so the rounds' measure of the grid leaves
 // them out (the grid's percentile, the photon and shadow-ray plans are over its plane rows);
 // their gather stays at simulation.gather_rays, each row's standard error is its own gather's
-// (final_gather.h, "Variance"), and the rounds' log names their count and largest relative error
-// (near_cut_note). The gather rounds raise the rays of whole gathered grids only.
+// (final_gather.h, "Variance"). The gather rounds raise the rays of whole gathered grids only,
+// so the grid's verdict states those rows apart: their count and largest relative error in
+// every round's log line and the rounds' last (near_cut_note), in summary.json
+// (`grids[].accuracy.near_cut`, with "above target" where the largest is) and in the report's
+// accuracy statement, which then says the target is met by the sensors it measures only.
 #pragma once
 
 #include <cstddef>
@@ -28,6 +31,7 @@
 
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/engine/receiver_plane.h"
+#include "dayphoton/study/gather_accuracy.h"
 
 namespace dayphoton::study {
 
@@ -57,10 +61,14 @@ std::vector<std::size_t> near_cut_rows(const std::vector<engine::ReceiverPlane>&
                                        const std::vector<SensorPoint>& points, std::size_t g);
 
 /// Takes `rows` out of the rounds' measure (their `value`, DF or annual value, set to 0: the
-/// measure's percentile counts only sensors with light) and returns the log's words on them
-/// ("; 12 sensors next to a cut gathered, largest 1.4 %", the largest relative standard error
-/// of `stderr_value`), or "" without rows.
-std::string take_out_near_cut_rows(const std::vector<std::size_t>& rows, std::vector<double>& value,
-                                   const std::vector<double>& stderr_value);
+/// measure's percentile counts only sensors with light) and returns what they reached: their
+/// count and the largest relative standard error of `stderr_value` (gather_rays left 0).
+NearCutReached take_out_near_cut_rows(const std::vector<std::size_t>& rows, std::vector<double>& value,
+                                      const std::vector<double>& stderr_value);
+
+/// The log's words on them ("; 12 sensors next to a cut gathered, largest 1.4 %", and
+/// " > target 1 %: simulation.gather_rays lowers it" where it is above `target_percent`), or ""
+/// without any.
+std::string near_cut_note(const NearCutReached& reached, double target_percent);
 
 }  // namespace dayphoton::study

@@ -192,6 +192,7 @@ struct AccuracyOutcome {
   std::vector<int> direct_samples_per_bin;
   std::vector<std::string> grid_status;  ///< per grid: accuracy_grid_status (accuracy_policy.h)
   std::vector<GatherAccuracy> gather;    ///< per grid: its gather rounds (gather_accuracy_rounds.h)
+  std::vector<NearCutReached> near_cut;  ///< per grid: its sensors next to a cut (accuracy_policy.h)
   /// Attempts per source after the pilot and at the end (of a run that traced; not cached).
   std::vector<std::uint64_t> pilot_attempts, final_attempts;
 };
