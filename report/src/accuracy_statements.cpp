@@ -56,6 +56,8 @@ struct Reached {
   std::size_t near_cut_sensors = 0;
   int near_cut_gather_rays = 0;
   double near_cut_largest_percent = 0;
+  std::size_t near_cut_gather_rounds = 0;
+  std::string near_cut_stop_reason{};
 };
 
 /// What the sensors next to a column or partition reached, which the measure leaves out
@@ -66,11 +68,14 @@ std::string near_cut_sentence(const Reached& r) {
   const bool above = r.near_cut_largest_percent > r.target_percent;
   s << " The " << r.near_cut_sensors << (r.near_cut_sensors == 1 ? " sensor" : " sensors")
     << " next to a column or partition, estimated by final gather at " << r.near_cut_gather_rays
-    << " rays per sensor and left out of this measure, reach up to "
+    << " rays per sensor";
+  if (r.near_cut_gather_rounds > 0)
+    s << " after " << r.near_cut_gather_rounds << (r.near_cut_gather_rounds == 1 ? " gather round" : " gather rounds");
+  s << " and left out of this measure, reach up to "
     << format_value(r.near_cut_largest_percent, Precision::DaylightFactor) << " %";
   if (above)
-    s << ": <strong>above the target</strong> (the rounds do not raise their rays: raise "
-         "<code>simulation.gather_rays</code>).";
+    s << ": <strong>above the target</strong> (their gather rounds stopped with \"" << esc(r.near_cut_stop_reason)
+      << "\"; more <code>simulation.gather_rays</code> or photons lower it).";
   else
     s << ", within the target.";
   return s.str();
@@ -200,14 +205,16 @@ std::string sky_accuracy_statement(const study::DaylightFactorSummary::AccuracyR
   return statement("Daylight factor (sky patches)",
                    Reached{a.target_percent, a.reached_percent, a.rounds, a.photons, a.stop_reason, a.status,
                            a.gather_rays, a.gather_rounds, a.gather_stop_reason, a.direct_samples_per_bin,
-                           a.near_cut_sensors, a.near_cut_gather_rays, a.near_cut_largest_percent});
+                           a.near_cut_sensors, a.near_cut_gather_rays, a.near_cut_largest_percent,
+                           a.near_cut_gather_rounds, a.near_cut_stop_reason});
 }
 
 std::string sun_accuracy_statement(const study::SunAccuracyReached& a) {
   return statement("Annual sun-bin illuminance (the indirect sunlight of every sun hour, summed over the year)",
                    Reached{a.target_percent, a.reached_percent, a.rounds, a.photons, a.stop_reason, a.status,
                            a.gather_rays, a.gather_rounds, a.gather_stop_reason, 0, a.near_cut_sensors,
-                           a.near_cut_gather_rays, a.near_cut_largest_percent}) +
+                           a.near_cut_gather_rays, a.near_cut_largest_percent, a.near_cut_gather_rounds,
+                           a.near_cut_stop_reason}) +
          " One hour's sun-bin value carries more: " + format_value(a.hourly_percent, Precision::DaylightFactor) +
          " % at the same percentile (reported, not targeted; the annual metrics count hours over thresholds).";
 }

@@ -53,11 +53,14 @@ NearCutReached take_out_near_cut_rows(const std::vector<std::size_t>& rows, std:
 
 std::string near_cut_note(const NearCutReached& reached, double target_percent) {
   if (reached.sensors == 0) return "";
-  return "; " + std::to_string(reached.sensors) + " sensors next to a cut gathered, largest " +
-         round_number(reached.largest_percent) + " %" +
-         (reached.largest_percent <= target_percent
-              ? std::string()
-              : " > target " + round_number(target_percent) + " %: simulation.gather_rays lowers it");
+  std::string s = "; " + std::to_string(reached.sensors) + " sensors next to a cut gathered, largest " +
+                  round_number(reached.largest_percent) + " %";
+  if (reached.stop_reason.empty()) return s;  // the photon rounds' measure: their gather rounds follow
+  if (reached.rounds > 0)
+    s += " at " + std::to_string(reached.gather_rays) + " gather rays (" + std::to_string(reached.rounds) +
+         " gather round(s))";
+  if (reached.largest_percent > target_percent) s += " > target " + round_number(target_percent) + " %: " + reached.stop_reason;
+  return s;
 }
 
 }  // namespace dayphoton::study

@@ -92,6 +92,43 @@ std::vector<double> relative_stderr_percent(const std::vector<double>& df_percen
   return relative;
 }
 
+/// The rows `which` of one grid's direct part into `out` (copy_direct_rows for rows that need not
+/// be contiguous): `whole` the whole grid's, or nothing (zeros).
+void copy_direct_rows_at(const engine::DaylightCoefficients& whole, const std::vector<std::size_t>& which,
+                         std::size_t sources, engine::DaylightCoefficients& out) {
+  out.sensors = which.size();
+  out.sources = sources;
+  if (whole.direct.empty()) {
+    copy_direct_rows(whole, 0, which.size(), sources, out);
+    return;
+  }
+  const engine::DirectOnSkies& skies = whole.direct_on_skies;
+  out.direct_on_skies.skies = skies.skies;
+  for (const std::size_t i : which) {
+    out.direct.insert(out.direct.end(), whole.direct.begin() + std::ptrdiff_t(i * sources),
+                      whole.direct.begin() + std::ptrdiff_t((i + 1) * sources));
+    out.direct_variance.insert(out.direct_variance.end(), whole.direct_variance.begin() + std::ptrdiff_t(i * sources),
+                               whole.direct_variance.begin() + std::ptrdiff_t((i + 1) * sources));
+    const std::size_t k = skies.skies;
+    if (skies.irradiance.size() >= (i + 1) * k)
+      out.direct_on_skies.irradiance.insert(out.direct_on_skies.irradiance.end(),
+                                            skies.irradiance.begin() + std::ptrdiff_t(i * k),
+                                            skies.irradiance.begin() + std::ptrdiff_t((i + 1) * k));
+    if (skies.variance.size() >= (i + 1) * k)
+      out.direct_on_skies.variance.insert(out.direct_on_skies.variance.end(),
+                                          skies.variance.begin() + std::ptrdiff_t(i * k),
+                                          skies.variance.begin() + std::ptrdiff_t((i + 1) * k));
+  }
+}
+
+/// The largest of `relative` over the sensors with light (0 without any).
+double largest_of(const std::vector<double>& relative, const std::vector<double>& df_percent) {
+  double largest = 0;
+  for (std::size_t i = 0; i < relative.size(); ++i)
+    if (df_percent[i] > 0) largest = std::max(largest, relative[i]);
+  return largest;
+}
+
 /// Grid g, which the time budget leaves no gather round on the photons traced since its last
 /// gather estimate: that estimate stands, with its accuracy, rays and rounds (the photon rounds'
 /// estimate at the project's rays if it has none), and its stop is the time budget unless it
@@ -436,6 +473,107 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     result.gathered[g] = GatheredEstimate{};
     if (a.rays > first_rays) result.gathered[g] = GatheredEstimate{now.dc, outcome.reached_percent[g], a};
     result.coefficients[g] = std::move(now.dc);
+  }
+  // A plane's sensors next to a cut (accuracy_policy.h), left out of the photon rounds'
+  // measure: the same gather rounds over those rows alone, on the largest of their errors.
+  if (outcome.near_cut.size() != grids.size()) outcome.near_cut.resize(grids.size());
+  result.near_cut.assign(grids.size(), NearCutEstimate{});
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    NearCutReached& near = outcome.near_cut[g];
+    if (near.sensors == 0) continue;
+    near.rounds = 0;
+    near.stop_reason = "target met";
+    if (near.largest_percent <= goal.target_percent) continue;
+    const std::vector<std::size_t> rows = near_cut_rows(*c.planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g);
+    if (rows.empty()) continue;
+    if (goal.max_seconds > 0 && work.agreed(elapsed_s + seconds_since(start)) >= goal.max_seconds) {
+      near.stop_reason = "time budget";
+      continue;
+    }
+    auto estimate_rows = [&](int rays, const std::string& name) {
+      engine::CoefficientOptions options = c.estimating;
+      options.gather.rays_per_sensor = rays;
+      const std::vector<std::string> blocks = work.estimate(
+          rows.size(),
+          [&](std::size_t begin, std::size_t end) {
+            const engine::GridPhotons& gp = maps.get(build);
+            const std::vector<std::size_t> which(rows.begin() + std::ptrdiff_t(begin), rows.begin() + std::ptrdiff_t(end));
+            engine::DaylightCoefficients dc;
+            copy_direct_rows_at(direct[g], which, n, dc);
+            // Each row bit for bit that sensor's gather in the whole grid (seeded by its index).
+            engine::GatheredCoefficients gathered = engine::gather_photon_coefficients_at(
+                *c.scene, *c.materials, *c.sources, gp.all(), grids[g].points, options.gather, &gp.groups(), which);
+            dc.caustic = std::move(gathered.caustic);
+            dc.global = std::move(gathered.global);
+            dc.photon_variance = std::move(gathered.variance);
+            return frame_block(encode_coefficients(dc), gathered.fixed_photon_variance);
+          },
+          name);
+      std::vector<std::string> coefficients(blocks.size());
+      std::vector<double> fixed;
+      for (std::size_t b = 0; b < blocks.size(); ++b) unframe_block(blocks[b], coefficients[b], fixed);
+      return measure(decode_coefficients(join_coefficient_blocks(coefficients)), fixed);
+    };
+    const std::string who = "grid " + grids[g].name + "'s " + std::to_string(rows.size()) + " sensors next to a cut";
+    int rays = first_rays;
+    Clock::time_point t = Clock::now();
+    GridEstimate now = estimate_rows(rays, c.round_name + " gather round 0, " + who);
+    double seconds_per_ray = seconds_since(t) / rays;
+    for (;;) {
+      const std::vector<double> relative =
+          relative_stderr_percent(now.df_percent, now.direct_variance, now.gather_variance);
+      near.largest_percent = largest_of(relative, now.df_percent);
+      if (near.largest_percent <= goal.target_percent) {
+        near.stop_reason = "target met";
+        break;
+      }
+      // Over every one of them (the 100th percentile): their largest is what the verdict states.
+      const GatherRayPlan plan = next_gather_rays(now.df_percent, now.direct_variance, now.gather_variance,
+                                                  now.fixed_variance, rays, AccuracyRoundAim * goal.target_percent, 100.0);
+      if (near.rounds >= GatherMaxRounds) {
+        near.stop_reason = "round limit";
+        break;
+      }
+      if (rays >= GatherMaxRays) {
+        near.stop_reason = "gather ray limit";
+        break;
+      }
+      if (plan.rays <= rays) {
+        near.stop_reason = plan.sensors_photon_limited > 0 ? "gather photon part" : "direct component";
+        break;
+      }
+      if (goal.max_seconds > 0) {
+        const double spent = work.agreed(elapsed_s + seconds_since(start));
+        if (spent + work.agreed(seconds_per_ray * plan.rays) > goal.max_seconds) {
+          near.stop_reason = "time budget";
+          break;
+        }
+      }
+      t = Clock::now();
+      now = estimate_rows(plan.rays, c.round_name + " gather round " + std::to_string(near.rounds + 1) + ", " + who);
+      seconds_per_ray = seconds_since(t) / plan.rays;
+      rays = plan.rays;
+      ++near.rounds;
+      log(c.round_name + " gather round " + std::to_string(near.rounds) + ", " + who + ": " + std::to_string(rays) +
+          " gather rays per sensor; largest relative standard error " +
+          number(largest_of(relative_stderr_percent(now.df_percent, now.direct_variance, now.gather_variance),
+                            now.df_percent)) +
+          " % (target " + number(goal.target_percent) + " %)");
+    }
+    near.gather_rays = rays;
+    if (near.rounds > 0) {
+      // The grid's rows replaced where the grid's coefficients are held here (the sky's rounds;
+      // the sun's splice result.near_cut into their own).
+      engine::DaylightCoefficients& whole = result.coefficients[g];
+      if (whole.sensors == grids[g].points.size() && whole.sources == n)
+        for (std::size_t r = 0; r < rows.size(); ++r)
+          for (std::size_t p = 0; p < n; ++p) {
+            whole.caustic[rows[r] * n + p] = now.dc.caustic[r * n + p];
+            whole.global[rows[r] * n + p] = now.dc.global[r * n + p];
+            whole.photon_variance[rows[r] * n + p] = now.dc.photon_variance[r * n + p];
+          }
+      result.near_cut[g] = NearCutEstimate{rows, std::move(now.dc)};
+    }
   }
   settle_case_stop(outcome, photon_stop);
   if (request.grids.empty()) request.scale.clear();

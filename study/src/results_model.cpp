@@ -84,6 +84,8 @@ json accuracy_json(const Accuracy& a) {
   if (a.near_cut_sensors > 0)
     j["near_cut"] = {{"sensors", a.near_cut_sensors},
                      {"gather_rays", a.near_cut_gather_rays},
+                     {"rounds", a.near_cut_gather_rounds},
+                     {"stop_reason", a.near_cut_stop_reason},
                      {"largest_relative_stderr_percent", a.near_cut_largest_percent}};
   return j;
 }
@@ -324,6 +326,8 @@ struct Reader {
     r.near_cut_sensors = count(nc, nk, "sensors");
     r.near_cut_gather_rays = integer(nc, nk, "gather_rays");
     r.near_cut_largest_percent = number(nc, nk, "largest_relative_stderr_percent");
+    r.near_cut_gather_rounds = count(nc, nk, "rounds");
+    r.near_cut_stop_reason = text(nc, nk, "stop_reason");
     if (r.near_cut_sensors < 1) fail(name(nk, "sensors"), "is not at least 1");
   }
   const json& array(const json& j, const std::string& parent, const char* key) const {
@@ -648,7 +652,8 @@ bool DaylightFactorSummary::AccuracyReached::operator==(const AccuracyReached& o
          gather_rays == o.gather_rays && gather_rounds == o.gather_rounds &&
          gather_stop_reason == o.gather_stop_reason && direct_samples_per_bin == o.direct_samples_per_bin &&
          near_cut_sensors == o.near_cut_sensors && near_cut_gather_rays == o.near_cut_gather_rays &&
-         near_cut_largest_percent == o.near_cut_largest_percent;
+         near_cut_largest_percent == o.near_cut_largest_percent && near_cut_gather_rounds == o.near_cut_gather_rounds &&
+         near_cut_stop_reason == o.near_cut_stop_reason;
 }
 bool SunAccuracyReached::operator==(const SunAccuracyReached& o) const {
   return target_percent == o.target_percent && reached_percent == o.reached_percent &&
@@ -656,7 +661,8 @@ bool SunAccuracyReached::operator==(const SunAccuracyReached& o) const {
          stop_reason == o.stop_reason && status == o.status && gather_rays == o.gather_rays &&
          gather_rounds == o.gather_rounds && gather_stop_reason == o.gather_stop_reason &&
          near_cut_sensors == o.near_cut_sensors && near_cut_gather_rays == o.near_cut_gather_rays &&
-         near_cut_largest_percent == o.near_cut_largest_percent;
+         near_cut_largest_percent == o.near_cut_largest_percent && near_cut_gather_rounds == o.near_cut_gather_rounds &&
+         near_cut_stop_reason == o.near_cut_stop_reason;
 }
 bool OccupancySummary::operator==(const OccupancySummary& o) const {
   return kind == o.kind && start_h == o.start_h && end_h == o.end_h && description == o.description &&

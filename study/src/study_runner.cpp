@@ -238,6 +238,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
           reached.near_cut_sensors = accuracy->near_cut[g].sensors;
           reached.near_cut_gather_rays = accuracy->near_cut[g].gather_rays;
           reached.near_cut_largest_percent = accuracy->near_cut[g].largest_percent;
+          reached.near_cut_gather_rounds = accuracy->near_cut[g].rounds;
+          reached.near_cut_stop_reason = accuracy->near_cut[g].stop_reason;
         }
         ctx.results->grids.back().daylight_factor->accuracy = reached;
       }
@@ -314,6 +316,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
           r.near_cut_sensors = sun_accuracy->near_cut[g].sensors;
           r.near_cut_gather_rays = sun_accuracy->near_cut[g].gather_rays;
           r.near_cut_largest_percent = sun_accuracy->near_cut[g].largest_percent;
+          r.near_cut_gather_rounds = sun_accuracy->near_cut[g].rounds;
+          r.near_cut_stop_reason = sun_accuracy->near_cut[g].stop_reason;
         }
         grids_json[g]["accuracy"]["sun"] = {
             {"target_relative_stderr_percent", sun_accuracy->target_percent},

@@ -273,6 +273,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   gathered.sources = &sources;
   gathered.planes = &planes;
   gathered.plane_of_grid = c.plane_of_grid;
+  gathered.near_cut_sensors = c.near_cut_sensors;
   gathered.grids = &grids;
   gathered.gather = c.gather;
   gathered.tracing = c.tracing;
@@ -293,6 +294,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
     a.target_percent = goal.target_percent;
     a.reached_percent = o.reached_percent;
     a.grid_status = o.grid_status;
+    a.near_cut = o.near_cut;
     photon_stop = a.stop_reason = lo.stop_reason;
     a.rounds = lo.rounds;
     gather_result.coefficients.assign(grids.size(), {});
@@ -312,6 +314,19 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
       o.hourly_percent[g] =
           hourly_percent(g, sun_annual_variance(result.coefficients[g], result.variance[g], weights).df_percent);
     }
+    // A plane's sensors next to a cut gathered again at more rays: their rows spliced in, as
+    // sun_bin_coefficients keeps them.
+    for (std::size_t g = 0; g < grids.size() && g < gather_result.near_cut.size(); ++g) {
+      const NearCutEstimate& e = gather_result.near_cut[g];
+      if (e.rows.empty() || result.coefficients[g].rows() != grids[g].points.size()) continue;
+      for (std::size_t r = 0; r < e.rows.size(); ++r)
+        for (std::size_t k = 0; k < n; ++k) {
+          const Vec3 total = Vec3{} + e.coefficients.caustic[r * n + k] + e.coefficients.global[r * n + k];
+          for (int ch = 0; ch < 3; ++ch) result.coefficients[g].at(e.rows[r], k, ch) = static_cast<float>(total[ch]);
+          result.variance[g][e.rows[r] * n + k] = e.coefficients.photon_variance[r * n + k];
+        }
+    }
+    o.near_cut = a.near_cut;
     o.reached_percent = a.reached_percent;
     o.grid_status = a.grid_status;
     o.gather = a.gather;

@@ -690,27 +690,33 @@ TEST(ReportHtml, SensorsNextToACutStateWhatTheyReachedBesideTheVerdict) {
   above.near_cut_sensors = 12;
   above.near_cut_gather_rays = 1024;
   above.near_cut_largest_percent = 1.26;
+  above.near_cut_stop_reason = "gather photon part";
   m.cases[0].grids[0].daylight_factor->accuracy = above;
   Acc within = above;
   within.near_cut_largest_percent = 0.99;
+  within.near_cut_gather_rays = 1936;
+  within.near_cut_gather_rounds = 1;
+  within.near_cut_stop_reason = "target met";
   m.cases[1].grids[0].daylight_factor->accuracy = within;
   SunAccuracyReached sun{1.0, 0.75, 9.7, 3, 11100000, "target met", "met", 0, 0, ""};
   sun.near_cut_sensors = 9;
   sun.near_cut_gather_rays = 1024;
   sun.near_cut_largest_percent = 1.22;
+  sun.near_cut_stop_reason = "time budget";
   m.cases[0].grids[0].sun_accuracy = sun;
   write_results_model(m, dir);
   const std::string part = accuracy_statements(report_html(dir));
   const std::string plane = accuracy_item(part, "data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
   EXPECT_NE(plane.find("Target met by the sensors it measures. The 12 sensors next to a column or partition, "
                        "estimated by final gather at 1024 rays per sensor and left out of this measure, reach up to "
-                       "1.3 %: <strong>above the target</strong> (the rounds do not raise their rays: raise "
-                       "<code>simulation.gather_rays</code>)."),
+                       "1.3 %: <strong>above the target</strong> (their gather rounds stopped with \"gather photon "
+                       "part\"; more <code>simulation.gather_rays</code> or photons lower it)."),
             std::string::npos)
       << plane;
   const std::string ok = accuracy_item(part, "data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
-  EXPECT_NE(ok.find("Target met. The 12 sensors next to a column or partition, estimated by final gather at 1024 rays "
-                    "per sensor and left out of this measure, reach up to 0.99 %, within the target."),
+  EXPECT_NE(ok.find("Target met. The 12 sensors next to a column or partition, estimated by final gather at 1936 rays "
+                    "per sensor after 1 gather round and left out of this measure, reach up to 0.99 %, within the "
+                    "target."),
             std::string::npos)
       << ok;
   const std::string s = accuracy_item(part, "data-part=\"sun\" data-case=\"base\" data-grid=\"north_wing\"");

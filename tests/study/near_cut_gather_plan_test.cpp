@@ -123,10 +123,16 @@ TEST(NearCutGatherPlan, TheRoundsMeasureLeavesTheGatheredRowsOut) {
   EXPECT_NEAR(reached.largest_percent, 10.0, 1e-12);
   for (std::size_t i : rows) EXPECT_EQ(measured[i], 0.0);
   EXPECT_NEAR(percentile_relative_stderr_percent(measured, se, AccuracyPercentile), 1.0, 1e-12);
-  // The verdict states them apart: above the target the note says so and what lowers it.
-  reached.gather_rays = 64;
-  EXPECT_EQ(near_cut_note(reached, 1.0),
-            "; 4 sensors next to a cut gathered, largest 10 % > target 1 %: simulation.gather_rays lowers it");
+  // The verdict states them apart: during the photon rounds their largest error; after their
+  // gather rounds the rays they reached and, above the target, the gather stop.
+  EXPECT_EQ(near_cut_note(reached, 1.0), "; 4 sensors next to a cut gathered, largest 10 %");
+  reached.gather_rays = 4096;
+  reached.rounds = 2;
+  reached.stop_reason = "gather photon part";
+  EXPECT_EQ(near_cut_note(reached, 1.0), "; 4 sensors next to a cut gathered, largest 10 % at 4096 gather rays (2 "
+                                         "gather round(s)) > target 1 %: gather photon part");
+  reached.rounds = 0;
+  reached.stop_reason = "target met";
   EXPECT_EQ(near_cut_note(reached, 10.0), "; 4 sensors next to a cut gathered, largest 10 %");
   EXPECT_EQ(take_out_near_cut_rows({}, measured, se).sensors, 0u);
   EXPECT_EQ(near_cut_note(NearCutReached{}, 1.0), "");

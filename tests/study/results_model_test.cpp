@@ -92,6 +92,8 @@ ResultsModel full_model() {
   g.daylight_factor->accuracy->near_cut_sensors = 12;
   g.daylight_factor->accuracy->near_cut_gather_rays = 1024;
   g.daylight_factor->accuracy->near_cut_largest_percent = 1.25;
+  g.daylight_factor->accuracy->near_cut_gather_rounds = 2;
+  g.daylight_factor->accuracy->near_cut_stop_reason = "gather ray limit";
   g.sun_accuracy->near_cut_sensors = 9;
   g.sun_accuracy->near_cut_gather_rays = 1024;
   g.sun_accuracy->near_cut_largest_percent = 1.5;
@@ -214,6 +216,9 @@ TEST(ResultsModel, RoundTripsEveryField) {
   EXPECT_FALSE(changed == m);
   changed = back;
   changed.cases[1].grids[0].sun_accuracy->near_cut_sensors = 8;
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].daylight_factor->accuracy->near_cut_stop_reason = "target met";
   EXPECT_FALSE(changed == m);
   changed = back;
   changed.cases[1].grids[0].dropped_on_cut_surface = 0;

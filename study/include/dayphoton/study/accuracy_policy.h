@@ -17,12 +17,14 @@
 // estimated by final gather inside their grid. The same holds for them: their error is mostly
 // the gather's rays', which photons do not lower, so the rounds' measure of the grid leaves
 // them out (the grid's percentile, the photon and shadow-ray plans are over its plane rows);
-// their gather stays at simulation.gather_rays, each row's standard error is its own gather's
-// (final_gather.h, "Variance"). The gather rounds raise the rays of whole gathered grids only,
-// so the grid's verdict states those rows apart: their count and largest relative error in
-// every round's log line and the rounds' last (near_cut_note), in summary.json
-// (`grids[].accuracy.near_cut`, with "above target" where the largest is) and in the report's
-// accuracy statement, which then says the target is met by the sensors it measures only.
+// each row's standard error is its own gather's (final_gather.h, "Variance"). After the photon
+// rounds the gather rounds (gather_accuracy_rounds.h) raise those rows' gather rays, over the
+// rows alone, until the largest of their relative errors meets the target or a gather limit
+// stops them, and the grid's verdict states those rows apart: their count and largest relative
+// error in every round's log line and the rounds' last (near_cut_note), in summary.json
+// (`grids[].accuracy.near_cut`, with "above target" and the gather stop where the largest is)
+// and in the report's accuracy statement, which then says the target is met by the sensors it
+// measures only.
 #pragma once
 
 #include <cstddef>
@@ -66,9 +68,10 @@ std::vector<std::size_t> near_cut_rows(const std::vector<engine::ReceiverPlane>&
 NearCutReached take_out_near_cut_rows(const std::vector<std::size_t>& rows, std::vector<double>& value,
                                       const std::vector<double>& stderr_value);
 
-/// The log's words on them ("; 12 sensors next to a cut gathered, largest 1.4 %", and
-/// " > target 1 %: simulation.gather_rays lowers it" where it is above `target_percent`), or ""
-/// without any.
+/// The log's words on them ("; 12 sensors next to a cut gathered, largest 1.4 %"; after their
+/// gather rounds, reached.stop_reason set, also " at 1936 gather rays (1 gather round(s))" where
+/// they raised the rays, and " > target 1 %: gather ray limit" where the largest is above
+/// `target_percent`), or "" without any.
 std::string near_cut_note(const NearCutReached& reached, double target_percent);
 
 }  // namespace dayphoton::study

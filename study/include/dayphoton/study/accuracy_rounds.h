@@ -240,10 +240,18 @@ struct GatheredEstimate {
   GatherAccuracy accuracy;  ///< accuracy.rays == 0: none yet
 };
 
+/// A plane's sensors next to a cut gathered again at more rays by the gather rounds
+/// (gather_accuracy_rounds.h): their rows of the grid and the estimate of those rows alone.
+struct NearCutEstimate {
+  std::vector<std::size_t> rows;             ///< ascending; empty: none raised
+  engine::DaylightCoefficients coefficients; ///< rows.size() sensors (its direct part the grid's rows)
+};
+
 struct AccuracyResult {
   std::vector<engine::DaylightCoefficients> coefficients;  ///< per grid
   AccuracyOutcome outcome;
   std::vector<GatheredEstimate> gathered;  ///< per grid, filled by the gather rounds (not cached)
+  std::vector<NearCutEstimate> near_cut;   ///< per grid, filled by the gather rounds (not cached)
 };
 
 /// The rounds of one case; `log` receives one line per round and the stop. The tracing (the

@@ -102,10 +102,13 @@ struct DaylightFactorSummary {
     int direct_samples_per_bin = 0;
     /// A receiver-plane grid's sensors next to a column or partition, estimated by final gather
     /// and left out of the measure (docs/photon-tracing.md "Accuracy target"): how many, their
-    /// gather rays per sensor and their largest relative standard error, %; 0 sensors: none.
+    /// gather rays per sensor, their gather rounds and those rounds' stop (as gather_stop_reason)
+    /// and their largest relative standard error, %; 0 sensors: none.
     std::size_t near_cut_sensors = 0;
     int near_cut_gather_rays = 0;
     double near_cut_largest_percent = 0;
+    std::size_t near_cut_gather_rounds = 0;
+    std::string near_cut_stop_reason{};
 
     bool operator==(const AccuracyReached& o) const;
   };
@@ -225,6 +228,8 @@ struct SunAccuracyReached {
   std::size_t near_cut_sensors = 0;
   int near_cut_gather_rays = 0;
   double near_cut_largest_percent = 0;
+  std::size_t near_cut_gather_rounds = 0;
+  std::string near_cut_stop_reason{};
 
   bool operator==(const SunAccuracyReached& o) const;
 };
