@@ -285,19 +285,30 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
   // The photons of the last round, merged once, for any grid that needs more rays.
   LazyValue<engine::GridPhotons> maps;
   auto build = [&] { return engine::GridPhotons::for_gather(engine::scaled_merged_photons(records, c.relabel_sources).surface, n); };
-  auto estimate = [&](std::size_t g, int rays, const std::string& name) {
+  // Grid g's gather at `rays`: of every sensor, or (rows given) of those rows alone, each row
+  // bit for bit that sensor's gather in the whole grid (seeded by its index).
+  auto estimate = [&](std::size_t g, int rays, const std::string& name, const std::vector<std::size_t>* rows = nullptr) {
     const SensorGrid& grid = grids[g];
     engine::CoefficientOptions options = c.estimating;
     options.gather.rays_per_sensor = rays;
     const std::vector<std::string> blocks = work.estimate(
-        grid.points.size(),
+        rows ? rows->size() : grid.points.size(),
         [&](std::size_t begin, std::size_t end) {
           const engine::GridPhotons& gp = maps.get(build);
           engine::DaylightCoefficients dc;
-          copy_direct_rows(direct[g], begin, end, n, dc);  // the sun bins' gathered grids: none, zeros
-          // The gather of photon_coefficients, with the part more rays do not reduce.
-          engine::GatheredCoefficients gathered = engine::gather_photon_coefficients(
-              *c.scene, *c.materials, *c.sources, gp.all(), grid.points, options.gather, &gp.groups(), {begin, end});
+          // The gather of photon_coefficients, with the part more rays do not reduce; the sun
+          // bins' gathered grids have no direct part (zeros).
+          engine::GatheredCoefficients gathered;
+          if (rows) {
+            const std::vector<std::size_t> which(rows->begin() + std::ptrdiff_t(begin), rows->begin() + std::ptrdiff_t(end));
+            copy_direct_rows_at(direct[g], which, n, dc);
+            gathered = engine::gather_photon_coefficients_at(*c.scene, *c.materials, *c.sources, gp.all(), grid.points,
+                                                             options.gather, &gp.groups(), which);
+          } else {
+            copy_direct_rows(direct[g], begin, end, n, dc);
+            gathered = engine::gather_photon_coefficients(*c.scene, *c.materials, *c.sources, gp.all(), grid.points,
+                                                          options.gather, &gp.groups(), {begin, end});
+          }
           dc.caustic = std::move(gathered.caustic);
           dc.global = std::move(gathered.global);
           dc.photon_variance = std::move(gathered.variance);
@@ -490,34 +501,10 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
       near.stop_reason = "time budget";
       continue;
     }
-    auto estimate_rows = [&](int rays, const std::string& name) {
-      engine::CoefficientOptions options = c.estimating;
-      options.gather.rays_per_sensor = rays;
-      const std::vector<std::string> blocks = work.estimate(
-          rows.size(),
-          [&](std::size_t begin, std::size_t end) {
-            const engine::GridPhotons& gp = maps.get(build);
-            const std::vector<std::size_t> which(rows.begin() + std::ptrdiff_t(begin), rows.begin() + std::ptrdiff_t(end));
-            engine::DaylightCoefficients dc;
-            copy_direct_rows_at(direct[g], which, n, dc);
-            // Each row bit for bit that sensor's gather in the whole grid (seeded by its index).
-            engine::GatheredCoefficients gathered = engine::gather_photon_coefficients_at(
-                *c.scene, *c.materials, *c.sources, gp.all(), grids[g].points, options.gather, &gp.groups(), which);
-            dc.caustic = std::move(gathered.caustic);
-            dc.global = std::move(gathered.global);
-            dc.photon_variance = std::move(gathered.variance);
-            return frame_block(encode_coefficients(dc), gathered.fixed_photon_variance);
-          },
-          name);
-      std::vector<std::string> coefficients(blocks.size());
-      std::vector<double> fixed;
-      for (std::size_t b = 0; b < blocks.size(); ++b) unframe_block(blocks[b], coefficients[b], fixed);
-      return measure(decode_coefficients(join_coefficient_blocks(coefficients)), fixed);
-    };
     const std::string who = "grid " + grids[g].name + "'s " + std::to_string(rows.size()) + " sensors next to a cut";
     int rays = first_rays;
     Clock::time_point t = Clock::now();
-    GridEstimate now = estimate_rows(rays, c.round_name + " gather round 0, " + who);
+    GridEstimate now = estimate(g, rays, c.round_name + " gather round 0, " + who, &rows);
     double seconds_per_ray = seconds_since(t) / rays;
     for (;;) {
       const std::vector<double> relative =
@@ -550,7 +537,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
         }
       }
       t = Clock::now();
-      now = estimate_rows(plan.rays, c.round_name + " gather round " + std::to_string(near.rounds + 1) + ", " + who);
+      now = estimate(g, plan.rays, c.round_name + " gather round " + std::to_string(near.rounds + 1) + ", " + who, &rows);
       seconds_per_ray = seconds_since(t) / plan.rays;
       rays = plan.rays;
       ++near.rounds;
