@@ -307,8 +307,11 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   // Each round: every grid estimated from the photons so far, its DF and their variances.
   const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
                                    const std::vector<double>& scale) {
+    // A plane's sensors next to a cut read the gathered grids' map, if there is one
+    // (accuracy_policy.h); else the gather rounds estimate them once.
+    const bool near_cut_here = near_cut_gathered_in_rounds(*c.plane_of_grid, c.gather);
     RoundGridMaps maps(*c.planes, *c.plane_of_grid, c.gather, round_photons(records, false), scale,
-                       c.near_cut_sensors ? *c.near_cut_sensors : std::vector<std::size_t>{});
+                       c.near_cut_sensors && near_cut_here ? *c.near_cut_sensors : std::vector<std::size_t>{});
     chased_grid.clear();
     result.coefficients.assign(grids.size(), {});
     result.outcome.reached_percent.assign(grids.size(), 0.0);
@@ -328,11 +331,12 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
       v.df_percent = std::move(parts.df_percent);
       v.direct_variance = std::move(parts.direct_variance);
       v.photon_variance = std::move(parts.photon_variance);
-      // A plane's sensors next to a cut are gathered: out of the measure (accuracy_policy.h).
+      // A plane's sensors next to a cut: out of the measure (accuracy_policy.h); where this
+      // round does not gather them, their rows hold the plane's estimate until the gather rounds.
       NearCutReached& near = result.outcome.near_cut[g];
       near = take_out_near_cut_rows(near_cut_rows(*c.planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g),
                                     v.df_percent, stderr_percent);
-      near.gather_rays = near.sensors > 0 ? c.estimating.gather.rays_per_sensor : 0;
+      near.gather_rays = near.sensors > 0 && near_cut_here ? c.estimating.gather.rays_per_sensor : 0;
       const std::string near_cut = near_cut_note(near, goal.target_percent);
       const double reached = percentile_relative_stderr_percent(v.df_percent, stderr_percent, AccuracyPercentile);
       result.outcome.reached_percent[g] = reached;

@@ -485,8 +485,11 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     if (a.rays > first_rays) result.gathered[g] = GatheredEstimate{now.dc, outcome.reached_percent[g], a};
     result.coefficients[g] = std::move(now.dc);
   }
-  // A plane's sensors next to a cut (accuracy_policy.h), left out of the photon rounds'
-  // measure: the same gather rounds over those rows alone, on the largest of their errors.
+  // A plane's sensors next to a cut (accuracy_policy.h), which the photon rounds' measure leaves
+  // out: gathered here from the last round's photons at the project's rays where the rounds did
+  // not gather them (whatever the time budget: their rows hold the plane's estimate until then;
+  // near.gather_rays 0), then the same gather rounds over those rows alone, on the largest of
+  // their errors.
   if (outcome.near_cut.size() != grids.size()) outcome.near_cut.resize(grids.size());
   result.near_cut.assign(grids.size(), NearCutEstimate{});
   for (std::size_t g = 0; g < grids.size(); ++g) {
@@ -494,17 +497,14 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     if (near.sensors == 0) continue;
     near.rounds = 0;
     near.stop_reason = "target met";
-    if (near.largest_percent <= goal.target_percent) continue;
+    const bool gathered_in_rounds = near.gather_rays > 0;
+    if (gathered_in_rounds && near.largest_percent <= goal.target_percent) continue;
     const std::vector<std::size_t> rows = near_cut_rows(*c.planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g);
     if (rows.empty()) continue;
-    if (goal.max_seconds > 0 && work.agreed(elapsed_s + seconds_since(start)) >= goal.max_seconds) {
-      near.stop_reason = "time budget";
-      continue;
-    }
     const std::string who = "grid " + grids[g].name + "'s " + std::to_string(rows.size()) + " sensors next to a cut";
     int rays = first_rays;
     Clock::time_point t = Clock::now();
-    GridEstimate now = estimate(g, rays, c.round_name + " gather round 0, " + who, &rows);
+    GridEstimate now = estimate(g, rays, c.round_name + " near-cut gather, " + who, &rows);
     double seconds_per_ray = seconds_since(t) / rays;
     for (;;) {
       const std::vector<double> relative =
@@ -548,19 +548,17 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           " % (target " + number(goal.target_percent) + " %)");
     }
     near.gather_rays = rays;
-    if (near.rounds > 0) {
-      // The grid's rows replaced where the grid's coefficients are held here (the sky's rounds;
-      // the sun's splice result.near_cut into their own).
-      engine::DaylightCoefficients& whole = result.coefficients[g];
-      if (whole.sensors == grids[g].points.size() && whole.sources == n)
-        for (std::size_t r = 0; r < rows.size(); ++r)
-          for (std::size_t p = 0; p < n; ++p) {
-            whole.caustic[rows[r] * n + p] = now.dc.caustic[r * n + p];
-            whole.global[rows[r] * n + p] = now.dc.global[r * n + p];
-            whole.photon_variance[rows[r] * n + p] = now.dc.photon_variance[r * n + p];
-          }
-      result.near_cut[g] = NearCutEstimate{rows, std::move(now.dc)};
-    }
+    // The grid's rows replaced where the grid's coefficients are held here (the sky's rounds;
+    // the sun's splice result.near_cut into their own).
+    engine::DaylightCoefficients& whole = result.coefficients[g];
+    if (whole.sensors == grids[g].points.size() && whole.sources == n)
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        for (std::size_t p = 0; p < n; ++p) {
+          whole.caustic[rows[r] * n + p] = now.dc.caustic[r * n + p];
+          whole.global[rows[r] * n + p] = now.dc.global[r * n + p];
+          whole.photon_variance[rows[r] * n + p] = now.dc.photon_variance[r * n + p];
+        }
+    result.near_cut[g] = NearCutEstimate{rows, std::move(now.dc)};
   }
   settle_case_stop(outcome, photon_stop);
   if (request.grids.empty()) request.scale.clear();

@@ -210,8 +210,11 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   // annual measure (the target's) and the hourly one (reported).
   const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
                                    const std::vector<double>& scale) {
+    // A plane's sensors next to a cut read the gathered grids' map, if there is one
+    // (accuracy_policy.h); else the gather rounds estimate them once.
+    const bool near_cut_here = near_cut_gathered_in_rounds(*c.plane_of_grid, c.gather);
     RoundGridMaps maps(planes, *c.plane_of_grid, c.gather, round_photons(records, true), scale,
-                       c.near_cut_sensors ? *c.near_cut_sensors : std::vector<std::size_t>{});
+                       c.near_cut_sensors && near_cut_here ? *c.near_cut_sensors : std::vector<std::size_t>{});
     result.coefficients.assign(grids.size(), {});
     result.variance.assign(grids.size(), {});
     o.reached_percent.assign(grids.size(), 0.0);
@@ -240,11 +243,12 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
         for (std::size_t k = 0; k < n; ++k) x += v.photon_variance[s * n + k];
         stderr_value[s] = std::sqrt(std::max(0.0, x));
       }
-      // A plane's sensors next to a cut are gathered: out of the measure (accuracy_policy.h).
+      // A plane's sensors next to a cut: out of the measure (accuracy_policy.h); where this
+      // round does not gather them, their rows hold the plane's estimate until the gather rounds.
       NearCutReached& near = o.near_cut[g];
       near = take_out_near_cut_rows(near_cut_rows(planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g),
                                     v.df_percent, stderr_value);
-      near.gather_rays = near.sensors > 0 ? estimating.gather.rays_per_sensor : 0;
+      near.gather_rays = near.sensors > 0 && near_cut_here ? estimating.gather.rays_per_sensor : 0;
       const std::string near_cut = near_cut_note(near, goal.target_percent);
       o.reached_percent[g] = percentile_relative_stderr_percent(v.df_percent, stderr_value, AccuracyPercentile);
       o.hourly_percent[g] = hourly_percent(g, v.df_percent);
@@ -314,7 +318,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
       o.hourly_percent[g] =
           hourly_percent(g, sun_annual_variance(result.coefficients[g], result.variance[g], weights).df_percent);
     }
-    // A plane's sensors next to a cut gathered again at more rays: their rows spliced in, as
+    // A plane's sensors next to a cut, gathered by the gather rounds: their rows spliced in, as
     // sun_bin_coefficients keeps them.
     for (std::size_t g = 0; g < grids.size() && g < gather_result.near_cut.size(); ++g) {
       const NearCutEstimate& e = gather_result.near_cut[g];

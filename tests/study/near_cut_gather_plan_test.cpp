@@ -123,9 +123,17 @@ TEST(NearCutGatherPlan, TheRoundsMeasureLeavesTheGatheredRowsOut) {
   EXPECT_NEAR(reached.largest_percent, 10.0, 1e-12);
   for (std::size_t i : rows) EXPECT_EQ(measured[i], 0.0);
   EXPECT_NEAR(percentile_relative_stderr_percent(measured, se, AccuracyPercentile), 1.0, 1e-12);
-  // The verdict states them apart: during the photon rounds their largest error; after their
-  // gather rounds the rays they reached and, above the target, the gather stop.
-  EXPECT_EQ(near_cut_note(reached, 1.0), "; 4 sensors next to a cut gathered, largest 10 %");
+  // The verdict states them apart: during the photon rounds (which do not gather them) their
+  // count; after their gather rounds the largest error, the rays they reached and, above the
+  // target, the gather stop.
+  EXPECT_EQ(near_cut_note(reached, 1.0), "; 4 sensors next to a cut, gathered after the photon rounds");
+  NearCutReached in_round = reached;  // a round that gathers them (a gathered grid's map)
+  in_round.gather_rays = 1024;
+  EXPECT_EQ(near_cut_note(in_round, 1.0), "; 4 sensors next to a cut gathered, largest 10 %");
+  // A round gathers them only where a gathered grid builds the gather map anyway.
+  EXPECT_FALSE(near_cut_gathered_in_rounds({0}, true));
+  EXPECT_FALSE(near_cut_gathered_in_rounds({0, -1}, false));  // the surface estimate: no gather map
+  EXPECT_TRUE(near_cut_gathered_in_rounds({0, -1}, true));
   reached.gather_rays = 4096;
   reached.rounds = 2;
   reached.stop_reason = "gather photon part";

@@ -84,8 +84,9 @@ sed -i 's/^  accuracy: {target_df_relative_stderr_percent: 3}$/&\n  gather_rays:
 grep -q '^    - {name: column, ' "$tmp/column/project.yaml" || { echo "column: the box was not added"; exit 1; }
 grep -q '^  gather_rays: 4$' "$tmp/column/project.yaml" || { echo "column: the gather rays were not set"; exit 1; }
 near_cut_rounds() {
-  grep -q '^accuracy round 1 (pilot): .*; 4 sensors next to a cut gathered, largest ' "$1/run.log" &&
-    grep -q '^sun accuracy round 1 (pilot): .*; 4 sensors next to a cut gathered, largest ' "$1/run.log" &&
+  grep -q '^accuracy round 1 (pilot): .*; 4 sensors next to a cut, gathered after the photon rounds' "$1/run.log" &&
+    grep -q '^sun accuracy round 1 (pilot): .*; 4 sensors next to a cut, gathered after the photon rounds' "$1/run.log" &&
+    grep -q "^accuracy workplane: .*; 4 sensors next to a cut gathered, largest .* at 64 gather rays" "$1/run.log" &&
     grep -q "^accuracy gather round 1, grid workplane's 4 sensors next to a cut: " "$1/run.log" &&
     grep -q "^sun accuracy gather round 2, grid workplane's 4 sensors next to a cut: " "$1/run.log"
 }

@@ -240,10 +240,10 @@ struct GatheredEstimate {
   GatherAccuracy accuracy;  ///< accuracy.rays == 0: none yet
 };
 
-/// A plane's sensors next to a cut gathered again at more rays by the gather rounds
-/// (gather_accuracy_rounds.h): their rows of the grid and the estimate of those rows alone.
+/// A plane's sensors next to a cut as the gather rounds estimated them (gather_accuracy_rounds.h):
+/// their rows of the grid and the estimate of those rows alone.
 struct NearCutEstimate {
-  std::vector<std::size_t> rows;             ///< ascending; empty: none raised
+  std::vector<std::size_t> rows;             ///< ascending; empty: none
   engine::DaylightCoefficients coefficients; ///< rows.size() sensors (its direct part the grid's rows)
 };
 
