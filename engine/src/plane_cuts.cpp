@@ -53,7 +53,13 @@ void add_inside_pieces(const ReceiverPlane& plane, const PlaneSegment& s, std::v
 
 }  // namespace
 
-std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const ReceiverPlane& plane) {
+std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const ReceiverPlane& plane, bool opaque_only) {
+  const SceneDescription& description = scene.description();
+  auto passes_light = [&](int surface) {
+    const MaterialType type =
+        description.materials[static_cast<std::size_t>(description.surfaces[static_cast<std::size_t>(surface)].material)].type;
+    return type == MaterialType::Glass || type == MaterialType::Opening || type == MaterialType::Dielectric;
+  };
   std::vector<PlaneSegment> cuts;
   const double z = plane.height_m();
   // Edges lying in the plane, (x0, y0, x1, y1) with the lesser end first, and the sides their
@@ -63,7 +69,7 @@ std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const Receiver
   std::map<std::array<double, 4>, int> in_plane_edges;
   for (std::size_t t = 0; t < scene.triangle_count(); ++t) {
     const SceneTriangle& tri = scene.triangle(static_cast<std::uint32_t>(t));
-    if (scene.is_port(tri.surface)) continue;
+    if (scene.is_port(tri.surface) || (opaque_only && passes_light(tri.surface))) continue;
     double d[3];
     bool above = false, below = false;
     for (int k = 0; k < 3; ++k) {
@@ -124,6 +130,14 @@ std::vector<std::size_t> sensors_near_cuts(const ReceiverPlane& plane, const std
     if (distance_to_interior_cut_m(plane, sensors[s].position.x, sensors[s].position.y) < NearCutGather_m - NearCutMargin_m)
       near.push_back(s);
   return near;
+}
+
+std::vector<std::size_t> sensors_on_cuts(const ReceiverPlane& plane, const std::vector<SensorPoint>& sensors) {
+  std::vector<std::size_t> on;
+  if (plane.interior_cuts().empty()) return on;
+  for (std::size_t s = 0; s < sensors.size(); ++s)
+    if (distance_to_interior_cut_m(plane, sensors[s].position.x, sensors[s].position.y) < OnCut_m) on.push_back(s);
+  return on;
 }
 
 }  // namespace dayphoton::engine

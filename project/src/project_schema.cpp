@@ -373,7 +373,7 @@ std::vector<SectionSchema> build_schema() {
   s.push_back({"honeybee grid", "one sensor grid of the Honeybee model, in `sensors.honeybee_grids`", {
       P("grid", T::String, "identifier of a sensor grid in the model's properties.radiance.sensor_grids").required(),
       P("name", T::String, "sensor-set name, also its output folder (default: the grid's identifier): a path name (see Names that become folders)"),
-      P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room or inside a solid (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
+      P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room, inside a solid or on a surface crossing the work plane (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
   }});
   // Wall and rectangle grids: frames and order in project/src/sensor_grid.cpp.
   s.push_back({"grid", "a regular sensor grid over a room floor, a polygon, a room wall or a rectangle (give exactly one of them)", {
@@ -387,7 +387,7 @@ std::vector<SectionSchema> build_schema() {
       P("inset", T::Number, "distance kept from the outline").unit("m").at_least(0).def("0.5"),
       P("offset", T::Number, "wall and rectangle grids: distance of the sensors from the surface along their normal (0: on it)").unit("m").at_least(0).def("0"),
       P("normal", T::Vec3, "room and polygon grids: direction the sensors face").def("[0, 0, 1]"),
-      P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room or inside a solid (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
+      P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room, inside a solid or on a surface crossing the work plane (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
       P("occupancy", T::Section, "this sensor set's own occupancy schedule (as metrics.occupancy), instead of the project's").section("occupancy"),
   }});
   s.push_back({"grid wall", "a room surface covered by a grid", {
@@ -403,7 +403,7 @@ std::vector<SectionSchema> build_schema() {
       P("name", T::String, "unique sensor-set name, also its output folder: a path name (see Names that become folders), not `variants` or `operated`").required(),
       P("points", T::Special, "[[x, y, z, nx, ny, nz], ...] in metres"),
       P("file", T::Path, "RADIANCE .pts file (x y z nx ny nz per line), must exist"),
-      P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room or inside a solid (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
+      P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room, inside a solid or on a surface crossing the work plane (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
       P("occupancy", T::Section, "this sensor set's own occupancy schedule (as metrics.occupancy), instead of the project's").section("occupancy"),
   }});
   s.push_back({"simulation", "photon tracing and sky discretisation", {

@@ -52,7 +52,34 @@ struct Reached {
   std::size_t gather_rounds = 0;
   std::string gather_stop_reason{};
   int direct_samples_per_bin = 0;  ///< the sky's shadow rays per patch at the end; 0 for the sun (none)
+  /// A plane's sensors next to a cut, out of the measure (study::NearCutReached); 0: none.
+  std::size_t near_cut_sensors = 0;
+  int near_cut_gather_rays = 0;
+  double near_cut_largest_percent = 0;
+  std::size_t near_cut_gather_rounds = 0;
+  std::string near_cut_stop_reason{};
 };
+
+/// What the sensors next to a column or partition reached, which the measure leaves out
+/// (docs/photon-tracing.md "Accuracy target"): "" without any.
+std::string near_cut_sentence(const Reached& r) {
+  if (r.near_cut_sensors == 0) return "";
+  std::ostringstream s;
+  const bool above = r.near_cut_largest_percent > r.target_percent;
+  s << " The " << r.near_cut_sensors << (r.near_cut_sensors == 1 ? " sensor" : " sensors")
+    << " next to a column or partition, estimated by final gather at " << r.near_cut_gather_rays
+    << " rays per sensor";
+  if (r.near_cut_gather_rounds > 0)
+    s << " after " << r.near_cut_gather_rounds << (r.near_cut_gather_rounds == 1 ? " gather round" : " gather rounds");
+  s << " and left out of this measure, reach up to "
+    << format_value(r.near_cut_largest_percent, Precision::DaylightFactor) << " %";
+  if (above)
+    s << ": <strong>above the target</strong> (their gather rounds stopped with \"" << esc(r.near_cut_stop_reason)
+      << "\"; more <code>simulation.gather_rays</code> or photons lower it).";
+  else
+    s << ", within the target.";
+  return s.str();
+}
 
 /// The shadow rays at their limit, with the count the grid ended at (`samples_per_bin`, from
 /// results.json): `who` raises them up to MaxDirectSamplesPerBin per sky patch and keeps a
@@ -157,7 +184,9 @@ std::string statement(const std::string& what, const Reached& r) {
     s << "after " << r.rounds << (r.rounds == 1 ? " round" : " rounds") << " of photon tracing ("
       << photon_count(r.photons) << " photons). ";
   if (met) {
-    s << "Target met.";
+    s << (r.near_cut_sensors > 0 && r.near_cut_largest_percent > r.target_percent
+              ? "Target met by the sensors it measures."
+              : "Target met.");
     if (r.gather_rays == 0 && r.stop_reason != "target met")
       s << " (The rounds serve every grid of the case; they stopped with \"" << esc(r.stop_reason)
         << "\" for another grid.)";
@@ -166,6 +195,7 @@ std::string statement(const std::string& what, const Reached& r) {
       << (r.status == "not reachable by photons" ? " and not reachable by photons" : "") << ".</strong> "
       << (r.gather_rays > 0 ? gather_why_and_what_to_do(r) : why_and_what_to_do(r));
   }
+  s << near_cut_sentence(r);
   return s.str();
 }
 
@@ -174,13 +204,17 @@ std::string statement(const std::string& what, const Reached& r) {
 std::string sky_accuracy_statement(const study::DaylightFactorSummary::AccuracyReached& a) {
   return statement("Daylight factor (sky patches)",
                    Reached{a.target_percent, a.reached_percent, a.rounds, a.photons, a.stop_reason, a.status,
-                           a.gather_rays, a.gather_rounds, a.gather_stop_reason, a.direct_samples_per_bin});
+                           a.gather_rays, a.gather_rounds, a.gather_stop_reason, a.direct_samples_per_bin,
+                           a.near_cut_sensors, a.near_cut_gather_rays, a.near_cut_largest_percent,
+                           a.near_cut_gather_rounds, a.near_cut_stop_reason});
 }
 
 std::string sun_accuracy_statement(const study::SunAccuracyReached& a) {
   return statement("Annual sun-bin illuminance (the indirect sunlight of every sun hour, summed over the year)",
                    Reached{a.target_percent, a.reached_percent, a.rounds, a.photons, a.stop_reason, a.status,
-                           a.gather_rays, a.gather_rounds, a.gather_stop_reason}) +
+                           a.gather_rays, a.gather_rounds, a.gather_stop_reason, 0, a.near_cut_sensors,
+                           a.near_cut_gather_rays, a.near_cut_largest_percent, a.near_cut_gather_rounds,
+                           a.near_cut_stop_reason}) +
          " One hour's sun-bin value carries more: " + format_value(a.hourly_percent, Precision::DaylightFactor) +
          " % at the same percentile (reported, not targeted; the annual metrics count hours over thresholds).";
 }

@@ -77,7 +77,7 @@ std::string building_section(const study::ResultsModel& m) {
       }
       height = format_value(lo, Precision::Length) + (hi - lo > 1e-6 ? "&#8211;" + format_value(hi, Precision::Length) : "");
     }
-    const std::size_t dropped = g.dropped_outside_rooms + g.dropped_inside_solid;
+    const std::size_t dropped = g.dropped_outside_rooms + g.dropped_inside_solid + g.dropped_on_cut_surface;
     s << "<tr><td>" << esc(g.name) << "</td><td>" << study::orientation_name(g.orientation) << "</td><td class=\"n\">"
       << g.positions_m.size() << "</td><td class=\"n\">" << (spacing > 0 ? format_value(spacing, Precision::Length) : "-")
       << "</td><td class=\"n\">"
@@ -85,7 +85,7 @@ std::string building_section(const study::ResultsModel& m) {
       << "</td><td class=\"n\">" << height << "</td><td class=\"n\">" << dropped << "</td></tr>";
   }
   s << "</table><p class=\"note\">Heights are world z of the sensors (the model's floor at its own z). Sensors left "
-       "out: outside every room or inside a solid, dropped at the project's request.</p></section>";
+       "out: outside every room, inside a solid or on a surface crossing the work plane, dropped at the project's request.</p></section>";
   return s.str();
 }
 

@@ -313,11 +313,15 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   // Each round: every grid estimated from the photons so far, its DF and their variances.
   const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
                                    const std::vector<double>& scale) {
+    // A plane's sensors next to a cut read the gathered grids' map, if there is one
+    // (accuracy_policy.h); else the gather rounds estimate them once.
+    const bool near_cut_here = near_cut_gathered_in_rounds(*c.plane_of_grid, c.gather);
     RoundGridMaps maps(*c.planes, *c.plane_of_grid, c.gather, round_photons(records, false), scale,
-                       c.near_cut_sensors ? *c.near_cut_sensors : std::vector<std::size_t>{});
+                       c.near_cut_sensors && near_cut_here ? *c.near_cut_sensors : std::vector<std::size_t>{});
     chased_grid.clear();
     result.coefficients.assign(grids.size(), {});
     result.outcome.reached_percent.assign(grids.size(), 0.0);
+    result.outcome.near_cut.assign(grids.size(), NearCutReached{});
     RoundMeasurement m;
     m.grid_status.assign(grids.size(), "");
     m.met = true;
@@ -333,10 +337,13 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
       v.df_percent = std::move(parts.df_percent);
       v.direct_variance = std::move(parts.direct_variance);
       v.photon_variance = std::move(parts.photon_variance);
-      // A plane's sensors next to a cut are gathered: out of the measure (accuracy_policy.h).
-      const std::string near_cut = take_out_near_cut_rows(
-          near_cut_rows(*c.planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g), v.df_percent,
-          stderr_percent);
+      // A plane's sensors next to a cut: out of the measure (accuracy_policy.h); where this
+      // round does not gather them, their rows hold the plane's estimate until the gather rounds.
+      NearCutReached& near = result.outcome.near_cut[g];
+      near = take_out_near_cut_rows(near_cut_rows(*c.planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g),
+                                    v.df_percent, stderr_percent);
+      near.gather_rays = near.sensors > 0 && near_cut_here ? c.estimating.gather.rays_per_sensor : 0;
+      const std::string near_cut = near_cut_note(near, goal.target_percent);
       const double reached = percentile_relative_stderr_percent(v.df_percent, stderr_percent, AccuracyPercentile);
       result.outcome.reached_percent[g] = reached;
       const bool chased = grid_chased_by_photons(*c.plane_of_grid, c.gather, g);
@@ -466,7 +473,8 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
                               {"attempts", r.outcome.attempts}, {"stop_reason", r.outcome.stop_reason},
                               {"grid_status", r.outcome.grid_status},
                               {"direct_samples_per_bin", r.outcome.direct_samples_per_bin},
-                              {"gather", gather_accuracy_json(r.outcome.gather)}};
+                              {"gather", gather_accuracy_json(r.outcome.gather)},
+                              {"near_cut", near_cut_reached_json(r.outcome.near_cut)}};
     bytes.push_back(j.dump());
     out.coefficients = std::move(r.coefficients);
     out.outcome = r.outcome;
@@ -492,8 +500,11 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
     o.gather = gather_accuracy_from_json(j.at("gather"));
     if (!j.contains("direct_samples_per_bin")) return false;  // made before the direct rounds
     o.direct_samples_per_bin = j.at("direct_samples_per_bin").get<std::vector<int>>();
+    if (!j.contains("near_cut")) return false;  // made before the near-cut rows' record
+    o.near_cut = near_cut_reached_from_json(j.at("near_cut"));
     if (o.reached_percent.size() != grids.size() || o.grid_status.size() != grids.size() ||
-        o.gather.size() != grids.size() || o.direct_samples_per_bin.size() != grids.size())
+        o.gather.size() != grids.size() || o.direct_samples_per_bin.size() != grids.size() ||
+        o.near_cut.size() != grids.size())
       return false;
     out.coefficients = std::move(cached);
     out.outcome = std::move(o);
@@ -515,7 +526,8 @@ std::string accuracy_sentence(const AccuracyOutcome& o, std::size_t grid) {
                                  ? " (gathered: not reachable by photons; simulation.gather_rays lowers it)"
                                  : "";
   return round_outcome_sentence(DfMeasure, reached, o.target_percent, status + gather_accuracy_note(o, grid),
-                                o.stop_reason, o.rounds, o.photons);
+                                o.stop_reason, o.rounds, o.photons) +
+         (grid < o.near_cut.size() ? near_cut_note(o.near_cut[grid], o.target_percent) : std::string());
 }
 
 }  // namespace dayphoton::study

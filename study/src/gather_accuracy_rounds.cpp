@@ -92,6 +92,43 @@ std::vector<double> relative_stderr_percent(const std::vector<double>& df_percen
   return relative;
 }
 
+/// The rows `which` of one grid's direct part into `out` (copy_direct_rows for rows that need not
+/// be contiguous): `whole` the whole grid's, or nothing (zeros).
+void copy_direct_rows_at(const engine::DaylightCoefficients& whole, const std::vector<std::size_t>& which,
+                         std::size_t sources, engine::DaylightCoefficients& out) {
+  out.sensors = which.size();
+  out.sources = sources;
+  if (whole.direct.empty()) {
+    copy_direct_rows(whole, 0, which.size(), sources, out);
+    return;
+  }
+  const engine::DirectOnSkies& skies = whole.direct_on_skies;
+  out.direct_on_skies.skies = skies.skies;
+  for (const std::size_t i : which) {
+    out.direct.insert(out.direct.end(), whole.direct.begin() + std::ptrdiff_t(i * sources),
+                      whole.direct.begin() + std::ptrdiff_t((i + 1) * sources));
+    out.direct_variance.insert(out.direct_variance.end(), whole.direct_variance.begin() + std::ptrdiff_t(i * sources),
+                               whole.direct_variance.begin() + std::ptrdiff_t((i + 1) * sources));
+    const std::size_t k = skies.skies;
+    if (skies.irradiance.size() >= (i + 1) * k)
+      out.direct_on_skies.irradiance.insert(out.direct_on_skies.irradiance.end(),
+                                            skies.irradiance.begin() + std::ptrdiff_t(i * k),
+                                            skies.irradiance.begin() + std::ptrdiff_t((i + 1) * k));
+    if (skies.variance.size() >= (i + 1) * k)
+      out.direct_on_skies.variance.insert(out.direct_on_skies.variance.end(),
+                                          skies.variance.begin() + std::ptrdiff_t(i * k),
+                                          skies.variance.begin() + std::ptrdiff_t((i + 1) * k));
+  }
+}
+
+/// The largest of `relative` over the sensors with light (0 without any).
+double largest_of(const std::vector<double>& relative, const std::vector<double>& df_percent) {
+  double largest = 0;
+  for (std::size_t i = 0; i < relative.size(); ++i)
+    if (df_percent[i] > 0) largest = std::max(largest, relative[i]);
+  return largest;
+}
+
 /// Grid g, which the time budget leaves no gather round on the photons traced since its last
 /// gather estimate: that estimate stands, with its accuracy, rays and rounds (the photon rounds'
 /// estimate at the project's rays if it has none), and its stop is the time budget unless it
@@ -248,19 +285,30 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
   // The photons of the last round, merged once, for any grid that needs more rays.
   LazyValue<engine::GridPhotons> maps;
   auto build = [&] { return engine::GridPhotons::for_gather(engine::scaled_merged_photons(records, c.relabel_sources).surface, n); };
-  auto estimate = [&](std::size_t g, int rays, const std::string& name) {
+  // Grid g's gather at `rays`: of every sensor, or (rows given) of those rows alone, each row
+  // bit for bit that sensor's gather in the whole grid (seeded by its index).
+  auto estimate = [&](std::size_t g, int rays, const std::string& name, const std::vector<std::size_t>* rows = nullptr) {
     const SensorGrid& grid = grids[g];
     engine::CoefficientOptions options = c.estimating;
     options.gather.rays_per_sensor = rays;
     const std::vector<std::string> blocks = work.estimate(
-        grid.points.size(),
+        rows ? rows->size() : grid.points.size(),
         [&](std::size_t begin, std::size_t end) {
           const engine::GridPhotons& gp = maps.get(build);
           engine::DaylightCoefficients dc;
-          copy_direct_rows(direct[g], begin, end, n, dc);  // the sun bins' gathered grids: none, zeros
-          // The gather of photon_coefficients, with the part more rays do not reduce.
-          engine::GatheredCoefficients gathered = engine::gather_photon_coefficients(
-              *c.scene, *c.materials, *c.sources, gp.all(), grid.points, options.gather, &gp.groups(), {begin, end});
+          // The gather of photon_coefficients, with the part more rays do not reduce; the sun
+          // bins' gathered grids have no direct part (zeros).
+          engine::GatheredCoefficients gathered;
+          if (rows) {
+            const std::vector<std::size_t> which(rows->begin() + std::ptrdiff_t(begin), rows->begin() + std::ptrdiff_t(end));
+            copy_direct_rows_at(direct[g], which, n, dc);
+            gathered = engine::gather_photon_coefficients_at(*c.scene, *c.materials, *c.sources, gp.all(), grid.points,
+                                                             options.gather, &gp.groups(), which);
+          } else {
+            copy_direct_rows(direct[g], begin, end, n, dc);
+            gathered = engine::gather_photon_coefficients(*c.scene, *c.materials, *c.sources, gp.all(), grid.points,
+                                                          options.gather, &gp.groups(), {begin, end});
+          }
           dc.caustic = std::move(gathered.caustic);
           dc.global = std::move(gathered.global);
           dc.photon_variance = std::move(gathered.variance);
@@ -436,6 +484,81 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     result.gathered[g] = GatheredEstimate{};
     if (a.rays > first_rays) result.gathered[g] = GatheredEstimate{now.dc, outcome.reached_percent[g], a};
     result.coefficients[g] = std::move(now.dc);
+  }
+  // A plane's sensors next to a cut (accuracy_policy.h), which the photon rounds' measure leaves
+  // out: gathered here from the last round's photons at the project's rays where the rounds did
+  // not gather them (whatever the time budget: their rows hold the plane's estimate until then;
+  // near.gather_rays 0), then the same gather rounds over those rows alone, on the largest of
+  // their errors.
+  if (outcome.near_cut.size() != grids.size()) outcome.near_cut.resize(grids.size());
+  result.near_cut.assign(grids.size(), NearCutEstimate{});
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    NearCutReached& near = outcome.near_cut[g];
+    if (near.sensors == 0) continue;
+    near.rounds = 0;
+    near.stop_reason = "target met";
+    const bool gathered_in_rounds = near.gather_rays > 0;
+    if (gathered_in_rounds && near.largest_percent <= goal.target_percent) continue;
+    const std::vector<std::size_t> rows = near_cut_rows(*c.planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g);
+    if (rows.empty()) continue;
+    const std::string who = "grid " + grids[g].name + "'s " + std::to_string(rows.size()) + " sensors next to a cut";
+    int rays = first_rays;
+    Clock::time_point t = Clock::now();
+    GridEstimate now = estimate(g, rays, c.round_name + " near-cut gather, " + who, &rows);
+    double seconds_per_ray = seconds_since(t) / rays;
+    for (;;) {
+      const std::vector<double> relative =
+          relative_stderr_percent(now.df_percent, now.direct_variance, now.gather_variance);
+      near.largest_percent = largest_of(relative, now.df_percent);
+      if (near.largest_percent <= goal.target_percent) {
+        near.stop_reason = "target met";
+        break;
+      }
+      // Over every one of them (the 100th percentile): their largest is what the verdict states.
+      const GatherRayPlan plan = next_gather_rays(now.df_percent, now.direct_variance, now.gather_variance,
+                                                  now.fixed_variance, rays, AccuracyRoundAim * goal.target_percent, 100.0);
+      if (near.rounds >= GatherMaxRounds) {
+        near.stop_reason = "round limit";
+        break;
+      }
+      if (rays >= GatherMaxRays) {
+        near.stop_reason = "gather ray limit";
+        break;
+      }
+      if (plan.rays <= rays) {
+        near.stop_reason = plan.sensors_photon_limited > 0 ? "gather photon part" : "direct component";
+        break;
+      }
+      if (goal.max_seconds > 0) {
+        const double spent = work.agreed(elapsed_s + seconds_since(start));
+        if (spent + work.agreed(seconds_per_ray * plan.rays) > goal.max_seconds) {
+          near.stop_reason = "time budget";
+          break;
+        }
+      }
+      t = Clock::now();
+      now = estimate(g, plan.rays, c.round_name + " gather round " + std::to_string(near.rounds + 1) + ", " + who, &rows);
+      seconds_per_ray = seconds_since(t) / plan.rays;
+      rays = plan.rays;
+      ++near.rounds;
+      log(c.round_name + " gather round " + std::to_string(near.rounds) + ", " + who + ": " + std::to_string(rays) +
+          " gather rays per sensor; largest relative standard error " +
+          number(largest_of(relative_stderr_percent(now.df_percent, now.direct_variance, now.gather_variance),
+                            now.df_percent)) +
+          " % (target " + number(goal.target_percent) + " %)");
+    }
+    near.gather_rays = rays;
+    // The grid's rows replaced where the grid's coefficients are held here (the sky's rounds;
+    // the sun's splice result.near_cut into their own).
+    engine::DaylightCoefficients& whole = result.coefficients[g];
+    if (whole.sensors == grids[g].points.size() && whole.sources == n)
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        for (std::size_t p = 0; p < n; ++p) {
+          whole.caustic[rows[r] * n + p] = now.dc.caustic[r * n + p];
+          whole.global[rows[r] * n + p] = now.dc.global[r * n + p];
+          whole.photon_variance[rows[r] * n + p] = now.dc.photon_variance[r * n + p];
+        }
+    result.near_cut[g] = NearCutEstimate{rows, std::move(now.dc)};
   }
   settle_case_stop(outcome, photon_stop);
   if (request.grids.empty()) request.scale.clear();

@@ -80,6 +80,19 @@ json accuracy_json(const Accuracy& a) {
             {"photons", a.photons}, {"stop_reason", a.stop_reason}, {"status", a.status}};
   // A grid estimated by final gather: its gather rays and rounds.
   if (a.gather_rays > 0) j["gather"] = {{"rays", a.gather_rays}, {"rounds", a.gather_rounds}, {"stop_reason", a.gather_stop_reason}};
+  // A plane's sensors next to a cut, out of the measure: what they reached.
+  if (a.near_cut_sensors > 0)
+    j["near_cut"] = {{"sensors", a.near_cut_sensors},
+                     {"gather_rays", a.near_cut_gather_rays},
+                     {"rounds", a.near_cut_gather_rounds},
+                     {"stop_reason", a.near_cut_stop_reason},
+                     {"largest_relative_stderr_percent", a.near_cut_largest_percent}};
+  return j;
+}
+
+json dropped_sensors_json(const GridResult& g) {
+  json j = {{"outside_rooms", g.dropped_outside_rooms}, {"inside_solid", g.dropped_inside_solid}};
+  if (g.dropped_on_cut_surface > 0) j["on_cut_surface"] = g.dropped_on_cut_surface;
   return j;
 }
 
@@ -113,7 +126,7 @@ json grid_json(const GridResult& g) {
             {"sensors", sensors},
             {"outline", polygon(g.outline)},
             {"openings_drawn", g.openings_drawn},
-            {"dropped_sensors", {{"outside_rooms", g.dropped_outside_rooms}, {"inside_solid", g.dropped_inside_solid}}},
+            {"dropped_sensors", dropped_sensors_json(g)},
             {"quantities", quantities},
             {"illuminance_table", g.has_illuminance_table},
             {"daylight_factor", nullptr},
@@ -304,6 +317,19 @@ struct Reader {
     r.gather_rounds = count(ga, gk, "rounds");
     r.gather_stop_reason = text(ga, gk, "stop_reason");
   }
+  /// An accuracy block's "near_cut", present for a plane with sensors next to a cut only.
+  template <class Accuracy>
+  void near_cut_reached(const json& acc, const std::string& ck, Accuracy& r) const {
+    if (!acc.contains("near_cut")) return;
+    const std::string nk = ck + ".near_cut";
+    const json& nc = at(acc, ck, "near_cut");
+    r.near_cut_sensors = count(nc, nk, "sensors");
+    r.near_cut_gather_rays = integer(nc, nk, "gather_rays");
+    r.near_cut_largest_percent = number(nc, nk, "largest_relative_stderr_percent");
+    r.near_cut_gather_rounds = count(nc, nk, "rounds");
+    r.near_cut_stop_reason = text(nc, nk, "stop_reason");
+    if (r.near_cut_sensors < 1) fail(name(nk, "sensors"), "is not at least 1");
+  }
   const json& array(const json& j, const std::string& parent, const char* key) const {
     const json& v = at(j, parent, key);
     if (!v.is_array()) fail(name(parent, key), "is not an array");
@@ -423,6 +449,8 @@ struct Reader {
     const json& dropped = at(j, at_grid, "dropped_sensors");
     g.dropped_outside_rooms = count(dropped, at_grid + ".dropped_sensors", "outside_rooms");
     g.dropped_inside_solid = count(dropped, at_grid + ".dropped_sensors", "inside_solid");
+    if (dropped.is_object() && dropped.contains("on_cut_surface"))
+      g.dropped_on_cut_surface = count(dropped, at_grid + ".dropped_sensors", "on_cut_surface");
     const std::string qk = at_grid + ".quantities";
     for (const json& q : array(j, at_grid, "quantities")) {
       SensorQuantity s;
@@ -464,6 +492,7 @@ struct Reader {
             r.direct_samples_per_bin = integer(acc, ck, "direct_samples_per_bin");
             if (r.direct_samples_per_bin < 1) fail(name(ck, "direct_samples_per_bin"), "is not at least 1");
             gather_reached(acc, ck, r);
+            near_cut_reached(acc, ck, r);
           });
       g.daylight_factor = d;
     }
@@ -471,6 +500,7 @@ struct Reader {
         j, at_grid, "sun_accuracy", [this](const json& sa, const std::string& sak, SunAccuracyReached& r) {
           r.hourly_percent = number(sa, sak, "hourly_percent");
           gather_reached(sa, sak, r);
+          near_cut_reached(sa, sak, r);
         });
     const json& an = at(j, at_grid, "annual");
     if (!an.is_null()) {
@@ -620,13 +650,19 @@ bool DaylightFactorSummary::AccuracyReached::operator==(const AccuracyReached& o
   return target_percent == o.target_percent && reached_percent == o.reached_percent && rounds == o.rounds &&
          photons == o.photons && stop_reason == o.stop_reason && status == o.status &&
          gather_rays == o.gather_rays && gather_rounds == o.gather_rounds &&
-         gather_stop_reason == o.gather_stop_reason && direct_samples_per_bin == o.direct_samples_per_bin;
+         gather_stop_reason == o.gather_stop_reason && direct_samples_per_bin == o.direct_samples_per_bin &&
+         near_cut_sensors == o.near_cut_sensors && near_cut_gather_rays == o.near_cut_gather_rays &&
+         near_cut_largest_percent == o.near_cut_largest_percent && near_cut_gather_rounds == o.near_cut_gather_rounds &&
+         near_cut_stop_reason == o.near_cut_stop_reason;
 }
 bool SunAccuracyReached::operator==(const SunAccuracyReached& o) const {
   return target_percent == o.target_percent && reached_percent == o.reached_percent &&
          hourly_percent == o.hourly_percent && rounds == o.rounds && photons == o.photons &&
          stop_reason == o.stop_reason && status == o.status && gather_rays == o.gather_rays &&
-         gather_rounds == o.gather_rounds && gather_stop_reason == o.gather_stop_reason;
+         gather_rounds == o.gather_rounds && gather_stop_reason == o.gather_stop_reason &&
+         near_cut_sensors == o.near_cut_sensors && near_cut_gather_rays == o.near_cut_gather_rays &&
+         near_cut_largest_percent == o.near_cut_largest_percent && near_cut_gather_rounds == o.near_cut_gather_rounds &&
+         near_cut_stop_reason == o.near_cut_stop_reason;
 }
 bool OccupancySummary::operator==(const OccupancySummary& o) const {
   return kind == o.kind && start_h == o.start_h && end_h == o.end_h && description == o.description &&
@@ -693,7 +729,7 @@ bool GridResult::operator==(const GridResult& o) const {
   return name == o.name && folder == o.folder && positions_m == o.positions_m && normals == o.normals &&
          orientation == o.orientation && plan == o.plan && lattice == o.lattice && outline == o.outline &&
          openings_drawn == o.openings_drawn && dropped_outside_rooms == o.dropped_outside_rooms &&
-         dropped_inside_solid == o.dropped_inside_solid && quantities == o.quantities &&
+         dropped_inside_solid == o.dropped_inside_solid && dropped_on_cut_surface == o.dropped_on_cut_surface && quantities == o.quantities &&
          daylight_factor == o.daylight_factor && annual == o.annual && sun_accuracy == o.sun_accuracy && points_in_time == o.points_in_time &&
          has_illuminance_table == o.has_illuminance_table && spacing_m == o.spacing_m && verdicts == o.verdicts;
 }

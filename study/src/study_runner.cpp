@@ -190,10 +190,13 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     nlohmann::json gj = {{"name", grid.name}, {"sensors", grid.points.size()}, {"folder", folder}};
     ctx.results->grids.push_back(results_grid(grid, relative_folder(report.output_dir, folder), *ctx.results,
                                               placement.sets[g].dropped ? placement.sets[g].outside : 0,
-                                              placement.sets[g].dropped ? placement.sets[g].inside_solid : 0));
-    if (placement.sets[g].dropped)
+                                              placement.sets[g].dropped ? placement.sets[g].inside_solid : 0,
+                                              placement.sets[g].dropped ? placement.sets[g].on_cut : 0));
+    if (placement.sets[g].dropped) {
       gj["dropped_sensors"] = {{"outside_rooms", placement.sets[g].outside},
                                {"inside_solid", placement.sets[g].inside_solid}};
+      if (placement.sets[g].on_cut > 0) gj["dropped_sensors"]["on_cut_surface"] = placement.sets[g].on_cut;
+    }
     if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
       c.write_file(join_path(folder, "coefficients_sky.mtx"), matrix_format);
       ctx.outputs.record(join_path(folder, "coefficients_sky.mtx"));
@@ -232,6 +235,13 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
           reached.gather_stop_reason = accuracy->gather[g].stop_reason;
         }
         reached.direct_samples_per_bin = accuracy->direct_samples_per_bin.at(g);
+        if (g < accuracy->near_cut.size() && accuracy->near_cut[g].sensors > 0) {
+          reached.near_cut_sensors = accuracy->near_cut[g].sensors;
+          reached.near_cut_gather_rays = accuracy->near_cut[g].gather_rays;
+          reached.near_cut_largest_percent = accuracy->near_cut[g].largest_percent;
+          reached.near_cut_gather_rounds = accuracy->near_cut[g].rounds;
+          reached.near_cut_stop_reason = accuracy->near_cut[g].stop_reason;
+        }
         ctx.results->grids.back().daylight_factor->accuracy = reached;
       }
     }
@@ -249,6 +259,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       gj["accuracy"]["gather"] = gather_accuracy_json(accuracy->gather[g]);
       gj["accuracy"]["gather"].erase("gathered");
     }
+    if (accuracy && g < accuracy->near_cut.size() && accuracy->near_cut[g].sensors > 0)
+      gj["accuracy"]["near_cut"] = near_cut_reached_json(accuracy->near_cut[g], accuracy->target_percent);
     grids_json.push_back(gj);
     // Of the sky coefficients' parts only the matrix and the variances are needed from here on.
     sky_variances.push_back(sky_variance_of(*coefficients[g]));
@@ -301,6 +313,14 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
           r.gather_rounds = sun_accuracy->gather[g].rounds;
           r.gather_stop_reason = sun_accuracy->gather[g].stop_reason;
         }
+        if (g < sun_accuracy->near_cut.size() && sun_accuracy->near_cut[g].sensors > 0) {
+          SunAccuracyReached& r = *ctx.results->grids[g].sun_accuracy;
+          r.near_cut_sensors = sun_accuracy->near_cut[g].sensors;
+          r.near_cut_gather_rays = sun_accuracy->near_cut[g].gather_rays;
+          r.near_cut_largest_percent = sun_accuracy->near_cut[g].largest_percent;
+          r.near_cut_gather_rounds = sun_accuracy->near_cut[g].rounds;
+          r.near_cut_stop_reason = sun_accuracy->near_cut[g].stop_reason;
+        }
         grids_json[g]["accuracy"]["sun"] = {
             {"target_relative_stderr_percent", sun_accuracy->target_percent},
             {"reached_relative_stderr_percent", sun_accuracy->reached_percent[g]},
@@ -316,6 +336,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
           grids_json[g]["accuracy"]["sun"]["gather"] = gather_accuracy_json(sun_accuracy->gather[g]);
           grids_json[g]["accuracy"]["sun"]["gather"].erase("gathered");
         }
+        if (g < sun_accuracy->near_cut.size() && sun_accuracy->near_cut[g].sensors > 0)
+          grids_json[g]["accuracy"]["sun"]["near_cut"] =
+              near_cut_reached_json(sun_accuracy->near_cut[g], sun_accuracy->target_percent);
       }
     for (std::size_t g = 0; g < description.grids.size(); ++g) {
       const SensorGrid& grid = description.grids[g];

@@ -210,12 +210,16 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   // annual measure (the target's) and the hourly one (reported).
   const RoundMeasure measure = [&](std::size_t round, const std::vector<engine::SourcePhotonRecord>& records,
                                    const std::vector<double>& scale) {
+    // A plane's sensors next to a cut read the gathered grids' map, if there is one
+    // (accuracy_policy.h); else the gather rounds estimate them once.
+    const bool near_cut_here = near_cut_gathered_in_rounds(*c.plane_of_grid, c.gather);
     RoundGridMaps maps(planes, *c.plane_of_grid, c.gather, round_photons(records, true), scale,
-                       c.near_cut_sensors ? *c.near_cut_sensors : std::vector<std::size_t>{});
+                       c.near_cut_sensors && near_cut_here ? *c.near_cut_sensors : std::vector<std::size_t>{});
     result.coefficients.assign(grids.size(), {});
     result.variance.assign(grids.size(), {});
     o.reached_percent.assign(grids.size(), 0.0);
     o.hourly_percent.assign(grids.size(), 0.0);
+    o.near_cut.assign(grids.size(), NearCutReached{});
     RoundMeasurement m;
     m.grid_status.assign(grids.size(), "");
     m.met = true;
@@ -239,9 +243,13 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
         for (std::size_t k = 0; k < n; ++k) x += v.photon_variance[s * n + k];
         stderr_value[s] = std::sqrt(std::max(0.0, x));
       }
-      // A plane's sensors next to a cut are gathered: out of the measure (accuracy_policy.h).
-      const std::string near_cut = take_out_near_cut_rows(
-          near_cut_rows(planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g), v.df_percent, stderr_value);
+      // A plane's sensors next to a cut: out of the measure (accuracy_policy.h); where this
+      // round does not gather them, their rows hold the plane's estimate until the gather rounds.
+      NearCutReached& near = o.near_cut[g];
+      near = take_out_near_cut_rows(near_cut_rows(planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g),
+                                    v.df_percent, stderr_value);
+      near.gather_rays = near.sensors > 0 && near_cut_here ? estimating.gather.rays_per_sensor : 0;
+      const std::string near_cut = near_cut_note(near, goal.target_percent);
       o.reached_percent[g] = percentile_relative_stderr_percent(v.df_percent, stderr_value, AccuracyPercentile);
       o.hourly_percent[g] = hourly_percent(g, v.df_percent);
       m.grid_status[g] = accuracy_grid_status(chased[g], o.reached_percent[g], goal.target_percent);
@@ -269,6 +277,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
   gathered.sources = &sources;
   gathered.planes = &planes;
   gathered.plane_of_grid = c.plane_of_grid;
+  gathered.near_cut_sensors = c.near_cut_sensors;
   gathered.grids = &grids;
   gathered.gather = c.gather;
   gathered.tracing = c.tracing;
@@ -289,6 +298,7 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
     a.target_percent = goal.target_percent;
     a.reached_percent = o.reached_percent;
     a.grid_status = o.grid_status;
+    a.near_cut = o.near_cut;
     photon_stop = a.stop_reason = lo.stop_reason;
     a.rounds = lo.rounds;
     gather_result.coefficients.assign(grids.size(), {});
@@ -308,6 +318,19 @@ SunAccuracyResult run_sun_accuracy_rounds(const SunAccuracyCase& c, const Accura
       o.hourly_percent[g] =
           hourly_percent(g, sun_annual_variance(result.coefficients[g], result.variance[g], weights).df_percent);
     }
+    // A plane's sensors next to a cut, gathered by the gather rounds: their rows spliced in, as
+    // sun_bin_coefficients keeps them.
+    for (std::size_t g = 0; g < grids.size() && g < gather_result.near_cut.size(); ++g) {
+      const NearCutEstimate& e = gather_result.near_cut[g];
+      if (e.rows.empty() || result.coefficients[g].rows() != grids[g].points.size()) continue;
+      for (std::size_t r = 0; r < e.rows.size(); ++r)
+        for (std::size_t k = 0; k < n; ++k) {
+          const Vec3 total = Vec3{} + e.coefficients.caustic[r * n + k] + e.coefficients.global[r * n + k];
+          for (int ch = 0; ch < 3; ++ch) result.coefficients[g].at(e.rows[r], k, ch) = static_cast<float>(total[ch]);
+          result.variance[g][e.rows[r] * n + k] = e.coefficients.photon_variance[r * n + k];
+        }
+    }
+    o.near_cut = a.near_cut;
     o.reached_percent = a.reached_percent;
     o.grid_status = a.grid_status;
     o.gather = a.gather;
@@ -337,7 +360,8 @@ std::string sun_accuracy_sentence(const SunAccuracyOutcome& o, std::size_t grid)
   return round_outcome_sentence(SunMeasure, reached, o.target_percent,
                                 " (" + status + "; hourly " + round_number(hourly) + " %)" +
                                     gather_accuracy_note(o.gather, grid),
-                                o.stop_reason, o.rounds, o.photons);
+                                o.stop_reason, o.rounds, o.photons) +
+         (grid < o.near_cut.size() ? near_cut_note(o.near_cut[grid], o.target_percent) : std::string());
 }
 
 }  // namespace dayphoton::study

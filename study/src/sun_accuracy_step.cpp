@@ -95,7 +95,8 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
                           {"hourly_percent", o.hourly_percent}, {"grid_status", o.grid_status},
                           {"rounds", o.rounds},                 {"photons", o.photons},
                           {"attempts", o.attempts},             {"stop_reason", o.stop_reason},
-                          {"gather", gather_accuracy_json(o.gather)}}
+                          {"gather", gather_accuracy_json(o.gather)},
+                          {"near_cut", near_cut_reached_json(o.near_cut)}}
         .dump();
   };
   step.compute = [&]() -> std::vector<std::string> {
@@ -137,8 +138,10 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
     o.stop_reason = j.at("stop_reason").get<std::string>();
     if (!j.contains("gather")) return false;  // made before the sun's gather rounds
     o.gather = gather_accuracy_from_json(j.at("gather"));
+    if (!j.contains("near_cut")) return false;  // made before the near-cut rows' record
+    o.near_cut = near_cut_reached_from_json(j.at("near_cut"));
     if (o.reached_percent.size() != grids.size() || o.hourly_percent.size() != grids.size() ||
-        o.grid_status.size() != grids.size() || o.gather.size() != grids.size())
+        o.grid_status.size() != grids.size() || o.gather.size() != grids.size() || o.near_cut.size() != grids.size())
       return false;
     outcome = std::move(o);
     return true;

@@ -154,5 +154,23 @@ TEST(NearCutGather, SensorsExactlyAtTheDistanceAreOutOnEitherSide) {
   EXPECT_EQ(sensors_near_cuts(plane, {at(2.501), at(3.499)}), (std::vector<std::size_t>{0, 1}));
 }
 
+// A sensor within OnCut_m of an opaque cut lies on it (study/placement_check.h refuses it):
+// on the column's west face and at its corner; 2 mm off the face it does not. A glass pane
+// crossing the plane at x = 3 counts only for the cuts of every surface, not the opaque ones.
+TEST(NearCutGather, SensorsOnAnOpaqueCutAreOnIt) {
+  SceneDescription d = column_room();
+  const int glass = test::add_material(d, "pane", MaterialType::Glass, 0.0);
+  test::add_surface(d, "pane", glass, {{3, 0.5, 0}, {3, 2.5, 0}, {3, 2.5, 2.5}, {3, 0.5, 2.5}});
+  const Scene scene = Scene::build(d);
+  ReceiverPlane plane(0.8, true, {{0, 0}, {4, 0}, {4, 3}, {0, 3}});
+  auto at = [](double x, double y) { return SensorPoint{{x, y, 0.8}, {0, 0, 1}}; };
+  const std::vector<SensorPoint> sensors = {at(1.8, 1.5), at(1.8, 1.3), at(1.798, 1.5), at(3, 1.5), at(1, 1)};
+  plane.set_interior_cuts(interior_plane_cuts(scene, plane, true));
+  EXPECT_EQ(sensors_on_cuts(plane, sensors), (std::vector<std::size_t>{0, 1}));
+  plane.set_interior_cuts(interior_plane_cuts(scene, plane));
+  EXPECT_EQ(sensors_on_cuts(plane, sensors), (std::vector<std::size_t>{0, 1, 3}));
+  EXPECT_EQ(sensors_near_cuts(plane, sensors), (std::vector<std::size_t>{0, 1, 2, 3}));
+}
+
 }  // namespace
 }  // namespace dayphoton::engine

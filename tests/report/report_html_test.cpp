@@ -679,6 +679,52 @@ TEST(ReportHtml, AGatheredGridsPhotonPartStopNamesTheBudgetOrLimit) {
   EXPECT_EQ(limit.find("traced more photons for it"), std::string::npos) << limit;
 }
 
+TEST(ReportHtml, SensorsNextToACutStateWhatTheyReachedBesideTheVerdict) {
+  // A work plane whose 12 sensors next to a column are gathered and left out of the measure:
+  // above the target, the verdict says the target is met by the sensors it measures only and
+  // names those sensors' largest error and the key; within it, it says so.
+  const std::string dir = temp_dir("accuracy_near_cut");
+  ResultsModel m = results_model(dir);
+  using Acc = DaylightFactorSummary::AccuracyReached;
+  Acc above{1.0, 0.91, 2, 17500000, "target met", "met", 0, 0, "", 256};
+  above.near_cut_sensors = 12;
+  above.near_cut_gather_rays = 1024;
+  above.near_cut_largest_percent = 1.26;
+  above.near_cut_stop_reason = "gather photon part";
+  m.cases[0].grids[0].daylight_factor->accuracy = above;
+  Acc within = above;
+  within.near_cut_largest_percent = 0.99;
+  within.near_cut_gather_rays = 1936;
+  within.near_cut_gather_rounds = 1;
+  within.near_cut_stop_reason = "target met";
+  m.cases[1].grids[0].daylight_factor->accuracy = within;
+  SunAccuracyReached sun{1.0, 0.75, 9.7, 3, 11100000, "target met", "met", 0, 0, ""};
+  sun.near_cut_sensors = 9;
+  sun.near_cut_gather_rays = 1024;
+  sun.near_cut_largest_percent = 1.22;
+  sun.near_cut_stop_reason = "time budget";
+  m.cases[0].grids[0].sun_accuracy = sun;
+  write_results_model(m, dir);
+  const std::string part = accuracy_statements(report_html(dir));
+  const std::string plane = accuracy_item(part, "data-part=\"sky\" data-case=\"base\" data-grid=\"north_wing\"");
+  EXPECT_NE(plane.find("Target met by the sensors it measures. The 12 sensors next to a column or partition, "
+                       "estimated by final gather at 1024 rays per sensor and left out of this measure, reach up to "
+                       "1.3 %: <strong>above the target</strong> (their gather rounds stopped with \"gather photon "
+                       "part\"; more <code>simulation.gather_rays</code> or photons lower it)."),
+            std::string::npos)
+      << plane;
+  const std::string ok = accuracy_item(part, "data-part=\"sky\" data-case=\"tinted\" data-grid=\"north_wing\"");
+  EXPECT_NE(ok.find("Target met. The 12 sensors next to a column or partition, estimated by final gather at 1936 rays "
+                    "per sensor after 1 gather round and left out of this measure, reach up to 0.99 %, within the "
+                    "target."),
+            std::string::npos)
+      << ok;
+  const std::string s = accuracy_item(part, "data-part=\"sun\" data-case=\"base\" data-grid=\"north_wing\"");
+  EXPECT_NE(s.find("Target met by the sensors it measures. The 9 sensors next to a column or partition"),
+            std::string::npos)
+      << s;
+}
+
 TEST(ReportHtml, AGatheredGridsSunBinsStateTheirGatherRounds) {
   // A grid estimated by final gather in the sun bins' rounds: its sun sentence gives the gather
   // rays and rounds on the annual measure and, above the target, its own gather stop (the

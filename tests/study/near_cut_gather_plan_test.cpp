@@ -118,10 +118,32 @@ TEST(NearCutGatherPlan, TheRoundsMeasureLeavesTheGatheredRowsOut) {
   for (std::size_t i : rows) se[i] = 0.1;
   df[rows[1]] = 1.0;  // 10 %
   std::vector<double> measured = df;
-  EXPECT_EQ(take_out_near_cut_rows(rows, measured, se), "; 4 sensors next to a cut gathered, largest 10 %");
+  NearCutReached reached = take_out_near_cut_rows(rows, measured, se);
+  EXPECT_EQ(reached.sensors, 4u);
+  EXPECT_NEAR(reached.largest_percent, 10.0, 1e-12);
   for (std::size_t i : rows) EXPECT_EQ(measured[i], 0.0);
   EXPECT_NEAR(percentile_relative_stderr_percent(measured, se, AccuracyPercentile), 1.0, 1e-12);
-  EXPECT_EQ(take_out_near_cut_rows({}, measured, se), "");
+  // The verdict states them apart: during the photon rounds (which do not gather them) their
+  // count; after their gather rounds the largest error, the rays they reached and, above the
+  // target, the gather stop.
+  EXPECT_EQ(near_cut_note(reached, 1.0), "; 4 sensors next to a cut, gathered after the photon rounds");
+  NearCutReached in_round = reached;  // a round that gathers them (a gathered grid's map)
+  in_round.gather_rays = 1024;
+  EXPECT_EQ(near_cut_note(in_round, 1.0), "; 4 sensors next to a cut gathered, largest 10 %");
+  // A round gathers them only where a gathered grid builds the gather map anyway.
+  EXPECT_FALSE(near_cut_gathered_in_rounds({0}, true));
+  EXPECT_FALSE(near_cut_gathered_in_rounds({0, -1}, false));  // the surface estimate: no gather map
+  EXPECT_TRUE(near_cut_gathered_in_rounds({0, -1}, true));
+  reached.gather_rays = 4096;
+  reached.rounds = 2;
+  reached.stop_reason = "gather photon part";
+  EXPECT_EQ(near_cut_note(reached, 1.0), "; 4 sensors next to a cut gathered, largest 10 % at 4096 gather rays (2 "
+                                         "gather round(s)) > target 1 %: gather photon part");
+  reached.rounds = 0;
+  reached.stop_reason = "target met";
+  EXPECT_EQ(near_cut_note(reached, 10.0), "; 4 sensors next to a cut gathered, largest 10 %");
+  EXPECT_EQ(take_out_near_cut_rows({}, measured, se).sensors, 0u);
+  EXPECT_EQ(near_cut_note(NearCutReached{}, 1.0), "");
 }
 
 }  // namespace

@@ -85,6 +85,61 @@ sensors:
   EXPECT_EQ(o.check.dropped(), 2u);
 }
 
+// Sensors on a column's faces (engine::OnCut_m): the placement rays see the room from there,
+// but half of what such a sensor sees is the column's inside, so it is refused as one inside
+// the column is. A 1 m column at x, y 2.5-3.5 x 3.5-4.5 and a grid every 0.5 m from 0.5 m: the
+// sensors of columns 4-6 (x 2.5, 3, 3.5) and rows 6-8 (y 3.5, 4, 4.5) lie on its faces (8,
+// the first, index 4 + 6 x 11 = 70, at its corner (2.5, 3.5)), the one at (3, 4) inside it.
+std::string column_with_face_sensors(const std::string& grid_extra) {
+  return Head + Office + R"(  boxes:
+    - {name: column, origin: [2.5, 3.5, 0], size: [1, 1, 3], material: walls}
+sensors:
+  grids:
+    - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5)" + grid_extra + "}\n";
+}
+
+TEST(PlacementCheck, SensorsOnAColumnsFaceAreRefusedAsInsideOnes) {
+  const Outcome o = check_text(column_with_face_sensors(""));
+  ASSERT_EQ(o.errors.size(), 1u);
+  EXPECT_EQ(o.errors[0].rfind("17:7: sensor set 'workplane': 9 of 165 sensors lie inside a solid (1) or on a surface "
+                              "that crosses the work plane (8) (sensor 70 at (2.5, 3.5, 0.8) m lies on a column's or a "
+                              "partition's face;",
+                              0),
+            0u)
+      << o.errors[0];
+  EXPECT_NE(o.errors[0].find("no illuminance of its own"), std::string::npos) << o.errors[0];
+  EXPECT_NE(o.errors[0].find("drop_occluded: true"), std::string::npos) << o.errors[0];
+
+  // With drop_occluded they are dropped and counted, and a located warning names them.
+  const Outcome d = check_text(column_with_face_sensors(", drop_occluded: true"));
+  ASSERT_TRUE(d.errors.empty()) << d.errors[0];
+  ASSERT_EQ(d.check.sets.size(), 1u);
+  EXPECT_TRUE(d.check.sets[0].dropped);
+  EXPECT_EQ(d.check.sets[0].inside_solid, 1u);
+  EXPECT_EQ(d.check.sets[0].on_cut, 8u);
+  EXPECT_EQ(d.check.dropped(), 9u);
+  EXPECT_EQ(d.grids[0].points.size(), 156u);
+  for (const SensorPoint& p : d.grids[0].points)
+    EXPECT_FALSE(p.position.x >= 2.5 && p.position.x <= 3.5 && p.position.y >= 3.5 && p.position.y <= 4.5);
+  ASSERT_EQ(d.check.warnings.size(), 1u);
+  EXPECT_EQ(d.check.warnings[0].location.line, 17);
+  EXPECT_NE(d.check.warnings[0].message.find("sensor 70 at (2.5, 3.5, 0.8) m lies on a column's or a partition's face"),
+            std::string::npos)
+      << d.check.warnings[0].message;
+  EXPECT_NE(d.check.warnings[0].message.find("dropped (drop_occluded)"), std::string::npos);
+
+  // 2 mm inside the faces (the column 4 mm narrower) they are sensors in the room next to a cut.
+  const Outcome off = check_text(Head + Office + R"(  boxes:
+    - {name: column, origin: [2.502, 3.502, 0], size: [0.996, 0.996, 3], material: walls}
+sensors:
+  grids:
+    - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5, drop_occluded: true}
+)");
+  ASSERT_TRUE(off.errors.empty()) << off.errors[0];
+  EXPECT_EQ(off.check.sets[0].on_cut, 0u);
+  EXPECT_EQ(off.check.sets[0].inside_solid, 1u);
+}
+
 TEST(PlacementCheck, SensorsOutsideEveryRoomAreALocatedError) {
   const Outcome o = check_text(Head + Office + R"(sensors:
   points:

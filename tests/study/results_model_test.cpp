@@ -88,6 +88,15 @@ ResultsModel full_model() {
       DaylightFactorSummary::AccuracyReached{2.0, 2.4, 3, 4100000, "photon budget", "above target", 4096, 2,
                                              "gather ray limit", 64};
   g.sun_accuracy = SunAccuracyReached{2.0, 1.75, 9.5, 2, 3200000, "target met", "met", 1024, 1, "target met"};
+  g.dropped_on_cut_surface = 8;
+  g.daylight_factor->accuracy->near_cut_sensors = 12;
+  g.daylight_factor->accuracy->near_cut_gather_rays = 1024;
+  g.daylight_factor->accuracy->near_cut_largest_percent = 1.25;
+  g.daylight_factor->accuracy->near_cut_gather_rounds = 2;
+  g.daylight_factor->accuracy->near_cut_stop_reason = "gather ray limit";
+  g.sun_accuracy->near_cut_sensors = 9;
+  g.sun_accuracy->near_cut_gather_rays = 1024;
+  g.sun_accuracy->near_cut_largest_percent = 1.5;
   AnnualSummary a;
   a.sensors = 3;
   a.time_steps = 8760;
@@ -201,6 +210,18 @@ TEST(ResultsModel, RoundTripsEveryField) {
   EXPECT_FALSE(changed == m);
   changed = back;
   changed.cases[1].grids[0].sun_accuracy->status = "above target";
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].daylight_factor->accuracy->near_cut_largest_percent = 1.5;
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].sun_accuracy->near_cut_sensors = 8;
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].daylight_factor->accuracy->near_cut_stop_reason = "target met";
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].dropped_on_cut_surface = 0;
   EXPECT_FALSE(changed == m);
   changed = back;
   changed.not_assessed.pop_back();

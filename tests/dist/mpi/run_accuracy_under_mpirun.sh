@@ -15,7 +15,9 @@
 #  - a work plane with sensors next to a column (engine/plane_cuts.h, "Sensors next to a cut"):
 #    the sun bins' room with a 0.4 m column at x 1.55-1.95, y 2.05-2.45, whose 4 nearest sensors
 #    (0.07 m from its corners) are gathered inside the plane's grid in the sky's and the sun's
-#    rounds (by sensor blocks over the ranks, their rays seeded by their index in the grid).
+#    rounds (by sensor blocks over the ranks, their rays seeded by their index in the grid), at
+#    4 gather rays, so that after the photon rounds their own gather rounds raise the rays (to 64
+#    in the sky's, 64 then 1024 in the sun's: sensor blocks of those rows over the ranks).
 # Every rank runs the rounds: the pilot's doublings and round 2's extension traced in attempt
 # ranges over the ranks, the estimates by sensor blocks (80 sensors, blocks of 16). Every file
 # of the results folders must be byte-identical to the one-process run's, apart from run.log
@@ -78,10 +80,15 @@ check gathered_sun "$source_dir/tests/cli/cases/gathered_sun_accuracy.yaml" gath
 
 sun_room "$tmp/column" "$source_dir" 3 || exit 1
 sed -i 's/^      windows: \[{name: w, .*$/&\n  boxes:\n    - {name: column, origin: [1.55, 2.05, 0], size: [0.4, 0.4, 3], material: walls}/' "$tmp/column/project.yaml"
+sed -i 's/^  accuracy: {target_df_relative_stderr_percent: 3}$/&\n  gather_rays: 4/' "$tmp/column/project.yaml"
 grep -q '^    - {name: column, ' "$tmp/column/project.yaml" || { echo "column: the box was not added"; exit 1; }
+grep -q '^  gather_rays: 4$' "$tmp/column/project.yaml" || { echo "column: the gather rays were not set"; exit 1; }
 near_cut_rounds() {
-  grep -q '^accuracy round 1 (pilot): .*; 4 sensors next to a cut gathered, largest ' "$1/run.log" &&
-    grep -q '^sun accuracy round 1 (pilot): .*; 4 sensors next to a cut gathered, largest ' "$1/run.log"
+  grep -q '^accuracy round 1 (pilot): .*; 4 sensors next to a cut, gathered after the photon rounds' "$1/run.log" &&
+    grep -q '^sun accuracy round 1 (pilot): .*; 4 sensors next to a cut, gathered after the photon rounds' "$1/run.log" &&
+    grep -q "^accuracy workplane: .*; 4 sensors next to a cut gathered, largest .* at 64 gather rays" "$1/run.log" &&
+    grep -q "^accuracy gather round 1, grid workplane's 4 sensors next to a cut: " "$1/run.log" &&
+    grep -q "^sun accuracy gather round 2, grid workplane's 4 sensors next to a cut: " "$1/run.log"
 }
 check near_cut "$tmp/column/project.yaml" near_cut_rounds
 exit $fail

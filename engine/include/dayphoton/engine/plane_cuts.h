@@ -52,8 +52,20 @@ constexpr double NearCutGather_m = 0.3;
 /// one and not its mirror image.
 constexpr double NearCutMargin_m = 1e-9;
 
+/// A sensor nearer than this to an interior cut lies on it, metres: on a column's or a
+/// partition's face, or on a thin partition itself. It has no illuminance of its own (half
+/// of what it sees is the surface's inside: a final gather there reads the column's inside,
+/// about 21 % relative standard error at a 0.4 m column's face), and `check` and `run` refuse
+/// it as one inside a solid (study/placement_check.h). A millimetre: above the rounding of a
+/// grid's and a face's coordinates and the ray offset of a room's scene (scene.h: 1e-5 of its
+/// extent), below any spacing a grid is drawn at.
+constexpr double OnCut_m = 1e-3;
+
 /// The interior cuts of `plane` by `scene`'s surfaces, in triangle order (header comment).
-std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const ReceiverPlane& plane);
+/// `opaque_only`: by the surfaces light does not pass (not glass, openings or dielectrics, as
+/// sensor_placement.h), for whether a sensor lies on one (OnCut_m): a sensor on a glass
+/// partition or under a glass paperweight sees through it.
+std::vector<PlaneSegment> interior_plane_cuts(const Scene& scene, const ReceiverPlane& plane, bool opaque_only = false);
 
 /// The distance in the plane from (x, y) to the nearest of `plane`'s interior cuts, metres;
 /// infinity without cuts.
@@ -64,5 +76,9 @@ double distance_to_interior_cut_m(const ReceiverPlane& plane, double x, double y
 /// NearCutMargin_m.
 std::vector<std::size_t> sensors_near_cuts(const ReceiverPlane& plane, const std::vector<SensorPoint>& sensors,
                                            SensorRange rows = {});
+
+/// The indices (ascending) of the sensors whose position (x, y) lies nearer than OnCut_m to
+/// one of `plane`'s interior cuts (set_interior_cuts): on the cut.
+std::vector<std::size_t> sensors_on_cuts(const ReceiverPlane& plane, const std::vector<SensorPoint>& sensors);
 
 }  // namespace dayphoton::engine

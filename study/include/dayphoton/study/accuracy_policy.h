@@ -16,10 +16,19 @@
 // A receiver plane's sensors next to a cut (engine/plane_cuts.h, "Sensors next to a cut") are
 // estimated by final gather inside their grid. The same holds for them: their error is mostly
 // the gather's rays', which photons do not lower, so the rounds' measure of the grid leaves
-// them out (the grid's percentile, the photon and shadow-ray plans are over its plane rows);
-// their gather stays at simulation.gather_rays, each row's standard error is its own gather's
-// (final_gather.h, "Variance"), and the rounds' log names their count and largest relative error
-// (near_cut_note). The gather rounds raise the rays of whole gathered grids only.
+// them out (the grid's percentile, the photon and shadow-ray plans are over its plane rows).
+// A round gathers them only where a gathered grid builds the round's gather map anyway
+// (near_cut_gathered_in_rounds); otherwise their rows hold the plane's estimate until the
+// gather rounds (gather_accuracy_rounds.h) gather them once from the last round's photons,
+// so that a room of work planes builds its gather map once, not every round and again for a
+// raise (the column room at 64 gather rays: 33.1 -> 24 CPU s). Each row's standard error is
+// its own gather's (final_gather.h "Variance"); the gather rounds raise their gather rays, over
+// the rows alone, until the largest of their relative errors meets the target or a gather limit
+// stops them; the grid's verdict states those rows apart: their count and largest relative
+// error in the rounds' last log line per grid (near_cut_note), in summary.json
+// (`grids[].accuracy.near_cut`, with "above target" and the gather stop where the largest is)
+// and in the report's accuracy statement, which then says the target is met by the sensors it
+// measures only.
 #pragma once
 
 #include <cstddef>
@@ -28,6 +37,7 @@
 
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/engine/receiver_plane.h"
+#include "dayphoton/study/gather_accuracy.h"
 
 namespace dayphoton::study {
 
@@ -43,6 +53,11 @@ std::string accuracy_grid_status(bool chased, double reached_percent, double tar
 /// did, else "not reachable by photons" (some gathered grid is above it).
 std::string met_stop_reason(const std::vector<std::string>& grid_status);
 
+/// Whether a round's measure gathers the planes' sensors next to a cut (header comment): when
+/// some grid of the case is estimated by final gather (`gather` and a grid off the planes), whose
+/// map they read.
+bool near_cut_gathered_in_rounds(const std::vector<int>& plane_of_grid, bool gather);
+
 /// How many of grid g's sensors are gathered next to a cut: near_cut_sensors (per plane,
 /// CaseLayout::near_cut_sensors; null: none) of its plane, 0 off a plane.
 std::size_t near_cut_count(const std::vector<int>& plane_of_grid, const std::vector<std::size_t>* near_cut_sensors,
@@ -57,10 +72,17 @@ std::vector<std::size_t> near_cut_rows(const std::vector<engine::ReceiverPlane>&
                                        const std::vector<SensorPoint>& points, std::size_t g);
 
 /// Takes `rows` out of the rounds' measure (their `value`, DF or annual value, set to 0: the
-/// measure's percentile counts only sensors with light) and returns the log's words on them
-/// ("; 12 sensors next to a cut gathered, largest 1.4 %", the largest relative standard error
-/// of `stderr_value`), or "" without rows.
-std::string take_out_near_cut_rows(const std::vector<std::size_t>& rows, std::vector<double>& value,
-                                   const std::vector<double>& stderr_value);
+/// measure's percentile counts only sensors with light) and returns what they reached: their
+/// count and the largest relative standard error of `stderr_value` (gather_rays left 0).
+NearCutReached take_out_near_cut_rows(const std::vector<std::size_t>& rows, std::vector<double>& value,
+                                      const std::vector<double>& stderr_value);
+
+/// The log's words on them: in a round that does not gather them (reached.stop_reason empty,
+/// gather_rays 0) "; 12 sensors next to a cut, gathered after the photon rounds", in one that
+/// does "; 12 sensors next to a cut gathered, largest 1.4 %"; after their gather rounds "; 12 sensors next to
+/// a cut gathered, largest 1.4 %", with " at 1936 gather rays (1 gather round(s))" where they
+/// raised the rays and " > target 1 %: gather ray limit" where the largest is above
+/// `target_percent`; "" without any.
+std::string near_cut_note(const NearCutReached& reached, double target_percent);
 
 }  // namespace dayphoton::study

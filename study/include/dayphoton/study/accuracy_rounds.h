@@ -192,6 +192,7 @@ struct AccuracyOutcome {
   std::vector<int> direct_samples_per_bin;
   std::vector<std::string> grid_status;  ///< per grid: accuracy_grid_status (accuracy_policy.h)
   std::vector<GatherAccuracy> gather;    ///< per grid: its gather rounds (gather_accuracy_rounds.h)
+  std::vector<NearCutReached> near_cut;  ///< per grid: its sensors next to a cut (accuracy_policy.h)
   /// Attempts per source after the pilot and at the end (of a run that traced; not cached).
   std::vector<std::uint64_t> pilot_attempts, final_attempts;
 };
@@ -239,10 +240,18 @@ struct GatheredEstimate {
   GatherAccuracy accuracy;  ///< accuracy.rays == 0: none yet
 };
 
+/// A plane's sensors next to a cut as the gather rounds estimated them (gather_accuracy_rounds.h):
+/// their rows of the grid and the estimate of those rows alone.
+struct NearCutEstimate {
+  std::vector<std::size_t> rows;             ///< ascending; empty: none
+  engine::DaylightCoefficients coefficients; ///< rows.size() sensors (its direct part the grid's rows)
+};
+
 struct AccuracyResult {
   std::vector<engine::DaylightCoefficients> coefficients;  ///< per grid
   AccuracyOutcome outcome;
   std::vector<GatheredEstimate> gathered;  ///< per grid, filled by the gather rounds (not cached)
+  std::vector<NearCutEstimate> near_cut;   ///< per grid, filled by the gather rounds (not cached)
 };
 
 /// The rounds of one case; `log` receives one line per round and the stop. The tracing (the

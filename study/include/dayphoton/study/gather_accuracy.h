@@ -18,4 +18,17 @@ struct GatherAccuracy {
   std::string stop_reason;
 };
 
+/// A receiver-plane grid's sensors next to a cut, estimated by final gather and left out of the
+/// rounds' measure (accuracy_policy.h): what they reached after the last round, which the log,
+/// summary.json (`grids[].accuracy.near_cut`) and the report state beside the grid's verdict.
+struct NearCutReached {
+  std::size_t sensors = 0;      ///< 0: none on the grid (nothing below applies)
+  int gather_rays = 0;          ///< gather rays per sensor of their final estimate
+  double largest_percent = 0;   ///< the largest relative standard error among them, %
+  std::size_t rounds = 0;       ///< their gather rounds (gather_accuracy_rounds.h; 0: none needed)
+  /// As GatherAccuracy::stop_reason: "target met", "gather photon part", "direct component",
+  /// "gather ray limit", "round limit", "time budget"; empty before the gather rounds.
+  std::string stop_reason;
+};
+
 }  // namespace dayphoton::study

@@ -20,6 +20,16 @@
 // rounds' estimate of the grid is made again once at the project's rays, for its alpha (the
 // same coefficients).
 //
+// A plane's sensors next to a cut (accuracy_policy.h), inside a grid the photons serve, which
+// the photon rounds neither gather nor measure, are gathered here once from the last round's
+// photons at the project's rays (the estimate that used to be the rounds'), and get the same
+// rounds over their rows alone (engine::gather_photon_coefficients_at; sensor blocks of those
+// rows, the gather map the gathered grids' own, built once), on the largest of their
+// relative errors (the 100th percentile: the verdict states that largest), with the same stops
+// but no raise of shadow rays and no request for photons; the rows reached replace theirs in
+// the grid's coefficients (AccuracyResult::near_cut for the sun rounds' own) and
+// AccuracyOutcome::near_cut records their rays, rounds, stop and largest error.
+//
 // Stops (GatherAccuracy::stop_reason): "target met"; "gather photon part" (every sensor
 // still above the aim is photon-limited: more photons, or a larger gather_bandwidth, would
 // lower it); "direct component" (only direct-limited sensors remain and no raise of their

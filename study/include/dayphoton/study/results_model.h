@@ -100,6 +100,15 @@ struct DaylightFactorSummary {
     /// project's direct_samples_per_bin unless the rounds raised it (up to
     /// MaxDirectSamplesPerBin, plan_policy.h), which says where a "direct rays limit" stopped.
     int direct_samples_per_bin = 0;
+    /// A receiver-plane grid's sensors next to a column or partition, estimated by final gather
+    /// and left out of the measure (docs/photon-tracing.md "Accuracy target"): how many, their
+    /// gather rays per sensor, their gather rounds and those rounds' stop (as gather_stop_reason)
+    /// and their largest relative standard error, %; 0 sensors: none.
+    std::size_t near_cut_sensors = 0;
+    int near_cut_gather_rays = 0;
+    double near_cut_largest_percent = 0;
+    std::size_t near_cut_gather_rounds = 0;
+    std::string near_cut_stop_reason{};
 
     bool operator==(const AccuracyReached& o) const;
   };
@@ -214,6 +223,13 @@ struct SunAccuracyReached {
   int gather_rays = 0;
   std::size_t gather_rounds = 0;
   std::string gather_stop_reason{};
+  /// Its sensors next to a cut, as the sky's (DaylightFactorSummary::AccuracyReached), on the
+  /// annual measure.
+  std::size_t near_cut_sensors = 0;
+  int near_cut_gather_rays = 0;
+  double near_cut_largest_percent = 0;
+  std::size_t near_cut_gather_rounds = 0;
+  std::string near_cut_stop_reason{};
 
   bool operator==(const SunAccuracyReached& o) const;
 };
@@ -228,6 +244,8 @@ struct GridResult {
   Polygon3 outline;   ///< the room floor, polygon, wall or rectangle the grid covers (may be empty)
   std::vector<int> openings_drawn;  ///< indices into the case's openings drawn on this grid's picture
   std::size_t dropped_outside_rooms = 0, dropped_inside_solid = 0;
+  /// On a surface crossing the work plane (placement_check.h; written only when some were).
+  std::size_t dropped_on_cut_surface = 0;
   std::vector<SensorQuantity> quantities;   ///< in the report's order
   std::optional<DaylightFactorSummary> daylight_factor;
   std::optional<AnnualSummary> annual;

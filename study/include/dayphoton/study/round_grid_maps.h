@@ -10,7 +10,8 @@
 // A plane with sensors next to a cut (study::CaseLayout::near_cut_sensors) reads the gather map
 // too, for those sensors' final gather (engine::GridPhotons::set_near_cut_gather): the gathered
 // grids' shared map, or, when the other grids read the surface estimate's, one of its own from a
-// copy of the surface photons.
+// copy of the surface photons. The accuracy rounds ask for it only when a gathered grid builds
+// that map anyway (accuracy_policy.h, near_cut_gathered_in_rounds).
 #pragma once
 
 #include <cstddef>

@@ -104,6 +104,7 @@ struct SunAccuracyOutcome {
   std::vector<double> hourly_percent;   ///< per grid: hourly measure at the percentile (not targeted)
   std::vector<std::string> grid_status; ///< per grid: "met", "above target"
   std::vector<GatherAccuracy> gather;    ///< per grid: its gather rounds (gather_accuracy_rounds.h)
+  std::vector<NearCutReached> near_cut;  ///< per grid: its sensors next to a cut (accuracy_policy.h)
   std::size_t rounds = 0;
   std::uint64_t photons = 0;            ///< stored photons of all sun bins
   std::uint64_t attempts = 0;
