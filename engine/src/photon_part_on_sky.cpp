@@ -8,6 +8,40 @@
 #include "dayphoton/engine/plane_cuts.h"
 
 namespace dayphoton::engine {
+namespace {
+
+/// Row r of `c`'s photon part summed with the bin radiances (`luminance`: theirs), and its
+/// variance.
+void reduce_row(const DaylightCoefficients& c, std::size_t r, const std::vector<Vec3>& bin_radiance_rgb,
+                const std::vector<double>& luminance, Vec3& irradiance, double& variance) {
+  Vec3 e{0, 0, 0};
+  double v = 0;
+  for (std::size_t p = 0; p < c.sources; ++p) {
+    const std::size_t i = r * c.sources + p;
+    e += mul(c.caustic[i] + c.global[i], bin_radiance_rgb[p]);
+    v += luminance[p] * luminance[p] * c.photon_variance[i];
+  }
+  irradiance = e;
+  variance = v;
+}
+
+std::vector<double> luminances(const std::vector<Vec3>& rgb) {
+  std::vector<double> out(rgb.size());
+  for (std::size_t p = 0; p < rgb.size(); ++p) out[p] = luminance_of(rgb[p]);
+  return out;
+}
+
+}  // namespace
+
+void set_basis_row(PhotonOnSky& on_sky, std::size_t row, const DaylightCoefficients& c, std::size_t from_row,
+                   const std::vector<Vec3>& bin_radiance_rgb) {
+  if (row >= on_sky.irradiance.size() || row >= on_sky.variance.size() || from_row >= c.sensors ||
+      bin_radiance_rgb.size() != c.sources || c.caustic.size() < (from_row + 1) * c.sources ||
+      c.global.size() < (from_row + 1) * c.sources || c.photon_variance.size() < (from_row + 1) * c.sources)
+    throw std::out_of_range("photon part on the sky: row " + std::to_string(row) + " from row " +
+                            std::to_string(from_row) + " of " + std::to_string(c.sensors));
+  reduce_row(c, from_row, bin_radiance_rgb, luminances(bin_radiance_rgb), on_sky.irradiance[row], on_sky.variance[row]);
+}
 
 PhotonOnSky photon_part_on_sky(const GridPhotons& photons, const std::vector<SensorPoint>& sensors,
                                const CoefficientOptions& options, const DaylightCoefficients& basis,
@@ -19,8 +53,7 @@ PhotonOnSky photon_part_on_sky(const GridPhotons& photons, const std::vector<Sen
     throw std::invalid_argument("photon part on the sky: coefficients of " + std::to_string(basis.sensors) + " x " +
                                 std::to_string(n) + " for " + std::to_string(m) + " rows and " +
                                 std::to_string(bin_radiance_rgb.size()) + " bin radiances");
-  std::vector<double> luminance(n);
-  for (std::size_t p = 0; p < n; ++p) luminance[p] = luminance_of(bin_radiance_rgb[p]);
+  const std::vector<double> luminance = luminances(bin_radiance_rgb);
 
   // Which rows keep the basis sum: those a final gather estimates (header comment).
   std::vector<char> on_basis(m, photons.gather() ? 1 : 0);
@@ -41,16 +74,7 @@ PhotonOnSky photon_part_on_sky(const GridPhotons& photons, const std::vector<Sen
   out.irradiance.assign(m, Vec3{0, 0, 0});
   out.variance.assign(m, 0.0);
   for (std::size_t r = 0; r < m; ++r) {
-    const DaylightCoefficients& c = on_basis[r] ? basis : weighted;
-    Vec3 e{0, 0, 0};
-    double v = 0;
-    for (std::size_t p = 0; p < n; ++p) {
-      const std::size_t i = r * n + p;
-      e += mul(c.caustic[i] + c.global[i], bin_radiance_rgb[p]);
-      v += luminance[p] * luminance[p] * c.photon_variance[i];
-    }
-    out.irradiance[r] = e;
-    out.variance[r] = v;
+    reduce_row(on_basis[r] ? basis : weighted, r, bin_radiance_rgb, luminance, out.irradiance[r], out.variance[r]);
     if (on_basis[r]) ++out.basis_rows;
   }
   return out;

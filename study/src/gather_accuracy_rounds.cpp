@@ -12,6 +12,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/daylight_coefficients.h"
 #include "dayphoton/engine/final_gather.h"
+#include "dayphoton/engine/photon_part_on_sky.h"
 #include "dayphoton/study/accuracy_policy.h"
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/daylight_factor.h"
@@ -551,13 +552,21 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     // The grid's rows replaced where the grid's coefficients are held here (the sky's rounds;
     // the sun's splice result.near_cut into their own).
     engine::DaylightCoefficients& whole = result.coefficients[g];
-    if (whole.sensors == grids[g].points.size() && whole.sources == n)
+    if (whole.sensors == grids[g].points.size() && whole.sources == n) {
       for (std::size_t r = 0; r < rows.size(); ++r)
         for (std::size_t p = 0; p < n; ++p) {
           whole.caustic[rows[r] * n + p] = now.dc.caustic[r * n + p];
           whole.global[rows[r] * n + p] = now.dc.global[r * n + p];
           whole.photon_variance[rows[r] * n + p] = now.dc.photon_variance[r * n + p];
         }
+      // Their photon part on the DF sky: the gather's basis sum (engine/photon_part_on_sky.h),
+      // in place of the plane's estimate where the rounds did not gather them.
+      if (!whole.photon_on_sky.empty()) {
+        for (std::size_t r = 0; r < rows.size(); ++r)
+          engine::set_basis_row(whole.photon_on_sky, rows[r], now.dc, r, c.estimating.photon_sky_bin_radiance_rgb);
+        if (!gathered_in_rounds) whole.photon_on_sky.basis_rows += rows.size();
+      }
+    }
     result.near_cut[g] = NearCutEstimate{rows, std::move(now.dc)};
   }
   settle_case_stop(outcome, photon_stop);

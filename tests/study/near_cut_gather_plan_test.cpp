@@ -4,9 +4,13 @@
 // (cache_keys.h), and the accuracy rounds leave them out of their measure (accuracy_policy.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <string>
 #include <vector>
 
+#include "dayphoton/engine/estimate_variance.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/engine/plane_cuts.h"
 #include "dayphoton/engine/scene.h"
@@ -144,6 +148,60 @@ TEST(NearCutGatherPlan, TheRoundsMeasureLeavesTheGatheredRowsOut) {
   EXPECT_EQ(near_cut_note(reached, 10.0), "; 4 sensors next to a cut gathered, largest 10 %");
   EXPECT_EQ(take_out_near_cut_rows({}, measured, se).sensors, 0u);
   EXPECT_EQ(near_cut_note(NearCutReached{}, 1.0), "");
+}
+
+// After the rounds the sensors next to a cut are gathered (the gather rounds splice their rows
+// into the grid's coefficients): their photon part on the DF sky must be the gather's basis sum
+// (engine/photon_part_on_sky.h), not the plane's estimate the photon rounds left in those rows,
+// and every other row the estimate with the sky ratios (which differs from its basis sum).
+TEST(NearCutGatherPlan, TheGatheredRowsPhotonPartOnTheSkyIsTheGathersOwn) {
+  const Case c = case_of(true);
+  const SimulationPlan plan = SimulationPlan::of(c.project);
+  const engine::Scene scene = engine::Scene::build(c.description);
+  std::vector<engine::Material> materials;
+  for (const MaterialSpec& m : c.description.materials) materials.push_back(engine::Material::from_spec(m));
+  const engine::SourceSet sources = engine::SourceSet::sky_bins(plan.basis);
+  const RadianceMatrix overcast = plan.daylight_factor_sky();
+  AccuracyCase a;
+  a.scene = &scene;
+  a.materials = &materials;
+  a.sources = &sources;
+  a.planes = &c.layout.planes;
+  a.plane_of_grid = &c.layout.plane_of_grid;
+  a.near_cut_sensors = &c.layout.near_cut_sensors;
+  a.grids = &c.description.grids;
+  a.tracing = plan.tracing_for(plan.sky_tracing, c.layout);
+  a.tracing.photons_per_source = 500;
+  a.estimating = plan.sky_estimating;
+  a.estimating.gather.rays_per_sensor = 16;
+  a.overcast_vector = &overcast;
+  a.horizontal_illuminance_lux = plan.overcast_horizontal_lux;
+  AccuracyGoal goal;
+  goal.target_percent = 5.0;
+  const AccuracyResult r = run_accuracy_rounds(a, goal, [](const std::string&) {});
+  const engine::DaylightCoefficients& dc = r.coefficients.at(0);
+  ASSERT_EQ(dc.photon_on_sky.irradiance.size(), dc.sensors);
+  const std::vector<std::size_t> rows =
+      near_cut_rows(c.layout.planes, c.layout.plane_of_grid, &c.layout.near_cut_sensors, c.description.grids[0].points, 0);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(dc.photon_on_sky.basis_rows, rows.size());
+  const std::vector<Vec3>& radiance = a.estimating.photon_sky_bin_radiance_rgb;
+  auto basis_sum = [&](std::size_t s) {
+    double e = 0;
+    for (std::size_t p = 0; p < dc.sources; ++p)
+      e += engine::luminance_of(mul(dc.caustic[s * dc.sources + p] + dc.global[s * dc.sources + p], radiance[p]));
+    return e;
+  };
+  std::size_t differ = 0;
+  for (std::size_t s = 0; s < dc.sensors; ++s) {
+    const double on_sky = engine::luminance_of(dc.photon_on_sky.irradiance[s]), basis = basis_sum(s);
+    ASSERT_GT(basis, 0) << "sensor " << s;
+    if (std::find(rows.begin(), rows.end(), s) != rows.end())
+      EXPECT_NEAR(on_sky, basis, 1e-12 * basis) << "sensor " << s << " next to the column";
+    else
+      differ += std::fabs(on_sky / basis - 1) > 1e-6;
+  }
+  EXPECT_EQ(differ, dc.sensors - rows.size());
 }
 
 }  // namespace

@@ -28,4 +28,11 @@ PhotonOnSky photon_part_on_sky(const GridPhotons& photons, const std::vector<Sen
                                const CoefficientOptions& options, const DaylightCoefficients& basis,
                                const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows = {});
 
+/// Row `row` of `on_sky` set to row `from_row` of `c`'s basis sum, sum_p C_p . L_p with its
+/// variance (a row a final gather estimated after the photon part on the sky was taken: the
+/// accuracy rounds' gathered rows next to a cut). Does not count it in basis_rows. Throws
+/// std::out_of_range for a row either does not have.
+void set_basis_row(PhotonOnSky& on_sky, std::size_t row, const DaylightCoefficients& c, std::size_t from_row,
+                   const std::vector<Vec3>& bin_radiance_rgb);
+
 }  // namespace dayphoton::engine
