@@ -10,12 +10,12 @@
 //
 // The source shares its 32 bits with the photon's sky ratio: for a sky-bin photon, the
 // radiance of one continuous sky (the daylight factor's) in the direction it was emitted
-// toward, over that sky's mean radiance in the bin (TracingOptions::sky_ratio). A bin's
-// coefficient treats the bin as uniformly bright; the same estimate with each photon's flux
-// times its ratio is the bin's response to the continuous sky within it (daylight_
-// coefficients.h, "The photon part under the continuous sky"). 12 bits in steps of 1/2048
-// (0.05 %, rounded to nearest, so unbiased over many photons), up to 4095/2048; sources get
-// the other 20 bits (MaxPhotonSources, more than Reinhart MF:64's 589,825 bins).
+// toward, over that sky's mean radiance in the bin (TracingOptions::sky_ratios, sky_ratios.h).
+// A bin's coefficient treats the bin as uniformly bright; the same estimate with each photon's
+// flux times its ratio is the bin's response to the continuous sky within it
+// (photon_part_on_sky.h). 12 bits in steps of 1/2048 (0.05 %, rounded to nearest, so unbiased
+// over many photons), up to 4095/2048; sources get the other 20 bits (MaxPhotonSources, more
+// than Reinhart MF:64's 589,826 bins, ground included).
 //
 // Difference from RADIANCE's contribution photons: RADIANCE emits from one continuous sky
 // and stores each photon's primary ray (direction and entry point) so that it can bin them
