@@ -357,12 +357,17 @@ std::size_t curvature_minimum_photons(double radius_m, double pilot_m) {
 /// options.curvature_correction, its pilot disc no wider than `pilot_limit_m`, the distance
 /// from the centre to the nearest boundary, negative for no correction), otherwise the kernel
 /// estimate times the boundary factor. `rng_index` seeds the bias-compensating operator.
+/// With `weighted`, also the same estimate with every flux times its sky ratio
+/// (PhotonFlux::TimesSkyRatio, photon_part_on_sky.h) into it: on the local-linear plane from
+/// the same lookups and sums (each value bit for bit what a call with density.flux =
+/// TimesSkyRatio gives), elsewhere by that second call.
 ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane, const Vec3& at,
                                 const PhotonFilter& filter, const DensityEstimateOptions& density,
                                 const CoefficientOptions& options, bool quadratic_at_walls, double pilot_limit_m,
                                 std::size_t rng_index, LookupHint& hint, std::vector<NeighbourPhoton>& found,
-                                std::vector<NeighbourPhoton>& pilot_found) {
+                                std::vector<NeighbourPhoton>& pilot_found, ClassEstimates* weighted = nullptr) {
   ClassEstimates out;
+  if (weighted) *weighted = ClassEstimates{};
   if (plane && options.local_linear && !options.bias_compensation && density.kernel == KernelType::Uniform) {
     const std::size_t k = neighbours_needed(density.bandwidth, density.radius);
     map.nearest(at, k, density.max_radius_m, hint.radius_m(at, density.max_radius_m), filter, found);
@@ -390,30 +395,44 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     if ((corrected && curvature == CurvatureCorrection::Quadratic) || (quadratic_at_walls && cut)) {
       const LocalQuadraticKernel kernel = local_quadratic_kernel(
           visible ? visible->moments4(disc.radius_m) : plane->clipped_disc_moments4(at.x, at.y, disc.radius_m));
-      if (kernel.valid) return local_quadratic_estimate(map, at, found, disc, kernel, density.flux);
+      if (kernel.valid) {
+        if (weighted) *weighted = local_quadratic_estimate(map, at, found, disc, kernel, PhotonFlux::TimesSkyRatio);
+        return local_quadratic_estimate(map, at, found, disc, kernel, density.flux);
+      }
     }
-    Vec3 s0[2], s1x[2], s1y[2];
-    for (int c = 0; c < 2; ++c) s0[c] = s1x[c] = s1y[c] = Vec3{0, 0, 0};
-    double q[6] = {0, 0, 0, 0, 0, 0};
+    // Per flux (density.flux, then the ratio-weighted one if asked for): the sums of the fit.
+    const PhotonFlux fluxes[2] = {density.flux, PhotonFlux::TimesSkyRatio};
+    ClassEstimates* results[2] = {&out, weighted};
+    const int modes = weighted ? 2 : 1;
+    Vec3 s0[2][2], s1x[2][2], s1y[2][2];
+    double q[2][6];
+    for (int f = 0; f < 2; ++f) {
+      for (int c = 0; c < 2; ++c) s0[f][c] = s1x[f][c] = s1y[f][c] = Vec3{0, 0, 0};
+      for (double& x : q[f]) x = 0;
+    }
     for (std::size_t j = 0; j < disc.photon_count; ++j) {
       const Photon& ph = map.photons()[found[j].index];
       const int c = ph.path_class == PathClass::Caustic ? 0 : 1;
-      const Vec3 flux = flux_of(ph, density.flux);
       const double dx = double(ph.position[0]) - at.x, dy = double(ph.position[1]) - at.y;
-      s0[c] += flux;
-      s1x[c] += flux * dx;
-      s1y[c] += flux * dy;
-      const double y2 = luminance_of(flux) * luminance_of(flux);
-      q[0] += y2;
-      q[1] += y2 * dx;
-      q[2] += y2 * dy;
-      q[3] += y2 * dx * dx;
-      q[4] += y2 * dx * dy;
-      q[5] += y2 * dy * dy;
+      for (int f = 0; f < modes; ++f) {
+        const Vec3 flux = flux_of(ph, fluxes[f]);
+        s0[f][c] += flux;
+        s1x[f][c] += flux * dx;
+        s1y[f][c] += flux * dy;
+        const double y2 = luminance_of(flux) * luminance_of(flux);
+        q[f][0] += y2;
+        q[f][1] += y2 * dx;
+        q[f][2] += y2 * dy;
+        q[f][3] += y2 * dx * dx;
+        q[f][4] += y2 * dx * dy;
+        q[f][5] += y2 * dy * dy;
+      }
     }
-    out.caustic = local_linear_density(m, s0[0], s1x[0], s1y[0]);
-    out.global = local_linear_density(m, s0[1], s1x[1], s1y[1]);
-    out.variance = local_linear_variance(m, q);
+    for (int f = 0; f < modes; ++f) {
+      results[f]->caustic = local_linear_density(m, s0[f][0], s1x[f][0], s1y[f][0]);
+      results[f]->global = local_linear_density(m, s0[f][1], s1x[f][1], s1y[f][1]);
+      results[f]->variance = local_linear_variance(m, q[f]);
+    }
     if (!(corrected && curvature == CurvatureCorrection::Pilot)) return out;
     // The pilot's bias, subtracted per class; the variance of the difference: the plane's
     // weight on a whole disc is 1 / area for each of its photons, so
@@ -422,32 +441,42 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     pilot.inv_pilot_m2 = 1.0 / (pilot_m * pilot_m);
     pilot.bias_weight = 6.0 / Pi * disc.radius_m * disc.radius_m * pilot.inv_pilot_m2 * pilot.inv_pilot_m2;
     map.within(at, pilot_m, filter, pilot_found);
-    Vec3 bias[2] = {Vec3{0, 0, 0}, Vec3{0, 0, 0}};
-    double pilot_variance = 0;
-    for (const NeighbourPhoton& n : pilot_found) {
-      const Photon& ph = map.photons()[n.index];
-      const Vec3 flux = flux_of(ph, density.flux);
-      const double w = pilot.weight(n.distance_squared_m2);
-      bias[ph.path_class == PathClass::Caustic ? 0 : 1] += flux * w;
-      const double wy = w * luminance_of(flux);
-      pilot_variance += wy * wy;
-    }
-    double covariance = 0;
-    for (std::size_t j = 0; j < disc.photon_count; ++j) {
-      const double y = luminance_of(flux_of(map.photons()[found[j].index], density.flux));
-      covariance += pilot.weight(found[j].distance_squared_m2) * y * y;
-    }
-    out.caustic -= bias[0];
-    out.global -= bias[1];
-    // A negative total (the correction of a small value against its noise) is set to 0 in
-    // both classes, as the quadratic's (local_quadratic_estimate).
-    for (int c = 0; c < 3; ++c)
-      if (out.caustic[c] + out.global[c] < 0) {
-        out.caustic[c] = 0;
-        out.global[c] = 0;
+    for (int f = 0; f < modes; ++f) {
+      Vec3 bias[2] = {Vec3{0, 0, 0}, Vec3{0, 0, 0}};
+      double pilot_variance = 0;
+      for (const NeighbourPhoton& n : pilot_found) {
+        const Photon& ph = map.photons()[n.index];
+        const Vec3 flux = flux_of(ph, fluxes[f]);
+        const double w = pilot.weight(n.distance_squared_m2);
+        bias[ph.path_class == PathClass::Caustic ? 0 : 1] += flux * w;
+        const double wy = w * luminance_of(flux);
+        pilot_variance += wy * wy;
       }
-    out.variance = std::max(0.0, out.variance - 2 * covariance / m.area + pilot_variance);
+      double covariance = 0;
+      for (std::size_t j = 0; j < disc.photon_count; ++j) {
+        const double y = luminance_of(flux_of(map.photons()[found[j].index], fluxes[f]));
+        covariance += pilot.weight(found[j].distance_squared_m2) * y * y;
+      }
+      ClassEstimates& e = *results[f];
+      e.caustic -= bias[0];
+      e.global -= bias[1];
+      // A negative total (the correction of a small value against its noise) is set to 0 in
+      // both classes, as the quadratic's (local_quadratic_estimate).
+      for (int c = 0; c < 3; ++c)
+        if (e.caustic[c] + e.global[c] < 0) {
+          e.caustic[c] = 0;
+          e.global[c] = 0;
+        }
+      e.variance = std::max(0.0, e.variance - 2 * covariance / m.area + pilot_variance);
+    }
     return out;
+  }
+  if (weighted) {
+    DensityEstimateOptions times_ratio = density;
+    times_ratio.flux = PhotonFlux::TimesSkyRatio;
+    LookupHint unused = hint;
+    *weighted = estimate_classes(map, plane, at, filter, times_ratio, options, quadratic_at_walls, pilot_limit_m,
+                                 rng_index, unused, found, pilot_found);
   }
   const DensityEstimate all =
       options.bias_compensation
@@ -482,7 +511,7 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
 void estimate_photon_coefficients(const GridPhotons& photons,
                                   const std::vector<SensorPoint>& sensors,
                                   const CoefficientOptions& options, DaylightCoefficients& out,
-                                  SensorRange rows) {
+                                  SensorRange rows, DaylightCoefficients* weighted) {
   if (photons.gather())
     throw std::invalid_argument("photon coefficients: gather photons need the scene (photon_coefficients)");
   rows = rows.within(sensors.size());
@@ -494,6 +523,13 @@ void estimate_photon_coefficients(const GridPhotons& photons,
     throw std::invalid_argument("photon coefficients: `out` must hold the " + std::to_string(rows.size()) +
                                 " sensors' rows asked for");
   if (out.photon_variance.size() != out.sensors * n_src) out.photon_variance.assign(out.sensors * n_src, 0.0);
+  if (weighted) {
+    weighted->sensors = out.sensors;
+    weighted->sources = n_src;
+    weighted->caustic.assign(out.sensors * n_src, Vec3{0, 0, 0});
+    weighted->global.assign(out.sensors * n_src, Vec3{0, 0, 0});
+    weighted->photon_variance.assign(out.sensors * n_src, 0.0);
+  }
   const ReceiverPlane* plane = photons.plane();
   // The widest disc on a receiver plane (sparse sources, header comment); infinite elsewhere.
   const double max_radius_m = std::min(options.density.max_radius_m, photons.max_radius_m(options.density.bandwidth));
@@ -597,27 +633,39 @@ void estimate_photon_coefficients(const GridPhotons& photons,
           const std::size_t stream = s * n_src + p;            // random numbers
           const PlaneVisibility* visible = visibility_at(s);
           const double pilot_m = pilot_limit_m[s - range.begin()];
+          ClassEstimates wg, wc;  // with the sky ratios, if asked for
           if (options.caustic_bandwidth == 0) {
             PhotonFilter both = filter_for(sensor, PathClass::Global, visible);
             both.path_classes = IndirectPathClasses;
             const ClassEstimates e = estimate_classes(map, plane, at, both, scaled, options, quadratic, pilot_m,
-                                                      stream, global_hint, found, pilot_found);
+                                                      stream, global_hint, found, pilot_found, weighted ? &wg : nullptr);
             out.caustic[i] = e.caustic;
             out.global[i] = e.global;
             out.photon_variance[i] = e.variance;
+            if (weighted) {
+              weighted->caustic[i] = wg.caustic;
+              weighted->global[i] = wg.global;
+              weighted->photon_variance[i] = wg.variance;
+            }
             continue;
           }
           const ClassEstimates g =
               estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global, visible), global_scaled, options,
-                               quadratic, pilot_m, stream, global_hint, found, pilot_found);
+                               quadratic, pilot_m, stream, global_hint, found, pilot_found, weighted ? &wg : nullptr);
           // A caustic map's discs keep the plane (the header comment's "Caustic map").
           const ClassEstimates c =
               estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic, visible), caustic_scaled,
-                               options, false, -1.0, stream + grid_pairs, caustic_hint, found, pilot_found);
+                               options, false, -1.0, stream + grid_pairs, caustic_hint, found, pilot_found,
+                               weighted ? &wc : nullptr);
           out.global[i] = g.global;
           out.caustic[i] = c.caustic;
           // Each lookup's photons are of its own class (the filter), so the two are independent.
           out.photon_variance[i] = g.variance + c.variance;
+          if (weighted) {
+            weighted->global[i] = wg.global;
+            weighted->caustic[i] = wc.caustic;
+            weighted->photon_variance[i] = wg.variance + wc.variance;
+          }
         }
       }
       return;
@@ -626,25 +674,29 @@ void estimate_photon_coefficients(const GridPhotons& photons,
       const SensorPoint& sensor = sensors[s];
       const std::size_t row = s - rows.begin;
       const Vec3 at = query_point(sensor);
-      for (PathClass c : {PathClass::Caustic, PathClass::Global}) {
-        DensityEstimateOptions density = options.density;
-        if (c == PathClass::Caustic && options.caustic_bandwidth > 0) density.bandwidth = options.caustic_bandwidth;
-        std::vector<Vec3> per_source(n_src, Vec3{0, 0, 0});
-        std::vector<double> per_source_variance(n_src, 0.0);
-        const DensityEstimate e =
-            options.bias_compensation
-                ? estimate_contributions_bias_compensated(
-                      photons.all(), at, filter_for(sensor, c, visibility_at(s)),
-                      bias_options(options, density, s * 2 + (c == PathClass::Caustic ? 0 : 1)),
-                      per_source, &per_source_variance)
-                : estimate_contributions(photons.all(), at, filter_for(sensor, c, visibility_at(s)), density,
-                                         per_source, &per_source_variance);
-        const double b =
-            options.boundary_correction ? boundary_factor(plane, visibility_at(s), at, e.radius_m) : 1.0;
-        std::vector<Vec3>& part = c == PathClass::Caustic ? out.caustic : out.global;
-        for (std::size_t p = 0; p < n_src; ++p) {
-          part[row * n_src + p] = per_source[p] * b;
-          out.photon_variance[row * n_src + p] += per_source_variance[p] * b * b;
+      for (int f = 0; f < (weighted ? 2 : 1); ++f) {
+        for (PathClass c : {PathClass::Caustic, PathClass::Global}) {
+          DensityEstimateOptions density = options.density;
+          if (f == 1) density.flux = PhotonFlux::TimesSkyRatio;  // the second pass, into `weighted`
+          DaylightCoefficients& into = f == 0 ? out : *weighted;
+          if (c == PathClass::Caustic && options.caustic_bandwidth > 0) density.bandwidth = options.caustic_bandwidth;
+          std::vector<Vec3> per_source(n_src, Vec3{0, 0, 0});
+          std::vector<double> per_source_variance(n_src, 0.0);
+          const DensityEstimate e =
+              options.bias_compensation
+                  ? estimate_contributions_bias_compensated(
+                        photons.all(), at, filter_for(sensor, c, visibility_at(s)),
+                        bias_options(options, density, s * 2 + (c == PathClass::Caustic ? 0 : 1)),
+                        per_source, &per_source_variance)
+                  : estimate_contributions(photons.all(), at, filter_for(sensor, c, visibility_at(s)), density,
+                                           per_source, &per_source_variance);
+          const double b =
+              options.boundary_correction ? boundary_factor(plane, visibility_at(s), at, e.radius_m) : 1.0;
+          std::vector<Vec3>& part = c == PathClass::Caustic ? into.caustic : into.global;
+          for (std::size_t p = 0; p < n_src; ++p) {
+            part[row * n_src + p] = per_source[p] * b;
+            into.photon_variance[row * n_src + p] += per_source_variance[p] * b * b;
+          }
         }
       }
     }
@@ -665,8 +717,6 @@ DaylightCoefficients daylight_coefficients(const Scene& scene,
   c.direct = direct_coefficients(scene, materials, sources, sensors, options.direct, &c.direct_variance, rows,
                                  &c.direct_on_skies);
   photon_coefficients(scene, materials, sources, photons, sensors, options, c, rows);
-  if (!options.photon_sky_bin_radiance_rgb.empty())
-    c.photon_on_sky = photon_part_on_sky(photons, sensors, options, c, options.photon_sky_bin_radiance_rgb, rows);
   return c;
 }
 
@@ -674,25 +724,31 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
                          const SourceSet& sources, const GridPhotons& photons,
                          const std::vector<SensorPoint>& sensors,
                          const CoefficientOptions& options, DaylightCoefficients& out, SensorRange rows) {
+  const std::vector<Vec3>& sky_bins = options.photon_sky_bin_radiance_rgb;
   if (!photons.gather()) {
-    estimate_photon_coefficients(photons, sensors, options, out, rows);
+    // With the photon part on the sky: the ratio-weighted estimate from the same lookups.
+    DaylightCoefficients weighted;
+    estimate_photon_coefficients(photons, sensors, options, out, rows, sky_bins.empty() ? nullptr : &weighted);
     const GridPhotons* gather = photons.near_cut_gather();
-    if (!gather) return;
-    // The sensors next to a cut (header comment): their rows replaced by the final gather's.
     rows = rows.within(sensors.size());
-    const std::vector<std::size_t> near = sensors_near_cuts(*photons.plane(), sensors, rows);
-    if (near.empty()) return;
-    // From the sensor's position about its normal, the plane's (SensorGrid::planar).
-    const GatheredCoefficients g = gather_photon_coefficients_at(scene, materials, sources, gather->all(), sensors,
-                                                                 options.gather, &gather->groups(), near);
-    const std::size_t n = out.sources;
-    for (std::size_t r = 0; r < near.size(); ++r)
-      for (std::size_t p = 0; p < n; ++p) {
-        const std::size_t i = (near[r] - rows.begin) * n + p;
-        out.caustic[i] = g.caustic[r * n + p];
-        out.global[i] = g.global[r * n + p];
-        out.photon_variance[i] = g.variance[r * n + p];
-      }
+    const std::vector<std::size_t> near =
+        gather ? sensors_near_cuts(*photons.plane(), sensors, rows) : std::vector<std::size_t>{};
+    if (!near.empty()) {
+      // The sensors next to a cut (header comment): their rows replaced by the final gather's.
+      // From the sensor's position about its normal, the plane's (SensorGrid::planar).
+      const GatheredCoefficients g = gather_photon_coefficients_at(scene, materials, sources, gather->all(), sensors,
+                                                                   options.gather, &gather->groups(), near);
+      const std::size_t n = out.sources;
+      for (std::size_t r = 0; r < near.size(); ++r)
+        for (std::size_t p = 0; p < n; ++p) {
+          const std::size_t i = (near[r] - rows.begin) * n + p;
+          out.caustic[i] = g.caustic[r * n + p];
+          out.global[i] = g.global[r * n + p];
+          out.photon_variance[i] = g.variance[r * n + p];
+        }
+    }
+    // The gathered rows take their basis sum (photon_part_on_sky.h).
+    if (!sky_bins.empty()) out.photon_on_sky = photon_part_on_sky_of(photons, sensors, out, &weighted, sky_bins, rows);
     return;
   }
   GatheredCoefficients g = gather_photon_coefficients(scene, materials, sources, photons.all(), sensors, options.gather,
@@ -700,6 +756,7 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
   out.caustic = std::move(g.caustic);
   out.global = std::move(g.global);
   out.photon_variance = std::move(g.variance);
+  if (!sky_bins.empty()) out.photon_on_sky = photon_part_on_sky_of(photons, sensors, out, nullptr, sky_bins, rows);
 }
 
 }  // namespace dayphoton::engine

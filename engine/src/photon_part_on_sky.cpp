@@ -47,34 +47,43 @@ PhotonOnSky photon_part_on_sky(const GridPhotons& photons, const std::vector<Sen
                                const CoefficientOptions& options, const DaylightCoefficients& basis,
                                const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows) {
   rows = rows.within(sensors.size());
+  if (photons.gather()) return photon_part_on_sky_of(photons, sensors, basis, nullptr, bin_radiance_rgb, rows);
+  DaylightCoefficients weighted;
+  weighted.sensors = rows.size();
+  weighted.sources = basis.sources;
+  weighted.caustic.assign(weighted.sensors * weighted.sources, Vec3{0, 0, 0});
+  weighted.global.assign(weighted.sensors * weighted.sources, Vec3{0, 0, 0});
+  CoefficientOptions o = options;
+  o.density.flux = PhotonFlux::TimesSkyRatio;
+  estimate_photon_coefficients(photons, sensors, o, weighted, rows);
+  return photon_part_on_sky_of(photons, sensors, basis, &weighted, bin_radiance_rgb, rows);
+}
+
+PhotonOnSky photon_part_on_sky_of(const GridPhotons& photons, const std::vector<SensorPoint>& sensors,
+                                  const DaylightCoefficients& basis, const DaylightCoefficients* weighted,
+                                  const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows) {
+  rows = rows.within(sensors.size());
   const std::size_t n = basis.sources, m = rows.size();
-  if (basis.sensors != m || bin_radiance_rgb.size() != n || basis.caustic.size() != m * n ||
-      basis.global.size() != m * n || basis.photon_variance.size() != m * n)
+  auto holds = [&](const DaylightCoefficients& c) {
+    return c.sensors == m && c.sources == n && c.caustic.size() == m * n && c.global.size() == m * n &&
+           c.photon_variance.size() == m * n;
+  };
+  if (!holds(basis) || bin_radiance_rgb.size() != n || (weighted && !holds(*weighted)) ||
+      (!weighted && !photons.gather()))
     throw std::invalid_argument("photon part on the sky: coefficients of " + std::to_string(basis.sensors) + " x " +
                                 std::to_string(n) + " for " + std::to_string(m) + " rows and " +
-                                std::to_string(bin_radiance_rgb.size()) + " bin radiances");
+                                std::to_string(bin_radiance_rgb.size()) + " bin radiances" +
+                                (weighted ? "" : ", and no ratio-weighted estimate"));
   const std::vector<double> luminance = luminances(bin_radiance_rgb);
-
   // Which rows keep the basis sum: those a final gather estimates (header comment).
   std::vector<char> on_basis(m, photons.gather() ? 1 : 0);
-  DaylightCoefficients weighted;
-  if (!photons.gather()) {
-    weighted.sensors = m;
-    weighted.sources = n;
-    weighted.caustic.assign(m * n, Vec3{0, 0, 0});
-    weighted.global.assign(m * n, Vec3{0, 0, 0});
-    CoefficientOptions o = options;
-    o.density.flux = PhotonFlux::TimesSkyRatio;
-    estimate_photon_coefficients(photons, sensors, o, weighted, rows);
-    if (photons.near_cut_gather())
-      for (const std::size_t s : sensors_near_cuts(*photons.plane(), sensors, rows)) on_basis[s - rows.begin] = 1;
-  }
-
+  if (!photons.gather() && photons.near_cut_gather())
+    for (const std::size_t s : sensors_near_cuts(*photons.plane(), sensors, rows)) on_basis[s - rows.begin] = 1;
   PhotonOnSky out;
   out.irradiance.assign(m, Vec3{0, 0, 0});
   out.variance.assign(m, 0.0);
   for (std::size_t r = 0; r < m; ++r) {
-    reduce_row(on_basis[r] ? basis : weighted, r, bin_radiance_rgb, luminance, out.irradiance[r], out.variance[r]);
+    reduce_row(on_basis[r] ? basis : *weighted, r, bin_radiance_rgb, luminance, out.irradiance[r], out.variance[r]);
     if (on_basis[r]) ++out.basis_rows;
   }
   return out;

@@ -8,7 +8,6 @@
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/direct_component.h"
-#include "dayphoton/engine/photon_part_on_sky.h"
 #include "dayphoton/engine/photon_rounds.h"
 #include "dayphoton/engine/port_emission.h"
 #include "dayphoton/study/accuracy_policy.h"
@@ -55,13 +54,10 @@ engine::DaylightCoefficients round_coefficients(const AccuracyCase& c, std::size
         copy_direct_rows(direct, begin, end, n, dc);
         dc.caustic.assign(dc.sensors * n, Vec3{0, 0, 0});
         dc.global.assign(dc.sensors * n, Vec3{0, 0, 0});
+        // With the photon part under the daylight factor's continuous sky, which the round's
+        // measure reads (daylight_factor_parts) as the outputs do.
         engine::photon_coefficients(*c.scene, *c.materials, *c.sources, gp, grid.points, c.estimating, dc,
                                     {begin, end});
-        // The photon part under the daylight factor's continuous sky, which the round's
-        // measure reads (daylight_factor_parts) as the outputs do.
-        if (!c.estimating.photon_sky_bin_radiance_rgb.empty())
-          dc.photon_on_sky = engine::photon_part_on_sky(gp, grid.points, c.estimating, dc,
-                                                        c.estimating.photon_sky_bin_radiance_rgb, {begin, end});
         return encode_coefficients(dc);
       },
       name);

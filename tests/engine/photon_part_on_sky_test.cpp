@@ -258,6 +258,45 @@ TEST(PhotonPartOnSky, EveryEstimatorPathWeightsByTheRatio) {
   }
 }
 
+TEST(PhotonPartOnSky, OnePassOverTheLookupsGivesTheSecondPassBitForBit) {
+  // daylight_coefficients sums both fluxes over the same lookups; photon_part_on_sky estimates
+  // again with density.flux = TimesSkyRatio: the same values, bit for bit, on every path.
+  const DiffuserRoom room;
+  const ContinuousSky sky{"CIE overcast with a ground of 0.25", overcast_with_ground};
+  const std::vector<ReceiverPlane> planes = {ReceiverPlane(0.0, true, {{-3, -3}, {3, -3}, {3, 2}, {-3, 2}})};
+  std::vector<double> luminance;
+  for (const Vec3& l : room.means) luminance.push_back(luminance_of(l));
+  TracingOptions t;
+  t.photons_per_source = 400;
+  t.seed = 11;
+  t.keep_surface_photons = false;
+  t.sky_ratios = std::make_shared<const SkyRatios>(sky, luminance);
+  TracedPhotons photons = trace_photons(room.scene, room.materials, room.sources, planes, t);
+  const GridPhotons grid = GridPhotons::for_plane(planes[0], std::move(photons.planes[0]), room.sources.size());
+  const std::vector<SensorPoint> sensors = {{{0, 0, 0}, {0, 0, 1}}, {{-2.9, -2.9, 0}, {0, 0, 1}}, {{2.9, 1.9, 0}, {0, 0, 1}}};
+  std::vector<CoefficientOptions> paths(6);
+  paths[1].curvature_correction = CurvatureCorrection::Quadratic;
+  paths[1].quadratic_fit_sources = {0, 5, 17};
+  paths[2].local_linear = false;
+  paths[3].caustic_bandwidth = 20;
+  paths[4].local_linear = false;
+  paths[4].bias_compensation = true;
+  paths[5].estimator = PhotonEstimator::Contribution;
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    CoefficientOptions o = paths[k];
+    o.direct.samples_per_source = 1;
+    o.photon_sky_bin_radiance_rgb = room.means;
+    const DaylightCoefficients c = daylight_coefficients(room.scene, room.materials, room.sources, grid, sensors, o);
+    const PhotonOnSky two = photon_part_on_sky(grid, sensors, o, c, room.means);
+    ASSERT_EQ(c.photon_on_sky.irradiance.size(), sensors.size());
+    for (std::size_t s = 0; s < sensors.size(); ++s) {
+      EXPECT_EQ(c.photon_on_sky.irradiance[s].x, two.irradiance[s].x) << "path " << k << ", sensor " << s;
+      EXPECT_EQ(c.photon_on_sky.irradiance[s].z, two.irradiance[s].z) << "path " << k << ", sensor " << s;
+      EXPECT_EQ(c.photon_on_sky.variance[s], two.variance[s]) << "path " << k << ", sensor " << s;
+    }
+  }
+}
+
 TEST(PhotonPartOnSky, TheRatioCodeRoundsToNearestAndRefusesWhatItCannotHold) {
   EXPECT_EQ(Photon::sky_ratio_code_of(1.0), SkyRatioOne);
   EXPECT_EQ(Photon::sky_ratio_code_of(0.8301), 1700u);  // 1700.04

@@ -303,14 +303,22 @@ class GridPhotons {
 /// sources) in caustic/global; its photon_variance is filled (estimate_variance.h: the sum
 /// of the squared luminance terms of the photons each estimate sums, through the
 /// local-linear fit's weights on a receiver plane). Throws std::invalid_argument for gather photons (they need
-/// the scene: daylight_coefficients or photon_coefficients).
+/// the scene: daylight_coefficients or photon_coefficients). With `weighted`, the same estimate
+/// with every flux times its sky ratio (PhotonFlux::TimesSkyRatio, photon_part_on_sky.h) is made
+/// into it (its caustic, global and photon_variance, sized here), on the local-linear plane from
+/// the same lookups: each value bit for bit that of a call with options.density.flux =
+/// TimesSkyRatio.
 void estimate_photon_coefficients(const GridPhotons& photons,
                                   const std::vector<SensorPoint>& sensors,
                                   const CoefficientOptions& options, DaylightCoefficients& out,
-                                  SensorRange rows = {});
+                                  SensorRange rows = {}, DaylightCoefficients* weighted = nullptr);
 
 /// The photon part for any kind of GridPhotons (a final gather for for_gather photons, and at
-/// a receiver plane's sensors next to a cut when it has near-cut gather photons).
+/// a receiver plane's sensors next to a cut when it has near-cut gather photons). With
+/// `weighted` (not for gather photons), estimate_photon_coefficients' ratio-weighted estimate
+/// too, of every row the plane estimates (the rows a gather replaces in `out` keep it there).
+/// With options.photon_sky_bin_radiance_rgb, out.photon_on_sky as well (photon_part_on_sky.h),
+/// from the same lookups.
 void photon_coefficients(const Scene& scene, const std::vector<Material>& materials,
                          const SourceSet& sources, const GridPhotons& photons,
                          const std::vector<SensorPoint>& sensors,

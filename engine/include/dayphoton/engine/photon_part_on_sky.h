@@ -3,10 +3,11 @@
 //   E_s = sum_p C'_sp . L_p,
 //
 // C' the photon coefficients estimated with every photon's flux times its sky ratio
-// r = L(w) / L_p (sky_ratios.h; DensityEstimateOptions::flux), L_p the bin radiances the ratios
-// were taken against. The same discs, kernels, fits and clamps as the coefficients, so E_s is
-// that estimator's response to the continuous sky itself and its variance is
-// sum_p lum(L_p)^2 Var(y'_sp) (the sources are independent, estimate_variance.h).
+// r = L(w) / L_p (sky_ratios.h; PhotonFlux::TimesSkyRatio: photon_coefficients sums it over the
+// coefficients' own lookups when CoefficientOptions::photon_sky_bin_radiance_rgb is set), L_p
+// the bin radiances the ratios were taken against. The same discs, kernels, fits and clamps as
+// the coefficients, so E_s is that estimator's response to the continuous sky itself and its
+// variance is sum_p lum(L_p)^2 Var(y'_sp) (the sources are independent, estimate_variance.h).
 //
 // Rows a final gather estimates (a gathered grid; a receiver plane's sensors next to a cut)
 // keep the basis sum sum_p C_sp . L_p and its variance: a gather ray's specular path to the
@@ -23,10 +24,21 @@ namespace dayphoton::engine {
 /// `photons`: traced with TracingOptions::sky_ratios; `basis`: the coefficients of the same
 /// rows from the same photons and options (their photon part and photon_variance);
 /// `bin_radiance_rgb[p]`: L_p, RGB W/(sr m^2), the radiances whose luminances the ratios
-/// divide by. Throws std::invalid_argument on a size mismatch.
+/// divide by. Throws std::invalid_argument on a size mismatch. A second pass over the lookups:
+/// photon_coefficients gives the same values bit for bit from the lookups of `basis`, when
+/// CoefficientOptions::photon_sky_bin_radiance_rgb is set (the run's way; this one, the
+/// reference the tests compare it with).
 PhotonOnSky photon_part_on_sky(const GridPhotons& photons, const std::vector<SensorPoint>& sensors,
                                const CoefficientOptions& options, const DaylightCoefficients& basis,
                                const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows = {});
+
+/// The sums above from the ratio-weighted estimate `weighted` of the same rows (its caustic,
+/// global and photon_variance), the rows a final gather estimates from `basis` (all of them
+/// for gather photons, where `weighted` may be null). Throws std::invalid_argument on a size
+/// mismatch.
+PhotonOnSky photon_part_on_sky_of(const GridPhotons& photons, const std::vector<SensorPoint>& sensors,
+                                  const DaylightCoefficients& basis, const DaylightCoefficients* weighted,
+                                  const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows = {});
 
 /// Row `row` of `on_sky` set to row `from_row` of `c`'s basis sum, sum_p C_p . L_p with its
 /// variance (a row a final gather estimated after the photon part on the sky was taken: the
