@@ -43,22 +43,6 @@ void set_basis_row(PhotonOnSky& on_sky, std::size_t row, const DaylightCoefficie
   reduce_row(c, from_row, bin_radiance_rgb, luminances(bin_radiance_rgb), on_sky.irradiance[row], on_sky.variance[row]);
 }
 
-PhotonOnSky photon_part_on_sky(const GridPhotons& photons, const std::vector<SensorPoint>& sensors,
-                               const CoefficientOptions& options, const DaylightCoefficients& basis,
-                               const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows) {
-  rows = rows.within(sensors.size());
-  if (photons.gather()) return photon_part_on_sky_of(photons, sensors, basis, nullptr, bin_radiance_rgb, rows);
-  DaylightCoefficients weighted;
-  weighted.sensors = rows.size();
-  weighted.sources = basis.sources;
-  weighted.caustic.assign(weighted.sensors * weighted.sources, Vec3{0, 0, 0});
-  weighted.global.assign(weighted.sensors * weighted.sources, Vec3{0, 0, 0});
-  CoefficientOptions o = options;
-  o.density.flux = PhotonFlux::TimesSkyRatio;
-  estimate_photon_coefficients(photons, sensors, o, weighted, rows);
-  return photon_part_on_sky_of(photons, sensors, basis, &weighted, bin_radiance_rgb, rows);
-}
-
 PhotonOnSky photon_part_on_sky_of(const GridPhotons& photons, const std::vector<SensorPoint>& sensors,
                                   const DaylightCoefficients& basis, const DaylightCoefficients* weighted,
                                   const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows) {

@@ -96,26 +96,37 @@ engine::DaylightCoefficients grid_direct(const AccuracyCase& c, std::size_t g, i
 
 }  // namespace
 
-void copy_direct_rows(const engine::DaylightCoefficients& whole, std::size_t begin, std::size_t end,
+void copy_direct_rows(const engine::DaylightCoefficients& whole, const std::vector<std::size_t>& which,
                       std::size_t sources, engine::DaylightCoefficients& out) {
-  out.sensors = end - begin;
+  out.sensors = which.size();
   out.sources = sources;
+  out.direct.clear();
+  out.direct_variance.clear();
+  out.direct_on_skies = {};
   if (whole.direct.empty()) {
     out.direct.assign(out.sensors * sources, Vec3{});
     out.direct_variance.assign(out.sensors * sources, 0.0);
-    out.direct_on_skies = {};
     return;
   }
-  auto rows = [&](const auto& v, std::size_t per_row) {
-    return std::vector<typename std::decay_t<decltype(v)>::value_type>(v.begin() + std::ptrdiff_t(begin * per_row),
-                                                                       v.begin() + std::ptrdiff_t(end * per_row));
-  };
-  out.direct = rows(whole.direct, sources);
-  out.direct_variance = rows(whole.direct_variance, sources);
   const engine::DirectOnSkies& skies = whole.direct_on_skies;
-  out.direct_on_skies.skies = skies.skies;
-  out.direct_on_skies.irradiance = rows(skies.irradiance, skies.skies);
-  out.direct_on_skies.variance = rows(skies.variance, skies.skies);
+  const std::size_t k = skies.skies;
+  out.direct_on_skies.skies = k;
+  auto append_row = [](auto& to, const auto& from, std::size_t i, std::size_t per_row) {
+    to.insert(to.end(), from.begin() + std::ptrdiff_t(i * per_row), from.begin() + std::ptrdiff_t((i + 1) * per_row));
+  };
+  for (const std::size_t i : which) {
+    append_row(out.direct, whole.direct, i, sources);
+    append_row(out.direct_variance, whole.direct_variance, i, sources);
+    append_row(out.direct_on_skies.irradiance, skies.irradiance, i, k);
+    append_row(out.direct_on_skies.variance, skies.variance, i, k);
+  }
+}
+
+void copy_direct_rows(const engine::DaylightCoefficients& whole, std::size_t begin, std::size_t end,
+                      std::size_t sources, engine::DaylightCoefficients& out) {
+  std::vector<std::size_t> which(end - begin);
+  for (std::size_t r = 0; r < which.size(); ++r) which[r] = begin + r;
+  copy_direct_rows(whole, which, sources, out);
 }
 
 std::vector<std::size_t> sensors_at_or_below_percentile(const std::vector<double>& relative, const std::vector<double>& df,

@@ -93,35 +93,6 @@ std::vector<double> relative_stderr_percent(const std::vector<double>& df_percen
   return relative;
 }
 
-/// The rows `which` of one grid's direct part into `out` (copy_direct_rows for rows that need not
-/// be contiguous): `whole` the whole grid's, or nothing (zeros).
-void copy_direct_rows_at(const engine::DaylightCoefficients& whole, const std::vector<std::size_t>& which,
-                         std::size_t sources, engine::DaylightCoefficients& out) {
-  out.sensors = which.size();
-  out.sources = sources;
-  if (whole.direct.empty()) {
-    copy_direct_rows(whole, 0, which.size(), sources, out);
-    return;
-  }
-  const engine::DirectOnSkies& skies = whole.direct_on_skies;
-  out.direct_on_skies.skies = skies.skies;
-  for (const std::size_t i : which) {
-    out.direct.insert(out.direct.end(), whole.direct.begin() + std::ptrdiff_t(i * sources),
-                      whole.direct.begin() + std::ptrdiff_t((i + 1) * sources));
-    out.direct_variance.insert(out.direct_variance.end(), whole.direct_variance.begin() + std::ptrdiff_t(i * sources),
-                               whole.direct_variance.begin() + std::ptrdiff_t((i + 1) * sources));
-    const std::size_t k = skies.skies;
-    if (skies.irradiance.size() >= (i + 1) * k)
-      out.direct_on_skies.irradiance.insert(out.direct_on_skies.irradiance.end(),
-                                            skies.irradiance.begin() + std::ptrdiff_t(i * k),
-                                            skies.irradiance.begin() + std::ptrdiff_t((i + 1) * k));
-    if (skies.variance.size() >= (i + 1) * k)
-      out.direct_on_skies.variance.insert(out.direct_on_skies.variance.end(),
-                                          skies.variance.begin() + std::ptrdiff_t(i * k),
-                                          skies.variance.begin() + std::ptrdiff_t((i + 1) * k));
-  }
-}
-
 /// The largest of `relative` over the sensors with light (0 without any).
 double largest_of(const std::vector<double>& relative, const std::vector<double>& df_percent) {
   double largest = 0;
@@ -302,7 +273,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           engine::GatheredCoefficients gathered;
           if (rows) {
             const std::vector<std::size_t> which(rows->begin() + std::ptrdiff_t(begin), rows->begin() + std::ptrdiff_t(end));
-            copy_direct_rows_at(direct[g], which, n, dc);
+            copy_direct_rows(direct[g], which, n, dc);
             gathered = engine::gather_photon_coefficients_at(*c.scene, *c.materials, *c.sources, gp.all(), grid.points,
                                                              options.gather, &gp.groups(), which);
           } else {

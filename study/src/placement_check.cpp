@@ -102,7 +102,7 @@ constexpr const char* OnCutWhy =
 
 /// Per sensor of a planar set: whether it lies within engine::OnCut_m of an opaque surface
 /// crossing its plane inside the outline (engine/plane_cuts.h); all false for other sets.
-std::vector<bool> sensors_on_cuts(const engine::Scene& scene, const SensorGrid& grid) {
+std::vector<bool> on_cut_flags(const engine::Scene& scene, const SensorGrid& grid) {
   std::vector<bool> out(grid.points.size(), false);
   if (!grid.planar || grid.points.empty()) return out;
   engine::ReceiverPlane plane = engine::ReceiverPlane::from_grid(grid);
@@ -354,7 +354,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
     set.name = grid.name;
     set.sensors = grid.points.size();
     const std::vector<engine::SensorPlacementTest> tests = engine::test_sensor_placements(scene, grid.points);
-    const std::vector<bool> on_cut = sensors_on_cuts(scene, grid);
+    const std::vector<bool> on_cut = on_cut_flags(scene, grid);
     std::vector<std::size_t> bad;
     for (std::size_t i = 0; i < tests.size(); ++i) {
       if (tests[i].placement == engine::SensorPlacement::InRoom) {

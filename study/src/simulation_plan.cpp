@@ -176,7 +176,8 @@ SimulationPlan SimulationPlan::of(const project::Project& project, const SunSite
   // (sun_annual_estimating, in sun_bin_steps.cpp and the sun rounds), so sun_estimating,
   // copied above, has none.
   const RadianceMatrix df_sky = p.daylight_factor_sky();
-  p.sky_estimating.gather.variance_weights = sky_vector_luminance(df_sky);
+  const std::vector<double> df_luminance = sky_vector_luminance(df_sky);
+  p.sky_estimating.gather.variance_weights = df_luminance;
   // The daylight factor's photon part under the continuous sky too (engine/sky_ratios.h): the
   // sky photons carry their ratio to the bin's mean, and the sky coefficients the photon part
   // under the sky itself. The sun bins have no sky ratio (sun_tracing and sun_estimating
@@ -188,16 +189,15 @@ SimulationPlan SimulationPlan::of(const project::Project& project, const SunSite
   // precision (the means the ratios divide by, free of the illuminance; the ground bin's
   // ratio is 1 whatever the ground).
   engine::ContinuousSky ratio_sky = p.daylight_factor_continuous_sky();
-  const std::vector<double>& bin_luminance = p.sky_estimating.gather.variance_weights;
   double sky_sum = 0;
-  for (std::size_t b = 1; b < bin_luminance.size(); ++b) sky_sum += bin_luminance[b];
+  for (std::size_t b = 1; b < df_luminance.size(); ++b) sky_sum += df_luminance[b];
   std::ostringstream ratio_key;
   ratio_key.precision(17);
   ratio_key << "CIE overcast over its bin means, relative:";
-  for (std::size_t b = 1; b < bin_luminance.size(); ++b) ratio_key << ' ' << bin_luminance[b] / sky_sum;
+  for (std::size_t b = 1; b < df_luminance.size(); ++b) ratio_key << ' ' << df_luminance[b] / sky_sum;
   ratio_sky.key = ratio_key.str();
   p.sky_tracing.sky_ratios =
-      std::make_shared<const engine::SkyRatios>(std::move(ratio_sky), p.sky_estimating.gather.variance_weights);
+      std::make_shared<const engine::SkyRatios>(std::move(ratio_sky), df_luminance);
   for (std::size_t b = 0; b < df_sky.rows(); ++b)
     p.sky_estimating.photon_sky_bin_radiance_rgb.push_back(
         Vec3{df_sky.at(b, 0, 0), df_sky.at(b, 0, df_sky.components() > 1 ? 1 : 0),

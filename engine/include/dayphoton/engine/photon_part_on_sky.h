@@ -21,21 +21,14 @@
 
 namespace dayphoton::engine {
 
-/// `photons`: traced with TracingOptions::sky_ratios; `basis`: the coefficients of the same
-/// rows from the same photons and options (their photon part and photon_variance);
-/// `bin_radiance_rgb[p]`: L_p, RGB W/(sr m^2), the radiances whose luminances the ratios
-/// divide by. Throws std::invalid_argument on a size mismatch. A second pass over the lookups:
-/// photon_coefficients gives the same values bit for bit from the lookups of `basis`, when
-/// CoefficientOptions::photon_sky_bin_radiance_rgb is set (the run's way; this one, the
-/// reference the tests compare it with).
-PhotonOnSky photon_part_on_sky(const GridPhotons& photons, const std::vector<SensorPoint>& sensors,
-                               const CoefficientOptions& options, const DaylightCoefficients& basis,
-                               const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows = {});
-
 /// The sums above from the ratio-weighted estimate `weighted` of the same rows (its caustic,
-/// global and photon_variance), the rows a final gather estimates from `basis` (all of them
-/// for gather photons, where `weighted` may be null). Throws std::invalid_argument on a size
-/// mismatch.
+/// global and photon_variance: estimate_photon_coefficients' `weighted`, which
+/// photon_coefficients makes from the coefficients' own lookups when
+/// CoefficientOptions::photon_sky_bin_radiance_rgb is set), the rows a final gather estimates
+/// from `basis`, the coefficients of the same rows (all of them for gather photons, where
+/// `weighted` may be null). `photons`: traced with TracingOptions::sky_ratios;
+/// `bin_radiance_rgb[p]`: L_p, RGB W/(sr m^2), the radiances whose luminances the ratios
+/// divide by. Throws std::invalid_argument on a size mismatch.
 PhotonOnSky photon_part_on_sky_of(const GridPhotons& photons, const std::vector<SensorPoint>& sensors,
                                   const DaylightCoefficients& basis, const DaylightCoefficients* weighted,
                                   const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows = {});

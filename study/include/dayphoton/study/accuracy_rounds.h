@@ -229,6 +229,10 @@ struct AccuracyCase {
 /// part, the sun bins' gathered grids: zeros).
 void copy_direct_rows(const engine::DaylightCoefficients& whole, std::size_t begin, std::size_t end,
                       std::size_t sources, engine::DaylightCoefficients& out);
+/// The same for the rows `which`, in that order (rows that need not be contiguous: a plane's
+/// sensors next to a cut).
+void copy_direct_rows(const engine::DaylightCoefficients& whole, const std::vector<std::size_t>& which,
+                      std::size_t sources, engine::DaylightCoefficients& out);
 
 /// A gathered grid's last estimate at more gather rays than the photon rounds' (its gather
 /// rounds' result): kept while later photon rounds serve other grids, so that when it cannot be
