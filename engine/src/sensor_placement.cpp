@@ -1,12 +1,16 @@
 // Sensor placement: see sensor_placement.h.
 #include "dayphoton/engine/sensor_placement.h"
 
+#include <cstdint>
+#include <cstring>
 #include <map>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "dayphoton/engine/random.h"
 #include "dayphoton/engine/scene.h"
+#include "material_common.h"
 #include "spread_directions.h"
 
 namespace dayphoton::engine {
@@ -14,6 +18,54 @@ namespace {
 
 bool is_transparent(MaterialType type) {
   return type == MaterialType::Glass || type == MaterialType::Opening || type == MaterialType::Dielectric;
+}
+
+/// Surfaces light may pass through or scatter back from (header comment): a walk goes
+/// straight on or diffusely back with even odds.
+bool may_transmit(MaterialType type) {
+  return type == MaterialType::Translucent || type == MaterialType::Glazing || type == MaterialType::Registered;
+}
+
+bool is_specular_reflector(MaterialType type) {
+  return type == MaterialType::Mirror || type == MaterialType::Metal;
+}
+
+/// The walks' random key of a sensor: a function of its position and normal only, so the
+/// test of a sensor gives the same answer in any order, thread or set.
+std::uint64_t sensor_key(const SensorPoint& sensor) {
+  std::uint64_t key = 0;
+  for (double v : {sensor.position.x, sensor.position.y, sensor.position.z, sensor.normal.x, sensor.normal.y,
+                   sensor.normal.z}) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &v, sizeof bits);
+    key = Rng::mix(key ^ bits);
+  }
+  return key;
+}
+
+/// Whether one walk from `origin` (header comment) crosses a port or escapes to the sky within
+/// SensorEnclosureBounces bounces.
+bool walk_reaches_outside(const Scene& scene, const Vec3& origin, const Vec3& first_direction, Rng& rng) {
+  const SceneDescription& description = scene.description();
+  Ray ray{origin, first_direction};
+  int crossings = 0;
+  for (int bounce = 0; bounce < SensorEnclosureBounces;) {
+    const std::optional<Hit> hit = scene.intersect(ray);
+    if (!hit || hit->port >= 0) return true;
+    const MaterialType type = description.materials[static_cast<std::size_t>(hit->material)].type;
+    const Vec3 d = ray.direction;
+    const Vec3 facing = dot(d, hit->normal) < 0 ? hit->normal : hit->normal * -1.0;  // the side it came from
+    Vec3 next = d;
+    if (is_transparent(type) || (may_transmit(type) && rng.uniform() < 0.5)) {
+      // Straight on: a crossing, not a bounce (bounded on its own, as the spread rays').
+      if (++crossings >= SensorPlacementMaxCrossings) return false;
+    } else {
+      next = is_specular_reflector(type) ? detail::reflect(d, hit->normal) : detail::sample_cosine(facing, rng.uniform(), rng.uniform());
+      ++bounce;
+    }
+    ray = Ray{scene.offset_ray_origin(hit->position, hit->normal, next), next};
+  }
+  return false;
 }
 
 }  // namespace
@@ -62,11 +114,12 @@ SensorPlacementTest test_sensor_placement(const Scene& scene, const SensorPoint&
     ++out.rays;
     if (trace(d, true)) ++out.through_port;
   }
-  // A sensor that looks inside a solid gets a second chance: one ray aimed at the centroid of
-  // each port. One that reaches a port sees out (a room whose mesh faces point outward, a
-  // window too small for the spread directions to meet); inside a closed solid none does.
-  if (out.through_port == 0 && out.sky_without_port == 0 &&
-      out.back_of_solid >= SensorInsideSolidFraction * out.rays) {
+  // A sensor that sees no port and no sky (inside a solid, or behind a partition) gets a second
+  // chance: one ray aimed at the centroid of each port. One that reaches a port sees out (a
+  // room whose mesh faces point outward, a window too small for the spread directions to
+  // meet); inside a closed solid none does.
+  const bool sees_out = out.through_port > 0 || out.sky_without_port > 0;
+  if (!sees_out) {
     for (const Port& port : scene.ports().ports()) {
       const Vec3 to = port.centroid - origin;
       if (!(length(to) > 0)) continue;
@@ -84,6 +137,18 @@ SensorPlacementTest test_sensor_placement(const Scene& scene, const SensorPoint&
     int most = 0;
     for (const auto& [surface, count] : back_hits)
       if (count > most) most = count, out.solid_surface = surface;
+  } else if (out.through_port == 0 && out.sky_without_port == 0) {
+    // Sees neither a port nor the sky, not even aimed at a port: walk (header comment).
+    const std::uint64_t key = sensor_key(sensor);
+    for (int w = 0; w < SensorEnclosureWalks; ++w) {
+      ++out.enclosure_walks;
+      Rng rng(0, key, static_cast<std::uint64_t>(w), RandomStream::Placement);
+      const double u1 = rng.uniform(), u2 = rng.uniform();
+      const Vec3 d = has_normal ? detail::sample_cosine(n, u1, u2)
+                                : detail::sample_cosine(rng.uniform() < 0.5 ? n : n * -1.0, u1, u2);
+      if (walk_reaches_outside(scene, origin, d, rng)) return out;
+    }
+    out.placement = SensorPlacement::Enclosed;
   }
   return out;
 }

@@ -77,7 +77,8 @@ std::string building_section(const study::ResultsModel& m) {
       }
       height = format_value(lo, Precision::Length) + (hi - lo > 1e-6 ? "&#8211;" + format_value(hi, Precision::Length) : "");
     }
-    const std::size_t dropped = g.dropped_outside_rooms + g.dropped_inside_solid + g.dropped_on_cut_surface;
+    const std::size_t dropped =
+        g.dropped_outside_rooms + g.dropped_inside_solid + g.dropped_on_cut_surface + g.dropped_enclosed;
     s << "<tr><td>" << esc(g.name) << "</td><td>" << study::orientation_name(g.orientation) << "</td><td class=\"n\">"
       << g.positions_m.size() << "</td><td class=\"n\">" << (spacing > 0 ? format_value(spacing, Precision::Length) : "-")
       << "</td><td class=\"n\">"

@@ -100,6 +100,12 @@ constexpr const char* OnCutWhy =
     "a sensor on a surface has no illuminance of its own: part of what it sees is the surface's inside, and "
     "its final gather reads about 20 % relative standard error there";
 
+/// The words for enclosed sensors (engine/sensor_placement.h): inside a closed volume drawn from
+/// polygons, or in a room whose openings are all opaque.
+constexpr const char* EnclosedWords =
+    "in a closed volume no light enters (a column or solid drawn from polygons, or a room whose openings are "
+    "opaque or missing)";
+
 /// Per sensor of a planar set: whether it lies within engine::OnCut_m of an opaque surface
 /// crossing its plane inside the outline (engine/plane_cuts.h); all false for other sets.
 std::vector<bool> on_cut_flags(const engine::Scene& scene, const SensorGrid& grid) {
@@ -301,7 +307,7 @@ void check_exterior_geometry(const engine::Scene& scene, std::vector<Diagnostic>
 std::size_t PlacementCheck::dropped() const {
   std::size_t n = 0;
   for (const SensorSetPlacement& s : sets)
-    if (s.dropped) n += s.outside + s.inside_solid + s.on_cut;
+    if (s.dropped) n += s.outside + s.inside_solid + s.on_cut + s.enclosed;
   return n;
 }
 
@@ -361,7 +367,10 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
         if (!on_cut[i]) continue;
         ++set.on_cut;
       } else {
-        (tests[i].placement == engine::SensorPlacement::OutsideRooms ? set.outside : set.inside_solid)++;
+        const engine::SensorPlacement p = tests[i].placement;
+        (p == engine::SensorPlacement::OutsideRooms  ? set.outside
+         : p == engine::SensorPlacement::InsideSolid ? set.inside_solid
+                                                     : set.enclosed)++;
       }
       bad.push_back(i);
     }
@@ -369,8 +378,11 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
       std::ostringstream m;
       m << "sensor set '" << grid.name << "': " << bad.size() << " of " << grid.points.size() << " sensors lie ";
       const std::vector<std::pair<std::size_t, std::string>> kinds = {
-          {set.outside, "outside every room"}, {set.inside_solid, "inside a solid"}, {set.on_cut, OnCutWords}};
-      const bool several = (set.outside > 0) + (set.inside_solid > 0) + (set.on_cut > 0) > 1;
+          {set.outside, "outside every room"},
+          {set.inside_solid, "inside a solid"},
+          {set.enclosed, EnclosedWords},
+          {set.on_cut, OnCutWords}};
+      const bool several = (set.outside > 0) + (set.inside_solid > 0) + (set.enclosed > 0) + (set.on_cut > 0) > 1;
       std::size_t named = 0;
       for (const auto& [count, words] : kinds)
         if (count > 0) m << (named++ > 0 ? " or " : "") << words << (several ? " (" + std::to_string(count) + ")" : "");
@@ -386,6 +398,9 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
         } else if (t.placement == engine::SensorPlacement::OutsideRooms) {
           m << "sees the sky without a port in " << percent(double(t.sky_without_port) / t.rays) << " of its "
             << "hemisphere";
+        } else if (t.placement == engine::SensorPlacement::Enclosed) {
+          m << "reaches no port and no sky by " << t.enclosure_walks << " random paths of up to "
+            << engine::SensorEnclosureBounces << " bounces";
         } else {
           m << "sees only the back of '" << description.surfaces[static_cast<std::size_t>(t.solid_surface)].name
             << "' and other solids' faces";

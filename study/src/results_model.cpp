@@ -93,6 +93,7 @@ json accuracy_json(const Accuracy& a) {
 json dropped_sensors_json(const GridResult& g) {
   json j = {{"outside_rooms", g.dropped_outside_rooms}, {"inside_solid", g.dropped_inside_solid}};
   if (g.dropped_on_cut_surface > 0) j["on_cut_surface"] = g.dropped_on_cut_surface;
+  if (g.dropped_enclosed > 0) j["enclosed"] = g.dropped_enclosed;
   return j;
 }
 
@@ -451,6 +452,8 @@ struct Reader {
     g.dropped_inside_solid = count(dropped, at_grid + ".dropped_sensors", "inside_solid");
     if (dropped.is_object() && dropped.contains("on_cut_surface"))
       g.dropped_on_cut_surface = count(dropped, at_grid + ".dropped_sensors", "on_cut_surface");
+    if (dropped.is_object() && dropped.contains("enclosed"))
+      g.dropped_enclosed = count(dropped, at_grid + ".dropped_sensors", "enclosed");
     const std::string qk = at_grid + ".quantities";
     for (const json& q : array(j, at_grid, "quantities")) {
       SensorQuantity s;
@@ -729,7 +732,8 @@ bool GridResult::operator==(const GridResult& o) const {
   return name == o.name && folder == o.folder && positions_m == o.positions_m && normals == o.normals &&
          orientation == o.orientation && plan == o.plan && lattice == o.lattice && outline == o.outline &&
          openings_drawn == o.openings_drawn && dropped_outside_rooms == o.dropped_outside_rooms &&
-         dropped_inside_solid == o.dropped_inside_solid && dropped_on_cut_surface == o.dropped_on_cut_surface && quantities == o.quantities &&
+         dropped_inside_solid == o.dropped_inside_solid && dropped_on_cut_surface == o.dropped_on_cut_surface &&
+         dropped_enclosed == o.dropped_enclosed && quantities == o.quantities &&
          daylight_factor == o.daylight_factor && annual == o.annual && sun_accuracy == o.sun_accuracy && points_in_time == o.points_in_time &&
          has_illuminance_table == o.has_illuminance_table && spacing_m == o.spacing_m && verdicts == o.verdicts;
 }

@@ -222,7 +222,7 @@ void add_operated_grid(CaseResult& c, const std::string& grid, const std::string
 
 GridResult results_grid(const SensorGrid& grid, const std::string& folder, const CaseResult& c,
                         std::size_t dropped_outside_rooms, std::size_t dropped_inside_solid,
-                        std::size_t dropped_on_cut_surface) {
+                        std::size_t dropped_on_cut_surface, std::size_t dropped_enclosed) {
   GridResult g;
   g.name = grid.name;
   g.folder = folder;
@@ -237,6 +237,7 @@ GridResult results_grid(const SensorGrid& grid, const std::string& folder, const
   g.dropped_outside_rooms = dropped_outside_rooms;
   g.dropped_inside_solid = dropped_inside_solid;
   g.dropped_on_cut_surface = dropped_on_cut_surface;
+  g.dropped_enclosed = dropped_enclosed;
   // A plan (a horizontal grid, or a point set without an outline) shows every opening; an
   // elevation (a wall or rectangle grid) only those in its wall, since any other port would
   // be projected onto it as if it were in that wall.

@@ -191,11 +191,13 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     ctx.results->grids.push_back(results_grid(grid, relative_folder(report.output_dir, folder), *ctx.results,
                                               placement.sets[g].dropped ? placement.sets[g].outside : 0,
                                               placement.sets[g].dropped ? placement.sets[g].inside_solid : 0,
-                                              placement.sets[g].dropped ? placement.sets[g].on_cut : 0));
+                                              placement.sets[g].dropped ? placement.sets[g].on_cut : 0,
+                                              placement.sets[g].dropped ? placement.sets[g].enclosed : 0));
     if (placement.sets[g].dropped) {
       gj["dropped_sensors"] = {{"outside_rooms", placement.sets[g].outside},
                                {"inside_solid", placement.sets[g].inside_solid}};
       if (placement.sets[g].on_cut > 0) gj["dropped_sensors"]["on_cut_surface"] = placement.sets[g].on_cut;
+      if (placement.sets[g].enclosed > 0) gj["dropped_sensors"]["enclosed"] = placement.sets[g].enclosed;
     }
     if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
       c.write_file(join_path(folder, "coefficients_sky.mtx"), matrix_format);

@@ -140,6 +140,57 @@ sensors:
   EXPECT_EQ(off.check.sets[0].inside_solid, 1u);
 }
 
+// A column drawn from four polygons (as models from other tools draw one) is no solid, but a
+// sensor inside it is in a closed volume no light enters (engine/sensor_placement.h): refused,
+// or dropped and counted apart. Before, it read DF 0.0004 % without a word.
+std::string polygon_column(const std::string& grid_extra) {
+  return Head + Office + R"(  polygons:
+    - {name: col_s, vertices: [[2.7, 3.7, 0], [3.3, 3.7, 0], [3.3, 3.7, 3], [2.7, 3.7, 3]], material: walls}
+    - {name: col_e, vertices: [[3.3, 3.7, 0], [3.3, 4.3, 0], [3.3, 4.3, 3], [3.3, 3.7, 3]], material: walls}
+    - {name: col_n, vertices: [[3.3, 4.3, 0], [2.7, 4.3, 0], [2.7, 4.3, 3], [3.3, 4.3, 3]], material: walls}
+    - {name: col_w, vertices: [[2.7, 4.3, 0], [2.7, 3.7, 0], [2.7, 3.7, 3], [2.7, 4.3, 3]], material: walls}
+sensors:
+  grids:
+    - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5)" + grid_extra + "}\n";
+}
+
+TEST(PlacementCheck, SensorsInAColumnOfPolygonsAreRefusedAsEnclosed) {
+  const Outcome o = check_text(polygon_column(""));
+  ASSERT_EQ(o.errors.size(), 1u);
+  EXPECT_EQ(o.errors[0].rfind("20:7: sensor set 'workplane': 1 of 165 sensors lie in a closed volume no light enters "
+                              "(a column or solid drawn from polygons, or a room whose openings are opaque or missing) "
+                              "(sensor 82 at (3, 4, 0.8) m reaches no port and no sky by 1024 random paths",
+                              0),
+            0u)
+      << o.errors[0];
+  EXPECT_NE(o.errors[0].find("drop_occluded: true"), std::string::npos) << o.errors[0];
+
+  const Outcome d = check_text(polygon_column(", drop_occluded: true"));
+  ASSERT_TRUE(d.errors.empty()) << d.errors[0];
+  EXPECT_EQ(d.check.sets[0].enclosed, 1u);
+  EXPECT_EQ(d.check.sets[0].inside_solid, 0u);
+  EXPECT_EQ(d.check.dropped(), 1u);
+  ASSERT_EQ(d.grids[0].points.size(), 164u);
+  for (const SensorPoint& p : d.grids[0].points) EXPECT_FALSE(p.position.x == 3 && p.position.y == 4);
+}
+
+TEST(PlacementCheck, ARoomWithoutOpeningsIsEnclosed) {
+  // A store room beside the office with no window: its sensors can receive no daylight.
+  const Outcome o = check_text(Head + Office + R"(    - name: store
+      origin: [6, 0, 0]
+      size: [2, 2, 3]
+      materials: {floor: walls, ceiling: walls, walls: walls}
+sensors:
+  grids:
+    - {name: office_plane, room: office, height: 0.8, spacing: 1, inset: 0.5}
+    - {name: store_plane, room: store, height: 0.8, spacing: 1, inset: 0.5}
+)");
+  ASSERT_EQ(o.errors.size(), 1u);
+  EXPECT_NE(o.errors[0].find("sensor set 'store_plane': 4 of 4 sensors lie in a closed volume no light enters"),
+            std::string::npos)
+      << o.errors[0];
+}
+
 TEST(PlacementCheck, SensorsOutsideEveryRoomAreALocatedError) {
   const Outcome o = check_text(Head + Office + R"(sensors:
   points:

@@ -89,6 +89,7 @@ ResultsModel full_model() {
                                              "gather ray limit", 64};
   g.sun_accuracy = SunAccuracyReached{2.0, 1.75, 9.5, 2, 3200000, "target met", "met", 1024, 1, "target met"};
   g.dropped_on_cut_surface = 8;
+  g.dropped_enclosed = 2;
   g.daylight_factor->accuracy->near_cut_sensors = 12;
   g.daylight_factor->accuracy->near_cut_gather_rays = 1024;
   g.daylight_factor->accuracy->near_cut_largest_percent = 1.25;
@@ -222,6 +223,9 @@ TEST(ResultsModel, RoundTripsEveryField) {
   EXPECT_FALSE(changed == m);
   changed = back;
   changed.cases[1].grids[0].dropped_on_cut_surface = 0;
+  EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].grids[0].dropped_enclosed = 0;
   EXPECT_FALSE(changed == m);
   changed = back;
   changed.not_assessed.pop_back();

@@ -26,6 +26,7 @@ enum class RandomStream : std::uint32_t {
   Storage = 6,      ///< main-pass storage decisions (photon-count control)
   Gather = 7,       ///< final-gather rays from a sensor
   DirectPort = 8,   ///< port points of the direct component's port sampling
+  Placement = 9,    ///< the placement test's walks from a sensor (sensor_placement.h)
 };
 
 /// The part of a key shared by every photon of one source, hashed once: mix(mix(seed) ^ source).

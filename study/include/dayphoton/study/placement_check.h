@@ -77,6 +77,7 @@ struct SensorSetPlacement {
   std::size_t outside = 0;       ///< outside every room
   std::size_t inside_solid = 0;  ///< inside a solid
   std::size_t on_cut = 0;        ///< on a surface crossing a receiver plane (engine::OnCut_m)
+  std::size_t enclosed = 0;      ///< enclosed: no path reaches a port or the sky (engine::SensorPlacement)
   bool dropped = false;          ///< drop_occluded: the offending sensors were removed
   std::string description;       ///< one line for the log, the report and check
 };

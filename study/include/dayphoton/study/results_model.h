@@ -246,6 +246,8 @@ struct GridResult {
   std::size_t dropped_outside_rooms = 0, dropped_inside_solid = 0;
   /// On a surface crossing the work plane (placement_check.h; written only when some were).
   std::size_t dropped_on_cut_surface = 0;
+  /// In a closed volume no light enters (placement_check.h; written only when some were).
+  std::size_t dropped_enclosed = 0;
   std::vector<SensorQuantity> quantities;   ///< in the report's order
   std::optional<DaylightFactorSummary> daylight_factor;
   std::optional<AnnualSummary> annual;

@@ -62,7 +62,7 @@ void add_operated_grid(CaseResult& c, const std::string& grid, const std::string
 /// those parallel to it within ElevationWindowDistance_m).
 GridResult results_grid(const SensorGrid& grid, const std::string& folder, const CaseResult& c,
                         std::size_t dropped_outside_rooms, std::size_t dropped_inside_solid,
-                        std::size_t dropped_on_cut_surface = 0);
+                        std::size_t dropped_on_cut_surface = 0, std::size_t dropped_enclosed = 0);
 
 /// The daylight factor's statistics and uncertainty, and its value table daylight_factor.csv.
 void add_daylight_factor(GridResult& grid, const GridStatistics& statistics, const DaylightFactorUncertainty& u);
