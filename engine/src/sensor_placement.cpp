@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
+#include <atomic>
 #include <map>
 
 #include <tbb/blocked_range.h>
@@ -43,15 +45,16 @@ std::uint64_t sensor_key(const SensorPoint& sensor) {
   return key;
 }
 
-/// Whether one walk from `origin` (header comment) crosses a port or escapes to the sky within
-/// SensorEnclosureBounces bounces.
-bool walk_reaches_outside(const Scene& scene, const Vec3& origin, const Vec3& first_direction, Rng& rng) {
+/// Whether one walk from `origin` (header comment) crosses a port within SensorEnclosureBounces
+/// bounces.
+bool walk_reaches_port(const Scene& scene, const Vec3& origin, const Vec3& first_direction, Rng& rng) {
   const SceneDescription& description = scene.description();
   Ray ray{origin, first_direction};
   int crossings = 0;
   for (int bounce = 0; bounce < SensorEnclosureBounces;) {
     const std::optional<Hit> hit = scene.intersect(ray);
-    if (!hit || hit->port >= 0) return true;
+    if (!hit) return false;  // out through a gap in the drawing: no photon comes in that way
+    if (hit->port >= 0) return true;
     const MaterialType type = description.materials[static_cast<std::size_t>(hit->material)].type;
     const Vec3 d = ray.direction;
     const Vec3 facing = dot(d, hit->normal) < 0 ? hit->normal : hit->normal * -1.0;  // the side it came from
@@ -68,9 +71,27 @@ bool walk_reaches_outside(const Scene& scene, const Vec3& origin, const Vec3& fi
   return false;
 }
 
-}  // namespace
+/// Walk `w` of a sensor (header comment): its random generator and first direction.
+bool walk_from(const Scene& scene, const SensorPoint& sensor, std::uint64_t key, int w) {
+  const bool has_normal = is_finite(sensor.normal) && length(sensor.normal) > 0;
+  const Vec3 n = has_normal ? normalize(sensor.normal) : Vec3{0, 0, 1};
+  const Vec3 origin = has_normal ? sensor.position + n * (10.0 * scene.ray_epsilon_m()) : sensor.position;
+  Rng rng(0, key, static_cast<std::uint64_t>(w), RandomStream::Placement);
+  const double u1 = rng.uniform(), u2 = rng.uniform();
+  const Vec3 d = has_normal ? detail::sample_cosine(n, u1, u2)
+                            : detail::sample_cosine(rng.uniform() < 0.5 ? n : n * -1.0, u1, u2);
+  return walk_reaches_port(scene, origin, d, rng);
+}
 
-SensorPlacementTest test_sensor_placement(const Scene& scene, const SensorPoint& sensor) {
+/// The placement rays' origin of a sensor (header comment).
+Vec3 test_origin(const Scene& scene, const SensorPoint& sensor) {
+  const bool has_normal = is_finite(sensor.normal) && length(sensor.normal) > 0;
+  return has_normal ? sensor.position + normalize(sensor.normal) * (10.0 * scene.ray_epsilon_m()) : sensor.position;
+}
+
+/// Everything but the walks; `needs_walks` when the sensor saw neither a port nor the sky.
+SensorPlacementTest direct_placement(const Scene& scene, const SensorPoint& sensor, bool& needs_walks) {
+  needs_walks = false;
   SensorPlacementTest out;
   if (!is_finite(sensor.position)) return out;
   const bool has_normal = is_finite(sensor.normal) && length(sensor.normal) > 0;
@@ -82,7 +103,7 @@ SensorPlacementTest test_sensor_placement(const Scene& scene, const SensorPoint&
     directions.insert(directions.end(), down.begin(), down.end());
   }
   const SceneDescription& description = scene.description();
-  const Vec3 origin = has_normal ? sensor.position + n * (10.0 * scene.ray_epsilon_m()) : sensor.position;
+  const Vec3 origin = test_origin(scene, sensor);
   std::map<int, int> back_hits;  // surface -> rays stopped at its back
   // Follows one ray through ports and transparent surfaces; true if it crossed a port.
   auto trace = [&](const Vec3& d, bool count) {
@@ -138,28 +159,82 @@ SensorPlacementTest test_sensor_placement(const Scene& scene, const SensorPoint&
     for (const auto& [surface, count] : back_hits)
       if (count > most) most = count, out.solid_surface = surface;
   } else if (out.through_port == 0 && out.sky_without_port == 0) {
-    // Sees neither a port nor the sky, not even aimed at a port: walk (header comment).
-    const std::uint64_t key = sensor_key(sensor);
-    for (int w = 0; w < SensorEnclosureWalks; ++w) {
-      ++out.enclosure_walks;
-      Rng rng(0, key, static_cast<std::uint64_t>(w), RandomStream::Placement);
-      const double u1 = rng.uniform(), u2 = rng.uniform();
-      const Vec3 d = has_normal ? detail::sample_cosine(n, u1, u2)
-                                : detail::sample_cosine(rng.uniform() < 0.5 ? n : n * -1.0, u1, u2);
-      if (walk_reaches_outside(scene, origin, d, rng)) return out;
-    }
-    out.placement = SensorPlacement::Enclosed;
+    needs_walks = true;  // sees neither a port nor the sky, not even aimed at a port
   }
+  return out;
+}
+
+/// The walks of a sensor, in parallel: the number of walks up to and including the first that
+/// reaches a port (the same whatever the threads do: a walk is skipped only when a lower one
+/// already reached), or SensorEnclosureWalks + 1 when none does.
+int first_reaching_walk(const Scene& scene, const SensorPoint& sensor) {
+  const std::uint64_t key = sensor_key(sensor);
+  std::atomic<int> first{SensorEnclosureWalks};
+  tbb::parallel_for(tbb::blocked_range<int>(0, SensorEnclosureWalks, 16), [&](const tbb::blocked_range<int>& r) {
+    for (int w = r.begin(); w != r.end(); ++w) {
+      if (w >= first.load(std::memory_order_relaxed)) return;
+      if (walk_from(scene, sensor, key, w)) {
+        int seen = first.load();
+        while (w < seen && !first.compare_exchange_weak(seen, w)) {
+        }
+        return;
+      }
+    }
+  });
+  return first.load() + 1;
+}
+
+void finish_walks(SensorPlacementTest& out, int walks) {
+  out.enclosure_walks = std::min(walks, SensorEnclosureWalks);
+  if (walks > SensorEnclosureWalks) out.placement = SensorPlacement::Enclosed;
+}
+
+/// Whether nothing lies between two sensors' test origins (then they are in the same volume).
+bool see_each_other(const Scene& scene, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double distance_m = length(ab);
+  if (!(distance_m > 0)) return true;
+  return !scene.occluded(Ray{a, ab * (1.0 / distance_m), 0, distance_m});
+}
+
+}  // namespace
+
+SensorPlacementTest test_sensor_placement(const Scene& scene, const SensorPoint& sensor) {
+  bool needs_walks = false;
+  SensorPlacementTest out = direct_placement(scene, sensor, needs_walks);
+  if (needs_walks) finish_walks(out, first_reaching_walk(scene, sensor));
   return out;
 }
 
 std::vector<SensorPlacementTest> test_sensor_placements(const Scene& scene, const std::vector<SensorPoint>& sensors) {
   std::vector<SensorPlacementTest> out(sensors.size());
+  std::vector<char> needs_walks(sensors.size(), 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sensors.size(), 64),
                     [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i)
-                        out[i] = test_sensor_placement(scene, sensors[i]);
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                        bool walks = false;
+                        out[i] = direct_placement(scene, sensors[i], walks);
+                        needs_walks[i] = walks;
+                      }
                     });
+  // The sensors to walk from, in order: one that sees a sensor already decided (no surface
+  // between them) is in the same volume and shares its verdict; only the others walk. A grid
+  // in one closed room then walks once, not once per sensor.
+  std::vector<std::size_t> decided;
+  for (std::size_t i = 0; i < sensors.size(); ++i) {
+    if (!needs_walks[i]) continue;
+    const Vec3 origin = test_origin(scene, sensors[i]);
+    bool shared = false;
+    for (std::size_t k = 0; k < decided.size() && k < SensorEnclosureNeighbours && !shared; ++k) {
+      const std::size_t j = decided[decided.size() - 1 - k];
+      if (!see_each_other(scene, origin, test_origin(scene, sensors[j]))) continue;
+      out[i].placement = out[j].placement == SensorPlacement::Enclosed ? SensorPlacement::Enclosed : out[i].placement;
+      out[i].same_volume_as = static_cast<int>(out[j].same_volume_as >= 0 ? out[j].same_volume_as : j);
+      shared = true;
+    }
+    if (!shared) finish_walks(out[i], first_reaching_walk(scene, sensors[i]));
+    decided.push_back(i);
+  }
   return out;
 }
 

@@ -104,7 +104,7 @@ constexpr const char* OnCutWhy =
 /// polygons, or in a room whose openings are all opaque.
 constexpr const char* EnclosedWords =
     "in a closed volume no light enters (a column or solid drawn from polygons, or a room whose openings are "
-    "opaque or missing)";
+    "opaque, missing or not ports)";
 
 /// Per sensor of a planar set: whether it lies within engine::OnCut_m of an opaque surface
 /// crossing its plane inside the outline (engine/plane_cuts.h); all false for other sets.
@@ -398,8 +398,10 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
         } else if (t.placement == engine::SensorPlacement::OutsideRooms) {
           m << "sees the sky without a port in " << percent(double(t.sky_without_port) / t.rays) << " of its "
             << "hemisphere";
+        } else if (t.placement == engine::SensorPlacement::Enclosed && t.same_volume_as >= 0) {
+          m << "sees sensor " << t.same_volume_as << ", which reaches no port";
         } else if (t.placement == engine::SensorPlacement::Enclosed) {
-          m << "reaches no port and no sky by " << t.enclosure_walks << " random paths of up to "
+          m << "reaches no port by " << t.enclosure_walks << " random paths of up to "
             << engine::SensorEnclosureBounces << " bounces";
         } else {
           m << "sees only the back of '" << description.surfaces[static_cast<std::size_t>(t.solid_surface)].name

@@ -151,6 +151,40 @@ TEST(SensorPlacement, ARoomLitOnlyThroughALightPipeIsNotEnclosed) {
     }
   EXPECT_GT(walked, 50);  // the pipe's port is out of sight of nearly every sensor
   RecordProperty("most_walks", most_walks);
+  // Tested together, the sensors see each other and share the first one's verdict.
+  std::vector<SensorPoint> grid;
+  for (double x = 0.25; x < 4; x += 0.5)
+    for (double y = 0.25; y < 4; y += 0.5) grid.push_back({{x, y, 0.8}, {0, 0, 1}});
+  for (const SensorPlacementTest& t : test_sensor_placements(scene, grid)) EXPECT_EQ(t.placement, SensorPlacement::InRoom);
+}
+
+TEST(SensorPlacement, SensorsThatSeeEachOtherShareAVerdict) {
+  // A 10 x 10 grid in the closed closet and one in the office: the closet's sensors see one
+  // another, so only the first walks (all 1024 walks) and the rest share its verdict; sensors
+  // in the office that see no window (none here) would share a walked one's.
+  const Scene scene = Scene::build(office_with_polygon_column(true));
+  std::vector<SensorPoint> sensors;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) sensors.push_back({{4.55 + 0.14 * i, 6.55 + 0.14 * j, 0.8}, {0, 0, 1}});
+  sensors.push_back({{3, 2, 0.8}, {0, 0, 1}});
+  const std::vector<SensorPlacementTest> tests = test_sensor_placements(scene, sensors);
+  int walked = 0;
+  for (std::size_t k = 0; k < 100; ++k) {
+    EXPECT_EQ(tests[k].placement, SensorPlacement::Enclosed) << k;
+    if (tests[k].same_volume_as < 0) {
+      ++walked;
+      EXPECT_EQ(tests[k].enclosure_walks, SensorEnclosureWalks);
+    } else {
+      EXPECT_EQ(tests[k].same_volume_as, 0);
+      EXPECT_EQ(tests[k].enclosure_walks, 0);
+    }
+  }
+  EXPECT_EQ(walked, 1);
+  EXPECT_EQ(tests[100].placement, SensorPlacement::InRoom);
+  EXPECT_EQ(tests[100].same_volume_as, -1);
+  // The same verdicts one sensor at a time.
+  for (std::size_t k : {std::size_t{0}, std::size_t{57}, std::size_t{99}})
+    EXPECT_EQ(test_sensor_placement(scene, sensors[k]).placement, SensorPlacement::Enclosed);
 }
 
 TEST(SensorPlacement, OutsideEveryRoom) {

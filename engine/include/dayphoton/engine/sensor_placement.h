@@ -21,23 +21,27 @@
 //     never means "inside";
 //   - enclosed: no spread ray reaches a port or the sky, no ray aimed at a port's centroid
 //     reaches it, and none of SensorEnclosureWalks walks of up to SensorEnclosureBounces
-//     bounces does either. That is a sensor inside a closed volume drawn from polygons (a
+//     bounces crosses a port. That is a sensor inside a closed volume drawn from polygons (a
 //     column of four faces meeting the floor and the ceiling), or in a room whose openings
-//     are all opaque or missing: photons enter only through the ports, so such a sensor
-//     reads only what leaks through the faces' joints (measured inside a 0.6 m polygon column
-//     of the office: DF 0.0004 %). A walk goes where light could come from: straight on
+//     are all opaque, missing or not ports: photons enter only through the ports, so such a
+//     sensor reads only what leaks through the faces' joints (measured inside a 0.6 m polygon
+//     column of the office: DF 0.0004 %). A walk goes where light could come from: straight on
 //     through ports and transparent surfaces, mirror-like off mirrors and metals (a light
 //     pipe's tube), straight on or diffusely back with even odds off surfaces that may
 //     transmit (translucent, glazing systems, registered and BSDF models), diffusely
 //     (cosine-distributed, on the side it came from) off every other surface, whatever its
-//     reflectance. It reaches the outside when it crosses a port or escapes to the sky (a
-//     leak in the drawing counts as a way out, so a leaky volume is never called enclosed);
-//     the walks stop at the first that does;
+//     reflectance. Only a port crossing counts: a walk out through a gap in the drawing has
+//     found no way for photons to come in. The walks stop at the first that crosses a port.
+//     test_sensor_placements walks from a sensor only when it sees none of the last
+//     SensorEnclosureNeighbours sensors so tested (no surface between them): one it sees is in
+//     the same volume and shares that one's verdict (SensorPlacementTest::same_volume_as), so
+//     a grid in one closed room walks once;
 //   - in a room otherwise.
 // Cost: SensorPlacementRays rays (plus one per transparent surface crossed) per sensor, one per
 // port for a sensor that looks inside a solid or sees no port, and for those that still see
-// none the walks until one reaches out (a sensor in a room behind a partition: a few walks;
-// an enclosed sensor: all of them, about SensorEnclosureWalks x SensorEnclosureBounces rays).
+// none up to SensorEnclosureNeighbours visibility rays and, where none is shared, the walks
+// until one crosses a port (behind a partition: a few walks; enclosed: all of them, about
+// SensorEnclosureWalks x SensorEnclosureBounces rays, spread over the threads).
 //
 // Why the walks cannot miss a real way out in practice: with albedo ignored, a walk in a room
 // of surface area A meets an opening of area a at each bounce with a probability of about
@@ -68,6 +72,8 @@ constexpr int SensorPlacementMaxCrossings = 32;
 /// The enclosure test's walks and bounces per walk (header comment).
 constexpr int SensorEnclosureWalks = 1024;
 constexpr int SensorEnclosureBounces = 32;
+/// The sensors already tested a sensor that needs walks looks at first (header comment).
+constexpr std::size_t SensorEnclosureNeighbours = 8;
 
 enum class SensorPlacement { InRoom, OutsideRooms, InsideSolid, Enclosed };
 
@@ -78,7 +84,8 @@ struct SensorPlacementTest {
   int through_port = 0;       ///< rays that crossed a port (escaping or not)
   int back_of_solid = 0;      ///< rays stopped at the back of a solid's face
   int solid_surface = -1;     ///< inside a solid: the surface most rays stopped at the back of
-  int enclosure_walks = 0;    ///< walks traced (0: the sensor saw a port or the sky directly)
+  int enclosure_walks = 0;    ///< walks traced (0: it saw a port or the sky, or shares a verdict)
+  int same_volume_as = -1;    ///< test_sensor_placements: the walked sensor whose verdict it shares
 };
 
 SensorPlacementTest test_sensor_placement(const Scene& scene, const SensorPoint& sensor);
