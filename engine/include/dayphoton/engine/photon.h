@@ -49,7 +49,7 @@ inline constexpr std::uint8_t IndirectPathClasses =
 /// Sources a photon record can name (20 bits).
 inline constexpr std::uint32_t MaxPhotonSources = 1u << 20;
 /// The largest absolute coordinate of a scene's geometry, metres: the positions are stored as
-/// floats in the model's coordinates, rounded by up to 2^-24 of a coordinate (3 mm at 1e5 m,
+/// floats in the model's coordinates, rounded by up to 2^-24 of a coordinate (6 mm at 1e5 m,
 /// 0.25 m at a UTM northing of 4.2e6 m). A 6 x 8 m room with walls of reflectance 0.5 read its
 /// daylight factor to within its noise at 1.5e5 m, 1-2 % high at 3e5 m and 2-3 times too high
 /// at 4.2e6 m. Scene::build refuses geometry beyond this limit.
