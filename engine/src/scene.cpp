@@ -15,6 +15,7 @@
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/engine/bsdf_material.h"
 #include "dayphoton/engine/port_facing.h"
+#include "dayphoton/engine/photon.h"
 #include "embree_accel.h"
 #include "klems_bsdf.h"
 
@@ -28,8 +29,12 @@ struct Scene::Impl {
   std::vector<int> surface_scatterer;  ///< per surface: outdoor scatterer index or -1
   PortSet scatterers;
   Bounds3 bounds;
-  double scale_m = 1;      ///< max(1 m, largest absolute coordinate)
+  double scale_m = 1;      ///< max(1 m, largest absolute coordinate relative to origin_m)
   double epsilon_m = 1e-5;
+  /// Embree's local origin (scene.h, "Precision"): the centre of the bounding box, rounded
+  /// to a whole metre, when that lies farther from (0, 0, 0) than the scene's size, else
+  /// (0, 0, 0); Embree holds the vertices and rays relative to it.
+  Vec3 origin_m{0, 0, 0};
   std::unique_ptr<EmbreeAccel> accel;
 };
 
@@ -117,11 +122,44 @@ Scene Scene::build_surfaces(const SceneDescription& description) {
         }
   const double size_m = lo.x <= hi.x ? std::max(1.0, length(hi - lo)) : 1.0;
   const double min_area_m2 = DegenerateAreaFraction * size_m * size_m;
+  // A model drawn away from its origin (farther than its own size) gets a local origin
+  // (scene.h, "Precision"); one drawn around it keeps the identity, bit for bit.
+  if (lo.x <= hi.x && length((lo + hi) * 0.5) > size_m) {
+    const Vec3 centre = (lo + hi) * 0.5;
+    impl->origin_m = {std::round(centre.x), std::round(centre.y), std::round(centre.z)};
+    max_abs_m = 0;
+    for (int k = 0; k < 3; ++k)
+      max_abs_m = std::max({max_abs_m, std::abs(lo[k] - impl->origin_m[k]),
+                            std::abs(hi[k] - impl->origin_m[k])});
+  }
   impl->scale_m = std::max(1.0, max_abs_m);
   impl->epsilon_m = RayEpsilonFraction * impl->scale_m;
 
   // Validate everything first (Embree would drop bad primitives silently), then report all.
   Diagnostics diagnostics;
+  // Photon positions are floats in the model's coordinates (photon.h): refuse geometry so far
+  // from the origin that they lose the precision of the estimates, at its farthest surface.
+  {
+    double farthest_m = 0;
+    std::size_t farthest = surfaces.size();
+    for (std::size_t i = 0; i < surfaces.size(); ++i)
+      for (const auto& p : surfaces[i].vertices)
+        if (is_finite(p))
+          for (int k = 0; k < 3; ++k)
+            if (std::abs(p[k]) > farthest_m) farthest_m = std::abs(p[k]), farthest = i;
+    if (farthest_m > PhotonCoordinateLimit_m) {
+      std::ostringstream message;
+      message << describe(surfaces[farthest], farthest) << " lies " << farthest_m
+              << " m from the coordinates' origin (survey or UTM coordinates?): photon "
+                 "positions are single precision, which beyond "
+              << PhotonCoordinateLimit_m
+              << " m reads the daylight wrong by more than its noise; move the model near "
+                 "the origin (in the tool that wrote it, a mesh's 'translate', or a RADIANCE "
+                 "'!xform -t' line around the scene files); 'north' and 'utm_zone' still "
+                 "orient it";
+      diagnostics.error(surfaces[farthest].location, message.str());
+    }
+  }
   const int material_count = static_cast<int>(impl->description.materials.size());
   std::vector<std::vector<std::array<std::uint32_t, 3>>> triangulation(surfaces.size());
   for (std::size_t i = 0; i < surfaces.size(); ++i) {
@@ -199,9 +237,10 @@ Scene Scene::build_surfaces(const SceneDescription& description) {
     const Surface& s = surfaces[i];
     const auto base = static_cast<std::uint32_t>(vertices_xyz.size() / 3);
     for (const auto& p : s.vertices) {
-      vertices_xyz.push_back(static_cast<float>(p.x));
-      vertices_xyz.push_back(static_cast<float>(p.y));
-      vertices_xyz.push_back(static_cast<float>(p.z));
+      const Vec3 local = p - impl->origin_m;
+      vertices_xyz.push_back(static_cast<float>(local.x));
+      vertices_xyz.push_back(static_cast<float>(local.y));
+      vertices_xyz.push_back(static_cast<float>(local.z));
     }
     for (const auto& t : triangulation[i]) {
       SceneTriangle tri;
@@ -244,7 +283,9 @@ Scene Scene::build_surfaces(const SceneDescription& description) {
 
 std::optional<Hit> Scene::intersect(const Ray& ray) const {
   AccelHit raw;
-  if (!m_impl->accel->intersect(ray, raw)) return std::nullopt;
+  Ray local = ray;
+  local.origin = ray.origin - m_impl->origin_m;
+  if (!m_impl->accel->intersect(local, raw)) return std::nullopt;
   const SceneTriangle& tri = m_impl->triangles[raw.primitive];
   Hit hit;
   hit.t = raw.t;
@@ -271,7 +312,11 @@ std::optional<Hit> Scene::intersect(const Ray& ray) const {
   return hit;
 }
 
-bool Scene::occluded(const Ray& ray) const { return m_impl->accel->occluded(ray); }
+bool Scene::occluded(const Ray& ray) const {
+  Ray local = ray;
+  local.origin = ray.origin - m_impl->origin_m;
+  return m_impl->accel->occluded(local);
+}
 
 void Scene::intersect_batch(const Ray* rays, std::size_t count, std::optional<Hit>* hits) const {
   for (std::size_t i = 0; i < count; ++i) hits[i] = intersect(rays[i]);

@@ -72,6 +72,32 @@ std::vector<SensorPoint> outline_probes(const SensorGrid& grid) {
   return probes;
 }
 
+/// The warning for sensors in a room that see the sky through a gap that is no port (header):
+/// light enters only through ports, so what comes through the gap is not counted.
+void check_sky_through_gaps(const SensorGrid& grid, const std::vector<engine::SensorPlacementTest>& tests,
+                            double north_deg, std::vector<Diagnostic>& warnings) {
+  std::size_t count = 0, largest = tests.size();
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    const engine::SensorPlacementTest& t = tests[i];
+    if (t.placement != engine::SensorPlacement::InRoom || t.sky_without_port == 0) continue;
+    ++count;
+    if (largest == tests.size() || t.sky_without_port * tests[largest].rays > tests[largest].sky_without_port * t.rays)
+      largest = i;
+  }
+  if (count == 0) return;
+  const engine::SensorPlacementTest& t = tests[largest];
+  warnings.push_back(warning_at(
+      grid.location,
+      "sensor set '" + grid.name + "': " + std::to_string(count) + " of " + std::to_string(tests.size()) +
+          " sensors see the sky through an opening that is no port (sensor " + std::to_string(largest) + " at " +
+          point_text(project::world_to_model(grid.points[largest].position, north_deg)) + " m in " +
+          percent(double(t.sky_without_port) / t.rays) +
+          " of its hemisphere): light enters only through ports, so the light through that gap is not counted "
+          "and these sensors read low. Close the gap, or make the opening a port (a polygon with 'port: true' "
+          "of an 'opening' material, a glass aperture in a Honeybee face, a RADIANCE glass or a modifier "
+          "listed under 'ports')"));
+}
+
 /// The warning for a receiver-plane grid whose outline reaches outside every room (header).
 void check_outline(const engine::Scene& scene, const SensorGrid& grid, double north_deg,
                    std::vector<Diagnostic>& warnings) {
@@ -443,6 +469,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
                                                    "to leave them out"));
       }
     }
+    check_sky_through_gaps(grid, tests, north_deg, out.warnings);
     check_outline(scene, grid, north_deg, out.warnings);
     out.sets.push_back(std::move(set));
   }

@@ -560,5 +560,54 @@ geometry:
   EXPECT_TRUE(shade.check.warnings.empty()) << warning_text(shade.check.warnings[0]);
 }
 
+// A room drawn from polygons with a 2 x 1 m gap in its east wall and a glazed south window:
+// light enters only through ports, so the gap's light is not counted. A sensor facing the
+// gap (its sky component through it under the CIE overcast sky, by quadrature: 5.8 %)
+// read only the window's light, with no word (RADIANCE scenes and OBJ rooms with an opening
+// left as a hole did the same); now a located warning at the set. The same room with the
+// gap closed gives none.
+std::string room_with_east_gap(bool gap) {
+  std::string text = Head + R"(geometry:
+  polygons:
+    - {name: floor, material: walls, vertices: [[0, 0, 0], [6, 0, 0], [6, 8, 0], [0, 8, 0]]}
+    - {name: ceiling, material: walls, vertices: [[0, 0, 3], [6, 0, 3], [6, 8, 3], [0, 8, 3]]}
+    - {name: west, material: walls, vertices: [[0, 0, 0], [0, 8, 0], [0, 8, 3], [0, 0, 3]]}
+    - {name: north, material: walls, vertices: [[0, 8, 0], [6, 8, 0], [6, 8, 3], [0, 8, 3]]}
+    - {name: south_low, material: walls, vertices: [[0, 0, 0], [6, 0, 0], [6, 0, 0.9], [0, 0, 0.9]]}
+    - {name: south_high, material: walls, vertices: [[0, 0, 2.4], [6, 0, 2.4], [6, 0, 3], [0, 0, 3]]}
+    - {name: south_left, material: walls, vertices: [[0, 0, 0.9], [1, 0, 0.9], [1, 0, 2.4], [0, 0, 2.4]]}
+    - {name: south_right, material: walls, vertices: [[5, 0, 0.9], [6, 0, 0.9], [6, 0, 2.4], [5, 0, 2.4]]}
+    - {name: window, material: glazing, port: true, vertices: [[1, 0, 0.9], [5, 0, 0.9], [5, 0, 2.4], [1, 0, 2.4]]}
+    - {name: east_low, material: walls, vertices: [[6, 0, 0], [6, 8, 0], [6, 8, 1], [6, 0, 1]]}
+    - {name: east_high, material: walls, vertices: [[6, 0, 2], [6, 8, 2], [6, 8, 3], [6, 0, 3]]}
+    - {name: east_left, material: walls, vertices: [[6, 0, 1], [6, 3, 1], [6, 3, 2], [6, 0, 2]]}
+    - {name: east_right, material: walls, vertices: [[6, 5, 1], [6, 8, 1], [6, 8, 2], [6, 5, 2]]}
+)";
+  if (!gap) text += "    - {name: east_gap, material: walls, vertices: [[6, 3, 1], [6, 5, 1], [6, 5, 2], [6, 3, 2]]}\n";
+  text += R"(sensors:
+  points:
+    - name: probes
+      points: [[3, 6, 0.8, 0, 0, 1], [4.5, 4, 1.5, 1, 0, 0]]
+)";
+  return text;
+}
+
+TEST(PlacementCheck, SensorsSeeingTheSkyThroughAGapThatIsNoPortAreALocatedWarning) {
+  const Outcome o = check_text(room_with_east_gap(true));
+  ASSERT_TRUE(o.errors.empty()) << o.errors[0];
+  ASSERT_EQ(o.check.warnings.size(), 1u);
+  EXPECT_EQ(o.check.warnings[0].severity, Severity::Warning);
+  const std::string text = warning_text(o.check.warnings[0]);
+  EXPECT_EQ(text.rfind("23:7: sensor set 'probes': ", 0), 0u) << text;
+  EXPECT_NE(text.find("sensors see the sky through an opening that is no port (sensor 1 at (4.5, 4, 1.5) m in "),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("the light through that gap is not counted"), std::string::npos) << text;
+
+  const Outcome closed = check_text(room_with_east_gap(false));
+  ASSERT_TRUE(closed.errors.empty()) << closed.errors[0];
+  EXPECT_TRUE(closed.check.warnings.empty()) << closed.check.warnings[0].message;
+}
+
 }  // namespace
 }  // namespace dayphoton::study

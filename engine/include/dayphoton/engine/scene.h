@@ -23,16 +23,22 @@
 // test finds the sky decisively on one side, ordinary surfaces otherwise (the scene is built
 // twice); description() then holds the decision.
 //
-// Precision: Embree intersects in single precision. The hit distance t is then refined in
-// double precision against the hit triangle's plane (double-precision vertices), so
-// Hit::position lies on the surface to about 1e-15 relative, not 1e-7.
+// Precision: Embree intersects in single precision, so it holds the vertices and the rays'
+// origins relative to a local origin, the centre of the scene's bounding box (rounded to a
+// whole metre) when that centre lies farther from (0, 0, 0) than the box's diagonal (a
+// model drawn around the origin keeps the identity, so its rays are bit for bit those of
+// before): a model drawn 1 km or 500 km from its coordinates' origin (site plans,
+// survey and UTM coordinates) keeps the precision of one drawn at the origin. Without it a
+// 6 x 8 m black room 1 km out read its sky component 1.2 % low and 10 km out 12 % low, and
+// 30 km out its sensors saw the sky through the walls. The hit distance t is then refined in
+// double precision against the hit triangle's plane (double-precision vertices, world
+// coordinates), so Hit::position lies on the surface to about 1e-15 relative, not 1e-7.
 //
 // Self-intersection avoidance: a new ray from a hit point starts at
 // offset_ray_origin(hit.position, hit.normal, direction) with tmin = 0. The offset is
-// ray_epsilon_m() = 1e-5 x max(1 m, largest absolute coordinate of the scene): about 100
-// times Embree's single-precision error at that coordinate size (2^-23 = 1.2e-7 relative),
-// and 0.1 mm for an office, far below any photometric length scale. Scenes in projected
-// coordinates (UTM, 1e5..1e6 m) should be moved near the origin before building.
+// ray_epsilon_m() = 1e-5 x max(1 m, largest absolute coordinate relative to the local
+// origin): about 100 times Embree's single-precision error at that coordinate size (2^-23 =
+// 1.2e-7 relative), and 0.1 mm for an office, far below any photometric length scale.
 //
 // Thread safety: a built Scene is immutable; intersect/occluded may be called from any
 // number of threads at once.

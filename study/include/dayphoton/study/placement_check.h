@@ -16,6 +16,13 @@
 //
 // And it warns (located, printed by `check`, written to run.log and the report's notes) where
 // the numbers would be low without an error:
+//   - sensors in a room (below the "outside every room" share) from which some placement
+//     rays reach the sky without crossing a port: light enters only through ports, so what
+//     comes through such a gap (a RADIANCE or OBJ room with an opening left as a hole, a
+//     Honeybee face hole without an aperture, a leaky model) is not counted. A sensor facing
+//     a 2 x 1 m gap in a black room (sky component 5.8 % through it) read only the window's
+//     light. Named once per set, with its count and the sensor seeing most sky that way; a
+//     gap under about one placement ray's share (1/64 of the hemisphere) can go unseen;
 //   - a receiver-plane grid (horizontal room or polygon grid) whose outline reaches outside
 //     every room: the plane counts the photons crossing it inside the outline, and none cross
 //     beyond the walls, so the sensors within a kernel radius of that part read low (an
