@@ -725,6 +725,10 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
                          const std::vector<SensorPoint>& sensors,
                          const CoefficientOptions& options, DaylightCoefficients& out, SensorRange rows) {
   const std::vector<Vec3>& sky_bins = options.photon_sky_bin_radiance_rgb;
+  // The gathered rows' photon part on the sky from the gather's own rays (final_gather.h).
+  std::optional<GatherOnSky> gather_sky;
+  if (!sky_bins.empty() && options.photon_sky_ratios) gather_sky.emplace(GatherOnSky{*options.photon_sky_ratios, sky_bins});
+  const GatherOnSky* on_sky = gather_sky ? &*gather_sky : nullptr;
   if (!photons.gather()) {
     // With the photon part on the sky: the ratio-weighted estimate from the same lookups.
     DaylightCoefficients weighted;
@@ -733,11 +737,12 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
     rows = rows.within(sensors.size());
     const std::vector<std::size_t> near =
         gather ? sensors_near_cuts(*photons.plane(), sensors, rows) : std::vector<std::size_t>{};
+    GatheredCoefficients g;
     if (!near.empty()) {
       // The sensors next to a cut (header comment): their rows replaced by the final gather's.
       // From the sensor's position about its normal, the plane's (SensorGrid::planar).
-      const GatheredCoefficients g = gather_photon_coefficients_at(scene, materials, sources, gather->all(), sensors,
-                                                                   options.gather, &gather->groups(), near);
+      g = gather_photon_coefficients_at(scene, materials, sources, gather->all(), sensors, options.gather,
+                                        &gather->groups(), near, on_sky);
       const std::size_t n = out.sources;
       for (std::size_t r = 0; r < near.size(); ++r)
         for (std::size_t p = 0; p < n; ++p) {
@@ -747,16 +752,17 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
           out.photon_variance[i] = g.variance[r * n + p];
         }
     }
-    // The gathered rows take their basis sum (photon_part_on_sky.h).
-    if (!sky_bins.empty()) out.photon_on_sky = photon_part_on_sky_of(photons, sensors, out, &weighted, sky_bins, rows);
+    // The gathered rows take the gather's estimate on the sky (photon_part_on_sky.h).
+    if (!sky_bins.empty())
+      out.photon_on_sky = photon_part_on_sky_of(photons, sensors, out, &weighted, sky_bins, rows, &g);
     return;
   }
   GatheredCoefficients g = gather_photon_coefficients(scene, materials, sources, photons.all(), sensors, options.gather,
-                                                      &photons.groups(), rows);
+                                                      &photons.groups(), rows, on_sky);
   out.caustic = std::move(g.caustic);
   out.global = std::move(g.global);
   out.photon_variance = std::move(g.variance);
-  if (!sky_bins.empty()) out.photon_on_sky = photon_part_on_sky_of(photons, sensors, out, nullptr, sky_bins, rows);
+  if (!sky_bins.empty()) out.photon_on_sky = photon_part_on_sky_of(photons, sensors, out, nullptr, sky_bins, rows, &g);
 }
 
 }  // namespace dayphoton::engine

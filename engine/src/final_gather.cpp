@@ -174,16 +174,38 @@ class GatherVariance {
   SparseSums m_ray_group, m_run_group, m_sensor_group;
 };
 
+/// The continuous sky of a GatherOnSky, per source (final_gather.h, "The continuous sky").
+struct SkyTerms {
+  const SkyRatios* ratios = nullptr;
+  std::vector<int> bin;                 ///< per source: its sky bin, -1 for a sun disc (ratio 1)
+  std::vector<double> bin_luminance;    ///< per source: lum(L_p)
+  double ratio(std::size_t source, const Vec3& toward_sky) const {
+    return bin[source] < 0 ? 1.0 : ratios->ratio(static_cast<std::size_t>(bin[source]), toward_sky);
+  }
+};
+
+struct SensorSums {
+  std::vector<Vec3> caustic, global;
+  std::vector<NeighbourPhoton> found;
+  GatherVariance* variance = nullptr;
+  /// With a GatherOnSky: per source, the ratio-weighted caustic + global (C'_p), and the
+  /// variance of its sky-weighted terms.
+  const SkyTerms* sky = nullptr;
+  std::vector<Vec3> on_sky;
+  GatherVariance* on_sky_variance = nullptr;
+};
+
 /// Add weight (.) sum_j K Phi_j of the disc of `bandwidth` photons at `at` on the side
-/// `side` to per_source[photon source] (the contribution estimate, uniform kernel,
-/// next-neighbour radius: density_estimate.h).
+/// `side` to sums.global[photon source] (the contribution estimate, uniform kernel,
+/// next-neighbour radius: density_estimate.h), and each term times the photon's sky ratio to
+/// sums.on_sky (final_gather.h, "The continuous sky").
 void add_contributions(const PhotonMap& map, const Vec3& at, const Vec3& side, std::size_t bandwidth,
-                       const Vec3& weight, std::vector<NeighbourPhoton>& found, std::vector<Vec3>& per_source,
-                       GatherVariance* variance) {
+                       const Vec3& weight, SensorSums& sums) {
   PhotonFilter filter;
   filter.path_classes = AllPathClasses;
   filter.check_normal = true;
   filter.normal = side;
+  std::vector<NeighbourPhoton>& found = sums.found;
   map.nearest(at, neighbours_needed(bandwidth, KernelRadius::NextNeighbour), std::numeric_limits<double>::infinity(),
               filter, found);
   const KernelDisc disc = kernel_disc(found, bandwidth, KernelRadius::NextNeighbour, std::numeric_limits<double>::infinity());
@@ -192,20 +214,21 @@ void add_contributions(const PhotonMap& map, const Vec3& at, const Vec3& side, s
   const double k = 1.0 / (Pi * disc.radius_m * disc.radius_m);
   for (std::size_t j = 0; j < disc.photon_count; ++j) {
     const Photon& ph = map.photons()[found[j].index];
-    if (ph.source >= per_source.size())
+    if (ph.source >= sums.global.size())
       throw std::invalid_argument("final gather: a photon of source " + std::to_string(ph.source) + " but " +
-                                  std::to_string(per_source.size()) + " sources");
+                                  std::to_string(sums.global.size()) + " sources");
     const Vec3 term = mul(weight, ph.flux_rgb()) * k;
-    per_source[ph.source] += term;
-    if (variance) variance->add_photon(found[j].index, ph.source, luminance_of(term));
+    sums.global[ph.source] += term;
+    if (sums.variance) sums.variance->add_photon(found[j].index, ph.source, luminance_of(term));
+    if (sums.sky) {
+      const Vec3 weighted = term * ph.sky_ratio();
+      sums.on_sky[ph.source] += weighted;
+      if (sums.on_sky_variance)
+        sums.on_sky_variance->add_photon(found[j].index, ph.source,
+                                         luminance_of(weighted) * sums.sky->bin_luminance[ph.source]);
+    }
   }
 }
-
-struct SensorSums {
-  std::vector<Vec3> caustic, global;
-  std::vector<NeighbourPhoton> found;
-  GatherVariance* variance = nullptr;
-};
 
 /// One gather path from `origin` along `direction`, weight `weight` (1 / N per channel).
 void gather_path(const Scene& scene, const std::vector<Material>& materials, const SourceSet& sources,
@@ -222,6 +245,15 @@ void gather_path(const Scene& scene, const std::vector<Material>& materials, con
         if (p >= 0) {
           sums.caustic[static_cast<std::size_t>(p)] += weight * Pi;
           if (sums.variance) sums.variance->add_path(static_cast<std::uint32_t>(p), luminance_of(weight * Pi));
+          if (sums.sky) {
+            // The sky's own radiance in the direction the path leaves by (its ratio to L_p).
+            const std::size_t q = static_cast<std::size_t>(p);
+            const Vec3 weighted = weight * (Pi * sums.sky->ratio(q, direction));
+            sums.on_sky[q] += weighted;
+            if (sums.on_sky_variance)
+              sums.on_sky_variance->add_path(static_cast<std::uint32_t>(p),
+                                             luminance_of(weighted) * sums.sky->bin_luminance[q]);
+          }
         }
       }
       return;
@@ -238,12 +270,9 @@ void gather_path(const Scene& scene, const std::vector<Material>& materials, con
     const Vec3 side = hit->front_face ? hit->normal : hit->normal * -1.0;
     const Vec3 rho_d = material.diffuse_reflectance();
     const Vec3 tau_d = material.diffuse_transmittance();
-    if (max_component(rho_d) > 0)
-      add_contributions(map, hit->position, side, options.bandwidth, mul(weight, rho_d), sums.found, sums.global,
-                        sums.variance);
+    if (max_component(rho_d) > 0) add_contributions(map, hit->position, side, options.bandwidth, mul(weight, rho_d), sums);
     if (max_component(tau_d) > 0)
-      add_contributions(map, hit->position, side * -1.0, options.bandwidth, mul(weight, tau_d), sums.found,
-                        sums.global, sums.variance);
+      add_contributions(map, hit->position, side * -1.0, options.bandwidth, mul(weight, tau_d), sums);
     // Specular, glossy and straight parts: follow one sampled event (the diffuse parts are in
     // the lookups above). Reciprocity lets the backward path use the forward sampling.
     const double u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
@@ -320,7 +349,7 @@ namespace {
 GatheredCoefficients gather_rows(const Scene& scene, const std::vector<Material>& materials, const SourceSet& sources,
                                  const PhotonMap& surface_photons, const std::vector<SensorPoint>& sensors,
                                  const GatherOptions& options, const PhotonGroups* groups,
-                                 const std::vector<std::size_t>& which) {
+                                 const std::vector<std::size_t>& which, const GatherOnSky* on_sky) {
   if (options.rays_per_sensor < 1 || options.bandwidth < 1)
     throw std::invalid_argument("final gather: at least 1 ray per sensor and 1 photon per lookup are needed");
   if (materials.size() < scene.description().materials.size())
@@ -348,15 +377,44 @@ GatheredCoefficients gather_rows(const Scene& scene, const std::vector<Material>
     out.variance.assign(which.size() * n_src, 0.0);
     out.fixed_photon_variance.assign(which.size() * n_src, 0.0);
   }
+  SkyTerms sky;
+  if (on_sky) {
+    if (on_sky->bin_radiance_rgb.size() != n_src)
+      throw std::invalid_argument("final gather: " + std::to_string(on_sky->bin_radiance_rgb.size()) +
+                                  " bin radiances for " + std::to_string(n_src) + " sources");
+    sky.ratios = &on_sky->ratios;
+    for (std::size_t p = 0; p < n_src; ++p) {
+      const DistantSource& source = sources[p];
+      const int bin = source.kind == SourceKind::SkyBin ? std::max(0, source.bin) : -1;
+      if (bin >= 0 && std::size_t(bin) >= on_sky->ratios.bins())
+        throw std::invalid_argument("final gather: sky ratios of " + std::to_string(on_sky->ratios.bins()) +
+                                    " bins for sky bin " + std::to_string(bin));
+      sky.bin.push_back(bin);
+      sky.bin_luminance.push_back(luminance_of(on_sky->bin_radiance_rgb[p]));
+    }
+    out.on_sky.assign(which.size(), Vec3{});
+    if (groups) out.on_sky_variance.assign(which.size(), 0.0);
+  }
   // Scratch of the variance per thread (sized by the groups, reset after each sensor, so
-  // which thread runs a sensor changes nothing).
-  tbb::enumerable_thread_specific<std::unique_ptr<GatherVariance>> scratch;
+  // which thread runs a sensor changes nothing): the basis's, and the continuous sky's with
+  // its terms already sky-weighted (no weights).
+  const std::vector<double> no_weights;
+  struct Scratch {
+    std::unique_ptr<GatherVariance> basis, on_sky;
+  };
+  tbb::enumerable_thread_specific<Scratch> scratch;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size()), [&](const tbb::blocked_range<std::size_t>& range) {
     SensorSums sums;
+    if (on_sky) sums.sky = &sky;
+    std::vector<double> sky_row, sky_fixed;
     if (groups) {
-      std::unique_ptr<GatherVariance>& v = scratch.local();
-      if (!v) v = std::make_unique<GatherVariance>(*groups, n_src, k, options.variance_weights);
-      sums.variance = v.get();
+      Scratch& v = scratch.local();
+      if (!v.basis) v.basis = std::make_unique<GatherVariance>(*groups, n_src, k, options.variance_weights);
+      sums.variance = v.basis.get();
+      if (on_sky) {
+        if (!v.on_sky) v.on_sky = std::make_unique<GatherVariance>(*groups, n_src, k, no_weights);
+        sums.on_sky_variance = v.on_sky.get();
+      }
     }
     for (std::size_t at_row = range.begin(); at_row != range.end(); ++at_row) {
       const std::size_t s = which[at_row];
@@ -369,6 +427,7 @@ GatheredCoefficients gather_rows(const Scene& scene, const std::vector<Material>
       const Vec3 origin = sensors[s].position + normal * scene.ray_epsilon_m();
       sums.caustic.assign(n_src, Vec3{});
       sums.global.assign(n_src, Vec3{});
+      if (on_sky) sums.on_sky.assign(n_src, Vec3{});
       for (int i = 0; i < k; ++i)
         for (int j = 0; j < k; ++j) {
           const std::uint64_t ray = static_cast<std::uint64_t>(i) * static_cast<std::uint64_t>(k) + static_cast<std::uint64_t>(j);
@@ -381,6 +440,7 @@ GatheredCoefficients gather_rows(const Scene& scene, const std::vector<Material>
           const Vec3 w = normalize(frame.to_world({r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1.0 - u1))}));
           gather_path(scene, materials, sources, surface_photons, effective, origin, w, ray_weight, rng, sums);
           if (sums.variance) sums.variance->end_ray();
+          if (sums.on_sky_variance) sums.on_sky_variance->end_ray();
         }
       if (sums.variance) {
         double* row = out.variance.data() + at_row * n_src;
@@ -389,6 +449,20 @@ GatheredCoefficients gather_rows(const Scene& scene, const std::vector<Material>
         for (std::size_t p = 0; p < n_src; ++p) {
           row[p] = std::max(0.0, row[p]);
           fixed[p] = std::clamp(fixed[p], 0.0, row[p]);
+        }
+      }
+      if (on_sky) {
+        // E = sum_p L_p C'_p; its variance the sum of the sources' (their terms sky-weighted).
+        Vec3 e{0, 0, 0};
+        for (std::size_t p = 0; p < n_src; ++p) e += mul(sums.on_sky[p], on_sky->bin_radiance_rgb[p]);
+        out.on_sky[at_row] = e;
+        if (sums.on_sky_variance) {
+          sky_row.assign(n_src, 0.0);
+          sky_fixed.assign(n_src, 0.0);
+          sums.on_sky_variance->end_sensor(sky_row.data(), sky_fixed.data());
+          double v = 0;
+          for (std::size_t p = 0; p < n_src; ++p) v += std::max(0.0, sky_row[p]);
+          out.on_sky_variance[at_row] = v;
         }
       }
       const auto at = static_cast<std::ptrdiff_t>(at_row * n_src);
@@ -405,19 +479,19 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene, const std::v
                                                 const SourceSet& sources, const PhotonMap& surface_photons,
                                                 const std::vector<SensorPoint>& sensors,
                                                 const GatherOptions& options, const PhotonGroups* groups,
-                                                SensorRange rows) {
+                                                SensorRange rows, const GatherOnSky* on_sky) {
   rows = rows.within(sensors.size());
   std::vector<std::size_t> which(rows.size());
   for (std::size_t r = 0; r < which.size(); ++r) which[r] = rows.begin + r;
-  return gather_rows(scene, materials, sources, surface_photons, sensors, options, groups, which);
+  return gather_rows(scene, materials, sources, surface_photons, sensors, options, groups, which, on_sky);
 }
 
 GatheredCoefficients gather_photon_coefficients_at(const Scene& scene, const std::vector<Material>& materials,
                                                 const SourceSet& sources, const PhotonMap& surface_photons,
                                                 const std::vector<SensorPoint>& sensors,
                                                 const GatherOptions& options, const PhotonGroups* groups,
-                                                const std::vector<std::size_t>& which) {
-  return gather_rows(scene, materials, sources, surface_photons, sensors, options, groups, which);
+                                                const std::vector<std::size_t>& which, const GatherOnSky* on_sky) {
+  return gather_rows(scene, materials, sources, surface_photons, sensors, options, groups, which, on_sky);
 }
 
 }  // namespace dayphoton::engine

@@ -45,7 +45,8 @@ void set_basis_row(PhotonOnSky& on_sky, std::size_t row, const DaylightCoefficie
 
 PhotonOnSky photon_part_on_sky_of(const GridPhotons& photons, const std::vector<SensorPoint>& sensors,
                                   const DaylightCoefficients& basis, const DaylightCoefficients* weighted,
-                                  const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows) {
+                                  const std::vector<Vec3>& bin_radiance_rgb, SensorRange rows,
+                                  const GatheredCoefficients* gathered) {
   rows = rows.within(sensors.size());
   const std::size_t n = basis.sources, m = rows.size();
   auto holds = [&](const DaylightCoefficients& c) {
@@ -59,16 +60,37 @@ PhotonOnSky photon_part_on_sky_of(const GridPhotons& photons, const std::vector<
                                 std::to_string(bin_radiance_rgb.size()) + " bin radiances" +
                                 (weighted ? "" : ", and no ratio-weighted estimate"));
   const std::vector<double> luminance = luminances(bin_radiance_rgb);
-  // Which rows keep the basis sum: those a final gather estimates (header comment).
-  std::vector<char> on_basis(m, photons.gather() ? 1 : 0);
-  if (!photons.gather() && photons.near_cut_gather())
-    for (const std::size_t s : sensors_near_cuts(*photons.plane(), sensors, rows)) on_basis[s - rows.begin] = 1;
+  // The rows a final gather estimates, in the gather's order (header comment).
+  std::vector<std::size_t> gathered_rows;
+  if (photons.gather()) {
+    gathered_rows.resize(m);
+    for (std::size_t r = 0; r < m; ++r) gathered_rows[r] = r;
+  } else if (photons.near_cut_gather()) {
+    for (const std::size_t s : sensors_near_cuts(*photons.plane(), sensors, rows)) gathered_rows.push_back(s - rows.begin);
+  }
+  const bool gather_on_sky = gathered && !gathered->on_sky.empty();
+  if (gather_on_sky &&
+      (gathered->on_sky.size() != gathered_rows.size() || gathered->on_sky_variance.size() != gathered_rows.size()))
+    throw std::invalid_argument("photon part on the sky: the gather's estimate on the sky has " +
+                                std::to_string(gathered->on_sky.size()) + " rows and " +
+                                std::to_string(gathered->on_sky_variance.size()) + " variances for " +
+                                std::to_string(gathered_rows.size()) + " gathered rows");
+  std::vector<char> by_gather(m, 0);
+  for (const std::size_t r : gathered_rows) by_gather[r] = 1;
   PhotonOnSky out;
   out.irradiance.assign(m, Vec3{0, 0, 0});
   out.variance.assign(m, 0.0);
-  for (std::size_t r = 0; r < m; ++r) {
-    reduce_row(on_basis[r] ? basis : *weighted, r, bin_radiance_rgb, luminance, out.irradiance[r], out.variance[r]);
-    if (on_basis[r]) ++out.basis_rows;
+  for (std::size_t r = 0; r < m; ++r)
+    if (!by_gather[r]) reduce_row(*weighted, r, bin_radiance_rgb, luminance, out.irradiance[r], out.variance[r]);
+  for (std::size_t i = 0; i < gathered_rows.size(); ++i) {
+    const std::size_t r = gathered_rows[i];
+    if (gather_on_sky) {
+      out.irradiance[r] = gathered->on_sky[i];
+      out.variance[r] = gathered->on_sky_variance[i];
+    } else {
+      reduce_row(basis, r, bin_radiance_rgb, luminance, out.irradiance[r], out.variance[r]);
+      ++out.basis_rows;
+    }
   }
   return out;
 }

@@ -106,6 +106,8 @@ void add_estimate_options(ContentHash& h, const engine::CoefficientOptions& o) {
   for (const double w : o.gather.variance_weights) h.number(w);
   h.text("photon sky").integer(static_cast<std::int64_t>(o.photon_sky_bin_radiance_rgb.size()));
   for (const Vec3& l : o.photon_sky_bin_radiance_rgb) h.vec3(l);
+  // The gathered rows' photon part on the sky (engine/final_gather.h): hashed only where set.
+  if (o.photon_sky_ratios) h.text("photon sky ratios").text(o.photon_sky_ratios->key());
 }
 
 /// A plane's sensors gathered next to a cut (engine/plane_cuts.h): nothing without any.

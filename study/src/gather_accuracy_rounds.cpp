@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 #include "dayphoton/core/units.h"
@@ -271,19 +272,26 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           // The gather of photon_coefficients, with the part more rays do not reduce; the sun
           // bins' gathered grids have no direct part (zeros).
           engine::GatheredCoefficients gathered;
+          // The photon part on the DF's continuous sky from the same rays (engine/final_gather.h).
+          std::optional<engine::GatherOnSky> on_sky;
+          if (!options.photon_sky_bin_radiance_rgb.empty() && options.photon_sky_ratios)
+            on_sky.emplace(engine::GatherOnSky{*options.photon_sky_ratios, options.photon_sky_bin_radiance_rgb});
           if (rows) {
             const std::vector<std::size_t> which(rows->begin() + std::ptrdiff_t(begin), rows->begin() + std::ptrdiff_t(end));
             copy_direct_rows(direct[g], which, n, dc);
             gathered = engine::gather_photon_coefficients_at(*c.scene, *c.materials, *c.sources, gp.all(), grid.points,
-                                                             options.gather, &gp.groups(), which);
+                                                             options.gather, &gp.groups(), which, on_sky ? &*on_sky : nullptr);
           } else {
             copy_direct_rows(direct[g], begin, end, n, dc);
             gathered = engine::gather_photon_coefficients(*c.scene, *c.materials, *c.sources, gp.all(), grid.points,
-                                                          options.gather, &gp.groups(), {begin, end});
+                                                          options.gather, &gp.groups(), {begin, end},
+                                                          on_sky ? &*on_sky : nullptr);
           }
           dc.caustic = std::move(gathered.caustic);
           dc.global = std::move(gathered.global);
           dc.photon_variance = std::move(gathered.variance);
+          dc.photon_on_sky.irradiance = std::move(gathered.on_sky);
+          dc.photon_on_sky.variance = std::move(gathered.on_sky_variance);
           return frame_block(encode_coefficients(dc), gathered.fixed_photon_variance);
         },
         name);
@@ -530,12 +538,19 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           whole.global[rows[r] * n + p] = now.dc.global[r * n + p];
           whole.photon_variance[rows[r] * n + p] = now.dc.photon_variance[r * n + p];
         }
-      // Their photon part on the DF sky: the gather's basis sum (engine/photon_part_on_sky.h),
+      // Their photon part on the DF sky: the gather's own (engine/final_gather.h, "The
+      // continuous sky"), or without the sky ratios its basis sum (engine/photon_part_on_sky.h),
       // in place of the plane's estimate where the rounds did not gather them.
       if (!whole.photon_on_sky.empty()) {
+        const engine::PhotonOnSky& gathered = now.dc.photon_on_sky;
         for (std::size_t r = 0; r < rows.size(); ++r)
-          engine::set_basis_row(whole.photon_on_sky, rows[r], now.dc, r, c.estimating.photon_sky_bin_radiance_rgb);
-        if (!gathered_in_rounds) whole.photon_on_sky.basis_rows += rows.size();
+          if (!gathered.empty()) {
+            whole.photon_on_sky.irradiance.at(rows[r]) = gathered.irradiance.at(r);
+            whole.photon_on_sky.variance.at(rows[r]) = gathered.variance.at(r);
+          } else {
+            engine::set_basis_row(whole.photon_on_sky, rows[r], now.dc, r, c.estimating.photon_sky_bin_radiance_rgb);
+          }
+        if (!gathered_in_rounds && gathered.empty()) whole.photon_on_sky.basis_rows += rows.size();
       }
     }
     result.near_cut[g] = NearCutEstimate{rows, std::move(now.dc)};

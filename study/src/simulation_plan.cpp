@@ -198,6 +198,8 @@ SimulationPlan SimulationPlan::of(const project::Project& project, const SunSite
   ratio_sky.key = ratio_key.str();
   p.sky_tracing.sky_ratios =
       std::make_shared<const engine::SkyRatios>(std::move(ratio_sky), df_luminance);
+  // The gathered rows' paths that leave to the sky take the same ratios (engine/final_gather.h).
+  p.sky_estimating.photon_sky_ratios = p.sky_tracing.sky_ratios;
   for (std::size_t b = 0; b < df_sky.rows(); ++b)
     p.sky_estimating.photon_sky_bin_radiance_rgb.push_back(
         Vec3{df_sky.at(b, 0, 0), df_sky.at(b, 0, df_sky.components() > 1 ? 1 : 0),

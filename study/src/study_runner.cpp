@@ -208,6 +208,16 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       // Carlo standard error beside each value (daylight_factor.h, engine/estimate_variance.h).
       const DaylightFactorParts parts = daylight_factor_parts(*coefficients[g], overcast_vector,
                                                               plan.overcast_horizontal_lux, DaylightFactorSkyIndex);
+      // Rows whose photon part stayed on the basis sum (gathered without the sky ratios,
+      // engine/photon_part_on_sky.h; every row without a photon part on the sky): none in a
+      // run of the plan; said where any are.
+      const engine::PhotonOnSky& on_sky = coefficients[g]->photon_on_sky;
+      const std::size_t basis_rows = on_sky.empty() ? coefficients[g]->sensors : on_sky.basis_rows;
+      if (basis_rows > 0) {
+        gj["daylight_factor_photon_part_basis_rows"] = basis_rows;
+        log.line(prefix + "grid " + grid.name + ": " + std::to_string(basis_rows) +
+                 " sensor(s)' photon part on the sky basis, not on the continuous overcast sky");
+      }
       const std::vector<double>& df = parts.df_percent;
       const std::vector<double> df_stderr = parts.stderr_percent();
       if (ctx.executor.writes_results()) {

@@ -17,6 +17,7 @@
 #include "dayphoton/engine/photon_part_on_sky.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <memory>
@@ -310,6 +311,204 @@ TEST(PhotonPartOnSky, OnePassOverTheLookupsGivesTheSecondPassBitForBit) {
       EXPECT_EQ(c.photon_on_sky.irradiance[s].z, two.irradiance[s].z) << "path " << k << ", sensor " << s;
       EXPECT_EQ(c.photon_on_sky.variance[s], two.variance[s]) << "path " << k << ", sensor " << s;
     }
+  }
+}
+
+/// The gather photons of `room` (Direct ones on the surfaces) with the sky ratios of `sky`,
+/// and the photon part of `sensors` by final gather, on that sky too unless `without_ratios`
+/// (then the gathered rows keep the basis sum).
+DaylightCoefficients gathered_with_sky(const Scene& scene, const std::vector<Material>& materials,
+                                       const SourceSet& sources, const std::vector<Vec3>& means,
+                                       const std::vector<SensorPoint>& sensors, const ContinuousSky& sky,
+                                       std::uint64_t seed, int rays, bool without_ratios = false,
+                                       std::size_t photons_per_source = 1500) {
+  std::vector<double> luminance;
+  for (const Vec3& l : means) luminance.push_back(luminance_of(l));
+  const auto ratios = std::make_shared<const SkyRatios>(sky, luminance);
+  TracingOptions t;
+  t.photons_per_source = photons_per_source;
+  t.seed = seed;
+  t.keep_surface_photons = true;
+  t.store_direct_on_surfaces = true;
+  t.sky_ratios = ratios;
+  // The work plane too: its photons (the global ones) end each source's tracing at its target,
+  // which the surfaces of a black room would never reach; the gather reads the surfaces'.
+  const std::vector<ReceiverPlane> planes = {ReceiverPlane(0.0, true, {{-3, -3}, {3, -3}, {3, 2}, {-3, 2}})};
+  TracedPhotons photons = trace_photons(scene, materials, sources, planes, t);
+  const GridPhotons grid = GridPhotons::for_gather(std::move(photons.surface), sources.size());
+  CoefficientOptions o;
+  o.gather.rays_per_sensor = rays;
+  o.gather.seed = seed;
+  o.gather.variance_weights = luminance;
+  o.photon_sky_bin_radiance_rgb = means;
+  if (!without_ratios) o.photon_sky_ratios = ratios;
+  DaylightCoefficients c;
+  c.sensors = sensors.size();
+  c.sources = sources.size();
+  photon_coefficients(scene, materials, sources, grid, sensors, o, c);
+  return c;
+}
+
+/// The diffuser room with the window an opening (the port) and the diffuser a surface
+/// InnerDiffuserGap_m inside it: the photons that land on the diffuser from the sky are stored
+/// there (Direct) for a final gather to read. (A diffusing port scatters the photon as it
+/// enters and stores none on its sky side.) The gap is a few ray offsets (the scene's 5 km
+/// wall makes them 5 cm: Scene::ray_epsilon_m).
+constexpr double InnerDiffuserGap_m = 0.15;
+
+/// The inner diffuser's mean irradiance from a sky and from its bin means: at NxN_z midpoints of
+/// the pane, the directions that pass the opening and that the opposing wall does not hide,
+/// by midpoint quadrature as vertical_irradiance.
+VerticalIrradiance inner_diffuser_irradiance(const sky::PatchBasis& basis, const std::vector<Vec3>& means) {
+  constexpr int Nu = 600, Nphi = 600, Nx = 6, Nz = 3;
+  VerticalIrradiance e;
+  const double du = 2.0 / Nu, dphi = 2 * Pi / Nphi;
+  for (int i = 0; i < Nu; ++i) {
+    const double z = -1.0 + (i + 0.5) * du, rho = std::sqrt(1 - z * z);
+    for (int j = 0; j < Nphi; ++j) {
+      const double phi = (j + 0.5) * dphi;
+      const Vec3 w{rho * std::cos(phi), rho * std::sin(phi), z};
+      if (w.y <= 0 || hidden(w)) continue;
+      const double t = InnerDiffuserGap_m / w.y;
+      int open = 0;  // pane points that see direction w through the opening
+      for (int a = 0; a < Nx; ++a)
+        for (int b = 0; b < Nz; ++b) {
+          const double x = -1.0 + 2.0 * (a + 0.5) / Nx + t * w.x, zz = 0.5 + (b + 0.5) / Nz + t * w.z;
+          open += x >= -1 && x <= 1 && zz >= 0.5 && zz <= 1.5;
+        }
+      e.continuous += open * overcast_with_ground(w).x * w.y * du * dphi;
+      e.bin_means += open * means[std::size_t(basis.find_bin(w))].x * w.y * du * dphi;
+    }
+  }
+  return e;
+}
+
+struct InnerDiffuserRoom {
+  SceneDescription d = [] {
+    SceneDescription d = diffuser_room();
+    const int pane = 1;  // the diffuser (diffuser_room's second material)
+    const int opening = add_material(d, "opening", MaterialType::Opening, 0.0);
+    for (Surface& s : d.surfaces)
+      if (s.name == "window") s.material = opening;
+    add_surface(d, "diffuser", pane, test::rect_at_y(2 - InnerDiffuserGap_m, -1, 1, 0.5, 1.5));
+    return d;
+  }();
+  Scene scene = Scene::build(d);
+  std::vector<Material> materials = models(d);
+  sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  SourceSet sources = SourceSet::sky_bins(basis);
+  std::vector<Vec3> means = bin_means(basis);
+};
+
+// The closed form of the first test on rows a final gather estimates (point sensors in mid-air
+// and on a wall): every gather ray that meets the diffuser reads the Direct photons on its sky
+// side, each flux times its ratio (final_gather.h, "The continuous sky"), so the gathered photon
+// part on the sky over its basis sum is again E_v(continuous) / E_v(bin means), over the
+// directions the diffuser sees through the opening (inner_diffuser_irradiance). 4 standard
+// errors over 32 seeds (|t| > 4 has probability 3.7e-4 with 31 degrees of freedom); the basis's
+// ratio 1 outside them; the stated variance over the observed one within the chi-square bounds
+// of 31 degrees of freedom at 1e-3 two-sided (0.456-2.45).
+TEST(PhotonPartOnSky, GatheredRowsBehindADiffuserTakeTheContinuousSkysShare) {
+  constexpr int GatherSeeds = 32;
+  const InnerDiffuserRoom room;
+  const VerticalIrradiance e = inner_diffuser_irradiance(room.basis, room.means);
+  const double expected = e.continuous / e.bin_means;
+  RecordProperty("continuous_over_bin_means", std::to_string(expected));
+  const ContinuousSky sky{"CIE overcast with a ground of 0.25", overcast_with_ground};
+  const std::vector<SensorPoint> sensors = {
+      {{0, 0, 0}, {0, 0, 1}}, {{-1.5, -1, 0.5}, {0, 1, 1}}, {{0.5, -2.99, 1.0}, {0, 1, 0}}};
+  std::vector<test::Stats> ratio(sensors.size()), on_sky(sensors.size());
+  std::vector<double> stated(sensors.size(), 0.0);
+  for (int k = 0; k < GatherSeeds; ++k) {
+    const DaylightCoefficients c = gathered_with_sky(room.scene, room.materials, room.sources, room.means, sensors,
+                                                     sky, 9000 + std::uint64_t(k), 256);
+    ASSERT_EQ(c.photon_on_sky.irradiance.size(), sensors.size());
+    ASSERT_EQ(c.photon_on_sky.variance.size(), sensors.size());
+    EXPECT_EQ(c.photon_on_sky.basis_rows, 0u);
+    for (std::size_t s = 0; s < sensors.size(); ++s) {
+      const double y = luminance_of(c.photon_on_sky.irradiance[s]);
+      const double b = basis_sum(c, s, room.means);
+      ASSERT_GT(b, 0) << "sensor " << s;
+      ratio[s].add(y / b);
+      on_sky[s].add(y);
+      stated[s] += c.photon_on_sky.variance[s] / GatherSeeds;
+    }
+  }
+  for (std::size_t s = 0; s < sensors.size(); ++s) {
+    RecordProperty("gathered_sensor_" + std::to_string(s) + "_ratio", std::to_string(ratio[s].mean()));
+    EXPECT_NEAR(ratio[s].mean(), expected, ratio[s].tolerance()) << "sensor " << s;
+    EXPECT_GT(std::fabs(1.0 - expected), ratio[s].tolerance()) << "sensor " << s << ": the basis would pass";
+    const double observed = on_sky[s].sigma() * on_sky[s].sigma();
+    EXPECT_GT(stated[s] / observed, 0.456) << "sensor " << s;
+    EXPECT_LT(stated[s] / observed, 2.45) << "sensor " << s;
+  }
+}
+
+/// A room of grey walls, a mirror floor and a clear glass window (the port): a gather ray
+/// that the mirror sends out through the glass leaves specularly to the sky (the caustic
+/// part), and one that meets a wall reads its photons (the global part).
+struct MirrorRoom {
+  SceneDescription d = [] {
+    SceneDescription d;
+    const int grey = add_material(d, "grey", MaterialType::Lambertian, 0.5);
+    const int glass = add_material(d, "glass", MaterialType::Glass, 0.0);
+    const int mirror = add_material(d, "mirror", MaterialType::Mirror, 0.9);
+    test::add_window_room(d, grey, glass);
+    d.surfaces[0].material = mirror;  // the floor
+    return d;
+  }();
+  Scene scene = Scene::build(d);
+  std::vector<Material> materials = models(d);
+  sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  SourceSet sources = SourceSet::sky_bins(basis);
+  std::vector<Vec3> means = bin_means(basis);
+};
+
+TEST(PhotonPartOnSky, AGatheredRowsPathsToTheSkyAndLookupsBothTakeTheRatio) {
+  // A sky of 1.5 times the bin means: every photon's ratio and every path's ratio to the sky
+  // is 1.5, so the gathered rows' photon part on the sky is 1.5 times the basis sum of the
+  // same coefficients, caustic (specular paths to the sky) and global (lookups) alike: a path
+  // that ignored the ratio would give 1. The basis coefficients are those of a gather without
+  // the sky bit for bit (the ratios draw no random numbers), which then keeps the basis sum
+  // and counts its rows; one thread or two give the same bits.
+  const MirrorRoom room;
+  const sky::PatchBasis& basis = room.basis;
+  const std::vector<Vec3>& means = room.means;
+  const ContinuousSky brighter{"1.5 x the bin means",
+                               [&](const Vec3& w) { return means[std::size_t(basis.find_bin(w))] * 1.5; }};
+  const std::vector<SensorPoint> sensors = {{{0, 1, -0.5}, {0, 0, -1}}, {{0.5, -1, 0}, {0, 0, 1}}};
+  auto run = [&](int threads, bool without_ratios) {
+    tbb::global_control control(tbb::global_control::max_allowed_parallelism, threads);
+    return gathered_with_sky(room.scene, room.materials, room.sources, means, sensors, brighter, 5, 64, without_ratios, 300);
+  };
+  const DaylightCoefficients c = run(2, false);
+  EXPECT_EQ(c.photon_on_sky.basis_rows, 0u);
+  for (std::size_t s = 0; s < sensors.size(); ++s) {
+    double caustic = 0, global = 0;
+    for (std::size_t p = 0; p < c.sources; ++p) {
+      caustic += luminance_of(c.caustic[s * c.sources + p]);
+      global += luminance_of(c.global[s * c.sources + p]);
+    }
+    if (s == 0) {
+      EXPECT_GT(caustic, 0) << "the sensor facing the mirror";
+    }
+    EXPECT_GT(global, 0) << "sensor " << s;
+    const double basis_e = basis_sum(c, s, means);
+    EXPECT_NEAR(luminance_of(c.photon_on_sky.irradiance[s]), 1.5 * basis_e, 1e-9 * basis_e) << "sensor " << s;
+    EXPECT_GT(c.photon_on_sky.variance[s], 0) << "sensor " << s;
+  }
+  const DaylightCoefficients one = run(1, false), without = run(2, true);
+  EXPECT_EQ(one.caustic, c.caustic);
+  EXPECT_EQ(one.global, c.global);
+  EXPECT_EQ(one.photon_on_sky.irradiance, c.photon_on_sky.irradiance);
+  EXPECT_EQ(one.photon_on_sky.variance, c.photon_on_sky.variance);
+  EXPECT_EQ(without.caustic, c.caustic);
+  EXPECT_EQ(without.global, c.global);
+  EXPECT_EQ(without.photon_variance, c.photon_variance);
+  EXPECT_EQ(without.photon_on_sky.basis_rows, sensors.size());
+  for (std::size_t s = 0; s < sensors.size(); ++s) {
+    const double basis_e = basis_sum(c, s, means);
+    EXPECT_NEAR(luminance_of(without.photon_on_sky.irradiance[s]), basis_e, 1e-12 * basis_e) << "sensor " << s;
   }
 }
 

@@ -110,6 +110,7 @@
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sensor_range.h"
+#include "dayphoton/engine/sky_ratios.h"
 
 namespace dayphoton::engine {
 
@@ -173,6 +174,11 @@ struct CoefficientOptions {
   /// the ratios' continuous sky (DaylightCoefficients::photon_on_sky, photon_part_on_sky.h).
   /// Empty: not estimated.
   std::vector<Vec3> photon_sky_bin_radiance_rgb;
+  /// With photon_sky_bin_radiance_rgb: the sky ratios the photons were traced with
+  /// (TracingOptions::sky_ratios), which the rows a final gather estimates need for their paths
+  /// that leave to the sky (final_gather.h, "The continuous sky"). Null: those rows keep the
+  /// basis sum (PhotonOnSky::basis_rows).
+  std::shared_ptr<const SkyRatios> photon_sky_ratios;
 };
 
 /// The photon part (caustic + global) of every sensor under the continuous sky its photons'
@@ -181,8 +187,9 @@ struct CoefficientOptions {
 struct PhotonOnSky {
   std::vector<Vec3> irradiance;
   std::vector<double> variance;
-  /// Rows a final gather estimates (gather photons; sensors next to a cut) keep the sum over
-  /// the basis (photon_part_on_sky.h): how many.
+  /// Rows a final gather estimated without the sky ratios (CoefficientOptions::
+  /// photon_sky_ratios not given), which keep the sum over the basis (photon_part_on_sky.h):
+  /// how many.
   std::size_t basis_rows = 0;
   bool empty() const { return irradiance.empty(); }
 };

@@ -81,6 +81,21 @@
 // at N' rays the variance is about fixed + (variance - fixed) N / N' (the accuracy target's
 // gather rounds, study/gather_accuracy_rounds.h).
 //
+// The continuous sky (photon_part_on_sky.h). With a GatherOnSky, the same rays also estimate
+// the photon part under the continuous sky the photons' sky ratios were taken from (sky_ratios.h),
+// summed over the sources with the bin radiances L_p: at a lookup each photon's flux is taken
+// times its ratio r = L(w) / L_p (PhotonFlux::TimesSkyRatio: the bin's response to the sky
+// within it, sky_ratios.h), and a specular path that leaves toward source p in direction w
+// carries r(w) exactly, the ratio the photon tracer would give a photon emitted from there
+// (SkyRatios::ratio, before its 12-bit rounding). So every term of the basis estimate is
+// weighted by the sky's own radiance where its light came from, E = sum_p L_p C'_p, and the
+// estimate is the response to the continuous sky, free of the basis's patch-uniform radiance;
+// the basis coefficients are the same bit for bit (the ratios draw no random numbers). Its
+// variance is that of the same estimator (header comment, "Variance") with every term taken
+// in its sky-weighted luminance, lum(term) r lum(L_p), and no further weights: the photons'
+// part is the groups' batch means of those terms and the rays' part the collapsed strata of
+// the rays' sky-weighted sums, so the sum over the sources is the variance of E itself.
+//
 // Determinism: gather ray i of sensor s uses Rng(seed, s, i, RandomStream::Gather); sensors
 // are independent, so the result is identical for any thread count.
 #pragma once
@@ -95,6 +110,7 @@
 #include "dayphoton/engine/photon_map.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sensor_range.h"
+#include "dayphoton/engine/sky_ratios.h"
 
 namespace dayphoton::engine {
 
@@ -128,6 +144,15 @@ struct GatherOptions {
   std::vector<double> variance_weights;
 };
 
+/// The continuous sky of the photons' sky ratios (header comment, "The continuous sky"):
+/// `ratios`, those the photons were traced with (TracingOptions::sky_ratios);
+/// `bin_radiance_rgb[p]`, source p's L_p, RGB W/(sr m^2). Sources that are not sky bins (sun
+/// discs) take ratio 1, as their photons do.
+struct GatherOnSky {
+  const SkyRatios& ratios;
+  const std::vector<Vec3>& bin_radiance_rgb;
+};
+
 /// Caustic (specular paths to a source) and global (photon lookups) parts, each
 /// [sensor * sources + source], RGB W/m^2 per unit source radiance.
 struct GatheredCoefficients {
@@ -137,6 +162,11 @@ struct GatheredCoefficients {
   /// Of it, the photons' part that more gather rays do not reduce (header comment, "How the
   /// variance falls with the rays"), same layout, 0 <= fixed <= variance.
   std::vector<double> fixed_photon_variance;
+  /// With a GatherOnSky: per row, the photon part (caustic + global) under its continuous
+  /// sky, sum_p L_p C'_p, RGB W/m^2 (header comment, "The continuous sky"), and, when groups
+  /// were given, the variance of its luminance. Empty otherwise.
+  std::vector<Vec3> on_sky;
+  std::vector<double> on_sky_variance;
 };
 
 /// The gather at every sensor. `surface_photons` is the map of every stored surface photon
@@ -144,6 +174,9 @@ struct GatheredCoefficients {
 /// std::invalid_argument for rays_per_sensor < 1, bandwidth 0, a sensor normal that is zero
 /// or not finite, or a photon whose source is not in `sources`. `rows`: only those sensors'
 /// rows (sensor_range.h: the rays of a sensor are seeded by its index in the whole grid).
+/// `on_sky`: the photon part under the continuous sky too (GatheredCoefficients::on_sky); also
+/// throws std::invalid_argument when its radiances are not one per source or a sky bin of
+/// `sources` has no ratio.
 GatheredCoefficients gather_photon_coefficients(const Scene& scene,
                                                 const std::vector<Material>& materials,
                                                 const SourceSet& sources,
@@ -151,7 +184,7 @@ GatheredCoefficients gather_photon_coefficients(const Scene& scene,
                                                 const std::vector<SensorPoint>& sensors,
                                                 const GatherOptions& options,
                                                 const PhotonGroups* groups = nullptr,
-                                                SensorRange rows = {});
+                                                SensorRange rows = {}, const GatherOnSky* on_sky = nullptr);
 
 /// The same at the sensors `which` (indices into `sensors`, any order): row r of the result is
 /// sensor which[r], bit for bit that sensor's row of the whole grid's gather (its rays are
@@ -160,6 +193,7 @@ GatheredCoefficients gather_photon_coefficients_at(const Scene& scene, const std
                                                 const SourceSet& sources, const PhotonMap& surface_photons,
                                                 const std::vector<SensorPoint>& sensors,
                                                 const GatherOptions& options, const PhotonGroups* groups,
-                                                const std::vector<std::size_t>& which);
+                                                const std::vector<std::size_t>& which,
+                                                const GatherOnSky* on_sky = nullptr);
 
 }  // namespace dayphoton::engine
