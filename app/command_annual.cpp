@@ -313,6 +313,8 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
                  "the default thresholds and occupancy (08:00-18:00 every day) apply\n";
   // Never silently interpolated: the warnings go to stderr even with --quiet.
   for (const std::string& w : notes.warnings()) std::cerr << "warning: " << grid_dir << ": " << w << '\n';
+  // Nor silently patch-uniform: the exported coefficients carry no sub-patch shares.
+  std::cerr << "warning: " << grid_dir << ": " << study::SubPatchSharesMissingWarning << '\n';
 
   if (!o.quiet) {
     const metrics::GridMetrics& g = result.grid;
