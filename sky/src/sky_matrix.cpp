@@ -182,6 +182,17 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
     result.quadrant_deltas =
         RadianceMatrix(static_cast<std::size_t>(PatchBasis::QuadrantCount * n_bins), n_steps, 1);
   const double colour_luminance = dot(RgbLuminanceWeights, options.sky_colour);
+  // Integral of cos(theta) over each quadrant (PatchBasis::quadrant): half the azimuth range
+  // times (s1^2 - s0^2) / 2 over its half in sine of altitude.
+  std::vector<double> quadrant_projected_solid_angle(options.quadrant_deltas ? PatchBasis::QuadrantCount * n_bins : 0);
+  for (int bin = 1; bin < n_bins && options.quadrant_deltas; ++bin) {
+    const PatchBounds b = basis.bounds(bin);
+    const double s0 = std::sin(b.altitude_min_rad), s1 = std::sin(b.altitude_max_rad), sm = 0.5 * (s0 + s1);
+    const double half_azimuth = 0.5 * (b.azimuth_max_rad - b.azimuth_min_rad);
+    for (int q = 0; q < PatchBasis::QuadrantCount; ++q)
+      quadrant_projected_solid_angle[static_cast<std::size_t>(PatchBasis::QuadrantCount * bin + q)] =
+          half_azimuth * (q / 2 == 0 ? sm * sm - s0 * s0 : s1 * s1 - sm * sm) / 2.0;
+  }
   std::vector<std::optional<SunRecord>> suns(n_steps);
   std::vector<double> below_horizon_W_m2(n_steps, 0.0);  // direct normal of records below the horizon
 
@@ -222,14 +233,11 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
       const double gamma = std::acos(std::clamp(dot(d, state.model_sun_direction), -1.0, 1.0));
       return perez_relative_luminance(state, std::acos(std::clamp(d.z, -1.0, 1.0)), gamma);
     };
-    // The quadrant deltas of patch `bin` whose value is `value` x `factor` (both in lv units
-    // and lv to W/(sr m^2)).
+    // The patch values (grey, W/(sr m^2)) for the quadrant deltas.
+    std::vector<double> patch_radiance(options.quadrant_deltas ? n_bins : 0, 0.0);
+    bool uniform_sky = false;
     auto set_deltas = [&](int bin, double value, double factor) {
-      if (!options.quadrant_deltas) return;
-      const std::array<double, PatchBasis::QuadrantCount> mean = quadrant_means(basis, bin, quadrant_samples, lv_at);
-      for (int q = 0; q < PatchBasis::QuadrantCount; ++q)
-        result.quadrant_deltas.at(static_cast<std::size_t>(PatchBasis::QuadrantCount * bin + q), t, 0) =
-            static_cast<float>(colour_luminance * factor * (mean[static_cast<std::size_t>(q)] - value));
+      if (options.quadrant_deltas) patch_radiance[static_cast<std::size_t>(bin)] = value * factor;
     };
     if (with_sky) {
       if (options.patch_value == PatchValue::Centre) {
@@ -240,8 +248,8 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
           lv[bin] = perez_relative_luminance(state, centre_zenith[bin], gamma);
           s += lv[bin] * centre_weight[bin];
         }
-        const bool uniform = s <= 1e-9;
-        if (uniform) {  // lv vanished everywhere: uniform sky, as gendaymtx
+        uniform_sky = s <= 1e-9;
+        if (uniform_sky) {  // lv vanished everywhere: uniform sky, as gendaymtx
           std::fill(lv.begin() + 1, lv.end(), 1.0);
           s = Pi;
         }
@@ -249,7 +257,7 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
         for (int bin = 1; bin < n_bins; ++bin) {
           const double value = lv[bin] * sky_horizontal_lux / (s * RadianceWhiteEfficacy_lm_per_W);
           set_rgb(result.matrix, bin, t, options.sky_colour * value);
-          if (!uniform) set_deltas(bin, lv[bin], sky_horizontal_lux / (s * RadianceWhiteEfficacy_lm_per_W));
+          set_deltas(bin, lv[bin], sky_horizontal_lux / (s * RadianceWhiteEfficacy_lm_per_W));
         }
       } else {
         // The continuous Perez shape lv, averaged over each patch; normalised below.
@@ -261,8 +269,8 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
           luminance[bin] = bin_mean(basis, bin, n, lv_at);
           horizontal += luminance[bin] * projected_solid_angle[bin];
         }
-        const bool uniform = horizontal <= 1e-9;
-        if (uniform) {  // lv vanished everywhere: uniform sky, as gendaymtx
+        uniform_sky = horizontal <= 1e-9;
+        if (uniform_sky) {  // lv vanished everywhere: uniform sky, as gendaymtx
           std::fill(luminance.begin() + 1, luminance.end(), 1.0);
           horizontal = Pi;
         }
@@ -274,8 +282,29 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
         for (int bin = 1; bin < n_bins; ++bin) {
           set_rgb(result.matrix, bin, t,
                   options.sky_colour * (scale * luminance[bin] / RadianceWhiteEfficacy_lm_per_W));
-          if (!uniform) set_deltas(bin, luminance[bin], scale / RadianceWhiteEfficacy_lm_per_W);
+          set_deltas(bin, luminance[bin], scale / RadianceWhiteEfficacy_lm_per_W);
         }
+      }
+      if (options.quadrant_deltas && !uniform_sky) {
+        // The quadrants' means of the Perez shape, normalised as the sky of quadrants they make
+        // keeps the measured diffuse horizontal illuminance (the Mean mode's rule, on
+        // quadrants; gendaymtx's discrete normalisation of the centre values misses it by
+        // up to a percent), less the patch values.
+        std::vector<std::array<double, PatchBasis::QuadrantCount>> mean(static_cast<std::size_t>(n_bins));
+        double horizontal_q = 0;
+        for (int bin = 1; bin < n_bins; ++bin) {
+          mean[static_cast<std::size_t>(bin)] = quadrant_means(basis, bin, quadrant_samples, lv_at);
+          for (int q = 0; q < PatchBasis::QuadrantCount; ++q)
+            horizontal_q += mean[static_cast<std::size_t>(bin)][static_cast<std::size_t>(q)] *
+                            quadrant_projected_solid_angle[static_cast<std::size_t>(PatchBasis::QuadrantCount * bin + q)];
+        }
+        const double to_radiance =
+            horizontal_q > 0 ? sky_horizontal_lux / (horizontal_q * RadianceWhiteEfficacy_lm_per_W) : 0.0;
+        for (int bin = 1; bin < n_bins; ++bin)
+          for (int q = 0; q < PatchBasis::QuadrantCount; ++q)
+            result.quadrant_deltas.at(static_cast<std::size_t>(PatchBasis::QuadrantCount * bin + q), t, 0) =
+                static_cast<float>(colour_luminance * (to_radiance * mean[static_cast<std::size_t>(bin)][static_cast<std::size_t>(q)] -
+                                                       patch_radiance[static_cast<std::size_t>(bin)]));
       }
       const Vec3 ground = ground_radiance_rgb(Vec3{1, 1, 1} * options.ground_reflectance, sky_horizontal_lux,
                                               sun_lux_normal, sun.direction);

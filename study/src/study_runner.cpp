@@ -186,7 +186,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     folders.push_back(folder);
     report.grids.push_back({label.empty() ? grid.name : label + "/" + grid.name, grid.points.size(), folder});
     coefficient_matrices.push_back(coefficients[g]->to_matrix());
-    sub_patches.push_back(annual_product ? sub_patch_shares(*coefficients[g]) : SubPatchShares{});
+    sub_patches.push_back(annual_product || project.outputs.coefficients ? sub_patch_shares(*coefficients[g])
+                                                                         : SubPatchShares{});
     const RadianceMatrix& c = coefficient_matrices.back();
     if (ctx.executor.writes_results()) {
       write_sensors_csv(grid.points, join_path(folder, "sensors.csv"));
@@ -205,6 +206,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
       c.write_file(join_path(folder, "coefficients_sky.mtx"), matrix_format);
       ctx.outputs.record(join_path(folder, "coefficients_sky.mtx"));
+      if (!sub_patches.back().empty()) {  // for dayphoton annual (sub_patch_shares.h)
+        sub_patch_shares_matrix(sub_patches.back()).write_file(join_path(folder, SubPatchSharesFileName), matrix_format);
+        ctx.outputs.record(join_path(folder, SubPatchSharesFileName));
+      }
     }
     if (project.outputs.daylight_factor) {
       // The sky component from the continuous sky, the rest over the basis, with the Monte

@@ -19,6 +19,26 @@ SubPatchShares SubPatchShares::rows(std::size_t begin, std::size_t end) const {
   return out;
 }
 
+RadianceMatrix sub_patch_shares_matrix(const SubPatchShares& shares) {
+  RadianceMatrix m(shares.sensors, shares.bins, static_cast<int>(SubPatchShares::ValuesPerBin));
+  m.data() = shares.values;
+  return m;
+}
+
+SubPatchShares sub_patch_shares_of(const RadianceMatrix& m, std::size_t sensors, std::size_t bins) {
+  if (m.rows() != sensors || m.columns() != bins ||
+      m.components() != static_cast<int>(SubPatchShares::ValuesPerBin))
+    throw std::invalid_argument("has " + std::to_string(m.rows()) + " rows x " + std::to_string(m.columns()) +
+                                " columns x " + std::to_string(m.components()) + " components, expected " +
+                                std::to_string(sensors) + " sensors x " + std::to_string(bins) + " bins x " +
+                                std::to_string(SubPatchShares::ValuesPerBin));
+  SubPatchShares out;
+  out.sensors = sensors;
+  out.bins = bins;
+  out.values = m.data();
+  return out;
+}
+
 SubPatchShares sub_patch_shares(const engine::DaylightCoefficients& c) {
   SubPatchShares out;
   out.sensors = c.sensors;

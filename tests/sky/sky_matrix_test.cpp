@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <vector>
 
 #include <unistd.h>
 
@@ -150,10 +152,12 @@ TEST(SkyMatrix, EveryHourIsNormalisedToThePerezDiffuseIlluminance) {
 
 TEST(SkyMatrix, QuadrantDeltasAreTheSkysQuadrantMeansLessThePatchValue) {
   // Every 53rd daytime record of Oakland, both patch values: the delta of each patch's
-  // quadrant against (a) the same midpoint rule evaluated here from an independent sun
-  // position and Perez state (float storage: 1e-5 of the hour's brightest patch) and (b) a
-  // 24 x 24 midpoint quadrature per patch whose points are put in their quadrant by
-  // PatchBasis::quadrant (the rule's own quadrature error, and the quadrants' orientation).
+  // quadrant (its mean, normalised so that the quadrants' sky keeps the Perez diffuse
+  // horizontal illuminance, less the patch value) against (a) the same midpoint rule
+  // evaluated here from an independent sun position and Perez state (float storage: 1e-5 of
+  // the hour's brightest patch) and (b) a 24 x 24 midpoint quadrature per patch whose points
+  // are put in their quadrant by PatchBasis::quadrant (the rule's own quadrature error, and
+  // the quadrants' orientation).
   const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
   const weather::SiteClock clock = weather::SiteClock::for_weather(epw);
   const auto steps = clock.steps(epw.records);
@@ -200,43 +204,49 @@ TEST(SkyMatrix, QuadrantDeltasAreTheSkysQuadrantMeansLessThePatchValue) {
       };
       double brightest = 0;
       for (int p = 1; p < basis.bin_count(); ++p) brightest = std::max(brightest, double(sky.matrix.at(p, t, 1)));
+      // The quadrants' means by the rule and by the fine quadrature, and the rule's sky's
+      // horizontal illuminance (its normalisation: the Perez diffuse illuminance).
+      std::vector<std::array<double, 4>> rule(std::size_t(basis.bin_count())), fine(rule.size());
+      double horizontal = 0;
       for (int p = 1; p < basis.bin_count(); ++p) {
-        // The patch's value in lv units: its centre, or the 6 x 6 midpoint mean.
-        double patch_lv = 0;
-        if (value == PatchValue::Centre) {
-          patch_lv = lv(basis.centre(p));
-        } else {
-          for (int i = 0; i < 6; ++i)
-            for (int j = 0; j < 6; ++j) patch_lv += lv(basis.sample_direction(p, (i + 0.5) / 6, (j + 0.5) / 6)) / 36;
-        }
-        const double to_radiance = plain.matrix.at(p, t, 1) / patch_lv;  // grey sky: every channel alike
-        double rule[4] = {}, fine[4] = {}, count[4] = {};
-        for (int q = 0; q < 4; ++q)
+        const PatchBounds b = basis.bounds(p);
+        const double s0 = std::sin(b.altitude_min_rad), s1 = std::sin(b.altitude_max_rad), sm = 0.5 * (s0 + s1);
+        double count[4] = {};
+        for (int q = 0; q < 4; ++q) {
           for (int i = 0; i < QuadrantSamplesPerAxis; ++i)
             for (int j = 0; j < QuadrantSamplesPerAxis; ++j)
-              rule[q] += lv(basis.sample_direction(p, 0.5 * (q / 2) + 0.5 * (i + 0.5) / QuadrantSamplesPerAxis,
-                                                   0.5 * (q % 2) + 0.5 * (j + 0.5) / QuadrantSamplesPerAxis)) /
-                         (QuadrantSamplesPerAxis * QuadrantSamplesPerAxis);
+              rule[p][q] += lv(basis.sample_direction(p, 0.5 * (q / 2) + 0.5 * (i + 0.5) / QuadrantSamplesPerAxis,
+                                                      0.5 * (q % 2) + 0.5 * (j + 0.5) / QuadrantSamplesPerAxis)) /
+                            (QuadrantSamplesPerAxis * QuadrantSamplesPerAxis);
+          horizontal += rule[p][q] * 0.5 * (b.azimuth_max_rad - b.azimuth_min_rad) *
+                        (q / 2 == 0 ? sm * sm - s0 * s0 : s1 * s1 - sm * sm) / 2.0;
+        }
         constexpr int Fine = 24;
         for (int i = 0; i < Fine; ++i)
           for (int j = 0; j < Fine; ++j) {
             const Vec3 w = basis.sample_direction(p, (i + 0.5) / Fine, (j + 0.5) / Fine);
             const int q = basis.quadrant(p, w);
-            fine[q] += lv(w);
+            fine[p][q] += lv(w);
             count[q] += 1;
           }
         for (int q = 0; q < 4; ++q) {
           EXPECT_EQ(count[q], Fine * Fine / 4) << "patch " << p << " quadrant " << q;
+          fine[p][q] /= count[q];
+        }
+      }
+      const double to_radiance = state.diffuse_horizontal_illuminance_lux / (horizontal * RadianceWhiteEfficacy_lm_per_W);
+      for (int p = 1; p < basis.bin_count(); ++p)
+        for (int q = 0; q < 4; ++q) {
           const double delta = sky.quadrant_deltas.at(std::size_t(4 * p + q), t, 0);
-          const double by_rule = to_radiance * (rule[q] - patch_lv);
-          const double by_fine = to_radiance * (fine[q] / count[q] - patch_lv);
+          const double patch = plain.matrix.at(p, t, 1);  // grey sky: every channel alike
+          const double by_rule = to_radiance * rule[p][q] - patch;
+          const double by_fine = to_radiance * fine[p][q] - patch;
           worst_rule = std::max(worst_rule, std::fabs(delta - by_rule) / brightest);
           worst_fine = std::max(worst_fine, std::fabs(delta - by_fine) / brightest);
           sum_fine += (delta - by_fine) * (delta - by_fine) / (brightest * brightest);
           largest_delta = std::max(largest_delta, std::fabs(delta) / brightest);
           ++compared;
         }
-      }
     }
     std::printf("[ %s ] %zu hours: quadrant deltas vs the same rule at most %.2e, vs a 24 x 24 quadrature at most "
                 "%.2e, RMS %.2e of the hour's brightest patch (largest delta %.3f)\n",

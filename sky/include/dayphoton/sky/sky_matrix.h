@@ -103,7 +103,9 @@ struct SkyMatrix {
   /// sky alone (without the spread sun); zero for the ground, at night and for a uniform
   /// fallback sky. The quadrant means by a QuadrantSamplesPerAxis^2 midpoint rule per
   /// quadrant of a Tregenza-sized patch (the same spacing for Reinhart patches, at least 1),
-  /// of the very Perez shape and normalisation of the patch values. Empty otherwise.
+  /// of the very Perez shape of the patch values, normalised so that the sky of quadrants
+  /// keeps the record's Perez diffuse horizontal illuminance (sum of mean x the quadrant's
+  /// projected solid angle). Empty otherwise.
   RadianceMatrix quadrant_deltas;
 };
 

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "dayphoton/core/radiance_matrix.h"
 #include "dayphoton/engine/daylight_coefficients.h"
 
 namespace dayphoton::study {
@@ -33,12 +34,25 @@ struct SubPatchShares {
   SubPatchShares rows(std::size_t begin, std::size_t end) const;
 };
 
+/// The export beside coefficients_sky.mtx (docs/outputs.md): a RADIANCE matrix of sensors x
+/// bins x ValuesPerBin components, SubPatchShares::values as they are.
+inline constexpr const char* SubPatchSharesFileName = "coefficients_sky_quadrants.mtx";
+RadianceMatrix sub_patch_shares_matrix(const SubPatchShares& shares);
+/// The shares of a matrix read from SubPatchSharesFileName; std::invalid_argument unless it
+/// has `sensors` rows, `bins` columns and ValuesPerBin components.
+SubPatchShares sub_patch_shares_of(const RadianceMatrix& m, std::size_t sensors, std::size_t bins);
+
 /// What `dayphoton annual` says of exported coefficients (coefficients.mtx holds the total
 /// per patch, not the direct part's shares): its table is the patch-uniform product.
 inline constexpr const char* SubPatchSharesMissingWarning =
-    "the exported coefficients carry no sub-patch shares of their direct part, so this annual table is the "
-    "patch-uniform product: the run's own table adds the direct part's sub-patch correction and differs from it "
-    "(docs/outputs.md, \"Which sky the annual files use\")";
+    "no coefficients_sky_quadrants.mtx beside the coefficients (the sub-patch shares of their direct part), so "
+    "this annual table is the patch-uniform product: the run's own table adds the direct part's sub-patch "
+    "correction and differs from it (docs/outputs.md, \"Which sky the annual files use\")";
+/// And of a sky matrix file, which has no quadrant deltas.
+inline constexpr const char* SkyMatrixFileQuadrantsWarning =
+    "a sky matrix file has no quadrant deltas, so this annual table is the patch-uniform product (the "
+    "sub-patch shares of coefficients_sky_quadrants.mtx are not used): a run's own table adds the direct part's "
+    "sub-patch correction (docs/outputs.md, \"Which sky the annual files use\")";
 
 /// The shares of coefficients `c` (empty when c.direct_quadrants is). Throws
 /// std::invalid_argument when the shares do not match the coefficients' shape.
