@@ -297,13 +297,25 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
                               sensors.size(), the_sky.steps.size(), 1, o.max_matrix_values);
   std::string settings_source;
   const study::AnnualStudySettings settings = annual_settings(o, grid_dir, project, recorded, weather, settings_source);
+  // The direct part's sub-patch shares, exported beside the coefficients by a run: with them
+  // (and a sky built here, which has the quadrant deltas) the table is the run's.
+  const std::string shares_path = (fs::path(grid_dir) / study::SubPatchSharesFileName).string();
+  study::SubPatchShares shares;
+  if (fs::exists(shares_path)) {
+    const RadianceMatrix m = RadianceMatrix::read_file(shares_path, read_options);
+    try {
+      shares = study::sub_patch_shares_of(m, sensors.size(), coefficients.columns());
+    } catch (const std::invalid_argument& e) {
+      throw InputError(SourceLocation{shares_path, 0, 0}, e.what());
+    }
+  }
   study::ExactSunNotes notes;
   const study::AnnualStudy result =
       exact_sun ? study::annual_study_exact_sun(
                       coefficients,
                       study::read_exact_sun_export(grid_dir, sensors.size(), read_options, o.max_decompressed_bytes),
-                      *sky_and_suns, settings, grid_dir, notes)
-                : study::compute_annual_study(coefficients, sky, settings);
+                      *sky_and_suns, settings, grid_dir, notes, &shares)
+                : study::compute_annual_study(coefficients, sky, settings, nullptr, &shares);
   study::AnnualOutputs which;
   which.illuminance_csv = o.illuminance_csv;
   const std::vector<std::string> written = study::write_annual_outputs(result, sensors, settings, output_dir, which);
@@ -313,6 +325,11 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
                  "the default thresholds and occupancy (08:00-18:00 every day) apply\n";
   // Never silently interpolated: the warnings go to stderr even with --quiet.
   for (const std::string& w : notes.warnings()) std::cerr << "warning: " << grid_dir << ": " << w << '\n';
+  // Nor silently patch-uniform (a sky matrix file has no quadrant deltas).
+  if (shares.empty())
+    std::cerr << "warning: " << grid_dir << ": " << study::SubPatchSharesMissingWarning << '\n';
+  else if (the_sky.quadrant_deltas.rows() == 0)
+    std::cerr << "warning: " << grid_dir << ": " << study::SkyMatrixFileQuadrantsWarning << '\n';
 
   if (!o.quiet) {
     const metrics::GridMetrics& g = result.grid;

@@ -13,7 +13,9 @@
 //
 // The fix candidates are scored on the same samples (moment_skies): each patch's first
 // moments about its centre with the sky's centre value and tangent gradient (a first-order
-// Taylor model of the sky inside the patch), and 2 x 2 sub-patches with their mean radiance.
+// Taylor model of the sky inside the patch), and 2 x 2 sub-patches with their mean radiance;
+// beside them the study's own (engine::direct_coefficients' sub-patch shares with the sky
+// matrix's quadrant deltas, study/sub_patch_shares.h).
 //
 // Two modes:
 //   hours [N]  N hours per sky class (overcast: Perez clearness bin 1; intermediate: bins 2-5;
@@ -23,8 +25,11 @@
 //              each weather file gives the hourly total; the error is given relative to the
 //              direct part (sky + ground through the window) and to the total.
 //   year [S]   every occupied daytime hour of each weather file, S shadow rays per bin (16 by
-//              default): the hourly totals corrected by the continuous sky's direct part, and
-//              the annual metrics (DA300, UDI) of the corrected and uncorrected tables.
+//              default, the project's: the very samples of the run's direct part): the run's
+//              hourly totals (the study's: patch values plus the sub-patch correction) and the
+//              patch-uniform ones (the correction taken out) against the reference (the direct
+//              part replaced by the continuous sky's), and the annual metrics (DA300, UDI) of
+//              each against the reference's.
 // Usage: perez_sky_component_bench hours|year [N|S] [threads]. Writes runs under
 // $TMPDIR/dayphoton_perez_sky_component_bench (or /tmp).
 #include <tbb/global_control.h>
@@ -88,7 +93,7 @@ struct Climate {
   weather::HourlyWeather epw;
   sky::SolarSite site;
   std::vector<weather::TimeStep> steps;
-  sky::SkyMatrix centre, mean;          ///< as the annual study builds it; patch means
+  sky::SkyMatrix centre, mean;          ///< as the annual study builds it (with its quadrant deltas); patch means
   std::vector<std::optional<Vec3>> sun;  ///< per record: the sun above the horizon
 };
 
@@ -104,8 +109,10 @@ Climate make_climate(const std::string& name, project::Project proj, const std::
   c.site = study::resolve_sun_site(c.proj.site, c.epw).solar;
   c.steps = weather::SiteClock::for_weather(c.epw).steps(c.epw.records);
   const sky::PatchBasis basis = sky::PatchBasis::tregenza();
-  const sky::SkyMatrixOptions options = study::sun_excluded_sky_options(c.proj.simulation.ground_reflectance);
+  sky::SkyMatrixOptions options = study::sun_excluded_sky_options(c.proj.simulation.ground_reflectance);
+  options.quadrant_deltas = true;
   c.centre = sky::build_sky_matrix(c.epw, c.site, basis, options);
+  options.quadrant_deltas = false;
   sky::SkyMatrixOptions mean_options = options;
   mean_options.patch_value = sky::PatchValue::Mean;
   c.mean = sky::build_sky_matrix(c.epw, c.site, basis, mean_options);
@@ -252,6 +259,7 @@ std::vector<std::size_t> pick_hours(const Climate& c, int bin_lo, int bin_hi, in
 struct DirectPart {
   std::vector<Vec3> coefficients;
   engine::DirectOnSkies on_skies;
+  std::vector<float> quadrants;  ///< the sub-patch shares (engine::direct_coefficients)
 };
 
 DirectPart direct_part(const Room& room, const SensorGrid& g, const std::vector<engine::ContinuousSky>& skies,
@@ -263,8 +271,22 @@ DirectPart direct_part(const Room& room, const SensorGrid& g, const std::vector<
   DirectPart d;
   d.coefficients = engine::direct_coefficients(room.scene, room.materials,
                                                engine::SourceSet::sky_bins(sky::PatchBasis::tregenza()), g.points,
-                                               o, nullptr, {}, &d.on_skies);
+                                               o, nullptr, {}, &d.on_skies, &d.quadrants);
   return d;
+}
+
+/// The annual product's sub-patch correction (study/sub_patch_shares.h) of row s at column t
+/// of `m` (its quadrant deltas), lux: 179 sum_p sum_q Q_pq d_pq(t).
+double sub_patch_lux(const DirectPart& d, std::size_t sources, std::size_t s, const sky::SkyMatrix& m,
+                     std::size_t t) {
+  double sum = 0;
+  for (std::size_t p = 1; p < sources; ++p) {
+    const float* q = d.quadrants.data() + (s * sources + p) * engine::StoredQuadrants;
+    const double q3 = engine::luminance_of(d.coefficients[s * sources + p]) - q[0] - q[1] - q[2];
+    for (std::size_t k = 0; k < 3; ++k) sum += double(q[k]) * m.quadrant_deltas.at(4 * p + k, t, 0);
+    sum += q3 * m.quadrant_deltas.at(4 * p + 3, t, 0);
+  }
+  return RadianceWhiteEfficacy_lm_per_W * sum;
 }
 
 double continuous_lux(const DirectPart& d, std::size_t s, std::size_t k) {
@@ -362,10 +384,11 @@ PatchSky patch_sky(const sky::SkyModel& model, const sky::PatchBasis& basis, con
 }
 
 /// The estimators compared with the continuous sky's direct part.
-enum Estimator { StudyCentre, PatchMean, ContinuousCentre, FirstOrder, Quadrants, EstimatorCount };
+enum Estimator { StudyCentre, PatchMean, ContinuousCentre, FirstOrder, Quadrants, Shipped, EstimatorCount };
 const char* estimator_name(int e) {
-  static const char* names[] = {"centre vector (the study)", "mean vector", "centre, continuous normalisation",
-                                "first order: centre + gradient", "2 x 2 sub-patch means"};
+  static const char* names[] = {"centre vector (patch-uniform)", "mean vector", "centre, continuous normalisation",
+                                "first order: centre + gradient", "2 x 2 sub-patch means (scored)",
+                                "the study: centre + sub-patch"};
   return names[e];
 }
 
@@ -403,8 +426,9 @@ void hours_mode(const std::vector<Climate>& climates, int per_class, const fs::p
   }
   for (const bool black : {false, true}) {
     const Room room = make_room(climates.at(0).proj, black);
-    // [class label] -> [estimator or the study's total] -> [sky class, 3 = all]
-    std::map<std::string, std::array<std::array<ErrorStats, 4>, EstimatorCount + 1>> stats;
+    // [class label] -> [estimator, then the patch-uniform and the study's share of the run's
+    // total] -> [sky class, 3 = all]
+    std::map<std::string, std::array<std::array<ErrorStats, 4>, EstimatorCount + 2>> stats;
     std::vector<std::string> order;
     for (const Climate& c : climates) {
       std::vector<std::size_t> hours;
@@ -475,13 +499,16 @@ void hours_mode(const std::vector<Climate>& climates, int per_class, const fs::p
               e[ContinuousCentre] = ground + to_lux * centre;
               e[FirstOrder] = ground + to_lux * first;
               e[Quadrants] = ground + to_lux * quadrants;
+              e[Shipped] = e[StudyCentre] + sub_patch_lux(d, sources, s, c.centre, t);
               for (int k : {class_of[i], 3}) {
                 for (int x = 0; x < EstimatorCount; ++x)
                   stats[label][std::size_t(x)][std::size_t(k)].add(100.0 * (e[x] - cont) / cont);
                 if (!black) {
                   const double total = totals.at(g.name).lux(t, s);
-                  if (total > 0)
+                  if (total > 0) {
                     stats[label][EstimatorCount][std::size_t(k)].add(100.0 * (e[StudyCentre] - cont) / total);
+                    stats[label][EstimatorCount + 1][std::size_t(k)].add(100.0 * (e[Shipped] - cont) / total);
+                  }
                 }
               }
             }
@@ -492,8 +519,8 @@ void hours_mode(const std::vector<Climate>& climates, int per_class, const fs::p
     std::printf("%s room: RMS %% per sky class (%s, %s, %s), then mean, RMS, worst of all hours\n",
                 black ? "black" : "glazed (wall_sensors)", class_names[0], class_names[1], class_names[2]);
     for (const std::string& label : order)
-      for (int x = 0; x <= EstimatorCount; ++x) {
-        if (black && x == EstimatorCount) continue;
+      for (int x = 0; x <= EstimatorCount + 1; ++x) {
+        if (black && x >= EstimatorCount) continue;
         const auto& st = stats[label][std::size_t(x)];
         char rms[64];
         auto class_rms = [&](std::size_t k) {
@@ -501,7 +528,10 @@ void hours_mode(const std::vector<Climate>& climates, int per_class, const fs::p
         };
         std::snprintf(rms, sizeof rms, "%6.2f %6.2f %6.2f", class_rms(0), class_rms(1), class_rms(2));
         std::printf("  %-16s %-34s %s | %s\n", label.c_str(),
-                    x == EstimatorCount ? "study, share of the run's total" : estimator_name(x), rms,
+                    x == EstimatorCount       ? "patch-uniform, share of the total"
+                    : x == EstimatorCount + 1 ? "the study, share of the total"
+                                              : estimator_name(x),
+                    rms,
                     st[3].text().c_str());
       }
   }
@@ -526,55 +556,70 @@ void year_mode(const std::vector<Climate>& climates, int samples, const fs::path
       const DirectPart d = direct_part(room, g, skies, samples, std::uint64_t(c.proj.simulation.seed));
       const double cpu = bench::process_cpu_seconds() - cpu0;
       const std::size_t sources = d.coefficients.size() / g.points.size();
-      metrics::IlluminanceTable after = before;
-      ErrorStats total_error;
-      std::size_t over_2 = 0, over_5 = 0, worst_t = 0, worst_s = 0;
+      // The run's table is the study's (patch values + the sub-patch correction); the
+      // reference replaces its direct part by the continuous sky's (the same samples), and the
+      // patch-uniform table takes the correction out.
+      metrics::IlluminanceTable reference = before, uniform = before;
+      ErrorStats error[2];  // [0] patch-uniform, [1] the study
+      std::size_t over_2[2] = {}, over_5[2] = {}, worst_t[2] = {}, worst_s[2] = {};
       for (std::size_t i = 0; i < hours.size(); ++i)
         for (std::size_t s = 0; s < g.points.size(); ++s) {
           const std::size_t t = hours[i];
-          const double delta = continuous_lux(d, s, i) - basis_lux(d.coefficients, sources, s, c.centre.matrix, t);
-          const double old = before.lux(t, s);
-          after.lux(t, s) = float(std::max(0.0, old + delta));
-          if (!(old > 0)) continue;
-          const double e = -100.0 * delta / (old + delta);
-          if (std::fabs(e) > std::fabs(total_error.worst)) {
-            worst_t = t;
-            worst_s = s;
+          const double correction = sub_patch_lux(d, sources, s, c.centre, t);
+          const double run = before.lux(t, s);
+          const double exact =
+              run + continuous_lux(d, s, i) - basis_lux(d.coefficients, sources, s, c.centre.matrix, t) - correction;
+          reference.lux(t, s) = float(std::max(0.0, exact));
+          uniform.lux(t, s) = float(std::max(0.0, run - correction));
+          if (!(exact > 0)) continue;
+          const double value[2] = {run - correction, run};
+          for (int k = 0; k < 2; ++k) {
+            const double e = 100.0 * (value[k] - exact) / exact;
+            if (std::fabs(e) > std::fabs(error[k].worst)) {
+              worst_t[k] = t;
+              worst_s[k] = s;
+            }
+            error[k].add(e);
+            over_2[k] += std::fabs(e) > 2.0;
+            over_5[k] += std::fabs(e) > 5.0;
           }
-          total_error.add(e);
-          over_2 += std::fabs(e) > 2.0;
-          over_5 += std::fabs(e) > 5.0;
         }
-      const std::vector<metrics::SensorMetrics> m0 =
-          metrics::compute_sensor_metrics(before, occupied, settings.metrics);
-      const std::vector<metrics::SensorMetrics> m1 = metrics::compute_sensor_metrics(after, occupied, settings.metrics);
-      std::size_t da_flips = 0;
-      double da_shift = 0, da_worst = 0, udi_worst = 0, udi_shift = 0, mean_lux_shift = 0;
-      for (std::size_t s = 0; s < m0.size(); ++s) {
-        const double half = 100.0 * settings.metrics.sda_time_fraction;
-        if ((m0[s].da_percent >= half) != (m1[s].da_percent >= half)) ++da_flips;
-        const double dd = m0[s].da_percent - m1[s].da_percent;
-        const double du = m0[s].udi_autonomous_percent - m1[s].udi_autonomous_percent;
-        da_shift += dd;
-        udi_shift += du;
-        if (std::fabs(dd) > std::fabs(da_worst)) da_worst = dd;
-        if (std::fabs(du) > std::fabs(udi_worst)) udi_worst = du;
-        mean_lux_shift += 100.0 * (m0[s].mean_occupied_lux - m1[s].mean_occupied_lux) / m1[s].mean_occupied_lux;
+      const std::vector<metrics::SensorMetrics> m_ref =
+          metrics::compute_sensor_metrics(reference, occupied, settings.metrics);
+      std::printf("  %-8s %-10s %4zu sensors x %4zu hours (%.0f CPU s): hourly total against the continuous sky's "
+                  "direct part\n",
+                  c.name.c_str(), g.name.c_str(), g.points.size(), hours.size(), cpu);
+      for (int k = 0; k < 2; ++k) {
+        const metrics::IlluminanceTable& table = k == 0 ? uniform : before;
+        const std::vector<metrics::SensorMetrics> m0 = metrics::compute_sensor_metrics(table, occupied, settings.metrics);
+        std::size_t da_flips = 0, udi_flips = 0;
+        double da_shift = 0, da_worst = 0, udi_worst = 0, udi_shift = 0, mean_lux_shift = 0;
+        for (std::size_t s = 0; s < m0.size(); ++s) {
+          const double half = 100.0 * settings.metrics.sda_time_fraction;
+          if ((m0[s].da_percent >= half) != (m_ref[s].da_percent >= half)) ++da_flips;
+          if ((m0[s].udi_autonomous_percent >= half) != (m_ref[s].udi_autonomous_percent >= half)) ++udi_flips;
+          const double dd = m0[s].da_percent - m_ref[s].da_percent;
+          const double du = m0[s].udi_autonomous_percent - m_ref[s].udi_autonomous_percent;
+          da_shift += dd;
+          udi_shift += du;
+          if (std::fabs(dd) > std::fabs(da_worst)) da_worst = dd;
+          if (std::fabs(du) > std::fabs(udi_worst)) udi_worst = du;
+          mean_lux_shift += 100.0 * (m0[s].mean_occupied_lux - m_ref[s].mean_occupied_lux) / m_ref[s].mean_occupied_lux;
+        }
+        const double n = double(m0.size());
+        const std::size_t wt = worst_t[k], ws = worst_s[k];
+        std::printf("    %-13s %s %%; off by > 2 %%: %.2f %%, > 5 %%: %.3f %% of sensor-hours; worst at %d/%d %.1f h "
+                    "(sun %.1f deg up), sensor %zu: %.0f lx, reference %.0f\n"
+                    "      DA300 (table - reference) mean %+.2f, worst %+.2f points, DA300 >= 50 %% verdicts moved: "
+                    "%zu; UDI 300-3000 mean %+.2f, worst %+.2f points, >= 50 %% verdicts moved: %zu; mean occupied "
+                    "lux %+.2f %%\n",
+                    k == 0 ? "patch-uniform" : "the study", error[k].text().c_str(),
+                    100.0 * double(over_2[k]) / double(std::max<std::size_t>(1, error[k].n)),
+                    100.0 * double(over_5[k]) / double(std::max<std::size_t>(1, error[k].n)), c.steps[wt].month,
+                    c.steps[wt].day, c.steps[wt].hour_lst, std::asin(c.sun[wt]->z) * 180.0 / Pi, ws,
+                    double(table.lux(wt, ws)), double(reference.lux(wt, ws)), da_shift / n, da_worst, da_flips,
+                    udi_shift / n, udi_worst, udi_flips, mean_lux_shift / n);
       }
-      const double n = double(m0.size());
-      std::printf("  %-8s %-10s %4zu sensors x %4zu hours (%.0f CPU s): hourly total, basis vs continuous "
-                  "direct part: %s %%\n"
-                  "      share of sensor-hours off by more than 2 %%: %.2f %%, 5 %%: %.3f %%; "
-                  "the worst at %d/%d %.1f h "
-                  "(sun %.1f deg up), sensor %zu: %.0f lx in the run, %.0f corrected\n"
-                  "      DA300 (run - corrected) mean %+.2f, worst %+.2f points; sensors whose DA300 >= 50 %% "
-                  "verdict moves: %zu; UDI 300-3000 mean %+.2f, worst %+.2f points; mean occupied lux %+.2f %%\n",
-                  c.name.c_str(), g.name.c_str(), g.points.size(), hours.size(), cpu, total_error.text().c_str(),
-                  100.0 * double(over_2) / double(std::max<std::size_t>(1, total_error.n)),
-                  100.0 * double(over_5) / double(std::max<std::size_t>(1, total_error.n)), c.steps[worst_t].month,
-                  c.steps[worst_t].day, c.steps[worst_t].hour_lst, std::asin(c.sun[worst_t]->z) * 180.0 / Pi, worst_s,
-                  double(before.lux(worst_t, worst_s)), double(after.lux(worst_t, worst_s)),
-                  da_shift / n, da_worst, da_flips, udi_shift / n, udi_worst, mean_lux_shift / n);
       std::fflush(stdout);
     }
   }

@@ -715,7 +715,7 @@ DaylightCoefficients daylight_coefficients(const Scene& scene,
   c.caustic.assign(c.sensors * c.sources, Vec3{0, 0, 0});
   c.global.assign(c.sensors * c.sources, Vec3{0, 0, 0});
   c.direct = direct_coefficients(scene, materials, sources, sensors, options.direct, &c.direct_variance, rows,
-                                 &c.direct_on_skies);
+                                 &c.direct_on_skies, &c.direct_quadrants);
   photon_coefficients(scene, materials, sources, photons, sensors, options, c, rows);
   return c;
 }

@@ -233,6 +233,14 @@ class SkyTally {
   std::vector<StratifiedVariance> m_strata;
 };
 
+/// The luminance of a sample's value into its quadrant's share of sky bin p (header comment,
+/// "Sub-patch shares"): `shares` holds StoredQuadrants doubles per source, null when not kept;
+/// the ground bin keeps none.
+void add_to_quadrant(double* shares, std::size_t p, int quadrant, const Vec3& value) {
+  if (!shares || p == 0 || quadrant >= static_cast<int>(StoredQuadrants)) return;
+  shares[p * StoredQuadrants + static_cast<std::size_t>(quadrant)] += luminance_of(value);
+}
+
 /// L(w) T(w) cos: the integrand, L = 1 when `radiance` is null.
 Vec3 source_value(const Vec3& t, const Vec3& w, double cos_theta, const std::function<Vec3(const Vec3&)>* radiance) {
   return (radiance ? mul(t, (*radiance)(w)) : t) * cos_theta;
@@ -247,7 +255,7 @@ Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Mater
                                      const SourceSet& sources, std::size_t p, const Vec3& origin,
                                      const Vec3& normal, int k, std::uint64_t seed, std::uint64_t sensor_index,
                                      const std::function<Vec3(const Vec3&)>* radiance, const PortSampling* ports,
-                                     const PortView* view, double* variance, SkyTally* skies) {
+                                     const PortView* view, double* variance, SkyTally* skies, double* shares) {
   Rng rng(seed, p, sensor_index, RandomStream::Direct);
   const double density_a = static_cast<double>(k) * k / sources[p].solid_angle_sr;
   Vec3 sum;
@@ -273,6 +281,7 @@ Vec3 integrate_source_by_solid_angle(const Scene& scene, const std::vector<Mater
       sum += value;
       if (variance) strata.add(0, luminance_of(value));
       if (skies) skies->add(true, w, value);
+      add_to_quadrant(shares, p, 2 * static_cast<int>(u1 >= 0.5) + static_cast<int>(u2 >= 0.5), value);
     }
   }
   return sum;
@@ -285,7 +294,7 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
                           const SourceSet& sources, const Vec3& origin, const Vec3& normal, int k,
                           int kb, std::uint64_t seed, std::uint64_t sensor_index,
                           const std::function<Vec3(const Vec3&)>* radiance, const PortView* view, Vec3* row,
-                          double* variance_row, SkyTally* skies) {
+                          double* variance_row, SkyTally* skies, double* shares) {
   const PortSet& ports = scene.ports();
   const std::vector<PortPiece> pieces = port_pieces(ports, origin.z);
   PortSide sides[2];  // [0] below the sensor's height, [1] above
@@ -303,7 +312,7 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
     const bool with_ports = sources[p].solid_angle_sr >= PortSampledMinimumSolidAngle_sr;
     row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, seed, sensor_index,
                                               radiance, with_ports ? &port_sampling : nullptr, view,
-                                              variance_row ? variance_row + p : nullptr, skies);
+                                              variance_row ? variance_row + p : nullptr, skies, shares);
   }
   // Strategy B: points uniform over each side's port pieces, each direction credited to the
   // source containing it.
@@ -342,7 +351,10 @@ void integrate_sensor_mis(const Scene& scene, const std::vector<Material>& mater
         const double u2 = std::min((j + rng.uniform()) / kb, OneMinusEpsilon);
         Vec3 value, w;
         const int p = sample(u1, u2, value, w);
-        if (p >= 0) row[static_cast<std::size_t>(p)] += value;
+        if (p >= 0) {
+          row[static_cast<std::size_t>(p)] += value;
+          if (shares && p > 0) add_to_quadrant(shares, static_cast<std::size_t>(p), sources.basis().quadrant(p, w), value);
+        }
         if (variance_row) strata.add(p, luminance_of(value));
         if (skies) skies->add(p >= 0, w, p >= 0 ? value : Vec3{});
       }
@@ -356,7 +368,7 @@ void integrate_sensor(const Scene& scene, const std::vector<Material>& materials
                       const SourceSet& sources, const Vec3& origin, const Vec3& normal,
                       const DirectOptions& options, std::uint64_t sensor_index,
                       const std::function<Vec3(const Vec3&)>* radiance, double pad_m, Vec3* row,
-                      double* variance_row, SkyTally* skies) {
+                      double* variance_row, SkyTally* skies, double* shares) {
   const int k = strata_per_axis(options.samples_per_source);
   // The ports seen from the sensor: most sampled directions of a deep room meet a ceiling or
   // wall and cross no window, and need no shadow ray (port_view.h). Without ports every ray
@@ -366,13 +378,13 @@ void integrate_sensor(const Scene& scene, const std::vector<Material>& materials
   const PortView* seen = view ? &*view : nullptr;
   if (options.port_sampling && !scene.ports().empty()) {
     integrate_sensor_mis(scene, materials, sources, origin, normal, k, PortStrataFactor * k, options.seed,
-                         sensor_index, radiance, seen, row, variance_row, skies);
+                         sensor_index, radiance, seen, row, variance_row, skies, shares);
     return;
   }
   for (std::size_t p = 0; p < sources.size(); ++p)
     row[p] += integrate_source_by_solid_angle(scene, materials, sources, p, origin, normal, k, options.seed,
                                               sensor_index, radiance, nullptr, seen,
-                                              variance_row ? variance_row + p : nullptr, skies);
+                                              variance_row ? variance_row + p : nullptr, skies, shares);
 }
 
 }  // namespace
@@ -416,7 +428,7 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
                                       const SourceSet& sources,
                                       const std::vector<SensorPoint>& sensors,
                                       const DirectOptions& options, std::vector<double>* variance,
-                                      SensorRange rows, DirectOnSkies* on_skies) {
+                                      SensorRange rows, DirectOnSkies* on_skies, std::vector<float>* quadrants) {
   check_materials(scene, materials);
   (void)strata_per_axis(options.samples_per_source);  // validates the count
   rows = rows.within(sensors.size());
@@ -433,6 +445,8 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
     on_skies->irradiance.assign(rows.size() * n_skies, Vec3{});
     on_skies->variance.assign(rows.size() * n_skies, 0.0);
   }
+  const bool with_shares = quadrants && sources.has_basis();
+  if (quadrants) quadrants->assign(with_shares ? rows.size() * n_sources * StoredQuadrants : 0, 0.0f);
   const double pad_m = port_view_pad_m(scene, materials);
   // One sensor per task item: each writes only its own row, and its random numbers depend
   // on (seed, source, sensor index in the whole grid) alone, so neither the partition into
@@ -447,10 +461,14 @@ std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Mate
                         if (n_skies > 0)
                           skies.emplace(options.skies, on_skies->irradiance.data() + r * n_skies,
                                         on_skies->variance.data() + r * n_skies);
+                        // The shares summed in double, in sample order, then stored as float.
+                        std::vector<double> shares(with_shares ? n_sources * StoredQuadrants : 0, 0.0);
                         integrate_sensor(scene, materials, sources, origin, normals[r], options, s,
                                          nullptr, pad_m, result.data() + r * n_sources,
                                          variance ? variance->data() + r * n_sources : nullptr,
-                                         skies ? &*skies : nullptr);
+                                         skies ? &*skies : nullptr, with_shares ? shares.data() : nullptr);
+                        for (std::size_t i = 0; i < shares.size(); ++i)
+                          (*quadrants)[r * n_sources * StoredQuadrants + i] = static_cast<float>(shares[i]);
                       }
                     });
   return result;
@@ -470,7 +488,7 @@ Vec3 direct_irradiance(const Scene& scene, const std::vector<Material>& material
   const Vec3 origin = sensor.position + normal * scene.ray_epsilon_m();
   std::vector<Vec3> row(sources.size());
   integrate_sensor(scene, materials, sources, origin, normal, options, 0, &radiance, port_view_pad_m(scene, materials),
-                   row.data(), nullptr, nullptr);
+                   row.data(), nullptr, nullptr, nullptr);
   Vec3 sum;
   for (const Vec3& v : row) sum += v;
   return sum;

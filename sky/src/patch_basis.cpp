@@ -154,4 +154,18 @@ Vec3 PatchBasis::sample_direction(int bin, double u1, double u2) const {
   return Vec3{r * std::sin(az), r * std::cos(az), z};
 }
 
+int PatchBasis::quadrant(int bin, const Vec3& direction) const {
+  check_bin(bin);
+  if (bin == 0) return 0;
+  const SamplingBounds& s = m_sampling[static_cast<std::size_t>(bin)];
+  const double len = length(direction);
+  const bool upper = direction.z / len >= 0.5 * (s.sin_altitude_min + s.sin_altitude_max);
+  // Azimuth clockwise from north, measured from the bin's lower edge (the north patch of a
+  // row starts below 0).
+  double from_edge = std::atan2(direction.x, direction.y) - s.bounds.azimuth_min_rad;
+  from_edge -= 2.0 * Pi * std::floor(from_edge / (2.0 * Pi));
+  const bool later = from_edge >= 0.5 * (s.bounds.azimuth_max_rad - s.bounds.azimuth_min_rad);
+  return 2 * static_cast<int>(upper) + static_cast<int>(later);
+}
+
 }  // namespace dayphoton::sky

@@ -34,6 +34,21 @@ double bin_mean(const PatchBasis& basis, int bin, int n, const F& f) {
   return sum / (n * n);
 }
 
+/// Mean of f over each quadrant of a bin (PatchBasis::quadrant) by an n x n midpoint rule.
+template <typename F>
+std::array<double, PatchBasis::QuadrantCount> quadrant_means(const PatchBasis& basis, int bin, int n, const F& f) {
+  std::array<double, PatchBasis::QuadrantCount> mean{};
+  for (int q = 0; q < PatchBasis::QuadrantCount; ++q) {
+    const double u1_0 = 0.5 * (q / 2), u2_0 = 0.5 * (q % 2);
+    double sum = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        sum += f(basis.sample_direction(bin, u1_0 + 0.5 * (i + 0.5) / n, u2_0 + 0.5 * (j + 0.5) / n));
+    mean[static_cast<std::size_t>(q)] = sum / (n * n);
+  }
+  return mean;
+}
+
 /// Integral of cos(theta) over a sky bin (sr): dphi (sin^2 h_max - sin^2 h_min) / 2.
 double projected_solid_angle_sr(const PatchBasis& basis, int bin) {
   const PatchBounds b = basis.bounds(bin);
@@ -161,6 +176,23 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
 
   SkyMatrix result;
   result.matrix = RadianceMatrix(static_cast<std::size_t>(n_bins), n_steps, 3);
+  const int quadrant_samples =
+      std::max(1, (QuadrantSamplesPerAxis + basis.multiplication_factor() - 1) / basis.multiplication_factor());
+  if (options.quadrant_deltas)
+    result.quadrant_deltas =
+        RadianceMatrix(static_cast<std::size_t>(PatchBasis::QuadrantCount * n_bins), n_steps, 1);
+  const double colour_luminance = dot(RgbLuminanceWeights, options.sky_colour);
+  // Integral of cos(theta) over each quadrant (PatchBasis::quadrant): half the azimuth range
+  // times (s1^2 - s0^2) / 2 over its half in sine of altitude.
+  std::vector<double> quadrant_projected_solid_angle(options.quadrant_deltas ? PatchBasis::QuadrantCount * n_bins : 0);
+  for (int bin = 1; bin < n_bins && options.quadrant_deltas; ++bin) {
+    const PatchBounds b = basis.bounds(bin);
+    const double s0 = std::sin(b.altitude_min_rad), s1 = std::sin(b.altitude_max_rad), sm = 0.5 * (s0 + s1);
+    const double half_azimuth = 0.5 * (b.azimuth_max_rad - b.azimuth_min_rad);
+    for (int q = 0; q < PatchBasis::QuadrantCount; ++q)
+      quadrant_projected_solid_angle[static_cast<std::size_t>(PatchBasis::QuadrantCount * bin + q)] =
+          half_azimuth * (q / 2 == 0 ? sm * sm - s0 * s0 : s1 * s1 - sm * sm) / 2.0;
+  }
   std::vector<std::optional<SunRecord>> suns(n_steps);
   std::vector<double> below_horizon_W_m2(n_steps, 0.0);  // direct normal of records below the horizon
 
@@ -196,6 +228,17 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
     const bool with_sky = options.sun != SunInMatrix::Only;
     double sky_horizontal_lux = 0;
 
+    // Relative luminance lv of the Perez shape along d.
+    auto lv_at = [&](const Vec3& d) {
+      const double gamma = std::acos(std::clamp(dot(d, state.model_sun_direction), -1.0, 1.0));
+      return perez_relative_luminance(state, std::acos(std::clamp(d.z, -1.0, 1.0)), gamma);
+    };
+    // The patch values (grey, W/(sr m^2)) for the quadrant deltas.
+    std::vector<double> patch_radiance(options.quadrant_deltas ? n_bins : 0, 0.0);
+    bool uniform_sky = false;
+    auto set_deltas = [&](int bin, double value, double factor) {
+      if (options.quadrant_deltas) patch_radiance[static_cast<std::size_t>(bin)] = value * factor;
+    };
     if (with_sky) {
       if (options.patch_value == PatchValue::Centre) {
         std::vector<double> lv(n_bins, 0.0);
@@ -205,7 +248,8 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
           lv[bin] = perez_relative_luminance(state, centre_zenith[bin], gamma);
           s += lv[bin] * centre_weight[bin];
         }
-        if (s <= 1e-9) {  // lv vanished everywhere: uniform sky, as gendaymtx
+        uniform_sky = s <= 1e-9;
+        if (uniform_sky) {  // lv vanished everywhere: uniform sky, as gendaymtx
           std::fill(lv.begin() + 1, lv.end(), 1.0);
           s = Pi;
         }
@@ -213,6 +257,7 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
         for (int bin = 1; bin < n_bins; ++bin) {
           const double value = lv[bin] * sky_horizontal_lux / (s * RadianceWhiteEfficacy_lm_per_W);
           set_rgb(result.matrix, bin, t, options.sky_colour * value);
+          set_deltas(bin, lv[bin], sky_horizontal_lux / (s * RadianceWhiteEfficacy_lm_per_W));
         }
       } else {
         // The continuous Perez shape lv, averaged over each patch; normalised below.
@@ -221,13 +266,11 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
         std::vector<double> luminance(n_bins, 0.0);
         double horizontal = 0;
         for (int bin = 1; bin < n_bins; ++bin) {
-          luminance[bin] = bin_mean(basis, bin, n, [&](const Vec3& d) {
-            const double gamma = std::acos(std::clamp(dot(d, state.model_sun_direction), -1.0, 1.0));
-            return perez_relative_luminance(state, std::acos(std::clamp(d.z, -1.0, 1.0)), gamma);
-          });
+          luminance[bin] = bin_mean(basis, bin, n, lv_at);
           horizontal += luminance[bin] * projected_solid_angle[bin];
         }
-        if (horizontal <= 1e-9) {  // lv vanished everywhere: uniform sky, as gendaymtx
+        uniform_sky = horizontal <= 1e-9;
+        if (uniform_sky) {  // lv vanished everywhere: uniform sky, as gendaymtx
           std::fill(luminance.begin() + 1, luminance.end(), 1.0);
           horizontal = Pi;
         }
@@ -236,9 +279,32 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
         // up to a few % for Tregenza). Rescale so that the discrete sky reproduces the measured
         // diffuse horizontal illuminance exactly, as gendaymtx's discrete normalisation does.
         const double scale = horizontal > 0 ? sky_horizontal_lux / horizontal : 0.0;
-        for (int bin = 1; bin < n_bins; ++bin)
+        for (int bin = 1; bin < n_bins; ++bin) {
           set_rgb(result.matrix, bin, t,
                   options.sky_colour * (scale * luminance[bin] / RadianceWhiteEfficacy_lm_per_W));
+          set_deltas(bin, luminance[bin], scale / RadianceWhiteEfficacy_lm_per_W);
+        }
+      }
+      if (options.quadrant_deltas && !uniform_sky) {
+        // The quadrants' means of the Perez shape, normalised as the sky of quadrants they make
+        // keeps the measured diffuse horizontal illuminance (the Mean mode's rule, on
+        // quadrants; gendaymtx's discrete normalisation of the centre values misses it by
+        // up to a percent), less the patch values.
+        std::vector<std::array<double, PatchBasis::QuadrantCount>> mean(static_cast<std::size_t>(n_bins));
+        double horizontal_q = 0;
+        for (int bin = 1; bin < n_bins; ++bin) {
+          mean[static_cast<std::size_t>(bin)] = quadrant_means(basis, bin, quadrant_samples, lv_at);
+          for (int q = 0; q < PatchBasis::QuadrantCount; ++q)
+            horizontal_q += mean[static_cast<std::size_t>(bin)][static_cast<std::size_t>(q)] *
+                            quadrant_projected_solid_angle[static_cast<std::size_t>(PatchBasis::QuadrantCount * bin + q)];
+        }
+        const double to_radiance =
+            horizontal_q > 0 ? sky_horizontal_lux / (horizontal_q * RadianceWhiteEfficacy_lm_per_W) : 0.0;
+        for (int bin = 1; bin < n_bins; ++bin)
+          for (int q = 0; q < PatchBasis::QuadrantCount; ++q)
+            result.quadrant_deltas.at(static_cast<std::size_t>(PatchBasis::QuadrantCount * bin + q), t, 0) =
+                static_cast<float>(colour_luminance * (to_radiance * mean[static_cast<std::size_t>(bin)][static_cast<std::size_t>(q)] -
+                                                       patch_radiance[static_cast<std::size_t>(bin)]));
       }
       const Vec3 ground = ground_radiance_rgb(Vec3{1, 1, 1} * options.ground_reflectance, sky_horizontal_lux,
                                               sun_lux_normal, sun.direction);

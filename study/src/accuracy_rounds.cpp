@@ -79,7 +79,8 @@ engine::DaylightCoefficients grid_direct(const AccuracyCase& c, std::size_t g, i
         dc.sensors = end - begin;
         dc.sources = n;
         dc.direct = engine::direct_coefficients(*c.scene, *c.materials, *c.sources, grid.points, options,
-                                                &dc.direct_variance, {begin, end}, &dc.direct_on_skies);
+                                                &dc.direct_variance, {begin, end}, &dc.direct_on_skies,
+                                                &dc.direct_quadrants);
         dc.caustic.assign(dc.sensors * n, Vec3{0, 0, 0});
         dc.global.assign(dc.sensors * n, Vec3{0, 0, 0});
         dc.photon_variance.assign(dc.sensors * n, 0.0);
@@ -103,6 +104,7 @@ void copy_direct_rows(const engine::DaylightCoefficients& whole, const std::vect
   out.direct.clear();
   out.direct_variance.clear();
   out.direct_on_skies = {};
+  out.direct_quadrants.clear();
   if (whole.direct.empty()) {
     out.direct.assign(out.sensors * sources, Vec3{});
     out.direct_variance.assign(out.sensors * sources, 0.0);
@@ -119,6 +121,8 @@ void copy_direct_rows(const engine::DaylightCoefficients& whole, const std::vect
     append_row(out.direct_variance, whole.direct_variance, i, sources);
     append_row(out.direct_on_skies.irradiance, skies.irradiance, i, k);
     append_row(out.direct_on_skies.variance, skies.variance, i, k);
+    if (!whole.direct_quadrants.empty())
+      append_row(out.direct_quadrants, whole.direct_quadrants, i, sources * engine::StoredQuadrants);
   }
 }
 

@@ -45,7 +45,8 @@ std::vector<T> values_of(const std::string& bytes, std::size_t expected) {
 
 std::optional<AnnualStudy> annual_study_in_blocks(StepExecutor& executor, const std::string& name,
                                                   const RadianceMatrix& coefficients, const AnnualSky& sky,
-                                                  const AnnualStudySettings& settings, const GridSunCoefficients* sun) {
+                                                  const AnnualStudySettings& settings, const GridSunCoefficients* sun,
+                                                  const SubPatchShares* shares) {
   const std::size_t n_sensors = coefficients.rows(), n_steps = sky.steps.size();
   const metrics::OccupancySchedule occupancy = occupancy_schedule(settings, sky.steps);
   // A block: its illuminance (steps x its sensors), per-sensor metrics and (with the sun) ASE
@@ -53,8 +54,9 @@ std::optional<AnnualStudy> annual_study_in_blocks(StepExecutor& executor, const 
   SensorBlocks blocks;
   blocks.sensors = n_sensors;
   blocks.compute_rows = [&](std::size_t begin, std::size_t end) {
-    metrics::IlluminanceTable table =
-        annual_illuminance(matrix_rows(coefficients, begin, end), sky.matrix, sky.steps, begin);
+    const SubPatchShares block_shares = shares ? shares->rows(begin, end) : SubPatchShares{};
+    metrics::IlluminanceTable table = annual_illuminance(matrix_rows(coefficients, begin, end), sky.matrix, sky.steps,
+                                                         begin, &block_shares, &sky.quadrant_deltas);
     std::vector<int> ase;
     if (sun) {
       const metrics::IlluminanceTable direct =

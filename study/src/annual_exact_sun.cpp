@@ -239,12 +239,13 @@ metrics::IlluminanceTable exported_indirect_sun_table(const RadianceMatrix& bin_
 
 AnnualStudy annual_study_exact_sun(const RadianceMatrix& sky_coefficients, const ExactSunExport& exported,
                                    const SkyAndSuns& ss, const AnnualStudySettings& settings,
-                                   const std::string& grid_dir, ExactSunNotes& notes) {
+                                   const std::string& grid_dir, ExactSunNotes& notes,
+                                   const SubPatchShares* shares) {
   const metrics::IlluminanceTable direct = exported_direct_sun_table(
       exported.direct, ss.suns, ss.sky.steps, in_folder(grid_dir, DirectSunFileName), notes);
   const metrics::IlluminanceTable indirect =
       exported_indirect_sun_table(exported.sun_coefficients, *exported.bins, ss.suns, ss.sky.steps, notes);
-  return compute_annual_study_with_sun(sky_coefficients, ss.sky, direct, indirect, settings);
+  return compute_annual_study_with_sun(sky_coefficients, ss.sky, direct, indirect, settings, shares);
 }
 
 }  // namespace dayphoton::study

@@ -12,6 +12,12 @@
 // TilesPerTask tiles, and two rows of W at a time are read once per task (about 10,000
 // sensors x 146 bins: W is 35 MB, read from memory once per task instead of once per tile).
 // oneTBB spreads the tasks over the cores.
+//
+// The sub-patch correction (sub_patch_shares.h) extends each row of W and each gathered sky
+// column: for every sky bin p that some sensor's direct part sees, four more terms, W =
+// 179 (lum C_p, Q_p0, Q_p1, Q_p2) against (d_p3, d_p0 - d_p3, d_p1 - d_p3, d_p2 - d_p3), d_pq
+// the quadrant deltas, which sum to 179 sum_q Q_pq d_pq with Q_p3 = lum C_p - Q_p0 - Q_p1 -
+// Q_p2. Bins no sensor of the rows sees directly (zero shares) add nothing and are left out.
 #include "dayphoton/study/annual_illuminance.h"
 
 #include <algorithm>
@@ -120,7 +126,8 @@ bool append_tenths(std::string& out, float v) {
 metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
                                              const RadianceMatrix& sky_matrix,
                                              const std::vector<metrics::TimeStamp>& steps,
-                                             std::size_t first_sensor) {
+                                             std::size_t first_sensor, const SubPatchShares* shares,
+                                             const RadianceMatrix* quadrant_deltas) {
   if (coefficients.columns() != sky_matrix.rows())
     throw std::invalid_argument("annual illuminance: " + std::to_string(coefficients.columns()) +
                                 " coefficient bins but a sky matrix of " + std::to_string(sky_matrix.rows()) +
@@ -137,17 +144,44 @@ metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
   const std::size_t n_sensors = coefficients.rows();
   const std::size_t n_bins = coefficients.columns();
   const std::size_t n_comp = static_cast<std::size_t>(coefficients.components());
-  const std::size_t k = n_bins * n_comp;  // length of one dot product
   const std::size_t n_steps = sky_matrix.columns();
+  constexpr std::size_t Q = SubPatchShares::ValuesPerBin;
+  const bool correct = shares && !shares->empty() && quadrant_deltas && quadrant_deltas->rows() > 0;
+  if (correct && (shares->sensors != n_sensors || shares->bins != n_bins || quadrant_deltas->rows() != Q * n_bins ||
+                  quadrant_deltas->columns() != n_steps || quadrant_deltas->components() != 1))
+    throw std::invalid_argument("annual illuminance: sub-patch shares of " + std::to_string(shares->sensors) +
+                                " sensors x " + std::to_string(shares->bins) + " bins and quadrant deltas of " +
+                                std::to_string(quadrant_deltas->rows()) + " rows x " +
+                                std::to_string(quadrant_deltas->columns()) + " steps for " +
+                                std::to_string(n_sensors) + " sensors x " + std::to_string(n_bins) + " bins x " +
+                                std::to_string(n_steps) + " steps");
+  // The bins some row's direct part sees (their shares are not all zero).
+  std::vector<std::size_t> seen;
+  if (correct)
+    for (std::size_t p = 0; p < n_bins; ++p) {
+      bool any = false;
+      for (std::size_t s = 0; s < n_sensors && !any; ++s)
+        for (std::size_t v = 0; v < Q; ++v) any = any || shares->values[(s * n_bins + p) * Q + v] != 0.0f;
+      if (any) seen.push_back(p);
+    }
+  const std::size_t k_sky = n_bins * n_comp;
+  const std::size_t k = k_sky + Q * seen.size();  // length of one dot product
 
   metrics::IlluminanceTable table(steps, n_sensors);
   if (n_sensors == 0 || n_steps == 0) return table;
 
-  // W[s][p c] = 179 w_c C[s][p][c]; the coefficient matrix is already row-major (p, c).
+  // W[s][p c] = 179 w_c C[s][p][c]; the coefficient matrix is already row-major (p, c). Then
+  // the correction's 179 (lum C_p, Q_p0, Q_p1, Q_p2) of the bins seen.
   std::vector<double> weighted(n_sensors * k);
-  for (std::size_t s = 0; s < n_sensors; ++s)
-    for (std::size_t i = 0; i < k; ++i)
-      weighted[s * k + i] = w[i % n_comp] * static_cast<double>(coefficients.data()[s * k + i]);
+  for (std::size_t s = 0; s < n_sensors; ++s) {
+    for (std::size_t i = 0; i < k_sky; ++i)
+      weighted[s * k + i] = w[i % n_comp] * static_cast<double>(coefficients.data()[s * k_sky + i]);
+    for (std::size_t j = 0; j < seen.size(); ++j)
+      for (std::size_t v = 0; v < Q; ++v)
+        weighted[s * k + k_sky + j * Q + v] =
+            RadianceWhiteEfficacy_lm_per_W * static_cast<double>(shares->values[(s * n_bins + seen[j]) * Q + v]);
+  }
+  const float* deltas = correct ? quadrant_deltas->data().data() : nullptr;
 
   // Day steps: columns with any non-zero value. Row by row, so the matrix is read in order.
   std::vector<char> lit(n_steps, 0);
@@ -183,6 +217,13 @@ metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
           for (std::size_t p = 0; p < n_bins; ++p)
             for (std::size_t c = 0; c < n_comp; ++c)
               tile_columns[(p * n_comp + c) * Tile + j] = sky[(p * n_steps + t) * n_comp + c];
+          for (std::size_t i = 0; i < seen.size(); ++i) {
+            const float* d = deltas + (Q * seen[i]) * n_steps + t;  // row Q p + q, column t
+            const double d3 = d[3 * n_steps];
+            double* col = tile_columns + (k_sky + i * Q) * Tile + j;
+            col[0] = d3;
+            for (std::size_t q = 0; q < 3; ++q) col[(q + 1) * Tile] = double(d[q * n_steps]) - d3;
+          }
         }
       }
       for (std::size_t s = 0; s < n_sensors; s += SensorsPerProduct) {

@@ -116,11 +116,21 @@ std::string annual_sky_description(const weather::HourlyWeather& weather, const 
 AnnualSky annual_sky_from_weather(const weather::HourlyWeather& weather, const sky::SolarSite& site,
                               const sky::PatchBasis& basis, const sky::SkyMatrixOptions& options) {
   AnnualSky result;
-  result.matrix = sky::build_sky_matrix(weather, site, basis, options).matrix;
+  sky::SkyMatrixOptions with_deltas = options;
+  with_deltas.quadrant_deltas = true;
+  sky::SkyMatrix built = sky::build_sky_matrix(weather, site, basis, with_deltas);
+  result.matrix = std::move(built.matrix);
+  result.quadrant_deltas = std::move(built.quadrant_deltas);
   result.steps = time_stamps(weather);
   result.daylight_hours_quantity = daylight_hours_quantity(weather, result.daylight_hours_source);
   result.description = annual_sky_description(weather, basis, options);
   return result;
+}
+
+RadianceMatrix annual_quadrant_deltas(const weather::HourlyWeather& weather, const sky::SolarSite& site,
+                                      const sky::PatchBasis& basis, sky::SkyMatrixOptions options) {
+  options.quadrant_deltas = true;
+  return sky::build_sky_matrix(weather, site, basis, options).quadrant_deltas;
 }
 
 RadianceMatrix read_matrix_file(const std::string& path, const MatrixReadOptions& options,
@@ -149,10 +159,11 @@ AnnualSky annual_sky_from_matrix_file(const std::string& matrix_path, const weat
 }
 
 AnnualStudy compute_annual_study(const RadianceMatrix& coefficients, const AnnualSky& sky,
-                                 const AnnualStudySettings& settings, const metrics::IlluminanceTable* direct_sun) {
+                                 const AnnualStudySettings& settings, const metrics::IlluminanceTable* direct_sun,
+                                 const SubPatchShares* shares) {
   const metrics::OccupancySchedule occupancy = occupancy_schedule(settings, sky.steps);
   AnnualStudy study;
-  study.illuminance = annual_illuminance(coefficients, sky.matrix, sky.steps);
+  study.illuminance = annual_illuminance(coefficients, sky.matrix, sky.steps, 0, shares, &sky.quadrant_deltas);
   study.sky_description = sky.description;
   study.occupied_hours = occupancy.occupied_count();
   study.sensors = metrics::compute_sensor_metrics(study.illuminance, occupancy, settings.metrics);

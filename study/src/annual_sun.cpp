@@ -141,9 +141,11 @@ std::string sky_and_suns_description(const weather::HourlyWeather& weather, cons
 SkyAndSuns annual_sky_and_suns(const weather::HourlyWeather& weather, const sky::SolarSite& site,
                                const sky::PatchBasis& basis, sky::SkyMatrixOptions options) {
   options.sun = sky::SunInMatrix::None;
+  options.quadrant_deltas = true;
   sky::SkyMatrix built = sky::build_sky_matrix(weather, site, basis, options);
   SkyAndSuns result;
   result.sky.matrix = std::move(built.matrix);
+  result.sky.quadrant_deltas = std::move(built.quadrant_deltas);
   result.sky.steps = time_stamps(weather);
   result.sky.daylight_hours_quantity = daylight_hours_quantity(weather, result.sky.daylight_hours_source);
   result.sky.description = sky_and_suns_description(weather, basis);
@@ -332,7 +334,7 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
                                           const AnnualSky& sky,
                                           const metrics::IlluminanceTable& direct_sun,
                                           const metrics::IlluminanceTable& indirect_sun,
-                                          const AnnualStudySettings& settings) {
+                                          const AnnualStudySettings& settings, const SubPatchShares* shares) {
   const std::size_t n_steps = sky.steps.size(), n_sensors = sky_coefficients.rows();
   for (const metrics::IlluminanceTable* t : {&direct_sun, &indirect_sun})
     if (t->step_count() != n_steps || t->sensor_count() != n_sensors)
@@ -341,7 +343,7 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
                                   std::to_string(n_steps) + " x " + std::to_string(n_sensors));
   // The sky part and every metric as compute_annual_study does them, ASE from the direct
   // sun; then the sun added to the table and the illuminance metrics evaluated again on it.
-  AnnualStudy study = compute_annual_study(sky_coefficients, sky, settings, &direct_sun);
+  AnnualStudy study = compute_annual_study(sky_coefficients, sky, settings, &direct_sun, shares);
   for (std::size_t t = 0; t < n_steps; ++t)
     for (std::size_t s = 0; s < n_sensors; ++s)
       study.illuminance.lux(t, s) = static_cast<float>(double(study.illuminance.lux(t, s)) +
@@ -357,7 +359,8 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
 }
 
 AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients, const AnnualSky& sky,
-                                          const GridSunCoefficients& sun, const AnnualStudySettings& settings) {
+                                          const GridSunCoefficients& sun, const AnnualStudySettings& settings,
+                                          const SubPatchShares* shares) {
   const std::size_t n_steps = sky.steps.size(), n_sensors = sky_coefficients.rows();
   const RadianceMatrix& direct = *sun.direct;
   const RadianceMatrix& bin_coefficients = *sun.bin_coefficients;
@@ -374,7 +377,7 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
   check_suns(suns, n_steps);
   const metrics::OccupancySchedule occupancy = occupancy_schedule(settings, sky.steps);
   AnnualStudy study;
-  study.illuminance = annual_illuminance(sky_coefficients, sky.matrix, sky.steps);
+  study.illuminance = annual_illuminance(sky_coefficients, sky.matrix, sky.steps, 0, shares, &sky.quadrant_deltas);
   study.sky_description = sky.description;
   study.occupied_hours = occupancy.occupied_count();
   // A step's last sun wins, as in direct_sun_table and indirect_sun_table.

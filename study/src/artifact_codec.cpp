@@ -24,9 +24,11 @@ constexpr std::size_t CoefficientPairBytes = 3 * Vec3Bytes + 2 * 8;
 /// Per (sensor, continuous sky): the direct irradiance (Vec3) and its variance (f64).
 constexpr std::size_t SkyDirectBytes = Vec3Bytes + 8;
 constexpr std::size_t PreambleBytes = 8;  // tag + version
-/// A coefficient artefact's counts: sensors, sources, skies, photon part on the sky (0 or 1)
-/// and its basis rows, u64 each.
-constexpr std::size_t CoefficientHeaderBytes = 5 * 8;
+/// A coefficient artefact's counts: sensors, sources, skies, photon part on the sky (0 or 1),
+/// its basis rows and the sub-patch shares (0 or 1), u64 each.
+constexpr std::size_t CoefficientHeaderBytes = 6 * 8;
+/// Per (sensor, source) with the sub-patch shares: engine::StoredQuadrants f32.
+constexpr std::size_t QuadrantPairBytes = engine::StoredQuadrants * 4;
 
 class Writer {
  public:
@@ -266,14 +268,20 @@ std::string encode_coefficients(const engine::DaylightCoefficients& c) {
                               photon_sky.basis_rows > c.sensors))
     throw std::invalid_argument("daylight coefficients: the photon part on the sky must hold " +
                                 std::to_string(c.sensors) + " values");
+  const bool quadrants = !c.direct_quadrants.empty();
+  if (quadrants && c.direct_quadrants.size() != n * engine::StoredQuadrants)
+    throw std::invalid_argument("daylight coefficients: the sub-patch shares must hold " + std::to_string(c.sensors) +
+                                " x " + std::to_string(c.sources) + " x " + std::to_string(engine::StoredQuadrants) +
+                                " values");
   Writer w(PreambleBytes + CoefficientHeaderBytes + n * CoefficientPairBytes + m * SkyDirectBytes +
-           photon_rows * SkyDirectBytes);
+           photon_rows * SkyDirectBytes + (quadrants ? n * QuadrantPairBytes : 0));
   w.tag("DCOF", CoefficientLayoutVersion);
   w.u64(c.sensors);
   w.u64(c.sources);
   w.u64(skies.skies);
   w.u64(photon_rows > 0 ? 1 : 0);
   w.u64(photon_sky.basis_rows);
+  w.u64(quadrants ? 1 : 0);
   for (const auto* part : {&c.direct, &c.caustic, &c.global})
     for (const Vec3& v : *part) w.vec3(v);
   for (const auto* part : {&c.direct_variance, &c.photon_variance})
@@ -282,6 +290,7 @@ std::string encode_coefficients(const engine::DaylightCoefficients& c) {
   for (const double v : skies.variance) w.f64(v);
   for (const Vec3& v : photon_sky.irradiance) w.vec3(v);
   for (const double v : photon_sky.variance) w.f64(v);
+  for (const float v : c.direct_quadrants) w.f32(v);
   return w.finish();
 }
 
@@ -294,19 +303,22 @@ engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
   const std::uint64_t skies = r.u64("sky count");
   const std::uint64_t photon_sky = r.u64("photon part on the sky");
   const std::uint64_t basis_rows = r.u64("photon part's basis rows");
+  const std::uint64_t quadrants = r.u64("sub-patch shares");
+  if (quadrants > 1) r.fail("sub-patch shares flag " + std::to_string(quadrants) + " is not 0 or 1");
   if (photon_sky > 1) r.fail("photon part on the sky: " + std::to_string(photon_sky) + " skies, at most 1");
   if (basis_rows > sensors) r.fail("photon part on the sky: " + std::to_string(basis_rows) + " basis rows");
   // The five arrays need CoefficientPairBytes per (sensor, source) pair and the two of the
   // skies (and of the photon part on the sky) SkyDirectBytes per (sensor, sky): check without
   // overflow.
   const std::size_t remaining = bytes.size() - (PreambleBytes + CoefficientHeaderBytes);
-  const std::uint64_t max_pairs = remaining / CoefficientPairBytes;
+  const std::size_t pair_bytes = CoefficientPairBytes + (quadrants == 1 ? QuadrantPairBytes : 0);
+  const std::uint64_t max_pairs = remaining / pair_bytes;
   const std::uint64_t sky_rows = skies + photon_sky;
   const bool fits = (sensors == 0 || (sources <= max_pairs / sensors && skies <= remaining / SkyDirectBytes / sensors &&
                                       sky_rows <= remaining / SkyDirectBytes / sensors));
-  if (!fits || sensors * sources * CoefficientPairBytes + sensors * sky_rows * SkyDirectBytes != remaining)
+  if (!fits || sensors * sources * pair_bytes + sensors * sky_rows * SkyDirectBytes != remaining)
     r.fail("size mismatch: " + std::to_string(sensors) + " sensors x " + std::to_string(sources) +
-           " sources need " + std::to_string(CoefficientPairBytes) + " bytes each and x " + std::to_string(sky_rows) +
+           " sources need " + std::to_string(pair_bytes) + " bytes each and x " + std::to_string(sky_rows) +
            " skies " + std::to_string(SkyDirectBytes) + " bytes each, " + std::to_string(remaining) +
            " bytes remain");
   c.sensors = static_cast<std::size_t>(sensors);
@@ -333,6 +345,10 @@ engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
     for (Vec3& v : p.irradiance) v = r.vec3("photon part on the sky");
     p.variance.resize(c.sensors);
     for (double& v : p.variance) v = r.f64("variance of the photon part on the sky");
+  }
+  if (quadrants == 1) {
+    c.direct_quadrants.resize(n * engine::StoredQuadrants);
+    for (float& v : c.direct_quadrants) v = r.f32("sub-patch share");
   }
   r.done();
   return c;

@@ -176,6 +176,10 @@ SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& case
                                const SkyAndSuns* annual) {
   SkyAndSuns out;
   out.sky.matrix = RadianceMatrix(static_cast<std::size_t>(basis.bin_count()), cases.size(), 3);
+  // A weather case's quadrant deltas are its hour's (the annual product's sub-patch
+  // correction); a CIE case's direct part comes from its continuous sky instead: zero.
+  out.sky.quadrant_deltas =
+      RadianceMatrix(static_cast<std::size_t>(sky::PatchBasis::QuadrantCount * basis.bin_count()), cases.size(), 1);
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const project::PointInTimeSpec& c = cases[k];
     out.sky.steps.push_back({c.month, c.day, c.hour_lst});
@@ -186,6 +190,8 @@ SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& case
         throw InputError(c.location, "point-in-time case '" + c.name + "': the weather file has no record for " +
                                          clock_text(c));
       copy_column(annual->sky.matrix, *t, out.sky.matrix, k);
+      if (annual->sky.quadrant_deltas.rows() == out.sky.quadrant_deltas.rows())
+        copy_column(annual->sky.quadrant_deltas, *t, out.sky.quadrant_deltas, k);
       for (const sky::SunRecord& sun : annual->suns)
         if (sun.step == *t) {
           sky::SunRecord r = sun;

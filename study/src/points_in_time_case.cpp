@@ -49,7 +49,10 @@ void run_points_in_time(const project::Project& project, const std::string& pref
   for (const project::PointInTimeSpec& c : cases) names.push_back(c.name);
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
-    metrics::IlluminanceTable table = annual_illuminance(sky_coefficients[g], skies.sky.matrix, skies.sky.steps);
+    // A weather case's direct part with the annual table's sub-patch correction.
+    const SubPatchShares shares = sub_patch_shares(direct_parts.at(g));
+    metrics::IlluminanceTable table = annual_illuminance(sky_coefficients[g], skies.sky.matrix, skies.sky.steps, 0,
+                                                         &shares, &skies.sky.quadrant_deltas);
     if (bins) {
       const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, skies.suns, skies.sky.steps);
       const metrics::IlluminanceTable indirect =

@@ -37,6 +37,9 @@ std::string join_coefficient_blocks(const std::vector<std::string>& blocks) {
                                   " skies joined to one on " + std::to_string(whole.direct_on_skies.skies));
     append(whole.direct_on_skies.irradiance, part.direct_on_skies.irradiance);
     append(whole.direct_on_skies.variance, part.direct_on_skies.variance);
+    if (part.direct_quadrants.empty() != whole.direct_quadrants.empty())
+      throw std::invalid_argument("sensor blocks: a coefficient block with and one without the sub-patch shares");
+    append(whole.direct_quadrants, part.direct_quadrants);
     if (part.photon_on_sky.empty() != whole.photon_on_sky.empty())
       throw std::invalid_argument("sensor blocks: a coefficient block with and one without the photon part on the sky");
     append(whole.photon_on_sky.irradiance, part.photon_on_sky.irradiance);

@@ -52,6 +52,9 @@ const AnnualSky& annual_sky(const project::Project& project, RunContext& ctx) {
       [](const AnnualSky&) { return true; });
   run_sky_step(step, weather.records.size(), ctx,
                [&] { return "sky matrix: built from " + project.weather.path; });
+  // The quadrant deltas are not cached: from the weather where the matrix came from bytes.
+  if (sky.quadrant_deltas.rows() == 0)
+    sky.quadrant_deltas = annual_quadrant_deltas(weather, site, basis, radiance_compatible_sky_options(rho_g));
   ctx.sky = std::move(sky);
   return *ctx.sky;
 }
@@ -88,6 +91,12 @@ const SkyAndSuns& sky_and_suns(const project::Project& project, RunContext& ctx)
     return "sky matrix: built from " + project.weather.path + " (sun excluded; " +
            std::to_string(result.suns.size()) + " sun hours)";
   });
+  // The quadrant deltas are not cached: from the weather where the matrices came from bytes.
+  if (result.sky.quadrant_deltas.rows() == 0) {
+    sky::SkyMatrixOptions options = sun_excluded_sky_options(rho_g);
+    options.sun = sky::SunInMatrix::None;
+    result.sky.quadrant_deltas = annual_quadrant_deltas(weather, site, basis, options);
+  }
   ctx.sky_and_suns = std::move(result);
   return *ctx.sky_and_suns;
 }

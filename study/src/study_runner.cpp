@@ -170,6 +170,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   const MatrixFormat matrix_format = parse_matrix_format(project.outputs.matrix_format);
   nlohmann::json grids_json = nlohmann::json::array();
   std::vector<RadianceMatrix> coefficient_matrices;
+  // Per grid, the direct part's sub-patch shares for the annual product (sub_patch_shares.h).
+  std::vector<SubPatchShares> sub_patches;
+  const bool annual_product = project.study != project::StudyKind::DaylightFactor &&
+                              (project.outputs.annual_illuminance || project.outputs.metrics);
   std::vector<std::vector<double>> sky_variances;  // sensors x sources per grid (sky_variance_of)
   // Per grid, for the point-in-time cases: the direct part alone (with its continuous skies).
   std::vector<engine::DaylightCoefficients> point_direct_parts;
@@ -182,6 +186,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     folders.push_back(folder);
     report.grids.push_back({label.empty() ? grid.name : label + "/" + grid.name, grid.points.size(), folder});
     coefficient_matrices.push_back(coefficients[g]->to_matrix());
+    sub_patches.push_back(annual_product || project.outputs.coefficients ? sub_patch_shares(*coefficients[g])
+                                                                         : SubPatchShares{});
     const RadianceMatrix& c = coefficient_matrices.back();
     if (ctx.executor.writes_results()) {
       write_sensors_csv(grid.points, join_path(folder, "sensors.csv"));
@@ -202,6 +208,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     if (project.outputs.coefficients && ctx.executor.writes_results()) {  // not by the other ranks of an MPI run
       c.write_file(join_path(folder, "coefficients_sky.mtx"), matrix_format);
       ctx.outputs.record(join_path(folder, "coefficients_sky.mtx"));
+      if (!sub_patches.back().empty()) {  // for dayphoton annual (sub_patch_shares.h)
+        sub_patch_shares_matrix(sub_patches.back()).write_file(join_path(folder, SubPatchSharesFileName), matrix_format);
+        ctx.outputs.record(join_path(folder, SubPatchSharesFileName));
+      }
     }
     if (project.outputs.daylight_factor) {
       // The sky component from the continuous sky, the rest over the basis, with the Monte
@@ -284,6 +294,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       part.direct = std::move(coefficients[g]->direct);
       part.direct_variance = std::move(coefficients[g]->direct_variance);
       part.direct_on_skies = std::move(coefficients[g]->direct_on_skies);
+      part.direct_quadrants = std::move(coefficients[g]->direct_quadrants);
       point_direct_parts.push_back(std::move(part));
     }
     coefficients[g].reset();
@@ -402,10 +413,11 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       if (ctx.executor.shares_sensor_blocks()) {
         // By sensor blocks over the ranks; rank 0 alone gets the study and writes it (annual_blocks.h).
         computed = annual_study_in_blocks(ctx.executor, prefix + grid.name, coefficient_matrices[g], ss.sky,
-                                          annual_settings, &grid_sun);
+                                          annual_settings, &grid_sun, &sub_patches[g]);
       } else {
         // The sun added to the sky's table in place (no hourly direct and indirect tables held).
-        computed = compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, grid_sun, annual_settings);
+        computed =
+            compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, grid_sun, annual_settings, &sub_patches[g]);
       }
       if (!computed) {  // another rank than 0
         progress.end();
@@ -437,8 +449,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       // By sensor blocks over the ranks of an MPI run; rank 0 alone gets the study and writes it.
       const std::optional<AnnualStudy> computed =
           ctx.executor.shares_sensor_blocks()
-              ? annual_study_in_blocks(ctx.executor, prefix + grid.name, coefficient_matrices[g], sky, annual_settings)
-              : std::optional<AnnualStudy>(compute_annual_study(coefficient_matrices[g], sky, annual_settings));
+              ? annual_study_in_blocks(ctx.executor, prefix + grid.name, coefficient_matrices[g], sky, annual_settings,
+                                       nullptr, &sub_patches[g])
+              : std::optional<AnnualStudy>(
+                    compute_annual_study(coefficient_matrices[g], sky, annual_settings, nullptr, &sub_patches[g]));
       if (!computed) {  // another rank than 0
         progress.end();
         continue;

@@ -5,10 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
+#include <vector>
 
 #include <unistd.h>
 
@@ -144,6 +147,115 @@ TEST(SkyMatrix, EveryHourIsNormalisedToThePerezDiffuseIlluminance) {
     std::printf("[ MF %d ] %zu daytime hours: horizontal illuminance vs Perez diffuse, max %.4f %%, RMS %.4f %%\n",
                 basis.multiplication_factor(), daytime, 100 * worst, 100 * std::sqrt(sum_squared / daytime));
     EXPECT_GT(daytime, 4000u);
+  }
+}
+
+TEST(SkyMatrix, QuadrantDeltasAreTheSkysQuadrantMeansLessThePatchValue) {
+  // Every 53rd daytime record of Oakland, both patch values: the delta of each patch's
+  // quadrant (its mean, normalised so that the quadrants' sky keeps the Perez diffuse
+  // horizontal illuminance, less the patch value) against (a) the same midpoint rule
+  // evaluated here from an independent sun position and Perez state (float storage: 1e-5 of
+  // the hour's brightest patch) and (b) a 24 x 24 midpoint quadrature per patch whose points
+  // are put in their quadrant by PatchBasis::quadrant (the rule's own quadrature error, and
+  // the quadrants' orientation).
+  const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
+  const weather::SiteClock clock = weather::SiteClock::for_weather(epw);
+  const auto steps = clock.steps(epw.records);
+  const SolarSite site = solar_site_of(epw);
+  const PatchBasis basis = PatchBasis::tregenza();
+  for (const PatchValue value : {PatchValue::Mean, PatchValue::Centre}) {
+    SkyMatrixOptions options;
+    options.sun = SunInMatrix::Spread;  // the sun does not enter the deltas
+    options.patch_value = value;
+    options.quadrant_deltas = true;
+    const SkyMatrix sky = build_sky_matrix(epw, site, basis, options);
+    ASSERT_EQ(sky.quadrant_deltas.rows(), std::size_t(4 * basis.bin_count()));
+    ASSERT_EQ(sky.quadrant_deltas.columns(), epw.records.size());
+    // Without the sun: the same deltas; without the deltas: the same patch values.
+    options.sun = SunInMatrix::None;
+    const SkyMatrix sunless = build_sky_matrix(epw, site, basis, options);
+    EXPECT_TRUE(sunless.quadrant_deltas.data() == sky.quadrant_deltas.data());
+    options.quadrant_deltas = false;
+    const SkyMatrix plain = build_sky_matrix(epw, site, basis, options);
+    EXPECT_TRUE(plain.matrix.data() == sunless.matrix.data());
+    EXPECT_EQ(plain.quadrant_deltas.rows(), 0u);
+    double worst_rule = 0, worst_fine = 0, sum_fine = 0, largest_delta = 0;
+    std::size_t compared = 0, hours = 0;
+    for (std::size_t t = 0; t < epw.records.size(); ++t) {
+      const double dhi = *epw.records[t].diffuse_horizontal_w_m2;
+      const double dni = *epw.records[t].direct_normal_w_m2;
+      if (dhi + dni <= 1e-4 || dhi <= 0) {
+        for (std::size_t r = 0; r < sky.quadrant_deltas.rows(); ++r) EXPECT_EQ(sky.quadrant_deltas.at(r, t, 0), 0.0f);
+        continue;
+      }
+      if (t % 53 != 0) continue;
+      ++hours;
+      PerezInputs in;
+      in.direct_normal_irradiance_W_m2 = dni;
+      in.diffuse_horizontal_irradiance_W_m2 = dhi;
+      in.sun_direction =
+          solar_position(site, SolarTime{clock.year(), steps[t].month, steps[t].day, steps[t].hour_lst}).direction;
+      in.day_of_year = steps[t].day_of_year;
+      in.dew_point_C = epw.records[t].dew_point_c;
+      const PerezState state = perez_state(in);
+      auto lv = [&](const Vec3& d) {
+        return perez_relative_luminance(state, std::acos(std::clamp(d.z, -1.0, 1.0)),
+                                        std::acos(std::clamp(dot(d, state.model_sun_direction), -1.0, 1.0)));
+      };
+      double brightest = 0;
+      for (int p = 1; p < basis.bin_count(); ++p) brightest = std::max(brightest, double(sky.matrix.at(p, t, 1)));
+      // The quadrants' means by the rule and by the fine quadrature, and the rule's sky's
+      // horizontal illuminance (its normalisation: the Perez diffuse illuminance).
+      std::vector<std::array<double, 4>> rule(std::size_t(basis.bin_count())), fine(rule.size());
+      double horizontal = 0;
+      for (int p = 1; p < basis.bin_count(); ++p) {
+        const PatchBounds b = basis.bounds(p);
+        const double s0 = std::sin(b.altitude_min_rad), s1 = std::sin(b.altitude_max_rad), sm = 0.5 * (s0 + s1);
+        double count[4] = {};
+        for (int q = 0; q < 4; ++q) {
+          for (int i = 0; i < QuadrantSamplesPerAxis; ++i)
+            for (int j = 0; j < QuadrantSamplesPerAxis; ++j)
+              rule[p][q] += lv(basis.sample_direction(p, 0.5 * (q / 2) + 0.5 * (i + 0.5) / QuadrantSamplesPerAxis,
+                                                      0.5 * (q % 2) + 0.5 * (j + 0.5) / QuadrantSamplesPerAxis)) /
+                            (QuadrantSamplesPerAxis * QuadrantSamplesPerAxis);
+          horizontal += rule[p][q] * 0.5 * (b.azimuth_max_rad - b.azimuth_min_rad) *
+                        (q / 2 == 0 ? sm * sm - s0 * s0 : s1 * s1 - sm * sm) / 2.0;
+        }
+        constexpr int Fine = 24;
+        for (int i = 0; i < Fine; ++i)
+          for (int j = 0; j < Fine; ++j) {
+            const Vec3 w = basis.sample_direction(p, (i + 0.5) / Fine, (j + 0.5) / Fine);
+            const int q = basis.quadrant(p, w);
+            fine[p][q] += lv(w);
+            count[q] += 1;
+          }
+        for (int q = 0; q < 4; ++q) {
+          EXPECT_EQ(count[q], Fine * Fine / 4) << "patch " << p << " quadrant " << q;
+          fine[p][q] /= count[q];
+        }
+      }
+      const double to_radiance = state.diffuse_horizontal_illuminance_lux / (horizontal * RadianceWhiteEfficacy_lm_per_W);
+      for (int p = 1; p < basis.bin_count(); ++p)
+        for (int q = 0; q < 4; ++q) {
+          const double delta = sky.quadrant_deltas.at(std::size_t(4 * p + q), t, 0);
+          const double patch = plain.matrix.at(p, t, 1);  // grey sky: every channel alike
+          const double by_rule = to_radiance * rule[p][q] - patch;
+          const double by_fine = to_radiance * fine[p][q] - patch;
+          worst_rule = std::max(worst_rule, std::fabs(delta - by_rule) / brightest);
+          worst_fine = std::max(worst_fine, std::fabs(delta - by_fine) / brightest);
+          sum_fine += (delta - by_fine) * (delta - by_fine) / (brightest * brightest);
+          largest_delta = std::max(largest_delta, std::fabs(delta) / brightest);
+          ++compared;
+        }
+    }
+    std::printf("[ %s ] %zu hours: quadrant deltas vs the same rule at most %.2e, vs a 24 x 24 quadrature at most "
+                "%.2e, RMS %.2e of the hour's brightest patch (largest delta %.3f)\n",
+                value == PatchValue::Mean ? "mean" : "centre", hours, worst_rule, worst_fine,
+                std::sqrt(sum_fine / double(compared)), largest_delta);
+    EXPECT_GT(hours, 50u);
+    EXPECT_LT(worst_rule, 1e-5);
+    EXPECT_LT(worst_fine, 0.02);
+    EXPECT_GT(largest_delta, 0.05);  // not vacuous: the deltas are of the order of the sky's variation
   }
 }
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -92,6 +93,54 @@ TEST(AnnualIlluminance, MatchesATripleLoopAndNightColumnsAreZero) {
     for (std::size_t s = 0; s < 7; ++s) EXPECT_EQ(table.lux(t, s), 0.0f);
   EXPECT_GT(table.lux(20, 0), 0.0f);
   EXPECT_EQ(table.steps()[23].hour, 23.5);
+}
+
+TEST(AnnualIlluminance, TheSubPatchCorrectionAddsEachQuadrantsShareTimesItsDelta) {
+  // 37 steps, 11 bins (bin 4 seen by no sensor's direct part: left out of the product), 7
+  // sensors: E + 179 sum_p sum_q Q_pq d_pq(t), Q_p3 = lum C_p - Q_p0 - Q_p1 - Q_p2, in double.
+  std::mt19937 rng(31);
+  const RadianceMatrix c = random_matrix(7, 11, 3, rng);
+  RadianceMatrix sky = random_matrix(11, 37, 3, rng);
+  for (std::size_t p = 0; p < 11; ++p)
+    for (int k = 0; k < 3; ++k) sky.at(p, 3, k) = 0.0f;  // a night
+  RadianceMatrix deltas = random_matrix(44, 37, 1, rng);
+  for (float& v : deltas.data()) v -= 0.5f;
+  for (std::size_t r = 0; r < 44; ++r) deltas.at(r, 3, 0) = 0.0f;
+  SubPatchShares shares;
+  shares.sensors = 7;
+  shares.bins = 11;
+  std::uniform_real_distribution<float> u(0.0f, 0.3f);
+  for (std::size_t i = 0; i < 7 * 11 * 4; ++i) shares.values.push_back(i / 4 % 11 == 4 ? 0.0f : u(rng));
+  const metrics::IlluminanceTable plain = annual_illuminance(c, sky, stamps(37));
+  const metrics::IlluminanceTable table = annual_illuminance(c, sky, stamps(37), 0, &shares, &deltas);
+  double largest = 0;
+  for (std::size_t t = 0; t < 37; ++t)
+    for (std::size_t s = 0; s < 7; ++s) {
+      double correction = 0;
+      for (std::size_t p = 0; p < 11; ++p) {
+        const float* v = shares.values.data() + (s * 11 + p) * 4;
+        const double q3 = double(v[0]) - v[1] - v[2] - v[3];
+        for (std::size_t q = 0; q < 3; ++q) correction += double(v[1 + q]) * deltas.at(4 * p + q, t, 0);
+        correction += q3 * deltas.at(4 * p + 3, t, 0);
+      }
+      const double ref = reference_lux(c, sky, s, t) + 179.0 * correction;
+      EXPECT_NEAR(table.lux(t, s), ref, 1e-6 * std::fabs(reference_lux(c, sky, s, t)) + 1e-9) << t << " " << s;
+      largest = std::max(largest, std::fabs(179.0 * correction) / std::max(1e-9, double(plain.lux(t, s))));
+    }
+  EXPECT_GT(largest, 0.01);  // the correction is there (the plain product misses it)
+  for (std::size_t s = 0; s < 7; ++s) EXPECT_EQ(table.lux(3, s), 0.0f);
+  // Without deltas (a matrix read from a file) or without shares: the plain product.
+  const SubPatchShares none;
+  const RadianceMatrix no_deltas;
+  EXPECT_TRUE(annual_illuminance(c, sky, stamps(37), 0, &none, &deltas).lux(5, 2) == plain.lux(5, 2));
+  EXPECT_TRUE(annual_illuminance(c, sky, stamps(37), 0, &shares, &no_deltas).lux(5, 2) == plain.lux(5, 2));
+  // Shapes that do not match are refused; the rows of a block give the whole's rows.
+  const RadianceMatrix short_deltas = random_matrix(40, 37, 1, rng);
+  EXPECT_THROW(annual_illuminance(c, sky, stamps(37), 0, &shares, &short_deltas), std::invalid_argument);
+  const SubPatchShares block = shares.rows(2, 5);
+  ASSERT_EQ(block.sensors, 3u);
+  EXPECT_TRUE(std::equal(block.values.begin(), block.values.end(), shares.values.begin() + 2 * 11 * 4));
+  EXPECT_THROW(annual_illuminance(c, sky, stamps(37), 0, &block, &deltas), std::invalid_argument);
 }
 
 TEST(AnnualIlluminance, OneComponentMatricesUse179) {

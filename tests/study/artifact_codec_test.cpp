@@ -207,6 +207,30 @@ TEST(ArtifactCodec, ThePhotonPartOnTheSkyRoundTripsBitExact) {
   EXPECT_THROW(decode_coefficients(bytes), std::runtime_error);
 }
 
+TEST(ArtifactCodec, TheSubPatchSharesRoundTripBitExact) {
+  engine::DaylightCoefficients in = sample_coefficients(3, 5);
+  in.direct_quadrants.resize(3 * 5 * engine::StoredQuadrants);
+  for (std::size_t i = 0; i < in.direct_quadrants.size(); ++i) in.direct_quadrants[i] = 0.125f * float(i) - 1e-30f;
+  in.direct_quadrants[4] = -0.0f;
+  in.direct_quadrants[7] = std::numeric_limits<float>::denorm_min();
+  const std::string bytes = encode_coefficients(in);
+  const engine::DaylightCoefficients out = decode_coefficients(bytes);
+  ASSERT_EQ(out.direct_quadrants.size(), in.direct_quadrants.size());
+  EXPECT_TRUE(same_bits(out.direct_quadrants.data(), in.direct_quadrants.data(), in.direct_quadrants.size() * sizeof(float)));
+  EXPECT_TRUE(same_bits(out.direct.data(), in.direct.data(), in.direct.size() * sizeof(Vec3)));
+  // Without them, none come back, and the artefact is that much shorter.
+  const std::string without = encode_coefficients(sample_coefficients(3, 5));
+  EXPECT_TRUE(decode_coefficients(without).direct_quadrants.empty());
+  EXPECT_EQ(bytes.size(), without.size() + 3 * 5 * engine::StoredQuadrants * 4);
+  // Shares of the wrong length are refused when encoding, a flag other than 0 or 1 when decoding.
+  engine::DaylightCoefficients short_part = in;
+  short_part.direct_quadrants.pop_back();
+  EXPECT_THROW(encode_coefficients(short_part), std::invalid_argument);
+  std::string damaged = bytes;
+  damaged[8 + 40] = 2;  // the u64 after sensors, sources, skies, photon part and its basis rows
+  EXPECT_THROW(decode_coefficients(damaged), std::runtime_error);
+}
+
 TEST(ArtifactCodec, InconsistentCoefficientsAreRefusedWhenEncoding) {
   engine::DaylightCoefficients c = sample_coefficients(2, 3);
   c.global.pop_back();
@@ -245,6 +269,9 @@ void expect_every_truncation_throws(const std::string& bytes, Decode decode) {
 TEST(ArtifactCodec, EveryTruncationThrows) {
   expect_every_truncation_throws(encode_photons(sample_photons(2, {1, 0}, 2)), decode_photons);
   expect_every_truncation_throws(encode_coefficients(sample_coefficients(2, 3)), decode_coefficients);
+  engine::DaylightCoefficients with_shares = sample_coefficients(2, 3);
+  with_shares.direct_quadrants.assign(2 * 3 * engine::StoredQuadrants, 0.5f);
+  expect_every_truncation_throws(encode_coefficients(with_shares), decode_coefficients);
   expect_every_truncation_throws(encode_matrix(sample_matrix(2, 3, 3)), decode_matrix);
 }
 

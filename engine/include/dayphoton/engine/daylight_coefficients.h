@@ -207,6 +207,10 @@ struct DaylightCoefficients {
   /// same shadow rays (direct_component.h, "Continuous skies"): [sensor * skies + k], with
   /// its variance; empty without skies.
   DirectOnSkies direct_on_skies;
+  /// The direct part's sub-patch shares (direct_component.h, "Sub-patch shares"): [sensor *
+  /// sources * StoredQuadrants + p * StoredQuadrants + q], the luminance of direct[s][p]'s part
+  /// in quadrant q of sky bin p; empty when the sources are not a basis's bins.
+  std::vector<float> direct_quadrants;
   /// The photon part under the daylight factor's continuous sky (photon_part_on_sky.h), when
   /// the photons carry its sky ratios; empty otherwise.
   PhotonOnSky photon_on_sky;

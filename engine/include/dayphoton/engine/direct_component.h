@@ -78,6 +78,17 @@
 // by the same collapsed strata. It costs no shadow ray. A study whose sky is known (the
 // daylight factor's CIE overcast sky) reads its sky component from D_k instead of the
 // patch-uniform sum; the photon part stays on the basis.
+//
+// Sub-patch shares (direct_coefficients' `quadrants`). The annual sky matrix is one value per
+// patch and hour, so the continuous sky cannot be used there; instead each sky bin's
+// coefficient is split by where its samples lie: the luminance of the part of C[s][p] whose
+// directions fall in each of the bin's four quadrants (sky::PatchBasis::quadrant: halves in
+// sine of altitude and in azimuth). A source stratum's quadrant is that of its numbers
+// (u1, u2), exact for an even k (an odd k's middle strata are split by their sample); a port
+// point's is found from its direction. Each is the same unbiased estimator restricted to a
+// quadrant, so sum_q Q_pq L_pq is the direct irradiance of a sky that is uniform within each
+// quadrant, and the annual product adds sum_q Q_pq (L_pq - L_p) to the patch-uniform sum
+// (study/annual_illuminance.h). No shadow ray is added: one addition per sample.
 
 // Shadow rays start at the sensor moved ray_epsilon_m() along its normal (only directions
 // with dot(w, n_s) > 0 are traced), so a sensor lying on a surface does not see that
@@ -137,6 +148,10 @@ struct DirectOnSkies {
   std::vector<double> variance;
 };
 
+/// Quadrant shares are kept for the first three quadrants: the fourth is the coefficient's
+/// luminance less their sum.
+constexpr std::size_t StoredQuadrants = 3;
+
 /// Transmittance (RGB) from `origin` along `direction` (unit, toward the sky) to the sky
 /// under the rule above. `materials[m]` is the model of scene material m (built by the
 /// caller with Material::from_spec from SceneDescription::materials, same order). The ray
@@ -158,13 +173,18 @@ SkyPath trace_to_sky(const Scene& scene, const std::vector<Material>& materials,
 /// estimates themselves do not change. `rows`: only those sensors' rows (sensor_range.h:
 /// random numbers by the index in the whole of `sensors`, so they equal the whole result's rows).
 /// `on_skies`, if given, receives the rows' direct irradiance under options.skies (header
-/// comment, "Continuous skies"), from the very samples of the coefficients.
+/// comment, "Continuous skies"), from the very samples of the coefficients. `quadrants`, if
+/// given and the sources are a basis's bins (SourceSet::has_basis), receives [row * sources *
+/// StoredQuadrants + p * StoredQuadrants + q]: the luminance of C[s][p]'s part in quadrant q
+/// of sky bin p (header comment, "Sub-patch shares"; zero for the ground bin); otherwise it is
+/// emptied.
 std::vector<Vec3> direct_coefficients(const Scene& scene, const std::vector<Material>& materials,
                                       const SourceSet& sources,
                                       const std::vector<SensorPoint>& sensors,
                                       const DirectOptions& options,
                                       std::vector<double>* variance = nullptr,
-                                      SensorRange rows = {}, DirectOnSkies* on_skies = nullptr);
+                                      SensorRange rows = {}, DirectOnSkies* on_skies = nullptr,
+                                      std::vector<float>* quadrants = nullptr);
 
 /// Direct irradiance at one sensor from a continuous sky radiance function
 /// (direction toward the sky -> RGB radiance), integrated over the sources of `sources`

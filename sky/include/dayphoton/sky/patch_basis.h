@@ -75,6 +75,15 @@ class PatchBasis {
   Vec3 sample_direction(int bin, double u1, double u2) const;
   double pdf_sr(int bin) const { return 1.0 / solid_angle_sr(bin); }
 
+  /// Quadrants of a sky bin (the annual product's sub-patches, docs/direct-component.md
+  /// "Continuous skies"): its halves in sine of altitude and in azimuth, four parts of equal
+  /// solid angle; quadrant = 2 (upper half in sine of altitude) + (upper half in azimuth),
+  /// which is 2 (u1 >= 1/2) + (u2 >= 1/2) of sample_direction's numbers. `direction` (non-zero)
+  /// is taken to lie in the bin (find_bin); the ground bin's quadrant is 0.
+  int quadrant(int bin, const Vec3& direction) const;
+  /// The four quadrants of a bin.
+  static constexpr int QuadrantCount = 4;
+
  private:
   explicit PatchBasis(int mf);
   void check_bin(int bin) const;

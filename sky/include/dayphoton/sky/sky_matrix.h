@@ -56,6 +56,8 @@ struct SkyMatrixOptions {
   /// PatchValue::Mean: n x n midpoints per Tregenza-sized patch; ceil(n / MF), at least 2,
   /// for Reinhart MF patches (same sample spacing).
   int mean_samples_per_axis = 6;
+  /// Also give SkyMatrix::quadrant_deltas (the annual product's sub-patch correction).
+  bool quadrant_deltas = false;
 
   /// Everything gendaymtx -m MF does by default: RADIANCE sun formulas, centre values, sky
   /// colour, 11 C dew point, RADIANCE day of year.
@@ -95,7 +97,21 @@ struct SkyMatrix {
   /// SunInMatrix::Spread or Only the same sun is also in the matrix: use one or the other.
   std::vector<SunRecord> suns;
   BelowHorizonDirect below_horizon_direct;
+  /// With SkyMatrixOptions::quadrant_deltas: (4 x bins) x steps x 1, row 4 p + q the
+  /// luminance (W/(sr m^2), visible units: x 179 lux) of the sky's mean radiance over
+  /// quadrant q of patch p (PatchBasis::quadrant) less the matrix's value of the patch, the
+  /// sky alone (without the spread sun); zero for the ground, at night and for a uniform
+  /// fallback sky. The quadrant means by a QuadrantSamplesPerAxis^2 midpoint rule per
+  /// quadrant of a Tregenza-sized patch (the same spacing for Reinhart patches, at least 1),
+  /// of the very Perez shape of the patch values, normalised so that the sky of quadrants
+  /// keeps the record's Perez diffuse horizontal illuminance (sum of mean x the quadrant's
+  /// projected solid angle). Empty otherwise.
+  RadianceMatrix quadrant_deltas;
 };
+
+/// Midpoints per axis of a Tregenza-sized patch's quadrant for SkyMatrix::quadrant_deltas
+/// (the spacing of the patch means' default 6 x 6 per patch).
+constexpr int QuadrantSamplesPerAxis = 3;
 
 /// The weather file header's site (position, time zone, elevation): what RADIANCE's gendaymtx
 /// computes the sun for. A project computes it for its own site (study/sun_site.h).

@@ -23,10 +23,12 @@ namespace dayphoton::study {
 /// annual study of a grid of sky coefficients `coefficients`, with the sun of `sun` (the
 /// sun-bins mode, as compute_annual_study_with_sun) or without (as compute_annual_study).
 /// Rank 0 (StepExecutor::writes_results) returns the whole study, the other ranks nothing.
-/// `name` names the grid in errors.
+/// `name` names the grid in errors. `shares`: the coefficients' sub-patch shares, every
+/// rank's (compute_annual_study).
 std::optional<AnnualStudy> annual_study_in_blocks(StepExecutor& executor, const std::string& name,
                                                   const RadianceMatrix& coefficients, const AnnualSky& sky,
                                                   const AnnualStudySettings& settings,
-                                                  const GridSunCoefficients* sun = nullptr);
+                                                  const GridSunCoefficients* sun = nullptr,
+                                                  const SubPatchShares* shares = nullptr);
 
 }  // namespace dayphoton::study

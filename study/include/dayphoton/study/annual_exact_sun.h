@@ -86,9 +86,10 @@ metrics::IlluminanceTable exported_indirect_sun_table(const RadianceMatrix& bin_
 
 /// The annual study of the exact-sun mode: sky coefficients x `ss.sky` (without the sun) +
 /// the exported direct sun + the interpolated indirect sun, ASE from the direct sun
-/// (compute_annual_study_with_sun).
+/// (compute_annual_study_with_sun); `shares`: the exported sub-patch shares, if any.
 AnnualStudy annual_study_exact_sun(const RadianceMatrix& sky_coefficients, const ExactSunExport& exported,
                                    const SkyAndSuns& ss, const AnnualStudySettings& settings,
-                                   const std::string& grid_dir, ExactSunNotes& notes);
+                                   const std::string& grid_dir, ExactSunNotes& notes,
+                                   const SubPatchShares* shares = nullptr);
 
 }  // namespace dayphoton::study

@@ -18,6 +18,7 @@
 
 #include "dayphoton/core/radiance_matrix.h"
 #include "dayphoton/metrics/illuminance_table.h"
+#include "dayphoton/study/sub_patch_shares.h"
 
 namespace dayphoton::study {
 
@@ -26,11 +27,16 @@ namespace dayphoton::study {
 /// Throws std::invalid_argument on size or component mismatches, std::range_error naming the
 /// sensor and step where a value overflows a float. `first_sensor`: the grid's index of the
 /// coefficients' first row, when they are a block of a grid's sensors (annual_blocks.h), so
-/// that the error names the grid's own sensor.
+/// that the error names the grid's own sensor. `shares` and `quadrant_deltas` (both given and
+/// non-empty; sky::SkyMatrix::quadrant_deltas of the same sky): the sub-patch correction of
+/// the direct part is added (sub_patch_shares.h), in the same sequential sum per value, after
+/// the patch-uniform terms; a std::invalid_argument if their shapes do not match.
 metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
                                              const RadianceMatrix& sky_matrix,
                                              const std::vector<metrics::TimeStamp>& steps,
-                                             std::size_t first_sensor = 0);
+                                             std::size_t first_sensor = 0,
+                                             const SubPatchShares* shares = nullptr,
+                                             const RadianceMatrix* quadrant_deltas = nullptr);
 
 /// Write / read the binary layout above (atomic write; read throws std::runtime_error
 /// naming the file on any layout problem: magic, size, a time stamp outside month 1..12,

@@ -30,6 +30,7 @@
 #include "dayphoton/metrics/occupancy_plan.h"
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/sky_matrix.h"
+#include "dayphoton/study/sub_patch_shares.h"
 #include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::study {
@@ -43,6 +44,9 @@ struct AnnualSky {
   std::vector<double> daylight_hours_quantity;
   std::string daylight_hours_source;  ///< what that quantity is, for the summary
   std::string description;            ///< where the matrix came from, for the summary
+  /// The sky's quadrant deltas (sky::SkyMatrix::quadrant_deltas) for the direct part's
+  /// sub-patch correction (sub_patch_shares.h); empty for a matrix read from a file.
+  RadianceMatrix quadrant_deltas;
 };
 
 /// Time stamps of the EPW records: month, day and mid-hour local standard time (SiteClock).
@@ -64,9 +68,16 @@ std::string annual_sky_description(const weather::HourlyWeather& weather, const 
                                    const sky::SkyMatrixOptions& options);
 
 /// Sky matrix built from the EPW with build_sky_matrix for the sun of `site` (the project's,
-/// study/sun_site.h; its time zone must be the file's), stamped with the EPW's time steps.
+/// study/sun_site.h; its time zone must be the file's), stamped with the EPW's time steps,
+/// with its quadrant deltas.
 AnnualSky annual_sky_from_weather(const weather::HourlyWeather& weather, const sky::SolarSite& site,
                               const sky::PatchBasis& basis, const sky::SkyMatrixOptions& options);
+
+/// The quadrant deltas (sky::SkyMatrix::quadrant_deltas) of the sky annual_sky_from_weather
+/// builds with `options`: for a matrix taken from the cache (they are not cached: a second of
+/// Perez evaluations for a year).
+RadianceMatrix annual_quadrant_deltas(const weather::HourlyWeather& weather, const sky::SolarSite& site,
+                                      const sky::PatchBasis& basis, sky::SkyMatrixOptions options);
 
 /// Sky matrix read from a RADIANCE matrix file (read_matrix_file), stamped with the EPW's
 /// time steps. Throws InputError naming the matrix file if its column count differs from the
@@ -111,10 +122,12 @@ struct AnnualStudy {
 
 /// Multiply and evaluate. `direct_sun` (optional): the direct-sun-only, zero-bounce
 /// illuminance table for ASE (same steps and sensors). Throws std::invalid_argument on
-/// shape mismatches (coefficient bins vs sky bins, steps, sensors).
+/// shape mismatches (coefficient bins vs sky bins, steps, sensors). `shares` (optional): the
+/// coefficients' sub-patch shares, applied with sky.quadrant_deltas (annual_illuminance).
 AnnualStudy compute_annual_study(const RadianceMatrix& coefficients, const AnnualSky& sky,
                                  const AnnualStudySettings& settings,
-                                 const metrics::IlluminanceTable* direct_sun = nullptr);
+                                 const metrics::IlluminanceTable* direct_sun = nullptr,
+                                 const SubPatchShares* shares = nullptr);
 
 /// The grid metrics as a JSON object (text), for summary.json: sensor and occupied-hour
 /// counts, the settings, the means of every per-sensor metric, sDA, ASE (null if not

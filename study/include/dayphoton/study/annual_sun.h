@@ -163,7 +163,8 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
                                           const AnnualSky& sky,
                                           const metrics::IlluminanceTable& direct_sun,
                                           const metrics::IlluminanceTable& indirect_sun,
-                                          const AnnualStudySettings& settings);
+                                          const AnnualStudySettings& settings,
+                                          const SubPatchShares* shares = nullptr);
 
 /// A grid's sun as the sun-bins mode computes it: the exact direct sun per unit disc radiance
 /// (direct_sun_coefficients: sensors x suns) of the suns `suns`, and the sun bins'
@@ -179,8 +180,10 @@ struct GridSunCoefficients {
 /// direct_sun_table(...), indirect_sun_table(...), settings), value for value, with the sun
 /// added in place: it holds one steps x sensors table, not three (docs/photon-tracing.md
 /// "Scale"). Parallel over sensors. Throws std::invalid_argument on shape mismatches.
+/// `shares`: the sky coefficients' sub-patch shares (compute_annual_study).
 AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients, const AnnualSky& sky,
-                                          const GridSunCoefficients& sun, const AnnualStudySettings& settings);
+                                          const GridSunCoefficients& sun, const AnnualStudySettings& settings,
+                                          const SubPatchShares* shares = nullptr);
 
 /// sun_bins.csv (docs/outputs.md): `bin,patch,altitude_deg,azimuth_deg,x,y,z,hours`: the
 /// column of coefficients_sun.mtx, the Reinhart patch, the centre direction, and the number

@@ -16,11 +16,12 @@
 //                 bits, the sky ratio code in the top 12: engine::Photon::source_word), 3 x i8
 //                 normal, u8 path class (checked to be a PathClass).
 //   coefficients: u64 sensors, u64 sources, u64 skies, u64 photon part on the sky (0 or 1),
-//                 u64 its basis rows, then direct, caustic, global, each sensors x sources Vec3
+//                 u64 its basis rows, u64 sub-patch shares (0 or 1), then direct, caustic, global, each sensors x sources Vec3
 //                 as 3 x f64, then direct_variance and photon_variance, each sensors x sources
 //                 f64, then the direct part on the skies (sensors x skies Vec3, then as many
 //                 f64 variances), then the photon part on the sky (sensors Vec3, sensors f64)
-//                 if it is there.
+//                 if it is there, then the direct part's sub-patch shares (sensors x sources x
+//                 engine::StoredQuadrants f32) if they are there.
 //   matrix:       u64 rows, u64 columns, u32 components (>= 1), u64 header lines, each
 //                 u64 length + bytes, then rows x columns x components f32.
 #pragma once
@@ -37,7 +38,7 @@ namespace dayphoton::study {
 /// Layout versions: bump one whenever its layout changes, so older artefacts are refused
 /// (and recomputed) instead of misread.
 inline constexpr std::uint32_t PhotonLayoutVersion = 4;  // 2: SourceTally::capped; 3: storage_probability_direct, nothing_stores; 4: the sky ratio in the source word's top 12 bits (engine/photon.h)
-inline constexpr std::uint32_t CoefficientLayoutVersion = 4;  // 2: the variances; 3: the direct part on skies; 4: the photon part on the sky
+inline constexpr std::uint32_t CoefficientLayoutVersion = 5;  // 2: the variances; 3: the direct part on skies; 4: the photon part on the sky; 5: the sub-patch shares
 inline constexpr std::uint32_t MatrixLayoutVersion = 1;
 
 std::string encode_photons(const engine::TracedPhotons& photons);

@@ -44,7 +44,9 @@ namespace dayphoton::study {
 /// light are traced again with the cap in raw attempts (docs/photon-tracing.md, "Low-yield cap").
 /// 6: photon records carry their sky ratio (engine/photon.h) and the coefficients the photon
 /// part under the daylight factor's continuous sky (engine/photon_part_on_sky.h).
-constexpr int EngineCacheVersion = 6;
+/// 7: the coefficients carry the direct part's sub-patch shares and the annual sky its
+/// quadrant deltas (engine/direct_component.h, "Sub-patch shares").
+constexpr int EngineCacheVersion = 7;
 
 ContentHash scene_key(const SceneDescription& scene);
 ContentHash planes_key(const std::vector<SensorGrid>& grids);

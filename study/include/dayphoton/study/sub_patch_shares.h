@@ -1,0 +1,61 @@
+// The annual product's sub-patch correction (docs/direct-component.md, "Continuous skies";
+// engine/direct_component.h, "Sub-patch shares"). A sky matrix holds one value L_p(t) per
+// patch and hour, and the patch-uniform product sum_p C[s][p] L_p(t) misses the sky's
+// variation inside a patch where the sensor weights it by its cosine or sees part of it
+// through an opening. The direct part's coefficient is split into the luminances Q[s][p][q]
+// of its parts in the patch's four quadrants, and the annual product adds
+//
+//   179 sum_p sum_q Q[s][p][q] (L_pq(t) - L_p(t))  lux,
+//
+// L_pq the sky's mean luminance over quadrant q (sky::SkyMatrix::quadrant_deltas gives
+// L_pq - L_p), so the direct part sees a sky uniform over each quadrant instead of each
+// patch. The photon part stays on the patch values. Only the first three Q are stored
+// (engine::StoredQuadrants): the fourth is the coefficient's luminance less their sum.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/engine/daylight_coefficients.h"
+
+namespace dayphoton::study {
+
+/// Per sensor and sky bin, what the correction multiplies: [s * bins * ValuesPerBin + p *
+/// ValuesPerBin + k], k = 0 the luminance of the direct coefficient C_direct[s][p], k = 1..3
+/// the luminances Q[s][p][0..2] (W/m^2 per unit radiance). Empty: no correction (coefficients
+/// without shares: a basis-less source set, or coefficients read from a file).
+struct SubPatchShares {
+  static constexpr std::size_t ValuesPerBin = 4;
+  std::size_t sensors = 0, bins = 0;
+  std::vector<float> values;
+  bool empty() const { return values.empty(); }
+  /// Rows [begin, end) (a block of a grid's sensors).
+  SubPatchShares rows(std::size_t begin, std::size_t end) const;
+};
+
+/// The export beside coefficients_sky.mtx (docs/outputs.md): a RADIANCE matrix of sensors x
+/// bins x ValuesPerBin components, SubPatchShares::values as they are.
+inline constexpr const char* SubPatchSharesFileName = "coefficients_sky_quadrants.mtx";
+RadianceMatrix sub_patch_shares_matrix(const SubPatchShares& shares);
+/// The shares of a matrix read from SubPatchSharesFileName; std::invalid_argument unless it
+/// has `sensors` rows, `bins` columns and ValuesPerBin components.
+SubPatchShares sub_patch_shares_of(const RadianceMatrix& m, std::size_t sensors, std::size_t bins);
+
+/// What `dayphoton annual` says of exported coefficients (coefficients.mtx holds the total
+/// per patch, not the direct part's shares): its table is the patch-uniform product.
+inline constexpr const char* SubPatchSharesMissingWarning =
+    "no coefficients_sky_quadrants.mtx beside the coefficients (the sub-patch shares of their direct part), so "
+    "this annual table is the patch-uniform product: the run's own table adds the direct part's sub-patch "
+    "correction and differs from it (docs/outputs.md, \"Which sky the annual files use\")";
+/// And of a sky matrix file, which has no quadrant deltas.
+inline constexpr const char* SkyMatrixFileQuadrantsWarning =
+    "a sky matrix file has no quadrant deltas, so this annual table is the patch-uniform product (the "
+    "sub-patch shares of coefficients_sky_quadrants.mtx are not used): a run's own table adds the direct part's "
+    "sub-patch correction (docs/outputs.md, \"Which sky the annual files use\")";
+
+/// The shares of coefficients `c` (empty when c.direct_quadrants is). Throws
+/// std::invalid_argument when the shares do not match the coefficients' shape.
+SubPatchShares sub_patch_shares(const engine::DaylightCoefficients& c);
+
+}  // namespace dayphoton::study
