@@ -127,11 +127,18 @@ std::optional<PathStart> first_event(const Scene& scene, const Material& materia
   return start;
 }
 
+// Whether `material` transmits a diffuse part (translucent, transmitted_specular < 1): at a
+// port, a final gather reaching it from the room reads the photons on its sky side.
+bool transmits_diffusely(const Material& material) { return channel_mean(material.diffuse_transmittance()) > 0; }
+
 // What pass_port needs of a port: looked up once per pass, not once per photon.
 struct PortPane {
   const Port* port = nullptr;
   const Material* material = nullptr;
   bool straight_only = false;  ///< glass, glazing or opening: transmits only straight through
+  /// Transmits diffusely (translucent, transmitted_specular < 1): a final gather reaching it
+  /// from the room looks up the photons on its sky side, so they are stored there.
+  bool diffusing = false;
 };
 
 std::vector<PortPane> port_panes(const Scene& scene, const std::vector<Material>& materials) {
@@ -140,8 +147,9 @@ std::vector<PortPane> port_panes(const Scene& scene, const std::vector<Material>
     const Material& material =
         materials[static_cast<std::size_t>(scene.description().surfaces[static_cast<std::size_t>(port.surface)].material)];
     const MaterialType type = material.type();
-    panes.push_back(PortPane{&port, &material,
-                             type == MaterialType::Glass || type == MaterialType::Glazing || type == MaterialType::Opening});
+    const bool straight_only = type == MaterialType::Glass || type == MaterialType::Glazing || type == MaterialType::Opening;
+    panes.push_back(PortPane{&port, &material, straight_only,
+                             !straight_only && material.stores_photons() && transmits_diffusely(material)});
   }
   return panes;
 }
@@ -247,12 +255,16 @@ bool trace_path_to(const Scene& scene, const std::vector<Material>& materials,
       const Vec3 tpm = material.interior_transmittance_per_m();
       flux = mul(flux, {std::pow(tpm.x, hit->t), std::pow(tpm.y, hit->t), std::pow(tpm.z, hit->t)});
     }
+    // Outdoors, photons are stored on scatterers and on the sky side of a diffusing port (what
+    // it transmits into the room: light scattered outdoors onto it, e.g. by the ground).
     if ((store || options.store_direct_on_surfaces) && material.stores_photons() &&
-        (!outdoors || hit->scatterer >= 0)) {
+        (!outdoors || hit->scatterer >= 0 ||
+         (hit->port >= 0 && transmits_diffusely(material)))) {
       const Vec3 side = hit->front_face ? hit->normal : hit->normal * -1.0;
       // A Direct photon outdoors (on a scatterer, after straight passes only): where a
       // gather can read it.
-      if (store || !outdoors || stores_direct_on_scatterer(scene, options, hit->scatterer, side))
+      if (store || !outdoors || hit->scatterer < 0 ||
+          stores_direct_on_scatterer(scene, options, hit->scatterer, side))
         sink.record(-1, make_photon(hit->position, flux, side, start.source, start.sky_ratio_code, path_class));
     }
     const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
@@ -347,6 +359,15 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
               ? pass_port(scene, panes[static_cast<std::size_t>(entry->port)], *entry, source, scattering, roulette_rng)
               : land_on_scatterer(scene, materials, *entry, source, ratio_code, options, scattering, roulette_rng,
                                   sink);
+      if (entry->port >= 0) {
+        // A diffusing port's sky-side irradiance: the Direct record of the photon that lands on
+        // it, which a final gather reaching the port from the room reads through the port's
+        // diffuse transmittance (the direct component takes only its straight transmission).
+        const PortPane& pane = panes[static_cast<std::size_t>(entry->port)];
+        if (pane.diffusing && (options.store_direct || options.store_direct_on_surfaces))
+          sink.record(-1, make_photon(entry->position, {1, 1, 1}, pane.port->normal * -1.0, source, ratio_code,
+                                      PathClass::Direct));
+      }
       if (!start) continue;
       start->sky_ratio_code = ratio_code;
       const bool indoors = trace_path_to(scene, materials, planes, *start, options, scattering, roulette_rng,

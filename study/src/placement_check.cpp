@@ -126,39 +126,6 @@ constexpr const char* OnCutWhy =
     "a sensor on a surface has no illuminance of its own: part of what it sees is the surface's inside, and "
     "its final gather reads about 20 % relative standard error there";
 
-/// The warning for sets estimated by final gather in a case with a port that transmits
-/// diffusely (a translucent material with transmitted_specular below 1: frosted or opal
-/// glazing). The tracer stores no photon on a port's sky side, and the direct component
-/// follows only the straight-through part, so a gather ray that meets such a port from the
-/// room finds none of the light it scatters into the room: measured with the reference
-/// office's window made translucent (transmissivity 0.6, all of it diffuse), points at the
-/// work plane's own sensors read 25 % of the plane's estimate 1 m from the window and 84 % at
-/// 7 m. The plane's sensors count the photons crossing the plane and are right.
-void check_diffusing_ports(const engine::Scene& scene, const std::vector<SensorGrid>& grids,
-                           const std::vector<bool>& gathered_rows, std::vector<Diagnostic>& warnings) {
-  const SceneDescription& description = scene.description();
-  const Surface* diffusing = nullptr;
-  for (std::size_t k = 0; k < scene.ports().size() && !diffusing; ++k) {
-    const Surface& surface = description.surfaces[static_cast<std::size_t>(scene.ports()[k].surface)];
-    const MaterialSpec& m = description.materials[static_cast<std::size_t>(surface.material)];
-    if (m.type == MaterialType::Translucent && m.transmissivity > 0 && m.transmitted_specular < 1) diffusing = &surface;
-  }
-  if (!diffusing) return;
-  const std::string material = description.materials[static_cast<std::size_t>(diffusing->material)].name;
-  for (std::size_t g = 0; g < grids.size(); ++g) {
-    const SensorGrid& grid = grids[g];
-    if (!gathered_rows[g]) continue;
-    warnings.push_back(warning_at(
-        grid.location,
-        "sensor set '" + grid.name + "' is estimated by final gather" +
-            (grid.planar ? std::string(" next to a column or partition") : std::string()) + ", which misses the light the port '" +
-            diffusing->name + "' (translucent '" + material +
-            "') scatters into the room: its values read low, measured 16-75 % low with the reference office's "
-            "window made fully diffusing, more near the port. Sensors of a horizontal room or polygon grid read it "
-            "right; use one, or a clear material at the port with the diffuser just inside it"));
-  }
-}
-
 /// The words for enclosed sensors (engine/sensor_placement.h): inside a closed volume drawn from
 /// polygons, or in a room whose openings are all opaque.
 constexpr const char* EnclosedWords =
@@ -519,10 +486,6 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
   const std::vector<bool> gathered = near_cut_gathered(near_count, planar_sensors, surface_photons_kept);
   for (std::size_t g = 0; g < grids.size(); ++g) report_near_cuts(grids[g], near[g], gathered[g], north_deg, out);
   check_exterior_geometry(scene, out.warnings);
-  std::vector<bool> gathered_rows(grids.size());
-  for (std::size_t g = 0; g < grids.size(); ++g)
-    gathered_rows[g] = !grids[g].planar || (gathered[g] && near[g].count > 0);
-  check_diffusing_ports(scene, grids, gathered_rows, out.warnings);
   if (grids.empty())
     report(diag, project, "the project has no sensors: add a grid or a point set under 'sensors'");
   diag.throw_if_errors();

@@ -351,8 +351,7 @@ DaylightCoefficients gathered_with_sky(const Scene& scene, const std::vector<Mat
 
 /// The diffuser room with the window an opening (the port) and the diffuser a surface
 /// InnerDiffuserGap_m inside it: the photons that land on the diffuser from the sky are stored
-/// there (Direct) for a final gather to read. (A diffusing port scatters the photon as it
-/// enters and stores none on its sky side.) The gap is a few ray offsets (the scene's 5 km
+/// there (Direct) for a final gather to read. The gap is a few ray offsets (the scene's 5 km
 /// wall makes them 5 cm: Scene::ray_epsilon_m).
 constexpr double InnerDiffuserGap_m = 0.15;
 

@@ -191,45 +191,6 @@ sensors:
       << o.errors[0];
 }
 
-// A port of a translucent material scatters light into the room that a final gather does not
-// see (placement_check.cpp, check_diffusing_ports): measured 16-75 % low at points where the
-// plane's sensors read it right. A set it estimates gets a located warning; a plane does not.
-TEST(PlacementCheck, GatheredSetsBehindADiffusingPortAreWarned) {
-  auto text = [](const std::string& glazing) {
-    return R"(site: {latitude: 37.72, longitude: -122.22, time_zone: -8}
-outputs: {annual_illuminance: false, metrics: false}
-materials:
-  walls: {type: lambertian, reflectance: 0.5}
-  glazing: )" + glazing + "\n" + Office + R"(sensors:
-  grids:
-    - {name: workplane, room: office, height: 0.8, spacing: 0.5, inset: 0.5}
-  points:
-    - {name: probes, points: [[3, 2, 0.8, 0, 0, 1]]}
-)";
-  };
-  auto warned = [](const Outcome& o) {
-    std::vector<std::string> out;
-    for (const Diagnostic& d : o.check.warnings)
-      if (d.message.find("misses the light the port") != std::string::npos)
-        out.push_back(std::to_string(d.location.line) + ": " + d.message);
-    return out;
-  };
-  const Outcome frosted = check_text(text("{type: translucent, reflectance: 0.1, transmissivity: 0.6}"));
-  ASSERT_TRUE(frosted.errors.empty()) << frosted.errors[0];
-  const std::vector<std::string> w = warned(frosted);
-  ASSERT_EQ(w.size(), 1u);
-  EXPECT_EQ(w[0].rfind("17: sensor set 'probes' is estimated by final gather, which misses the light the port "
-                       "'office.south' (translucent 'glazing')",
-                       0),
-            0u)
-      << w[0];
-  EXPECT_TRUE(warned(check_text(text("{type: glass, transmittance: 0.6}"))).empty());
-  // All of the transmission straight through: the gather follows it.
-  EXPECT_TRUE(warned(check_text(text(
-                         "{type: translucent, reflectance: 0.1, transmissivity: 0.6, transmitted_specular: 1}")))
-                  .empty());
-}
-
 TEST(PlacementCheck, SensorsOutsideEveryRoomAreALocatedError) {
   const Outcome o = check_text(Head + Office + R"(sensors:
   points:
