@@ -71,22 +71,30 @@ bool walk_reaches_port(const Scene& scene, const Vec3& origin, const Vec3& first
   return false;
 }
 
-/// Walk `w` of a sensor (header comment): its random generator and first direction.
-bool walk_from(const Scene& scene, const SensorPoint& sensor, std::uint64_t key, int w) {
-  const bool has_normal = is_finite(sensor.normal) && length(sensor.normal) > 0;
-  const Vec3 n = has_normal ? normalize(sensor.normal) : Vec3{0, 0, 1};
-  const Vec3 origin = has_normal ? sensor.position + n * (10.0 * scene.ray_epsilon_m()) : sensor.position;
-  Rng rng(0, key, static_cast<std::uint64_t>(w), RandomStream::Placement);
-  const double u1 = rng.uniform(), u2 = rng.uniform();
-  const Vec3 d = has_normal ? detail::sample_cosine(n, u1, u2)
-                            : detail::sample_cosine(rng.uniform() < 0.5 ? n : n * -1.0, u1, u2);
-  return walk_reaches_port(scene, origin, d, rng);
+/// A sensor's test frame (header comment): its unit normal (+z for a sensor without one) and
+/// the placement rays' origin, 10 ray epsilons along the normal.
+struct TestFrame {
+  bool has_normal = false;
+  Vec3 normal{0, 0, 1};
+  Vec3 origin;
+};
+
+TestFrame test_frame(const Scene& scene, const SensorPoint& sensor) {
+  TestFrame f;
+  f.has_normal = is_finite(sensor.normal) && length(sensor.normal) > 0;
+  if (f.has_normal) f.normal = normalize(sensor.normal);
+  f.origin = f.has_normal ? sensor.position + f.normal * (10.0 * scene.ray_epsilon_m()) : sensor.position;
+  return f;
 }
 
-/// The placement rays' origin of a sensor (header comment).
-Vec3 test_origin(const Scene& scene, const SensorPoint& sensor) {
-  const bool has_normal = is_finite(sensor.normal) && length(sensor.normal) > 0;
-  return has_normal ? sensor.position + normalize(sensor.normal) * (10.0 * scene.ray_epsilon_m()) : sensor.position;
+/// Walk `w` of a sensor (header comment): its random generator and first direction.
+bool walk_from(const Scene& scene, const SensorPoint& sensor, std::uint64_t key, int w) {
+  const TestFrame f = test_frame(scene, sensor);
+  Rng rng(0, key, static_cast<std::uint64_t>(w), RandomStream::Placement);
+  const double u1 = rng.uniform(), u2 = rng.uniform();
+  const Vec3 d = f.has_normal ? detail::sample_cosine(f.normal, u1, u2)
+                              : detail::sample_cosine(rng.uniform() < 0.5 ? f.normal : f.normal * -1.0, u1, u2);
+  return walk_reaches_port(scene, f.origin, d, rng);
 }
 
 /// Everything but the walks; `needs_walks` when the sensor saw neither a port nor the sky.
@@ -94,8 +102,9 @@ SensorPlacementTest direct_placement(const Scene& scene, const SensorPoint& sens
   needs_walks = false;
   SensorPlacementTest out;
   if (!is_finite(sensor.position)) return out;
-  const bool has_normal = is_finite(sensor.normal) && length(sensor.normal) > 0;
-  const Vec3 n = has_normal ? normalize(sensor.normal) : Vec3{0, 0, 1};
+  const TestFrame frame = test_frame(scene, sensor);
+  const bool has_normal = frame.has_normal;
+  const Vec3 n = frame.normal;
   std::vector<Vec3> directions = detail::hemisphere_directions(n, has_normal ? SensorPlacementRays
                                                                              : SensorPlacementRays / 2);
   if (!has_normal) {
@@ -103,7 +112,7 @@ SensorPlacementTest direct_placement(const Scene& scene, const SensorPoint& sens
     directions.insert(directions.end(), down.begin(), down.end());
   }
   const SceneDescription& description = scene.description();
-  const Vec3 origin = test_origin(scene, sensor);
+  const Vec3 origin = frame.origin;
   std::map<int, int> back_hits;  // surface -> rays stopped at its back
   // Follows one ray through ports and transparent surfaces; true if it crossed a port.
   auto trace = [&](const Vec3& d, bool count) {
@@ -223,12 +232,12 @@ std::vector<SensorPlacementTest> test_sensor_placements(const Scene& scene, cons
   std::vector<std::size_t> decided;
   for (std::size_t i = 0; i < sensors.size(); ++i) {
     if (!needs_walks[i]) continue;
-    const Vec3 origin = test_origin(scene, sensors[i]);
+    const Vec3 origin = test_frame(scene, sensors[i]).origin;
     bool shared = false;
     for (std::size_t k = 0; k < decided.size() && k < SensorEnclosureNeighbours && !shared; ++k) {
       const std::size_t j = decided[decided.size() - 1 - k];
-      if (!see_each_other(scene, origin, test_origin(scene, sensors[j]))) continue;
-      out[i].placement = out[j].placement == SensorPlacement::Enclosed ? SensorPlacement::Enclosed : out[i].placement;
+      if (!see_each_other(scene, origin, test_frame(scene, sensors[j]).origin)) continue;
+      if (out[j].placement == SensorPlacement::Enclosed) out[i].placement = SensorPlacement::Enclosed;
       out[i].same_volume_as = static_cast<int>(out[j].same_volume_as >= 0 ? out[j].same_volume_as : j);
       shared = true;
     }
