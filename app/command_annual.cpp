@@ -30,6 +30,7 @@
 #include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/recorded_metric_settings.h"
 #include "dayphoton/study/result_files.h"
+#include "dayphoton/study/sub_patch_shares.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/hourly_weather.h"
 
@@ -161,6 +162,8 @@ void sky_vector_illuminance(const AnnualOptions& o, const RadianceMatrix& coeffi
                          " components but " + coefficients_path + " has " + std::to_string(coefficients.columns()) +
                          " bins x " + std::to_string(coefficients.components()));
   const metrics::IlluminanceTable table = study::annual_illuminance(coefficients, vector, {metrics::TimeStamp{}});
+  // Never silently patch-uniform: on stderr even with --quiet.
+  std::cerr << "note: " << coefficients_path << ": " << study::SkyVectorPatchUniformNote << '\n';
   fs::create_directories(output_dir);
   const std::string path = (fs::path(output_dir) / "sky_vector_illuminance.csv").string();
   study::write_point_in_time_csv(sensors, {"illuminance"}, table, path);

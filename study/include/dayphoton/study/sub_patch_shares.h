@@ -54,6 +54,14 @@ inline constexpr const char* SkyMatrixFileQuadrantsWarning =
     "sub-patch shares of coefficients_sky_quadrants.mtx are not used): a run's own table adds the direct part's "
     "sub-patch correction (docs/outputs.md, \"Which sky the annual files use\")";
 
+/// And of one sky vector (`annual --sky-vector`): coefficients x patch values, what dctimestep
+/// computes, which has neither the sub-patches nor the continuous sky of the run's daylight factor.
+inline constexpr const char* SkyVectorPatchUniformNote =
+    "the coefficients times one sky vector is the patch-uniform product (as dctimestep computes it): under the "
+    "CIE overcast sky it differs from the run's daylight factor x E_h / 100, which takes the continuous sky "
+    "(measured on the reference office's work plane: +0.55 % on average, up to 1.5 %; docs/outputs.md, "
+    "\"daylight_factor.csv\")";
+
 /// The shares of coefficients `c` (empty when c.direct_quadrants is). Throws
 /// std::invalid_argument when the shares do not match the coefficients' shape.
 SubPatchShares sub_patch_shares(const engine::DaylightCoefficients& c);
