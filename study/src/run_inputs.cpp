@@ -6,6 +6,23 @@
 
 namespace dayphoton::study {
 
+std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather) {
+  const std::size_t year_hours = (weather.leap_day_present ? 366u : 365u) * 24u;
+  if (!project.outputs.metrics || weather.records.empty() || weather.records.size() >= year_hours) return std::nullopt;
+  const weather::WeatherRecord& first = weather.records.front();
+  const weather::WeatherRecord& last = weather.records.back();
+  Diagnostic d;
+  d.severity = Severity::Warning;
+  d.location = project.weather.location;
+  d.message = "the weather file " + project.weather.path_as_written + " holds " + std::to_string(weather.records.size()) +
+              " hourly records (" + std::to_string(first.month) + "/" + std::to_string(first.day) + " to " +
+              std::to_string(last.month) + "/" + std::to_string(last.day) + "), not a whole year of " +
+              std::to_string(year_hours) + ": the annual metrics count these records only, so ASE's " +
+              "hours above its limit per year and EN 17037's daylight hours (half the records) are not the " +
+              "standards' yearly quantities, and DA and sDA lack the missing days; use a whole-year file for compliance";
+  return d;
+}
+
 RunInputs read_run_inputs(const project::Project& project) {
   RunInputs inputs;
   // The weather file and the site of its sun first: a time zone that is not the file's is an
@@ -14,6 +31,8 @@ RunInputs read_run_inputs(const project::Project& project) {
     inputs.weather = weather::read_hourly_weather(project.weather.path);
     inputs.sun_site = resolve_sun_site(project.site, *inputs.weather);
     inputs.below_horizon = annual_below_horizon_direct(*inputs.weather, *inputs.sun_site);
+    if (std::optional<Diagnostic> w = partial_year_warning(project, *inputs.weather))
+      inputs.weather->warnings.push_back(std::move(*w));
   }
   // The points in time whose sun needs no tracing.
   check_points_in_time(project.points_in_time,

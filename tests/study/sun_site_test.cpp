@@ -13,6 +13,7 @@
 // Runs use the office at reduced photon counts (the sky, not the photons, is under test).
 #include "dayphoton/report/report_html.h"
 #include "dayphoton/study/cache_folder.h"
+#include "dayphoton/study/run_inputs.h"
 #include "dayphoton/study/sun_site.h"
 
 #include <gtest/gtest.h>
@@ -220,6 +221,29 @@ TEST(SunSite, AnotherTimeZoneThanTheWeatherFilesIsALocatedError) {
   EXPECT_NE(errors[0].find("from_weather: true"), std::string::npos);
   EXPECT_FALSE(fs::exists(folder / "summary.json"));
   EXPECT_FALSE(fs::exists(folder / "run.log"));  // nothing written before the error
+}
+
+// A weather file of part of a year (DATA PERIODS 3/1 to 12/31: 7344 records) gives annual
+// metrics over its records only: ASE's hours per year and EN 17037's half year are then other
+// quantities than the standards'. The run and `check` say so, located at the `weather` key;
+// a whole year, or a project without metrics, gets no warning.
+TEST(SunSite, APartOfAYearIsAWarningAtTheWeatherKey) {
+  const project::Project p = office_with_site(OfficeSite);
+  weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
+  EXPECT_FALSE(partial_year_warning(p, epw).has_value());
+  epw.records.erase(epw.records.begin(), epw.records.begin() + (31 + 28) * 24);
+  const std::optional<Diagnostic> w = partial_year_warning(p, epw);
+  ASSERT_TRUE(w.has_value());
+  EXPECT_EQ(w->severity, Severity::Warning);
+  EXPECT_EQ(w->location.line, p.weather.location.line);
+  EXPECT_EQ(w->location.column, p.weather.location.column);
+  EXPECT_NE(w->message.find("holds 7344 hourly records (3/1 to 12/31), not a whole year of 8760"), std::string::npos)
+      << w->message;
+  EXPECT_NE(w->message.find("ASE"), std::string::npos);
+  EXPECT_NE(w->message.find("EN 17037"), std::string::npos);
+  project::Project without_metrics = p;
+  without_metrics.outputs.metrics = false;
+  EXPECT_FALSE(partial_year_warning(without_metrics, epw).has_value());
 }
 
 /// The hours with direct light and the sun below the horizon in the log, summary and report.
