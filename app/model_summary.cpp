@@ -85,6 +85,8 @@ void describe_weather_and_sun(const project::Project& proj, std::vector<std::str
   for (const std::string& line : study::occupancy_summary(proj, weather)) lines.push_back(line);
   // A time zone other than the file's is an error here as in `run` (located at time_zone).
   const study::SunSite site = study::resolve_sun_site(proj.site, weather);
+  for (const Diagnostic& w : study::southern_daylight_saving_warnings(proj, site.solar.latitude_deg))
+    lines.push_back("warning: " + w.location.to_string() + ": " + w.message);
   solar = site.solar;
   sun_lines = {study::sun_site_sentence(site)};
   if (const std::string w = study::station_distance_warning(site); !w.empty()) sun_lines.push_back(w);

@@ -1,6 +1,8 @@
 // What a run reads and checks first: see run_inputs.h.
 #include "dayphoton/study/run_inputs.h"
 
+#include <cstdio>
+
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/study/point_in_time.h"
 
@@ -23,6 +25,27 @@ std::optional<Diagnostic> partial_year_warning(const project::Project& project, 
   return d;
 }
 
+std::vector<Diagnostic> southern_daylight_saving_warnings(const project::Project& project, double sun_latitude_deg) {
+  std::vector<Diagnostic> out;
+  if (!(sun_latitude_deg < 0)) return out;
+  char latitude[32];
+  std::snprintf(latitude, sizeof latitude, "%.2f", sun_latitude_deg);
+  auto check = [&](const project::OccupancySpec& o) {
+    if (!o.given || o.daylight_saving == "none") return;
+    Diagnostic d;
+    d.severity = Severity::Warning;
+    d.location = o.location;
+    d.message = "daylight_saving: " + o.daylight_saving + " is a northern-hemisphere rule (clocks ahead from March to " +
+                (o.daylight_saving == "eu" ? std::string("October") : std::string("November")) +
+                "), winter at this site (latitude " + latitude + " deg); southern rules are not built in: give the occupied hours as a CSV schedule, or daylight_saving: none";
+    out.push_back(std::move(d));
+  };
+  check(project.metrics.occupancy);
+  for (const project::GridSpec& g : project.sensors.grids) check(g.occupancy);
+  for (const project::PointsSpec& p : project.sensors.points) check(p.occupancy);
+  return out;
+}
+
 RunInputs read_run_inputs(const project::Project& project) {
   RunInputs inputs;
   // The weather file and the site of its sun first: a time zone that is not the file's is an
@@ -33,6 +56,8 @@ RunInputs read_run_inputs(const project::Project& project) {
     inputs.below_horizon = annual_below_horizon_direct(*inputs.weather, *inputs.sun_site);
     if (std::optional<Diagnostic> w = partial_year_warning(project, *inputs.weather))
       inputs.weather->warnings.push_back(std::move(*w));
+    for (Diagnostic& w : southern_daylight_saving_warnings(project, inputs.sun_site->solar.latitude_deg))
+      inputs.weather->warnings.push_back(std::move(w));
   }
   // The points in time whose sun needs no tracing.
   check_points_in_time(project.points_in_time,

@@ -246,6 +246,35 @@ TEST(SunSite, APartOfAYearIsAWarningAtTheWeatherKey) {
   EXPECT_FALSE(partial_year_warning(without_metrics, epw).has_value());
 }
 
+// The built-in DST rules are the northern hemisphere's: at a site south of the equator
+// `daylight_saving: eu` would shift the occupied hours through the southern winter. A
+// warning at the schedule's `occupancy` key (the project's and a grid's own); none in the
+// north or without a rule.
+TEST(SunSite, ANorthernDaylightSavingRuleSouthOfTheEquatorIsAWarning) {
+  project::Project p = office_with_site(OfficeSite);
+  EXPECT_TRUE(southern_daylight_saving_warnings(p, -33.87).empty());  // no schedule
+  p.metrics.occupancy.given = true;
+  p.metrics.occupancy.daylight_saving = "eu";
+  p.metrics.occupancy.location = SourceLocation{"office.yaml", 40, 14};
+  EXPECT_TRUE(southern_daylight_saving_warnings(p, 37.72).empty());
+  ASSERT_FALSE(p.sensors.grids.empty());
+  p.sensors.grids[0].occupancy.given = true;
+  p.sensors.grids[0].occupancy.daylight_saving = "us";
+  p.sensors.grids[0].occupancy.location = SourceLocation{"office.yaml", 52, 18};
+  const std::vector<Diagnostic> w = southern_daylight_saving_warnings(p, -33.87);
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_EQ(w[0].location.line, 40);
+  EXPECT_EQ(w[1].location.line, 52);
+  EXPECT_NE(w[0].message.find("daylight_saving: eu is a northern-hemisphere rule (clocks ahead from March to October), "
+                              "winter at this site (latitude -33.87 deg)"),
+            std::string::npos)
+      << w[0].message;
+  EXPECT_NE(w[1].message.find("to November"), std::string::npos);
+  p.metrics.occupancy.daylight_saving = "none";
+  p.sensors.grids[0].occupancy.daylight_saving = "none";
+  EXPECT_TRUE(southern_daylight_saving_warnings(p, -33.87).empty());
+}
+
 /// The hours with direct light and the sun below the horizon in the log, summary and report.
 void expect_below_horizon_hours_counted_in_log_summary_and_report(const OfficeRuns& r) {
   const fs::path &site_dir = r.site_dir, &mannheim_dir = r.mannheim_dir;

@@ -29,6 +29,14 @@ struct RunInputs {
 /// and the days it covers, when the project computes metrics; none for a whole year.
 std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather);
 
+/// The built-in daylight-saving rules (`daylight_saving: eu` or `us`) are the northern
+/// hemisphere's: they set the clock ahead from March to October or November, which is winter
+/// south of the equator, where a region that keeps DST does so from about October to April.
+/// One warning per schedule that names such a rule at a site south of the equator
+/// (`sun_latitude_deg` < 0), located at its `occupancy` key; southern rules are a CSV
+/// schedule's business (docs/metrics.md).
+std::vector<Diagnostic> southern_daylight_saving_warnings(const project::Project& project, double sun_latitude_deg);
+
 /// Reads and checks them. Throws InputError, located (file:line:column and key), for a weather
 /// file that cannot be read or is on another clock than the site, a point in time that is not
 /// in the year, or an operation without `sun: bins`.
