@@ -17,6 +17,7 @@
 #include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/point_in_time.h"
 #include "dayphoton/study/project_metric_settings.h"
+#include "dayphoton/study/run_inputs.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/hourly_weather.h"
 
@@ -79,9 +80,13 @@ void describe_weather_and_sun(const project::Project& proj, std::vector<std::str
                   std::to_string(weather.records.size()) + " hourly records" +
                   (weather.leap_day_present ? " (with 29 February)" : ""));
   for (const Diagnostic& w : weather.warnings) lines.push_back("warning: " + w.location.to_string() + ": " + w.message);
+  if (const std::optional<Diagnostic> w = study::partial_year_warning(proj, weather))
+    lines.push_back("warning: " + w->location.to_string() + ": " + w->message);
   for (const std::string& line : study::occupancy_summary(proj, weather)) lines.push_back(line);
   // A time zone other than the file's is an error here as in `run` (located at time_zone).
   const study::SunSite site = study::resolve_sun_site(proj.site, weather);
+  for (const Diagnostic& w : study::southern_daylight_saving_warnings(proj, site.solar.latitude_deg))
+    lines.push_back("warning: " + w.location.to_string() + ": " + w.message);
   solar = site.solar;
   sun_lines = {study::sun_site_sentence(site)};
   if (const std::string w = study::station_distance_warning(site); !w.empty()) sun_lines.push_back(w);

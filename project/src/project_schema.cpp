@@ -530,7 +530,7 @@ std::vector<SectionSchema> build_schema() {
       P("name", T::String, "case name: a column of point_in_time.csv and an image name (the folder-name rule)").required(),
       P("date", T::String, "month-day, e.g. 03-21 (29 February is not a date of the study's year)").required(),
       P("time", T::String, "local standard time (no daylight saving), HH:MM or decimal hours, 0 to 24").required(),
-      P("sky", T::Choice, "cie_overcast: the CIE standard overcast sky, no sun; cie: the CIE standard general sky of cie_type with its sun; weather: the weather file's hour that contains the time (its Perez sky and sun, as in the annual study)").choices({"cie_overcast", "cie", "weather"}).required(),
+      P("sky", T::Choice, "cie_overcast: the CIE standard overcast sky, no sun; cie: the CIE standard general sky of cie_type with its sun; weather: the weather file's hour that contains the time, EPW hour h covering (h-1, h] (15:00 is hour 15) (its Perez sky and sun, as in the annual study)").choices({"cie_overcast", "cie", "weather"}).required(),
       P("cie_type", T::Integer, "CIE standard general sky type (ISO 15469:2004 / CIE S 011), with sky: cie").range(1, 15),
       P("diffuse_horizontal_illuminance", T::Number, "horizontal illuminance of the sky alone (without the sun), CIE skies").unit("lx").above(0).def("10000"),
       P("direct_normal_illuminance", T::Number, "the sun's direct normal illuminance, with sky: cie (required: 0 for a sky without sun)").unit("lx").range(0, 200000),

@@ -87,11 +87,49 @@ std::vector<double> daylight_hours_quantity(const weather::HourlyWeather& weathe
     if (r.diffuse_horizontal_lux) lux.push_back(*r.diffuse_horizontal_lux);
     if (r.diffuse_horizontal_w_m2) w_m2.push_back(*r.diffuse_horizontal_w_m2);
   }
+  const bool all_irradiance = !weather.records.empty() && w_m2.size() == weather.records.size();
   if (!weather.records.empty() && lux.size() == weather.records.size()) {
-    source = "diffuse horizontal illuminance of " + weather.source_name;
+    if (!all_irradiance) {
+      source = "diffuse horizontal illuminance of " + weather.source_name;
+      return lux;
+    }
+    // 0 lx of diffuse illuminance under a positive diffuse irradiance is no measurement: a
+    // converter that does not compute the illuminance fields writes 0 in every record, others
+    // write 0 where their own sun is below the horizon. Ranked as 0 lx such hours tie with
+    // the nights, and the ties (broken by the earlier hour) would put nights of January into
+    // the daylight hours: with a field of zeros, the first 4380 records of the year. They
+    // take their irradiance times the file's own mean diffuse efficacy instead (the
+    // illuminance over the irradiance of the records that have both), or, in a file with
+    // no such record, the ranking is the irradiance's.
+    double lux_sum = 0, w_m2_sum = 0;
+    std::size_t unmeasured = 0;
+    for (std::size_t t = 0; t < lux.size(); ++t) {
+      if (lux[t] > 0 && w_m2[t] > 0) {
+        lux_sum += lux[t];
+        w_m2_sum += w_m2[t];
+      } else if (!(lux[t] > 0) && w_m2[t] > 0) {
+        ++unmeasured;
+      }
+    }
+    if (unmeasured == 0) {
+      source = "diffuse horizontal illuminance of " + weather.source_name;
+      return lux;
+    }
+    if (!(w_m2_sum > 0)) {
+      source = "diffuse horizontal irradiance of " + weather.source_name +
+               " (its illuminance field reads 0 lx in every record with diffuse irradiance)";
+      return w_m2;
+    }
+    const double efficacy_lm_W = lux_sum / w_m2_sum;
+    for (std::size_t t = 0; t < lux.size(); ++t)
+      if (!(lux[t] > 0) && w_m2[t] > 0) lux[t] = w_m2[t] * efficacy_lm_W;
+    char note[160];
+    std::snprintf(note, sizeof note, " (%zu records reading 0 lx under diffuse irradiance ranked by it times the file's mean diffuse efficacy, %.1f lm/W)",
+                  unmeasured, efficacy_lm_W);
+    source = "diffuse horizontal illuminance of " + weather.source_name + note;
     return lux;
   }
-  if (!weather.records.empty() && w_m2.size() == weather.records.size()) {
+  if (all_irradiance) {
     source = "diffuse horizontal irradiance of " + weather.source_name +
              (weather.format == weather::WeatherFormat::Wea ? " (a .wea file has no illuminance)"
                                                              : " (its illuminance field has missing values)");

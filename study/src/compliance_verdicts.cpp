@@ -27,6 +27,27 @@ std::string n(double v) { return format_number(v); }
 
 }  // namespace
 
+bool lm83_analysis_period(const AnnualSummary& a, std::string& why) {
+  const OccupancySummary& o = a.occupancy;
+  const std::pair<double, double> window{Lm83AnalysisStart_h, Lm83AnalysisEnd_h};
+  bool every_day = false;
+  if (o.kind == "daily") {
+    every_day = o.start_h == Lm83AnalysisStart_h && o.end_h == Lm83AnalysisEnd_h;
+  } else if (o.kind == "weekly") {
+    every_day = o.holidays.empty();
+    for (const OccupancySummary::Windows& day : o.week) every_day = every_day && day == OccupancySummary::Windows{window};
+  }
+  if (!every_day) {
+    why = "the run's occupancy (" + o.description + ") is not LM-83's analysis period, 08:00-18:00 every day";
+    return false;
+  }
+  if (a.time_steps < 8760) {
+    why = "the weather file holds " + std::to_string(a.time_steps) + " hourly records, not LM-83's year";
+    return false;
+  }
+  return true;
+}
+
 int leed_v41_points(double sda_percent) {
   int points = 0;
   for (double threshold : LeedSdaPointsPercent) points += sda_percent >= threshold;
@@ -58,7 +79,12 @@ std::vector<Verdict> grid_verdicts(const GridResult& g) {
   if (const auto& a = g.annual) {
     const bool lm83_sda = a->da_threshold_lux == Lm83DaThresholdLux && a->sda_time_fraction == Lm83SdaTimeFraction;
     const std::string run_sda = "sDA" + n(a->da_threshold_lux) + "/" + n(100 * a->sda_time_fraction) + "%";
-    if (lm83_sda) {
+    std::string period_why;
+    const bool lm83_period = lm83_analysis_period(*a, period_why);
+    if (!lm83_period) {
+      out.push_back(not_assessed(Lm83, sda, sda_req, period_why));
+      out.push_back(not_assessed(Leed, sda, leed_req, period_why));
+    } else if (lm83_sda) {
       out.push_back(assessed(Lm83, sda, sda_req, a->sda_percent, "%", a->sda_percent >= Lm83SdaAcceptedPercent,
                              a->sda_percent >= Lm83SdaPreferredPercent ? "preferred level reached" : ""));
       const int points = leed_v41_points(a->sda_percent);
@@ -73,6 +99,8 @@ std::vector<Verdict> grid_verdicts(const GridResult& g) {
     if (!a->ase_percent)
       out.push_back(not_assessed(Lm83, ase, ase_req,
                                  "ASE not computed: the run spread the sun into sky patches (simulation.sun: spread)"));
+    else if (!lm83_period)
+      out.push_back(not_assessed(Lm83, ase, ase_req, period_why));
     else if (!lm83_ase)
       out.push_back(not_assessed(Lm83, ase, ase_req,
                                  "the run computed ASE" + n(a->ase_threshold_lux) + "," + n(a->ase_hours) + ", not " + ase));

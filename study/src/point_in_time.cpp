@@ -37,11 +37,15 @@ std::string lux(double value) {
   return text;
 }
 
-/// The step of the weather file's record that contains the time: the record of the hour
-/// (h - 1, h] in EPW's convention has its mid-hour stamp at h - 0.5, so a time t falls in
-/// the record stamped floor(t) + 0.5 (t = 24:00 in the day's last record).
+/// The step of the weather file's record that contains the time. EPW hour h covers the
+/// interval (h - 1, h] ("Hour 1 is 00:01 to 01:00", EnergyPlus Auxiliary Programs, "Data
+/// Field Descriptions": its radiation is received in the minutes preceding the hour), and its
+/// record is stamped at h - 0.5: a time t falls in hour ceil(t), so 15:00 is hour 15's record
+/// (14:00-15:00, stamped 14:30) and 15:20 is hour 16's. 00:00 ends the previous day's last
+/// hour; a date's cases stay on that date, so it takes the day's first record.
 std::optional<std::size_t> weather_step(const AnnualSky& sky, const project::PointInTimeSpec& c) {
-  const double stamp = std::min(std::floor(c.hour_lst), 23.0) + 0.5;
+  const double hour = std::clamp(std::ceil(c.hour_lst), 1.0, 24.0);
+  const double stamp = hour - 0.5;
   for (std::size_t t = 0; t < sky.steps.size(); ++t) {
     const metrics::TimeStamp& s = sky.steps[t];
     if (s.month == c.month && s.day == c.day && std::fabs(s.hour - stamp) < 1e-6) return t;

@@ -1,10 +1,50 @@
 // What a run reads and checks first: see run_inputs.h.
 #include "dayphoton/study/run_inputs.h"
 
+#include <cstdio>
+
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/study/point_in_time.h"
 
 namespace dayphoton::study {
+
+std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather) {
+  const std::size_t year_hours = (weather.leap_day_present ? 366u : 365u) * 24u;
+  if (!project.outputs.metrics || weather.records.empty() || weather.records.size() >= year_hours) return std::nullopt;
+  const weather::WeatherRecord& first = weather.records.front();
+  const weather::WeatherRecord& last = weather.records.back();
+  Diagnostic d;
+  d.severity = Severity::Warning;
+  d.location = project.weather.location;
+  d.message = "the weather file " + project.weather.path_as_written + " holds " + std::to_string(weather.records.size()) +
+              " hourly records (" + std::to_string(first.month) + "/" + std::to_string(first.day) + " to " +
+              std::to_string(last.month) + "/" + std::to_string(last.day) + "), not a whole year of " +
+              std::to_string(year_hours) + ": the annual metrics count these records only, so ASE's " +
+              "hours above its limit per year and EN 17037's daylight hours (half the records) are not the " +
+              "standards' yearly quantities, and DA and sDA lack the missing days; use a whole-year file for compliance";
+  return d;
+}
+
+std::vector<Diagnostic> southern_daylight_saving_warnings(const project::Project& project, double sun_latitude_deg) {
+  std::vector<Diagnostic> out;
+  if (!(sun_latitude_deg < 0)) return out;
+  char latitude[32];
+  std::snprintf(latitude, sizeof latitude, "%.2f", sun_latitude_deg);
+  auto check = [&](const project::OccupancySpec& o) {
+    if (!o.given || o.daylight_saving == "none") return;
+    Diagnostic d;
+    d.severity = Severity::Warning;
+    d.location = o.location;
+    d.message = "daylight_saving: " + o.daylight_saving + " is a northern-hemisphere rule (clocks ahead from March to " +
+                (o.daylight_saving == "eu" ? std::string("October") : std::string("November")) +
+                "), winter at this site (latitude " + latitude + " deg); southern rules are not built in: give the occupied hours as a CSV schedule, or daylight_saving: none";
+    out.push_back(std::move(d));
+  };
+  check(project.metrics.occupancy);
+  for (const project::GridSpec& g : project.sensors.grids) check(g.occupancy);
+  for (const project::PointsSpec& p : project.sensors.points) check(p.occupancy);
+  return out;
+}
 
 RunInputs read_run_inputs(const project::Project& project) {
   RunInputs inputs;
@@ -14,6 +54,10 @@ RunInputs read_run_inputs(const project::Project& project) {
     inputs.weather = weather::read_hourly_weather(project.weather.path);
     inputs.sun_site = resolve_sun_site(project.site, *inputs.weather);
     inputs.below_horizon = annual_below_horizon_direct(*inputs.weather, *inputs.sun_site);
+    if (std::optional<Diagnostic> w = partial_year_warning(project, *inputs.weather))
+      inputs.weather->warnings.push_back(std::move(*w));
+    for (Diagnostic& w : southern_daylight_saving_warnings(project, inputs.sun_site->solar.latitude_deg))
+      inputs.weather->warnings.push_back(std::move(w));
   }
   // The points in time whose sun needs no tracing.
   check_points_in_time(project.points_in_time,

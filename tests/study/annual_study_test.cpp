@@ -302,6 +302,42 @@ RadianceMatrix small_coefficients() {
 
 }  // namespace
 
+// EN 17037's daylight hours from a weather file whose diffuse illuminance field a converter
+// left at 0 in every record (the irradiance fields filled): ranked as 0 lx every hour would
+// tie, and the ties (the earlier hour first) made the first 4380 records of the year,
+// nights included, the daylight hours. Measured on an unobstructed sensor with the Oakland
+// file so zeroed: the high level's target area 100 % -> 0 %. The ranking is now the diffuse
+// irradiance's: every record with diffuse light is a daylight hour before any night is.
+// Oakland's own field reads 0 lx in 16 twilight records with 1-5 W/m^2 of diffuse
+// irradiance; they now rank by that irradiance (times the file's mean efficacy) before the
+// nights, and the brightest hours stay the illuminance's.
+TEST(DaylightHours, AnIlluminanceFieldOfZerosRanksByTheIrradiance) {
+  weather::HourlyWeather zeroed = weather::read_hourly_weather(EpwPath);
+  for (weather::WeatherRecord& r : zeroed.records) r.diffuse_horizontal_lux = 0.0;
+  std::string source;
+  const metrics::OccupancySchedule hours =
+      metrics::OccupancySchedule::brightest_half(daylight_hours_quantity(zeroed, source));
+  EXPECT_NE(source.find("diffuse horizontal irradiance"), std::string::npos) << source;
+  std::size_t with_diffuse = 0, with_diffuse_in_hours = 0;
+  for (std::size_t t = 0; t < zeroed.records.size(); ++t)
+    if (*zeroed.records[t].diffuse_horizontal_w_m2 > 0) {
+      ++with_diffuse;
+      with_diffuse_in_hours += hours.occupied(t);
+    }
+  EXPECT_EQ(hours.occupied_count(), zeroed.records.size() / 2);
+  EXPECT_EQ(with_diffuse, 4363u);  // fewer than 4380: every one is a daylight hour
+  EXPECT_EQ(with_diffuse_in_hours, with_diffuse);
+
+  const weather::HourlyWeather oakland = weather::read_hourly_weather(EpwPath);
+  const std::vector<double> q = daylight_hours_quantity(oakland, source);
+  EXPECT_NE(source.find("16 records reading 0 lx"), std::string::npos) << source;
+  const metrics::OccupancySchedule own = metrics::OccupancySchedule::brightest_half(q);
+  for (std::size_t t = 0; t < oakland.records.size(); ++t) {
+    if (*oakland.records[t].diffuse_horizontal_w_m2 > 0) EXPECT_TRUE(own.occupied(t)) << "record " << t;
+    if (*oakland.records[t].diffuse_horizontal_lux > 0) EXPECT_EQ(q[t], *oakland.records[t].diffuse_horizontal_lux);
+  }
+}
+
 TEST(AnnualStudyOutputs, WritesTheFourFilesAndAConsistentJsonFragment) {
   const AnnualSky sky = small_sky();
   const RadianceMatrix c = small_coefficients();

@@ -18,6 +18,8 @@ GridResult horizontal_grid(double sda, std::optional<double> ase, double mean_df
   g.name = "g";
   g.orientation = GridOrientation::Horizontal;
   AnnualSummary a;
+  a.time_steps = 8760;
+  a.occupancy.kind = "daily";  // 08:00-18:00 every day: LM-83's analysis period
   a.sda_percent = sda;
   a.ase_percent = ase;
   a.en17037 = {{"minimum", 300, 100, 60, 97, true}, {"medium", 500, 300, 40, 80, false}, {"high", 750, 500, 10, 50, false}};
@@ -37,6 +39,50 @@ const Verdict& find(const std::vector<Verdict>& vs, const std::string& standard,
 }
 
 }  // namespace
+
+// LM-83-12's sDA and ASE are over its analysis period, 8 am to 6 pm local clock time every day
+// of a year (section 2.1.2), and LEED takes them: a school week, an hourly schedule or a part
+// of a year gives metrics of other hours, "not assessed" with the reason (they read "pass"
+// before); every day 08:00-18:00 written as a weekly plan, or with daylight saving time, is
+// LM-83's. EN 17037 uses its daylight hours, not the occupancy: still assessed.
+TEST(ComplianceVerdicts, Lm83AndLeedOnlyOverTheAnalysisPeriod) {
+  GridResult school = horizontal_grid(60, 5, 2, 1, 0.5);
+  school.annual->occupancy.kind = "weekly";
+  school.annual->occupancy.description = "Monday-Friday 08:00-15:00; Saturday, Sunday closed";
+  for (int d = 0; d < 5; ++d) school.annual->occupancy.week[static_cast<std::size_t>(d)] = {{8.0, 15.0}};
+  for (const char* standard : {"IES", "LEED"}) {
+    const Verdict v = find(grid_verdicts(school), standard, "sDA");
+    EXPECT_EQ(v.outcome, "not assessed") << standard;
+    EXPECT_NE(v.reason.find("Monday-Friday 08:00-15:00"), std::string::npos) << v.reason;
+    EXPECT_NE(v.reason.find("not LM-83's analysis period"), std::string::npos) << v.reason;
+  }
+  EXPECT_EQ(find(grid_verdicts(school), "IES", "ASE").outcome, "not assessed");
+  EXPECT_EQ(find(grid_verdicts(school), "EN 17037", "level").outcome, "pass");
+
+  GridResult every_day = school;
+  for (auto& day : every_day.annual->occupancy.week) day = {{8.0, 18.0}};
+  every_day.annual->occupancy.daylight_saving = "eu";
+  EXPECT_EQ(find(grid_verdicts(every_day), "IES", "sDA").outcome, "pass");
+  EXPECT_EQ(find(grid_verdicts(every_day), "LEED", "sDA").reason, "2 points");
+  every_day.annual->occupancy.holidays = {{12, 25, 12, 26}};
+  EXPECT_EQ(find(grid_verdicts(every_day), "IES", "sDA").outcome, "not assessed");
+
+  GridResult hourly = horizontal_grid(60, 5, 2, 1, 0.5);
+  hourly.annual->occupancy.kind = "hourly";
+  EXPECT_EQ(find(grid_verdicts(hourly), "IES", "sDA").outcome, "not assessed");
+  GridResult short_day = horizontal_grid(60, 5, 2, 1, 0.5);
+  short_day.annual->occupancy.end_h = 17;
+  EXPECT_EQ(find(grid_verdicts(short_day), "LEED", "sDA").outcome, "not assessed");
+
+  GridResult part_year = horizontal_grid(60, 5, 2, 1, 0.5);
+  part_year.annual->time_steps = 7344;
+  const Verdict v = find(grid_verdicts(part_year), "IES", "ASE");
+  EXPECT_EQ(v.outcome, "not assessed");
+  EXPECT_NE(v.reason.find("7344 hourly records"), std::string::npos) << v.reason;
+  GridResult leap_year = horizontal_grid(60, 5, 2, 1, 0.5);
+  leap_year.annual->time_steps = 8784;
+  EXPECT_EQ(find(grid_verdicts(leap_year), "IES", "sDA").outcome, "pass");
+}
 
 TEST(ComplianceVerdicts, Lm83AndLeedAtTheirThresholds) {
   EXPECT_EQ(find(grid_verdicts(horizontal_grid(55, 10, 2, 1, 0.5)), "IES", "sDA").outcome, "pass");

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "dayphoton/project/project.h"
+#include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/sky/solar_position.h"
 #include "dayphoton/study/point_in_time.h"
@@ -281,6 +282,45 @@ TEST(PointInTimeSkyComponent, AnOvercastCaseInAReflectingRoomIsTheDaylightFactor
     EXPECT_NEAR(pit[i][4], expected, tolerance) << "sensor " << i;
   }
   fs::remove_all(dir);
+}
+
+// A weather case takes the record whose hour contains its time, EPW hour h covering
+// (h - 1, h] (EnergyPlus's data dictionary: "Hour 1 is 00:01 to 01:00"): 15:00 is hour 15
+// (stamped 14:30), 15:20 hour 16 (15:30), 24:00 hour 24 and 00:00 the day's first record.
+// A synthetic day whose sky column and sun carry their own stamp tells the record taken.
+TEST(PointInTimeWeatherCase, TakesTheRecordWhoseHourContainsTheTime) {
+  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  SkyAndSuns annual;
+  annual.sky.matrix = RadianceMatrix(static_cast<std::size_t>(basis.bin_count()), 48, 3);
+  for (int day = 1; day <= 2; ++day)
+    for (int h = 1; h <= 24; ++h) {
+      const std::size_t t = static_cast<std::size_t>((day - 1) * 24 + h - 1);
+      annual.sky.steps.push_back({6, 20 + day, h - 0.5});
+      for (int c = 0; c < 3; ++c) annual.sky.matrix.at(1, t, c) = static_cast<float>(100 * day + h);
+      annual.suns.push_back(sky::sun_record(t, Vec3{0, 0, 1}, 1000.0 * (100 * day + h)));
+    }
+  auto weather_case = [](const std::string& name, int day, double hour) {
+    project::PointInTimeSpec c;
+    c.name = name;
+    c.month = 6;
+    c.day = day;
+    c.hour_lst = hour;
+    c.sky = project::PointSky::Weather;
+    return c;
+  };
+  const std::vector<project::PointInTimeSpec> cases = {
+      weather_case("at_15", 21, 15.0), weather_case("at_15_20", 21, 15.0 + 20.0 / 60.0),
+      weather_case("at_14_59", 21, 14.0 + 59.0 / 60.0), weather_case("midnight", 22, 0.0),
+      weather_case("end_of_day", 21, 24.0), weather_case("at_0_30", 22, 0.5)};
+  const SkyAndSuns skies = point_in_time_skies(cases, sky::SolarSite{37.72, -122.22, -8, 2}, basis, 0.2, &annual);
+  const int expected_record[] = {115, 116, 115, 201, 124, 201};  // 100 x day + EPW hour
+  ASSERT_EQ(skies.suns.size(), cases.size());
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    SCOPED_TRACE(cases[k].name);
+    EXPECT_EQ(skies.sky.matrix.at(1, k, 0), static_cast<float>(expected_record[k]));
+    EXPECT_EQ(skies.suns[k].step, k);
+    EXPECT_DOUBLE_EQ(skies.suns[k].direct_normal_illuminance_lux, 1000.0 * expected_record[k]);
+  }
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 // Runs use the office at reduced photon counts (the sky, not the photons, is under test).
 #include "dayphoton/report/report_html.h"
 #include "dayphoton/study/cache_folder.h"
+#include "dayphoton/study/run_inputs.h"
 #include "dayphoton/study/sun_site.h"
 
 #include <gtest/gtest.h>
@@ -220,6 +221,58 @@ TEST(SunSite, AnotherTimeZoneThanTheWeatherFilesIsALocatedError) {
   EXPECT_NE(errors[0].find("from_weather: true"), std::string::npos);
   EXPECT_FALSE(fs::exists(folder / "summary.json"));
   EXPECT_FALSE(fs::exists(folder / "run.log"));  // nothing written before the error
+}
+
+// A weather file of part of a year (DATA PERIODS 3/1 to 12/31: 7344 records) gives annual
+// metrics over its records only: ASE's hours per year and EN 17037's half year are then other
+// quantities than the standards'. The run and `check` say so, located at the `weather` key;
+// a whole year, or a project without metrics, gets no warning.
+TEST(SunSite, APartOfAYearIsAWarningAtTheWeatherKey) {
+  const project::Project p = office_with_site(OfficeSite);
+  weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
+  EXPECT_FALSE(partial_year_warning(p, epw).has_value());
+  epw.records.erase(epw.records.begin(), epw.records.begin() + (31 + 28) * 24);
+  const std::optional<Diagnostic> w = partial_year_warning(p, epw);
+  ASSERT_TRUE(w.has_value());
+  EXPECT_EQ(w->severity, Severity::Warning);
+  EXPECT_EQ(w->location.line, p.weather.location.line);
+  EXPECT_EQ(w->location.column, p.weather.location.column);
+  EXPECT_NE(w->message.find("holds 7344 hourly records (3/1 to 12/31), not a whole year of 8760"), std::string::npos)
+      << w->message;
+  EXPECT_NE(w->message.find("ASE"), std::string::npos);
+  EXPECT_NE(w->message.find("EN 17037"), std::string::npos);
+  project::Project without_metrics = p;
+  without_metrics.outputs.metrics = false;
+  EXPECT_FALSE(partial_year_warning(without_metrics, epw).has_value());
+}
+
+// The built-in DST rules are the northern hemisphere's: at a site south of the equator
+// `daylight_saving: eu` would shift the occupied hours through the southern winter. A
+// warning at the schedule's `occupancy` key (the project's and a grid's own); none in the
+// north or without a rule.
+TEST(SunSite, ANorthernDaylightSavingRuleSouthOfTheEquatorIsAWarning) {
+  project::Project p = office_with_site(OfficeSite);
+  EXPECT_TRUE(southern_daylight_saving_warnings(p, -33.87).empty());  // no schedule
+  p.metrics.occupancy.given = true;
+  p.metrics.occupancy.daylight_saving = "eu";
+  p.metrics.occupancy.location = SourceLocation{"office.yaml", 40, 14};
+  EXPECT_TRUE(southern_daylight_saving_warnings(p, 37.72).empty());
+  ASSERT_FALSE(p.sensors.grids.empty());
+  p.sensors.grids[0].occupancy.given = true;
+  p.sensors.grids[0].occupancy.daylight_saving = "us";
+  p.sensors.grids[0].occupancy.location = SourceLocation{"office.yaml", 52, 18};
+  const std::vector<Diagnostic> w = southern_daylight_saving_warnings(p, -33.87);
+  ASSERT_EQ(w.size(), 2u);
+  EXPECT_EQ(w[0].location.line, 40);
+  EXPECT_EQ(w[1].location.line, 52);
+  EXPECT_NE(w[0].message.find("daylight_saving: eu is a northern-hemisphere rule (clocks ahead from March to October), "
+                              "winter at this site (latitude -33.87 deg)"),
+            std::string::npos)
+      << w[0].message;
+  EXPECT_NE(w[1].message.find("to November"), std::string::npos);
+  p.metrics.occupancy.daylight_saving = "none";
+  p.sensors.grids[0].occupancy.daylight_saving = "none";
+  EXPECT_TRUE(southern_daylight_saving_warnings(p, -33.87).empty());
 }
 
 /// The hours with direct light and the sun below the horizon in the log, summary and report.

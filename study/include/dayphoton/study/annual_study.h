@@ -54,8 +54,11 @@ std::vector<metrics::TimeStamp> time_stamps(const weather::HourlyWeather& weathe
 
 /// The EN 17037 ranking quantity of every record: the diffuse horizontal illuminance field
 /// (lux) when every record has it; otherwise the diffuse horizontal irradiance (W/m^2, which
-/// orders the hours nearly alike) when every record has that; otherwise empty. `source`
-/// receives which one was used.
+/// orders the hours nearly alike) when every record has that; otherwise empty. A record whose
+/// illuminance reads 0 under a positive diffuse irradiance (a field a converter left at 0)
+/// takes that irradiance times the file's mean diffuse efficacy (illuminance over irradiance
+/// of the records with both), or the whole ranking is the irradiance's when no record has
+/// both. `source` receives which one was used.
 std::vector<double> daylight_hours_quantity(const weather::HourlyWeather& weather, std::string& source);
 
 /// The RADIANCE-compatible sky options: SkyMatrixOptions::gendaymtx_compatible() with the sun

@@ -6,7 +6,12 @@
 //  - IES LM-83-12, "Approved Method: IES Spatial Daylight Autonomy (sDA) and Annual Sunlight
 //    Exposure (ASE)", sections 2.1.1 and 2.2.1: sDA300/50% >= 55 % of the area "nominally
 //    accepted", >= 75 % "preferred"; ASE1000,250 <= 10 % (above 10 %: unsatisfactory visual
-//    comfort). Assessed only when the run's settings are LM-83's (300 lx, 50 %, 1000 lx, 250 h).
+//    comfort). Assessed only when the run's settings are LM-83's (300 lx, 50 %, 1000 lx, 250 h)
+//    and its analysis period (section 2.1.2: 8 am to 6 pm local clock time, every day of a
+//    year: a daily 08:00-18:00 window, or a weekly one with that window every day and no
+//    holidays, with or without daylight saving time, over a whole year of records). A school
+//    week or a part of a year gives an sDA and an ASE of their own hours, not LM-83's, nor
+//    LEED's, which takes LM-83's.
 //  - USGBC LEED v4.1 BD+C, EQ credit Daylight, option 1 (table 1): sDA300/50% >= 40 % (1 point),
 //    >= 55 % (2), >= 75 % (3); ASE1000,250 above 10 % needs the glare design described.
 //  - EN 17037:2018 (CEN, "Daylight in buildings"), clause 5.1 and annex A table A.1, daylight
@@ -32,6 +37,13 @@ constexpr double Lm83DaThresholdLux = 300, Lm83SdaTimeFraction = 0.5, Lm83AseThr
 constexpr double LeedSdaPointsPercent[3] = {40, 55, 75};
 /// BREEAM UK NC 2014 Hea 01 (offices and other building types).
 constexpr double BreeamAverageDfPercent = 2.0, BreeamUniformity = 0.4, BreeamMinimumPointDfPercent = 0.8;
+
+/// LM-83-12's analysis period (section 2.1.2): every day 08:00-18:00 local clock time over a year.
+constexpr double Lm83AnalysisStart_h = 8, Lm83AnalysisEnd_h = 18;
+
+/// Whether the grid's annual metrics are over LM-83's analysis period; if not, `why` says what
+/// they are over instead.
+bool lm83_analysis_period(const AnnualSummary& annual, std::string& why);
 
 /// LEED v4.1 option 1 points (0..3) for a grid's sDA300/50%.
 int leed_v41_points(double sda_percent);

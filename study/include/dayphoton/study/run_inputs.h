@@ -7,6 +7,7 @@
 
 #include <optional>
 
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/study/sun_site.h"
@@ -19,6 +20,22 @@ struct RunInputs {
   std::optional<SunSite> sun_site;                        ///< the site its sun is computed for
   std::optional<sky::BelowHorizonDirect> below_horizon;   ///< its direct light with the sun down
 };
+
+/// A weather file that does not hold a whole year (a DATA PERIODS line such as `3/1, 12/31`)
+/// still gives every annual metric, but counted over its records only: LM-83's ASE counts
+/// hours per year above 250 and EN 17037's daylight hours are half of a year's hours, so
+/// both are then other quantities than the standards', and DA and sDA lack the missing
+/// seasons. A warning located at the project's `weather` key, naming the file, the records
+/// and the days it covers, when the project computes metrics; none for a whole year.
+std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather);
+
+/// The built-in daylight-saving rules (`daylight_saving: eu` or `us`) are the northern
+/// hemisphere's: they set the clock ahead from March to October or November, which is winter
+/// south of the equator, where a region that keeps DST does so from about October to April.
+/// One warning per schedule that names such a rule at a site south of the equator
+/// (`sun_latitude_deg` < 0), located at its `occupancy` key; southern rules are a CSV
+/// schedule's business (docs/metrics.md).
+std::vector<Diagnostic> southern_daylight_saving_warnings(const project::Project& project, double sun_latitude_deg);
 
 /// Reads and checks them. Throws InputError, located (file:line:column and key), for a weather
 /// file that cannot be read or is on another clock than the site, a point in time that is not
