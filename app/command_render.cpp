@@ -122,7 +122,11 @@ int run_render(const RenderOptions& options, std::ostream& out) {
   const engine::PhotonRenderer renderer(scene, materials, photons.surface, sky.sky, render_options);
   photons = engine::TracedPhotons{};
   if (!options.quiet) out << "render: " << surface_photons << " surface photons; sky: " << sky.description << "\n" << std::flush;
-  const engine::RenderedImage image = renderer.render(camera);
+  // The view is in world coordinates (the EXR header keeps it so); the scene is held around
+  // its local origin (SceneDescription::world_origin_m).
+  engine::Camera scene_camera = camera;
+  scene_camera.position_m = camera.position_m - description.world_origin_m;
+  const engine::RenderedImage image = renderer.render(scene_camera);
   const auto rendered = Clock::now();
 
   study::FloatImage exr(image.width, image.height, {"R", "G", "B"});
