@@ -38,10 +38,9 @@ Vec3 parse_vector(const std::string& text, const std::string& option) {
   return v;
 }
 
+/// x,y,z: 6 significant digits, millimetres beyond 100 km (a view in survey coordinates).
 std::string vector_text(const Vec3& v) {
-  std::ostringstream s;
-  s << v.x << ',' << v.y << ',' << v.z;
-  return s.str();
+  return format_coordinate(v.x) + ',' + format_coordinate(v.y) + ',' + format_coordinate(v.z);
 }
 
 }  // namespace
