@@ -38,10 +38,9 @@ Vec3 parse_vector(const std::string& text, const std::string& option) {
   return v;
 }
 
+/// x,y,z: 6 significant digits, millimetres beyond 100 km (a view in survey coordinates).
 std::string vector_text(const Vec3& v) {
-  std::ostringstream s;
-  s << v.x << ',' << v.y << ',' << v.z;
-  return s.str();
+  return format_coordinate(v.x) + ',' + format_coordinate(v.y) + ',' + format_coordinate(v.z);
 }
 
 }  // namespace
@@ -122,7 +121,11 @@ int run_render(const RenderOptions& options, std::ostream& out) {
   const engine::PhotonRenderer renderer(scene, materials, photons.surface, sky.sky, render_options);
   photons = engine::TracedPhotons{};
   if (!options.quiet) out << "render: " << surface_photons << " surface photons; sky: " << sky.description << "\n" << std::flush;
-  const engine::RenderedImage image = renderer.render(camera);
+  // The view is in world coordinates (the EXR header keeps it so); the scene is held around
+  // its local origin (SceneDescription::world_origin_m).
+  engine::Camera scene_camera = camera;
+  scene_camera.position_m = camera.position_m - description.world_origin_m;
+  const engine::RenderedImage image = renderer.render(scene_camera);
   const auto rendered = Clock::now();
 
   study::FloatImage exr(image.width, image.height, {"R", "G", "B"});

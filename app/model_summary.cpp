@@ -245,7 +245,7 @@ ModelSummary summarize_model(const project::Project& proj) {
     info.rows = grid.rows;
     info.spacing_m = grid.spacing_m;
     info.planar = grid.planar;
-    info.plane_height_m = grid.plane_height_m;
+    info.plane_height_m = s.scene.world_grid(grid).plane_height_m;  // world coordinates
     if (grid.planar) {
       info.estimate = "receiver plane";
     } else {
@@ -264,12 +264,13 @@ ModelSummary summarize_model(const project::Project& proj) {
         info.estimate = "surface photons";
         if (first_bad < grid.points.size()) {
           const SensorPoint& p = grid.points[first_bad];
+          const Vec3 world = s.scene.world_of(p.position);
           diag.error(grid.location,
                      "sensor set '" + grid.name + "': " + std::to_string(free + on_other) + " of " +
                          std::to_string(grid.points.size()) +
                          " sensors do not lie on a surface that stores photons (the first, sensor " +
-                         std::to_string(first_bad + 1) + " at (" + format_number(p.position.x) + ", " +
-                         format_number(p.position.y) + ", " + format_number(p.position.z) + "), is " +
+                         std::to_string(first_bad + 1) + " at (" + format_coordinate(world.x) + ", " +
+                         format_coordinate(world.y) + ", " + format_coordinate(world.z) + "), is " +
                          (free > 0 && engine::sensor_support(scene, models, p) == engine::SensorSupport::Free
                               ? "in mid air"
                               : "on a black, specular or transparent surface") +

@@ -1,6 +1,7 @@
 #include "dayphoton/core/diagnostics.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -89,6 +90,16 @@ std::string format_number(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", value);
   return buffer;
+}
+
+std::string format_coordinate(double value_m) {
+  if (!(std::abs(value_m) >= 1e5)) return format_number(value_m);
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.3f", value_m);
+  std::string s = buffer;
+  s.erase(s.find_last_not_of('0') + 1);
+  if (s.back() == '.') s.pop_back();
+  return s;
 }
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {

@@ -39,4 +39,20 @@ int SceneDescription::find_material(const std::string& name) const {
   return -1;
 }
 
+SensorGrid SceneDescription::world_grid(const SensorGrid& grid) const {
+  SensorGrid world = grid;
+  if (world_origin_m == Vec3{0, 0, 0}) return world;
+  for (SensorPoint& p : world.points) p.position = world_of(p.position);
+  for (Vec3& v : world.outline) v = world_of(v);
+  world.plane_height_m = grid.plane_height_m + dot(grid.plane_normal, world_origin_m);
+  return world;
+}
+
+std::vector<SensorPoint> SceneDescription::world_points(const std::vector<SensorPoint>& points) const {
+  std::vector<SensorPoint> world = points;
+  if (world_origin_m == Vec3{0, 0, 0}) return world;
+  for (SensorPoint& p : world) p.position = world_of(p.position);
+  return world;
+}
+
 }  // namespace dayphoton

@@ -137,8 +137,10 @@ Scene Scene::build_surfaces(const SceneDescription& description) {
 
   // Validate everything first (Embree would drop bad primitives silently), then report all.
   Diagnostics diagnostics;
-  // Photon positions are floats in the model's coordinates (photon.h): refuse geometry so far
-  // from the origin that they lose the precision of the estimates, at its farthest surface.
+  // Photon positions are floats in the description's coordinates (photon.h), which a project
+  // holds around a local origin (SceneDescription::world_origin_m): refuse geometry so far
+  // from that origin that they lose the precision of the estimates, i.e. a model too large,
+  // at its farthest surface.
   {
     double farthest_m = 0;
     std::size_t farthest = surfaces.size();
@@ -148,15 +150,16 @@ Scene Scene::build_surfaces(const SceneDescription& description) {
           for (int k = 0; k < 3; ++k)
             if (std::abs(p[k]) > farthest_m) farthest_m = std::abs(p[k]), farthest = i;
     if (farthest_m > PhotonCoordinateLimit_m) {
+      const Vec3& o = impl->description.world_origin_m;
       std::ostringstream message;
-      message << describe(surfaces[farthest], farthest) << " lies " << farthest_m
-              << " m from the coordinates' origin (survey or UTM coordinates?): photon "
-                 "positions are single precision, which beyond "
+      message << describe(surfaces[farthest], farthest) << " lies " << format_coordinate(farthest_m) << " m from ("
+              << format_coordinate(o.x) << ", " << format_coordinate(o.y) << ", " << format_coordinate(o.z)
+              << "), the point the model is held around (the centre of its geometry in whole km), in a model "
+              << format_coordinate(length(hi - lo))
+              << " m across: photon positions are single precision, which beyond "
               << PhotonCoordinateLimit_m
-              << " m reads the daylight wrong by more than its noise; move the model near "
-                 "the origin (in the tool that wrote it, a mesh's 'translate', or a RADIANCE "
-                 "'!xform -t' line around the scene files); 'north' and 'utm_zone' still "
-                 "orient it";
+              << " m from that point reads the daylight wrong by more than its noise; leave out the distant "
+                 "geometry (or, in coordinates of another frame, move it to the model's)";
       diagnostics.error(surfaces[farthest].location, message.str());
     }
   }

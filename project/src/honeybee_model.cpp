@@ -95,6 +95,14 @@ class Reader {
     // A tolerance of 0 means "no checks" in Honeybee; the planarity test then takes the one
     // of the scene's own polygons (1 mm).
     m_out.tolerance_m = tolerance > 0 ? tolerance * m_out.metres_per_unit : 1e-3;
+    // Old files' model-level north (honeybee_model.h); null is "not written".
+    if (const json* v = find(root, "north_angle"); v && !v->is_null()) {
+      double north = 0;
+      if (get_number(root, "", m_out.identifier, "north_angle", north, false)) {
+        m_out.north_angle_deg = north;
+        m_out.north_angle_location = m_loc.locate("north_angle");
+      }
+    }
 
     if (const json* v = find(root, "shade_meshes"); v && !v->is_null() && !(v->is_array() && v->empty()))
       error("shade_meshes", m_out.identifier,
@@ -296,8 +304,8 @@ class Reader {
     if (!planar(pts, face, path, id)) return false;
     for (const Vec3& p : pts)
       if (!polygon_contains(face.boundary, p) && distance_to_polygon_boundary_m(face.boundary, p) > m_out.tolerance_m) {
-        error(path, id, "is not inside its face '" + face_id + "' (a vertex at (" + format_number(p.x) + ", " +
-                            format_number(p.y) + ", " + format_number(p.z) + ") m lies outside it)");
+        error(path, id, "is not inside its face '" + face_id + "' (a vertex at (" + format_coordinate(p.x) + ", " +
+                            format_coordinate(p.y) + ", " + format_coordinate(p.z) + ") m lies outside it)");
         return false;
       }
     return true;

@@ -68,8 +68,8 @@ bool generate_light_pipe(const SystemSpec& spec, const LightPipeSpec& p, const R
     report(diag, spec.location_of("x"),
            what + " (diameter " + format_number(p.diameter_m) + " m at x = " + format_number(p.x_m) +
                ", y = " + format_number(p.y_m) + ") does not fit in the ceiling of room '" +
-               room.name + "' (x " + format_number(o.x) + " to " + format_number(o.x + s.x) + ", y " +
-               format_number(o.y) + " to " + format_number(o.y + s.y) + ")");
+               room.name + "' (x " + format_coordinate(o.x) + " to " + format_coordinate(o.x + s.x) + ", y " +
+               format_coordinate(o.y) + " to " + format_coordinate(o.y + s.y) + ")");
     return false;
   }
   const double z_c = o.z + s.z, z_t = z_c + p.length_m;

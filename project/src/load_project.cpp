@@ -13,6 +13,7 @@
 // All errors are collected (Diagnostics, cap 50) and thrown together as one InputError. The
 // file format is described in docs/project-format.md.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -208,6 +209,7 @@ class Loader {
     r.read_bool("from_weather", site.from_weather);
     m_from_weather_location = r.location_of("from_weather");
     r.read_number("north", site.north_deg);
+    if (r.has("north")) m_site_north_location = r.location_of("north");
     if (site.from_weather) {
       // One source of truth: the header's site is the sun's; a second one in the project
       // would be ignored, which is what from_weather must not do silently.
@@ -653,6 +655,35 @@ class Loader {
   /// reported with the project's and its grids can be named in `sensors`. Its modifiers
   /// become project materials under their identifiers (a project material of the same name
   /// is an error: one name, one material).
+  /// An old Honeybee model's `north_angle` (honeybee_model.h): site.north's own convention,
+  /// so it orients the model where the project writes no site.north; a site.north that
+  /// differs, or a UTM zone (whose north is grid north), is a located error: which north is
+  /// meant is the user's to say.
+  void take_honeybee_north(HoneybeeModel& model) {
+    const double angle = model.north_angle_deg;
+    if (angle == 0) return;
+    Site& site = m_project.site;
+    const std::string words = "the Honeybee model's north_angle, " + format_number(angle) + " degrees (" +
+                              model.north_angle_location.to_string() +
+                              "; clockwise from +Y to north, as site.north counts)";
+    if (m_site_north_location) {
+      if (std::remainder(site.north_deg - angle, 360.0) != 0)
+        m_reporter.error(*m_site_north_location,
+                         "site.north is " + format_number(site.north_deg) + " degrees but " + words +
+                             " differs: write site.north: " + format_number(angle) +
+                             " to use the model's, or remove north_angle from the model");
+      return;
+    }
+    if (site.utm_zone) {
+      m_reporter.error(site.location, words + ", and the site has a utm_zone, whose site.north is measured to grid "
+                                              "north: write site.north (the angle from +Y to grid north)");
+      return;
+    }
+    site.north_deg = angle;
+    model.notes.push_back("north_angle " + format_number(angle) + " (" + model.north_angle_location.to_string() +
+                          ") orients the model: site.north " + format_number(angle));
+  }
+
   void read_honeybee(ParamReader& r) {
     HoneybeeImport hb;
     m_honeybee_given = true;
@@ -665,6 +696,7 @@ class Loader {
       for (const Diagnostic& d : e.diagnostics()) m_reporter.forward(d);
       return;
     }
+    take_honeybee_north(hb.model);
     for (const MaterialSpec& m : hb.model.materials) {
       if (m_material_names.contains(m.name)) {
         m_reporter.error(m_material_names.first(m.name).location,
@@ -1778,6 +1810,7 @@ class Loader {
   FolderNames m_point_folders{{}, ""};
   SourceLocation m_from_weather_location;  ///< of site.from_weather (its check needs the weather key)
   bool m_honeybee_given = false;  ///< geometry.honeybee written (read or not)
+  std::optional<SourceLocation> m_site_north_location;  ///< site.north, where written
   NameSet m_material_names{"material"}, m_room_names{"room"}, m_window_names{"window"},
       m_roof_light_names{"roof light"},
       m_polygon_names{"polygon"}, m_box_names{"box"}, m_mesh_names{"mesh"},

@@ -22,6 +22,7 @@
 
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/engine/bsdf_material.h"
+#include "dayphoton/project/local_origin.h"
 #include "dayphoton/project/north_rotation.h"
 #include "geometry_generators.h"
 #include "system_generators.h"
@@ -256,7 +257,7 @@ SceneDescription build_scene_description(const Project& project) {
         if (inside) continue;
         detail::report(diag, roi->location,
                        "simulation.region_of_interest: sensor " + std::to_string(i) + " of '" + grid.name + "' at (" +
-                           format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) +
+                           format_coordinate(p.x) + ", " + format_coordinate(p.y) + ", " + format_coordinate(p.z) +
                            ") m lies outside the box; no photon would be stored for its estimates");
         break;  // one message per grid
       }
@@ -265,6 +266,8 @@ SceneDescription build_scene_description(const Project& project) {
   for (const Diagnostic& d : diag.entries())
     if (d.severity == Severity::Warning) scene.warnings.push_back(d);
   rotate_scene(scene, north_deg);
+  // Survey coordinates near (0, 0, 0) before anything becomes a float (local_origin.h).
+  move_to_local_origin(scene);
   return scene;
 }
 

@@ -31,8 +31,18 @@ std::string percent(double fraction) {
 }
 
 std::string point_text(const Vec3& p) {
-  return "(" + format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) + ")";
+  return "(" + format_coordinate(p.x) + ", " + format_coordinate(p.y) + ", " + format_coordinate(p.z) + ")";
 }
+
+/// Positions of the scene description as the project file writes them: back to world
+/// coordinates (SceneDescription::world_origin_m), then to model coordinates (north rotation).
+struct ModelFrame {
+  const SceneDescription& description;
+  double north_deg = 0;
+  std::string text(const Vec3& position_m) const {
+    return point_text(project::world_to_model(description.world_of(position_m), north_deg));
+  }
+};
 
 std::string sky_fractions(const engine::Port& port) {
   return "sky seen by " + percent(port.sky_fraction_winding) + " of the test rays on the side its vertex order "
@@ -75,7 +85,7 @@ std::vector<SensorPoint> outline_probes(const SensorGrid& grid) {
 /// The warning for sensors in a room that see the sky through a gap that is no port (header):
 /// light enters only through ports, so what comes through the gap is not counted.
 void check_sky_through_gaps(const SensorGrid& grid, const std::vector<engine::SensorPlacementTest>& tests,
-                            double north_deg, std::vector<Diagnostic>& warnings) {
+                            const ModelFrame& frame, std::vector<Diagnostic>& warnings) {
   std::size_t count = 0, largest = tests.size();
   for (std::size_t i = 0; i < tests.size(); ++i) {
     const engine::SensorPlacementTest& t = tests[i];
@@ -90,7 +100,7 @@ void check_sky_through_gaps(const SensorGrid& grid, const std::vector<engine::Se
       grid.location,
       "sensor set '" + grid.name + "': " + std::to_string(count) + " of " + std::to_string(tests.size()) +
           " sensors see the sky through an opening that is no port (sensor " + std::to_string(largest) + " at " +
-          point_text(project::world_to_model(grid.points[largest].position, north_deg)) + " m in " +
+          frame.text(grid.points[largest].position) + " m in " +
           percent(double(t.sky_without_port) / t.rays) +
           " of its hemisphere): light enters only through ports, so the light through that gap is not counted "
           "and these sensors read low. Close the gap, or make the opening a port (a polygon with 'port: true' "
@@ -99,7 +109,7 @@ void check_sky_through_gaps(const SensorGrid& grid, const std::vector<engine::Se
 }
 
 /// The warning for a receiver-plane grid whose outline reaches outside every room (header).
-void check_outline(const engine::Scene& scene, const SensorGrid& grid, double north_deg,
+void check_outline(const engine::Scene& scene, const SensorGrid& grid, const ModelFrame& frame,
                    std::vector<Diagnostic>& warnings) {
   if (!grid.planar) return;
   const std::vector<SensorPoint> probes = outline_probes(grid);
@@ -112,7 +122,7 @@ void check_outline(const engine::Scene& scene, const SensorGrid& grid, double no
       grid.location,
       "sensor set '" + grid.name + "': its outline reaches outside every room (" + std::to_string(outside) + " of " +
           std::to_string(probes.size()) + " points " + format_number(OutlineProbeInset_m) +
-          " m inside it, first at " + point_text(project::world_to_model(probes[first].position, north_deg)) +
+          " m inside it, first at " + frame.text(probes[first].position) +
           " m, see the sky without a port); the work plane counts the light crossing it inside the outline, "
           "and none crosses beyond the walls, so the sensors near that part read low. Draw the outline along "
           "the room's inside faces"));
@@ -169,7 +179,7 @@ NearCutSensors near_cut_sensors_of(const engine::Scene& scene, const SensorGrid&
 
 /// One located message per set with sensors next to a cut (header comment): a note where
 /// they are gathered, a warning where they keep the plane's estimate (near_cut_gathered).
-void report_near_cuts(const SensorGrid& grid, const NearCutSensors& near, bool gathered, double north_deg,
+void report_near_cuts(const SensorGrid& grid, const NearCutSensors& near, bool gathered, const ModelFrame& frame,
                       PlacementCheck& out) {
   if (near.count == 0) return;
   const std::string where =
@@ -177,7 +187,7 @@ void report_near_cuts(const SensorGrid& grid, const NearCutSensors& near, bool g
       " sensors lie within " + format_number(engine::NearCutGather_m) +
       " m of a surface that crosses the work plane (a column, a partition, furniture), the nearest, sensor " +
       std::to_string(near.nearest_sensor) + " at " +
-      point_text(project::world_to_model(grid.points[near.nearest_sensor].position, north_deg)) + " m, " +
+      frame.text(grid.points[near.nearest_sensor].position) + " m, " +
       format_number(std::round(near.nearest_m * 1000) / 1000) +
       " m from it; there the light on the plane changes faster than the photon estimate's disc follows, so ";
   if (gathered) {
@@ -357,8 +367,8 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
                                const project::Project& proj) {
   Diagnostics diag;
   const SourceLocation project{proj.path, 1, 1};
-  const double north_deg = proj.site.rotation_to_true_north_deg();
   const SceneDescription& description = scene.description();
+  const ModelFrame frame{description, proj.site.rotation_to_true_north_deg()};
   if (scene.ports().empty())
     report(diag, project,
            "the project has no photon port: no light can enter (add a window to a room, a polygon or mesh with "
@@ -417,7 +427,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
         const std::size_t i = bad[j];
         const engine::SensorPlacementTest& t = tests[i];
         if (j > 0) m << "; ";
-        m << "sensor " << i << " at " << point_text(project::world_to_model(grid.points[i].position, north_deg))
+        m << "sensor " << i << " at " << frame.text(grid.points[i].position)
           << " m ";
         if (t.placement == engine::SensorPlacement::InRoom) {
           m << "lies on a column's or a partition's face";
@@ -469,8 +479,8 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
                                                    "to leave them out"));
       }
     }
-    check_sky_through_gaps(grid, tests, north_deg, out.warnings);
-    check_outline(scene, grid, north_deg, out.warnings);
+    check_sky_through_gaps(grid, tests, frame, out.warnings);
+    check_outline(scene, grid, frame, out.warnings);
     out.sets.push_back(std::move(set));
   }
   // Sensors next to a cut, gathered or not as the run decides (CaseLayout::of).
@@ -484,7 +494,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
     planar_sensors.push_back(grid.points.size());
   }
   const std::vector<bool> gathered = near_cut_gathered(near_count, planar_sensors, surface_photons_kept);
-  for (std::size_t g = 0; g < grids.size(); ++g) report_near_cuts(grids[g], near[g], gathered[g], north_deg, out);
+  for (std::size_t g = 0; g < grids.size(); ++g) report_near_cuts(grids[g], near[g], gathered[g], frame, out);
   check_exterior_geometry(scene, out.warnings);
   if (grids.empty())
     report(diag, project, "the project has no sensors: add a grid or a point set under 'sensors'");

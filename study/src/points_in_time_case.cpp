@@ -88,7 +88,7 @@ void run_points_in_time(const project::Project& project, const std::string& pref
         table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + correction.at(i));
     }
     const std::string path = join_path(folders[g], "point_in_time.csv");
-    write_point_in_time_csv(grid.points, names, table, path);
+    write_point_in_time_csv(description.world_points(grid.points), names, table, path);  // world coordinates
     ctx.outputs.record(path);
     nlohmann::json entries = nlohmann::json::array();
     for (std::size_t k = 0; k < cases.size(); ++k) {

@@ -182,14 +182,23 @@ CaseResult results_case(const std::string& kind, const std::string& name, const 
   return c;
 }
 
+namespace {
+/// A polygon of `scene` in world coordinates (SceneDescription::world_origin_m).
+Polygon3 world_polygon(const SceneDescription& scene, const std::vector<Vec3>& vertices) {
+  Polygon3 world;
+  for (const Vec3& v : vertices) world.push_back(scene.world_of(v));
+  return world;
+}
+}  // namespace
+
 void set_plan_geometry(CaseResult& c, const SceneDescription& scene) {
   c.openings.clear();
   c.systems.clear();
   for (const Surface& s : scene.surfaces) {
     // Port candidates of an imported scene (glazing under `ports: auto`) count as openings:
     // which of them face outdoors is decided by the engine's ray scene.
-    if (s.port || s.port_if_outdoors) c.openings.push_back(s.vertices);
-    if (s.outdoor_scatterer) c.systems.push_back(s.vertices);
+    if (s.port || s.port_if_outdoors) c.openings.push_back(world_polygon(scene, s.vertices));
+    if (s.outdoor_scatterer) c.systems.push_back(world_polygon(scene, s.vertices));
   }
 }
 

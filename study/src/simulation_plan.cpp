@@ -20,7 +20,8 @@
 namespace dayphoton::study {
 namespace {
 
-/// The project's region of interest in world coordinates: the axis-aligned box around the
+/// The project's region of interest in world coordinates (tracing_for moves it into a case's
+/// scene frame, CaseLayout::world_origin_m): the axis-aligned box around the
 /// rotated model box (with a north rotation a little larger, which only stores more).
 std::optional<engine::Bounds3> region_of_interest(const project::Project& project) {
   const auto& roi = project.simulation.region_of_interest;
@@ -87,6 +88,7 @@ CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids) {
 CaseLayout CaseLayout::of(const std::vector<SensorGrid>& grids, const engine::Scene& scene,
                           const std::vector<engine::Material>& materials) {
   CaseLayout l = of(grids);
+  l.world_origin_m = scene.description().world_origin_m;
   for (engine::ReceiverPlane& plane : l.planes) plane.set_interior_cuts(engine::interior_plane_cuts(scene, plane));
   // The planar grids' sensors next to a cut, gathered from the surface photons.
   l.near_cut_sensors.assign(l.planes.size(), 0);
@@ -236,6 +238,10 @@ engine::TracingOptions SimulationPlan::tracing_for(const engine::TracingOptions&
   o.store_direct_on_surfaces =
       layout.keep_surface_photons && (point_estimate == project::PointEstimate::Gather || layout.gathers_near_cuts());
   if (o.store_direct_on_surfaces) o.scatterer_direct_sides = layout.gathered_scatterer_sides;
+  if (o.region_of_interest && layout.world_origin_m != Vec3{0, 0, 0}) {
+    o.region_of_interest->lower = o.region_of_interest->lower - layout.world_origin_m;
+    o.region_of_interest->upper = o.region_of_interest->upper - layout.world_origin_m;
+  }
   return o;
 }
 

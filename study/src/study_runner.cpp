@@ -144,11 +144,15 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     materials.push_back(engine::Material::from_spec(m));
   const SimulationPlan& plan = ctx.plan;
   const sky::PatchBasis& basis = plan.basis;
-  set_plan_geometry(*ctx.results, description);
+  set_plan_geometry(*ctx.results, description);  // in world coordinates
   set_building(*ctx.results, project, description);
   const engine::SourceSet sources = engine::SourceSet::sky_bins(basis);
   const CaseLayout layout = CaseLayout::of(description.grids, scene, materials);
   const CaseScene cs{description, scene, materials, layout, scene_key(description), planes_key(description.grids)};
+  // The grids as the user reads them: in world coordinates (SceneDescription::world_origin_m,
+  // project/local_origin.h); the engine and the cache keep the description's own.
+  std::vector<SensorGrid> world_grids;
+  for (const SensorGrid& g : description.grids) world_grids.push_back(description.world_grid(g));
   progress.advance(1);
   progress.end();
 
@@ -190,11 +194,11 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
                                                                          : SubPatchShares{});
     const RadianceMatrix& c = coefficient_matrices.back();
     if (ctx.executor.writes_results()) {
-      write_sensors_csv(grid.points, join_path(folder, "sensors.csv"));
+      write_sensors_csv(world_grids[g].points, join_path(folder, "sensors.csv"));
       ctx.outputs.record(join_path(folder, "sensors.csv"));
     }
     nlohmann::json gj = {{"name", grid.name}, {"sensors", grid.points.size()}, {"folder", folder}};
-    ctx.results->grids.push_back(results_grid(grid, relative_folder(report.output_dir, folder), *ctx.results,
+    ctx.results->grids.push_back(results_grid(world_grids[g], relative_folder(report.output_dir, folder), *ctx.results,
                                               placement.sets[g].dropped ? placement.sets[g].outside : 0,
                                               placement.sets[g].dropped ? placement.sets[g].inside_solid : 0,
                                               placement.sets[g].dropped ? placement.sets[g].on_cut : 0,
@@ -231,7 +235,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       const std::vector<double>& df = parts.df_percent;
       const std::vector<double> df_stderr = parts.stderr_percent();
       if (ctx.executor.writes_results()) {
-        write_daylight_factor_csv(grid.points, df, join_path(folder, "daylight_factor.csv"), df_stderr);
+        write_daylight_factor_csv(world_grids[g].points, df, join_path(folder, "daylight_factor.csv"), df_stderr);
         ctx.outputs.record(join_path(folder, "daylight_factor.csv"));
       }
       const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent);
@@ -427,12 +431,12 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       log_occupancy(grid.name, study, annual_settings);
       const SunBinVariance sun_variance{&sun[g].bin_variance, &bins, &ss.suns};
       VerdictUncertainty verdicts;
-      ctx.outputs.record(write_annual_outputs_beside(study, grid.points, annual_settings, folders[g], which, [&] {
+      ctx.outputs.record(write_annual_outputs_beside(study, world_grids[g].points, annual_settings, folders[g], which, [&] {
         verdicts = verdict_uncertainty(study, ss.sky, sky_variances[g], &sun_variance, annual_settings);
       }));
       if (keep)  // operated shading picks hours by the direct sun's table
         keep->grids.push_back(
-            {grid.name, grid.points, study.illuminance, direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps)});
+            {grid.name, world_grids[g].points, study.illuminance, direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps)});
       add_verdict_uncertainty(grids_json[g], verdicts, true);
       add_annual(ctx.results->grids[g], study, annual_settings, which);
       add_verdict_uncertainty(ctx.results->grids[g], verdicts);
@@ -460,7 +464,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       const AnnualStudy& study = *computed;
       log_occupancy(grid.name, study, annual_settings);
       VerdictUncertainty verdicts;
-      ctx.outputs.record(write_annual_outputs_beside(study, grid.points, annual_settings, folders[g], which, [&] {
+      ctx.outputs.record(write_annual_outputs_beside(study, world_grids[g].points, annual_settings, folders[g], which, [&] {
         verdicts = verdict_uncertainty(study, sky, sky_variances[g], nullptr, annual_settings);
       }));
       add_verdict_uncertainty(grids_json[g], verdicts, false);

@@ -1,7 +1,9 @@
 // A model far from its coordinates' origin (site plans, survey and UTM coordinates): Embree
 // intersects in single precision, so Scene holds its vertices and rays relative to a local
-// origin (scene.h, "Precision"), and photon positions, floats in the model's coordinates, are
-// the reason geometry beyond PhotonCoordinateLimit_m is refused (photon.h).
+// origin (scene.h, "Precision"), and photon positions, floats in the description's
+// coordinates, are the reason geometry beyond PhotonCoordinateLimit_m of the description's
+// origin is refused (photon.h; a project's description is held around its own centre,
+// project/local_origin.h, tested in tests/study/survey_coordinates_test.cpp).
 //
 // The sky component of a CIE 171:2006-style black room (reflectances 0, an unglazed 4 x 1.5 m
 // opening) is a function of the geometry relative to the sensor only: the same room and
@@ -104,7 +106,8 @@ TEST(FarFromOrigin, GeometryBeyondThePhotonCoordinateLimitIsALocatedError) {
     const std::string what = e.what();
     EXPECT_NE(what.find("model.hbjson:12:5"), std::string::npos) << what;
     EXPECT_NE(what.find("'floor'"), std::string::npos) << what;
-    EXPECT_NE(what.find("move the model near the origin"), std::string::npos) << what;
+    EXPECT_NE(what.find("from (0, 0, 0), the point the model is held around"), std::string::npos) << what;
+    EXPECT_NE(what.find("leave out the distant geometry"), std::string::npos) << what;
   }
   // Just inside the limit it builds.
   EXPECT_NO_THROW((void)Scene::build(black_room_at({PhotonCoordinateLimit_m - 10, 0, 0}).description));

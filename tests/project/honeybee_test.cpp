@@ -560,5 +560,43 @@ TEST(HoneybeeProject, UnknownGridHintAndErrorsOfTheModelAreReported) {
             std::vector<std::string>{"2:11: rooms: expected a list of rooms, got a number"});
 }
 
+// An old file's model-level north_angle (honeybee-schema's Model before the north moved to the
+// energy simulation parameter): degrees clockwise from +Y to north (honeybee-core's
+// Model.north_vector is +Y rotated by minus the angle), site.north's own convention. It was
+// ignored: a model drawn with north_angle 90 (true north along +X) was simulated facing south.
+TEST(HoneybeeProject, AnOldModelsNorthAngleOrientsItWhereTheProjectWritesNoNorth) {
+  TempDir dir;
+  dir.write("model.hbjson", model(room("r", box, outdoors(), outdoors()), "", R"("north_angle": 90, )"));
+  const std::string yaml = dir.write("p.yaml", std::string(ProjectHead) + "geometry: {honeybee: model.hbjson}\n");
+  const Project p = load_project(yaml);
+  EXPECT_DOUBLE_EQ(p.site.north_deg, 90.0);
+  ASSERT_TRUE(p.geometry.honeybee.has_value());
+  bool noted = false;
+  for (const std::string& n : p.geometry.honeybee->model.notes) noted = noted || n.find("north_angle 90") == 0;
+  EXPECT_TRUE(noted);
+  // The window of the model's south wall (y = 0) faces east: world x = -y = 0.
+  const SceneDescription scene = build_scene_description(p);
+  int ports = 0;
+  for (const Surface& s : scene.surfaces)
+    if (s.port) {
+      ++ports;
+      for (const Vec3& v : s.vertices) EXPECT_NEAR(v.x, 0.0, 1e-12);
+    }
+  EXPECT_EQ(ports, 1);
+  // The same north written in the project: no conflict.
+  std::string with_north = std::string(ProjectHead);
+  with_north.replace(with_north.find("time_zone: -8}"), 14, "time_zone: -8, north: -270}");
+  EXPECT_DOUBLE_EQ(load_project(dir.write("n.yaml", with_north + "geometry: {honeybee: model.hbjson}\n")).site.north_deg,
+                   -270.0);
+  // Another north in the project: which one is meant is the user's to say, at site.north.
+  std::string other = std::string(ProjectHead);
+  other.replace(other.find("time_zone: -8}"), 14, "time_zone: -8, north: 30}");
+  const auto errors = located_errors([&] { load_project(dir.write("o.yaml", other + "geometry: {honeybee: model.hbjson}\n")); });
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_EQ(errors[0].substr(0, 5), "2:65:") << errors[0];
+  EXPECT_NE(errors[0].find("site.north is 30 degrees but the Honeybee model's north_angle, 90 degrees"), std::string::npos)
+      << errors[0];
+}
+
 }  // namespace
 }  // namespace dayphoton::project

@@ -70,6 +70,9 @@ class InputError : public std::runtime_error {
 
 /// A number for a message: up to 6 significant digits, no trailing zeros ("6", "0.9", "1e-05").
 std::string format_number(double value);
+/// A coordinate in metres for a message: format_number below 1e5 m in magnitude, millimetres
+/// without trailing zeros beyond ("5000002.5", not "5e+06": survey coordinates).
+std::string format_coordinate(double value_m);
 
 /// Levenshtein distance (for "did you mean" hints).
 std::size_t edit_distance(std::string_view a, std::string_view b);

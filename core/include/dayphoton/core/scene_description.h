@@ -189,15 +189,33 @@ struct SensorGrid {
 /// `model` for a registered model, or material_type_name(type).
 std::string material_type_as_written(const MaterialSpec& material);
 
+/// Every position of a SceneDescription (surfaces' vertices, sensors, grid outlines and
+/// planes) is held relative to `world_origin_m`: world = position + world_origin_m. The
+/// engine works in the description's frame (photon positions are floats, photon.h); what a
+/// user reads (result files, results.json, messages, images) is in world coordinates, through
+/// world_of / world_grid. project::build_scene_description chooses the origin
+/// (project/local_origin.h); (0, 0, 0) for a model drawn near the origin.
 struct SceneDescription {
   std::vector<MaterialSpec> materials;
   std::vector<Surface> surfaces;
   std::vector<SensorGrid> grids;
+  /// The world point at the description's (0, 0, 0), metres (whole kilometres).
+  Vec3 world_origin_m{0, 0, 0};
   /// Non-fatal findings of the geometry stage, located (e.g. what a RADIANCE import left
   /// out or approximated), for `check` and the run log.
   std::vector<Diagnostic> warnings;
 
   int find_material(const std::string& name) const;
+  /// A position of the description in world coordinates (itself, bit for bit, -0 included,
+  /// where the origin is (0, 0, 0)).
+  Vec3 world_of(const Vec3& position_m) const {
+    return world_origin_m == Vec3{0, 0, 0} ? position_m : position_m + world_origin_m;
+  }
+  /// A grid of the description (or one made from its sensors) in world coordinates: its
+  /// sensors' positions, its outline and its plane height (normals unchanged).
+  SensorGrid world_grid(const SensorGrid& grid) const;
+  /// Sensors of the description in world coordinates.
+  std::vector<SensorPoint> world_points(const std::vector<SensorPoint>& points) const;
 };
 
 }  // namespace dayphoton

@@ -48,11 +48,14 @@ inline constexpr std::uint8_t IndirectPathClasses =
 
 /// Sources a photon record can name (20 bits).
 inline constexpr std::uint32_t MaxPhotonSources = 1u << 20;
-/// The largest absolute coordinate of a scene's geometry, metres: the positions are stored as
-/// floats in the model's coordinates, rounded by up to 2^-24 of a coordinate (6 mm at 1e5 m,
-/// 0.25 m at a UTM northing of 4.2e6 m). A 6 x 8 m room with walls of reflectance 0.5 read its
-/// daylight factor to within its noise at 1.5e5 m, 1-2 % high at 3e5 m and 2-3 times too high
-/// at 4.2e6 m. Scene::build refuses geometry beyond this limit.
+/// The largest absolute coordinate of a scene's geometry in its description's coordinates,
+/// metres: the positions are stored as floats in those coordinates, rounded by up to 2^-24 of
+/// a coordinate (6 mm at 1e5 m, 0.25 m at a UTM northing of 4.2e6 m). A 6 x 8 m room with
+/// walls of reflectance 0.5 read its daylight factor to within its noise at 1.5e5 m, 1-2 %
+/// high at 3e5 m and 2-3 times too high at 4.2e6 m. A project's description is held around a
+/// local origin (SceneDescription::world_origin_m, project/local_origin.h), so this limits a
+/// model's extent (about 200 km across), not where it lies; Scene::build refuses geometry
+/// beyond it.
 inline constexpr double PhotonCoordinateLimit_m = 1e5;
 /// The sky ratio's fixed point: this value is a ratio of 1 (12 bits, steps of 1/2048).
 inline constexpr std::uint32_t SkyRatioOne = 2048;

@@ -33,6 +33,11 @@
 // 30 km out its sensors saw the sky through the walls. The hit distance t is then refined in
 // double precision against the hit triangle's plane (double-precision vertices, world
 // coordinates), so Hit::position lies on the surface to about 1e-15 relative, not 1e-7.
+// Photon positions are floats in the description's coordinates, so a description must hold
+// its geometry within PhotonCoordinateLimit_m of its (0, 0, 0) (photon.h): a project's is
+// moved there by build_scene_description (SceneDescription::world_origin_m,
+// project/local_origin.h), and Scene::build refuses geometry beyond the limit, a model too
+// large, with a located error.
 //
 // Self-intersection avoidance: a new ray from a hit point starts at
 // offset_ray_origin(hit.position, hit.normal, direction) with tmin = 0. The offset is

@@ -53,6 +53,13 @@ struct HoneybeeModel {
   std::string units;               ///< as written (Meters, Millimeters, Feet, Inches, Centimeters)
   double metres_per_unit = 1;
   double tolerance_m = 0.01;       ///< the model's tolerance, in metres
+  /// An old file's model-level `north_angle` (honeybee-schema Model before the north moved
+  /// to the energy simulation parameter): degrees clockwise, seen from above, from +Y to
+  /// north (honeybee-core's Model.north_vector, +Y rotated by minus the angle), which is
+  /// site.north's convention; 0 when not written. The loader takes it as site.north where the
+  /// project writes none (docs/honeybee-import.md).
+  double north_angle_deg = 0;
+  SourceLocation north_angle_location;  ///< where it is written (file:line:column)
   /// Every modifier a surface uses (the model's own and Honeybee's generic defaults), named by
   /// identifier, mapped by project::radiance_material.
   std::vector<MaterialSpec> materials;

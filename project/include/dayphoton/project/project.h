@@ -714,7 +714,8 @@ std::vector<InteriorWindow> interior_windows(const Geometry& geometry);
 /// polygons, boxes, OBJ meshes, daylight systems (docs/daylight-systems.md; systems may cut
 /// the ceiling, add `opening` port enclosures and then make their window an ordinary
 /// surface), sensor grids and point files, all rotated by the site's
-/// rotation_to_true_north_deg about +Z. Validates the geometry (non-planar polygons,
+/// rotation_to_true_north_deg about +Z, then held relative to a local origin when drawn in
+/// survey coordinates (SceneDescription::world_origin_m, local_origin.h). Validates the geometry (non-planar polygons,
 /// windows outside their wall, overlapping or lying partly in another room's wall, roof
 /// lights outside the ceiling or overlapping each other or a light pipe, unknown materials,
 /// degenerate faces, NaN/Inf) and throws InputError with located messages.

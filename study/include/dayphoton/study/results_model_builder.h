@@ -36,7 +36,7 @@ CaseResult results_case(const std::string& kind, const std::string& name, const 
                         const std::vector<std::string>& changes);
 
 /// The plan geometry of a case's scene: ports (and port candidates of an imported scene) as
-/// openings, outdoor daylight-system surfaces as systems.
+/// openings, outdoor daylight-system surfaces as systems, in world coordinates.
 void set_plan_geometry(CaseResult& c, const SceneDescription& scene);
 
 /// The building of a case for the report's tables: the materials of its scene's surfaces
@@ -59,7 +59,8 @@ void add_operated_grid(CaseResult& c, const std::string& grid, const std::string
 
 /// A grid of `c` with its sensors, orientation, lattice (sensor_lattice.h), outline and the
 /// openings drawn on its picture (all on a plan; on a wall or rectangle grid's elevation only
-/// those parallel to it within ElevationWindowDistance_m).
+/// those parallel to it within ElevationWindowDistance_m). `grid` in world coordinates
+/// (SceneDescription::world_grid), as c's openings are.
 GridResult results_grid(const SensorGrid& grid, const std::string& folder, const CaseResult& c,
                         std::size_t dropped_outside_rooms, std::size_t dropped_inside_solid,
                         std::size_t dropped_on_cut_surface = 0, std::size_t dropped_enclosed = 0);

@@ -58,6 +58,9 @@ struct CaseLayout {
   /// Per outdoor scatterer of the scene, the sides a final gather from the grids' sensors can
   /// read (engine/gathered_scatterer_sides.h); empty when not decided (every side kept).
   std::vector<std::uint8_t> gathered_scatterer_sides;
+  /// The scene description's world origin (SceneDescription::world_origin_m): tracing_for
+  /// moves the region of interest, given in world coordinates, into the scene's frame.
+  Vec3 world_origin_m{0, 0, 0};
 
   static CaseLayout of(const std::vector<SensorGrid>& grids);
   /// The planes with where `scene`'s surfaces cut them (engine/plane_cuts.h), for the
