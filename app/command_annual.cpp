@@ -300,12 +300,16 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
                               sensors.size(), the_sky.steps.size(), 1, o.max_matrix_values);
   std::string settings_source;
   const study::AnnualStudySettings settings = annual_settings(o, grid_dir, project, recorded, weather, settings_source);
-  // The direct part's sub-patch shares, exported beside the coefficients by a run: with them
-  // (and a sky built here, which has the quadrant deltas) the table is the run's.
+  // The coefficients' sub-patch shares, exported beside the coefficients by a run: with them
+  // (and a sky built here, which has the quadrant deltas) the table is the run's. The photon
+  // part's shares are unclamped fits (docs/photon-map.md, "The annual photon part on
+  // sub-patches"), so a share may be slightly negative.
   const std::string shares_path = (fs::path(grid_dir) / study::SubPatchSharesFileName).string();
   study::SubPatchShares shares;
   if (fs::exists(shares_path)) {
-    const RadianceMatrix m = RadianceMatrix::read_file(shares_path, read_options);
+    MatrixReadOptions share_options = read_options;
+    share_options.non_negative = false;
+    const RadianceMatrix m = RadianceMatrix::read_file(shares_path, share_options);
     try {
       shares = study::sub_patch_shares_of(m, sensors.size(), coefficients.columns());
     } catch (const std::invalid_argument& e) {

@@ -2,6 +2,7 @@
 #include "dayphoton/engine/daylight_coefficients.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -238,6 +239,10 @@ struct ClassEstimates {
   double variance = 0;  ///< of caustic + global's luminance (estimate_variance.h)
 };
 
+/// The luminances of caustic + global of the same estimate with each flux times the indicator
+/// of its sky quadrant 0, 1, 2 (the photon part's sub-patch shares, photon.h).
+using QuadrantShares = std::array<double, StoredQuadrants>;
+
 /// The variance of the local-linear estimate at the disc's centre: the estimate is
 /// sum_j (c1 + c2 dx_j + c3 dy_j) Phi_j, c the first row of the inverse moment matrix, so its
 /// variance is sum_j (c . (1, dx_j, dy_j))^2 y_j^2 = c^T Q c with Q the sums of
@@ -365,9 +370,11 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
                                 const PhotonFilter& filter, const DensityEstimateOptions& density,
                                 const CoefficientOptions& options, bool quadratic_at_walls, double pilot_limit_m,
                                 std::size_t rng_index, LookupHint& hint, std::vector<NeighbourPhoton>& found,
-                                std::vector<NeighbourPhoton>& pilot_found, ClassEstimates* weighted = nullptr) {
+                                std::vector<NeighbourPhoton>& pilot_found, ClassEstimates* weighted = nullptr,
+                                QuadrantShares* quadrants = nullptr) {
   ClassEstimates out;
   if (weighted) *weighted = ClassEstimates{};
+  if (quadrants) quadrants->fill(0.0);
   if (plane && options.local_linear && !options.bias_compensation && density.kernel == KernelType::Uniform) {
     const std::size_t k = neighbours_needed(density.bandwidth, density.radius);
     map.nearest(at, k, density.max_radius_m, hint.radius_m(at, density.max_radius_m), filter, found);
@@ -397,6 +404,11 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
           visible ? visible->moments4(disc.radius_m) : plane->clipped_disc_moments4(at.x, at.y, disc.radius_m));
       if (kernel.valid) {
         if (weighted) *weighted = local_quadratic_estimate(map, at, found, disc, kernel, PhotonFlux::TimesSkyRatio);
+        if (quadrants)
+          for (std::size_t q = 0; q < StoredQuadrants; ++q) {
+            const ClassEstimates e = local_quadratic_estimate(map, at, found, disc, kernel, in_sky_quadrant(q));
+            (*quadrants)[q] = luminance_of(e.caustic + e.global);
+          }
         return local_quadratic_estimate(map, at, found, disc, kernel, density.flux);
       }
     }
@@ -406,6 +418,8 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     const int modes = weighted ? 2 : 1;
     Vec3 s0[2][2], s1x[2][2], s1y[2][2];
     double q[2][6];
+    // The sub-patch shares' sums: per sky quadrant the luminance of density.flux (both classes).
+    double q0[4] = {0, 0, 0, 0}, q1x[4] = {0, 0, 0, 0}, q1y[4] = {0, 0, 0, 0};
     for (int f = 0; f < 2; ++f) {
       for (int c = 0; c < 2; ++c) s0[f][c] = s1x[f][c] = s1y[f][c] = Vec3{0, 0, 0};
       for (double& x : q[f]) x = 0;
@@ -414,6 +428,12 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
       const Photon& ph = map.photons()[found[j].index];
       const int c = ph.path_class == PathClass::Caustic ? 0 : 1;
       const double dx = double(ph.position[0]) - at.x, dy = double(ph.position[1]) - at.y;
+      if (quadrants) {
+        const double y = luminance_of(flux_of(ph, density.flux));
+        q0[ph.sky_quadrant] += y;
+        q1x[ph.sky_quadrant] += y * dx;
+        q1y[ph.sky_quadrant] += y * dy;
+      }
       for (int f = 0; f < modes; ++f) {
         const Vec3 flux = flux_of(ph, fluxes[f]);
         s0[f][c] += flux;
@@ -433,6 +453,9 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
       results[f]->global = local_linear_density(m, s0[f][1], s1x[f][1], s1y[f][1]);
       results[f]->variance = local_linear_variance(m, q[f]);
     }
+    if (quadrants)
+      for (std::size_t x = 0; x < StoredQuadrants; ++x)
+        (*quadrants)[x] = local_linear_density(m, Vec3{q0[x], 0, 0}, Vec3{q1x[x], 0, 0}, Vec3{q1y[x], 0, 0}).x;
     if (!(corrected && curvature == CurvatureCorrection::Pilot)) return out;
     // The pilot's bias, subtracted per class; the variance of the difference: the plane's
     // weight on a whole disc is 1 / area for each of its photons, so
@@ -441,6 +464,12 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     pilot.inv_pilot_m2 = 1.0 / (pilot_m * pilot_m);
     pilot.bias_weight = 6.0 / Pi * disc.radius_m * disc.radius_m * pilot.inv_pilot_m2 * pilot.inv_pilot_m2;
     map.within(at, pilot_m, filter, pilot_found);
+    if (quadrants)
+      for (const NeighbourPhoton& n : pilot_found) {
+        const Photon& ph = map.photons()[n.index];
+        if (ph.sky_quadrant < StoredQuadrants)
+          (*quadrants)[ph.sky_quadrant] -= pilot.weight(n.distance_squared_m2) * luminance_of(flux_of(ph, density.flux));
+      }
     for (int f = 0; f < modes; ++f) {
       Vec3 bias[2] = {Vec3{0, 0, 0}, Vec3{0, 0, 0}};
       double pilot_variance = 0;
@@ -478,6 +507,15 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     *weighted = estimate_classes(map, plane, at, filter, times_ratio, options, quadratic_at_walls, pilot_limit_m,
                                  rng_index, unused, found, pilot_found);
   }
+  if (quadrants)
+    for (std::size_t q = 0; q < StoredQuadrants; ++q) {
+      DensityEstimateOptions in_quadrant = density;
+      in_quadrant.flux = in_sky_quadrant(q);
+      LookupHint unused = hint;
+      const ClassEstimates e = estimate_classes(map, plane, at, filter, in_quadrant, options, quadratic_at_walls,
+                                                pilot_limit_m, rng_index, unused, found, pilot_found);
+      (*quadrants)[q] = luminance_of(e.caustic + e.global);
+    }
   const DensityEstimate all =
       options.bias_compensation
           ? estimate_irradiance_bias_compensated(map, at, filter, bias_options(options, density, rng_index))
@@ -523,6 +561,16 @@ void estimate_photon_coefficients(const GridPhotons& photons,
     throw std::invalid_argument("photon coefficients: `out` must hold the " + std::to_string(rows.size()) +
                                 " sensors' rows asked for");
   if (out.photon_variance.size() != out.sensors * n_src) out.photon_variance.assign(out.sensors * n_src, 0.0);
+  // The photon part's sub-patch shares (CoefficientOptions::photon_quadrants).
+  const bool shares = options.photon_quadrants;
+  if (shares)
+    out.photon_quadrants.assign(out.sensors * n_src * StoredQuadrants, 0.0f);
+  else
+    out.photon_quadrants.clear();
+  auto store_shares = [&](std::size_t i, const QuadrantShares& a, const QuadrantShares* b) {
+    for (std::size_t q = 0; q < StoredQuadrants; ++q)
+      out.photon_quadrants[i * StoredQuadrants + q] = float(a[q] + (b ? (*b)[q] : 0.0));
+  };
   if (weighted) {
     weighted->sensors = out.sensors;
     weighted->sources = n_src;
@@ -634,11 +682,14 @@ void estimate_photon_coefficients(const GridPhotons& photons,
           const PlaneVisibility* visible = visibility_at(s);
           const double pilot_m = pilot_limit_m[s - range.begin()];
           ClassEstimates wg, wc;  // with the sky ratios, if asked for
+          QuadrantShares qg, qc;  // the sub-patch shares, if asked for
           if (options.caustic_bandwidth == 0) {
             PhotonFilter both = filter_for(sensor, PathClass::Global, visible);
             both.path_classes = IndirectPathClasses;
             const ClassEstimates e = estimate_classes(map, plane, at, both, scaled, options, quadratic, pilot_m,
-                                                      stream, global_hint, found, pilot_found, weighted ? &wg : nullptr);
+                                                      stream, global_hint, found, pilot_found, weighted ? &wg : nullptr,
+                                                      shares ? &qg : nullptr);
+            if (shares) store_shares(i, qg, nullptr);
             out.caustic[i] = e.caustic;
             out.global[i] = e.global;
             out.photon_variance[i] = e.variance;
@@ -651,12 +702,14 @@ void estimate_photon_coefficients(const GridPhotons& photons,
           }
           const ClassEstimates g =
               estimate_classes(map, plane, at, filter_for(sensor, PathClass::Global, visible), global_scaled, options,
-                               quadratic, pilot_m, stream, global_hint, found, pilot_found, weighted ? &wg : nullptr);
+                               quadratic, pilot_m, stream, global_hint, found, pilot_found, weighted ? &wg : nullptr,
+                               shares ? &qg : nullptr);
           // A caustic map's discs keep the plane (the header comment's "Caustic map").
           const ClassEstimates c =
               estimate_classes(map, plane, at, filter_for(sensor, PathClass::Caustic, visible), caustic_scaled,
                                options, false, -1.0, stream + grid_pairs, caustic_hint, found, pilot_found,
-                               weighted ? &wc : nullptr);
+                               weighted ? &wc : nullptr, shares ? &qc : nullptr);
+          if (shares) store_shares(i, qg, &qc);
           out.global[i] = g.global;
           out.caustic[i] = c.caustic;
           // Each lookup's photons are of its own class (the filter), so the two are independent.
@@ -674,11 +727,22 @@ void estimate_photon_coefficients(const GridPhotons& photons,
       const SensorPoint& sensor = sensors[s];
       const std::size_t row = s - rows.begin;
       const Vec3 at = query_point(sensor);
-      for (int f = 0; f < (weighted ? 2 : 1); ++f) {
+      // Passes: the estimate; the ratio-weighted one into `weighted`; the sub-patch shares'.
+      const int passes = 2 + (shares ? int(StoredQuadrants) : 0);
+      for (int f = 0; f < passes; ++f) {
+        if (f == 1 && !weighted) continue;
         for (PathClass c : {PathClass::Caustic, PathClass::Global}) {
           DensityEstimateOptions density = options.density;
           if (f == 1) density.flux = PhotonFlux::TimesSkyRatio;  // the second pass, into `weighted`
-          DaylightCoefficients& into = f == 0 ? out : *weighted;
+          if (f >= 2) density.flux = in_sky_quadrant(std::size_t(f - 2));
+          DaylightCoefficients scratch;
+          if (f >= 2) {
+            scratch.caustic.assign(n_src, Vec3{0, 0, 0});
+            scratch.global.assign(n_src, Vec3{0, 0, 0});
+            scratch.photon_variance.assign(n_src, 0.0);
+          }
+          DaylightCoefficients& into = f == 0 ? out : f == 1 ? *weighted : scratch;
+          const std::size_t into_row = f >= 2 ? 0 : row;
           if (c == PathClass::Caustic && options.caustic_bandwidth > 0) density.bandwidth = options.caustic_bandwidth;
           std::vector<Vec3> per_source(n_src, Vec3{0, 0, 0});
           std::vector<double> per_source_variance(n_src, 0.0);
@@ -694,9 +758,13 @@ void estimate_photon_coefficients(const GridPhotons& photons,
               options.boundary_correction ? boundary_factor(plane, visibility_at(s), at, e.radius_m) : 1.0;
           std::vector<Vec3>& part = c == PathClass::Caustic ? into.caustic : into.global;
           for (std::size_t p = 0; p < n_src; ++p) {
-            part[row * n_src + p] = per_source[p] * b;
-            into.photon_variance[row * n_src + p] += per_source_variance[p] * b * b;
+            part[into_row * n_src + p] = per_source[p] * b;
+            into.photon_variance[into_row * n_src + p] += per_source_variance[p] * b * b;
           }
+          if (f >= 2)
+            for (std::size_t p = 0; p < n_src; ++p)
+              out.photon_quadrants[(row * n_src + p) * StoredQuadrants + std::size_t(f - 2)] +=
+                  float(luminance_of(per_source[p] * b));
         }
       }
     }
@@ -729,6 +797,9 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
   std::optional<GatherOnSky> gather_sky;
   if (!sky_bins.empty() && options.photon_sky_ratios) gather_sky.emplace(GatherOnSky{*options.photon_sky_ratios, sky_bins});
   const GatherOnSky* on_sky = gather_sky ? &*gather_sky : nullptr;
+  // The gather's sub-patch shares with the estimate's (CoefficientOptions::photon_quadrants).
+  GatherOptions gather_options = options.gather;
+  gather_options.sky_quadrants = options.photon_quadrants;
   if (!photons.gather()) {
     // With the photon part on the sky: the ratio-weighted estimate from the same lookups.
     DaylightCoefficients weighted;
@@ -741,7 +812,7 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
     if (!near.empty()) {
       // The sensors next to a cut (header comment): their rows replaced by the final gather's.
       // From the sensor's position about its normal, the plane's (SensorGrid::planar).
-      g = gather_photon_coefficients_at(scene, materials, sources, gather->all(), sensors, options.gather,
+      g = gather_photon_coefficients_at(scene, materials, sources, gather->all(), sensors, gather_options,
                                         &gather->groups(), near, on_sky);
       const std::size_t n = out.sources;
       for (std::size_t r = 0; r < near.size(); ++r)
@@ -750,6 +821,10 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
           out.caustic[i] = g.caustic[r * n + p];
           out.global[i] = g.global[r * n + p];
           out.photon_variance[i] = g.variance[r * n + p];
+          if (!out.photon_quadrants.empty())
+            for (std::size_t q = 0; q < StoredQuadrants; ++q)
+              out.photon_quadrants[i * StoredQuadrants + q] =
+                  g.quadrants.empty() ? 0.0f : g.quadrants[(r * n + p) * StoredQuadrants + q];
         }
     }
     // The gathered rows take the gather's estimate on the sky (photon_part_on_sky.h).
@@ -757,8 +832,9 @@ void photon_coefficients(const Scene& scene, const std::vector<Material>& materi
       out.photon_on_sky = photon_part_on_sky_of(photons, sensors, out, &weighted, sky_bins, rows, &g);
     return;
   }
-  GatheredCoefficients g = gather_photon_coefficients(scene, materials, sources, photons.all(), sensors, options.gather,
+  GatheredCoefficients g = gather_photon_coefficients(scene, materials, sources, photons.all(), sensors, gather_options,
                                                       &photons.groups(), rows, on_sky);
+  out.photon_quadrants = std::move(g.quadrants);
   out.caustic = std::move(g.caustic);
   out.global = std::move(g.global);
   out.photon_variance = std::move(g.variance);

@@ -16,6 +16,7 @@
 
 #include "bsdf_frame.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/density_estimate.h"
 #include "dayphoton/engine/estimate_variance.h"
 #include "dayphoton/engine/random.h"
@@ -193,6 +194,10 @@ struct SensorSums {
   const SkyTerms* sky = nullptr;
   std::vector<Vec3> on_sky;
   GatherVariance* on_sky_variance = nullptr;
+  /// With GatherOptions::sky_quadrants: per source and sky quadrant 0-2, the luminance of the
+  /// terms whose light came through that quadrant of the source's bin (photon.h).
+  bool shares = false;
+  std::vector<double> quadrants;
 };
 
 /// Add weight (.) sum_j K Phi_j of the disc of `bandwidth` photons at `at` on the side
@@ -220,6 +225,8 @@ void add_contributions(const PhotonMap& map, const Vec3& at, const Vec3& side, s
     const Vec3 term = mul(weight, ph.flux_rgb()) * k;
     sums.global[ph.source] += term;
     if (sums.variance) sums.variance->add_photon(found[j].index, ph.source, luminance_of(term));
+    if (sums.shares && ph.sky_quadrant < StoredQuadrants)
+      sums.quadrants[std::size_t(ph.source) * StoredQuadrants + ph.sky_quadrant] += luminance_of(term);
     if (sums.sky) {
       const Vec3 weighted = term * ph.sky_ratio();
       sums.on_sky[ph.source] += weighted;
@@ -245,6 +252,13 @@ void gather_path(const Scene& scene, const std::vector<Material>& materials, con
         if (p >= 0) {
           sums.caustic[static_cast<std::size_t>(p)] += weight * Pi;
           if (sums.variance) sums.variance->add_path(static_cast<std::uint32_t>(p), luminance_of(weight * Pi));
+          // The quadrant of its bin the path leaves through (the ground's and a disc's: none).
+          const DistantSource& left_by = sources[static_cast<std::size_t>(p)];
+          if (sums.shares && left_by.kind == SourceKind::SkyBin && left_by.bin > 0) {
+            const int q = sources.basis().quadrant(left_by.bin, direction);
+            if (q < int(StoredQuadrants))
+              sums.quadrants[static_cast<std::size_t>(p) * StoredQuadrants + std::size_t(q)] += luminance_of(weight * Pi);
+          }
           if (sums.sky) {
             // The sky's own radiance in the direction the path leaves by (its ratio to L_p).
             const std::size_t q = static_cast<std::size_t>(p);
@@ -360,6 +374,8 @@ GatheredCoefficients gather_rows(const Scene& scene, const std::vector<Material>
   GatheredCoefficients out;
   out.caustic.assign(which.size() * n_src, Vec3{});
   out.global.assign(which.size() * n_src, Vec3{});
+  const bool shares = options.sky_quadrants && sources.has_basis();
+  if (shares) out.quadrants.assign(which.size() * n_src * StoredQuadrants, 0.0f);
   GatherOptions effective = options;
   effective.rays_per_sensor = k * k;
   const Vec3 ray_weight = Vec3{1, 1, 1} * (1.0 / (double(k) * k));
@@ -406,6 +422,7 @@ GatheredCoefficients gather_rows(const Scene& scene, const std::vector<Material>
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size()), [&](const tbb::blocked_range<std::size_t>& range) {
     SensorSums sums;
     if (on_sky) sums.sky = &sky;
+    sums.shares = shares;
     std::vector<double> sky_row, sky_fixed;
     if (groups) {
       Scratch& v = scratch.local();
@@ -428,6 +445,7 @@ GatheredCoefficients gather_rows(const Scene& scene, const std::vector<Material>
       sums.caustic.assign(n_src, Vec3{});
       sums.global.assign(n_src, Vec3{});
       if (on_sky) sums.on_sky.assign(n_src, Vec3{});
+      if (shares) sums.quadrants.assign(n_src * StoredQuadrants, 0.0);
       for (int i = 0; i < k; ++i)
         for (int j = 0; j < k; ++j) {
           const std::uint64_t ray = static_cast<std::uint64_t>(i) * static_cast<std::uint64_t>(k) + static_cast<std::uint64_t>(j);
@@ -465,6 +483,9 @@ GatheredCoefficients gather_rows(const Scene& scene, const std::vector<Material>
           out.on_sky_variance[at_row] = v;
         }
       }
+      if (shares)
+        for (std::size_t x = 0; x < n_src * StoredQuadrants; ++x)
+          out.quadrants[at_row * n_src * StoredQuadrants + x] = float(sums.quadrants[x]);
       const auto at = static_cast<std::ptrdiff_t>(at_row * n_src);
       std::copy(sums.caustic.begin(), sums.caustic.end(), out.caustic.begin() + at);
       std::copy(sums.global.begin(), sums.global.end(), out.global.begin() + at);

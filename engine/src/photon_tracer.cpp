@@ -26,7 +26,8 @@ bool inside(const Bounds3& b, const Vec3& p) {
 }
 
 Photon make_photon(const Vec3& position, const Vec3& flux, const Vec3& normal,
-                   std::uint32_t source, std::uint32_t sky_ratio_code, PathClass path_class) {
+                   std::uint32_t source, std::uint32_t sky_ratio_code, std::uint8_t sky_quadrant,
+                   PathClass path_class) {
   Photon ph;
   ph.position = {float(position.x), float(position.y), float(position.z)};
   ph.flux = {float(flux.x), float(flux.y), float(flux.z)};
@@ -34,6 +35,7 @@ Photon make_photon(const Vec3& position, const Vec3& flux, const Vec3& normal,
   ph.sky_ratio_code = sky_ratio_code;
   ph.set_normal(normal);
   ph.path_class = path_class;
+  ph.sky_quadrant = sky_quadrant & 3u;
   return ph;
 }
 
@@ -198,14 +200,15 @@ bool stores_direct_on_scatterer(const Scene& scene, const TracingOptions& option
 // the photon is absorbed.
 std::optional<PathStart> land_on_scatterer(const Scene& scene, const std::vector<Material>& materials,
                                            const PortEntry& entry, std::uint32_t source,
-                                           std::uint32_t sky_ratio_code, const TracingOptions& options,
+                                           std::uint32_t sky_ratio_code, std::uint8_t sky_quadrant,
+                                           const TracingOptions& options,
                                            Rng& scattering, Rng& roulette_rng, PhotonSink& sink) {
   const Port& scatterer = scene.outdoor_scatterers()[static_cast<std::size_t>(entry.scatterer)];
   const Material& material =
       materials[static_cast<std::size_t>(scene.description().surfaces[scatterer.surface].material)];
   const Vec3 lit_side = dot(entry.direction, scatterer.normal) < 0 ? scatterer.normal : scatterer.normal * -1.0;
   if (material.stores_photons() && stores_direct_on_scatterer(scene, options, entry.scatterer, lit_side))
-    sink.record(-1, make_photon(entry.position, {1, 1, 1}, lit_side, source, sky_ratio_code, PathClass::Direct));
+    sink.record(-1, make_photon(entry.position, {1, 1, 1}, lit_side, source, sky_ratio_code, sky_quadrant, PathClass::Direct));
   std::optional<PathStart> start = first_event(scene, material, entry.position, scatterer.normal, entry.direction,
                                                source, scattering, roulette_rng);
   if (start) start->outdoors = true;
@@ -245,7 +248,7 @@ bool trace_path_to(const Scene& scene, const std::vector<Material>& materials,
         if (!planes[g].contains(p.x, p.y)) continue;
         sink.record(static_cast<int>(g),
                     make_photon({p.x, p.y, planes[g].height_m()}, flux, planes[g].normal(),
-                                start.source, start.sky_ratio_code, path_class));
+                                start.source, start.sky_ratio_code, start.sky_quadrant, path_class));
       }
     }
     if (!hit) return was_indoors;
@@ -265,7 +268,7 @@ bool trace_path_to(const Scene& scene, const std::vector<Material>& materials,
       // gather can read it.
       if (store || !outdoors || hit->scatterer < 0 ||
           stores_direct_on_scatterer(scene, options, hit->scatterer, side))
-        sink.record(-1, make_photon(hit->position, flux, side, start.source, start.sky_ratio_code, path_class));
+        sink.record(-1, make_photon(hit->position, flux, side, start.source, start.sky_ratio_code, start.sky_quadrant, path_class));
     }
     const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
     const std::optional<ScatterSample> s = material.sample(ray.direction, hit->normal, u0, u1, u2);
@@ -337,6 +340,9 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
   if (sky_bin && sky_bin_index >= options.sky_ratios->bins())
     throw std::invalid_argument("photon tracing: sky ratios of " + std::to_string(options.sky_ratios->bins()) +
                                 " bins for sky bin " + std::to_string(sky_bin_index));
+  // The bin whose quadrants the photons record: a sky bin of a basis (not the ground's).
+  const int quadrant_bin =
+      emitter.sources().has_basis() && emitted.kind == SourceKind::SkyBin ? std::max(0, emitted.bin) : 0;
   tbb::parallel_for(std::uint64_t(0), blocks, [&](std::uint64_t b) {
     BlockResult& out = block_results[b];
     out.planes.resize(planes.size());
@@ -354,10 +360,16 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
       const std::uint32_t ratio_code =
           sky_bin ? Photon::sky_ratio_code_of(options.sky_ratios->ratio(sky_bin_index, entry->direction * -1.0))
                   : SkyRatioOne;
+      // The quadrant of its sky bin the photon was emitted into (photon.h; 0 for the ground and
+      // sun discs).
+      const std::uint8_t quadrant =
+          quadrant_bin > 0 ? static_cast<std::uint8_t>(emitter.sources().basis().quadrant(quadrant_bin, entry->direction * -1.0))
+                           : std::uint8_t(0);
       std::optional<PathStart> start =
           entry->port >= 0
               ? pass_port(scene, panes[static_cast<std::size_t>(entry->port)], *entry, source, scattering, roulette_rng)
-              : land_on_scatterer(scene, materials, *entry, source, ratio_code, options, scattering, roulette_rng,
+              : land_on_scatterer(scene, materials, *entry, source, ratio_code, quadrant, options, scattering,
+                                  roulette_rng,
                                   sink);
       if (entry->port >= 0) {
         // A diffusing port's sky-side irradiance: the Direct record of the photon that lands on
@@ -365,11 +377,12 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
         // diffuse transmittance (the direct component takes only its straight transmission).
         const PortPane& pane = panes[static_cast<std::size_t>(entry->port)];
         if (pane.diffusing && (options.store_direct || options.store_direct_on_surfaces))
-          sink.record(-1, make_photon(entry->position, {1, 1, 1}, pane.port->normal * -1.0, source, ratio_code,
+          sink.record(-1, make_photon(entry->position, {1, 1, 1}, pane.port->normal * -1.0, source, ratio_code, quadrant,
                                       PathClass::Direct));
       }
       if (!start) continue;
       start->sky_ratio_code = ratio_code;
+      start->sky_quadrant = quadrant;
       const bool indoors = trace_path_to(scene, materials, planes, *start, options, scattering, roulette_rng,
                                          sink, &out.rays);
       if (entry->scatterer >= 0 && indoors) ++out.scattered_indoors;

@@ -67,7 +67,7 @@ class Writer {
     for (const float x : p.flux) f32(x);
     u32(p.source_word());
     for (const std::int8_t x : p.normal) u8(static_cast<std::uint8_t>(x));
-    u8(static_cast<std::uint8_t>(p.path_class));
+    u8(p.class_byte());
   }
 
   std::string finish() {
@@ -139,10 +139,13 @@ class Reader {
     for (float& x : p.flux) x = f32("photon flux");
     p.set_source_word(u32("photon source"));
     for (std::int8_t& x : p.normal) x = static_cast<std::int8_t>(u8("photon normal"));
-    const std::uint8_t c = u8("photon path class");
-    if (c > static_cast<std::uint8_t>(engine::PathClass::Global))
-      fail("photon path class " + std::to_string(c) + " is not a path class");
+    // The path class and the sky quadrant (engine::Photon::class_byte).
+    const std::uint8_t b = u8("photon path class");
+    const std::uint8_t c = b & 3u;
+    if (c > static_cast<std::uint8_t>(engine::PathClass::Global) || (b >> 4) != 0)
+      fail("photon path class " + std::to_string(b) + " is not a path class and a sky quadrant");
     p.path_class = static_cast<engine::PathClass>(c);
+    p.sky_quadrant = (b >> 2) & 3u;
     return p;
   }
   std::vector<Photon> photons(const char* field) {
@@ -268,20 +271,23 @@ std::string encode_coefficients(const engine::DaylightCoefficients& c) {
                               photon_sky.basis_rows > c.sensors))
     throw std::invalid_argument("daylight coefficients: the photon part on the sky must hold " +
                                 std::to_string(c.sensors) + " values");
-  const bool quadrants = !c.direct_quadrants.empty();
-  if (quadrants && c.direct_quadrants.size() != n * engine::StoredQuadrants)
-    throw std::invalid_argument("daylight coefficients: the sub-patch shares must hold " + std::to_string(c.sensors) +
-                                " x " + std::to_string(c.sources) + " x " + std::to_string(engine::StoredQuadrants) +
-                                " values");
+  // The sub-patch shares: a bit each for the direct part's (1) and the photon part's (2).
+  const bool quadrants = !c.direct_quadrants.empty(), photon_quadrants = !c.photon_quadrants.empty();
+  for (const auto* shares : {&c.direct_quadrants, &c.photon_quadrants})
+    if (!shares->empty() && shares->size() != n * engine::StoredQuadrants)
+      throw std::invalid_argument("daylight coefficients: the sub-patch shares must hold " +
+                                  std::to_string(c.sensors) + " x " + std::to_string(c.sources) + " x " +
+                                  std::to_string(engine::StoredQuadrants) + " values");
+  const std::size_t share_sets = std::size_t(quadrants) + std::size_t(photon_quadrants);
   Writer w(PreambleBytes + CoefficientHeaderBytes + n * CoefficientPairBytes + m * SkyDirectBytes +
-           photon_rows * SkyDirectBytes + (quadrants ? n * QuadrantPairBytes : 0));
+           photon_rows * SkyDirectBytes + share_sets * n * QuadrantPairBytes);
   w.tag("DCOF", CoefficientLayoutVersion);
   w.u64(c.sensors);
   w.u64(c.sources);
   w.u64(skies.skies);
   w.u64(photon_rows > 0 ? 1 : 0);
   w.u64(photon_sky.basis_rows);
-  w.u64(quadrants ? 1 : 0);
+  w.u64((quadrants ? 1 : 0) | (photon_quadrants ? 2 : 0));
   for (const auto* part : {&c.direct, &c.caustic, &c.global})
     for (const Vec3& v : *part) w.vec3(v);
   for (const auto* part : {&c.direct_variance, &c.photon_variance})
@@ -291,6 +297,7 @@ std::string encode_coefficients(const engine::DaylightCoefficients& c) {
   for (const Vec3& v : photon_sky.irradiance) w.vec3(v);
   for (const double v : photon_sky.variance) w.f64(v);
   for (const float v : c.direct_quadrants) w.f32(v);
+  for (const float v : c.photon_quadrants) w.f32(v);
   return w.finish();
 }
 
@@ -304,14 +311,15 @@ engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
   const std::uint64_t photon_sky = r.u64("photon part on the sky");
   const std::uint64_t basis_rows = r.u64("photon part's basis rows");
   const std::uint64_t quadrants = r.u64("sub-patch shares");
-  if (quadrants > 1) r.fail("sub-patch shares flag " + std::to_string(quadrants) + " is not 0 or 1");
+  if (quadrants > 3) r.fail("sub-patch shares flags " + std::to_string(quadrants) + " are not within 0-3");
   if (photon_sky > 1) r.fail("photon part on the sky: " + std::to_string(photon_sky) + " skies, at most 1");
   if (basis_rows > sensors) r.fail("photon part on the sky: " + std::to_string(basis_rows) + " basis rows");
   // The five arrays need CoefficientPairBytes per (sensor, source) pair and the two of the
   // skies (and of the photon part on the sky) SkyDirectBytes per (sensor, sky): check without
   // overflow.
   const std::size_t remaining = bytes.size() - (PreambleBytes + CoefficientHeaderBytes);
-  const std::size_t pair_bytes = CoefficientPairBytes + (quadrants == 1 ? QuadrantPairBytes : 0);
+  const std::size_t pair_bytes =
+      CoefficientPairBytes + ((quadrants & 1) + ((quadrants >> 1) & 1)) * QuadrantPairBytes;
   const std::uint64_t max_pairs = remaining / pair_bytes;
   const std::uint64_t sky_rows = skies + photon_sky;
   const bool fits = (sensors == 0 || (sources <= max_pairs / sensors && skies <= remaining / SkyDirectBytes / sensors &&
@@ -346,9 +354,13 @@ engine::DaylightCoefficients decode_coefficients(const std::string& bytes) {
     p.variance.resize(c.sensors);
     for (double& v : p.variance) v = r.f64("variance of the photon part on the sky");
   }
-  if (quadrants == 1) {
+  if (quadrants & 1) {
     c.direct_quadrants.resize(n * engine::StoredQuadrants);
     for (float& v : c.direct_quadrants) v = r.f32("sub-patch share");
+  }
+  if (quadrants & 2) {
+    c.photon_quadrants.resize(n * engine::StoredQuadrants);
+    for (float& v : c.photon_quadrants) v = r.f32("photon sub-patch share");
   }
   r.done();
   return c;

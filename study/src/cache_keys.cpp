@@ -108,6 +108,8 @@ void add_estimate_options(ContentHash& h, const engine::CoefficientOptions& o) {
   for (const Vec3& l : o.photon_sky_bin_radiance_rgb) h.vec3(l);
   // The gathered rows' photon part on the sky (engine/final_gather.h): hashed only where set.
   if (o.photon_sky_ratios) h.text("photon sky ratios").text(o.photon_sky_ratios->key());
+  // The photon part's sub-patch shares: hashed only where asked for.
+  if (o.photon_quadrants) h.text("photon sub-patch shares");
 }
 
 /// A plane's sensors gathered next to a cut (engine/plane_cuts.h): nothing without any.

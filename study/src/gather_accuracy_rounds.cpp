@@ -264,6 +264,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
     const SensorGrid& grid = grids[g];
     engine::CoefficientOptions options = c.estimating;
     options.gather.rays_per_sensor = rays;
+    options.gather.sky_quadrants = options.photon_quadrants;  // as photon_coefficients' gather
     const std::vector<std::string> blocks = work.estimate(
         rows ? rows->size() : grid.points.size(),
         [&](std::size_t begin, std::size_t end) {
@@ -290,6 +291,7 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           dc.caustic = std::move(gathered.caustic);
           dc.global = std::move(gathered.global);
           dc.photon_variance = std::move(gathered.variance);
+          dc.photon_quadrants = std::move(gathered.quadrants);
           dc.photon_on_sky.irradiance = std::move(gathered.on_sky);
           dc.photon_on_sky.variance = std::move(gathered.on_sky_variance);
           return frame_block(encode_coefficients(dc), gathered.fixed_photon_variance);
@@ -537,6 +539,11 @@ GatherPhotonRequest run_gather_accuracy_rounds(const AccuracyCase& c, const Accu
           whole.caustic[rows[r] * n + p] = now.dc.caustic[r * n + p];
           whole.global[rows[r] * n + p] = now.dc.global[r * n + p];
           whole.photon_variance[rows[r] * n + p] = now.dc.photon_variance[r * n + p];
+          if (!whole.photon_quadrants.empty())
+            for (std::size_t q = 0; q < engine::StoredQuadrants; ++q)
+              whole.photon_quadrants[(rows[r] * n + p) * engine::StoredQuadrants + q] =
+                  now.dc.photon_quadrants.empty() ? 0.0f
+                                                  : now.dc.photon_quadrants[(r * n + p) * engine::StoredQuadrants + q];
         }
       // Their photon part on the DF sky: the gather's own (engine/final_gather.h, "The
       // continuous sky"), or without the sky ratios its basis sum (engine/photon_part_on_sky.h),

@@ -40,6 +40,9 @@ std::string join_coefficient_blocks(const std::vector<std::string>& blocks) {
     if (part.direct_quadrants.empty() != whole.direct_quadrants.empty())
       throw std::invalid_argument("sensor blocks: a coefficient block with and one without the sub-patch shares");
     append(whole.direct_quadrants, part.direct_quadrants);
+    if (part.photon_quadrants.empty() != whole.photon_quadrants.empty())
+      throw std::invalid_argument("sensor blocks: a coefficient block with and one without the photon sub-patch shares");
+    append(whole.photon_quadrants, part.photon_quadrants);
     if (part.photon_on_sky.empty() != whole.photon_on_sky.empty())
       throw std::invalid_argument("sensor blocks: a coefficient block with and one without the photon part on the sky");
     append(whole.photon_on_sky.irradiance, part.photon_on_sky.irradiance);

@@ -206,6 +206,10 @@ SimulationPlan SimulationPlan::of(const project::Project& project, const SunSite
     p.sky_estimating.photon_sky_bin_radiance_rgb.push_back(
         Vec3{df_sky.at(b, 0, 0), df_sky.at(b, 0, df_sky.components() > 1 ? 1 : 0),
              df_sky.at(b, 0, df_sky.components() > 2 ? 2 : 0)});
+  // The photon part's sub-patch shares for the annual product's correction (the sky photons
+  // carry their quadrant, engine/photon.h; study/sub_patch_shares.h), as the direct part's.
+  // The sun bins have no quadrants (sun_estimating was copied before).
+  p.sky_estimating.photon_quadrants = true;
   return p;
 }
 

@@ -49,11 +49,22 @@ SubPatchShares sub_patch_shares(const engine::DaylightCoefficients& c) {
     throw std::invalid_argument("sub-patch shares: " + std::to_string(c.direct_quadrants.size()) + " shares and " +
                                 std::to_string(c.direct.size()) + " direct coefficients for " +
                                 std::to_string(c.sensors) + " sensors x " + std::to_string(c.sources) + " sources");
+  // With the photon part's shares, the whole coefficient's: both parts' luminance and shares.
+  const bool photon = !c.photon_quadrants.empty();
+  if (photon && (c.photon_quadrants.size() != n * engine::StoredQuadrants || c.caustic.size() != n ||
+                 c.global.size() != n))
+    throw std::invalid_argument("sub-patch shares: " + std::to_string(c.photon_quadrants.size()) +
+                                " photon shares and " + std::to_string(c.caustic.size()) +
+                                " photon coefficients for " + std::to_string(c.sensors) + " sensors x " +
+                                std::to_string(c.sources) + " sources");
   out.values.resize(n * SubPatchShares::ValuesPerBin);
   for (std::size_t i = 0; i < n; ++i) {
     float* v = out.values.data() + i * SubPatchShares::ValuesPerBin;
-    v[0] = static_cast<float>(engine::luminance_of(c.direct[i]));
-    for (std::size_t q = 0; q < engine::StoredQuadrants; ++q) v[1 + q] = c.direct_quadrants[i * engine::StoredQuadrants + q];
+    v[0] = static_cast<float>(engine::luminance_of(photon ? c.direct[i] + c.caustic[i] + c.global[i] : c.direct[i]));
+    for (std::size_t q = 0; q < engine::StoredQuadrants; ++q) {
+      const std::size_t k = i * engine::StoredQuadrants + q;
+      v[1 + q] = c.direct_quadrants[k] + (photon ? c.photon_quadrants[k] : 0.0f);
+    }
   }
   return out;
 }

@@ -19,11 +19,13 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <vector>
 
 #include "dayphoton/core/units.h"
+#include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/engine_error.h"
 #include "dayphoton/engine/estimate_variance.h"
 #include "dayphoton/engine/photon_tracer.h"
@@ -321,7 +323,7 @@ DaylightCoefficients gathered_with_sky(const Scene& scene, const std::vector<Mat
                                        const SourceSet& sources, const std::vector<Vec3>& means,
                                        const std::vector<SensorPoint>& sensors, const ContinuousSky& sky,
                                        std::uint64_t seed, int rays, bool without_ratios = false,
-                                       std::size_t photons_per_source = 1500) {
+                                       std::size_t photons_per_source = 1500, bool quadrants = false) {
   std::vector<double> luminance;
   for (const Vec3& l : means) luminance.push_back(luminance_of(l));
   const auto ratios = std::make_shared<const SkyRatios>(sky, luminance);
@@ -342,6 +344,7 @@ DaylightCoefficients gathered_with_sky(const Scene& scene, const std::vector<Mat
   o.gather.variance_weights = luminance;
   o.photon_sky_bin_radiance_rgb = means;
   if (!without_ratios) o.photon_sky_ratios = ratios;
+  o.photon_quadrants = quadrants;
   DaylightCoefficients c;
   c.sensors = sensors.size();
   c.sources = sources.size();
@@ -509,6 +512,212 @@ TEST(PhotonPartOnSky, AGatheredRowsPathsToTheSkyAndLookupsBothTakeTheRatio) {
     const double basis_e = basis_sum(c, s, means);
     EXPECT_NEAR(luminance_of(without.photon_on_sky.irradiance[s]), basis_e, 1e-12 * basis_e) << "sensor " << s;
   }
+}
+
+// The photon part's sub-patch shares (DaylightCoefficients::photon_quadrants; photon.h, "sky
+// quadrant"). Under a sky uniform over each quadrant of each bin, L_pq, the shares give the
+// photon part sum_p [sum_q<3 Q_pq L_pq + (lum C_p - sum_q<3 Q_pq) L_p3] (the annual product's
+// correction, study/sub_patch_shares.h). Behind the diffuser that is the diffuser's irradiance
+// from that sky over its irradiance from the same sky uniform over each bin at its mean, by
+// midpoint quadrature. The test sky lights the lowest band alone, and of each of its bins only
+// the upper quadrant with the lower azimuths (quadrant 2: radiance 2, mean 0.5): the opposing
+// wall hides the band's lower half, so the diffuser sees that quadrant and its neighbour
+// (quadrant 3) alike, and the ratio is about 2. With patch-uniform bins it would be 1, without
+// the shares (the whole coefficient in quadrant 3) 0: both must lie outside 4 standard errors
+// of the mean over the seeds.
+
+/// The test sky's radiance in quadrant q of a bin of the lowest band, and its mean.
+double quadrant_test_radiance(int q) { return q == 2 ? 2.0 : 0.0; }
+constexpr double QuadrantTestMean = 0.5;
+/// Whether bin p is in the lowest band (the test sky's).
+bool in_test_band(const sky::PatchBasis& basis, int p) { return p > 0 && basis.bounds(p).altitude_min_rad < 1e-9; }
+
+/// The diffuser's irradiance (normal +y) from the quadrant sky over that from its bin means (1),
+/// the hidden directions and the ground left out; through the opening of InnerDiffuserRoom at
+/// NxN_z pane points when `inner`.
+double quadrant_sky_over_bin_means(const sky::PatchBasis& basis, bool inner) {
+  const int Nu = inner ? 600 : 2000, Nphi = inner ? 600 : 2000, Nx = 6, Nz = 3;
+  const double du = 1.0 / Nu, dphi = 2 * Pi / Nphi;
+  double quadrants = 0, means = 0;
+  for (int i = 0; i < Nu; ++i) {
+    const double z = (i + 0.5) * du, rho = std::sqrt(1 - z * z);
+    for (int j = 0; j < Nphi; ++j) {
+      const double phi = (j + 0.5) * dphi;
+      const Vec3 w{rho * std::cos(phi), rho * std::sin(phi), z};
+      if (w.y <= 0 || hidden(w)) continue;
+      double open = 1;
+      if (inner) {
+        const double t = InnerDiffuserGap_m / w.y;
+        int n = 0;
+        for (int a = 0; a < Nx; ++a)
+          for (int b = 0; b < Nz; ++b) {
+            const double x = -1.0 + 2.0 * (a + 0.5) / Nx + t * w.x, zz = 0.5 + (b + 0.5) / Nz + t * w.z;
+            n += x >= -1 && x <= 1 && zz >= 0.5 && zz <= 1.5;
+          }
+        open = n;
+      }
+      const int p = basis.find_bin(w);
+      if (!in_test_band(basis, p)) continue;
+      quadrants += open * quadrant_test_radiance(basis.quadrant(p, w)) * w.y;
+      means += open * QuadrantTestMean * w.y;
+    }
+  }
+  return quadrants / means;
+}
+
+/// The shares' photon part under the quadrant sky over its basis sum under the bin means, at
+/// sensor s.
+double shares_over_basis(const DaylightCoefficients& c, const sky::PatchBasis& b, std::size_t s) {
+  double with_shares = 0, basis = 0;
+  for (std::size_t p = 1; p < c.sources; ++p) {
+    if (!in_test_band(b, int(p))) continue;
+    const std::size_t i = s * c.sources + p;
+    const double lum = luminance_of(c.caustic[i] + c.global[i]);
+    const float* q = c.photon_quadrants.data() + i * StoredQuadrants;
+    double rest = lum;
+    for (std::size_t k = 0; k < StoredQuadrants; ++k) {
+      with_shares += double(q[k]) * quadrant_test_radiance(int(k));
+      rest -= double(q[k]);
+    }
+    with_shares += rest * quadrant_test_radiance(3);
+    basis += lum * QuadrantTestMean;
+  }
+  return with_shares / basis;
+}
+
+TEST(PhotonPartOnSky, SubPatchSharesReproduceASkyUniformOverEachQuadrant) {
+  constexpr int ShareSeeds = 16;
+  const DiffuserRoom room;
+  const double expected = quadrant_sky_over_bin_means(room.basis, false);
+  RecordProperty("quadrant_sky_over_bin_means", std::to_string(expected));
+  const ContinuousSky sky{"CIE overcast with a ground of 0.25", overcast_with_ground};
+  const std::vector<SensorPoint> sensors = {{{0, 0, 0}, {0, 0, 1}}, {{-2, -2, 0}, {0, 0, 1}}, {{1.5, 1.2, 0}, {0, 0, 1}}};
+  // The default path (local-linear plane with the pilot correction); every other path is
+  // checked by EveryEstimatorPathSplitsByTheQuadrant.
+  {
+    CoefficientOptions o;
+    o.photon_quadrants = true;
+    std::vector<test::Stats> ratio(sensors.size());
+    for (int k = 0; k < ShareSeeds; ++k) {
+      const DaylightCoefficients c = coefficients_with_sky(room.scene, room.materials, room.sources, sensors, sky,
+                                                           room.means, 7100 + std::uint64_t(k), o);
+      ASSERT_EQ(c.photon_quadrants.size(), sensors.size() * c.sources * StoredQuadrants);
+      for (std::size_t s = 0; s < sensors.size(); ++s) ratio[s].add(shares_over_basis(c, room.basis, s));
+    }
+    for (std::size_t s = 0; s < sensors.size(); ++s) {
+      RecordProperty("sensor_" + std::to_string(s) + "_ratio", std::to_string(ratio[s].mean()));
+      EXPECT_NEAR(ratio[s].mean(), expected, ratio[s].tolerance()) << "sensor " << s;
+      EXPECT_GT(std::fabs(1.0 - expected), ratio[s].tolerance()) << "sensor " << s << ": the basis would pass";
+      EXPECT_GT(std::fabs(quadrant_test_radiance(3) / QuadrantTestMean - expected), ratio[s].tolerance())
+          << "sensor " << s << ": no shares would pass";
+    }
+  }
+}
+
+TEST(PhotonPartOnSky, EveryEstimatorPathSplitsByTheQuadrant) {
+  // Photons whose quadrant is set to their source's index mod 4: each coefficient then lies
+  // whole in that quadrant, so on every estimator path its share there is the coefficient's
+  // luminance and its other stored shares 0 (up to rounding); a path that ignored the quadrant
+  // would give 0 or the whole coefficient in every share.
+  const DiffuserRoom room;
+  const std::vector<ReceiverPlane> planes = {ReceiverPlane(0.0, true, {{-3, -3}, {3, -3}, {3, 2}, {-3, 2}})};
+  TracingOptions t;
+  t.photons_per_source = 400;
+  t.seed = 17;
+  t.keep_surface_photons = false;
+  TracedPhotons photons = trace_photons(room.scene, room.materials, room.sources, planes, t);
+  for (Photon& ph : photons.planes[0]) ph.sky_quadrant = ph.source % 4;
+  const GridPhotons grid = GridPhotons::for_plane(planes[0], std::move(photons.planes[0]), room.sources.size());
+  const std::vector<SensorPoint> sensors = {{{0, 0, 0}, {0, 0, 1}}, {{-2.9, -2.9, 0}, {0, 0, 1}}, {{2.9, 1.9, 0}, {0, 0, 1}}};
+  std::vector<std::pair<std::string, CoefficientOptions>> paths(7);
+  paths[0].first = "default";
+  paths[1].first = "quadratic curvature";
+  paths[1].second.curvature_correction = CurvatureCorrection::Quadratic;
+  paths[1].second.quadratic_fit_sources = {0, 5, 17};
+  paths[2].first = "clipped-disc average";
+  paths[2].second.local_linear = false;
+  paths[3].first = "caustic map";
+  paths[3].second.caustic_bandwidth = 20;
+  paths[4].first = "bias compensation";
+  paths[4].second.local_linear = false;
+  paths[4].second.bias_compensation = true;
+  paths[5].first = "contribution";
+  paths[5].second.estimator = PhotonEstimator::Contribution;
+  paths[6].first = "contribution, bias compensation";
+  paths[6].second.estimator = PhotonEstimator::Contribution;
+  paths[6].second.bias_compensation = true;
+  for (auto& [name, o] : paths) {
+    o.direct.samples_per_source = 1;
+    o.photon_quadrants = true;
+    const DaylightCoefficients c = daylight_coefficients(room.scene, room.materials, room.sources, grid, sensors, o);
+    ASSERT_EQ(c.photon_quadrants.size(), sensors.size() * c.sources * StoredQuadrants) << name;
+    double largest = 0;
+    for (std::size_t i = 0; i < c.caustic.size(); ++i) largest = std::max(largest, luminance_of(c.caustic[i] + c.global[i]));
+    ASSERT_GT(largest, 0) << name;
+    std::size_t whole = 0;
+    for (std::size_t s = 0; s < sensors.size(); ++s)
+      for (std::size_t p = 0; p < c.sources; ++p) {
+        const std::size_t i = s * c.sources + p;
+        const double lum = luminance_of(c.caustic[i] + c.global[i]);
+        for (std::size_t q = 0; q < StoredQuadrants; ++q) {
+          const double want = q == p % 4 ? lum : 0.0;
+          EXPECT_NEAR(c.photon_quadrants[i * StoredQuadrants + q], want, 1e-5 * largest)
+              << name << ", sensor " << s << ", source " << p << ", quadrant " << q;
+        }
+        whole += lum > 1e-3 * largest && p % 4 < StoredQuadrants;
+      }
+    EXPECT_GT(whole, 40u) << name;  // the check is not vacuous
+  }
+}
+
+TEST(PhotonPartOnSky, GatheredSubPatchSharesReproduceASkyUniformOverEachQuadrant) {
+  constexpr int ShareSeeds = 12;
+  const InnerDiffuserRoom room;
+  const double expected = quadrant_sky_over_bin_means(room.basis, true);
+  RecordProperty("quadrant_sky_over_bin_means", std::to_string(expected));
+  const ContinuousSky sky{"CIE overcast with a ground of 0.25", overcast_with_ground};
+  const std::vector<SensorPoint> sensors = {{{0, 0, 0}, {0, 0, 1}}, {{0.5, -2.99, 1.0}, {0, 1, 0}}};
+  std::vector<test::Stats> ratio(sensors.size());
+  for (int k = 0; k < ShareSeeds; ++k) {
+    const DaylightCoefficients c = gathered_with_sky(room.scene, room.materials, room.sources, room.means, sensors,
+                                                     sky, 9100 + std::uint64_t(k), 256, false, 1500, true);
+    ASSERT_EQ(c.photon_quadrants.size(), sensors.size() * c.sources * StoredQuadrants);
+    for (std::size_t s = 0; s < sensors.size(); ++s) ratio[s].add(shares_over_basis(c, room.basis, s));
+  }
+  for (std::size_t s = 0; s < sensors.size(); ++s) {
+    RecordProperty("gathered_sensor_" + std::to_string(s) + "_ratio", std::to_string(ratio[s].mean()));
+    EXPECT_NEAR(ratio[s].mean(), expected, ratio[s].tolerance()) << "sensor " << s;
+    EXPECT_GT(std::fabs(1.0 - expected), ratio[s].tolerance()) << "sensor " << s << ": the basis would pass";
+    EXPECT_GT(std::fabs(quadrant_test_radiance(3) / QuadrantTestMean - expected), ratio[s].tolerance())
+        << "sensor " << s << ": no shares would pass";
+  }
+}
+
+TEST(PhotonPartOnSky, EverySkyPhotonRecordsTheQuadrantItWasEmittedInto) {
+  // Photons stored on the plane straight behind the diffuser carry their bin's quadrants in
+  // about the shares of the bin's light the diffuser sees; the ground's are all 0, and a
+  // photon's class byte keeps class and quadrant apart.
+  const DiffuserRoom room;
+  const std::vector<ReceiverPlane> planes = {ReceiverPlane(0.0, true, {{-3, -3}, {3, -3}, {3, 2}, {-3, 2}})};
+  TracingOptions t;
+  t.photons_per_source = 400;
+  t.seed = 13;
+  t.keep_surface_photons = false;
+  const TracedPhotons photons = trace_photons(room.scene, room.materials, room.sources, planes, t);
+  std::array<std::size_t, 4> count{};
+  std::size_t ground = 0;
+  for (const Photon& ph : photons.planes[0]) {
+    if (ph.source == 0) {
+      EXPECT_EQ(ph.sky_quadrant, 0u);
+      ++ground;
+      continue;
+    }
+    ++count[ph.sky_quadrant];
+    EXPECT_EQ(ph.class_byte() & 3u, static_cast<unsigned>(ph.path_class));
+    EXPECT_EQ(ph.class_byte() >> 2, unsigned(ph.sky_quadrant));
+  }
+  EXPECT_GT(ground, 0u);
+  for (std::size_t q = 0; q < 4; ++q) EXPECT_GT(count[q], 0u) << "quadrant " << q;
 }
 
 TEST(PhotonPartOnSky, TheRatioCodeRoundsToNearestAndRefusesWhatItCannotHold) {

@@ -388,7 +388,9 @@ TEST(PhotonCounts, OneAndTwoThreadsGiveBitIdenticalPhotons) {
 
 // FNV-1a (Fowler, Noll and Vo), 64-bit, over every byte of the records and the counts of the
 // tallies, in order. The records' sky ratio codes (all SkyRatioOne without sky ratios, which
-// the caller checks) are hashed as 0: the digests were recorded before the records had them.
+// the caller checks) and sky quadrants are hashed as 0: the digests were recorded before the
+// records had them, and neither changes a path (the quadrants are checked by
+// PhotonPartOnSky.EverySkyPhotonRecordsTheQuadrantItWasEmittedInto).
 std::uint64_t photon_digest(const TracedPhotons& t) {
   std::uint64_t hash = 14695981039346656037ull;
   auto eat = [&hash](const void* data, std::size_t bytes) {
@@ -398,6 +400,7 @@ std::uint64_t photon_digest(const TracedPhotons& t) {
   auto eat_photons = [&eat](const std::vector<Photon>& photons) {
     for (Photon p : photons) {
       p.sky_ratio_code = 0;
+      p.sky_quadrant = 0;
       eat(&p, sizeof p);
     }
   };

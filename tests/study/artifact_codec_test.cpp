@@ -156,18 +156,28 @@ TEST(ArtifactCodec, PhotonLayoutIsLittleEndianAsDocumented) {
   p.sky_ratio_code = 0x010u;  // the source word 0x01020304
   p.normal = {-127, 0, 127};
   p.path_class = PathClass::Caustic;
+  p.sky_quadrant = 3;
   t.surface.push_back(p);
   const std::string b = encode_photons(t);
   // tag, version, u64 count, 32-byte photon, u64 plane count, u64 source count.
   ASSERT_EQ(b.size(), 4u + 4 + 8 + 32 + 8 + 8);
   EXPECT_EQ(b.substr(0, 4), "PHOT");
-  EXPECT_EQ(b.substr(4, 4), std::string("\x04\x00\x00\x00", 4));  // layout 4
+  EXPECT_EQ(b.substr(4, 4), std::string("\x05\x00\x00\x00", 4));  // layout 5
   EXPECT_EQ(b.substr(8, 8), std::string("\x01\x00\x00\x00\x00\x00\x00\x00", 8));
   EXPECT_EQ(b.substr(16, 4), std::string("\x00\x00\x80\x3f", 4));  // 1.0f = 0x3f800000
   EXPECT_EQ(b.substr(20, 4), std::string("\x00\x00\x00\xc0", 4));  // -2.0f = 0xc0000000
   EXPECT_EQ(b.substr(40, 4), std::string("\x04\x03\x02\x01", 4));  // source, sky ratio code
-  EXPECT_EQ(b.substr(44, 4), std::string("\x81\x00\x7f\x01", 4));  // normal, class
+  EXPECT_EQ(b.substr(44, 4), std::string("\x81\x00\x7f\x0d", 4));  // normal, class + 4 x quadrant
   EXPECT_EQ(b.substr(48, 16), std::string(16, '\0'));              // no planes, no sources
+  const Photon back = decode_photons(b).surface.at(0);
+  EXPECT_EQ(back.path_class, PathClass::Caustic);
+  EXPECT_EQ(back.sky_quadrant, 3u);
+  // A byte with bits above the quadrant's, or a class 3, is refused.
+  for (const char bad : {'\x13', '\x03'}) {
+    std::string damaged = b;
+    damaged[47] = bad;
+    EXPECT_THROW(decode_photons(damaged), std::runtime_error) << int(bad);
+  }
 }
 
 TEST(ArtifactCodec, CoefficientsRoundTripBitExact) {
@@ -222,13 +232,31 @@ TEST(ArtifactCodec, TheSubPatchSharesRoundTripBitExact) {
   const std::string without = encode_coefficients(sample_coefficients(3, 5));
   EXPECT_TRUE(decode_coefficients(without).direct_quadrants.empty());
   EXPECT_EQ(bytes.size(), without.size() + 3 * 5 * engine::StoredQuadrants * 4);
-  // Shares of the wrong length are refused when encoding, a flag other than 0 or 1 when decoding.
+  // The photon part's shares too (flag bit 2), bit exact, beside the direct part's.
+  engine::DaylightCoefficients both = in;
+  both.photon_quadrants.resize(in.direct_quadrants.size());
+  for (std::size_t i = 0; i < both.photon_quadrants.size(); ++i) both.photon_quadrants[i] = -0.5f * float(i) + 1e-3f;
+  const std::string with_photon = encode_coefficients(both);
+  EXPECT_EQ(with_photon.size(), bytes.size() + 3 * 5 * engine::StoredQuadrants * 4);
+  const engine::DaylightCoefficients both_out = decode_coefficients(with_photon);
+  ASSERT_EQ(both_out.photon_quadrants.size(), both.photon_quadrants.size());
+  EXPECT_TRUE(same_bits(both_out.photon_quadrants.data(), both.photon_quadrants.data(),
+                        both.photon_quadrants.size() * sizeof(float)));
+  EXPECT_TRUE(same_bits(both_out.direct_quadrants.data(), in.direct_quadrants.data(),
+                        in.direct_quadrants.size() * sizeof(float)));
+  // Shares of the wrong length are refused when encoding, flags beyond 0-3 or not matching the
+  // size when decoding.
   engine::DaylightCoefficients short_part = in;
   short_part.direct_quadrants.pop_back();
   EXPECT_THROW(encode_coefficients(short_part), std::invalid_argument);
-  std::string damaged = bytes;
-  damaged[8 + 40] = 2;  // the u64 after sensors, sources, skies, photon part and its basis rows
-  EXPECT_THROW(decode_coefficients(damaged), std::runtime_error);
+  engine::DaylightCoefficients short_photon = both;
+  short_photon.photon_quadrants.pop_back();
+  EXPECT_THROW(encode_coefficients(short_photon), std::invalid_argument);
+  for (const char flags : {'\x04', '\x03'}) {
+    std::string damaged = bytes;
+    damaged[8 + 40] = flags;  // the u64 after sensors, sources, skies, photon part and its basis rows
+    EXPECT_THROW(decode_coefficients(damaged), std::runtime_error) << int(flags);
+  }
 }
 
 TEST(ArtifactCodec, InconsistentCoefficientsAreRefusedWhenEncoding) {
@@ -289,7 +317,7 @@ TEST(ArtifactCodec, LayoutVersionAndTagAreChecked) {
     decode_photons(photons);
     FAIL() << "expected runtime_error";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("version 5"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("version 6"), std::string::npos) << e.what();
   }
   EXPECT_THROW(decode_coefficients(coefficients), std::runtime_error);
   EXPECT_THROW(decode_matrix(matrix), std::runtime_error);

@@ -179,6 +179,10 @@ struct CoefficientOptions {
   /// that leave to the sky (final_gather.h, "The continuous sky"). Null: those rows keep the
   /// basis sum (PhotonOnSky::basis_rows).
   std::shared_ptr<const SkyRatios> photon_sky_ratios;
+  /// Also estimate the photon part's sub-patch shares (DaylightCoefficients::photon_quadrants):
+  /// the same estimate with each flux times the indicator of its sky quadrant (photon.h), from
+  /// the same lookups. For the bins of a basis (the photons' quadrants are those of their bins).
+  bool photon_quadrants = false;
 };
 
 /// The photon part (caustic + global) of every sensor under the continuous sky its photons'
@@ -211,6 +215,11 @@ struct DaylightCoefficients {
   /// sources * StoredQuadrants + p * StoredQuadrants + q], the luminance of direct[s][p]'s part
   /// in quadrant q of sky bin p; empty when the sources are not a basis's bins.
   std::vector<float> direct_quadrants;
+  /// The photon part's sub-patch shares (CoefficientOptions::photon_quadrants), same layout:
+  /// the luminance of (caustic + global)[s][p]'s part that photons emitted into quadrant q of
+  /// sky bin p carry (and, for a final gather, specular paths leaving through it); empty when
+  /// not estimated. The annual product adds them to the direct part's (study/sub_patch_shares.h).
+  std::vector<float> photon_quadrants;
   /// The photon part under the daylight factor's continuous sky (photon_part_on_sky.h), when
   /// the photons carry its sky ratios; empty otherwise.
   PhotonOnSky photon_on_sky;

@@ -142,6 +142,9 @@ struct GatherOptions {
   /// "Variance": the daylight factor's sky luminances); empty: 1 for every source. The
   /// photons' part does not depend on it.
   std::vector<double> variance_weights;
+  /// Also the photon part's sub-patch shares (GatheredCoefficients::quadrants), for sources
+  /// that are a basis's bins.
+  bool sky_quadrants = false;
 };
 
 /// The continuous sky of the photons' sky ratios (header comment, "The continuous sky"):
@@ -167,6 +170,11 @@ struct GatheredCoefficients {
   /// were given, the variance of its luminance. Empty otherwise.
   std::vector<Vec3> on_sky;
   std::vector<double> on_sky_variance;
+  /// With GatherOptions::sky_quadrants: [row * sources * StoredQuadrants + p * StoredQuadrants
+  /// + q], the luminance of (caustic + global)[row][p]'s part whose light came through
+  /// quadrant q of bin p: the photons emitted into it (photon.h) and the specular paths that
+  /// leave through it (daylight_coefficients.h, DaylightCoefficients::photon_quadrants).
+  std::vector<float> quadrants;
 };
 
 /// The gather at every sensor. `surface_photons` is the map of every stored surface photon

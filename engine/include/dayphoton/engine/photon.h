@@ -17,6 +17,13 @@
 // over many photons), up to 4095/2048; sources get the other 20 bits (MaxPhotonSources, more
 // than Reinhart MF:64's 589,826 bins, ground included).
 //
+// The path class's byte also holds the photon's sky quadrant (2 bits): the quadrant of its
+// emitting sky bin that its emission direction lies in (sky::PatchBasis::quadrant: halves in
+// sine of altitude and in azimuth; 0 for the ground bin and sun photons). The estimate with each
+// flux times the indicator of one quadrant is the bin's response to that quadrant alone, the
+// photon part's sub-patch share (PhotonFlux::InSkyQuadrant0..2; the annual product's sub-patch
+// correction, docs/photon-map.md "The annual photon part on sub-patches").
+//
 // Difference from RADIANCE's contribution photons: RADIANCE emits from one continuous sky
 // and stores each photon's primary ray (direction and entry point) so that it can bin them
 // afterwards. dayphoton emits every bin as its own source, so the bin is known at emission
@@ -24,6 +31,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cmath>
 #include <cstdint>
 
@@ -62,7 +70,7 @@ inline constexpr std::uint32_t SkyRatioOne = 2048;
 inline constexpr std::uint32_t SkyRatioMaxCode = 4095;
 
 struct Photon {
-  Photon() : source(0), sky_ratio_code(SkyRatioOne) {}
+  Photon() : source(0), sky_ratio_code(SkyRatioOne), path_class(PathClass::Global), sky_quadrant(0), unused_bits(0) {}
 
   std::array<float, 3> position{};  ///< metres
   std::array<float, 3> flux{};      ///< RGB, watts per unit source radiance (W/(W/(sr m2)))
@@ -72,7 +80,12 @@ struct Photon {
   /// continuous sky was given.
   std::uint32_t sky_ratio_code : 12;
   std::array<std::int8_t, 3> normal{};  ///< side it arrived on, x 127
-  PathClass path_class = PathClass::Global;
+  PathClass path_class : 2;
+  /// The quadrant of its sky bin it was emitted into (header comment), 0-3.
+  std::uint8_t sky_quadrant : 2;
+  /// Always 0: named so that a record's every byte is defined (digests and comparisons of
+  /// whole records).
+  std::uint8_t unused_bits : 4;
 
   double sky_ratio() const { return double(sky_ratio_code) / double(SkyRatioOne); }
   /// Whether `ratio` has a code: non-negative and rounding to at most SkyRatioMaxCode (a NaN
@@ -113,12 +126,32 @@ struct Photon {
     if (fraction <= -0.5) --i;
     return static_cast<std::int8_t>(i);
   }
+
+ public:
+  /// The path class and sky quadrant as one byte (the artifact codec's layout): class + 4 x
+  /// quadrant.
+  std::uint8_t class_byte() const {
+    return static_cast<std::uint8_t>(static_cast<unsigned>(path_class) | (unsigned(sky_quadrant) << 2));
+  }
 };
-/// Which flux an estimate sums: the photons' own, or each times its sky ratio (the response
-/// to the continuous sky the ratios come from, sky_ratios.h).
-enum class PhotonFlux : std::uint8_t { AsTraced, TimesSkyRatio };
+/// Which flux an estimate sums: the photons' own, each times its sky ratio (the response
+/// to the continuous sky the ratios come from, sky_ratios.h), or each times the indicator of
+/// its sky quadrant being 0, 1 or 2 (the response to that quadrant of its bin alone).
+enum class PhotonFlux : std::uint8_t { AsTraced, TimesSkyRatio, InSkyQuadrant0, InSkyQuadrant1, InSkyQuadrant2 };
+inline PhotonFlux in_sky_quadrant(std::size_t q) {
+  return static_cast<PhotonFlux>(static_cast<unsigned>(PhotonFlux::InSkyQuadrant0) + q);
+}
 inline Vec3 flux_of(const Photon& p, PhotonFlux f) {
-  return f == PhotonFlux::AsTraced ? p.flux_rgb() : p.flux_rgb() * p.sky_ratio();
+  switch (f) {
+    case PhotonFlux::AsTraced:
+      return p.flux_rgb();
+    case PhotonFlux::TimesSkyRatio:
+      return p.flux_rgb() * p.sky_ratio();
+    default:
+      return p.sky_quadrant == static_cast<unsigned>(f) - static_cast<unsigned>(PhotonFlux::InSkyQuadrant0)
+                 ? p.flux_rgb()
+                 : Vec3{0, 0, 0};
+  }
 }
 
 static_assert(sizeof(Photon) == 32, "photon record layout is documented as 32 bytes");

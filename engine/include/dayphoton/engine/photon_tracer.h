@@ -271,6 +271,7 @@ struct PathStart {
   Vec3 flux{1, 1, 1};    ///< RGB, relative
   std::uint32_t source = 0;
   std::uint32_t sky_ratio_code = SkyRatioOne;  ///< of the path's photons (photon.h)
+  std::uint8_t sky_quadrant = 0;               ///< of the path's photons (photon.h)
   bool scattered = false;         ///< false: the path starts as Direct
   bool diffuse_scattered = false; ///< true: the path is already Global
   /// The path starts outdoors (on an outdoor scatterer), not in a room behind a port.

@@ -37,8 +37,8 @@ namespace dayphoton::study {
 
 /// Layout versions: bump one whenever its layout changes, so older artefacts are refused
 /// (and recomputed) instead of misread.
-inline constexpr std::uint32_t PhotonLayoutVersion = 4;  // 2: SourceTally::capped; 3: storage_probability_direct, nothing_stores; 4: the sky ratio in the source word's top 12 bits (engine/photon.h)
-inline constexpr std::uint32_t CoefficientLayoutVersion = 5;  // 2: the variances; 3: the direct part on skies; 4: the photon part on the sky; 5: the sub-patch shares
+inline constexpr std::uint32_t PhotonLayoutVersion = 5;  // 2: SourceTally::capped; 3: storage_probability_direct, nothing_stores; 4: the sky ratio in the source word's top 12 bits (engine/photon.h); 5: the sky quadrant in the path class's byte
+inline constexpr std::uint32_t CoefficientLayoutVersion = 6;  // 2: the variances; 3: the direct part on skies; 4: the photon part on the sky; 5: the sub-patch shares; 6: the photon part's sub-patch shares
 inline constexpr std::uint32_t MatrixLayoutVersion = 1;
 
 std::string encode_photons(const engine::TracedPhotons& photons);

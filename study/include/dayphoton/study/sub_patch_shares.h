@@ -9,8 +9,10 @@
 //
 // L_pq the sky's mean luminance over quadrant q (sky::SkyMatrix::quadrant_deltas gives
 // L_pq - L_p), so the direct part sees a sky uniform over each quadrant instead of each
-// patch. The photon part stays on the patch values. Only the first three Q are stored
-// (engine::StoredQuadrants): the fourth is the coefficient's luminance less their sum.
+// patch. The photon part's shares (engine::DaylightCoefficients::photon_quadrants, from the
+// quadrant each sky photon was emitted into) are added to the direct part's, so the whole
+// coefficient sees the quadrants. Only the first three Q are stored (engine::StoredQuadrants):
+// the fourth is the coefficient's luminance less their sum.
 #pragma once
 
 #include <cstddef>
@@ -22,8 +24,9 @@
 namespace dayphoton::study {
 
 /// Per sensor and sky bin, what the correction multiplies: [s * bins * ValuesPerBin + p *
-/// ValuesPerBin + k], k = 0 the luminance of the direct coefficient C_direct[s][p], k = 1..3
-/// the luminances Q[s][p][0..2] (W/m^2 per unit radiance). Empty: no correction (coefficients
+/// ValuesPerBin + k], k = 0 the luminance of the coefficient C[s][p] (direct + photon; the direct
+/// part alone when the photon part has no shares), k = 1..3 the luminances Q[s][p][0..2] of
+/// the same parts (W/m^2 per unit radiance). Empty: no correction (coefficients
 /// without shares: a basis-less source set, or coefficients read from a file).
 struct SubPatchShares {
   static constexpr std::size_t ValuesPerBin = 4;
