@@ -81,6 +81,14 @@ class BlockSink final : public PhotonSink {
   void record(int plane, const Photon& photon) override {
     if (m_options.region_of_interest && !inside(*m_options.region_of_interest, photon.position_m()))
       return;
+    store(plane, photon);
+  }
+  // The region of interest does not apply: the port is where the gather behind it reads,
+  // wherever the box ends.
+  void record_on_diffusing_port(const Photon& photon) override { store(-1, photon); }
+
+ private:
+  void store(int plane, const Photon& photon) {
     Photon stored = photon;
     const double d = photon.path_class == PathClass::Global    ? m_d.global
                      : photon.path_class == PathClass::Caustic ? m_d.caustic
@@ -100,7 +108,6 @@ class BlockSink final : public PhotonSink {
     }
   }
 
- private:
   BlockResult& m_out;
   const TracingOptions& m_options;
   StorageProbabilities m_d;
@@ -266,9 +273,12 @@ bool trace_path_to(const Scene& scene, const std::vector<Material>& materials,
       const Vec3 side = hit->front_face ? hit->normal : hit->normal * -1.0;
       // A Direct photon outdoors (on a scatterer, after straight passes only): where a
       // gather can read it.
-      if (store || !outdoors || hit->scatterer < 0 ||
-          stores_direct_on_scatterer(scene, options, hit->scatterer, side))
-        sink.record(-1, make_photon(hit->position, flux, side, start.source, start.sky_ratio_code, start.sky_quadrant, path_class));
+      const Photon photon =
+          make_photon(hit->position, flux, side, start.source, start.sky_ratio_code, start.sky_quadrant, path_class);
+      if (hit->port >= 0 && transmits_diffusely(material))
+        sink.record_on_diffusing_port(photon);
+      else if (store || !outdoors || stores_direct_on_scatterer(scene, options, hit->scatterer, side))
+        sink.record(-1, photon);
     }
     const double u0 = scattering.uniform(), u1 = scattering.uniform(), u2 = scattering.uniform();
     const std::optional<ScatterSample> s = material.sample(ray.direction, hit->normal, u0, u1, u2);
@@ -377,8 +387,8 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
         // diffuse transmittance (the direct component takes only its straight transmission).
         const PortPane& pane = panes[static_cast<std::size_t>(entry->port)];
         if (pane.diffusing && (options.store_direct || options.store_direct_on_surfaces))
-          sink.record(-1, make_photon(entry->position, {1, 1, 1}, pane.port->normal * -1.0, source, ratio_code, quadrant,
-                                      PathClass::Direct));
+          sink.record_on_diffusing_port(make_photon(entry->position, {1, 1, 1}, pane.port->normal * -1.0, source,
+                                                  ratio_code, quadrant, PathClass::Direct));
       }
       if (!start) continue;
       start->sky_ratio_code = ratio_code;

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "dayphoton/core/diagnostics.h"
@@ -253,6 +255,67 @@ std::string tracing_remedy(const Surface& s, const SceneDescription& description
   return "";
 }
 
+/// Sensors of a gathered set tested by check_gather_outside_region (spread over the set) and
+/// rays per sensor (a lattice of GatherProbeLattice^2 cosine-distributed directions).
+constexpr std::size_t GatherProbeSensors = 64;
+constexpr int GatherProbeLattice = 8;
+
+/// The warning for sets estimated by final gather whose rays reach surfaces outside
+/// simulation.region_of_interest (header comment).
+void check_gather_outside_region(const engine::Scene& scene, const std::vector<SensorGrid>& grids,
+                                 const project::Project& proj, std::vector<Diagnostic>& warnings) {
+  const auto& roi = proj.simulation.region_of_interest;
+  if (!roi || proj.simulation.point_estimate != project::PointEstimate::Gather) return;
+  const SceneDescription& description = scene.description();
+  const double north_deg = proj.site.rotation_to_true_north_deg();
+  constexpr double Tolerance_m = 1e-6;
+  const Vec3 lo = roi->origin_m, hi = roi->origin_m + roi->size_m;
+  auto outside_box = [&](const Vec3& world) {
+    const Vec3 p = project::world_to_model(world, north_deg);
+    for (int k = 0; k < 3; ++k)
+      if (p[k] < lo[k] - Tolerance_m || p[k] > hi[k] + Tolerance_m) return true;
+    return false;
+  };
+  for (const SensorGrid& grid : grids) {
+    if (grid.planar || grid.points.empty()) continue;
+    const std::size_t stride = std::max<std::size_t>(1, grid.points.size() / GatherProbeSensors);
+    std::size_t rays = 0, outside = 0;
+    for (std::size_t i = 0; i < grid.points.size(); i += stride) {
+      const SensorPoint& sensor = grid.points[i];
+      for (int a = 0; a < GatherProbeLattice; ++a)
+        for (int b = 0; b < GatherProbeLattice; ++b) {
+          ++rays;
+          Vec3 origin = sensor.position, direction = cosine_direction(sensor.normal, a, b, GatherProbeLattice);
+          // Straight on through ports (a clear pane: the gather reads the outdoor scatterers
+          // behind it); photons on a diffusing port are stored whatever the box.
+          bool through_port = false;
+          for (int event = 0; event < 8; ++event) {
+            const std::optional<engine::Hit> hit =
+                scene.intersect(engine::Ray{origin, direction, 0.0, std::numeric_limits<double>::infinity()});
+            if (!hit || (through_port && hit->scatterer < 0)) break;
+            if (hit->port >= 0) {
+              const MaterialSpec& m = description.materials[static_cast<std::size_t>(hit->material)];
+              if (m.type == MaterialType::Translucent && m.transmissivity > 0 && m.transmitted_specular < 1) break;
+              through_port = true;
+              origin = scene.offset_ray_origin(hit->position, hit->normal, direction);
+              continue;
+            }
+            if (outside_box(hit->position)) ++outside;
+            break;
+          }
+        }
+    }
+    if (outside == 0) continue;
+    warnings.push_back(warning_at(
+        roi->location,
+        "simulation.region_of_interest: sensor set '" + grid.name + "' is estimated by final gather, and " +
+            percent(double(outside) / rays) +
+            " of its gather rays reach surfaces outside the box, where no photon is stored: its sensors "
+            "read low by the light from there. Make the box hold every surface the sensors see (the rooms "
+            "and the outdoor scatterers seen through their windows), or remove it"));
+  }
+}
+
 /// The warning for geometry outside the ports that only shades them (header comment).
 void check_exterior_geometry(const engine::Scene& scene, std::vector<Diagnostic>& warnings) {
   const SceneDescription& description = scene.description();
@@ -496,6 +559,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
   const std::vector<bool> gathered = near_cut_gathered(near_count, planar_sensors, surface_photons_kept);
   for (std::size_t g = 0; g < grids.size(); ++g) report_near_cuts(grids[g], near[g], gathered[g], frame, out);
   check_exterior_geometry(scene, out.warnings);
+  check_gather_outside_region(scene, grids, proj, out.warnings);
   if (grids.empty())
     report(diag, project, "the project has no sensors: add a grid or a point set under 'sensors'");
   diag.throw_if_errors();

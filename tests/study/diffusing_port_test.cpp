@@ -72,7 +72,10 @@ std::vector<std::vector<double>> read_csv(const fs::path& path) {
   return rows;
 }
 
-TEST(DiffusingPort, GatheredPointsReadTheLightALambertianRoofLightTransmits) {
+/// Runs the black room with the opal roof light (`simulation_extra` appended to the
+/// simulation map) and checks the points, and the plane at the same points, against the
+/// closed form.
+void expect_closed_form(const std::string& simulation_extra) {
   const fs::path dir = test::process_temp_dir() /
                        ("dayphoton_diffusing_port_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
   fs::remove_all(dir);
@@ -95,7 +98,7 @@ TEST(DiffusingPort, GatheredPointsReadTheLightALambertianRoofLightTransmits) {
       "    - name: points\n"
       "      points: [[2, 2, 0.8, 0, 0, 1], [1, 1, 0.8, 0, 0, 1], [2, 3.5, 0.8, 0, 0, 1], [3.5, 0.5, 0.8, 0, 0, 1],\n"
       "               [0.5, 2, 1.5, 1, 0, 0]]\n"
-      "simulation: {photons_per_bin: 4000, seed: 7, ground_reflectance: 0}\n"
+      "simulation: {photons_per_bin: 4000, seed: 7, ground_reflectance: 0" + simulation_extra + "}\n"
       "outputs: {images: false, report: false}\n";
   project::LoadOptions options;
   options.output_folder_overridden = true;
@@ -124,6 +127,15 @@ TEST(DiffusingPort, GatheredPointsReadTheLightALambertianRoofLightTransmits) {
         }
     }
   }
+}
+
+TEST(DiffusingPort, GatheredPointsReadTheLightALambertianRoofLightTransmits) { expect_closed_form(""); }
+
+// The region of interest ends 1 cm below the pane, so the pane's sky side lies outside it:
+// the Direct records there are kept all the same (the gather below reads them). Before, the
+// points read 0.
+TEST(DiffusingPort, APortOutsideTheRegionOfInterestStillGivesTheGatherItsLight) {
+  expect_closed_form(", region_of_interest: {origin: [0, 0, 0], size: [4, 4, 2.99]}");
 }
 
 }  // namespace

@@ -263,6 +263,10 @@ class PhotonSink {
  public:
   virtual ~PhotonSink() = default;
   virtual void record(int plane, const Photon& photon) = 0;
+  /// A record on a diffusing port (translucent, transmitted_specular < 1), either side:
+  /// stored whatever the region of interest, since a final gather that reaches the port from
+  /// the room reads both (the sky side through its diffuse transmittance).
+  virtual void record_on_diffusing_port(const Photon& photon) { record(-1, photon); }
 };
 
 struct PathStart {

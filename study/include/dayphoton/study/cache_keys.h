@@ -46,7 +46,10 @@ namespace dayphoton::study {
 /// part under the daylight factor's continuous sky (engine/photon_part_on_sky.h).
 /// 7: the coefficients carry the direct part's sub-patch shares and the annual sky its
 /// quadrant deltas (engine/direct_component.h, "Sub-patch shares").
-constexpr int EngineCacheVersion = 7;
+/// 8: a diffusing port (translucent, transmitted_specular < 1) keeps the Direct photons on its
+/// sky side, and the photons on it are stored outside the region of interest too
+/// (docs/photon-tracing.md, "Region of interest").
+constexpr int EngineCacheVersion = 8;
 
 ContentHash scene_key(const SceneDescription& scene);
 ContentHash planes_key(const std::vector<SensorGrid>& grids);
