@@ -1,12 +1,14 @@
 // Bench support: a project run as a daylight-factor study of its base case alone, quietly, and
 // the values of its grids read back from results.json (examples_accuracy_bench and
-// gathered_grid_honesty_bench); the process's CPU seconds (perez_sky_component_bench too).
+// gathered_grid_honesty_bench); the process's CPU seconds and the load average (the Perez
+// benches too).
 #pragma once
 
 #include <sys/resource.h>
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -18,6 +20,15 @@
 #include "dayphoton/study/study_runner.h"
 
 namespace dayphoton::bench {
+
+/// The machine's one-minute load average as /proc/loadavg prints it ("unknown" without it):
+/// wall times on shared cores mean little without it.
+inline std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string one;
+  in >> one;
+  return in ? one : std::string("unknown");
+}
 
 /// CPU seconds (user + sys) of this process so far, all threads.
 inline double process_cpu_seconds() {

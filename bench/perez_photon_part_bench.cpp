@@ -73,13 +73,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string one;
-  in >> one;
-  return in ? one : std::string("unknown");
-}
-
 /// The ratio's largest code is 4095 / 2048: a bin whose sky varies more than this far is
 /// referred to this fraction of its largest luminance (header comment).
 constexpr double RatioHeadroom = 0.55;
@@ -237,7 +230,7 @@ int main(int argc, char** argv) {
   const auto w0 = std::chrono::steady_clock::now();
   const double c0 = bench::process_cpu_seconds();
   std::printf("perez_photon_part_bench %s, %d hours per kind, seed %lld, load average %s\n", project_path.c_str(),
-              per_kind, static_cast<long long>(proj.simulation.seed), load_average().c_str());
+              per_kind, static_cast<long long>(proj.simulation.seed), bench::load_average().c_str());
 
   const Climate climate = make_climate(proj);
   const std::map<std::string, metrics::IlluminanceTable> totals = annual_run(proj, folder);
@@ -378,6 +371,6 @@ int main(int argc, char** argv) {
     }
   std::printf("%.0f s wall, %.0f s CPU, load average %s\n",
               std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count(),
-              bench::process_cpu_seconds() - c0, load_average().c_str());
+              bench::process_cpu_seconds() - c0, bench::load_average().c_str());
   return 0;
 }

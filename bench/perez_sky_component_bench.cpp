@@ -76,13 +76,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string one;
-  in >> one;
-  return in ? one : std::string("unknown");
-}
-
 /// Sun altitude below which an hour is not picked (twilight skies: the Perez model clamps Z).
 constexpr double MinimumSunAltitude_deg = 2.0;
 
@@ -650,7 +643,7 @@ int main(int argc, char** argv) {
   climates.push_back(make_climate("Oakland", proj, proj.weather.path));
   climates.push_back(make_climate("Mannheim", proj, source + "/tests/data/weather/DEU_Mannheim.epw"));
   std::printf("perez_sky_component_bench %s %d: projects/wall_sensors, load average %s\n", mode.c_str(), number,
-              load_average().c_str());
+              bench::load_average().c_str());
   if (mode == "hours")
     hours_mode(climates, number, folder);
   else
@@ -658,6 +651,6 @@ int main(int argc, char** argv) {
   std::printf("%.0f s wall, %.0f s CPU, load average %s\n",
               std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count(),
               bench::process_cpu_seconds() - c0,
-              load_average().c_str());
+              bench::load_average().c_str());
   return 0;
 }

@@ -46,15 +46,15 @@ RadianceMatrix sub_patch_shares_matrix(const SubPatchShares& shares);
 SubPatchShares sub_patch_shares_of(const RadianceMatrix& m, std::size_t sensors, std::size_t bins);
 
 /// What `dayphoton annual` says of exported coefficients (coefficients.mtx holds the total
-/// per patch, not the direct part's shares): its table is the patch-uniform product.
+/// per patch, not its shares): its table is the patch-uniform product.
 inline constexpr const char* SubPatchSharesMissingWarning =
-    "no coefficients_sky_quadrants.mtx beside the coefficients (the sub-patch shares of their direct part), so "
-    "this annual table is the patch-uniform product: the run's own table adds the direct part's sub-patch "
+    "no coefficients_sky_quadrants.mtx beside the coefficients (the coefficients' sub-patch shares), so "
+    "this annual table is the patch-uniform product: the run's own table adds the sub-patch "
     "correction and differs from it (docs/outputs.md, \"Which sky the annual files use\")";
 /// And of a sky matrix file, which has no quadrant deltas.
 inline constexpr const char* SkyMatrixFileQuadrantsWarning =
     "a sky matrix file has no quadrant deltas, so this annual table is the patch-uniform product (the "
-    "sub-patch shares of coefficients_sky_quadrants.mtx are not used): a run's own table adds the direct part's "
+    "sub-patch shares of coefficients_sky_quadrants.mtx are not used): a run's own table adds the "
     "sub-patch correction (docs/outputs.md, \"Which sky the annual files use\")";
 
 /// And of one sky vector (`annual --sky-vector`): coefficients x patch values, what dctimestep
