@@ -70,6 +70,7 @@
 #include "dayphoton/weather/epw_reader.h"
 #include "dayphoton/weather/site_clock.h"
 #include "df_only_run.h"
+#include "perez_hour.h"
 
 using namespace dayphoton;
 namespace fs = std::filesystem;
@@ -114,27 +115,12 @@ Climate make_climate(const std::string& name, project::Project proj, const std::
   return c;
 }
 
-sky::PerezInputs perez_inputs(const Climate& c, std::size_t t) {
-  const weather::WeatherRecord& r = c.epw.records[t];
-  sky::PerezInputs in;
-  in.direct_normal_irradiance_W_m2 = r.direct_normal_w_m2.value_or(0.0);
-  in.diffuse_horizontal_irradiance_W_m2 = r.diffuse_horizontal_w_m2.value_or(0.0);
-  in.sun_direction = *c.sun[t];
-  in.day_of_year = c.steps[t].day_of_year;  // non-leap files: RADIANCE's day of year too
-  return in;                                // dew point: gendaymtx's 11 C, as the study's sky
-}
+sky::PerezInputs perez_inputs(const Climate& c, std::size_t t) { return bench::perez_inputs_of(c.epw, c.steps, c.sun, t); }
 
 /// The continuous Perez sky of record t, as the matrix's column t would be without patches.
 engine::ContinuousSky continuous_sky(const Climate& c, std::size_t t) {
-  std::shared_ptr<const sky::SkyModel> model = sky::make_perez_sky(perez_inputs(c, t)).sky;
   const Vec3 ground{c.centre.matrix.at(0, t, 0), c.centre.matrix.at(0, t, 1), c.centre.matrix.at(0, t, 2)};
-  const Vec3 colour = sky::SkyMatrixOptions::gendaymtx_compatible().sky_colour;
-  engine::ContinuousSky sky;
-  sky.key = c.name + " record " + std::to_string(t);
-  sky.radiance_rgb = [model, ground, colour](const Vec3& w) {
-    return w.z > 0 ? mul(colour, model->radiance_rgb(w)) : ground;
-  };
-  return sky;
+  return bench::continuous_perez_sky(perez_inputs(c, t), ground, c.name + " record " + std::to_string(t));
 }
 
 /// Largest relative difference between column t of the study's matrix and the patch-centre
