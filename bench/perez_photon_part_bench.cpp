@@ -68,17 +68,12 @@
 #include "dayphoton/weather/site_clock.h"
 #include "df_only_run.h"
 #include "perez_hour.h"
+#include "sky_ratio_reference.h"
 
 using namespace dayphoton;
 namespace fs = std::filesystem;
 
 namespace {
-
-/// The ratio's largest code is 4095 / 2048: a bin whose sky varies more than this far is
-/// referred to this fraction of its largest luminance (header comment).
-constexpr double RatioHeadroom = 0.55;
-/// Directions per axis of a bin searched for its largest luminance (plus the sun's own).
-constexpr int MaximumSearchPerAxis = 33;
 
 struct Climate {
   project::Project proj;
@@ -111,26 +106,6 @@ Vec3 column(const RadianceMatrix& m, std::size_t p, std::size_t t) { return {m.a
 /// times gendaymtx's sky colour, the matrix's ground below the horizon).
 engine::ContinuousSky continuous_sky(const Climate& c, std::size_t t) {
   return bench::continuous_perez_sky(perez_inputs(c, t), column(c.centre.matrix, 0, t), "record " + std::to_string(t));
-}
-
-/// The bins' reference radiances L_ref,p (RGB) of the header comment for `sky`.
-std::vector<Vec3> reference_radiances(const engine::ContinuousSky& sky, const sky::PatchBasis& basis,
-                                      const Vec3& sun) {
-  std::vector<Vec3> out(std::size_t(basis.bin_count()));
-  out[0] = sky.radiance_rgb(Vec3{0, 0, -1});
-  for (int p = 1; p < basis.bin_count(); ++p) {
-    const Vec3 centre = sky.radiance_rgb(basis.centre(p));
-    double largest = basis.find_bin(sun) == p ? engine::luminance_of(sky.radiance_rgb(sun)) : 0.0;
-    const int n = MaximumSearchPerAxis;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        const double u1 = std::min(double(i) / (n - 1), 1 - 1e-9), u2 = std::min(double(j) / (n - 1), 1 - 1e-9);
-        largest = std::max(largest, engine::luminance_of(sky.radiance_rgb(basis.sample_direction(p, u1, u2))));
-      }
-    const double l = engine::luminance_of(centre);
-    out[std::size_t(p)] = l >= RatioHeadroom * largest ? centre : centre * (RatioHeadroom * largest / l);
-  }
-  return out;
 }
 
 /// Hours with the sun between the altitudes and a clearness bin in [bin_lo, bin_hi], n of them
@@ -256,7 +231,7 @@ int main(int argc, char** argv) {
   bool have_photon_quadrants = false;
   for (std::size_t i = 0; i < hours.size(); ++i) {
     const std::size_t t = hours[i];
-    const std::vector<Vec3> reference = reference_radiances(skies[i], plan.basis, *climate.sun[t]);
+    const std::vector<Vec3> reference = bench::reference_radiances(skies[i], plan.basis, *climate.sun[t]);
     std::vector<double> reference_lum;
     for (const Vec3& l : reference) reference_lum.push_back(engine::luminance_of(l));
     auto ratios = std::make_shared<const engine::SkyRatios>(skies[i], reference_lum);

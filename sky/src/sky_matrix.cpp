@@ -56,6 +56,21 @@ double projected_solid_angle_sr(const PatchBasis& basis, int bin) {
   return (b.azimuth_max_rad - b.azimuth_min_rad) * (s1 * s1 - s0 * s0) / 2.0;
 }
 
+/// Integral of cos(theta) over quadrant q of a sky bin (PatchBasis::quadrant): half the
+/// azimuth range times (s1^2 - s0^2) / 2 over its half in sine of altitude.
+double quadrant_projected_solid_angle_sr(const PatchBasis& basis, int bin, int q) {
+  const PatchBounds b = basis.bounds(bin);
+  const double s0 = std::sin(b.altitude_min_rad), s1 = std::sin(b.altitude_max_rad), sm = 0.5 * (s0 + s1);
+  const double half_azimuth = 0.5 * (b.azimuth_max_rad - b.azimuth_min_rad);
+  return half_azimuth * (q / 2 == 0 ? sm * sm - s0 * s0 : s1 * s1 - sm * sm) / 2.0;
+}
+
+/// Midpoints per axis of a quadrant of `basis`'s bins for the quadrant deltas: the spacing of
+/// QuadrantSamplesPerAxis on a Tregenza-sized patch, at least 1.
+int quadrant_samples_of(const PatchBasis& basis) {
+  return std::max(1, (QuadrantSamplesPerAxis + basis.multiplication_factor() - 1) / basis.multiplication_factor());
+}
+
 /// Add the sun to the 4 sky patches nearest to it, as gendaymtx does (spread_sun.h):
 /// patch radiance += w E_nv / (179 Omega).
 void spread_sun(const PatchBasis& basis, const Vec3& sun, double direct_normal_lux, RadianceMatrix& m,
@@ -176,23 +191,16 @@ SkyMatrix build_sky_matrix(const weather::HourlyWeather& weather, const SolarSit
 
   SkyMatrix result;
   result.matrix = RadianceMatrix(static_cast<std::size_t>(n_bins), n_steps, 3);
-  const int quadrant_samples =
-      std::max(1, (QuadrantSamplesPerAxis + basis.multiplication_factor() - 1) / basis.multiplication_factor());
+  const int quadrant_samples = quadrant_samples_of(basis);
   if (options.quadrant_deltas)
     result.quadrant_deltas =
         RadianceMatrix(static_cast<std::size_t>(PatchBasis::QuadrantCount * n_bins), n_steps, 1);
   const double colour_luminance = dot(RgbLuminanceWeights, options.sky_colour);
-  // Integral of cos(theta) over each quadrant (PatchBasis::quadrant): half the azimuth range
-  // times (s1^2 - s0^2) / 2 over its half in sine of altitude.
   std::vector<double> quadrant_projected_solid_angle(options.quadrant_deltas ? PatchBasis::QuadrantCount * n_bins : 0);
-  for (int bin = 1; bin < n_bins && options.quadrant_deltas; ++bin) {
-    const PatchBounds b = basis.bounds(bin);
-    const double s0 = std::sin(b.altitude_min_rad), s1 = std::sin(b.altitude_max_rad), sm = 0.5 * (s0 + s1);
-    const double half_azimuth = 0.5 * (b.azimuth_max_rad - b.azimuth_min_rad);
+  for (int bin = 1; bin < n_bins && options.quadrant_deltas; ++bin)
     for (int q = 0; q < PatchBasis::QuadrantCount; ++q)
       quadrant_projected_solid_angle[static_cast<std::size_t>(PatchBasis::QuadrantCount * bin + q)] =
-          half_azimuth * (q / 2 == 0 ? sm * sm - s0 * s0 : s1 * s1 - sm * sm) / 2.0;
-  }
+          quadrant_projected_solid_angle_sr(basis, bin, q);
   std::vector<std::optional<SunRecord>> suns(n_steps);
   std::vector<double> below_horizon_W_m2(n_steps, 0.0);  // direct normal of records below the horizon
 
@@ -399,6 +407,36 @@ RadianceMatrix sky_vector(const SkyModel& sky, const PatchBasis& basis, const Ve
   const double scale = horizontal > 0 ? target / horizontal : 0.0;
   for (int bin = 1; bin < basis.bin_count(); ++bin) set_rgb(m, bin, 0, values[bin] * scale);
   return m;
+}
+
+RadianceMatrix sky_vector_quadrant_deltas(const SkyModel& sky, const PatchBasis& basis, const RadianceMatrix& vector) {
+  const int n_bins = basis.bin_count();
+  if (vector.rows() != static_cast<std::size_t>(n_bins) || vector.columns() != 1 || vector.components() != 3)
+    throw std::invalid_argument("sky vector quadrant deltas: a vector of " + std::to_string(vector.rows()) + " x " +
+                                std::to_string(vector.columns()) + " x " + std::to_string(vector.components()) +
+                                " for " + std::to_string(n_bins) + " bins x 1 x 3");
+  RadianceMatrix deltas(static_cast<std::size_t>(PatchBasis::QuadrantCount * n_bins), 1, 1);
+  // The quadrants' means of the sky's luminance, normalised as the sky of quadrants they make
+  // keeps the sky's horizontal illuminance (as sky_vector's bin means and build_sky_matrix's
+  // quadrant deltas are), less the vector's bin values.
+  const int n = quadrant_samples_of(basis);
+  auto luminance_at = [&sky](const Vec3& d) { return dot(RgbLuminanceWeights, sky.radiance_rgb(d)); };
+  std::vector<std::array<double, PatchBasis::QuadrantCount>> mean(static_cast<std::size_t>(n_bins));
+  double horizontal = 0;
+  for (int bin = 1; bin < n_bins; ++bin) {
+    mean[static_cast<std::size_t>(bin)] = quadrant_means(basis, bin, n, luminance_at);
+    for (int q = 0; q < PatchBasis::QuadrantCount; ++q)
+      horizontal += RadianceWhiteEfficacy_lm_per_W * mean[static_cast<std::size_t>(bin)][static_cast<std::size_t>(q)] *
+                    quadrant_projected_solid_angle_sr(basis, bin, q);
+  }
+  const double scale = horizontal > 0 ? sky.horizontal_illuminance_lux() / horizontal : 0.0;
+  for (int bin = 1; bin < n_bins; ++bin) {
+    const double value = dot(RgbLuminanceWeights, Vec3{vector.at(bin, 0, 0), vector.at(bin, 0, 1), vector.at(bin, 0, 2)});
+    for (int q = 0; q < PatchBasis::QuadrantCount; ++q)
+      deltas.at(static_cast<std::size_t>(PatchBasis::QuadrantCount * bin + q), 0, 0) =
+          static_cast<float>(scale * mean[static_cast<std::size_t>(bin)][static_cast<std::size_t>(q)] - value);
+  }
+  return deltas;
 }
 
 double column_horizontal_illuminance_lux(const RadianceMatrix& matrix, std::size_t column,

@@ -213,6 +213,21 @@ SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& case
   return out;
 }
 
+RadianceMatrix point_in_time_cie_quadrant_deltas(const std::vector<project::PointInTimeSpec>& cases,
+                                                 const sky::SolarSite& site, const sky::PatchBasis& basis,
+                                                 double ground_reflectance) {
+  RadianceMatrix out(static_cast<std::size_t>(sky::PatchBasis::QuadrantCount * basis.bin_count()), cases.size(), 1);
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const project::PointInTimeSpec& c = cases[k];
+    if (c.sky != project::PointSky::CieGeneral || !cie_sun(c, site).sun_up) continue;
+    const CieCaseSky cs = cie_case_sky(c, site, ground_reflectance);
+    const RadianceMatrix deltas =
+        sky::sky_vector_quadrant_deltas(*cs.sky, basis, sky::sky_vector(*cs.sky, basis, cs.ground_rgb));
+    copy_column(deltas, 0, out, k);
+  }
+  return out;
+}
+
 std::vector<std::string> describe_points_in_time(const std::vector<project::PointInTimeSpec>& cases,
                                                  const SkyAndSuns& skies) {
   std::vector<std::string> lines;

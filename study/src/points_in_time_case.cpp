@@ -11,6 +11,7 @@
 #include "dayphoton/study/point_in_time.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/results_model_builder.h"
+#include "dayphoton/study/sub_patch_shares.h"
 #include "sky_steps.h"
 #include "sun_bin_steps.h"
 
@@ -21,6 +22,7 @@ namespace dayphoton::study {
 void run_points_in_time(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                         const std::vector<RadianceMatrix>& sky_coefficients,
                         const std::vector<engine::DaylightCoefficients>& direct_parts,
+                        const std::vector<SubPatchShares>& shares, const std::vector<SubPatchShares>& photon_shares,
                         const std::vector<std::vector<double>>& df_photon_corrections_lux,
                         const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx) {
   const project::Simulation& sim = project.simulation;
@@ -33,6 +35,7 @@ void run_points_in_time(const project::Project& project, const std::string& pref
   const SkyAndSuns* annual = weather_cases ? &sky_and_suns(project, ctx) : nullptr;
   const sky::SolarSite site = point_in_time_site(project, ctx.sun_site);
   const SkyAndSuns skies = point_in_time_skies(cases, site, basis, sim.ground_reflectance, annual);
+  const RadianceMatrix cie_deltas = point_in_time_cie_quadrant_deltas(cases, site, basis, sim.ground_reflectance);
   for (const std::string& line : describe_points_in_time(cases, skies)) ctx.log.line(prefix + "point in time " + line);
   std::vector<GridSun> sun;
   std::optional<engine::SunBins> bins;
@@ -49,10 +52,9 @@ void run_points_in_time(const project::Project& project, const std::string& pref
   for (const project::PointInTimeSpec& c : cases) names.push_back(c.name);
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
-    // A weather case's direct part with the annual table's sub-patch correction.
-    const SubPatchShares shares = sub_patch_shares(direct_parts.at(g));
+    // A weather case with the annual table's sub-patch correction (direct and photon parts).
     metrics::IlluminanceTable table = annual_illuminance(sky_coefficients[g], skies.sky.matrix, skies.sky.steps, 0,
-                                                         &shares, &skies.sky.quadrant_deltas);
+                                                         &shares.at(g), &skies.sky.quadrant_deltas);
     if (bins) {
       const metrics::IlluminanceTable direct = direct_sun_table(sun[g].direct, skies.suns, skies.sky.steps);
       const metrics::IlluminanceTable indirect =
@@ -83,6 +85,11 @@ void run_points_in_time(const project::Project& project, const std::string& pref
         const double scale = df_sky > 0 ? case_sky / df_sky : 0.0;
         const std::vector<double>& miss = df_photon_corrections_lux.at(g);
         for (std::size_t i = 0; i < correction.size(); ++i) correction[i] += scale * miss.at(i);
+      }
+      // A cie (general) case's photon part on the sub-patches of its sky.
+      if (cases[k].sky == project::PointSky::CieGeneral) {
+        const std::vector<double> photon = sub_patch_correction_lux(photon_shares.at(g), cie_deltas, k);
+        for (std::size_t i = 0; i < correction.size(); ++i) correction[i] += photon.at(i);
       }
       for (std::size_t i = 0; i < table.sensor_count(); ++i)
         table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + correction.at(i));

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dayphoton/core/radiance_matrix.h"
+#include "dayphoton/study/sub_patch_shares.h"
 #include "run_context.h"
 
 namespace dayphoton::study {
@@ -17,12 +18,17 @@ namespace dayphoton::study {
 /// `direct_parts`: per grid, the sky coefficients' direct part with its continuous skies
 /// (engine::DaylightCoefficients::direct_on_skies): a CIE case's direct part is taken from its
 /// continuous sky (SimulationPlan::point_in_time_sky) instead of the patch means, as the
-/// daylight factor's is. `df_photon_corrections_lux`: per grid, what the basis misses of the
-/// DF's photon part (continuous_sky_photon_correction_lux), which a cie_overcast case, of the
-/// DF sky's shape, takes scaled to its own sky, so it stays DF x E_h / 100.
+/// daylight factor's is. `shares`, `photon_shares`: per grid, the sub-patch shares of the
+/// whole coefficients and of their photon part alone (sub_patch_shares.h): a weather case
+/// takes the whole coefficients on sub-patches with its hour's quadrant deltas, as the annual
+/// product does, a CIE general case its photon part with its own sky's
+/// (point_in_time_cie_quadrant_deltas). `df_photon_corrections_lux`: per grid, what the basis
+/// misses of the DF's photon part (continuous_sky_photon_correction_lux), which a cie_overcast
+/// case, of the DF sky's shape, takes scaled to its own sky, so it stays DF x E_h / 100.
 void run_points_in_time(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                         const std::vector<RadianceMatrix>& sky_coefficients,
                         const std::vector<engine::DaylightCoefficients>& direct_parts,
+                        const std::vector<SubPatchShares>& shares, const std::vector<SubPatchShares>& photon_shares,
                         const std::vector<std::vector<double>>& df_photon_corrections_lux,
                         const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx);
 

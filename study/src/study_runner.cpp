@@ -182,6 +182,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   // Per grid, for the point-in-time cases: the direct part alone (with its continuous skies).
   std::vector<engine::DaylightCoefficients> point_direct_parts;
   std::vector<std::vector<double>> point_photon_corrections;  // per grid, lux under the DF sky
+  // Per grid, the whole coefficients' and the photon part's sub-patch shares (sub_patch_shares.h).
+  std::vector<SubPatchShares> point_shares, point_photon_shares;
   std::vector<std::string> folders;
   for (std::size_t g = 0; g < description.grids.size(); ++g) {
     const SensorGrid& grid = description.grids[g];
@@ -292,13 +294,15 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     sky_variances.push_back(sky_variance_of(*coefficients[g]));
     if (!project.points_in_time.empty()) {
       point_photon_corrections.push_back(continuous_sky_photon_correction_lux(*coefficients[g], overcast_vector));
+      point_shares.push_back(annual_product || project.outputs.coefficients ? sub_patches.back()
+                                                                            : sub_patch_shares(*coefficients[g]));
+      point_photon_shares.push_back(sub_patch_shares(*coefficients[g], SharesOf::PhotonPart));
       engine::DaylightCoefficients part;
       part.sensors = coefficients[g]->sensors;
       part.sources = coefficients[g]->sources;
       part.direct = std::move(coefficients[g]->direct);
       part.direct_variance = std::move(coefficients[g]->direct_variance);
       part.direct_on_skies = std::move(coefficients[g]->direct_on_skies);
-      part.direct_quadrants = std::move(coefficients[g]->direct_quadrants);
       point_direct_parts.push_back(std::move(part));
     }
     coefficients[g].reset();
@@ -477,7 +481,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   }
   // 7. Point-in-time cases.
   if (!project.points_in_time.empty())
-    run_points_in_time(project, prefix, cs, coefficient_matrices, point_direct_parts, point_photon_corrections, folders,
+    run_points_in_time(project, prefix, cs, coefficient_matrices, point_direct_parts, point_shares, point_photon_shares,
+                       point_photon_corrections, folders,
                        grids_json, ctx);
   return grids_json;
 }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "dayphoton/core/units.h"
 #include "dayphoton/engine/estimate_variance.h"
 
 namespace dayphoton::study {
@@ -39,13 +40,14 @@ SubPatchShares sub_patch_shares_of(const RadianceMatrix& m, std::size_t sensors,
   return out;
 }
 
-SubPatchShares sub_patch_shares(const engine::DaylightCoefficients& c) {
+SubPatchShares sub_patch_shares(const engine::DaylightCoefficients& c, SharesOf of) {
   SubPatchShares out;
   out.sensors = c.sensors;
   out.bins = c.sources;
-  if (c.direct_quadrants.empty()) return out;
+  const bool direct = of == SharesOf::Coefficient;
+  if (direct ? c.direct_quadrants.empty() : c.photon_quadrants.empty()) return out;
   const std::size_t n = c.sensors * c.sources;
-  if (c.direct_quadrants.size() != n * engine::StoredQuadrants || c.direct.size() != n)
+  if (direct && (c.direct_quadrants.size() != n * engine::StoredQuadrants || c.direct.size() != n))
     throw std::invalid_argument("sub-patch shares: " + std::to_string(c.direct_quadrants.size()) + " shares and " +
                                 std::to_string(c.direct.size()) + " direct coefficients for " +
                                 std::to_string(c.sensors) + " sensors x " + std::to_string(c.sources) + " sources");
@@ -60,11 +62,35 @@ SubPatchShares sub_patch_shares(const engine::DaylightCoefficients& c) {
   out.values.resize(n * SubPatchShares::ValuesPerBin);
   for (std::size_t i = 0; i < n; ++i) {
     float* v = out.values.data() + i * SubPatchShares::ValuesPerBin;
-    v[0] = static_cast<float>(engine::luminance_of(photon ? c.direct[i] + c.caustic[i] + c.global[i] : c.direct[i]));
+    const Vec3 whole = !photon ? c.direct[i] : direct ? c.direct[i] + c.caustic[i] + c.global[i] : c.caustic[i] + c.global[i];
+    v[0] = static_cast<float>(engine::luminance_of(whole));
     for (std::size_t q = 0; q < engine::StoredQuadrants; ++q) {
       const std::size_t k = i * engine::StoredQuadrants + q;
-      v[1 + q] = c.direct_quadrants[k] + (photon ? c.photon_quadrants[k] : 0.0f);
+      v[1 + q] = (direct ? c.direct_quadrants[k] : 0.0f) + (photon ? c.photon_quadrants[k] : 0.0f);
     }
+  }
+  return out;
+}
+
+std::vector<double> sub_patch_correction_lux(const SubPatchShares& shares, const RadianceMatrix& quadrant_deltas,
+                                             std::size_t column) {
+  std::vector<double> out(shares.sensors, 0.0);
+  if (shares.empty()) return out;
+  if (quadrant_deltas.rows() != 4 * shares.bins || column >= quadrant_deltas.columns() ||
+      quadrant_deltas.components() != 1 || shares.values.size() != shares.sensors * shares.bins * SubPatchShares::ValuesPerBin)
+    throw std::invalid_argument("sub-patch correction: shares of " + std::to_string(shares.bins) +
+                                " bins against quadrant deltas of " + std::to_string(quadrant_deltas.rows()) +
+                                " rows, column " + std::to_string(column) + " of " +
+                                std::to_string(quadrant_deltas.columns()));
+  for (std::size_t s = 0; s < shares.sensors; ++s) {
+    double sum = 0;
+    for (std::size_t p = 0; p < shares.bins; ++p) {
+      const float* v = shares.values.data() + (s * shares.bins + p) * SubPatchShares::ValuesPerBin;
+      const double q3 = double(v[0]) - double(v[1]) - double(v[2]) - double(v[3]);
+      for (std::size_t q = 0; q < 3; ++q) sum += double(v[1 + q]) * double(quadrant_deltas.at(4 * p + q, column, 0));
+      sum += q3 * double(quadrant_deltas.at(4 * p + 3, column, 0));
+    }
+    out[s] = RadianceWhiteEfficacy_lm_per_W * sum;
   }
   return out;
 }

@@ -144,6 +144,15 @@ BelowHorizonDirect below_horizon_direct(const weather::HourlyWeather& weather, c
 RadianceMatrix sky_vector(const SkyModel& sky, const PatchBasis& basis, const Vec3& ground_radiance_rgb,
                           PatchValue patch_value = PatchValue::Mean, int mean_samples_per_axis = 6);
 
+/// The quadrant deltas of one sky model's vector (sky_vector, PatchValue::Mean), in
+/// SkyMatrix::quadrant_deltas' layout and units ((4 x bins) x 1 x 1, luminance): the sky's
+/// mean luminance over each quadrant of each sky bin by the same QuadrantSamplesPerAxis^2
+/// midpoint rule, normalised so that the sky of quadrants keeps the model's horizontal
+/// illuminance, less the vector's bin value; zero for the ground. For the sub-patch correction
+/// of one sky's photon part (a point-in-time case's CIE sky). std::invalid_argument unless
+/// `vector` is bins x 1 x 3.
+RadianceMatrix sky_vector_quadrant_deltas(const SkyModel& sky, const PatchBasis& basis, const RadianceMatrix& vector);
+
 /// Horizontal illuminance (lux) of a sky column: sum over sky patches of 179 L x (integral of
 /// cos(theta) over the patch), L the RADIANCE luminance of the RGB triple; ground excluded.
 /// Exact for PatchValue::Mean columns; Centre columns are normalised with gendaymtx's

@@ -72,6 +72,16 @@ std::vector<engine::ContinuousSky> point_in_time_continuous_skies(const std::vec
                                                                   const sky::SolarSite& site, double ground_reflectance,
                                                                   std::vector<int>& sky_of_case);
 
+/// The photon part's sub-patch correction of the CIE general cases (docs/photon-map.md, "The
+/// point-in-time photon part"): (4 x bins) x cases x 1 in sky::SkyMatrix::quadrant_deltas'
+/// layout, case k's column sky::sky_vector_quadrant_deltas of its sky against its column of
+/// point_in_time_skies; zero for the other cases (a cie_overcast case's photon part takes the
+/// daylight factor's continuous-sky correction, a weather case's deltas are its hour's in
+/// point_in_time_skies) and for a general sky whose sun is below the horizon.
+RadianceMatrix point_in_time_cie_quadrant_deltas(const std::vector<project::PointInTimeSpec>& cases,
+                                                 const sky::SolarSite& site, const sky::PatchBasis& basis,
+                                                 double ground_reflectance);
+
 /// One sentence per case for the run log and summary.json: "winter_noon: 12-21 12:00 LST,
 /// CIE general sky type 12, sun at 28.8 deg altitude, 180.1 deg azimuth, 80000 lx direct
 /// normal, 10000 lx diffuse horizontal".

@@ -65,8 +65,26 @@ inline constexpr const char* SkyVectorPatchUniformNote =
     "(measured on the reference office's work plane: +0.55 % on average, up to 1.5 %; docs/outputs.md, "
     "\"daylight_factor.csv\")";
 
-/// The shares of coefficients `c` (empty when c.direct_quadrants is). Throws
-/// std::invalid_argument when the shares do not match the coefficients' shape.
-SubPatchShares sub_patch_shares(const engine::DaylightCoefficients& c);
+/// Which parts of a coefficient the shares are of.
+enum class SharesOf {
+  /// The whole coefficient (direct + photon; the direct part alone when the photon part has
+  /// no shares): the annual product's and a weather point-in-time case's.
+  Coefficient,
+  /// The photon part alone (caustic + global and DaylightCoefficients::photon_quadrants): a
+  /// CIE point-in-time case's, whose direct part comes from its continuous sky.
+  PhotonPart,
+};
+
+/// The shares of coefficients `c` (empty when c.direct_quadrants is, or for PhotonPart when
+/// c.photon_quadrants is). Throws std::invalid_argument when the shares do not match the
+/// coefficients' shape.
+SubPatchShares sub_patch_shares(const engine::DaylightCoefficients& c, SharesOf of = SharesOf::Coefficient);
+
+/// Per sensor, the sub-patch correction of one sky column (lux): 179 sum_p sum_q Q[s][p][q]
+/// d_pq, d = `quadrant_deltas` ((4 x bins) x steps x 1, sky::SkyMatrix::quadrant_deltas'
+/// layout) at `column`, the same sum annual_illuminance adds with these shares. Zeros for
+/// empty shares; std::invalid_argument if the shapes do not match.
+std::vector<double> sub_patch_correction_lux(const SubPatchShares& shares, const RadianceMatrix& quadrant_deltas,
+                                             std::size_t column);
 
 }  // namespace dayphoton::study
