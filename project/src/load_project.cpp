@@ -332,15 +332,16 @@ class Loader {
     if (ok) m_project.points_in_time.push_back(std::move(c));
   }
 
-  /// "MM-DD" (also "M-D"): a date of a non-leap year.
+  /// "MM-DD" (also "M-D"): a date of the calendar, 02-29 included (a weather case needs the
+  /// weather file to hold that day, point_in_time.h; a CIE case's sun is a leap year's).
   bool parse_month_day(const std::string& text, const SourceLocation& at, int& month, int& day) {
-    static const int days_in_month[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    static const int days_in_month[12] = {31, 29, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
     const std::size_t dash = text.find('-');
     long long m = 0, d = 0;
     if (dash == std::string::npos || !parse_integer(text.substr(0, dash), m) || !parse_integer(text.substr(dash + 1), d) ||
         m < 1 || m > 12 || d < 1 || d > days_in_month[m - 1]) {
       m_reporter.error(at, "bad date '" + printable_name(text) +
-                               "' for 'date': expected month-day of a non-leap year, e.g. 03-21");
+                               "' for 'date': expected month-day, e.g. 03-21");
       return false;
     }
     month = static_cast<int>(m);

@@ -528,7 +528,7 @@ std::vector<SectionSchema> build_schema() {
   }});
   s.push_back({"point_in_time", "one date and local standard time under one sky: illuminance per sensor (sky, sun and their reflections)", {
       P("name", T::String, "case name: a column of point_in_time.csv and an image name (the folder-name rule)").required(),
-      P("date", T::String, "month-day, e.g. 03-21 (29 February is not a date of the study's year)").required(),
+      P("date", T::String, "month-day, e.g. 03-21; 02-29 with sky: weather needs a weather file that holds that day, a CIE sky takes a leap year's sun").required(),
       P("time", T::String, "local standard time (no daylight saving), HH:MM or decimal hours, 0 to 24").required(),
       P("sky", T::Choice, "cie_overcast: the CIE standard overcast sky, no sun; cie: the CIE standard general sky of cie_type with its sun; weather: the weather file's hour that contains the time, EPW hour h covering (h-1, h] (15:00 is hour 15) (its Perez sky and sun, as in the annual study)").choices({"cie_overcast", "cie", "weather"}).required(),
       P("cie_type", T::Integer, "CIE standard general sky type (ISO 15469:2004 / CIE S 011), with sky: cie").range(1, 15),

@@ -58,10 +58,11 @@ void copy_column(const RadianceMatrix& from, std::size_t from_column, RadianceMa
     for (int c = 0; c < from.components(); ++c) to.at(bin, to_column, c) = from.at(bin, from_column, c);
 }
 
-/// The sun of a CIE case: NREL SPA for the site at the case's date and time.
+/// The sun of a CIE case: NREL SPA for the site at the case's date and time (02-29 in a leap
+/// year, PointInTimeLeapSolarYear).
 sky::SolarPosition cie_sun(const project::PointInTimeSpec& c, const sky::SolarSite& site) {
-  return sky::solar_position(site, sky::SolarTime{PointInTimeSolarYear, c.month, c.day, c.hour_lst},
-                             sky::SolarPositionOptions{});
+  const int year = c.month == 2 && c.day == 29 ? PointInTimeLeapSolarYear : PointInTimeSolarYear;
+  return sky::solar_position(site, sky::SolarTime{year, c.month, c.day, c.hour_lst}, sky::SolarPositionOptions{});
 }
 
 std::string sun_below_horizon(const project::PointInTimeSpec& c, const sky::SolarPosition& sun) {
@@ -190,9 +191,14 @@ SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& case
     if (c.sky == project::PointSky::Weather) {
       if (!annual) throw std::logic_error("point in time: a weather case without the annual sky");
       const std::optional<std::size_t> t = weather_step(annual->sky, c);
-      if (!t)
+      if (!t) {
+        const bool leap_day = c.month == 2 && c.day == 29 &&
+                              std::none_of(annual->sky.steps.begin(), annual->sky.steps.end(),
+                                           [](const metrics::TimeStamp& s) { return s.month == 2 && s.day == 29; });
         throw InputError(c.location, "point-in-time case '" + c.name + "': the weather file has no record for " +
-                                         clock_text(c));
+                                         clock_text(c) +
+                                         (leap_day ? " (it has no 29 February: not a leap year's records)" : ""));
+      }
       copy_column(annual->sky.matrix, *t, out.sky.matrix, k);
       if (annual->sky.quadrant_deltas.rows() == out.sky.quadrant_deltas.rows())
         copy_column(annual->sky.quadrant_deltas, *t, out.sky.quadrant_deltas, k);

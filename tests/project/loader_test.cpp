@@ -308,12 +308,20 @@ TEST(ProjectLoader, PointsInTimeTakeTheKeysOfTheirSky) {
   EXPECT_DOUBLE_EQ(p.points_in_time[0].diffuse_horizontal_illuminance_lux, 10000);
   EXPECT_DOUBLE_EQ(p.points_in_time[1].hour_lst, 15.25);
   EXPECT_DOUBLE_EQ(p.points_in_time[1].diffuse_horizontal_illuminance_lux, 20000);
+  // 29 February is a date (a weather case needs the file to hold it; a CIE case's sun is a leap
+  // year's: PointInTime tests of study/).
+  const Project leap = load_project_from_string(
+      head + "  - {name: leap, date: 02-29, time: 12, sky: cie_overcast, diffuse_horizontal_illuminance: 20000}\n",
+      FakePath);
+  ASSERT_EQ(leap.points_in_time.size(), 1u);
+  EXPECT_EQ(leap.points_in_time[0].month, 2);
+  EXPECT_EQ(leap.points_in_time[0].day, 29);
   EXPECT_EQ(errors_of(head +
-                      "  - {name: a, date: 02-29, time: \"25:00\", sky: cie}\n"
+                      "  - {name: a, date: 02-30, time: \"25:00\", sky: cie}\n"
                       "  - {name: a, date: 1-1, time: 1, sky: cie_overcast, cie_type: 3, direct_normal_illuminance: 5}\n"
                       "  - {name: w, date: 1-1, time: 12, sky: weather, diffuse_horizontal_illuminance: 5}\n"),
             (std::vector<std::string>{
-                "6:21: bad date '02-29' for 'date': expected month-day of a non-leap year, e.g. 03-21",
+                "6:21: bad date '02-30' for 'date': expected month-day, e.g. 03-21",
                 "6:34: bad time '25:00' for 'time': expected local standard time as HH:MM or decimal hours in [0, 24]",
                 "6:5: missing required key 'cie_type' in points_in_time item (sky: cie)",
                 "6:5: missing required key 'direct_normal_illuminance' in points_in_time item (sky: cie; the sun's "

@@ -15,7 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
+#include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
 #include "dayphoton/sky/solar_position.h"
@@ -320,6 +322,98 @@ TEST(PointInTimeWeatherCase, TakesTheRecordWhoseHourContainsTheTime) {
     EXPECT_EQ(skies.sky.matrix.at(1, k, 0), static_cast<float>(expected_record[k]));
     EXPECT_EQ(skies.suns[k].step, k);
     EXPECT_DOUBLE_EQ(skies.suns[k].direct_normal_illuminance_lux, 1000.0 * expected_record[k]);
+  }
+}
+
+}  // namespace
+}  // namespace dayphoton::study
+
+namespace dayphoton::study {
+namespace {
+
+// 29 February (docs/project-format.md "points_in_time"): a weather case takes the record of a
+// weather file that holds the day (a leap year's: tests/data/weather/leap_day_declared.epw,
+// 2016-02-28 to 03-01, whose 02-29 12:00 record has 400 W/m2 direct normal), end to end; a
+// CIE case's sun is that of 2004-02-29, between those of 02-28 and 03-01 of the study's year.
+TEST(PointInTimeLeapDay, AWeatherCaseTakesTheLeapDaysRecordOfALeapYearsFile) {
+  std::string yaml = Project;
+  const std::string site = "site: {latitude: 37.72, longitude: -122.22, time_zone: -8}\nstudy: daylight_factor\n";
+  yaml.replace(yaml.find(site), site.size(),
+               "site: {latitude: 37.72, longitude: -122.22, time_zone: -8}\nstudy: annual\nweather: " +
+                   std::string(DAYPHOTON_TEST_DATA_DIR) + "/weather/leap_day_declared.epw\n");
+  const std::string outputs = "outputs: {images: false, report: false}\n";
+  yaml.replace(yaml.find(outputs), outputs.size(),
+               "outputs: {images: false, report: false, annual_illuminance: false, metrics: false}\n");
+  yaml = yaml.substr(0, yaml.find("points_in_time:\n")) +
+         "points_in_time:\n"
+         "  - {name: leap_noon, date: 02-29, time: \"12:00\", sky: weather}\n"
+         "  - {name: leap_clear, date: 02-29, time: \"12:00\", sky: cie, cie_type: 12,\n"
+         "     diffuse_horizontal_illuminance: 5000, direct_normal_illuminance: 80000}\n";
+  const fs::path dir = test::process_temp_dir() / "dayphoton_point_in_time_leap_day";
+  run_project(dir, yaml);
+  std::vector<std::string> header;
+  const std::vector<std::vector<double>> pit = read_csv(dir / "out" / "floor" / "point_in_time.csv", header);
+  fs::remove_all(dir);
+  ASSERT_EQ(header.size(), 6u);
+  EXPECT_EQ(header[4], "leap_noon_lux");
+  EXPECT_EQ(header[5], "leap_clear_lux");
+  ASSERT_FALSE(pit.empty());
+  double weather_sum = 0, clear_sum = 0;
+  for (const std::vector<double>& row : pit) {
+    weather_sum += row.at(4);
+    clear_sum += row.at(5);
+  }
+  EXPECT_GT(weather_sum, 0.0);
+  EXPECT_GT(clear_sum, 0.0);
+}
+
+TEST(PointInTimeLeapDay, ACieCasesSunOn0229IsALeapYearsBetween0228And0301) {
+  const sky::SolarSite site{37.72, -122.22, -8, 0};
+  std::vector<project::PointInTimeSpec> cases(3);
+  const int dates[3][2] = {{2, 28}, {2, 29}, {3, 1}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    cases[k].name = "case" + std::to_string(k);
+    cases[k].month = dates[k][0];
+    cases[k].day = dates[k][1];
+    cases[k].hour_lst = 12.0;
+    cases[k].sky = project::PointSky::CieGeneral;
+    cases[k].cie_type = 12;
+    cases[k].direct_normal_illuminance_lux = 50000;
+  }
+  const SkyAndSuns skies = point_in_time_skies(cases, site, sky::PatchBasis::tregenza(), 0.2, nullptr);
+  ASSERT_EQ(skies.suns.size(), 3u);
+  const double z0 = skies.suns[0].direction.z, z1 = skies.suns[1].direction.z, z2 = skies.suns[2].direction.z;
+  EXPECT_LT(z0, z1);  // the noon sun climbs about 0.4 degree a day in late February at 37.7 N
+  EXPECT_LT(z1, z2);
+  const sky::SolarPosition leap =
+      sky::solar_position(site, sky::SolarTime{PointInTimeLeapSolarYear, 2, 29, 12.0}, sky::SolarPositionOptions{});
+  EXPECT_NEAR(z1, leap.direction.z, 1e-6);
+  EXPECT_EQ(check_points_in_time(cases, site).size(), 3u);
+}
+
+// A weather file without 29 February (a non-leap year's records) refuses a weather case on
+// that day with a located error that says why.
+TEST(PointInTimeLeapDay, AWeatherCaseOn0229WithoutTheDayIsALocatedError) {
+  const sky::PatchBasis basis = sky::PatchBasis::tregenza();
+  SkyAndSuns annual;
+  annual.sky.matrix = RadianceMatrix(static_cast<std::size_t>(basis.bin_count()), 48, 3);
+  for (int day = 0; day < 2; ++day)
+    for (int h = 1; h <= 24; ++h) annual.sky.steps.push_back({2 + day, day == 0 ? 28 : 1, h - 0.5});
+  project::PointInTimeSpec c;
+  c.name = "leap";
+  c.month = 2;
+  c.day = 29;
+  c.hour_lst = 12;
+  c.sky = project::PointSky::Weather;
+  c.location = SourceLocation{"project.yaml", 9, 5};
+  try {
+    point_in_time_skies({c}, sky::SolarSite{37.72, -122.22, -8, 2}, basis, 0.2, &annual);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("project.yaml:9:5"), std::string::npos) << what;
+    EXPECT_NE(what.find("the weather file has no record for 02-29 12:00 (it has no 29 February"), std::string::npos)
+        << what;
   }
 }
 

@@ -38,6 +38,9 @@ namespace dayphoton::study {
 /// refraction, for this year (a date of the study has no year; the sun's position at a given
 /// date and time moves by less than 0.02 degree from one year to the next within a leap cycle).
 constexpr int PointInTimeSolarYear = 2001;
+/// The year of a CIE case dated 02-29, which only a leap year has: the day between 02-28 and
+/// 03-01 of the year above (its sun within the same 0.02 degree).
+constexpr int PointInTimeLeapSolarYear = 2004;
 
 /// The site the CIE cases' sun is computed for: the annual study's sun site (`sun_site`, the
 /// weather header's under `site.from_weather`), else the project's own.
@@ -56,7 +59,7 @@ std::vector<std::string> check_points_in_time(const std::vector<project::PointIn
 /// horizon and has direct light. `annual` (the annual study's sky without the sun and its
 /// suns) is needed only by `sky: weather` cases. Throws InputError located at a case's `time`
 /// for a CIE general sky whose sun is below the horizon, or at the case for a weather case
-/// whose time the weather file does not hold.
+/// whose time the weather file does not hold (02-29 of a file without that day: said so).
 SkyAndSuns point_in_time_skies(const std::vector<project::PointInTimeSpec>& cases, const sky::SolarSite& site,
                                const sky::PatchBasis& basis, double ground_reflectance,
                                const SkyAndSuns* annual);
