@@ -30,6 +30,7 @@
 #include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/recorded_metric_settings.h"
 #include "dayphoton/study/result_files.h"
+#include "dayphoton/study/run_inputs.h"
 #include "dayphoton/study/sub_patch_shares.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/hourly_weather.h"
@@ -252,6 +253,9 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
                                : std::string("--weather is required (or --project, whose weather file is used)"));
     // A missing weather file (or a FIFO) is bad input (exit 1): read_epw says so, located.
     inputs.weather = weather::read_hourly_weather(inputs.weather_path);
+    // A part-year file, as `check` and `run` say it (on stderr even with --quiet).
+    if (const std::optional<std::string> w = study::partial_year_message(*inputs.weather, inputs.weather_path))
+      std::cerr << "warning: " << *w << '\n';
   }
   const weather::HourlyWeather& weather = *inputs.weather;
   const std::string& weather_path = inputs.weather_path;

@@ -8,20 +8,27 @@
 
 namespace dayphoton::study {
 
-std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather) {
+std::optional<std::string> partial_year_message(const weather::HourlyWeather& weather, const std::string& path) {
   const std::size_t year_hours = (weather.leap_day_present ? 366u : 365u) * 24u;
-  if (!project.outputs.metrics || weather.records.empty() || weather.records.size() >= year_hours) return std::nullopt;
+  if (weather.records.empty() || weather.records.size() >= year_hours) return std::nullopt;
   const weather::WeatherRecord& first = weather.records.front();
   const weather::WeatherRecord& last = weather.records.back();
+  return "the weather file " + path + " holds " + std::to_string(weather.records.size()) + " hourly records (" +
+         std::to_string(first.month) + "/" + std::to_string(first.day) + " to " + std::to_string(last.month) + "/" +
+         std::to_string(last.day) + "), not a whole year of " + std::to_string(year_hours) +
+         ": the annual metrics count these records only, so ASE's hours above its limit per year and EN 17037's "
+         "daylight hours (half the records) are not the standards' yearly quantities, and DA and sDA lack the "
+         "missing days; use a whole-year file for compliance";
+}
+
+std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather) {
+  if (!project.outputs.metrics) return std::nullopt;
+  const std::optional<std::string> message = partial_year_message(weather, project.weather.path_as_written);
+  if (!message) return std::nullopt;
   Diagnostic d;
   d.severity = Severity::Warning;
   d.location = project.weather.location;
-  d.message = "the weather file " + project.weather.path_as_written + " holds " + std::to_string(weather.records.size()) +
-              " hourly records (" + std::to_string(first.month) + "/" + std::to_string(first.day) + " to " +
-              std::to_string(last.month) + "/" + std::to_string(last.day) + "), not a whole year of " +
-              std::to_string(year_hours) + ": the annual metrics count these records only, so ASE's " +
-              "hours above its limit per year and EN 17037's daylight hours (half the records) are not the " +
-              "standards' yearly quantities, and DA and sDA lack the missing days; use a whole-year file for compliance";
+  d.message = *message;
   return d;
 }
 

@@ -286,6 +286,20 @@ else
   echo "FAIL annual_tables"; failed=$((failed + 1))
 fi
 
+# annual --weather with a part-year file warns as check and run do (study::partial_year_message,
+# on stderr even with --quiet); a whole-year file does not.
+"$bin" annual --coefficients tests/cli/cases/annual_grid --weather tests/data/weather/hourly.wea -o "$scratch/annual_part" \
+  --quiet 2>"$scratch/annual_part.err"
+code=$?
+"$bin" annual --coefficients tests/cli/cases/annual_grid --weather $EPW -o "$scratch/annual_whole" --quiet \
+  2>"$scratch/annual_whole.err"
+if [ "$code" -eq 0 ] && grep -qF "warning: the weather file tests/data/weather/hourly.wea holds 48 hourly records (1/1 to 1/2), not a whole year of 8760: the annual metrics count these records only" "$scratch/annual_part.err" &&
+   ! grep -q "not a whole year" "$scratch/annual_whole.err"; then
+  echo "ok   annual_part_year_warning"; passed=$((passed + 1))
+else
+  echo "FAIL annual_part_year_warning (exit $code)"; cat "$scratch/annual_part.err" "$scratch/annual_whole.err"; failed=$((failed + 1))
+fi
+
 # sun: one row per record plus the header, written atomically to -o.
 "$bin" sun projects/office/USA_CA_Oakland.Intl.AP.724930_TMY3.epw -o "$scratch/sun.csv"
 rows=$(wc -l <"$scratch/sun.csv")

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
@@ -28,6 +29,9 @@ struct RunInputs {
 /// seasons. A warning located at the project's `weather` key, naming the file, the records
 /// and the days it covers, when the project computes metrics; none for a whole year.
 std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather);
+/// The text of that warning for the weather file as `path` names it (none for a whole year),
+/// whatever computes the metrics: `dayphoton annual --weather FILE` prints it without a project.
+std::optional<std::string> partial_year_message(const weather::HourlyWeather& weather, const std::string& path);
 
 /// The built-in daylight-saving rules (`daylight_saving: eu` or `us`) are the northern
 /// hemisphere's: they set the clock ahead from March to October or November, which is winter
