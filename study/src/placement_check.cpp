@@ -160,6 +160,7 @@ std::vector<bool> on_cut_flags(const engine::Scene& scene, const SensorGrid& gri
 struct NearCutSensors {
   std::size_t count = 0, nearest_sensor = 0;
   double nearest_m = 0;
+  std::vector<std::size_t> sensors;  ///< their indices in the set
 };
 NearCutSensors near_cut_sensors_of(const engine::Scene& scene, const SensorGrid& grid) {
   NearCutSensors out;
@@ -169,6 +170,7 @@ NearCutSensors near_cut_sensors_of(const engine::Scene& scene, const SensorGrid&
   const std::vector<std::size_t> near = engine::sensors_near_cuts(plane, grid.points);
   if (near.empty()) return out;
   out.count = near.size();
+  out.sensors = near;
   out.nearest_sensor = near.front();
   out.nearest_m = engine::NearCutGather_m;
   for (std::size_t i : near) {
@@ -260,12 +262,15 @@ std::string tracing_remedy(const Surface& s, const SceneDescription& description
 constexpr std::size_t GatherProbeSensors = 64;
 constexpr int GatherProbeLattice = 8;
 
-/// The warning for sets estimated by final gather whose rays reach surfaces outside
-/// simulation.region_of_interest (header comment).
+/// The warning for sets estimated by final gather, and planar sets' gathered rows next to a
+/// cut (`near_cut_rows[g]`: their indices, empty where the plane's estimate serves them), whose
+/// rays reach surfaces outside simulation.region_of_interest (header comment).
 void check_gather_outside_region(const engine::Scene& scene, const std::vector<SensorGrid>& grids,
+                                 const std::vector<std::vector<std::size_t>>& near_cut_rows,
                                  const project::Project& proj, std::vector<Diagnostic>& warnings) {
   const auto& roi = proj.simulation.region_of_interest;
-  if (!roi || proj.simulation.point_estimate != project::PointEstimate::Gather) return;
+  if (!roi) return;
+  const bool gather = proj.simulation.point_estimate == project::PointEstimate::Gather;
   const SceneDescription& description = scene.description();
   const double north_deg = proj.site.rotation_to_true_north_deg();
   constexpr double Tolerance_m = 1e-6;
@@ -276,12 +281,20 @@ void check_gather_outside_region(const engine::Scene& scene, const std::vector<S
       if (p[k] < lo[k] - Tolerance_m || p[k] > hi[k] + Tolerance_m) return true;
     return false;
   };
-  for (const SensorGrid& grid : grids) {
-    if (grid.planar || grid.points.empty()) continue;
-    const std::size_t stride = std::max<std::size_t>(1, grid.points.size() / GatherProbeSensors);
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    const SensorGrid& grid = grids[g];
+    // The gathered sensors: a point or surface set's all (with point_estimate: gather), a
+    // plane's rows next to a cut (whatever point_estimate says, CaseLayout::of).
+    std::vector<std::size_t> gathered;
+    if (!grid.planar && gather)
+      for (std::size_t i = 0; i < grid.points.size(); ++i) gathered.push_back(i);
+    else if (grid.planar && g < near_cut_rows.size())
+      gathered = near_cut_rows[g];
+    if (gathered.empty()) continue;
+    const std::size_t stride = std::max<std::size_t>(1, gathered.size() / GatherProbeSensors);
     std::size_t rays = 0, outside = 0;
-    for (std::size_t i = 0; i < grid.points.size(); i += stride) {
-      const SensorPoint& sensor = grid.points[i];
+    for (std::size_t k = 0; k < gathered.size(); k += stride) {
+      const SensorPoint& sensor = grid.points[gathered[k]];
       for (int a = 0; a < GatherProbeLattice; ++a)
         for (int b = 0; b < GatherProbeLattice; ++b) {
           ++rays;
@@ -306,13 +319,19 @@ void check_gather_outside_region(const engine::Scene& scene, const std::vector<S
         }
     }
     if (outside == 0) continue;
-    warnings.push_back(warning_at(
-        roi->location,
-        "simulation.region_of_interest: sensor set '" + grid.name + "' is estimated by final gather, and " +
-            percent(double(outside) / rays) +
-            " of its gather rays reach surfaces outside the box, where no photon is stored: its sensors "
-            "read low by the light from there. Make the box hold every surface the sensors see (the rooms "
-            "and the outdoor scatterers seen through their windows), or remove it"));
+    const std::string who =
+        grid.planar ? "sensor set '" + grid.name + "': its " + std::to_string(gathered.size()) +
+                          " sensors next to a surface that crosses the work plane are estimated by final gather, and " +
+                          percent(double(outside) / rays) + " of their gather rays reach surfaces outside the box, "
+                          "where no photon is stored: they read low by the light from there"
+                    : "sensor set '" + grid.name + "' is estimated by final gather, and " +
+                          percent(double(outside) / rays) +
+                          " of its gather rays reach surfaces outside the box, where no photon is stored: its sensors "
+                          "read low by the light from there";
+    warnings.push_back(warning_at(roi->location, "simulation.region_of_interest: " + who +
+                                                     ". Make the box hold every surface the sensors see (the rooms "
+                                                     "and the outdoor scatterers seen through their windows), or "
+                                                     "remove it"));
   }
 }
 
@@ -557,9 +576,13 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
     planar_sensors.push_back(grid.points.size());
   }
   const std::vector<bool> gathered = near_cut_gathered(near_count, planar_sensors, surface_photons_kept);
-  for (std::size_t g = 0; g < grids.size(); ++g) report_near_cuts(grids[g], near[g], gathered[g], frame, out);
+  std::vector<std::vector<std::size_t>> near_cut_rows(grids.size());
+  for (std::size_t g = 0; g < grids.size(); ++g) {
+    report_near_cuts(grids[g], near[g], gathered[g], frame, out);
+    if (gathered[g]) near_cut_rows[g] = near[g].sensors;
+  }
   check_exterior_geometry(scene, out.warnings);
-  check_gather_outside_region(scene, grids, proj, out.warnings);
+  check_gather_outside_region(scene, grids, near_cut_rows, proj, out.warnings);
   if (grids.empty())
     report(diag, project, "the project has no sensors: add a grid or a point set under 'sensors'");
   diag.throw_if_errors();

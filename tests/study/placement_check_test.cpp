@@ -639,5 +639,33 @@ TEST(PlacementCheck, AGatheredSetReachingPastTheRegionOfInterestIsALocatedWarnin
   EXPECT_TRUE(plane.check.warnings.empty()) << plane.check.warnings[0].message;
 }
 
+TEST(PlacementCheck, APlanesGatheredRowsNextToACutReachingPastTheRegionOfInterestAreALocatedWarning) {
+  // The same back half as a work-plane grid with a 0.3 m column in it: the sensors within 0.3 m
+  // of the column are estimated by final gather (docs/photon-map.md, "Sensors next to a cut"),
+  // and their rays reach the front half, where no photon is stored. Before, only point and
+  // surface sets were probed, and these rows read low with nothing said. The region around the
+  // whole room says nothing.
+  const std::string column_grid = R"(  boxes:
+    - {name: column, origin: [2.6, 5.6, 0], size: [0.3, 0.3, 3], material: walls}
+sensors:
+  grids: [{name: g, polygon: [[0, 4, 0], [6, 4, 0], [6, 8, 0], [0, 8, 0]], height: 0.8, spacing: 0.5, inset: 0.5}]
+)";
+  const Outcome half = check_text(Head + Office + column_grid +
+                                  "simulation: {region_of_interest: {origin: [0, 4, 0], size: [6, 4, 3]}}\n");
+  ASSERT_TRUE(half.errors.empty()) << half.errors[0];
+  ASSERT_EQ(half.check.notes.size(), 1u);  // the rows are gathered
+  ASSERT_EQ(half.check.warnings.size(), 1u);
+  const std::string text = warning_text(half.check.warnings[0]);
+  EXPECT_EQ(text.rfind("17:34: simulation.region_of_interest: sensor set 'g': its ", 0), 0u) << text;
+  EXPECT_NE(text.find(" sensors next to a surface that crosses the work plane are estimated by final gather, and "),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("of their gather rays reach surfaces outside the box"), std::string::npos) << text;
+  const Outcome whole = check_text(Head + Office + column_grid +
+                                   "simulation: {region_of_interest: {origin: [0, 0, 0], size: [6, 8, 3]}}\n");
+  ASSERT_TRUE(whole.errors.empty()) << whole.errors[0];
+  EXPECT_TRUE(whole.check.warnings.empty()) << whole.check.warnings[0].message;
+}
+
 }  // namespace
 }  // namespace dayphoton::study
