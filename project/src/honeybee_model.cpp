@@ -163,6 +163,36 @@ class Reader {
     m_diag.error(where, what + ": " + message, line);
   }
 
+  void warning(const std::string& path, const std::string& id, const std::string& message) {
+    const SourceLocation where = m_loc.locate(path);
+    std::string what = path.empty() ? "model" : path;
+    if (!id.empty()) what += " ('" + id + "')";
+    m_diag.warning(where, what + ": " + message, read_source_line(where.file, where.line));
+  }
+
+  /// An aperture, door or shade of a dynamic group (honeybee-schema's
+  /// `properties.radiance.dynamic_group_identifier` and `states`): honeybee-radiance
+  /// simulates each state separately (its modifier and its shades), dayphoton models the
+  /// object's own modifier in every hour. Said at the object, not left to be found in the
+  /// numbers.
+  void warn_dynamic_states(const json& obj, const std::string& path, const std::string& id,
+                           const std::string& modifier) {
+    const json* props = find(obj, "properties");
+    const json* rad = props ? find(*props, "radiance") : nullptr;
+    if (!rad || !rad->is_object()) return;
+    const json* group = find(*rad, "dynamic_group_identifier");
+    const json* states = find(*rad, "states");
+    const std::size_t count = states && states->is_array() ? states->size() : 0;
+    if ((!group || !group->is_string()) && count == 0) return;
+    const std::string rpath = json_member(json_member(path, "properties"), "radiance");
+    std::string what = group && group->is_string() ? "in dynamic group '" + group->get<std::string>() + "'" : "dynamic";
+    if (count > 0) what += " with " + std::to_string(count) + " state" + (count == 1 ? "" : "s");
+    warning(group && group->is_string() ? json_member(rpath, "dynamic_group_identifier") : json_member(rpath, "states"), id,
+            what + ": dayphoton models its own modifier '" + modifier +
+                "' in every hour, not the states' modifiers or shades (honeybee-radiance simulates each state); to "
+                "study a state, make its modifier the object's modifier (or use a variant)");
+  }
+
   // ---- typed access -----------------------------------------------------------------------
   static const json* find(const json& obj, const char* key) {
     if (!obj.is_object()) return nullptr;
@@ -631,6 +661,7 @@ class Reader {
         object_modifier(shade, path, id, set,
                         context ? "context_modifier" : indoor ? "shade_set.interior_modifier" : "shade_set.exterior_modifier");
     emit(id, path, poly.boundary, poly.holes, material, indoor ? HoneybeeRole::Opaque : HoneybeeRole::OutdoorShade);
+    warn_dynamic_states(shade, path, id, material);
   }
 
   /// The boundary condition's type ("Outdoors", ...) and, for Surface, its first object.
@@ -773,7 +804,8 @@ class Reader {
     Polygon3 poly;
     if (!face3d(obj, path, id, poly)) return false;
     if (!poly.holes.empty()) {
-      error(json_member(json_member(path, "geometry"), "holes"), id, std::string("a ") + what + " with holes is not supported");
+      error(json_member(json_member(path, "geometry"), "holes"), id,
+            std::string(door ? "a " : "an ") + what + " with holes is not supported");
       return false;
     }
     if (face && !inside_face(poly.boundary, *face, json_member(json_member(path, "geometry"), "boundary"), id, face_id))
@@ -794,6 +826,7 @@ class Reader {
     const std::string material = object_modifier(obj, path, id, set, slot);
     const HoneybeeRole role = !glass ? HoneybeeRole::Opaque : outdoors ? HoneybeeRole::Port : HoneybeeRole::InteriorGlass;
     emit(id, path, poly.boundary, {}, material, role, facing);
+    warn_dynamic_states(obj, path, id, material);
     read_shades(obj, path, set);
     outline = poly.boundary;
     return true;
@@ -912,6 +945,8 @@ HoneybeeModel read_honeybee_model_from_string(const std::string& text, const std
   const detail::JsonLocator locator(text, file);
   Reader(locator, diag, model).read(root);
   diag.throw_if_errors();
+  for (const Diagnostic& d : diag.entries())
+    if (d.severity == Severity::Warning) model.warnings.push_back(d);
   return model;
 }
 
