@@ -20,6 +20,7 @@
 #include "dayphoton/project/honeybee_model.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -339,6 +340,38 @@ class Reader {
         return false;
       }
     return true;
+  }
+
+  /// Whether a modifier lets light through (a glass of any transmissivity, a dielectric, a
+  /// trans with a transmitted fraction and a colour): honeybee-radiance writes a Face or an
+  /// opaque Door of such a modifier as that material, so RADIANCE lets the sky in through it.
+  bool transmits(const std::string& modifier) const {
+    const RadianceModifier* m = nullptr;
+    if (const auto it = m_modifiers.find(modifier); it != m_modifiers.end()) m = &it->second;
+    for (const RadianceModifier& g : detail::honeybee_generic_modifiers())
+      if (!m && g.identifier == modifier) m = &g;
+    if (!m) return false;
+    auto any_positive = [&](std::size_t from, std::size_t count) {
+      for (std::size_t i = from; i < from + count && i < m->args.size(); ++i)
+        if (m->args[i] > 0) return true;
+      return false;
+    };
+    std::string type = m->type;
+    std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (type == "glass" || type == "dielectric") return any_positive(0, 3);
+    if (type == "trans") return m->args.size() >= 6 && m->args[5] > 0 && any_positive(0, 3);
+    return false;
+  }
+
+  /// The role of a face or opaque door of modifier `material` with boundary condition `bc`:
+  /// one that lets light through is glazing, a port in an Outdoors face and interior glazing
+  /// in a Surface face, as an aperture there; on the ground or an adiabatic face no light
+  /// comes through it, and it stays an ordinary surface.
+  HoneybeeRole wall_role(const std::string& material, const std::string& bc) const {
+    if (!transmits(material)) return HoneybeeRole::Opaque;
+    if (bc == "Outdoors") return HoneybeeRole::Port;
+    if (bc == "Surface") return HoneybeeRole::InteriorGlass;
+    return HoneybeeRole::Opaque;
   }
 
   // ---- surfaces ---------------------------------------------------------------------------
@@ -774,7 +807,10 @@ class Reader {
     read_shades(face, path, set);
     if (second_of_pair) return;
     const std::string material = object_modifier(face, path, id, set, slot);
-    emit(id, path, poly.boundary, holes, material, HoneybeeRole::Opaque);
+    // A face of glass (a curtain wall or a glazed roof drawn as a face, not as an aperture):
+    // light comes in through it, so it is a port like an aperture, not a wall the sky
+    // cannot pass.
+    emit(id, path, poly.boundary, holes, material, wall_role(material, bc), orphaned ? PortFacing::Auto : PortFacing::Out);
   }
 
   /// An aperture or door: its own surface; `outline` is the hole it cuts in its face. `face`
@@ -824,7 +860,9 @@ class Reader {
     else
       slot = !outdoors ? "door_set.interior_modifier" : face_type == "Wall" ? "door_set.exterior_modifier" : "door_set.overhead_modifier";
     const std::string material = object_modifier(obj, path, id, set, slot);
-    const HoneybeeRole role = !glass ? HoneybeeRole::Opaque : outdoors ? HoneybeeRole::Port : HoneybeeRole::InteriorGlass;
+    const HoneybeeRole role = !glass                    ? wall_role(material, bc)  // an opaque door of glass
+                              : outdoors ? HoneybeeRole::Port
+                                         : HoneybeeRole::InteriorGlass;
     emit(id, path, poly.boundary, {}, material, role, facing);
     warn_dynamic_states(obj, path, id, material);
     read_shades(obj, path, set);

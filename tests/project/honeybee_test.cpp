@@ -384,6 +384,43 @@ TEST(Honeybee, DynamicStatesAreAWarningAtTheAperture) {
   EXPECT_TRUE(read_honeybee_model_from_string(model(room("r", box, outdoors(), outdoors())), "m.hbjson").warnings.empty());
 }
 
+// A face whose modifier lets light through (a glazed wall or roof drawn as a Face with a glass
+// modifier, not as an aperture; a translucent fabric roof): honeybee-radiance writes it as that
+// material and RADIANCE lets the sky in through it. It was an ordinary surface, no port, so
+// no sky light came through it: a room glazed that way read almost nothing (only a warning
+// at the sensors, about a gap), or, with a window elsewhere, only that window's light.
+// Now an Outdoors face of glass or trans is a port facing out of its room, a Surface face of
+// glass interior glazing; an opaque face, and a glass face on the ground, stay surfaces.
+TEST(Honeybee, AGlassFaceIsAPortLikeAnAperture) {
+  const std::string clear = R"("modifiers": [{"type": "Glass", "identifier": "clear", "r_transmissivity": 0.9,
+ "g_transmissivity": 0.9, "b_transmissivity": 0.9}, {"type": "Trans", "identifier": "fabric", "r_reflectance": 0.6,
+ "g_reflectance": 0.6, "b_reflectance": 0.6, "transmitted_diff": 0.3}, {"type": "Trans", "identifier": "opaque_trans",
+ "r_reflectance": 0.6, "g_reflectance": 0.6, "b_reflectance": 0.6, "transmitted_diff": 0}])";
+  const std::string text =
+      model(R"({"type": "Room", "identifier": "r", "faces": [)" +
+                face("s", "Wall", outdoors(), box.south(), rad_modifier("clear")) + ", " +
+                face("n", "Wall", outdoors(), box.north(), rad_modifier("opaque_trans")) + ", " +
+                face("w_", "Wall", outdoors(), box.west()) + ", " + face("e", "Wall", outdoors(), box.east()) + ", " +
+                face("f", "Floor", R"({"type": "Ground"})", box.floor(), rad_modifier("clear")) + ", " +
+                face("c", "RoofCeiling", outdoors(), box.ceiling(), rad_modifier("fabric")) + "]}",
+            clear);
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  EXPECT_EQ(surface(m, "s").role, HoneybeeRole::Port);
+  EXPECT_EQ(surface(m, "s").facing, PortFacing::Out);
+  EXPECT_EQ(surface(m, "c").role, HoneybeeRole::Port);
+  EXPECT_EQ(surface(m, "n").role, HoneybeeRole::Opaque);  // a trans that transmits nothing
+  EXPECT_EQ(surface(m, "w_").role, HoneybeeRole::Opaque);
+  EXPECT_EQ(surface(m, "f").role, HoneybeeRole::Opaque);  // no light comes through the ground
+  // An opaque door given a glass modifier lets light in as a glass door does.
+  const std::string door = opening("Door", "d", outdoors(), box.window(), rad_modifier("clear"));
+  const HoneybeeModel d = read_honeybee_model_from_string(
+      model(R"({"type": "Room", "identifier": "r", "faces": [)" +
+                face("s", "Wall", outdoors(), box.south(), R"(, "doors": [)" + door + "]") + "]}",
+            clear),
+      "m.hbjson");
+  EXPECT_EQ(surface(d, "d").role, HoneybeeRole::Port);
+}
+
 TEST(HoneybeeErrors, SyntaxErrorAtLineAndColumn) {
   const std::string text = "{\n  \"type\": \"Model\",\n  \"rooms\": [,]\n}\n";
   const auto errors = located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); }, "m.hbjson");
