@@ -20,6 +20,7 @@
 #include "dayphoton/project/honeybee_model.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -161,6 +162,36 @@ class Reader {
     std::string line;
     if (!m_diag.at_cap()) line = read_source_line(where.file, where.line);
     m_diag.error(where, what + ": " + message, line);
+  }
+
+  void warning(const std::string& path, const std::string& id, const std::string& message) {
+    const SourceLocation where = m_loc.locate(path);
+    std::string what = path.empty() ? "model" : path;
+    if (!id.empty()) what += " ('" + id + "')";
+    m_diag.warning(where, what + ": " + message, read_source_line(where.file, where.line));
+  }
+
+  /// An aperture, door or shade of a dynamic group (honeybee-schema's
+  /// `properties.radiance.dynamic_group_identifier` and `states`): honeybee-radiance
+  /// simulates each state separately (its modifier and its shades), dayphoton models the
+  /// object's own modifier in every hour. Said at the object, not left to be found in the
+  /// numbers.
+  void warn_dynamic_states(const json& obj, const std::string& path, const std::string& id,
+                           const std::string& modifier) {
+    const json* props = find(obj, "properties");
+    const json* rad = props ? find(*props, "radiance") : nullptr;
+    if (!rad || !rad->is_object()) return;
+    const json* group = find(*rad, "dynamic_group_identifier");
+    const json* states = find(*rad, "states");
+    const std::size_t count = states && states->is_array() ? states->size() : 0;
+    if ((!group || !group->is_string()) && count == 0) return;
+    const std::string rpath = json_member(json_member(path, "properties"), "radiance");
+    std::string what = group && group->is_string() ? "in dynamic group '" + group->get<std::string>() + "'" : "dynamic";
+    if (count > 0) what += " with " + std::to_string(count) + " state" + (count == 1 ? "" : "s");
+    warning(group && group->is_string() ? json_member(rpath, "dynamic_group_identifier") : json_member(rpath, "states"), id,
+            what + ": dayphoton models its own modifier '" + modifier +
+                "' in every hour, not the states' modifiers or shades (honeybee-radiance simulates each state); to "
+                "study a state, make its modifier the object's modifier (or use a variant)");
   }
 
   // ---- typed access -----------------------------------------------------------------------
@@ -309,6 +340,38 @@ class Reader {
         return false;
       }
     return true;
+  }
+
+  /// Whether a modifier lets light through (a glass of any transmissivity, a dielectric, a
+  /// trans with a transmitted fraction and a colour): honeybee-radiance writes a Face or an
+  /// opaque Door of such a modifier as that material, so RADIANCE lets the sky in through it.
+  bool transmits(const std::string& modifier) const {
+    const RadianceModifier* m = nullptr;
+    if (const auto it = m_modifiers.find(modifier); it != m_modifiers.end()) m = &it->second;
+    for (const RadianceModifier& g : detail::honeybee_generic_modifiers())
+      if (!m && g.identifier == modifier) m = &g;
+    if (!m) return false;
+    auto any_positive = [&](std::size_t from, std::size_t count) {
+      for (std::size_t i = from; i < from + count && i < m->args.size(); ++i)
+        if (m->args[i] > 0) return true;
+      return false;
+    };
+    std::string type = m->type;
+    std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (type == "glass" || type == "dielectric") return any_positive(0, 3);
+    if (type == "trans") return m->args.size() >= 6 && m->args[5] > 0 && any_positive(0, 3);
+    return false;
+  }
+
+  /// The role of a face or opaque door of modifier `material` with boundary condition `bc`:
+  /// one that lets light through is glazing, a port in an Outdoors face and interior glazing
+  /// in a Surface face, as an aperture there; on the ground or an adiabatic face no light
+  /// comes through it, and it stays an ordinary surface.
+  HoneybeeRole wall_role(const std::string& material, const std::string& bc) const {
+    if (!transmits(material)) return HoneybeeRole::Opaque;
+    if (bc == "Outdoors") return HoneybeeRole::Port;
+    if (bc == "Surface") return HoneybeeRole::InteriorGlass;
+    return HoneybeeRole::Opaque;
   }
 
   // ---- surfaces ---------------------------------------------------------------------------
@@ -631,6 +694,7 @@ class Reader {
         object_modifier(shade, path, id, set,
                         context ? "context_modifier" : indoor ? "shade_set.interior_modifier" : "shade_set.exterior_modifier");
     emit(id, path, poly.boundary, poly.holes, material, indoor ? HoneybeeRole::Opaque : HoneybeeRole::OutdoorShade);
+    warn_dynamic_states(shade, path, id, material);
   }
 
   /// The boundary condition's type ("Outdoors", ...) and, for Surface, its first object.
@@ -743,7 +807,10 @@ class Reader {
     read_shades(face, path, set);
     if (second_of_pair) return;
     const std::string material = object_modifier(face, path, id, set, slot);
-    emit(id, path, poly.boundary, holes, material, HoneybeeRole::Opaque);
+    // A face of glass (a curtain wall or a glazed roof drawn as a face, not as an aperture):
+    // light comes in through it, so it is a port like an aperture, not a wall the sky
+    // cannot pass.
+    emit(id, path, poly.boundary, holes, material, wall_role(material, bc), orphaned ? PortFacing::Auto : PortFacing::Out);
   }
 
   /// An aperture or door: its own surface; `outline` is the hole it cuts in its face. `face`
@@ -773,7 +840,8 @@ class Reader {
     Polygon3 poly;
     if (!face3d(obj, path, id, poly)) return false;
     if (!poly.holes.empty()) {
-      error(json_member(json_member(path, "geometry"), "holes"), id, std::string("a ") + what + " with holes is not supported");
+      error(json_member(json_member(path, "geometry"), "holes"), id,
+            std::string(door ? "a " : "an ") + what + " with holes is not supported");
       return false;
     }
     if (face && !inside_face(poly.boundary, *face, json_member(json_member(path, "geometry"), "boundary"), id, face_id))
@@ -792,8 +860,11 @@ class Reader {
     else
       slot = !outdoors ? "door_set.interior_modifier" : face_type == "Wall" ? "door_set.exterior_modifier" : "door_set.overhead_modifier";
     const std::string material = object_modifier(obj, path, id, set, slot);
-    const HoneybeeRole role = !glass ? HoneybeeRole::Opaque : outdoors ? HoneybeeRole::Port : HoneybeeRole::InteriorGlass;
+    const HoneybeeRole role = !glass                    ? wall_role(material, bc)  // an opaque door of glass
+                              : outdoors ? HoneybeeRole::Port
+                                         : HoneybeeRole::InteriorGlass;
     emit(id, path, poly.boundary, {}, material, role, facing);
+    warn_dynamic_states(obj, path, id, material);
     read_shades(obj, path, set);
     outline = poly.boundary;
     return true;
@@ -912,6 +983,8 @@ HoneybeeModel read_honeybee_model_from_string(const std::string& text, const std
   const detail::JsonLocator locator(text, file);
   Reader(locator, diag, model).read(root);
   diag.throw_if_errors();
+  for (const Diagnostic& d : diag.entries())
+    if (d.severity == Severity::Warning) model.warnings.push_back(d);
   return model;
 }
 

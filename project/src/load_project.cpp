@@ -134,8 +134,9 @@ class Loader {
     const YamlNode* materials = r.take("materials");
     if (materials) read_materials(*materials);
     if (const YamlNode* n = r.take("geometry")) read_geometry(*n);
-    // A RADIANCE scene brings its own materials; otherwise every project needs some.
-    if (!materials && m_project.geometry.radiance.empty())
+    // A RADIANCE scene or a Honeybee model brings its own materials; otherwise every project
+    // needs some.
+    if (!materials && m_project.geometry.radiance.empty() && !m_honeybee_given)
       m_reporter.error(root.location, "missing required key 'materials' in project");
     if (const YamlNode* n = r.take("sensors")) read_sensors(*n);
     if (const YamlNode* n = r.take("simulation")) {

@@ -111,7 +111,7 @@ std::vector<SectionSchema> build_schema() {
       P("site", T::Section, "where the building is").section("site").required(),
       P("study", T::Choice, "what run computes: annual (daylight factors, annual illuminance and metrics from the weather file's skies and sun) or daylight_factor (the CIE overcast sky only: no weather file, no sun traced); default annual, or daylight_factor for a file without weather that sets annual_illuminance and metrics to false").choices({"annual", "daylight_factor"}).def("annual"),
       P("weather", T::Special, "hourly weather file, EPW or RADIANCE/DAYSIM .wea (by its extension): a path, or a map {file: path}; needed by the annual study"),
-      P("materials", T::NameMap, "material name -> material definition (map by `type`); required unless `geometry.radiance` brings the materials"),
+      P("materials", T::NameMap, "material name -> material definition (map by `type`); required unless `geometry.radiance` or `geometry.honeybee` brings the materials"),
       P("geometry", T::Section, "rooms, polygons, boxes and meshes").section("geometry").required(),
       P("sensors", T::Section, "sensor grids and point sets").section("sensors"),
       P("simulation", T::Section, "photon and sky settings").section("simulation"),

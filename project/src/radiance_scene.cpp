@@ -355,8 +355,16 @@ class Reader {
         ++i;
         close_group();
         repeat = n;
+      } else if (a == "-n") {
+        // -n NAME prefixes the identifiers xform writes (xform(1)): names, not geometry;
+        // dayphoton's messages keep the identifiers of the file.
+        if (i + 1 >= args.size() || args[i + 1].empty() || args[i + 1][0] == '-') {
+          error(at, "'!xform': option -n needs a name");
+          return;
+        }
+        ++i;
       } else if (!a.empty() && a[0] == '-') {
-        error(at, "'!xform' option '" + a + "' is not read (only -t, -rx, -ry, -rz, -s and -i)" + expand_hint);
+        error(at, "'!xform' option '" + a + "' is not read (only -t, -rx, -ry, -rz, -s, -i and -n)" + expand_hint);
         return;
       } else {
         files.push_back(a);

@@ -209,7 +209,10 @@ SceneDescription build_scene_description(const Project& project) {
   for (const RadianceSceneSpec& rad : g.radiance)
     detail::generate_radiance(rad, project.materials.size(), scene.materials, diag, surfaces);
   mark(SurfaceOrigin::Radiance);
-  if (g.honeybee) generate_honeybee(*g.honeybee, materials, surfaces);
+  if (g.honeybee) {
+    generate_honeybee(*g.honeybee, materials, surfaces);
+    for (const Diagnostic& w : g.honeybee->model.warnings) diag.warning(w.location, w.message, w.source_line);
+  }
   mark(SurfaceOrigin::Honeybee);
   surfaces.insert(surfaces.end(), systems.surfaces.begin(), systems.surfaces.end());
   mark(SurfaceOrigin::System);

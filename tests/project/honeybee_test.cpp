@@ -353,6 +353,74 @@ TEST(Honeybee, SensorGridsInMetresWithUnitDirections) {
 
 // ---- located errors ------------------------------------------------------------------------
 
+// An aperture of a dynamic group (honeybee-schema's dynamic_group_identifier and states, as
+// in its sample model_radiance_dynamic_states): honeybee-radiance simulates each state (an
+// electrochromic glass, a state with an awning), dayphoton the aperture's own modifier. That
+// was silent: the model ran with the generic glass where the user had drawn the states.
+// Now a warning at the aperture's dynamic_group_identifier, and the scene carries it to check
+// and run.
+TEST(Honeybee, DynamicStatesAreAWarningAtTheAperture) {
+  const std::string states =
+      R"(, "properties": {"radiance": {"dynamic_group_identifier": "ec_window",
+ "states": [{"modifier": "dark"}, {"modifier": "darker"}]}})";
+  const std::string win = opening("Aperture", "w", outdoors(), box.window(), states);
+  const std::string text = R"({"type": "Model", "identifier": "m", "rooms": [{"type": "Room", "identifier": "r", "faces": [)" +
+                           face("s", "Wall", outdoors(), box.south(), R"(, "apertures": [)" + win + "]") + ", " +
+                           face("n", "Wall", outdoors(), box.north()) + ", " + face("w_", "Wall", outdoors(), box.west()) +
+                           ", " + face("e", "Wall", outdoors(), box.east()) + ", " +
+                           face("f", "Floor", R"({"type": "Ground"})", box.floor()) + ", " +
+                           face("c", "RoofCeiling", outdoors(), box.ceiling()) + "]}]}";
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  ASSERT_EQ(m.warnings.size(), 1u);
+  const Diagnostic& w = m.warnings[0];
+  EXPECT_EQ(w.severity, Severity::Warning);
+  EXPECT_EQ(w.location.line, 1);
+  EXPECT_EQ(text.substr(w.location.column - 1, 11), "\"ec_window\"") << w.location.column;  // the group's value
+  EXPECT_NE(w.message.find("('w'): in dynamic group 'ec_window' with 2 states: dayphoton models its own modifier "
+                           "'generic_exterior_window_vis_0.64' in every hour"),
+            std::string::npos)
+      << w.message;
+  // A static model: no warning.
+  EXPECT_TRUE(read_honeybee_model_from_string(model(room("r", box, outdoors(), outdoors())), "m.hbjson").warnings.empty());
+}
+
+// A face whose modifier lets light through (a glazed wall or roof drawn as a Face with a glass
+// modifier, not as an aperture; a translucent fabric roof): honeybee-radiance writes it as that
+// material and RADIANCE lets the sky in through it. It was an ordinary surface, no port, so
+// no sky light came through it: a room glazed that way read almost nothing (only a warning
+// at the sensors, about a gap), or, with a window elsewhere, only that window's light.
+// Now an Outdoors face of glass or trans is a port facing out of its room, a Surface face of
+// glass interior glazing; an opaque face, and a glass face on the ground, stay surfaces.
+TEST(Honeybee, AGlassFaceIsAPortLikeAnAperture) {
+  const std::string clear = R"("modifiers": [{"type": "Glass", "identifier": "clear", "r_transmissivity": 0.9,
+ "g_transmissivity": 0.9, "b_transmissivity": 0.9}, {"type": "Trans", "identifier": "fabric", "r_reflectance": 0.6,
+ "g_reflectance": 0.6, "b_reflectance": 0.6, "transmitted_diff": 0.3}, {"type": "Trans", "identifier": "opaque_trans",
+ "r_reflectance": 0.6, "g_reflectance": 0.6, "b_reflectance": 0.6, "transmitted_diff": 0}])";
+  const std::string text =
+      model(R"({"type": "Room", "identifier": "r", "faces": [)" +
+                face("s", "Wall", outdoors(), box.south(), rad_modifier("clear")) + ", " +
+                face("n", "Wall", outdoors(), box.north(), rad_modifier("opaque_trans")) + ", " +
+                face("w_", "Wall", outdoors(), box.west()) + ", " + face("e", "Wall", outdoors(), box.east()) + ", " +
+                face("f", "Floor", R"({"type": "Ground"})", box.floor(), rad_modifier("clear")) + ", " +
+                face("c", "RoofCeiling", outdoors(), box.ceiling(), rad_modifier("fabric")) + "]}",
+            clear);
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  EXPECT_EQ(surface(m, "s").role, HoneybeeRole::Port);
+  EXPECT_EQ(surface(m, "s").facing, PortFacing::Out);
+  EXPECT_EQ(surface(m, "c").role, HoneybeeRole::Port);
+  EXPECT_EQ(surface(m, "n").role, HoneybeeRole::Opaque);  // a trans that transmits nothing
+  EXPECT_EQ(surface(m, "w_").role, HoneybeeRole::Opaque);
+  EXPECT_EQ(surface(m, "f").role, HoneybeeRole::Opaque);  // no light comes through the ground
+  // An opaque door given a glass modifier lets light in as a glass door does.
+  const std::string door = opening("Door", "d", outdoors(), box.window(), rad_modifier("clear"));
+  const HoneybeeModel d = read_honeybee_model_from_string(
+      model(R"({"type": "Room", "identifier": "r", "faces": [)" +
+                face("s", "Wall", outdoors(), box.south(), R"(, "doors": [)" + door + "]") + "]}",
+            clear),
+      "m.hbjson");
+  EXPECT_EQ(surface(d, "d").role, HoneybeeRole::Port);
+}
+
 TEST(HoneybeeErrors, SyntaxErrorAtLineAndColumn) {
   const std::string text = "{\n  \"type\": \"Model\",\n  \"rooms\": [,]\n}\n";
   const auto errors = located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); }, "m.hbjson");
@@ -558,6 +626,44 @@ TEST(HoneybeeProject, UnknownGridHintAndErrorsOfTheModelAreReported) {
                                                                          "sensors: {honeybee_grids: all}\n");
   EXPECT_EQ(located_errors([&] { load_project(bad); }, dir.path + "/bad.hbjson"),
             std::vector<std::string>{"2:11: rooms: expected a list of rooms, got a number"});
+}
+
+// A project whose geometry is a Honeybee model needs no materials of its own: the model
+// brings its modifiers (a new user's first project was refused for the missing key). The
+// model's warnings reach the scene, which check and run print.
+TEST(HoneybeeProject, AModelBringsItsMaterialsAndItsWarningsReachTheScene) {
+  TempDir dir;
+  const std::string states = R"(, "properties": {"radiance": {"dynamic_group_identifier": "g"}})";
+  const std::string win = opening("Aperture", "w", outdoors(), box.window(), states);
+  dir.write("model.hbjson",
+            R"({"type": "Model", "identifier": "m", "rooms": [{"type": "Room", "identifier": "r", "faces": [)" +
+                face("s", "Wall", outdoors(), box.south(), R"(, "apertures": [)" + win + "]") + ", " +
+                face("n", "Wall", outdoors(), box.north()) + ", " + face("w_", "Wall", outdoors(), box.west()) + ", " +
+                face("e", "Wall", outdoors(), box.east()) + ", " + face("f", "Floor", R"({"type": "Ground"})", box.floor()) +
+                ", " + face("c", "RoofCeiling", outdoors(), box.ceiling()) + "]}], " +
+                R"("properties": {"radiance": {)" + two_grids() + "}}}");
+  const std::string yaml = dir.write("p.yaml",
+                                     "version: 1\n"
+                                     "site: {latitude: 37.7, longitude: -122.2, time_zone: -8}\n"
+                                     "outputs: {annual_illuminance: false, metrics: false}\n"
+                                     "geometry: {honeybee: model.hbjson}\n"
+                                     "sensors: {honeybee_grids: all}\n");
+  const Project p = load_project(yaml);
+  EXPECT_EQ(p.materials.size(), 4u);  // the generic wall, floor, ceiling and window modifiers
+  const SceneDescription scene = build_scene_description(p);
+  bool warned = false;
+  for (const Diagnostic& w : scene.warnings)
+    warned = warned || (w.location.file == dir.path + "/model.hbjson" && w.message.find("in dynamic group 'g'") != std::string::npos);
+  EXPECT_TRUE(warned);
+  // Without any geometry that brings materials the key is still required.
+  const std::string bare = dir.write("q.yaml",
+                                     "version: 1\n"
+                                     "site: {latitude: 37.7, longitude: -122.2, time_zone: -8}\n"
+                                     "geometry: {polygons: []}\n");
+  const auto errors = located_errors([&] { load_project(bare); });
+  bool missing = false;
+  for (const std::string& e : errors) missing = missing || e.find("missing required key 'materials'") != std::string::npos;
+  EXPECT_TRUE(missing);
 }
 
 // An old file's model-level north_angle (honeybee-schema's Model before the north moved to the

@@ -340,6 +340,20 @@ TEST_F(RadianceXform, IterationScaleAndNesting) {
   EXPECT_NEAR(length(v[1] - Vec3(5, 0, 0)), 0, 1e-12);
 }
 
+// xform's -n NAME (a prefix for the identifiers it writes, common in scenes that place
+// copies: "!xform -n win.0 -t 5 0 0 pane.rad") changes no geometry: it is read, and the
+// transforms around it apply. It was refused as an option not read.
+TEST_F(RadianceXform, NamePrefixIsReadAndChangesNoGeometry) {
+  Diagnostics diag;
+  const RadianceScene scene = read_main("!xform -n copy.0 -t 10 0 0 parts/tri.rad\n", diag);
+  ASSERT_FALSE(diag.has_errors()) << diag.format();
+  ASSERT_EQ(scene.surfaces.size(), 1u);
+  EXPECT_NEAR(length(scene.surfaces[0].vertices[1] - Vec3(11, 0, 0)), 0, 1e-12);
+  Diagnostics missing;
+  read_main("!xform -n -t 10 0 0 parts/tri.rad\n", missing);
+  EXPECT_NE(first_error(missing).find("option -n needs a name"), std::string::npos) << first_error(missing);
+}
+
 TEST_F(RadianceXform, AnythingButPlainXformIsRefused) {
   {
     Diagnostics diag;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/core/source_location.h"
 #include "dayphoton/core/vec3.h"
@@ -69,6 +70,9 @@ struct HoneybeeModel {
   /// Faces left out, one phrase each, for `check` (the second face of each shared wall, air
   /// boundaries).
   std::vector<std::string> notes;
+  /// Located warnings of the reader (what is read but not modelled as Honeybee would, e.g.
+  /// the dynamic states of an aperture); `check` and `run` print them with the scene's.
+  std::vector<Diagnostic> warnings;
 };
 
 /// Metres per unit of a Honeybee `units` value; 0 for an unknown name.

@@ -22,7 +22,7 @@
 //     facets (chord sagitta), with RadianceMinSegments..RadianceMaxSegments segments per full
 //     circle; tube, cup and bubble face inward as in RADIANCE; spheres are closed solids
 //     (Surface::solid_face); `source` (a distant source) is skipped with a note;
-//   - `!xform` commands with only -t, -rx, -ry, -rz, -s and -i, files relative to the file
+//   - `!xform` commands with only -t, -rx, -ry, -rz, -s, -i and -n, files relative to the file
 //     that names them: read in place, transformed (xform's semantics: transforms apply in the
 //     order written; -i N repeats the transforms that follow it, up to the next -i, N times).
 // Refused, as located errors (file:line:column, naming the primitive): any other `!` line
