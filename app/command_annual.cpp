@@ -27,6 +27,7 @@
 #include "dayphoton/study/annual_exact_sun.h"
 #include "dayphoton/study/annual_illuminance.h"
 #include "dayphoton/study/annual_study.h"
+#include "dayphoton/study/daylight_openings.h"
 #include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/recorded_metric_settings.h"
 #include "dayphoton/study/result_files.h"
@@ -84,7 +85,17 @@ study::AnnualStudySettings annual_settings(const AnnualOptions& o, const std::st
   if (!grid.has_filename()) grid = grid.parent_path();
   study::AnnualStudySettings settings;
   if (project) {
-    settings = study::annual_settings_of(*project, &weather, grid.filename().string());
+    // EN 17037's rule for horizontal openings: the run's record of this grid's case (a
+    // variant may add roof lights), else the project's own model.
+    metrics::MetricSettings::Openings openings;
+    if (recorded && recorded->grid && recorded->grid->annual) {
+      openings = study::recorded_annual_settings(*recorded->grid->annual, SourceLocation{recorded->results_path, 0, 0})
+                     .metrics.en17037_openings;
+    } else {
+      const SceneDescription description = project::build_scene_description(*project);
+      openings = study::daylight_openings(engine::Scene::build(description)).kind;
+    }
+    settings = study::annual_settings_of(*project, &weather, openings, grid.filename().string());
     source = o.project_path;
   } else if (recorded && recorded->grid && recorded->grid->annual) {
     settings = study::recorded_annual_settings(*recorded->grid->annual, SourceLocation{recorded->results_path, 0, 0});

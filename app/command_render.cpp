@@ -77,21 +77,6 @@ int run_render(const RenderOptions& options, std::ostream& out) {
   const engine::Scene scene = engine::Scene::build(description);
   std::vector<engine::Material> materials;
   for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
-  // A diffusing port (translucent, transmitted_specular < 1) lights the room in the picture
-  // (its photons pass it into the room), but the port itself is drawn without the light it
-  // scatters toward the camera: the renderer keeps no photon on its sky side. Never silently
-  // dark: a located warning on stderr, even with --quiet.
-  for (const engine::Port& port : scene.ports().ports()) {
-    const Surface& surface = description.surfaces[static_cast<std::size_t>(port.surface)];
-    const engine::Material& material = materials[static_cast<std::size_t>(surface.material)];
-    const Vec3 tau_d = material.diffuse_transmittance();
-    if (tau_d.x + tau_d.y + tau_d.z > 0)
-      std::cerr << "warning: " << port.location.to_string() << ": port '" << port.name << "' (material '"
-                << description.materials[static_cast<std::size_t>(surface.material)].name
-                << "') transmits diffusely: the rendering lights the room through it, but draws the port itself "
-                   "without the light it scatters toward the camera (dark, where a Lambertian pane shows tau E / pi); "
-                   "a study's numbers take that light (docs/report.md, \"dayphoton render\")\n";
-  }
   const sky::PatchBasis basis = study::basis_of(project.simulation);
   study::RenderSkySettings sky_settings;
   sky_settings.spec = options.sky;

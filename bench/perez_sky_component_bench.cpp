@@ -522,7 +522,8 @@ void year_mode(const std::vector<Climate>& climates, int samples, const fs::path
   for (const Climate& c : climates) {
     const std::map<std::string, metrics::IlluminanceTable> totals = annual_run(c, folder);
     for (const SensorGrid& g : room.grids) {
-      const study::AnnualStudySettings settings = study::annual_settings_of(c.proj, &c.epw, g.name);
+      const study::AnnualStudySettings settings =
+          study::annual_settings_of(c.proj, &c.epw, metrics::MetricSettings::Openings::VerticalOrInclined, g.name);
       const metrics::IlluminanceTable& before = totals.at(g.name);
       const metrics::OccupancySchedule occupied = study::occupancy_schedule(settings, before.steps());
       std::vector<std::size_t> hours;

@@ -12,6 +12,7 @@
 
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/direct_component.h"
+#include "material_common.h"
 
 namespace dayphoton::engine {
 
@@ -142,31 +143,68 @@ Vec3 PhotonRenderer::direct_irradiance(const Vec3& point, const Vec3& side_norma
     }
     sum = sum / static_cast<double>(samples);
   }
-  if (m_sky.sun && dot(m_sky.sun->direction, side_normal) > -std::sin(m_sky.sun->half_angle_rad)) {
-    // The sun disc sampled uniformly in solid angle (cone about its centre).
-    const RenderSky::Sun& sun = *m_sky.sun;
-    const double one_minus_cos = 2.0 * std::pow(std::sin(0.5 * sun.half_angle_rad), 2);
-    const double solid_angle_sr = 2.0 * Pi * one_minus_cos;
-    Vec3 a, b;
-    frame(sun.direction, a, b);
-    Vec3 sun_sum;
-    for (int i = 0; i < samples; ++i) {
-      const double cos_t = 1.0 - rng.uniform() * one_minus_cos;
-      const double sin_t = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
-      const double phi = 2.0 * Pi * rng.uniform();
-      const Vec3 w = normalize(sun.direction * cos_t + (a * std::cos(phi) + b * std::sin(phi)) * sin_t);
-      const double cos_x = dot(w, side_normal);
-      if (cos_x <= 0) continue;
-      const Vec3 t = sky_transmittance(*m_scene, *m_materials, m_scene->offset_ray_origin(point, side_normal, w), w);
-      sun_sum += mul(t, sun.radiance) * (cos_x * solid_angle_sr);
-    }
-    sum += sun_sum / static_cast<double>(samples);
-  }
-  return sum;
+  return sum + sun_irradiance(point, side_normal, rng, samples, SunPath::ThroughPorts);
 }
 
-Vec3 PhotonRenderer::surface_irradiance(const Vec3& point, const Vec3& side_normal, Rng& rng) const {
-  return photon_irradiance(point, side_normal) + direct_irradiance(point, side_normal, rng, m_options.direct_samples);
+Vec3 PhotonRenderer::surface_irradiance(const Hit& hit, const Vec3& side_normal, Rng& rng) const {
+  // The sky side of a port holds no photon (the tracer starts its photons on the ports) and
+  // sees the sky without crossing a port, so neither estimate below reaches it.
+  if (hit.port >= 0 && dot(side_normal, m_scene->ports()[static_cast<std::size_t>(hit.port)].normal) < 0)
+    return sky_side_irradiance(hit.position, side_normal, rng, m_options.direct_samples, /*reflections=*/1);
+  return photon_irradiance(hit.position, side_normal) + direct_irradiance(hit.position, side_normal, rng, m_options.direct_samples);
+}
+
+Vec3 PhotonRenderer::sun_irradiance(const Vec3& point, const Vec3& side_normal, Rng& rng, int samples, SunPath path) const {
+  if (!m_sky.sun || !(dot(m_sky.sun->direction, side_normal) > -std::sin(m_sky.sun->half_angle_rad))) return {};
+  // The sun disc sampled uniformly in solid angle (cone about its centre).
+  const RenderSky::Sun& sun = *m_sky.sun;
+  const double one_minus_cos = 2.0 * std::pow(std::sin(0.5 * sun.half_angle_rad), 2);
+  const double solid_angle_sr = 2.0 * Pi * one_minus_cos;
+  Vec3 a, b;
+  frame(sun.direction, a, b);
+  Vec3 sum;
+  for (int i = 0; i < samples; ++i) {
+    const double cos_t = 1.0 - rng.uniform() * one_minus_cos;
+    const double sin_t = std::sqrt(std::max(0.0, 1.0 - cos_t * cos_t));
+    const double phi = 2.0 * Pi * rng.uniform();
+    const Vec3 w = normalize(sun.direction * cos_t + (a * std::cos(phi) + b * std::sin(phi)) * sin_t);
+    const double cos_x = dot(w, side_normal);
+    if (cos_x <= 0) continue;
+    const Vec3 origin = m_scene->offset_ray_origin(point, side_normal, w);
+    if (path == SunPath::ThroughPorts) {
+      sum += mul(sky_transmittance(*m_scene, *m_materials, origin, w), sun.radiance) * (cos_x * solid_angle_sr);
+    } else if (!m_scene->occluded(Ray{origin, w, 0.0, std::numeric_limits<double>::infinity()})) {
+      sum += sun.radiance * (cos_x * solid_angle_sr);
+    }
+  }
+  return sum / static_cast<double>(samples);
+}
+
+Vec3 PhotonRenderer::sky_side_irradiance(const Vec3& point, const Vec3& side_normal, Rng& rng, int samples,
+                                         int reflections) const {
+  // E = pi / N sum_i L(w_i) for cosine-weighted w_i (Pharr, Jakob & Humphreys, "Physically
+  // Based Rendering", 4th ed., section 13.6.3, the cosine-weighted estimator): a ray that
+  // escapes sees the continuous sky or the ground (m_sky.radiance, without the sun disc, whose
+  // light comes from the sun's own shadow rays); a ray that meets an outdoor surface sees its
+  // diffuse reflection of the sky and sun, L = rho_d / pi E, with E estimated the same way
+  // without further reflections (the light reflected twice outdoors is left out, and so is
+  // an outdoor surface's non-diffuse reflection).
+  Vec3 sum;
+  for (int i = 0; i < samples; ++i) {
+    const Vec3 w = detail::sample_cosine(side_normal, rng.uniform(), rng.uniform());
+    const Ray ray{m_scene->offset_ray_origin(point, side_normal, w), w, 0.0, std::numeric_limits<double>::infinity()};
+    const std::optional<Hit> hit = m_scene->intersect(ray);
+    if (!hit) {
+      sum += m_sky.radiance(w) * Pi;
+      continue;
+    }
+    if (reflections <= 0) continue;
+    const Vec3 rho_d = (*m_materials)[static_cast<std::size_t>(hit->material)].diffuse_reflectance();
+    if (max_component(rho_d) <= 0) continue;
+    const Vec3 facing = hit->front_face ? hit->normal : hit->normal * -1.0;
+    sum += mul(rho_d, sky_side_irradiance(hit->position, facing, rng, OutdoorReflectionSamples, reflections - 1));
+  }
+  return sum / static_cast<double>(samples) + sun_irradiance(point, side_normal, rng, samples, SunPath::Unobstructed);
 }
 
 Vec3 PhotonRenderer::radiance(const Ray& first, Rng& rng) const {
@@ -190,9 +228,9 @@ Vec3 PhotonRenderer::radiance(const Ray& first, Rng& rng) const {
     const Vec3 rho_d = material.diffuse_reflectance();
     const Vec3 tau_d = material.diffuse_transmittance();
     if (max_component(rho_d) > 0)
-      result += mul(mul(throughput, rho_d), surface_irradiance(hit->position, side, rng)) * (1.0 / Pi);
+      result += mul(mul(throughput, rho_d), surface_irradiance(*hit, side, rng)) * (1.0 / Pi);
     if (max_component(tau_d) > 0)
-      result += mul(mul(throughput, tau_d), surface_irradiance(hit->position, side * -1.0, rng)) * (1.0 / Pi);
+      result += mul(mul(throughput, tau_d), surface_irradiance(*hit, side * -1.0, rng)) * (1.0 / Pi);
     // Specular and glossy parts: continue the path.
     const double u0 = rng.uniform(), u1 = rng.uniform(), u2 = rng.uniform();
     const std::optional<ScatterSample> s = material.sample(ray.direction, hit->normal, u0, u1, u2);

@@ -137,9 +137,31 @@ GridMetrics summarize_grid(const std::vector<SensorMetrics>& sensors, const Metr
   return grid;
 }
 
+double en17037_target_area_required_percent(const MetricSettings& settings) {
+  return settings.en17037_openings == MetricSettings::Openings::Horizontal ? En17037TargetAreaPercentHorizontal
+                                                                           : En17037TargetAreaPercentVertical;
+}
+
+const char* en17037_openings_name(MetricSettings::Openings openings) {
+  switch (openings) {
+    case MetricSettings::Openings::Horizontal: return "horizontal";
+    case MetricSettings::Openings::Both: return "vertical or inclined, and horizontal";
+    case MetricSettings::Openings::VerticalOrInclined: break;
+  }
+  return "vertical or inclined";
+}
+
+std::optional<MetricSettings::Openings> parse_en17037_openings(const std::string& name) {
+  for (MetricSettings::Openings o : {MetricSettings::Openings::VerticalOrInclined, MetricSettings::Openings::Horizontal,
+                                     MetricSettings::Openings::Both})
+    if (name == en17037_openings_name(o)) return o;
+  return std::nullopt;
+}
+
 std::vector<En17037Result> en17037_daylight_provision(const IlluminanceTable& table,
                                                       const OccupancySchedule& daylight_hours,
-                                                      const std::vector<double>& area_weights) {
+                                                      const std::vector<double>& area_weights,
+                                                      const MetricSettings& settings) {
   check_shapes(table, daylight_hours);
   const double n_hours = static_cast<double>(daylight_hours.occupied_count());
   const std::size_t n_sensors = table.sensor_count();
@@ -179,7 +201,9 @@ std::vector<En17037Result> en17037_daylight_provision(const IlluminanceTable& ta
     r.level = level.name;
     r.target_area_percent = weighted_mean(target[l], area_weights);
     r.minimum_target_area_percent = weighted_mean(minimum[l], area_weights);
-    r.passes = r.target_area_percent >= 50.0 && r.minimum_target_area_percent >= 95.0;
+    r.target_area_required_percent = en17037_target_area_required_percent(settings);
+    r.passes = r.target_area_percent >= r.target_area_required_percent &&
+               r.minimum_target_area_percent >= En17037MinimumTargetAreaPercent;
     results.push_back(r);
   }
   return results;

@@ -316,6 +316,7 @@ void generate_systems(const Project& project, MaterialLookup& materials,
       s.material = mat;
       s.vertices = facing(std::move(v), inward);
       s.port = true;
+      s.opening_normal = f.e_w;  // every face stands for the window (its plane's normal)
       s.location = system_location;
       out.surfaces.push_back(std::move(s));
     };

@@ -666,7 +666,9 @@ std::string grid_section(const GridData& g, PageIds& page) {
     s << "<p class=\"na\">no verdicts recorded.</p>";
   }
   if (annual && !annual->en17037.empty() && g.grid->orientation == study::GridOrientation::Horizontal) {
-    s << "<table class=\"grid-table\"><tr><th>EN 17037 level</th><th>target (50 % of the area)</th><th>area reaching it</th>"
+    const std::string target_area = format_value(annual->en17037_target_area_required_percent, Precision::Percent);
+    s << "<table class=\"grid-table\"><tr><th>EN 17037 level</th><th>target (" << target_area
+      << " % of the area)</th><th>area reaching it</th>"
          "<th>minimum target (95 % of the area)</th><th>area reaching it</th><th>result</th></tr>";
     for (const study::En17037Level& level : annual->en17037)
       s << "<tr><td>" << esc(level.level) << "</td><td>" << format_value(level.target_lux, Precision::Illuminance)
@@ -676,8 +678,12 @@ std::string grid_section(const GridData& g, PageIds& page) {
         << verdict_badge(level.passes ? "pass" : "fail", level.passes ? "pass" : "fail") << "</td></tr>";
     s << "</table><p class=\"note\">EN 17037 daylight provision over " << annual->en17037_daylight_hours
       << " daylight hours (half the year, ranked by " << esc(annual->en17037_daylight_hours_source)
-      << "); a level passes when its target is met on &#8805; 50 % and its minimum target on &#8805; 95 % of the "
-         "area, each for &#8805; 50 % of the daylight hours.</p>";
+      << "); a level passes when its target is met on &#8805; " << target_area
+      << " % and its minimum target on &#8805; 95 % of the area, each for &#8805; 50 % of the daylight hours"
+      << (annual->en17037_openings == "horizontal"
+              ? " (the model's daylight openings are horizontal: EN 17037 asks the target over 95 % of the area)"
+              : "")
+      << ".</p>";
   }
   s << "</div>";
 

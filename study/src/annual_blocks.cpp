@@ -103,7 +103,7 @@ std::optional<AnnualStudy> annual_study_in_blocks(StepExecutor& executor, const 
   study.grid = metrics::summarize_grid(study.sensors, settings.metrics, {}, sun ? &study.ase_hours : nullptr);
   if (!sky.daylight_hours_quantity.empty()) {
     study.grid.en17037 = metrics::en17037_daylight_provision(
-        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity));
+        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity), {}, settings.metrics);
     study.daylight_hours_source = sky.daylight_hours_source;
   }
   return study;

@@ -220,7 +220,7 @@ AnnualStudy compute_annual_study(const RadianceMatrix& coefficients, const Annua
       throw std::invalid_argument("daylight-hours quantity has " + std::to_string(sky.daylight_hours_quantity.size()) +
                                   " values for " + std::to_string(sky.steps.size()) + " steps");
     study.grid.en17037 = metrics::en17037_daylight_provision(
-        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity));
+        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity), {}, settings.metrics);
     study.daylight_hours_source = sky.daylight_hours_source;
   }
   return study;
@@ -298,6 +298,8 @@ nlohmann::json grid_metrics_value(const AnnualStudy& study, const AnnualStudySet
     }
     j["en17037"] = {{"daylight_hours", study.illuminance.step_count() / 2},
                     {"daylight_hours_source", study.daylight_hours_source},
+                    {"openings", metrics::en17037_openings_name(m.en17037_openings)},
+                    {"target_area_required_percent", metrics::en17037_target_area_required_percent(m)},
                     {"levels", levels}};
   }
   j["sky"] = study.sky_description;

@@ -354,7 +354,7 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
   study.grid = metrics::summarize_grid(study.sensors, settings.metrics, {}, &study.ase_hours);
   if (!sky.daylight_hours_quantity.empty())
     study.grid.en17037 = metrics::en17037_daylight_provision(
-        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity));
+        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity), {}, settings.metrics);
   return study;
 }
 
@@ -433,7 +433,7 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
       throw std::invalid_argument("daylight-hours quantity has " + std::to_string(sky.daylight_hours_quantity.size()) +
                                   " values for " + std::to_string(n_steps) + " steps");
     study.grid.en17037 = metrics::en17037_daylight_provision(
-        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity));
+        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity), {}, settings.metrics);
     study.daylight_hours_source = sky.daylight_hours_source;
   }
   return study;

@@ -115,8 +115,10 @@ std::vector<Verdict> grid_verdicts(const GridResult& g) {
       const std::string level = a->en17037_level();
       int passed = 0;
       for (const En17037Level& l : a->en17037) passed += l.passes;
+      // The rule: the target over 50 % of the area, or over 95 % under horizontal openings.
+      const std::string rule = a->en17037_openings == "horizontal" ? " (horizontal openings: the target over 95 % of the area)" : "";
       out.push_back(assessed(En17037, "level", "minimum, medium or high", passed, "level", passed > 0,
-                             level == "none" ? "no level reached" : level + " level reached"));
+                             (level == "none" ? "no level reached" : level + " level reached") + rule));
     }
   } else {
     const char* why = "no annual results for this grid";

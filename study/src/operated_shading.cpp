@@ -109,7 +109,7 @@ OperatedStudy compute_operated_study(const metrics::IlluminanceTable& open,
       throw std::invalid_argument("daylight-hours quantity has " + std::to_string(daylight_hours_quantity.size()) +
                                   " values for " + std::to_string(open.step_count()) + " steps");
     study.grid.en17037 = metrics::en17037_daylight_provision(
-        study.illuminance, metrics::OccupancySchedule::brightest_half(daylight_hours_quantity));
+        study.illuminance, metrics::OccupancySchedule::brightest_half(daylight_hours_quantity), {}, settings.metrics);
     study.daylight_hours_source = daylight_hours_source;
   }
   return result;

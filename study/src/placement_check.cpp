@@ -10,6 +10,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/engine/plane_cuts.h"
+#include "dayphoton/study/daylight_openings.h"
 #include "dayphoton/engine/port_facing.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
@@ -583,6 +584,8 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
   }
   check_exterior_geometry(scene, out.warnings);
   check_gather_outside_region(scene, grids, near_cut_rows, proj, out.warnings);
+  if (proj.study == project::StudyKind::Annual && proj.outputs.metrics)
+    if (std::optional<Diagnostic> w = daylight_openings_warning(daylight_openings(scene))) out.warnings.push_back(*w);
   if (grids.empty())
     report(diag, project, "the project has no sensors: add a grid or a point set under 'sensors'");
   diag.throw_if_errors();

@@ -45,9 +45,10 @@ metrics::OccupancyPlan occupancy_plan(const project::OccupancySpec& o, const pro
 }
 
 AnnualStudySettings annual_settings_of(const project::Project& project, const weather::HourlyWeather* weather,
-                                       const std::string& sensor_set) {
+                                       metrics::MetricSettings::Openings openings, const std::string& sensor_set) {
   AnnualStudySettings settings;
   settings.metrics = metric_settings(project.metrics);
+  settings.metrics.en17037_openings = openings;
   const project::OccupancySpec* spec = &project.metrics.occupancy;
   for (const project::GridSpec& g : project.sensors.grids)
     if (g.name == sensor_set && g.occupancy.given) spec = &g.occupancy;
@@ -62,7 +63,9 @@ std::vector<std::string> occupancy_summary(const project::Project& project, cons
   std::vector<std::string> lines;
   const std::vector<metrics::TimeStamp> steps = time_stamps(weather);
   auto add = [&](const std::string& label, const std::string& set) {
-    const AnnualStudySettings settings = annual_settings_of(project, &weather, set);
+    // The schedule only: the openings do not change it.
+    const AnnualStudySettings settings =
+        annual_settings_of(project, &weather, metrics::MetricSettings::Openings::VerticalOrInclined, set);
     const metrics::OccupancySchedule schedule = occupancy_schedule(settings, steps);
     lines.push_back(label + ": " + settings.occupancy.description() + "; " + std::to_string(schedule.occupied_count()) +
                     " occupied hours of " + std::to_string(steps.size()));

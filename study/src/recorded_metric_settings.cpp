@@ -52,6 +52,9 @@ AnnualStudySettings recorded_annual_settings(const AnnualSummary& a, const Sourc
   m.sda_time_fraction = a.sda_time_fraction;
   m.ase_threshold_lux = a.ase_threshold_lux;
   m.ase_hours = a.ase_hours;
+  const std::optional<metrics::MetricSettings::Openings> openings = metrics::parse_en17037_openings(a.en17037_openings);
+  if (!openings) throw InputError(where, "en17037 openings '" + a.en17037_openings + "' is not one of the kinds dayphoton writes");
+  m.en17037_openings = *openings;
 
   const OccupancySummary& o = a.occupancy;
   metrics::OccupancyPlan& plan = settings.occupancy;

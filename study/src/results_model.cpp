@@ -186,6 +186,8 @@ json grid_json(const GridResult& g) {
         {"en17037",
          {{"daylight_hours", a->en17037_daylight_hours},
           {"daylight_hours_source", a->en17037_daylight_hours_source},
+          {"openings", a->en17037_openings},
+          {"target_area_required_percent", a->en17037_target_area_required_percent},
           {"levels", levels}}},
         {"sky", a->sky},
         {"da_verdicts_within_2_sigma",
@@ -541,6 +543,11 @@ struct Reader {
       const std::string ek = ak + ".en17037";
       a.en17037_daylight_hours = count(en, ek, "daylight_hours");
       a.en17037_daylight_hours_source = text(en, ek, "daylight_hours_source");
+      // Results written before the rule for horizontal openings have neither key: they were
+      // assessed with the rule for vertical and inclined openings.
+      if (en.contains("openings")) a.en17037_openings = text(en, ek, "openings");
+      if (const auto v = optional_number(en, ek, "target_area_required_percent"))
+        a.en17037_target_area_required_percent = *v;
       for (const json& lv : array(en, ek, "levels")) {
         const std::string lk2 = ek + ".levels";
         a.en17037.push_back({text(lv, lk2, "level"), number(lv, lk2, "target_lux"), number(lv, lk2, "minimum_target_lux"),
@@ -690,7 +697,9 @@ bool AnnualSummary::operator==(const AnnualSummary& o) const {
          udi_autonomous_percent == o.udi_autonomous_percent && udi_above_revised_percent == o.udi_above_revised_percent &&
          mean_occupied_lux == o.mean_occupied_lux && sda_percent == o.sda_percent && sda_sensors == o.sda_sensors &&
          ase_percent == o.ase_percent && en17037_daylight_hours == o.en17037_daylight_hours &&
-         en17037_daylight_hours_source == o.en17037_daylight_hours_source && en17037 == o.en17037 && sky == o.sky &&
+         en17037_daylight_hours_source == o.en17037_daylight_hours_source && en17037_openings == o.en17037_openings &&
+         en17037_target_area_required_percent == o.en17037_target_area_required_percent && en17037 == o.en17037 &&
+         sky == o.sky &&
          da_verdicts_within_2_sigma == o.da_verdicts_within_2_sigma;
 }
 std::string AnnualSummary::en17037_level() const {

@@ -345,6 +345,8 @@ void add_annual(GridResult& grid, const AnnualStudy& study, const AnnualStudySet
   if (!study.grid.en17037.empty()) {
     a.en17037_daylight_hours = study.illuminance.step_count() / 2;
     a.en17037_daylight_hours_source = study.daylight_hours_source;
+    a.en17037_openings = metrics::en17037_openings_name(m.en17037_openings);
+    a.en17037_target_area_required_percent = metrics::en17037_target_area_required_percent(m);
     for (std::size_t i = 0; i < study.grid.en17037.size(); ++i) {
       const metrics::En17037Result& r = study.grid.en17037[i];
       a.en17037.push_back({r.level, metrics::En17037Levels[i].target_lux, metrics::En17037Levels[i].minimum_target_lux,

@@ -76,6 +76,9 @@ struct RunContext {
   const weather::HourlyWeather* weather = nullptr;   ///< the project's weather file, if it has one
   const SunSite* sun_site = nullptr;       ///< the site its sun is computed for (sun_site.h)
   CaseResult* results = nullptr;  ///< the case being run, in the results model (results_model_builder.h)
+  /// The daylight openings of the case being run (daylight_openings.h; operated shading's
+  /// two cases differ by their shading only, so they share them).
+  metrics::MetricSettings::Openings openings = metrics::MetricSettings::Openings::VerticalOrInclined;
 };
 
 /// The scene of one case (the base project or a variant) and what its steps' keys share.

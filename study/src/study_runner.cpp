@@ -29,6 +29,7 @@
 #include "dayphoton/study/case_cost.h"
 #include "dayphoton/study/case_units.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/daylight_openings.h"
 #include "dayphoton/study/direct_sun_file.h"
 #include "dayphoton/study/output_lock.h"
 #include "dayphoton/study/output_manifest.h"
@@ -124,6 +125,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   // What an imported RADIANCE scene left out or approximated (docs/radiance-import.md).
   for (const Diagnostic& w : description.warnings) log.line(prefix + "warning: " + w.location.to_string() + ": " + w.message);
   const engine::Scene scene = engine::Scene::build(description);
+  // EN 17037's rule for horizontal daylight openings (daylight_openings.h).
+  const metrics::MetricSettings::Openings openings = daylight_openings(scene).kind;
+  ctx.openings = openings;
   // No port, no sensor, a port that faces no decidable way, sensors outside every room or in
   // a solid: located errors; sets with drop_occluded lose those sensors (placement_check.h).
   const PlacementCheck placement =
@@ -415,7 +419,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       }
       if (!multiply) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
-      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
+      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, openings, grid.name);
       const GridSunCoefficients grid_sun{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins};
       std::optional<AnnualStudy> computed;
       if (ctx.executor.shares_sensor_blocks()) {
@@ -453,7 +457,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     for (std::size_t g = 0; g < description.grids.size() && multiply; ++g) {
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
-      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, grid.name);
+      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, openings, grid.name);
       // By sensor blocks over the ranks of an MPI run; rank 0 alone gets the study and writes it.
       const std::optional<AnnualStudy> computed =
           ctx.executor.shares_sensor_blocks()

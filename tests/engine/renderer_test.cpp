@@ -22,6 +22,7 @@
 #include "dayphoton/engine/distant_source.h"
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/sky/patch_basis.h"
+#include "dayphoton/sky/solar_position.h"
 #include "test_scenes.h"
 
 namespace dayphoton::engine {
@@ -338,6 +339,83 @@ TEST(PhotonRenderer, AnOpeningShowsTheSkyExactly) {
   const Vec3 expected = sky.radiance(normalize(c.direction));
   EXPECT_NEAR(image.radiance[0].x, expected.x, 1e-6 * expected.x);
   EXPECT_NEAR(image.radiance[0].z, expected.z, 1e-6 * expected.z);
+}
+
+/// The office with its window made a fully diffusing pane (RADIANCE trans: colour 1, no
+/// specularity, transmissivity 0.6, transmitted specular 0: tau_d = 0.6, rho_d = 0.4).
+constexpr double DiffusingPaneTau = 0.6;
+SceneDescription office_with_diffusing_window() {
+  SceneDescription d = test::office_room();
+  MaterialSpec& pane = d.materials[static_cast<std::size_t>(d.surfaces[test::OfficeWindowSurface].material)];
+  pane.type = MaterialType::Translucent;
+  pane.reflectance = {1, 1, 1};
+  pane.transmittance = {0, 0, 0};
+  pane.specularity = 0;
+  pane.transmissivity = DiffusingPaneTau;
+  pane.transmitted_specular = 0;
+  return d;
+}
+
+/// One pixel at the middle of the office window, seen from the room; its mean over `samples`
+/// camera samples and its standard error. No photons: the pane's room side then contributes
+/// nothing (its port shadow rays run along its own plane), so the pixel is tau_d / pi times
+/// the irradiance on the pane's sky side.
+std::pair<double, double> diffusing_window_pixel(const SceneDescription& d, const RenderSky& sky, int samples) {
+  const Scene scene = Scene::build(d);
+  const std::vector<Material> materials = models(d);
+  RenderOptions options;
+  options.samples_per_pixel = samples;
+  options.direct_samples = 16;
+  options.seed = 11;
+  const PhotonRenderer renderer(scene, materials, {}, sky, options);
+  Camera c;
+  c.position_m = {3, 4, 1.65};
+  c.direction = {0, -1, 0};
+  c.fov_deg = 0.05;
+  c.width = c.height = 1;
+  const RenderedImage image = renderer.render(c);
+  return {image.radiance[0].x, std::sqrt(image.variance[0].x)};
+}
+
+// A diffusing pane is drawn with tau_d E / pi, E the irradiance on its sky side: for the
+// window (vertical, facing south, nothing outside) under a uniform sky of radiance L over a
+// ground of radiance rho_g L, E = pi (L + rho_g L) / 2, plus the sun's L_sun Omega cos(theta)
+// (the sun 30 degrees high due south: theta = 30 degrees). The renderer used to draw it black.
+TEST(PhotonRenderer, ADiffusingPortShowsItsSkySideIrradianceTimesTauOverPi) {
+  const SceneDescription d = office_with_diffusing_window();
+  RenderSky sky = uniform_sky(SourceSet::sky_bins(sky::PatchBasis::tregenza()).size());
+  const double sky_l = SkyLux / Pi / RadianceWhiteEfficacy_lm_per_W;
+  const double sun_l = 1000 * sky_l;
+  const double altitude = deg_to_rad(30);
+  sky.sun = RenderSky::Sun{{0, -std::cos(altitude), std::sin(altitude)}, sky::SunHalfAngle_rad, {sun_l, sun_l, sun_l}};
+  const double sun_sr = 2 * Pi * (1 - std::cos(sky::SunHalfAngle_rad));
+  const double e = Pi * (sky_l + GroundReflectance * sky_l) / 2 + sun_l * sun_sr * std::cos(altitude);
+  const double expected = DiffusingPaneTau / Pi * e;
+  const auto [mean, se] = diffusing_window_pixel(d, sky, 256);
+  // 4 standard errors (a false alarm once in ~16 000 runs), the sun's cosine over its disc
+  // taken at its centre (relative error below 1e-5).
+  EXPECT_GT(se, 0);
+  EXPECT_NEAR(mean, expected, 4 * se + 1e-5 * expected);
+}
+
+// An outdoor surface in front of the pane is seen with its diffuse reflection of the sky: a
+// wall 50 m south of the window (20 km square, reflectance 0.5, facing the office) fills the
+// pane's whole outdoor view and hides the sun, and is itself lit by the sky and ground over
+// its half of the hemisphere, less the office's facade (6 x 3 m at 50 m or more: under 0.3 %
+// of its irradiance), so E(pane) = 0.5 pi (L + rho_g L) / 2 within -0.3 %.
+TEST(PhotonRenderer, ADiffusingPortShowsTheOutdoorSurfacesItFacesByTheirReflection) {
+  SceneDescription d = office_with_diffusing_window();
+  const int grey = test::add_material(d, "obstruction", MaterialType::Lambertian, 0.5);
+  test::add_surface(d, "obstruction", grey, {{10000, -50, -10000}, {10000, -50, 10000}, {-10000, -50, 10000}, {-10000, -50, -10000}});
+  RenderSky sky = uniform_sky(SourceSet::sky_bins(sky::PatchBasis::tregenza()).size());
+  const double sky_l = SkyLux / Pi / RadianceWhiteEfficacy_lm_per_W;
+  const double altitude = deg_to_rad(30);
+  sky.sun = RenderSky::Sun{{0, -std::cos(altitude), std::sin(altitude)}, sky::SunHalfAngle_rad, {1000 * sky_l, 1000 * sky_l, 1000 * sky_l}};
+  const double expected = DiffusingPaneTau / Pi * 0.5 * Pi * (sky_l + GroundReflectance * sky_l) / 2;
+  const auto [mean, se] = diffusing_window_pixel(d, sky, 256);
+  EXPECT_GT(se, 0);
+  EXPECT_LT(mean, expected + 4 * se);
+  EXPECT_GT(mean, expected * (1 - 0.003) - 4 * se);
 }
 
 TEST(PhotonRenderer, RejectsBadInput) {

@@ -187,6 +187,36 @@ TEST(AnnualMetrics, En17037LevelsOnAClosedFormTable) {
   EXPECT_STREQ(r[2].level, "high");
 }
 
+TEST(AnnualMetrics, En17037UnderHorizontalOpeningsAsksTheTargetOver95PercentOfTheArea) {
+  // The table above (sensor i sees 100 (i + 1) lx): the minimum level's 300 lx is reached on
+  // 90 % of the area, enough under windows (50 %), not under roof lights alone (95 %); with
+  // every sensor 200 lx brighter it is reached on 100 % and passes under either rule.
+  std::vector<TimeStamp> steps(4, TimeStamp{6, 21, 12.5});
+  IlluminanceTable table(steps, 20), brighter(steps, 20);
+  for (int t = 0; t < 4; ++t)
+    for (int s = 0; s < 20; ++s) {
+      table.lux(t, s) = 100.0f * (s + 1);
+      brighter.lux(t, s) = 100.0f * (s + 1) + 200.0f;
+    }
+  const OccupancySchedule hours(std::vector<bool>(4, true));
+  MetricSettings roof_lights;
+  roof_lights.en17037_openings = MetricSettings::Openings::Horizontal;
+  const auto r = en17037_daylight_provision(table, hours, {}, roof_lights);
+  EXPECT_DOUBLE_EQ(r[0].target_area_percent, 90);
+  EXPECT_DOUBLE_EQ(r[0].target_area_required_percent, 95);
+  EXPECT_FALSE(r[0].passes);
+  EXPECT_TRUE(en17037_daylight_provision(table, hours)[0].passes);
+  EXPECT_TRUE(en17037_daylight_provision(brighter, hours, {}, roof_lights)[0].passes);
+  // Both kinds of opening: the rule for vertical and inclined openings (and a warning).
+  MetricSettings both;
+  both.en17037_openings = MetricSettings::Openings::Both;
+  EXPECT_TRUE(en17037_daylight_provision(table, hours, {}, both)[0].passes);
+  for (MetricSettings::Openings o : {MetricSettings::Openings::VerticalOrInclined, MetricSettings::Openings::Horizontal,
+                                     MetricSettings::Openings::Both})
+    EXPECT_EQ(parse_en17037_openings(en17037_openings_name(o)), o);
+  EXPECT_FALSE(parse_en17037_openings("skylights"));
+}
+
 TEST(AnnualMetrics, ReproducesTheRadianceReferenceMetrics) {
   const std::string dir = std::string(DAYPHOTON_TEST_DATA_DIR) + "/radiance";
   const std::string gz = dir + "/office_annual_illuminance_classic.csv.gz";

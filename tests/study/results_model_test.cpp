@@ -135,6 +135,8 @@ ResultsModel full_model() {
   a.ase_percent = 12.5;
   a.en17037_daylight_hours = 4380;
   a.en17037_daylight_hours_source = "diffuse";
+  a.en17037_openings = "horizontal";
+  a.en17037_target_area_required_percent = 95;
   a.en17037 = {{"minimum", 300, 100, 80, 100, true}, {"medium", 500, 300, 40, 80, false}};
   a.sky = "Perez";
   a.da_verdicts_within_2_sigma = 1;

@@ -153,6 +153,10 @@ struct Surface {
   /// free-standing pane, the inner pane of a double glazing). `port` must be false.
   bool port_if_outdoors = false;
   SurfaceOrigin origin = SurfaceOrigin::Other;
+  /// A port that stands for another daylight opening (a face of the box of openings around
+  /// a window's exterior system): a normal of that opening's plane. Zero: the port's own
+  /// plane is the opening's (study/daylight_openings.h, EN 17037's horizontal openings).
+  Vec3 opening_normal{0, 0, 0};
 };
 
 struct SensorPoint {

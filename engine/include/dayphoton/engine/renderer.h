@@ -24,7 +24,11 @@
 //     the estimate is unbiased); plus, if the sky has a sun, shadow rays to points of the
 //     sun disc (its radiance times its solid angle times the cosine and the transmittance);
 //   - a ray that leaves the scene sees the continuous sky or ground radiance (and the sun
-//     disc when it points into it).
+//     disc when it points into it);
+//   - on a port's sky side, which holds no photon and sees the sky without crossing a port,
+//     E comes from sky_side_irradiance instead: cosine-weighted rays to the sky and ground,
+//     one diffuse reflection off the outdoor surfaces they meet, and the sun by shadow rays
+//     (a diffusing pane is drawn with tau_d E / pi from there).
 // So the picture uses the same split as the daylight coefficients (direct by shadow rays,
 // everything scattered from photons) and, for a Lambertian surface, the luminance of a pixel
 // is rho E / pi with E the illuminance the coefficients give at that point (the acceptance
@@ -138,7 +142,18 @@ class PhotonRenderer {
 
  private:
   Vec3 escaped(const Vec3& direction) const;
-  Vec3 surface_irradiance(const Vec3& point, const Vec3& side_normal, Rng& rng) const;
+  /// E on `side_normal`'s side of the surface hit: photons plus port shadow rays, or on a
+  /// port's sky side sky_side_irradiance.
+  Vec3 surface_irradiance(const Hit& hit, const Vec3& side_normal, Rng& rng) const;
+  /// Irradiance outdoors (a port's sky side): cosine-weighted rays to the sky and ground,
+  /// `reflections` diffuse reflections off outdoor surfaces, and the sun by shadow rays.
+  Vec3 sky_side_irradiance(const Vec3& point, const Vec3& side_normal, Rng& rng, int samples, int reflections) const;
+  /// The sun's irradiance from `samples` shadow rays to its disc: through the ports with
+  /// sky_transmittance (indoors), or where nothing is in the way (outdoors).
+  enum class SunPath { ThroughPorts, Unobstructed };
+  Vec3 sun_irradiance(const Vec3& point, const Vec3& side_normal, Rng& rng, int samples, SunPath path) const;
+  /// Rays per estimate of the irradiance on an outdoor surface seen from a port's sky side.
+  static constexpr int OutdoorReflectionSamples = 4;
 
   const Scene* m_scene;
   const std::vector<Material>* m_materials;

@@ -3,6 +3,8 @@
 // section 5); every percentage is of the occupied steps, night steps included as 0 lux.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "dayphoton/metrics/illuminance_table.h"
@@ -18,7 +20,19 @@ struct MetricSettings {
   double sda_time_fraction = 0.5;        ///< sDA300/50%
   double ase_threshold_lux = 1000;       ///< ASE1000,250 (direct sun only)
   double ase_hours = 250;                ///< more than this many occupied hours fails a sensor
+  /// EN 17037:2018 daylight provision: the daylight openings of the model. Under horizontal
+  /// openings alone (roof lights) the standard asks the target illuminance over 95 % of the
+  /// reference plane instead of 50 % (en17037_target_area_required_percent); a model with
+  /// both kinds is assessed with the rule for vertical and inclined openings (and warned
+  /// about where the run finds it).
+  enum class Openings { VerticalOrInclined, Horizontal, Both };
+  Openings en17037_openings = Openings::VerticalOrInclined;
 };
+
+/// "vertical or inclined", "horizontal", "vertical or inclined, and horizontal" (results.json),
+/// and back (nullopt for any other text).
+const char* en17037_openings_name(MetricSettings::Openings openings);
+std::optional<MetricSettings::Openings> parse_en17037_openings(const std::string& name);
 
 /// Per-sensor metrics (percent of occupied steps unless the name says otherwise).
 struct SensorMetrics {
@@ -47,9 +61,16 @@ std::vector<int> ase_hours_per_sensor(const IlluminanceTable& direct_sun,
 /// EN 17037:2018 daylight provision (climate-based method) for one level.
 struct En17037Level {
   const char* name;
-  double target_lux;          ///< over 50 % of the plane
+  double target_lux;          ///< over 50 % of the plane (95 % under horizontal openings)
   double minimum_target_lux;  ///< over 95 % of the plane
 };
+/// The share of the reference plane (percent) that must reach the minimum target, and the
+/// target under daylight openings in vertical and inclined surfaces and under horizontal
+/// ones (EN 17037:2018, Annex A, Table A.1 and its rule for horizontal openings).
+constexpr double En17037MinimumTargetAreaPercent = 95.0;
+constexpr double En17037TargetAreaPercentVertical = 50.0;
+constexpr double En17037TargetAreaPercentHorizontal = 95.0;
+double en17037_target_area_required_percent(const MetricSettings& settings);
 constexpr En17037Level En17037Levels[3] = {
     {"minimum", 300, 100}, {"medium", 500, 300}, {"high", 750, 500}};
 
@@ -57,7 +78,9 @@ struct En17037Result {
   const char* level = "";
   double target_area_percent = 0;          ///< sensors with E >= target for >= 50 % of daylight hours
   double minimum_target_area_percent = 0;  ///< same for the minimum target
-  bool passes = false;                     ///< target_area >= 50 % and minimum area >= 95 %
+  bool passes = false;  ///< target area >= target_area_required_percent and minimum area >= 95 %
+  /// The area the target must reach: 50 %, or 95 % under horizontal openings.
+  double target_area_required_percent = En17037TargetAreaPercentVertical;
 };
 
 /// Grid summary: area-weighted means (equal weights when `area_weights` is empty).
@@ -75,6 +98,7 @@ GridMetrics summarize_grid(const std::vector<SensorMetrics>& sensors, const Metr
 /// EN 17037 levels from the table over the given daylight-hours schedule.
 std::vector<En17037Result> en17037_daylight_provision(const IlluminanceTable& table,
                                                       const OccupancySchedule& daylight_hours,
-                                                      const std::vector<double>& area_weights = {});
+                                                      const std::vector<double>& area_weights = {},
+                                                      const MetricSettings& settings = {});
 
 }  // namespace dayphoton::metrics

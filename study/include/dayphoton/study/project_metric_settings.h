@@ -24,8 +24,9 @@ metrics::OccupancyPlan occupancy_plan(const project::OccupancySpec& spec, const 
 /// Thresholds, occupancy and, when `weather` is given, its calendar. The occupancy is the sensor
 /// set's own (`sensors.grids[].occupancy`, `sensors.points[].occupancy`) when the set named
 /// `sensor_set` has one, else the project's (`metrics.occupancy`, else the daily window).
+/// `openings`: the model's daylight openings (daylight_openings.h), for EN 17037's rule.
 AnnualStudySettings annual_settings_of(const project::Project& project, const weather::HourlyWeather* weather,
-                                       const std::string& sensor_set = "");
+                                       metrics::MetricSettings::Openings openings, const std::string& sensor_set = "");
 
 /// For `check`: one line per schedule the project writes (`metrics.occupancy` and each sensor
 /// set's own), "occupancy[ of <set>]: <description>; N occupied hours of M", evaluated on the

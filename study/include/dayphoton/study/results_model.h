@@ -173,6 +173,10 @@ struct AnnualSummary {
   // EN 17037 daylight provision; empty levels: not computed.
   std::size_t en17037_daylight_hours = 0;
   std::string en17037_daylight_hours_source;
+  /// The model's daylight openings (metrics::en17037_openings_name) and the area the target
+  /// must reach for a level to pass (50 %, or 95 % under horizontal openings alone).
+  std::string en17037_openings = "vertical or inclined";
+  double en17037_target_area_required_percent = 50;
   std::vector<En17037Level> en17037;
   std::string sky;  ///< where the sky matrix came from
   /// Sensors whose DA verdict (DA >= sDA fraction) could flip within 2 standard errors.
