@@ -37,7 +37,7 @@
 // Tolerances, never tuned: the daylight factor against its own reported standard error
 // (`df_stderr_percent`), |DF - reference| <= z se + the printing (0.5e-4 %), z the normal
 // quantile at the Sidak-corrected two-sided 1e-3 per test; point_in_time.csv reports no
-// standard error, so the general skies are run with R = 8 seeds and the replicate mean is held
+// standard error, so the general skies are run with R = 12 seeds and the replicate mean is held
 // to t SE (Student, R - 1 degrees of freedom, Sidak-corrected 1e-3 per test) + the printing
 // (0.05 lx); and t SE must stay below 2 % of the reference, so a 2 % error is seen. Both add
 // the quadrature's own error bound (5e-4 relative, checked against Lambert's formula).
@@ -73,7 +73,7 @@ constexpr double RefractiveIndex = 1.52;
 /// Clear float glass: a normal transmittance typical of 4-6 mm clear glass.
 constexpr double GlassNormalTransmittance = 0.88;
 constexpr double ObstructionReflectance = 0.5;
-constexpr int Replicates = 8;
+constexpr int Replicates = 12;
 constexpr double FamilyAlpha = 1e-3;
 constexpr double AcceptanceRelative = 0.02;
 /// The opening quadrature's own error, at most (checked against Lambert's formula on a masked
