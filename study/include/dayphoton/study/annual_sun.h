@@ -132,8 +132,9 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
 /// Receiver-plane estimates are made a
 /// block of sensors at a time (SunCoefficientBlockValues), with the same values.
 /// A block's double-precision parts (two RGB parts and a variance, 56 bytes a value) are
-/// 14 MiB at SunCoefficientBlockValues.
-constexpr std::size_t SunCoefficientBlockValues = std::size_t(1) << 18;
+/// 56 MiB at SunCoefficientBlockValues (2^18 cost the open-plan bench's sun step +29 % CPU:
+/// each block's tasks start their lookups without a hint; docs/photon-tracing.md "Scale").
+constexpr std::size_t SunCoefficientBlockValues = std::size_t(1) << 20;
 RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const std::vector<engine::Material>& materials,
                                     const engine::SourceSet& sources,
