@@ -723,6 +723,16 @@ void estimate_photon_coefficients(const GridPhotons& photons,
       }
       return;
     }
+    // The contribution estimator's rows, made once per task and cleared per lookup: a
+    // lookup's per-source sums, and the row the sub-patch passes write and discard.
+    std::vector<Vec3> per_source(n_src);
+    std::vector<double> per_source_variance(n_src);
+    DaylightCoefficients scratch;
+    if (shares) {
+      scratch.caustic.resize(n_src);
+      scratch.global.resize(n_src);
+      scratch.photon_variance.resize(n_src);
+    }
     for (std::size_t s = range.begin(); s != range.end(); ++s) {
       const SensorPoint& sensor = sensors[s];
       const std::size_t row = s - rows.begin;
@@ -735,17 +745,16 @@ void estimate_photon_coefficients(const GridPhotons& photons,
           DensityEstimateOptions density = options.density;
           if (f == 1) density.flux = PhotonFlux::TimesSkyRatio;  // the second pass, into `weighted`
           if (f >= 2) density.flux = in_sky_quadrant(std::size_t(f - 2));
-          DaylightCoefficients scratch;
           if (f >= 2) {
-            scratch.caustic.assign(n_src, Vec3{0, 0, 0});
-            scratch.global.assign(n_src, Vec3{0, 0, 0});
-            scratch.photon_variance.assign(n_src, 0.0);
+            std::fill(scratch.caustic.begin(), scratch.caustic.end(), Vec3{0, 0, 0});
+            std::fill(scratch.global.begin(), scratch.global.end(), Vec3{0, 0, 0});
+            std::fill(scratch.photon_variance.begin(), scratch.photon_variance.end(), 0.0);
           }
           DaylightCoefficients& into = f == 0 ? out : f == 1 ? *weighted : scratch;
           const std::size_t into_row = f >= 2 ? 0 : row;
           if (c == PathClass::Caustic && options.caustic_bandwidth > 0) density.bandwidth = options.caustic_bandwidth;
-          std::vector<Vec3> per_source(n_src, Vec3{0, 0, 0});
-          std::vector<double> per_source_variance(n_src, 0.0);
+          std::fill(per_source.begin(), per_source.end(), Vec3{0, 0, 0});
+          std::fill(per_source_variance.begin(), per_source_variance.end(), 0.0);
           const DensityEstimate e =
               options.bias_compensation
                   ? estimate_contributions_bias_compensated(

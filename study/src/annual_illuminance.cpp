@@ -11,7 +11,9 @@
 // the tiling, the thread count or the instruction set: tile_product.h). A task holds
 // TilesPerTask tiles, and two rows of W at a time are read once per task (about 10,000
 // sensors x 146 bins: W is 35 MB, read from memory once per task instead of once per tile).
-// oneTBB spreads the tasks over the cores.
+// oneTBB spreads the tasks over the cores. W is made and multiplied a block of sensors at a
+// time (WeightBlockValues), so the product holds 16 MiB of weights whatever the grid's size
+// (with the sub-patch terms a row of W is up to 7 x bins doubles: 80 MB at 10,000 sensors).
 //
 // The sub-patch correction (sub_patch_shares.h) extends each row of W and each gathered sky
 // column: for every sky bin p that some sensor's direct part sees, four more terms, W =
@@ -44,6 +46,8 @@ namespace {
 constexpr std::size_t Tile = detail::TileSteps;  ///< sky columns per tile (16 double accumulators)
 constexpr std::size_t TilesPerTask = 4;          ///< tiles sharing one read of the weights
 constexpr std::size_t SensorsPerProduct = 2;     ///< weight rows multiplied into a tile at once
+/// Weights W held at once (2^21 doubles, 16 MiB): the rows of a block of sensors.
+constexpr std::size_t WeightBlockValues = std::size_t(1) << 21;
 
 std::vector<double> photometric_weights(int components) {
   if (components == 3)
@@ -170,17 +174,6 @@ metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
   metrics::IlluminanceTable table(steps, n_sensors);
   if (n_sensors == 0 || n_steps == 0) return table;
 
-  // W[s][p c] = 179 w_c C[s][p][c]; the coefficient matrix is already row-major (p, c). Then
-  // the correction's 179 (lum C_p, Q_p0, Q_p1, Q_p2) of the bins seen.
-  std::vector<double> weighted(n_sensors * k);
-  for (std::size_t s = 0; s < n_sensors; ++s) {
-    for (std::size_t i = 0; i < k_sky; ++i)
-      weighted[s * k + i] = w[i % n_comp] * static_cast<double>(coefficients.data()[s * k_sky + i]);
-    for (std::size_t j = 0; j < seen.size(); ++j)
-      for (std::size_t v = 0; v < Q; ++v)
-        weighted[s * k + k_sky + j * Q + v] =
-            RadianceWhiteEfficacy_lm_per_W * static_cast<double>(shares->values[(s * n_bins + seen[j]) * Q + v]);
-  }
   const float* deltas = correct ? quadrant_deltas->data().data() : nullptr;
 
   // Day steps: columns with any non-zero value. Row by row, so the matrix is read in order.
@@ -201,43 +194,63 @@ metrics::IlluminanceTable annual_illuminance(const RadianceMatrix& coefficients,
   // in the second-level cache), a quarter of the memory traffic of a pass over the weights per
   // tile. Each value is still the one sequential sum of the plain loop (detail::tile_product).
   const std::size_t n_tasks = (n_tiles + TilesPerTask - 1) / TilesPerTask;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n_tasks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-    std::vector<double> columns(TilesPerTask * k * Tile);  // tile u: columns[(u k + i) Tile + j] = S[p][t_j][c], i = p c
-    double acc[SensorsPerProduct * Tile];
-    for (std::size_t task = r.begin(); task != r.end(); ++task) {
-      const std::size_t first_tile = task * TilesPerTask;
-      const std::size_t tiles = std::min(TilesPerTask, n_tiles - first_tile);
-      std::fill(columns.begin(), columns.end(), 0.0);
-      for (std::size_t u = 0; u < tiles; ++u) {
-        const std::size_t first = (first_tile + u) * Tile;
-        const std::size_t m = std::min(Tile, day.size() - first);
-        double* tile_columns = columns.data() + u * k * Tile;
-        for (std::size_t j = 0; j < m; ++j) {
-          const std::size_t t = day[first + j];
-          for (std::size_t p = 0; p < n_bins; ++p)
-            for (std::size_t c = 0; c < n_comp; ++c)
-              tile_columns[(p * n_comp + c) * Tile + j] = sky[(p * n_steps + t) * n_comp + c];
-          for (std::size_t i = 0; i < seen.size(); ++i) {
-            const float* d = deltas + (Q * seen[i]) * n_steps + t;  // row Q p + q, column t
-            const double d3 = d[3 * n_steps];
-            double* col = tile_columns + (k_sky + i * Q) * Tile + j;
-            col[0] = d3;
-            for (std::size_t q = 0; q < 3; ++q) col[(q + 1) * Tile] = double(d[q * n_steps]) - d3;
-          }
-        }
-      }
-      for (std::size_t s = 0; s < n_sensors; s += SensorsPerProduct) {
-        const std::size_t rows = std::min(SensorsPerProduct, n_sensors - s);
+  // W a block of sensors at a time (WeightBlockValues doubles, an even count of rows): the
+  // weights held do not grow with the grid (docs/photon-tracing.md "Scale"); each value is the
+  // same sum whatever the block.
+  const std::size_t block_rows = std::max<std::size_t>(
+      SensorsPerProduct, WeightBlockValues / std::max<std::size_t>(1, k) / SensorsPerProduct * SensorsPerProduct);
+  std::vector<double> weighted(std::min(block_rows, n_sensors) * k);
+  for (std::size_t block_first = 0; block_first < n_sensors; block_first += block_rows) {
+    const std::size_t block_end = std::min(n_sensors, block_first + block_rows);
+    // W[s][p c] = 179 w_c C[s][p][c]; the coefficient matrix is already row-major (p, c). Then
+    // the correction's 179 (lum C_p, Q_p0, Q_p1, Q_p2) of the bins seen.
+    for (std::size_t s = block_first; s < block_end; ++s) {
+      double* row = weighted.data() + (s - block_first) * k;
+      for (std::size_t i = 0; i < k_sky; ++i)
+        row[i] = w[i % n_comp] * static_cast<double>(coefficients.data()[s * k_sky + i]);
+      for (std::size_t j = 0; j < seen.size(); ++j)
+        for (std::size_t v = 0; v < Q; ++v)
+          row[k_sky + j * Q + v] =
+              RadianceWhiteEfficacy_lm_per_W * static_cast<double>(shares->values[(s * n_bins + seen[j]) * Q + v]);
+    }
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n_tasks, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      std::vector<double> columns(TilesPerTask * k * Tile);  // tile u: columns[(u k + i) Tile + j] = S[p][t_j][c], i = p c
+      double acc[SensorsPerProduct * Tile];
+      for (std::size_t task = r.begin(); task != r.end(); ++task) {
+        const std::size_t first_tile = task * TilesPerTask;
+        const std::size_t tiles = std::min(TilesPerTask, n_tiles - first_tile);
+        std::fill(columns.begin(), columns.end(), 0.0);
         for (std::size_t u = 0; u < tiles; ++u) {
           const std::size_t first = (first_tile + u) * Tile;
           const std::size_t m = std::min(Tile, day.size() - first);
-          detail::tile_product(weighted.data() + s * k, rows, k, columns.data() + u * k * Tile, acc);
-          for (std::size_t q = 0; q < rows; ++q)
-            for (std::size_t j = 0; j < m; ++j) table.lux(day[first + j], s + q) = static_cast<float>(acc[q * Tile + j]);
+          double* tile_columns = columns.data() + u * k * Tile;
+          for (std::size_t j = 0; j < m; ++j) {
+            const std::size_t t = day[first + j];
+            for (std::size_t p = 0; p < n_bins; ++p)
+              for (std::size_t c = 0; c < n_comp; ++c)
+                tile_columns[(p * n_comp + c) * Tile + j] = sky[(p * n_steps + t) * n_comp + c];
+            for (std::size_t i = 0; i < seen.size(); ++i) {
+              const float* d = deltas + (Q * seen[i]) * n_steps + t;  // row Q p + q, column t
+              const double d3 = d[3 * n_steps];
+              double* col = tile_columns + (k_sky + i * Q) * Tile + j;
+              col[0] = d3;
+              for (std::size_t q = 0; q < 3; ++q) col[(q + 1) * Tile] = double(d[q * n_steps]) - d3;
+            }
+          }
+        }
+        for (std::size_t s = block_first; s < block_end; s += SensorsPerProduct) {
+          const std::size_t rows = std::min(SensorsPerProduct, block_end - s);
+          for (std::size_t u = 0; u < tiles; ++u) {
+            const std::size_t first = (first_tile + u) * Tile;
+            const std::size_t m = std::min(Tile, day.size() - first);
+            detail::tile_product(weighted.data() + (s - block_first) * k, rows, k, columns.data() + u * k * Tile, acc);
+            for (std::size_t q = 0; q < rows; ++q)
+              for (std::size_t j = 0; j < m; ++j) table.lux(day[first + j], s + q) = static_cast<float>(acc[q * Tile + j]);
+          }
         }
       }
-    }
-  });
+    });
+  }
   // Finite inputs can still overflow a float (coefficients of 1e30 under a sky of 1e10).
   for (std::size_t t = 0; t < n_steps; ++t)
     for (std::size_t s = 0; s < n_sensors; ++s)

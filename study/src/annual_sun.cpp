@@ -241,17 +241,20 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
   return result;
 }
 
-RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
-                                    const std::vector<engine::Material>& materials,
-                                    const engine::SourceSet& sources,
-                                    const engine::GridPhotons& photons,
-                                    const std::vector<SensorPoint>& sensors,
-                                    const engine::CoefficientOptions& options, std::vector<double>* variance,
-                                    engine::SensorRange rows, std::size_t block_values) {
+namespace {
+
+/// sun_bin_coefficients with the variances stored as `Real` (double, or float as the cache
+/// keeps them).
+template <class Real>
+RadianceMatrix sun_bin_coefficients_into(const engine::Scene& scene, const std::vector<engine::Material>& materials,
+                                         const engine::SourceSet& sources, const engine::GridPhotons& photons,
+                                         const std::vector<SensorPoint>& sensors,
+                                         const engine::CoefficientOptions& options, std::vector<Real>* variance,
+                                         engine::SensorRange rows, std::size_t block_values) {
   rows = rows.within(sensors.size());
   const std::size_t n_sources = photons.source_count();
   RadianceMatrix result(rows.size(), n_sources, 3);
-  if (variance) variance->assign(rows.size() * n_sources, 0.0);
+  if (variance) variance->assign(rows.size() * n_sources, Real(0));
   // Estimates on a receiver plane without bias compensation are made a block of sensors at a
   // time, so the double-precision parts of only SunCoefficientBlockValues coefficients are
   // held, whatever the grid's size; the others in one block. A block's rows are those of the
@@ -274,10 +277,28 @@ RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
         const std::size_t i = s * n_sources + p;
         const Vec3 total = Vec3{} + c.caustic[i] + c.global[i];  // DaylightCoefficients::total, no direct part
         for (int k = 0; k < 3; ++k) result.at(row0 + s, p, k) = static_cast<float>(total[k]);
-        if (variance) (*variance)[(row0 + s) * n_sources + p] = c.photon_variance[i];
+        if (variance) (*variance)[(row0 + s) * n_sources + p] = static_cast<Real>(c.photon_variance[i]);
       }
   }
   return result;
+}
+
+}  // namespace
+
+RadianceMatrix sun_bin_coefficients(const engine::Scene& scene, const std::vector<engine::Material>& materials,
+                                    const engine::SourceSet& sources, const engine::GridPhotons& photons,
+                                    const std::vector<SensorPoint>& sensors, const engine::CoefficientOptions& options,
+                                    std::vector<double>* variance, engine::SensorRange rows,
+                                    std::size_t block_values) {
+  return sun_bin_coefficients_into(scene, materials, sources, photons, sensors, options, variance, rows, block_values);
+}
+
+RadianceMatrix sun_bin_coefficients(const engine::Scene& scene, const std::vector<engine::Material>& materials,
+                                    const engine::SourceSet& sources, const engine::GridPhotons& photons,
+                                    const std::vector<SensorPoint>& sensors, const engine::CoefficientOptions& options,
+                                    std::vector<float>* variance, engine::SensorRange rows,
+                                    std::size_t block_values) {
+  return sun_bin_coefficients_into(scene, materials, sources, photons, sensors, options, variance, rows, block_values);
 }
 
 metrics::IlluminanceTable direct_sun_table(const RadianceMatrix& direct,
@@ -362,13 +383,16 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
                                           const GridSunCoefficients& sun, const AnnualStudySettings& settings,
                                           const SubPatchShares* shares) {
   const std::size_t n_steps = sky.steps.size(), n_sensors = sky_coefficients.rows();
-  const RadianceMatrix& direct = *sun.direct;
+  const SparseSunRows* sparse = sun.direct_rows;
+  const RadianceMatrix* dense = sparse ? nullptr : sun.direct;
   const RadianceMatrix& bin_coefficients = *sun.bin_coefficients;
   const std::vector<sky::SunRecord>& suns = *sun.suns;
   const engine::SunBins& bins = *sun.bins;
-  if (direct.columns() != suns.size() || direct.rows() != n_sensors)
-    throw std::invalid_argument("annual sun: a direct sun of " + std::to_string(direct.rows()) + " sensors x " +
-                                std::to_string(direct.columns()) + " suns for " + std::to_string(n_sensors) +
+  const std::size_t direct_rows = sparse ? sparse->rows : dense->rows();
+  const std::size_t direct_columns = sparse ? sparse->columns : dense->columns();
+  if (direct_columns != suns.size() || direct_rows != n_sensors)
+    throw std::invalid_argument("annual sun: a direct sun of " + std::to_string(direct_rows) + " sensors x " +
+                                std::to_string(direct_columns) + " suns for " + std::to_string(n_sensors) +
                                 " sensors and " + std::to_string(suns.size()) + " suns");
   if (bin_coefficients.columns() != bins.size() || bin_coefficients.rows() != n_sensors)
     throw std::invalid_argument("annual sun: sun-bin coefficients of " + std::to_string(bin_coefficients.rows()) +
@@ -397,7 +421,7 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
   std::size_t occupied_without_sun = study.occupied_hours;
   for (std::size_t i : used) occupied_without_sun -= occupancy.occupied(suns[i].step) ? 1 : 0;
   study.ase_hours.assign(n_sensors, zero >= threshold ? static_cast<int>(occupied_without_sun) : 0);
-  const Vec3 wd = photometric_weights(direct.components());
+  const Vec3 wd = photometric_weights(sparse ? 1 : dense->components());
   const Vec3 wi = photometric_weights(bin_coefficients.components());
   // The sun added in place, the three parts summed in double as compute_annual_study_with_sun
   // of the tables does, each part rounded to float as its table stores it: the same values,
@@ -410,10 +434,18 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
         for (int c = 0; c < bin_coefficients.components(); ++c) e += wi[c] * double(bin_coefficients.at(s, j, c));
         lux[j] = e;
       }
+      // The sparse row's entries in sun order, as `used` is: a missing entry is the dense 0.
+      std::uint64_t next = sparse ? sparse->row_start[s] : 0;
+      const std::uint64_t row_end = sparse ? sparse->row_start[s + 1] : 0;
       for (std::size_t u = 0; u < used.size(); ++u) {
         const sky::SunRecord& record = suns[used[u]];
         double ed = 0;
-        for (int c = 0; c < direct.components(); ++c) ed += wd[c] * double(direct.at(s, used[u], c));
+        if (sparse) {
+          while (next < row_end && sparse->column[next] < used[u]) ++next;
+          if (next < row_end && sparse->column[next] == used[u]) ed += wd[0] * double(sparse->value[next]);
+        } else {
+          for (int c = 0; c < dense->components(); ++c) ed += wd[c] * double(dense->at(s, used[u], c));
+        }
         const float d = static_cast<float>(ed * record.disc_radiance);
         const engine::SunStencil& st = stencils[u];
         double ei = 0;

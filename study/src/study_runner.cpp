@@ -334,7 +334,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     for (const sky::SunRecord& sun : ss.suns) directions.push_back(sun.direction);
     const engine::SunBins bins = engine::SunBins::for_suns(directions, sim.sun_mf);
     std::optional<SunAccuracyOutcome> sun_accuracy;
-    const std::vector<GridSun> sun =
+    std::vector<GridSun> sun =
         run_sun_bins(project, prefix, cs, ss, bins, ctx, project.outputs.coefficients, &sun_accuracy);
     if (sun_accuracy)
       for (std::size_t g = 0; g < description.grids.size(); ++g) {
@@ -381,10 +381,12 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
         // Independent files, each written by one thread: the two at once.
         tbb::parallel_invoke(
             [&] {
-              RadianceMatrix c = sun[g].bin_coefficients;
+              // The header line on the matrix itself for the file (no copy of sensors x bins x RGB).
+              RadianceMatrix& c = sun[g].bin_coefficients;
               c.header_lines().push_back("dayphoton sun-bin coefficients: caustic + global irradiance per unit "
                                          "disc radiance; columns = rows of sun_bins.csv");
               c.write_file(join_path(folders[g], "coefficients_sun.mtx"), matrix_format);
+              c.header_lines().pop_back();
               write_sun_bins_csv(bins, ss.suns, join_path(folders[g], "sun_bins.csv"));
             },
             [&] {
@@ -417,10 +419,21 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
           ctx.outputs.record(d_path);
         }
       }
+      // The other daytime suns' direct sun served the exports alone.
+      sun[g].direct_other = RadianceMatrix{};
+      sun[g].other_suns = {};
       if (!multiply) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
       const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, openings, grid.name);
-      const GridSunCoefficients grid_sun{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins};
+      GridSunCoefficients grid_sun{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins};
+      // The direct sun held sparse from here on, where nothing else reads it (the operated
+      // result reads its hourly table, the blocks of an MPI run their dense rows).
+      SparseSunRows direct_rows;
+      if (!keep && !ctx.executor.shares_sensor_blocks()) {
+        direct_rows = SparseSunRows::of(sun[g].direct);
+        sun[g].direct = RadianceMatrix{};
+        grid_sun.direct_rows = &direct_rows;
+      }
       std::optional<AnnualStudy> computed;
       if (ctx.executor.shares_sensor_blocks()) {
         // By sensor blocks over the ranks; rank 0 alone gets the study and writes it (annual_blocks.h).
@@ -431,6 +444,15 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
         computed =
             compute_annual_study_with_sun(coefficient_matrices[g], ss.sky, grid_sun, annual_settings, &sub_patches[g]);
       }
+      if (computed && keep)  // operated shading picks hours by the direct sun's table
+        keep->grids.push_back(
+            {grid.name, world_grids[g].points, computed->illuminance, direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps)});
+      // The hourly table holds the sun now: its direct sun (sensors x suns) and sun-bin
+      // coefficients (sensors x bins x RGB) are released before the outputs and the verdicts,
+      // which read the table and the bins' variances alone (docs/photon-tracing.md "Scale").
+      sun[g].direct = RadianceMatrix{};
+      direct_rows = SparseSunRows{};
+      sun[g].bin_coefficients = RadianceMatrix{};
       if (!computed) {  // another rank than 0
         progress.end();
         continue;
@@ -442,9 +464,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       ctx.outputs.record(write_annual_outputs_beside(study, world_grids[g].points, annual_settings, folders[g], which, [&] {
         verdicts = verdict_uncertainty(study, ss.sky, sky_variances[g], &sun_variance, annual_settings);
       }));
-      if (keep)  // operated shading picks hours by the direct sun's table
-        keep->grids.push_back(
-            {grid.name, world_grids[g].points, study.illuminance, direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps)});
+      sun[g].bin_variance = {};
       add_verdict_uncertainty(grids_json[g], verdicts, true);
       add_annual(ctx.results->grids[g], study, annual_settings, which);
       add_verdict_uncertainty(ctx.results->grids[g], verdicts);

@@ -88,18 +88,19 @@ void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, cons
     s.index = g;
     s.outputs = {{"sun-coefficients", key}, {"sun-coefficients-variance", key}};
     s.compute = [&, g, options, near_cut_options]() -> std::vector<std::string> {
-      const engine::GridPhotons grid_photons =
-          grid_photons_for(g, cs.layout, photons, bins.size(), plan.point_estimate);
-      std::vector<double> bin_variance;
-      out.bin_coefficients =
-          sun_bin_coefficients(cs.scene, cs.materials, sources, grid_photons, grid.points, *options, &bin_variance);
-      // The variances as the cache keeps them (single precision), so a cached run gives the
-      // same verdicts.
+      {
+        const engine::GridPhotons grid_photons =
+            grid_photons_for(g, cs.layout, photons, bins.size(), plan.point_estimate);
+        // The variances as the cache keeps them (single precision), so a cached run gives the
+        // same verdicts.
+        out.bin_coefficients = sun_bin_coefficients(cs.scene, cs.materials, sources, grid_photons, grid.points,
+                                                    *options, &out.bin_variance);
+      }  // the grid's photon maps released before the artefacts are encoded
+      std::vector<std::string> bytes{encode_matrix(out.bin_coefficients)};
       RadianceMatrix variance(grid.points.size(), bins.size(), 1);
-      for (std::size_t i = 0; i < bin_variance.size(); ++i) variance.data()[i] = static_cast<float>(bin_variance[i]);
-      bin_variance = {};
-      out.bin_variance = variance.data();
-      return {encode_matrix(out.bin_coefficients), encode_matrix(variance)};
+      std::copy(out.bin_variance.begin(), out.bin_variance.end(), variance.data().begin());
+      bytes.push_back(encode_matrix(variance));
+      return bytes;
     };
     // By sensor blocks over the ranks of an MPI run (plan_step.h): the same two matrices.
     SensorBlocks blocks;
@@ -211,6 +212,8 @@ void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, cons
                " sensors");
     }
   }
+  // Nothing after the coefficients reads the bins' photons: released before the direct sun.
+  photons = engine::TracedPhotons{};
 }
 
 }  // namespace

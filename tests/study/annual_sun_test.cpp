@@ -359,6 +359,34 @@ void expect_in_place_sun_equals_tables(int direct_components) {
   RadianceMatrix wrong(n_sensors, suns.size() + 1, direct_components);
   EXPECT_THROW(compute_annual_study_with_sun(sky_c, sky, GridSunCoefficients{&wrong, &suns, &bin_c, &bins}, settings),
                std::invalid_argument);
+  if (direct_components != 1) return;
+  // The direct sun held sparse (as the pipeline holds it for the annual phase): the same bytes.
+  const SparseSunRows rows = SparseSunRows::of(direct);
+  GridSunCoefficients sparse{nullptr, &suns, &bin_c, &bins};
+  sparse.direct_rows = &rows;
+  const AnnualStudy from_sparse = compute_annual_study_with_sun(sky_c, sky, sparse, settings);
+  for (std::size_t t = 0; t < n_steps; ++t)
+    for (std::size_t s = 0; s < n_sensors; ++s)
+      ASSERT_EQ(from_sparse.illuminance.lux(t, s), tables.illuminance.lux(t, s)) << t << " " << s;
+  EXPECT_EQ(from_sparse.ase_hours, tables.ase_hours);
+  const SparseSunRows wrong_rows = SparseSunRows::of(RadianceMatrix(n_sensors, suns.size() + 1, 1));
+  sparse.direct_rows = &wrong_rows;
+  EXPECT_THROW(compute_annual_study_with_sun(sky_c, sky, sparse, settings), std::invalid_argument);
+}
+
+TEST(SparseSunRows, HoldsTheNonZeroValuesExactlyInRowOrder) {
+  RadianceMatrix dense(3, 4, 1);
+  dense.at(0, 1, 0) = 2.5f;
+  dense.at(0, 3, 0) = -1e-30f;
+  dense.at(2, 0, 0) = 7.0f;
+  const SparseSunRows s = SparseSunRows::of(dense);
+  EXPECT_EQ(s.rows, 3u);
+  EXPECT_EQ(s.columns, 4u);
+  EXPECT_EQ(s.row_start, (std::vector<std::uint64_t>{0, 2, 2, 3}));
+  EXPECT_EQ(s.column, (std::vector<std::uint32_t>{1, 3, 0}));
+  EXPECT_EQ(s.value, (std::vector<float>{2.5f, -1e-30f, 7.0f}));
+  EXPECT_LT(s.bytes(), dense.data().size() * sizeof(float) + 4 * sizeof(std::uint64_t));
+  EXPECT_THROW(SparseSunRows::of(RadianceMatrix(2, 2, 3)), std::invalid_argument);
 }
 
 TEST(AnnualSunTables, SunAddedInPlaceEqualsTheHourlyTablesValueForValue) {

@@ -36,6 +36,7 @@
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/plan_policy.h"
+#include "dayphoton/study/sparse_sun_rows.h"
 #include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::study {
@@ -130,6 +131,9 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
 /// variance (sensors x bins, engine/estimate_variance.h). `rows`: only those sensors' rows.
 /// Receiver-plane estimates are made a
 /// block of sensors at a time (SunCoefficientBlockValues), with the same values.
+/// A block's double-precision parts (two RGB parts and a variance, 56 bytes a value) are
+/// 56 MiB at SunCoefficientBlockValues (2^18 cost the open-plan bench's sun step +29 % CPU:
+/// each block's tasks start their lookups without a hint; docs/photon-tracing.md "Scale").
 constexpr std::size_t SunCoefficientBlockValues = std::size_t(1) << 20;
 RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const std::vector<engine::Material>& materials,
@@ -139,6 +143,13 @@ RadianceMatrix sun_bin_coefficients(const engine::Scene& scene,
                                     const engine::CoefficientOptions& options,
                                     std::vector<double>* variance = nullptr,
                                     engine::SensorRange rows = {},
+                                    std::size_t block_values = SunCoefficientBlockValues);
+/// The same, each variance rounded to single precision as it is made (what the cache and the
+/// verdicts keep: no sensors x bins doubles held).
+RadianceMatrix sun_bin_coefficients(const engine::Scene& scene, const std::vector<engine::Material>& materials,
+                                    const engine::SourceSet& sources, const engine::GridPhotons& photons,
+                                    const std::vector<SensorPoint>& sensors, const engine::CoefficientOptions& options,
+                                    std::vector<float>* variance, engine::SensorRange rows = {},
                                     std::size_t block_values = SunCoefficientBlockValues);
 
 /// Direct-sun illuminance (lux), steps x sensors: 179 w . C_direct[s][k] L_k for each sun k
@@ -174,6 +185,9 @@ struct GridSunCoefficients {
   const std::vector<sky::SunRecord>* suns = nullptr;
   const RadianceMatrix* bin_coefficients = nullptr;
   const engine::SunBins* bins = nullptr;
+  /// The same direct sun held sparse (luminance form), used instead of `direct` where given
+  /// (compute_annual_study_with_sun; the values and so the results are the same).
+  const SparseSunRows* direct_rows = nullptr;
 };
 
 /// The same study as compute_annual_study_with_sun(sky_coefficients, sky,
