@@ -67,6 +67,7 @@
 #include "dayphoton/weather/epw_reader.h"
 #include "dayphoton/weather/site_clock.h"
 #include "df_only_run.h"
+#include "error_stats.h"
 #include "perez_hour.h"
 #include "sky_ratio_reference.h"
 
@@ -160,18 +161,7 @@ double sub_patch_lux(const std::vector<float>& q, const std::vector<double>& coe
   return RadianceWhiteEfficacy_lm_per_W * sum;
 }
 
-struct Stats {
-  double sum = 0, sum2 = 0, worst = 0;
-  std::size_t n = 0;
-  void add(double e) {
-    sum += e;
-    sum2 += e * e;
-    if (std::fabs(e) > std::fabs(worst)) worst = e;
-    ++n;
-  }
-  double mean() const { return n ? sum / double(n) : 0.0; }
-  double rms() const { return n ? std::sqrt(sum2 / double(n)) : 0.0; }
-};
+using Stats = bench::ErrorStats;
 
 }  // namespace
 

@@ -62,6 +62,7 @@
 #include "dayphoton/weather/epw_reader.h"
 #include "dayphoton/weather/site_clock.h"
 #include "df_only_run.h"
+#include "error_stats.h"
 #include "perez_hour.h"
 #include "sky_ratio_reference.h"
 
@@ -70,18 +71,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Stats {
-  double sum = 0, sum2 = 0, worst = 0;
-  std::size_t n = 0;
-  void add(double e) {
-    sum += e;
-    sum2 += e * e;
-    if (std::fabs(e) > std::fabs(worst)) worst = e;
-    ++n;
-  }
-  double mean() const { return n ? sum / double(n) : 0.0; }
-  double rms() const { return n ? std::sqrt(sum2 / double(n)) : 0.0; }
-};
+using Stats = bench::ErrorStats;
 
 /// point_in_time.csv of a grid: per case name, the sensors' lux.
 std::map<std::string, std::vector<double>> read_point_in_time(const fs::path& path) {

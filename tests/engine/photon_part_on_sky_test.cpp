@@ -31,6 +31,7 @@
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/sky/patch_basis.h"
+#include "diffuser_room.h"
 #include "estimate_statistics.h"
 #include "test_scenes.h"
 
@@ -63,38 +64,8 @@ std::vector<Vec3> bin_means(const sky::PatchBasis& basis) {
   return means;
 }
 
-/// A black wall OpposingDistance_m in front of the window, up to OpposingTop_m: from the window
-/// (whose height it sees within 0.11 degrees alike) it hides the sky below 6 degrees, half of the
-/// lowest Tregenza band, where the overcast sky's radiance is lowest.
-constexpr double OpposingDistance_m = 500, OpposingHalfWidth_m = 5000;
-const double OpposingTop_m = 1.0 + OpposingDistance_m * std::tan(6.0 * Pi / 180.0);
-
-/// Whether the opposing wall hides direction w (toward the sky) from the window's centre.
-bool hidden(const Vec3& w) {
-  if (w.y <= 0) return false;
-  const double t = OpposingDistance_m / w.y;
-  const double z = 1.0 + t * w.z;
-  return z >= -1.0 && z <= OpposingTop_m && std::fabs(t * w.x) <= OpposingHalfWidth_m;
-}
-
-/// x [-3, 3], y [-3, 2], z [-1, 3], every surface black, the north wall's window (y = 2,
-/// x [-1, 1], z [0.5, 1.5], facing +y) a Lambertian diffuser, and the opposing wall.
-SceneDescription diffuser_room() {
-  SceneDescription d;
-  const int black = add_material(d, "black", MaterialType::Lambertian, 0.0);
-  MaterialSpec diffuser;
-  diffuser.name = "diffuser";
-  diffuser.type = MaterialType::Translucent;
-  diffuser.reflectance = {0.8, 0.8, 0.8};
-  diffuser.transmissivity = 0.75;
-  diffuser.transmitted_specular = 0.0;
-  d.materials.push_back(diffuser);
-  const int pane = static_cast<int>(d.materials.size()) - 1;
-  test::add_window_room(d, black, pane);
-  const double y = 2 + OpposingDistance_m, w = OpposingHalfWidth_m;
-  add_surface(d, "opposing", black, {{w, y, -1}, {-w, y, -1}, {-w, y, OpposingTop_m}, {w, y, OpposingTop_m}});
-  return d;
-}
+using test::diffuser_room;
+bool hidden(const Vec3& w) { return test::hidden_by_opposing_wall(w); }
 
 /// The window's irradiance (normal +y) from a sky and from its bin means, the directions the
 /// opposing wall hides left out, by midpoint quadrature over sin(altitude) and azimuth (equal

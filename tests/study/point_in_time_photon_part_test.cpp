@@ -23,6 +23,7 @@
 #include <memory>
 #include <vector>
 
+#include "../engine/diffuser_room.h"
 #include "../engine/estimate_statistics.h"
 #include "../engine/test_scenes.h"
 #include "dayphoton/core/units.h"
@@ -40,35 +41,10 @@
 namespace dayphoton::study {
 namespace {
 
-using engine::test::add_material;
-using engine::test::add_surface;
 
-constexpr double OpposingDistance_m = 500, OpposingHalfWidth_m = 5000;
-const double OpposingTop_m = 1.0 + OpposingDistance_m * std::tan(6.0 * Pi / 180.0);
 constexpr double GroundRadiance = 0.0;  // the ground plays no part: only the sky's shape
-
-bool hidden(const Vec3& w) {
-  if (w.y <= 0) return false;
-  const double t = OpposingDistance_m / w.y;
-  const double z = 1.0 + t * w.z;
-  return z >= -1.0 && z <= OpposingTop_m && std::fabs(t * w.x) <= OpposingHalfWidth_m;
-}
-
-SceneDescription diffuser_room() {
-  SceneDescription d;
-  const int black = add_material(d, "black", MaterialType::Lambertian, 0.0);
-  MaterialSpec diffuser;
-  diffuser.name = "diffuser";
-  diffuser.type = MaterialType::Translucent;
-  diffuser.reflectance = {0.8, 0.8, 0.8};
-  diffuser.transmissivity = 0.75;
-  diffuser.transmitted_specular = 0.0;
-  d.materials.push_back(diffuser);
-  engine::test::add_window_room(d, black, static_cast<int>(d.materials.size()) - 1);
-  const double y = 2 + OpposingDistance_m, w = OpposingHalfWidth_m;
-  add_surface(d, "opposing", black, {{w, y, -1}, {-w, y, -1}, {-w, y, OpposingTop_m}, {w, y, OpposingTop_m}});
-  return d;
-}
+using engine::test::diffuser_room;
+bool hidden(const Vec3& w) { return engine::test::hidden_by_opposing_wall(w); }
 
 /// The sun 9 degrees high, 5 degrees east of the window's normal (off the bins' borders).
 Vec3 sun_direction() {
