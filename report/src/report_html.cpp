@@ -16,6 +16,7 @@
 #include "dayphoton/core/atomic_file.h"
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/units.h"
+#include "dayphoton/metrics/annual_metrics.h"
 #include "dayphoton/report/colour_scale.h"
 #include "dayphoton/report/plan_picture.h"
 #include "dayphoton/study/image_files.h"
@@ -680,7 +681,7 @@ std::string grid_section(const GridData& g, PageIds& page) {
       << " daylight hours (half the year, ranked by " << esc(annual->en17037_daylight_hours_source)
       << "); a level passes when its target is met on &#8805; " << target_area
       << " % and its minimum target on &#8805; 95 % of the area, each for &#8805; 50 % of the daylight hours"
-      << (annual->en17037_openings == "horizontal"
+      << (annual->en17037_openings == metrics::en17037_openings_name(metrics::MetricSettings::Openings::Horizontal)
               ? " (the model's daylight openings are horizontal: EN 17037 asks the target over 95 % of the area)"
               : "")
       << ".</p>";

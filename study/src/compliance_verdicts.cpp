@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/metrics/annual_metrics.h"
 
 namespace dayphoton::study {
 
@@ -116,7 +117,9 @@ std::vector<Verdict> grid_verdicts(const GridResult& g) {
       int passed = 0;
       for (const En17037Level& l : a->en17037) passed += l.passes;
       // The rule: the target over 50 % of the area, or over 95 % under horizontal openings.
-      const std::string rule = a->en17037_openings == "horizontal" ? " (horizontal openings: the target over 95 % of the area)" : "";
+      const bool horizontal =
+          a->en17037_openings == metrics::en17037_openings_name(metrics::MetricSettings::Openings::Horizontal);
+      const std::string rule = horizontal ? " (horizontal openings: the target over 95 % of the area)" : "";
       out.push_back(assessed(En17037, "level", "minimum, medium or high", passed, "level", passed > 0,
                              (level == "none" ? "no level reached" : level + " level reached") + rule));
     }

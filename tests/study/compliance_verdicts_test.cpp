@@ -263,3 +263,15 @@ TEST(ResultsModelBuilder, InteriorWindowsAreListedButNotOpenings) {
   EXPECT_EQ(r.glazed_wall_area_m2, 4 * 3);  // the south wall only
   EXPECT_TRUE(c.rooms[1].windows.empty());
 }
+
+// The EN 17037 verdict says when it took the rule for horizontal openings (the target over
+// 95 % of the area), so a reader of the report knows why a level did not pass.
+TEST(ComplianceVerdicts, En17037SaysWhenItTookTheRuleForHorizontalOpenings) {
+  GridResult windows = horizontal_grid(60, 5, 2, 1, 0.5);
+  EXPECT_EQ(find(grid_verdicts(windows), "EN 17037", "level").reason, "minimum level reached");
+  GridResult roof = windows;
+  roof.annual->en17037_openings = "horizontal";
+  roof.annual->en17037_target_area_required_percent = 95;
+  const Verdict v = find(grid_verdicts(roof), "EN 17037", "level");
+  EXPECT_NE(v.reason.find("horizontal openings: the target over 95 % of the area"), std::string::npos) << v.reason;
+}
