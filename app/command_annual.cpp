@@ -92,8 +92,18 @@ study::AnnualStudySettings annual_settings(const AnnualOptions& o, const std::st
       openings = study::recorded_annual_settings(*recorded->grid->annual, SourceLocation{recorded->results_path, 0, 0})
                      .metrics.en17037_openings;
     } else {
+      // The grid's openings as a run decides them (daylight_openings.h); a folder no set of the
+      // project names takes the model's kind.
       const SceneDescription description = project::build_scene_description(*project);
-      openings = study::daylight_openings(engine::Scene::build(description)).kind;
+      const engine::Scene scene = engine::Scene::build(description);
+      const study::DaylightOpenings model = study::daylight_openings(scene);
+      openings = model.kind == metrics::MetricSettings::Openings::Both ? metrics::MetricSettings::Openings::VerticalOrInclined
+                                                                       : model.kind;
+      std::vector<engine::Material> materials;
+      for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
+      for (const SensorGrid& g : description.grids)
+        if (g.name == grid.filename().string())
+          openings = study::grid_daylight_openings(scene, materials, {g}, model).front().kind;
     }
     settings = study::annual_settings_of(*project, &weather, openings, grid.filename().string());
     source = o.project_path;

@@ -81,6 +81,9 @@ bool generate_light_pipe(const SystemSpec& spec, const LightPipeSpec& p, const R
     surface.material = mat;
     surface.vertices = facing(std::move(v), normal);
     surface.port = port;
+    // The collector, flat or a dome of facets, stands for the opening the pipe cuts in the
+    // roof: its daylight enters through a horizontal opening (EN 17037's rule for them).
+    if (port) surface.opening_normal = {0, 0, 1};
     surface.location = spec.location;
     out.push_back(std::move(surface));
   };

@@ -31,7 +31,7 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
   for (std::size_t g = 0; g < open.grids.size(); ++g) {
     const CaseTables::Grid& o = open.grids[g];
     const CaseTables::Grid& c = shaded.grids.at(g);  // the same grids: variants share the sensors
-    const AnnualStudySettings settings = annual_settings_of(project, ctx.weather, ctx.openings, o.name);
+    const AnnualStudySettings settings = annual_settings_of(project, ctx.weather, ctx.openings_of(o.name), o.name);
     const std::string folder = join_path(dir, o.name);
     ctx.progress.start("operated " + o.name, o.illuminance.step_count(), "hours");
     const OperatedStudy operated = compute_operated_study(

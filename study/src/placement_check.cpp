@@ -584,8 +584,13 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
   }
   check_exterior_geometry(scene, out.warnings);
   check_gather_outside_region(scene, grids, near_cut_rows, proj, out.warnings);
-  if (proj.study == project::StudyKind::Annual && proj.outputs.metrics)
-    if (std::optional<Diagnostic> w = daylight_openings_warning(daylight_openings(scene))) out.warnings.push_back(*w);
+  if (proj.study == project::StudyKind::Annual && proj.outputs.metrics) {
+    std::vector<engine::Material> materials;
+    for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
+    const DaylightOpenings model = daylight_openings(scene);
+    out.openings = grid_daylight_openings(scene, materials, grids, model);
+    daylight_openings_diagnostics(grids, model, out.openings, out.warnings, out.notes);
+  }
   if (grids.empty())
     report(diag, project, "the project has no sensors: add a grid or a point set under 'sensors'");
   diag.throw_if_errors();

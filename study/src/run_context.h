@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -76,9 +77,15 @@ struct RunContext {
   const weather::HourlyWeather* weather = nullptr;   ///< the project's weather file, if it has one
   const SunSite* sun_site = nullptr;       ///< the site its sun is computed for (sun_site.h)
   CaseResult* results = nullptr;  ///< the case being run, in the results model (results_model_builder.h)
-  /// The daylight openings of the case being run (daylight_openings.h; operated shading's
-  /// two cases differ by their shading only, so they share them).
-  metrics::MetricSettings::Openings openings = metrics::MetricSettings::Openings::VerticalOrInclined;
+  /// The daylight openings of each sensor set of the case being run, by name
+  /// (daylight_openings.h; operated shading's two cases differ by their shading only, so they
+  /// share them).
+  std::map<std::string, metrics::MetricSettings::Openings> openings{};
+  /// Sensor set `name`'s openings; vertical or inclined for a name not recorded.
+  metrics::MetricSettings::Openings openings_of(const std::string& name) const {
+    const auto it = openings.find(name);
+    return it == openings.end() ? metrics::MetricSettings::Openings::VerticalOrInclined : it->second;
+  }
 };
 
 /// The scene of one case (the base project or a variant) and what its steps' keys share.

@@ -125,9 +125,6 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   // What an imported RADIANCE scene left out or approximated (docs/radiance-import.md).
   for (const Diagnostic& w : description.warnings) log.line(prefix + "warning: " + w.location.to_string() + ": " + w.message);
   const engine::Scene scene = engine::Scene::build(description);
-  // EN 17037's rule for horizontal daylight openings (daylight_openings.h).
-  const metrics::MetricSettings::Openings openings = daylight_openings(scene).kind;
-  ctx.openings = openings;
   // No port, no sensor, a port that faces no decidable way, sensors outside every room or in
   // a solid: located errors; sets with drop_occluded lose those sensors (placement_check.h).
   const PlacementCheck placement =
@@ -143,6 +140,10 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     report.notes.push_back(prefix + "warning: " + w.message);
   }
   for (const Diagnostic& n : placement.notes) log.line(prefix + "note: " + n.location.to_string() + ": " + n.message);
+  // EN 17037's rule for horizontal daylight openings, per sensor set (daylight_openings.h).
+  ctx.openings.clear();
+  for (std::size_t g = 0; g < placement.openings.size() && g < description.grids.size(); ++g)
+    ctx.openings[description.grids[g].name] = placement.openings[g].kind;
   std::vector<engine::Material> materials;
   for (const MaterialSpec& m : description.materials)
     materials.push_back(engine::Material::from_spec(m));
@@ -424,7 +425,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       sun[g].other_suns = {};
       if (!multiply) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
-      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, openings, grid.name);
+      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, ctx.openings_of(grid.name), grid.name);
       GridSunCoefficients grid_sun{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins};
       // The direct sun held sparse from here on, where nothing else reads it (the operated
       // result reads its hourly table, the blocks of an MPI run their dense rows).
@@ -477,7 +478,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     for (std::size_t g = 0; g < description.grids.size() && multiply; ++g) {
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
-      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, openings, grid.name);
+      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, ctx.openings_of(grid.name), grid.name);
       // By sensor blocks over the ranks of an MPI run; rank 0 alone gets the study and writes it.
       const std::optional<AnnualStudy> computed =
           ctx.executor.shares_sensor_blocks()

@@ -12,6 +12,16 @@
 // within HorizontalOpeningMaxTilt_deg of horizontal is horizontal: the standard draws no
 // line; roof glazing laid to falls (a few degrees) is horizontal in any reading, a roof window
 // in a pitched roof of 20 degrees or more is inclined.
+//
+// A model with both kinds (side-lit offices beside a roof-lit hall) is decided per sensor set
+// (grid_daylight_openings): by the openings through which the set sees the sky. Its sky
+// component under the CIE standard overcast sky (the daylight factor's sky) is split by the
+// port each shadow ray leaves through (direct_component.h, the shadow-ray rule); a kind that
+// gives at least MinorOpeningsSkyShare of it counts. Horizontal openings alone: the 95 %
+// rule; vertical and inclined alone: the 50 % rule; both: the 50 % rule with a located
+// warning at the set. A set that sees the sky through no opening (lit through a light pipe's
+// diffuser or by reflected light only) keeps the 50 % rule with a warning too. This reading of
+// the standard, which names the openings of a space but not a mix of them, is ours.
 #pragma once
 
 #include <optional>
@@ -19,7 +29,9 @@
 #include <vector>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/scene_description.h"
 #include "dayphoton/core/source_location.h"
+#include "dayphoton/engine/material.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/metrics/annual_metrics.h"
 
@@ -32,14 +44,42 @@ struct DaylightOpenings {
   metrics::MetricSettings::Openings kind = metrics::MetricSettings::Openings::VerticalOrInclined;
   std::vector<std::string> horizontal;  ///< the horizontal ports' names, in port order
   std::vector<std::string> vertical_or_inclined;
-  SourceLocation first_horizontal;      ///< where the first horizontal port is written
+  std::vector<bool> port_horizontal;    ///< per port of the scene, in port order
 };
 
 DaylightOpenings daylight_openings(const engine::Scene& scene);
 
-/// With openings of both kinds: a located warning (at the first horizontal one) that the
-/// levels take the rule for vertical and inclined openings, and what the standard asks where
-/// a grid's daylight comes through the horizontal ones alone. None otherwise.
-std::optional<Diagnostic> daylight_openings_warning(const DaylightOpenings& openings);
+/// The smallest share of a sensor set's sky component through one kind of opening that makes
+/// that kind count for the set: a glimpse of a roof light from a side-lit room does not
+/// change the room's rule.
+constexpr double MinorOpeningsSkyShare = 0.1;
+
+/// Sensors of a set whose sky is looked at (every k-th, k the smallest that keeps the count
+/// at most this), and shadow rays per sensor (strata of the sky hemisphere, a square).
+constexpr std::size_t OpeningsViewMaxSensors = 1024;
+constexpr int OpeningsViewRaysPerAxis = 16;
+
+struct GridOpenings {
+  metrics::MetricSettings::Openings kind = metrics::MetricSettings::Openings::VerticalOrInclined;
+  /// Decided by the set's view of the sky (a model with both kinds); false: the model's kind.
+  bool by_view = false;
+  /// By view: the set's sky component through horizontal openings as a share of that through
+  /// every opening (0-1); negative when the set sees the sky through no opening.
+  double horizontal_sky_share = -1.0;
+};
+
+/// EN 17037's openings of each sensor set: the model's kind for every set, or, when the model
+/// has both kinds, each set's by its view of the sky (header comment). Deterministic (strata
+/// centres, sums in sensor order), any thread count.
+std::vector<GridOpenings> grid_daylight_openings(const engine::Scene& scene,
+                                                 const std::vector<engine::Material>& materials,
+                                                 const std::vector<SensorGrid>& grids,
+                                                 const DaylightOpenings& model);
+
+/// The located warnings for sets whose rule the view left undecided (both kinds, or no sky
+/// seen), at each set, and a note per set decided by view; none for a model of one kind.
+void daylight_openings_diagnostics(const std::vector<SensorGrid>& grids, const DaylightOpenings& model,
+                                   const std::vector<GridOpenings>& per_grid, std::vector<Diagnostic>& warnings,
+                                   std::vector<Diagnostic>& notes);
 
 }  // namespace dayphoton::study

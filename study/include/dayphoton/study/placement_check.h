@@ -60,6 +60,7 @@
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/core/source_location.h"
 #include "dayphoton/project/project.h"
+#include "dayphoton/study/daylight_openings.h"
 
 namespace dayphoton::engine {
 class Scene;
@@ -93,6 +94,9 @@ struct PlacementCheck {
   std::vector<SensorSetPlacement> sets;  ///< in the order of the grids
   std::vector<Diagnostic> warnings;      ///< located (header comment), in a fixed order
   std::vector<Diagnostic> notes;         ///< located, Severity::Note: sensors gathered next to a cut
+  /// Per grid, EN 17037's openings (daylight_openings.h); empty unless the project computes
+  /// annual metrics.
+  std::vector<GridOpenings> openings;
   std::size_t dropped() const;
 };
 
