@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -14,18 +15,72 @@
 
 namespace dayphoton::study {
 
+namespace {
+
+/// Union-find over ports: ports that share a vertex (to 1 micrometre) join one group.
+std::vector<std::size_t> port_groups(const std::vector<engine::Port>& ports, const std::vector<bool>& grouped) {
+  std::vector<std::size_t> parent(ports.size());
+  for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = k;
+  auto find = [&](std::size_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  std::map<std::array<long long, 3>, std::size_t> first_port_at;
+  for (std::size_t k = 0; k < ports.size(); ++k) {
+    if (!grouped[k]) continue;
+    for (const std::array<Vec3, 3>& t : ports[k].triangles)
+      for (const Vec3& v : t) {
+        const std::array<long long, 3> key{std::llround(v.x * 1e6), std::llround(v.y * 1e6), std::llround(v.z * 1e6)};
+        const auto [it, inserted] = first_port_at.emplace(key, k);
+        if (!inserted) parent[find(k)] = find(it->second);
+      }
+  }
+  for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = find(k);
+  return parent;
+}
+
+}  // namespace
+
 DaylightOpenings daylight_openings(const engine::Scene& scene) {
   DaylightOpenings out;
   const double min_vertical_component = std::cos(deg_to_rad(HorizontalOpeningMaxTilt_deg));
-  for (const engine::Port& port : scene.ports().ports()) {
-    const Surface& surface = scene.description().surfaces[static_cast<std::size_t>(port.surface)];
-    const Vec3 n = length(surface.opening_normal) > 0 ? normalize(surface.opening_normal) : port.normal;
+  const double min_cap_facet_rise = std::sin(deg_to_rad(CapFacetMinRise_deg));
+  const std::vector<engine::Port>& ports = scene.ports().ports();
+  // Each port's opening plane: its own, or the one it stands for.
+  std::vector<Vec3> normal(ports.size());
+  std::vector<bool> own_plane(ports.size());
+  for (std::size_t k = 0; k < ports.size(); ++k) {
+    const Surface& surface = scene.description().surfaces[static_cast<std::size_t>(ports[k].surface)];
+    own_plane[k] = !(length(surface.opening_normal) > 0);
+    normal[k] = own_plane[k] ? ports[k].normal : normalize(surface.opening_normal);
+  }
+  // Facets that share vertices and rise from a horizontal plane (a dome, a pyramid, a ridge
+  // roof light) stand for the opening they close: the sum of their vector areas is the vector
+  // area of their rim, whose plane the cap's opening lies in. Each facet's normal is taken
+  // pointing down, as a cap's into the room does, so that a facet whose facing the scene
+  // decided the other way (ports face either way) does not cancel its neighbours.
+  const std::vector<std::size_t> group = port_groups(ports, own_plane);
+  std::map<std::size_t, Vec3> vector_area;
+  std::map<std::size_t, int> members;
+  std::map<std::size_t, bool> rises;
+  for (std::size_t k = 0; k < ports.size(); ++k) {
+    if (!own_plane[k]) continue;
+    const Vec3 down = normal[k].z > 0 ? -normal[k] : normal[k];
+    vector_area[group[k]] = vector_area[group[k]] + down * ports[k].area_m2;
+    ++members[group[k]];
+    const bool rising = std::abs(normal[k].z) >= min_cap_facet_rise;
+    rises[group[k]] = rises.count(group[k]) ? rises[group[k]] && rising : rising;
+  }
+  for (std::size_t k = 0; k < ports.size(); ++k) {
+    Vec3 n = normal[k];
+    const std::size_t g = group[k];
+    if (own_plane[k] && members[g] > 1 && rises[g] && length(vector_area[g]) > 0) n = normalize(vector_area[g]);
     if (std::abs(n.z) >= min_vertical_component) {
-      out.horizontal.push_back(port.name);
+      out.horizontal.push_back(ports[k].name);
       out.port_horizontal.push_back(true);
     } else {
       out.port_horizontal.push_back(false);
-      out.vertical_or_inclined.push_back(port.name);
+      out.vertical_or_inclined.push_back(ports[k].name);
     }
   }
   using Openings = metrics::MetricSettings::Openings;

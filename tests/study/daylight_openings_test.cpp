@@ -198,6 +198,41 @@ TEST(DaylightOpenings, APolygonPortCountsByItsTilt) {
   EXPECT_EQ(openings_of(RoofLight, tilted(0.364)).kind, Openings::Both);
 }
 
+// Facets that share vertices and all rise from the vertical count by the plane of their rim:
+// a pyramid of four 45-degree triangles and a ridge of two 30-degree panes over a flat roof are
+// horizontal openings, though each facet alone is inclined; a conservatory's vertical pane
+// joined to its sloped roof pane is not a cap, and each counts by its own plane.
+TEST(DaylightOpenings, ACapOfFacetsCountsByItsRim) {
+  auto polygon = [](const std::string& name, const std::string& vertices) {
+    return "    - {name: " + name + ", material: glass, port: true, vertices: [" + vertices + "]}\n";
+  };
+  const std::string pyramid =
+      "  polygons:\n" + polygon("p1", "[2, 2, 3.2], [3, 2, 3.2], [2.5, 2.5, 3.7]") +
+      polygon("p2", "[3, 2, 3.2], [3, 3, 3.2], [2.5, 2.5, 3.7]") +
+      polygon("p3", "[3, 3, 3.2], [2, 3, 3.2], [2.5, 2.5, 3.7]") +
+      polygon("p4", "[2, 3, 3.2], [2, 2, 3.2], [2.5, 2.5, 3.7]");
+  const DaylightOpenings p = openings_of("", pyramid);
+  EXPECT_EQ(p.kind, Openings::Horizontal);
+  EXPECT_EQ(p.horizontal.size(), 4u);
+  // tan(30 deg) = 0.57735: a ridge along y at x = 2.5 over the 1 m wide opening.
+  const std::string ridge = "  polygons:\n" + polygon("west", "[2, 2, 3.2], [2.5, 2, 3.48868], [2.5, 3, 3.48868], [2, 3, 3.2]") +
+                            polygon("east", "[2.5, 2, 3.48868], [3, 2, 3.2], [3, 3, 3.2], [2.5, 3, 3.48868]");
+  EXPECT_EQ(openings_of("", ridge).kind, Openings::Horizontal);
+  // One slope alone is an inclined opening (a roof window in a pitched roof).
+  EXPECT_EQ(openings_of("", "  polygons:\n" + polygon("west", "[2, 2, 3.2], [2.5, 2, 3.48868], [2.5, 3, 3.48868], [2, 3, 3.2]"))
+                .kind,
+            Openings::VerticalOrInclined);
+  // A vertical pane joined to a roof pane at 20 degrees (tan 0.364): each by its own plane.
+  const std::string conservatory = "  polygons:\n" + polygon("front", "[2, 2, 3.2], [3, 2, 3.2], [3, 2, 4.2], [2, 2, 4.2]") +
+                                   polygon("roof", "[2, 2, 4.2], [3, 2, 4.2], [3, 3, 4.564], [2, 3, 4.564]");
+  const DaylightOpenings c = openings_of("", conservatory);
+  EXPECT_EQ(c.kind, Openings::VerticalOrInclined);
+  EXPECT_TRUE(c.horizontal.empty());
+  const std::string flat_conservatory = "  polygons:\n" + polygon("front", "[2, 2, 3.2], [3, 2, 3.2], [3, 2, 4.2], [2, 2, 4.2]") +
+                                        polygon("roof", "[2, 2, 4.2], [3, 2, 4.2], [3, 3, 4.2], [2, 3, 4.2]");
+  EXPECT_EQ(openings_of("", flat_conservatory).kind, Openings::Both);
+}
+
 // The box of openings around a window's exterior system stands for the window: its top and
 // bottom faces are horizontal, but the opening is the window in the wall.
 TEST(DaylightOpenings, AnEnclosureOfOpeningsStandsForItsWindow) {

@@ -7,8 +7,11 @@
 // light is spread more evenly. A roof-lit hall assessed with the 50 % rule can pass a level
 // the standard does not give it.
 //
-// Each port counts by the plane of the opening it stands for: its own, or the window's for
-// the box of openings around a window's exterior system (Surface::opening_normal). A plane
+// Each port counts by the plane of the opening it stands for: its own, the window's for the
+// box of openings around a window's exterior system (Surface::opening_normal), the roof's
+// for a light pipe's collector, or, for facets that share vertices and all rise from the
+// vertical (a dome, a pyramid or a ridge roof light drawn as polygons or imported), the plane
+// of their rim: the sum of their vector areas is the rim's vector area. A plane
 // within HorizontalOpeningMaxTilt_deg of horizontal is horizontal: the standard draws no
 // line; roof glazing laid to falls (a few degrees) is horizontal in any reading, a roof window
 // in a pitched roof of 20 degrees or more is inclined.
@@ -39,6 +42,12 @@ namespace dayphoton::study {
 
 /// The largest tilt from horizontal (degrees) of a horizontal daylight opening.
 constexpr double HorizontalOpeningMaxTilt_deg = 15.0;
+
+/// The least rise from vertical (degrees) of every facet of a cap of glazing (ports sharing
+/// vertices) counted by its rim: a faceted dome's lowest ring rises a few degrees, a
+/// conservatory's wall glazing joined to its roof glazing not at all (each pane then counts
+/// by its own plane).
+constexpr double CapFacetMinRise_deg = 1.0;
 
 struct DaylightOpenings {
   metrics::MetricSettings::Openings kind = metrics::MetricSettings::Openings::VerticalOrInclined;
