@@ -932,8 +932,40 @@ class Reader {
           grid.points.push_back(p);
         }
       }
-      if (ok) m_out.grids.push_back(std::move(grid));
+      if (!ok) continue;
+      if (const json* mesh = find(g, "mesh")) {
+        grid.mesh_face_areas_m2 = mesh_face_areas_m2(*mesh);
+        grid.mesh_location = m_loc.locate(json_member(path, "mesh"));
+        if (grid.mesh_face_areas_m2.size() != grid.points.size()) grid.mesh_face_areas_m2.clear();
+      }
+      m_out.grids.push_back(std::move(grid));
     }
+  }
+
+  /// The face areas of a Mesh3D (`vertices` [[x, y, z], ...], `faces` [[i, j, k(, l)], ...]),
+  /// in m^2; empty for anything else (the mesh only weighs the sensors' areas, so a mesh that
+  /// cannot be read is left out, not an error).
+  std::vector<double> mesh_face_areas_m2(const json& mesh) const {
+    const json* vertices = mesh.is_object() ? find(mesh, "vertices") : nullptr;
+    const json* faces = mesh.is_object() ? find(mesh, "faces") : nullptr;
+    if (!vertices || !faces || !vertices->is_array() || !faces->is_array()) return {};
+    std::vector<Vec3> v;
+    for (const json& p : *vertices) {
+      if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number()) return {};
+      v.push_back(Vec3{p[0].get<double>(), p[1].get<double>(), p[2].get<double>()} * m_out.metres_per_unit);
+    }
+    std::vector<double> areas;
+    for (const json& f : *faces) {
+      if (!f.is_array() || f.size() < 3) return {};
+      std::vector<Vec3> polygon;
+      for (const json& i : f) {
+        if (!i.is_number_integer() || i.get<long long>() < 0 || i.get<long long>() >= static_cast<long long>(v.size()))
+          return {};
+        polygon.push_back(v[static_cast<std::size_t>(i.get<long long>())]);
+      }
+      areas.push_back(polygon_area_m2(polygon));
+    }
+    return areas;
   }
 
   struct SharedFace {
@@ -955,6 +987,16 @@ class Reader {
 };
 
 }  // namespace
+
+double honeybee_mesh_share_bound_points(const std::vector<double>& areas_m2) {
+  double total = 0;
+  for (double a : areas_m2) total += a;
+  if (areas_m2.empty() || !(total > 0)) return 0;
+  const double n = static_cast<double>(areas_m2.size());
+  double sum = 0;
+  for (double a : areas_m2) sum += std::abs(a / total - 1 / n);
+  return 50 * sum;
+}
 
 HoneybeeModel read_honeybee_model_from_string(const std::string& text, const std::string& file) {
   Diagnostics diag;

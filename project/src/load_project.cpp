@@ -1116,6 +1116,26 @@ class Loader {
         m_reporter.error(at, message);
         return;
       }
+      if (!it->mesh_face_areas_m2.empty()) {
+        const double bound = honeybee_mesh_share_bound_points(it->mesh_face_areas_m2);
+        if (bound >= HoneybeeMeshShareWarnPoints) {
+          const auto [lo, hi] = std::minmax_element(it->mesh_face_areas_m2.begin(), it->mesh_face_areas_m2.end());
+          // With the model's own warnings, which the scene carries to check and run.
+          Diagnostic w;
+          w.severity = Severity::Warning;
+          w.location = it->mesh_location;
+          w.source_line = read_source_line(it->mesh_location.file, it->mesh_location.line);
+          w.message =
+              "sensor grid '" + grid + "': the faces of its mesh differ in area (" + format_number(std::round(*lo * 1e4) / 1e4) +
+                  " to " + format_number(std::round(*hi * 1e4) / 1e4) +
+                  " m^2): Honeybee weighs each sensor by its face's area, dayphoton counts every sensor as an equal "
+                  "share of the area, so sDA, ASE and EN 17037's target areas can differ from Honeybee's by up to " +
+                  format_number(std::round(bound * 10) / 10) +
+                  " percentage points (the grid means too); give the grid cells of equal area, or weigh "
+                  "metrics.csv by the face areas";
+          m_project.geometry.honeybee->model.warnings.push_back(std::move(w));
+        }
+      }
       PointsSpec p;
       p.name = name.value;
       p.points = it->points;

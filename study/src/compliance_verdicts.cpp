@@ -55,7 +55,23 @@ int leed_v41_points(double sda_percent) {
   return points;
 }
 
-std::vector<Verdict> grid_verdicts(const GridResult& g) {
+namespace {
+/// Why LM-83's sDA and ASE are not assessed on a case with blinds in place; "" when none are.
+std::string blinds_why(const std::vector<std::string>& blinds, bool operated) {
+  if (blinds.empty()) return {};
+  std::string names;
+  for (std::size_t i = 0; i < blinds.size(); ++i)
+    names += (i == 0 ? "" : i + 1 == blinds.size() ? " and " : ", ") + ("'" + blinds[i] + "'");
+  if (operated)
+    return "the open case has the blinds " + names + " in place: LM-83 takes ASE and the 2 % rule's direct sun with "
+           "every operable shading device retracted (section 2.2.6); make the open case one without blinds";
+  return "the blinds " + names + " are in place every hour: LM-83 takes ASE with every operable shading device "
+         "retracted and sDA with the blinds operated hour by hour (section 2.2.6); give the project an `operation` "
+         "whose open case has no blinds and read the operated result";
+}
+}  // namespace
+
+std::vector<Verdict> grid_verdicts(const GridResult& g, const std::vector<std::string>& blinds_in_place, bool operated) {
   const std::string sda = "sDA" + n(Lm83DaThresholdLux) + "/" + n(100 * Lm83SdaTimeFraction) + "%";
   const std::string ase = "ASE" + n(Lm83AseThresholdLux) + "," + n(Lm83AseHours);
   const std::string sda_req = ">= " + n(Lm83SdaAcceptedPercent) + " % of the area (nominally accepted), >= " +
@@ -82,9 +98,13 @@ std::vector<Verdict> grid_verdicts(const GridResult& g) {
     const std::string run_sda = "sDA" + n(a->da_threshold_lux) + "/" + n(100 * a->sda_time_fraction) + "%";
     std::string period_why;
     const bool lm83_period = lm83_analysis_period(*a, period_why);
+    const std::string shading_why = blinds_why(blinds_in_place, operated);
     if (!lm83_period) {
       out.push_back(not_assessed(Lm83, sda, sda_req, period_why));
       out.push_back(not_assessed(Leed, sda, leed_req, period_why));
+    } else if (!shading_why.empty()) {
+      out.push_back(not_assessed(Lm83, sda, sda_req, shading_why));
+      out.push_back(not_assessed(Leed, sda, leed_req, shading_why));
     } else if (lm83_sda) {
       out.push_back(assessed(Lm83, sda, sda_req, a->sda_percent, "%", a->sda_percent >= Lm83SdaAcceptedPercent,
                              a->sda_percent >= Lm83SdaPreferredPercent ? "preferred level reached" : ""));
@@ -102,6 +122,8 @@ std::vector<Verdict> grid_verdicts(const GridResult& g) {
                                  "ASE not computed: the run spread the sun into sky patches (simulation.sun: spread)"));
     else if (!lm83_period)
       out.push_back(not_assessed(Lm83, ase, ase_req, period_why));
+    else if (!shading_why.empty())
+      out.push_back(not_assessed(Lm83, ase, ase_req, shading_why));
     else if (!lm83_ase)
       out.push_back(not_assessed(Lm83, ase, ase_req,
                                  "the run computed ASE" + n(a->ase_threshold_lux) + "," + n(a->ase_hours) + ", not " + ase));
@@ -146,7 +168,7 @@ void assess_compliance(ResultsModel& model) {
   bool annual = false, ase_missing = false, en_missing = false;
   for (CaseResult& c : model.cases)
     for (GridResult& g : c.grids) {
-      g.verdicts = grid_verdicts(g);
+      g.verdicts = grid_verdicts(g, c.blinds_in_place, c.kind == "operated");
       if (g.annual) {
         annual = true;
         ase_missing = ase_missing || !g.annual->ase_percent;

@@ -749,7 +749,7 @@ bool GridResult::operator==(const GridResult& o) const {
 bool CaseResult::operator==(const CaseResult& o) const {
   return kind == o.kind && name == o.name && folder == o.folder && changes == o.changes && openings == o.openings &&
          systems == o.systems && materials == o.materials && rooms == o.rooms &&
-         opening_area_m2 == o.opening_area_m2 && grids == o.grids;
+         opening_area_m2 == o.opening_area_m2 && blinds_in_place == o.blinds_in_place && grids == o.grids;
 }
 bool ResultsModel::operator==(const ResultsModel& o) const {
   return schema_version == o.schema_version && project_name == o.project_name && project_file == o.project_file &&
@@ -774,6 +774,7 @@ std::string results_json(const ResultsModel& m) {
                      {"openings", polygons(c.openings)}, {"systems", polygons(c.systems)},
                      {"materials", materials_json(c.materials)}, {"rooms", rooms_json(c.rooms)},
                      {"opening_area_m2", c.opening_area_m2}, {"grids", grids}});
+    if (!c.blinds_in_place.empty()) cases.back()["blinds_in_place"] = c.blinds_in_place;
   }
   json site = {{"name", m.site_name}, {"latitude_deg", m.latitude_deg}, {"longitude_deg", m.longitude_deg},
                {"time_zone_h", m.time_zone_h}, {"elevation_m", m.elevation_m}, {"sun_from_weather", m.sun_from_weather},
@@ -855,6 +856,7 @@ ResultsModel parse_results_json(const std::string& text, const std::string& path
     cr.materials = r.materials(c, "cases[" + cr.name + "]");
     cr.rooms = r.rooms(c, "cases[" + cr.name + "]");
     cr.opening_area_m2 = r.number(c, "cases", "opening_area_m2");
+    if (c.contains("blinds_in_place")) cr.blinds_in_place = r.texts(c, "cases", "blinds_in_place");
     for (const json& g : r.array(c, "cases", "grids")) {
       cr.grids.push_back(r.grid(g, "cases[" + cr.name + "].grids"));
       for (int k : cr.grids.back().openings_drawn)

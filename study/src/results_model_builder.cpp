@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
+#include <variant>
 
 #include <nlohmann/json.hpp>
 
@@ -101,6 +102,10 @@ void set_building(CaseResult& c, const project::Project& project, const SceneDes
   c.materials.clear();
   c.rooms.clear();
   c.opening_area_m2 = 0;
+  c.blinds_in_place.clear();
+  for (const project::SystemSpec& system : project.geometry.systems)
+    if (system.enabled && std::holds_alternative<project::BlindsSpec>(system.params))
+      c.blinds_in_place.push_back(system.name);
   std::vector<double> area(scene.materials.size(), 0.0);
   for (const Surface& s : scene.surfaces) {
     if (s.material >= 0 && static_cast<std::size_t>(s.material) < area.size())

@@ -688,6 +688,10 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
   if (op && !open_tables.grids.empty() && open_tables.grids.size() == shaded_tables.grids.size()) {
     CaseResult shading = operated_case(cases.front(), "operated (" + op->open.value + "/" + op->shaded.value + ")",
                                        "operated");
+    // Its ASE and its 2 % rule are the open case's direct sun: LM-83 takes them without blinds.
+    for (const CaseResult& c : cases)
+      if ((c.kind == "base" && op->open.value == project::BaseCaseName) || (c.kind == "variant" && c.name == op->open.value))
+        shading.blinds_in_place = c.blinds_in_place;
     ctx.results = &shading;
     operated = run_operated(project, *op, open_tables, shaded_tables, join_path(report.output_dir, "operated"), ctx);
     cases.push_back(std::move(shading));

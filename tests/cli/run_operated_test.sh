@@ -9,7 +9,10 @@
 #  3. the schedule's `shaded` column is the rule applied to its own counts (100 sunlit > 2 n),
 #     and the shaded-hour counts in operation.json agree with it;
 #  4. the operated ASE equals the raised case's (LM-83: blinds retracted);
-#  5. a second run traces nothing, finds the same schedule and the same row choice.
+#  5. results.json gives LM-83's ASE and sDA verdicts to the operated result and the raised
+#     case, and none to the cases with the blinds in place (their ASE is the sun through the
+#     slats: 0 % for `tilted`, 30 % without the blinds);
+#  6. a second run traces nothing, finds the same schedule and the same row choice.
 # Usage: DAYPHOTON=path/to/dayphoton bash run_operated_test.sh  (from the repository root)
 set -u
 bin=${DAYPHOTON:?set DAYPHOTON to the dayphoton executable}
@@ -76,6 +79,25 @@ ase() { grep '"ase_percent"' "$1" | head -1 | tr -d ' ,'; }
   fail "operated ASE $(ase "$op/grid_metrics.json") != raised $(ase "$out/variants/raised/workplane/grid_metrics.json")"
 echo "ok   operated ASE = raised ASE: $(ase "$op/grid_metrics.json")"
 
+# 5. The verdicts: LM-83 sDA and ASE only where no blinds are in place (every hour, or in the
+# open case of the operated result).
+python3 - "$out/results.json" <<'PY' || fail "LM-83 verdicts with blinds in place"
+import json, sys
+m = json.load(open(sys.argv[1]))
+for c in m["cases"]:
+    name = c["name"] or "base"
+    blinds = c.get("blinds_in_place", [])
+    assert (blinds == ["venetian"]) == (c["kind"] != "operated" and name != "raised"), (name, blinds)
+    for g in c["grids"]:
+        for v in g["verdicts"]:
+            if v["standard"].startswith(("IES", "LEED")):
+                assessed = v["outcome"] != "not assessed"
+                assert assessed == (not blinds), (name, v)
+                assert blinds or v["value"] is not None, (name, v)
+                assert not blinds or "'venetian' are in place every hour" in v["reason"], (name, v)
+PY
+echo "ok   LM-83 verdicts only for the operated result and the raised case"
+
 # A second run takes every case from the cache and operates again. (Its tables are not
 # byte-compared with the first run's: a fresh and a cached sun-bins run differ in rare last
 # float bits, for every case, operated or not.)
@@ -85,4 +107,4 @@ grep -q "sun photons: traced 0 of" "$out/run.log" || fail "second run traced sun
 grep -q "^operated workplane: 'closed' in $all of 8760 hours" "$out/run.log" || fail "second run: $(grep operated "$out/run.log")"
 check_rows
 echo "ok   second run: nothing traced, the same schedule, rows from the cases again"
-echo "5 passed, 0 failed"
+echo "6 passed, 0 failed"

@@ -704,5 +704,47 @@ TEST(HoneybeeProject, AnOldModelsNorthAngleOrientsItWhereTheProjectWritesNoNorth
       << errors[0];
 }
 
+// A Honeybee SensorGrid's `mesh` gives each sensor the floor area Honeybee weighs its result
+// by (honeybee-radiance-postprocess: "these meshes will be used to compute percentages of
+// occupied floor area"); dayphoton counts every sensor equally, and the mesh was ignored
+// without a word. Two sensors on faces of 1 and 0.25 m^2 (a cell trimmed at a wall): if only
+// the small one passes, Honeybee's share is 0.25 / 1.25 = 20 %, dayphoton's 50 %: the bound
+// 50 (|0.8 - 0.5| + |0.2 - 0.5|) = 30 points. Now a located warning at the grid's mesh, with
+// the bound; equal faces (or no mesh) give none.
+TEST(HoneybeeProject, AGridMeshOfUnequalFacesIsAWarningWithTheBound) {
+  EXPECT_NEAR(honeybee_mesh_share_bound_points({1.0, 0.25}), 30.0, 1e-12);
+  EXPECT_NEAR(honeybee_mesh_share_bound_points({0.25, 0.25, 0.25}), 0.0, 1e-12);
+  EXPECT_NEAR(honeybee_mesh_share_bound_points({2, 1, 1}), 50 * (0.5 - 1.0 / 3 + 2 * (1.0 / 3 - 0.25)), 1e-12);
+  auto grids = [](const std::string& second_face) {
+    return R"("sensor_grids": [{"identifier": "g", "sensors": [)"
+           R"({"pos": [1.5, 1.5, 0.8], "dir": [0, 0, 1]}, {"pos": [2.75, 1.5, 0.8], "dir": [0, 0, 1]}],)"
+           "\n"
+           R"("mesh": {"type": "Mesh3D", "vertices": [[1, 1, 0.8], [2, 1, 0.8], [2, 2, 0.8], [1, 2, 0.8], )"
+           R"([2.5, 1, 0.8], [3, 1, 0.8], [3, 1.5, 0.8], [2.5, 1.5, 0.8], [3, 2, 0.8], [2, 1.5, 0.8]], )"
+           R"("faces": [[0, 1, 2, 3], )" + second_face + "]}}]";
+  };
+  for (const auto& [face, warned_expected] : {std::pair<std::string, bool>{"[4, 5, 6, 7]", true},  // 0.5 x 0.5 m
+                                              {"[1, 5, 8, 2]", false}}) {                          // 1 x 1 m
+    TempDir dir;
+    dir.write("model.hbjson", model(room("r", box, outdoors(), outdoors()), grids(face)));
+    const std::string yaml = dir.write("p.yaml", std::string(ProjectHead) +
+                                                     "geometry: {honeybee: model.hbjson}\n"
+                                                     "sensors:\n  honeybee_grids: all\n");
+    const Project p = load_project(yaml);
+    ASSERT_EQ(p.geometry.honeybee->model.grids.size(), 1u);
+    EXPECT_EQ(p.geometry.honeybee->model.grids[0].mesh_face_areas_m2.size(), 2u);
+    const SceneDescription scene = build_scene_description(p);
+    const Diagnostic* warning = nullptr;
+    for (const Diagnostic& w : scene.warnings)
+      if (w.message.find("sensor grid 'g': the faces of its mesh differ") != std::string::npos) warning = &w;
+    ASSERT_EQ(warning != nullptr, warned_expected) << face;
+    if (!warning) continue;
+    EXPECT_EQ(warning->location.file, dir.path + "/model.hbjson");
+    EXPECT_EQ(warning->location.line, 2);  // the line of "mesh"
+    EXPECT_NE(warning->message.find("0.25 to 1 m^2"), std::string::npos) << warning->message;
+    EXPECT_NE(warning->message.find("up to 30 percentage points"), std::string::npos) << warning->message;
+  }
+}
+
 }  // namespace
 }  // namespace dayphoton::project

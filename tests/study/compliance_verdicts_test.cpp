@@ -275,3 +275,65 @@ TEST(ComplianceVerdicts, En17037SaysWhenItTookTheRuleForHorizontalOpenings) {
   const Verdict v = find(grid_verdicts(roof), "EN 17037", "level");
   EXPECT_NE(v.reason.find("horizontal openings: the target over 95 % of the area"), std::string::npos) << v.reason;
 }
+
+// LM-83-12 section 2.2.6 takes ASE "with all operable shading devices retracted" and sDA with
+// the blinds operated hour by hour. A case with venetian blinds in place every hour gave both
+// verdicts from the light through the slats: projects/blinds' `tilted` case (45 degrees) read
+// ASE 0 % "pass" and LEED sDA 42.9 % "1 point", where the room's ASE without the blinds is
+// 30 % (fail) and its operated sDA 25.7 % (0 points). Now: not assessed, naming the blinds;
+// the operated result keeps its verdicts when its open case has no blinds, and loses them when
+// it has (its ASE and its 2 % rule would be the sun through the slats).
+TEST(ComplianceVerdicts, Lm83SdaAndAseAreNotAssessedWithBlindsInPlace) {
+  const GridResult grid = horizontal_grid(42.9, 0, 2, 1, 0.5);
+  for (const char* criterion : {"sDA", "ASE"}) {
+    EXPECT_NE(find(grid_verdicts(grid), "IES", criterion).outcome, "not assessed") << criterion;
+    const Verdict v = find(grid_verdicts(grid, {"venetian"}), "IES", criterion);
+    EXPECT_EQ(v.outcome, "not assessed") << criterion;
+    EXPECT_FALSE(v.value.has_value());
+    EXPECT_NE(v.reason.find("blinds 'venetian' are in place every hour"), std::string::npos) << v.reason;
+    EXPECT_NE(v.reason.find("operation"), std::string::npos) << v.reason;
+  }
+  EXPECT_EQ(find(grid_verdicts(grid), "LEED", "sDA").reason, "1 point");
+  EXPECT_EQ(find(grid_verdicts(grid, {"venetian"}), "LEED", "sDA").outcome, "not assessed");
+  // Neither the EN 17037 nor the BREEAM verdict depends on it.
+  EXPECT_EQ(find(grid_verdicts(grid, {"venetian"}), "EN 17037", "level").outcome, "pass");
+  EXPECT_EQ(find(grid_verdicts(grid, {"venetian"}), "BREEAM", "").outcome, "pass");
+  // Through the model: the base with blinds, a variant without, the operated result of each.
+  ResultsModel m;
+  CaseResult base, raised, operated;
+  base.kind = "base";
+  base.blinds_in_place = {"venetian", "upper"};
+  raised.kind = "variant";
+  operated.kind = "operated";
+  base.grids = raised.grids = operated.grids = {grid};
+  m.cases = {base, raised, operated};
+  assess_compliance(m);
+  const Verdict b = find(m.cases[0].grids[0].verdicts, "IES", "ASE");
+  EXPECT_EQ(b.outcome, "not assessed");
+  EXPECT_NE(b.reason.find("blinds 'venetian' and 'upper'"), std::string::npos) << b.reason;
+  EXPECT_EQ(find(m.cases[1].grids[0].verdicts, "IES", "ASE").outcome, "pass");
+  EXPECT_EQ(find(m.cases[2].grids[0].verdicts, "LEED", "sDA").outcome, "pass");
+  m.cases[2].blinds_in_place = {"venetian"};
+  assess_compliance(m);
+  const Verdict o = find(m.cases[2].grids[0].verdicts, "IES", "ASE");
+  EXPECT_EQ(o.outcome, "not assessed");
+  EXPECT_NE(o.reason.find("the open case has the blinds 'venetian'"), std::string::npos) << o.reason;
+}
+
+// set_building lists the case's enabled blinds, which the verdicts read; disabled blinds
+// (raised) and other systems are not listed.
+TEST(ResultsModelBuilder, BlindsInPlaceAreTheEnabledBlinds) {
+  project::Project p;
+  project::SystemSpec blinds, raised, shelf;
+  blinds.name = "venetian";
+  blinds.params = project::BlindsSpec{};
+  raised = blinds;
+  raised.name = "raised";
+  raised.enabled = false;
+  shelf.name = "shelf";
+  shelf.params = project::LightShelfSpec{};
+  p.geometry.systems = {shelf, blinds, raised};
+  CaseResult c;
+  set_building(c, p, SceneDescription{});
+  EXPECT_EQ(c.blinds_in_place, std::vector<std::string>{"venetian"});
+}

@@ -59,6 +59,7 @@ ResultsModel full_model() {
   c.rooms = {{"office", 6, 8, 3, 48, 6, 18, 1.5,
               {{"south", "south", 4, 1.5, 0.9, 6, "glazing", 0.8, 0.9}, {"top", "roof", 1, 1.5, 0.25, 1.5, "glazing", 1, 1}}}};
   c.opening_area_m2 = 7.5;
+  c.blinds_in_place = {"venetian"};
   GridResult g;
   g.name = "workplane";
   g.folder = "variants/tinted/workplane";
@@ -229,6 +230,11 @@ TEST(ResultsModel, RoundTripsEveryField) {
   changed = back;
   changed.cases[1].grids[0].dropped_enclosed = 0;
   EXPECT_FALSE(changed == m);
+  changed = back;
+  changed.cases[1].blinds_in_place.clear();  // and then not written at all
+  EXPECT_FALSE(changed == m);
+  EXPECT_EQ(results_json(changed).find("blinds_in_place"), std::string::npos);
+  EXPECT_TRUE(parse_results_json(results_json(changed), "r/results.json") == changed);
   changed = back;
   changed.not_assessed.pop_back();
   EXPECT_FALSE(changed == m);

@@ -43,10 +43,26 @@ struct HoneybeeSurface {
 };
 
 /// One sensor grid of `properties.radiance.sensor_grids`.
+/// A Honeybee grid whose mesh faces could move an area share (sDA, ASE, EN 17037's target
+/// areas) by this many percentage points or more between Honeybee's area weighting and
+/// dayphoton's equal weights is warned about (honeybee_mesh_share_bound_points).
+constexpr double HoneybeeMeshShareWarnPoints = 1.0;
+
+/// The largest difference, in percentage points, between the share of an area weighted by
+/// `areas_m2` and the share of its sensors counted equally, over every set of sensors: the
+/// total variation distance 50 sum_i |a_i / A - 1 / n| (100 for percent, halved).
+double honeybee_mesh_share_bound_points(const std::vector<double>& areas_m2);
+
 struct HoneybeeGrid {
   std::string identifier;
   std::vector<SensorPoint> points;  ///< metres; normals of unit length
   SourceLocation location;
+  /// The areas (m^2) of the faces of the grid's `mesh` (Mesh3D: one face per sensor, the
+  /// floor area Honeybee weighs each sensor's result by); empty without a mesh, or when it is
+  /// malformed or its face count is not the sensors'. dayphoton weighs every sensor equally:
+  /// project loading warns when these differ (load_project.cpp).
+  std::vector<double> mesh_face_areas_m2;
+  SourceLocation mesh_location;
 };
 
 struct HoneybeeModel {

@@ -23,7 +23,12 @@
 //    factor >= 2 % and criterion (a): uniformity (minimum / average) >= 0.4 or a minimum point
 //    daylight factor >= 0.8 %. Criteria (b) view of sky and (c) room depth are not assessed.
 // All of them are defined on horizontal work planes: a vertical or tilted grid gets "not
-// assessed" with that reason.
+// assessed" with that reason. LM-83's ASE is "with all operable shading devices retracted" and
+// its sDA is computed "with hourly blind operation" (section 2.2.6, the 2 % rule, whose direct
+// sun "excludes the effect of any blinds"): a case with venetian blinds in place every hour, or
+// an operated result whose open case has them, gets "not assessed" for both (and for LEED's
+// sDA), since its ASE is the sun through the slats (projects/blinds: 0 % with the slats at
+// 45 degrees, 30 % with them raised) and its sDA is not the operated one.
 #pragma once
 
 #include "dayphoton/study/results_model.h"
@@ -49,8 +54,10 @@ bool lm83_analysis_period(const AnnualSummary& annual, std::string& why);
 int leed_v41_points(double sda_percent);
 
 /// The verdicts of one grid (the grid's own summaries; its orientation decides whether any
-/// applies).
-std::vector<Verdict> grid_verdicts(const GridResult& grid);
+/// applies). `blinds_in_place`: the case's (CaseResult::blinds_in_place); `operated`: the case
+/// is the operated result (its blinds are those of its open case).
+std::vector<Verdict> grid_verdicts(const GridResult& grid, const std::vector<std::string>& blinds_in_place = {},
+                                   bool operated = false);
 
 /// Fill every grid's verdicts and the model's not-assessed statements.
 void assess_compliance(ResultsModel& model);

@@ -317,6 +317,12 @@ struct CaseResult {
   std::vector<MaterialSummary> materials;  ///< materials of the case's surfaces, in the scene's order
   std::vector<RoomSummary> rooms;    ///< the room generator's rooms (none for polygons, meshes, imports)
   double opening_area_m2 = 0;        ///< all openings (ports), one side
+  /// Venetian blinds (`blinds` systems) in place in the case, by name; for the operated
+  /// result, those of its open case. LM-83-12 computes ASE with every operable shading device
+  /// retracted and sDA with the blinds operated hour by hour (section 2.2.6), so neither
+  /// verdict is given for a case with blinds in place (compliance_verdicts.h). In results.json
+  /// only when some are.
+  std::vector<std::string> blinds_in_place;
   std::vector<GridResult> grids;
 
   bool operator==(const CaseResult& o) const;

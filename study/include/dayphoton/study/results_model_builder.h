@@ -42,7 +42,8 @@ void set_plan_geometry(CaseResult& c, const SceneDescription& scene);
 /// The building of a case for the report's tables: the materials of its scene's surfaces
 /// (photometric reflectance, normal-incidence transmittance, area) and the rooms of the
 /// case's project (the variant's own, e.g. with a window added) with their windows, roof
-/// lights, window-to-wall and window-to-floor areas; the total area of the scene's openings.
+/// lights, window-to-wall and window-to-floor areas; the total area of the scene's openings;
+/// the enabled blinds (CaseResult::blinds_in_place).
 void set_building(CaseResult& c, const project::Project& project, const SceneDescription& scene);
 
 /// The project's name for titles (ResultsModel::title): the folder's name for a file called
