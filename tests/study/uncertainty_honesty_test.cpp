@@ -6,9 +6,10 @@
 // Per sensor, the ratio of the observed spread to the reported standard error, and the
 // standard deviation of its mean over the sensors from the runs' own correlations
 // (seed_spread.h). The mean ratio must lie within 4 of those standard deviations of 1
-// (two-sided p = 6e-5 per project), and within the acceptance target 0.8 - 1.25. For the office the same holds for the sensors of the
-// grid's outer rows and columns alone, where the ground bin's estimates are local-quadratic
-// (its own correlations give that subset's tolerance).
+// (two-sided p = 6e-5 per project), and within the acceptance target 0.8 - 1.25. For the
+// office the same holds for the sensors of the grid's outer rows and columns alone, where the
+// ground bin's estimates are local-quadratic (its own correlations give that subset's
+// tolerance).
 #include <gtest/gtest.h>
 
 #include <cmath>
