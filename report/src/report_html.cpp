@@ -613,6 +613,30 @@ std::string grid_section(const GridData& g, PageIds& page) {
   }
   s << "</div>";
 
+  // Point-in-time cases: each case's statistics beside its Monte Carlo uncertainty (docs/
+  // outputs.md, point_in_time.csv: the relative standard error over the sensors with light).
+  if (!g.grid->points_in_time.empty()) {
+    s << "<div class=\"part\" id=\"" << g.id << "-pit\"><h3>Point in time</h3>"
+      << "<table class=\"grid-table\"><tr><th>case</th><th>sky</th><th>mean</th><th>median</th><th>minimum</th>"
+         "<th>maximum</th><th>uniformity (min / mean)</th><th>standard error, RMS over sensors (relative)</th>"
+         "<th>standard error, largest (relative)</th></tr>";
+    auto lux = [](double v) { return format_value(v, Precision::Illuminance) + " lx"; };
+    auto relative = [](const std::optional<double>& v) {
+      return v ? format_value(*v, Precision::DaylightFactor) + " %" : std::string("not stated");
+    };
+    for (const study::PointInTimeSummary& p : g.grid->points_in_time)
+      s << "<tr><td>" << esc(p.name) << "</td><td>" << esc(p.sky) << "</td><td class=\"n\">" << lux(p.mean_lux)
+        << "</td><td class=\"n\">" << lux(p.median_lux) << "</td><td class=\"n\">" << lux(p.min_lux)
+        << "</td><td class=\"n\">" << lux(p.max_lux) << "</td><td class=\"n\">"
+        << format_value(p.uniformity, Precision::Ratio) << "</td><td class=\"n\">"
+        << relative(p.rms_relative_stderr_percent) << "</td><td class=\"n\">"
+        << relative(p.max_relative_stderr_percent) << "</td></tr>";
+    s << "</table><p class=\"note\">Illuminance at every sensor at each case's date and time (project key "
+         "<code>points_in_time</code>; per sensor in <code>point_in_time.csv</code>, each value with its standard "
+         "error). The standard error is the Monte Carlo one, relative to the value, over the sensors with light.</p>"
+         "</div>";
+  }
+
   // DA.
   s << "<div class=\"part\" id=\"" << g.id << "-da\"><h3>Daylight autonomy</h3>";
   const std::vector<double> da = g.da && annual ? *g.da : std::vector<double>{};

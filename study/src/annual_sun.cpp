@@ -14,6 +14,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/direct_component.h"
 #include "dayphoton/engine/distant_source.h"
+#include "dayphoton/engine/estimate_variance.h"
 #include "dayphoton/engine/port_view.h"
 #include "dayphoton/engine/random.h"
 #include "dayphoton/metrics/annual_metrics.h"
@@ -189,7 +190,8 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
                                        const std::vector<engine::Material>& materials,
                                        const std::vector<SensorPoint>& sensors,
                                        const std::vector<sky::SunRecord>& suns, int samples,
-                                       std::uint64_t seed, DirectSunValues values, engine::SensorRange rows) {
+                                       std::uint64_t seed, DirectSunValues values, engine::SensorRange rows,
+                                       std::vector<double>* variance) {
   rows = rows.within(sensors.size());
   if (samples < 1) throw std::invalid_argument("direct sun: at least 1 sample per sun is needed");
   int k = static_cast<int>(std::sqrt(double(samples)));
@@ -202,6 +204,7 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
   const double pad_m = engine::port_view_pad_m(scene, materials);
   const bool rgb = values == DirectSunValues::Rgb;
   RadianceMatrix result(rows.size(), suns.size(), rgb ? 3 : 1);
+  if (variance) variance->assign(rows.size() * suns.size(), 0.0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(rows.begin, rows.end),
                     [&](const tbb::blocked_range<std::size_t>& range) {
     for (std::size_t s = range.begin(); s != range.end(); ++s) {
@@ -220,14 +223,19 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
         if (dot(suns[i].direction, normal) > -std::sin(sky::SunHalfAngle_rad) &&
             ports.may_cross_port(suns[i].direction, sky::SunHalfAngle_rad)) {
           engine::Rng rng(seed, suns[i].step, s, engine::RandomStream::Direct);
+          // Each stratum's share of the value's luminance, row by row (rows of k strata).
+          double* v = variance ? &(*variance)[(s - rows.begin) * suns.size() + i] : nullptr;
+          engine::StratifiedVariance strata(k, v);
           for (int a = 0; a < k; ++a)
             for (int b = 0; b < k; ++b) {
               const double u1 = std::min((a + rng.uniform()) / k, OneMinusEpsilon);
               const double u2 = std::min((b + rng.uniform()) / k, OneMinusEpsilon);
               const Vec3 w = discs.sample_direction(i, u1, u2);
               const double c = dot(w, normal);
-              if (!(c > 0.0)) continue;
-              sum += engine::sky_transmittance(scene, materials, origin, w) * c;
+              Vec3 ray;
+              if (c > 0.0) ray = engine::sky_transmittance(scene, materials, origin, w) * c;
+              sum += ray;
+              if (v) strata.add(0, dot(ray, RgbLuminanceWeights) * weight);
             }
         }
         if (rgb) {

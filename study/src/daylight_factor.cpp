@@ -100,8 +100,8 @@ std::vector<double> daylight_factor_stderr_percent(const std::vector<double>& va
   return out;
 }
 
-std::vector<double> DaylightFactorParts::stderr_percent() const {
-  const std::size_t sensors = df_percent.size();
+std::vector<double> SkyIlluminanceVariance::total() const {
+  const std::size_t sensors = direct_variance.size();
   const std::size_t bins = sensors ? photon_variance.size() / sensors : 0;
   std::vector<double> out(sensors, 0.0);
   for (std::size_t s = 0; s < sensors; ++s) {
@@ -110,7 +110,50 @@ std::vector<double> DaylightFactorParts::stderr_percent() const {
       v += photon_sky_variance[s];
     else
       for (std::size_t p = 0; p < bins; ++p) v += photon_variance[s * bins + p];
-    out[s] = std::sqrt(std::max(0.0, v));
+    out[s] = std::max(0.0, v);
+  }
+  return out;
+}
+
+std::vector<double> DaylightFactorParts::stderr_percent() const {
+  std::vector<double> out = total();
+  for (double& v : out) v = std::sqrt(v);
+  return out;
+}
+
+SkyIlluminanceVariance sky_illuminance_variance(const engine::DaylightCoefficients& c, const RadianceMatrix& sky_vector,
+                                                double unit_per_lux, std::optional<std::size_t> direct_sky,
+                                                std::optional<double> photon_sky_scale) {
+  const std::size_t bins = c.sources, sensors = c.sensors;
+  if (sky_vector.columns() != 1 || sky_vector.rows() != bins)
+    throw std::invalid_argument("illuminance variance: " + std::to_string(bins) + " coefficient bins but a sky vector of " +
+                                std::to_string(sky_vector.rows()) + " x " + std::to_string(sky_vector.columns()));
+  if (c.direct_variance.size() != sensors * bins || c.photon_variance.size() != sensors * bins)
+    throw std::invalid_argument("illuminance variance: coefficients without their parts' variances");
+  const engine::DirectOnSkies& skies = c.direct_on_skies;
+  if (direct_sky && (*direct_sky >= skies.skies || skies.variance.size() != sensors * skies.skies))
+    throw std::invalid_argument("illuminance variance: sky " + std::to_string(*direct_sky) + " of " +
+                                std::to_string(skies.skies) + " continuous skies");
+  const engine::PhotonOnSky& photon_sky = c.photon_on_sky;
+  if (photon_sky_scale && photon_sky.variance.size() != sensors)
+    throw std::invalid_argument("illuminance variance: the photon part on the sky holds " +
+                                std::to_string(photon_sky.variance.size()) + " variances for " +
+                                std::to_string(sensors) + " sensors");
+  const std::vector<double> luminance = sky_vector_luminance(sky_vector);
+  const double variance_scale = std::pow(unit_per_lux * RadianceWhiteEfficacy_lm_per_W, 2);
+  SkyIlluminanceVariance out;
+  out.direct_variance.assign(sensors, 0.0);
+  out.photon_variance.assign(sensors * bins, 0.0);
+  if (photon_sky_scale) out.photon_sky_variance.assign(sensors, 0.0);
+  for (std::size_t s = 0; s < sensors; ++s) {
+    if (photon_sky_scale)
+      out.photon_sky_variance[s] = variance_scale * *photon_sky_scale * *photon_sky_scale * photon_sky.variance[s];
+    for (std::size_t p = 0; p < bins; ++p) {
+      const std::size_t i = s * bins + p;
+      out.photon_variance[i] = variance_scale * luminance[p] * luminance[p] * c.photon_variance[i];
+      if (!direct_sky) out.direct_variance[s] += variance_scale * luminance[p] * luminance[p] * c.direct_variance[i];
+    }
+    if (direct_sky) out.direct_variance[s] = variance_scale * skies.variance[s * skies.skies + *direct_sky];
   }
   return out;
 }
@@ -139,34 +182,21 @@ DaylightFactorParts daylight_factor_parts(const engine::DaylightCoefficients& c,
                                 std::to_string(sensors) + " sensors");
   const std::vector<double> w = photometric_weights(sky_vector.components());
   auto lux = [&](const Vec3& rgb, std::size_t p) { return sky_weighted_lux(rgb, w, sky_vector, p); };
-  const std::vector<double> luminance = sky_vector_luminance(sky_vector);
   const double scale = 100.0 / horizontal_illuminance_lux;  // lux -> DF points
-  const double variance_scale = std::pow(scale * RadianceWhiteEfficacy_lm_per_W, 2);
   DaylightFactorParts out;
+  static_cast<SkyIlluminanceVariance&>(out) =
+      sky_illuminance_variance(c, sky_vector, scale, continuous ? std::optional<std::size_t>(sky_index) : std::nullopt,
+                               photon_continuous ? std::optional<double>(1.0) : std::nullopt);
   out.df_percent.assign(sensors, 0.0);
-  out.direct_variance.assign(sensors, 0.0);
-  out.photon_variance.assign(sensors * bins, 0.0);
-  if (photon_continuous) out.photon_sky_variance.assign(sensors, 0.0);
   for (std::size_t s = 0; s < sensors; ++s) {
     double e_lux = 0;
-    if (photon_continuous) {
-      e_lux += RadianceWhiteEfficacy_lm_per_W * engine::luminance_of(photon_sky.irradiance[s]);
-      out.photon_sky_variance[s] = variance_scale * photon_sky.variance[s];
-    }
+    if (photon_continuous) e_lux += RadianceWhiteEfficacy_lm_per_W * engine::luminance_of(photon_sky.irradiance[s]);
     for (std::size_t p = 0; p < bins; ++p) {
       const std::size_t i = s * bins + p;
       if (!photon_continuous) e_lux += lux(c.caustic[i] + c.global[i], p);
-      out.photon_variance[i] = variance_scale * luminance[p] * luminance[p] * c.photon_variance[i];
-      if (!continuous) {
-        e_lux += lux(c.direct[i], p);
-        out.direct_variance[s] += variance_scale * luminance[p] * luminance[p] * c.direct_variance[i];
-      }
+      if (!continuous) e_lux += lux(c.direct[i], p);
     }
-    if (continuous) {
-      const std::size_t k = s * skies.skies + sky_index;
-      e_lux += RadianceWhiteEfficacy_lm_per_W * engine::luminance_of(skies.irradiance[k]);
-      out.direct_variance[s] = variance_scale * skies.variance[k];
-    }
+    if (continuous) e_lux += RadianceWhiteEfficacy_lm_per_W * engine::luminance_of(skies.irradiance[s * skies.skies + sky_index]);
     out.df_percent[s] = scale * e_lux;
   }
   return out;

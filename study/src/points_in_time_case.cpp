@@ -9,6 +9,7 @@
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/point_in_time.h"
+#include "dayphoton/study/point_in_time_uncertainty.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/results_model_builder.h"
 #include "dayphoton/study/sub_patch_shares.h"
@@ -16,6 +17,22 @@
 #include "sun_bin_steps.h"
 
 namespace dayphoton::study {
+
+namespace {
+
+/// A cie_overcast case's sky over the DF's (both of the CIE overcast shape): the ratio of the
+/// two vectors' sky bins, equal for every bin (ground bin 0 left out).
+double overcast_scale(const RadianceMatrix& column, const std::vector<double>& df_luminance) {
+  const std::vector<double> case_luminance = sky_vector_luminance(column);
+  double case_sky = 0, df_sky = 0;
+  for (std::size_t p = 1; p < column.rows(); ++p) {
+    case_sky += case_luminance[p];
+    df_sky += df_luminance.at(p);
+  }
+  return df_sky > 0 ? case_sky / df_sky : 0.0;
+}
+
+}  // namespace
 
 /// The point-in-time cases of one case (point_in_time.h) at every grid: point_in_time.csv per
 /// grid and each grid's summary.json `point_in_time` entries (`grids_json[g]`).
@@ -64,25 +81,51 @@ void run_points_in_time(const project::Project& project, const std::string& pref
           table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + double(direct.lux(k, i)) +
                                                double(indirect.lux(k, i)));
     }
-    // The CIE cases' direct part from their continuous skies, as the daylight factor's.
+    // The exact direct sun's shadow-ray variance (point_in_time_uncertainty.h): the same rays
+    // as the cached direct sun step's (the same seed and random streams), traced again with
+    // their variance for the cases' few suns.
+    std::vector<double> direct_sun_variance;
+    if (bins)
+      direct_sun_coefficients(cs.scene, cs.materials, grid.points, skies.suns, ctx.plan.sun_direct_samples,
+                              ctx.plan.seed, DirectSunValues::Luminance, {}, &direct_sun_variance);
+    // Per case, the standard error of every sensor's illuminance (point_in_time_uncertainty.h).
+    std::vector<std::vector<double>> stderr_lux(cases.size());
     for (std::size_t k = 0; k < cases.size(); ++k) {
       const int sky_index = k < ctx.plan.point_in_time_sky.size() ? ctx.plan.point_in_time_sky[k] : -1;
-      if (sky_index < 0) continue;
       RadianceMatrix column(skies.sky.matrix.rows(), 1, skies.sky.matrix.components());
       for (std::size_t p = 0; p < column.rows(); ++p)
         for (int c = 0; c < column.components(); ++c) column.at(p, 0, c) = skies.sky.matrix.at(p, k, c);
+      // The sky part's variance as the value is made: the direct part from the case's
+      // continuous sky (the CIE cases), the photon part from the DF's continuous sky scaled to
+      // the case's (cie_overcast, below), else the sums over the basis.
+      const std::optional<std::size_t> direct_sky =
+          sky_index >= 0 ? std::optional<std::size_t>(static_cast<std::size_t>(sky_index)) : std::nullopt;
+      std::optional<double> photon_sky_scale;
+      if (sky_index >= 0 && cases[k].sky == project::PointSky::CieOvercast && !direct_parts.at(g).photon_on_sky.empty())
+        photon_sky_scale = overcast_scale(column, df_luminance);
+      const SkyIlluminanceVariance sky_variance =
+          sky_illuminance_variance(direct_parts.at(g), column, 1.0, direct_sky, photon_sky_scale);
+      std::optional<PointInTimeSunVariance> sun_variance;
+      for (std::size_t i = 0; i < skies.suns.size(); ++i) {
+        if (skies.suns[i].step != k) continue;
+        PointInTimeSunVariance v;
+        v.disc_radiance = skies.suns[i].disc_radiance;
+        v.direct.resize(grid.points.size());
+        for (std::size_t s = 0; s < v.direct.size(); ++s) v.direct[s] = direct_sun_variance.at(s * skies.suns.size() + i);
+        v.bins = &sun[g].bin_variance;
+        v.bin_count = bins->size();
+        v.stencil = bins->weights(skies.suns[i].direction);
+        sun_variance = std::move(v);
+      }
+      stderr_lux[k] = point_in_time_stderr_lux(sky_variance, sun_variance ? &*sun_variance : nullptr);
+      if (sky_index < 0) continue;
+      // The CIE cases' direct part from their continuous skies, as the daylight factor's.
       std::vector<double> correction =
           continuous_sky_direct_correction_lux(direct_parts.at(g), column, static_cast<std::size_t>(sky_index));
       // A cie_overcast case's photon part: the DF's miss scaled to its sky (the ratio of
       // the two vectors' sky bins, equal for every bin; ground bin 0 left out).
       if (cases[k].sky == project::PointSky::CieOvercast) {
-        const std::vector<double> case_luminance = sky_vector_luminance(column);
-        double case_sky = 0, df_sky = 0;
-        for (std::size_t p = 1; p < column.rows(); ++p) {
-          case_sky += case_luminance[p];
-          df_sky += df_luminance.at(p);
-        }
-        const double scale = df_sky > 0 ? case_sky / df_sky : 0.0;
+        const double scale = overcast_scale(column, df_luminance);
         const std::vector<double>& miss = df_photon_corrections_lux.at(g);
         for (std::size_t i = 0; i < correction.size(); ++i) correction[i] += scale * miss.at(i);
       }
@@ -95,17 +138,23 @@ void run_points_in_time(const project::Project& project, const std::string& pref
         table.lux(k, i) = static_cast<float>(double(table.lux(k, i)) + correction.at(i));
     }
     const std::string path = join_path(folders[g], "point_in_time.csv");
-    write_point_in_time_csv(description.world_points(grid.points), names, table, path);  // world coordinates
+    write_point_in_time_csv(description.world_points(grid.points), names, table, path,  // world coordinates
+                            stderr_lux);
     ctx.outputs.record(path);
     nlohmann::json entries = nlohmann::json::array();
     for (std::size_t k = 0; k < cases.size(); ++k) {
       std::vector<double> values(table.sensor_count());
       for (std::size_t i = 0; i < values.size(); ++i) values[i] = table.lux(k, i);
       const GridStatistics st = grid_statistics(values, {});
-      add_point_in_time(ctx.results->grids[g], cases[k].name, project::point_sky_name(cases[k].sky), st);
+      // The case's relative standard error over the sensors with light, as the DF's.
+      const DaylightFactorUncertainty u = daylight_factor_uncertainty(values, stderr_lux[k]);
+      add_point_in_time(ctx.results->grids[g], cases[k].name, project::point_sky_name(cases[k].sky), st, u);
       entries.push_back({{"name", cases[k].name}, {"sky", project::point_sky_name(cases[k].sky)},
                          {"illuminance_lux", {{"mean", st.mean}, {"median", st.median}, {"min", st.min},
-                                              {"max", st.max}, {"uniformity", st.uniformity}}}});
+                                              {"max", st.max}, {"uniformity", st.uniformity}}},
+                         {"uncertainty", {{"rms_relative_stderr_percent", u.rms_relative_stderr_percent},
+                                          {"max_relative_stderr_percent", u.max_relative_stderr_percent},
+                                          {"sensors_with_light", u.sensors_with_light}}}});
     }
     grids_json[g]["point_in_time"] = entries;
     ctx.log.line(prefix + "point in time " + grid.name + ": " + std::to_string(cases.size()) + " case(s) at " +

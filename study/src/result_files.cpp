@@ -119,18 +119,32 @@ void write_daylight_factor_csv(const std::vector<SensorPoint>& sensors, const st
 }
 
 void write_point_in_time_csv(const std::vector<SensorPoint>& sensors, const std::vector<std::string>& case_names,
-                             const metrics::IlluminanceTable& table, const std::string& path) {
+                             const metrics::IlluminanceTable& table, const std::string& path,
+                             const std::vector<std::vector<double>>& stderr_lux) {
   check_count(sensors.size(), table.sensor_count(), path);
   if (case_names.size() != table.step_count())
     throw std::invalid_argument(path + ": " + std::to_string(case_names.size()) + " case names for " +
                                 std::to_string(table.step_count()) + " steps");
+  const bool with_stderr = !stderr_lux.empty();
+  if (with_stderr) {
+    if (stderr_lux.size() != case_names.size())
+      throw std::invalid_argument(path + ": " + std::to_string(stderr_lux.size()) + " cases' standard errors for " +
+                                  std::to_string(case_names.size()) + " cases");
+    for (const std::vector<double>& e : stderr_lux) check_count(sensors.size(), e.size(), path);
+  }
   write_file_atomically(path, [&](std::ostream& out) {
     out << "index,x,y,z";
-    for (const std::string& name : case_names) out << ',' << name << "_lux";
+    for (const std::string& name : case_names) {
+      out << ',' << name << "_lux";
+      if (with_stderr) out << ',' << name << "_stderr_lux";
+    }
     out << '\n';
     for (std::size_t i = 0; i < sensors.size(); ++i) {
       out << index_xyz(i, sensors[i]);
-      for (std::size_t k = 0; k < case_names.size(); ++k) out << ',' << fixed(table.lux(k, i), 1);
+      for (std::size_t k = 0; k < case_names.size(); ++k) {
+        out << ',' << fixed(table.lux(k, i), 1);
+        if (with_stderr) out << ',' << fixed(stderr_lux[k][i], 1);
+      }
       out << '\n';
     }
   });

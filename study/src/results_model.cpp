@@ -201,7 +201,9 @@ json grid_json(const GridResult& g) {
   json points = json::array();
   for (const PointInTimeSummary& p : g.points_in_time)
     points.push_back({{"name", p.name}, {"sky", p.sky}, {"mean_lux", p.mean_lux}, {"median_lux", p.median_lux},
-                      {"min_lux", p.min_lux}, {"max_lux", p.max_lux}, {"uniformity", p.uniformity}});
+                      {"min_lux", p.min_lux}, {"max_lux", p.max_lux}, {"uniformity", p.uniformity},
+                      {"rms_relative_stderr_percent", optional_number(p.rms_relative_stderr_percent)},
+                      {"max_relative_stderr_percent", optional_number(p.max_relative_stderr_percent)}});
   j["points_in_time"] = points;
   j["spacing_m"] = g.spacing_m;
   json verdicts = json::array();
@@ -563,7 +565,8 @@ struct Reader {
       const std::string pk = at_grid + ".points_in_time";
       g.points_in_time.push_back({text(p, pk, "name"), text(p, pk, "sky"), number(p, pk, "mean_lux"),
                                   number(p, pk, "median_lux"), number(p, pk, "min_lux"), number(p, pk, "max_lux"),
-                                  number(p, pk, "uniformity")});
+                                  number(p, pk, "uniformity"), optional_number(p, pk, "rms_relative_stderr_percent"),
+                                  optional_number(p, pk, "max_relative_stderr_percent")});
     }
     g.spacing_m = number(j, at_grid, "spacing_m");
     const std::string vk = at_grid + ".verdicts";
@@ -711,7 +714,9 @@ std::string AnnualSummary::en17037_level() const {
 }
 bool PointInTimeSummary::operator==(const PointInTimeSummary& o) const {
   return name == o.name && sky == o.sky && mean_lux == o.mean_lux && median_lux == o.median_lux &&
-         min_lux == o.min_lux && max_lux == o.max_lux && uniformity == o.uniformity;
+         min_lux == o.min_lux && max_lux == o.max_lux && uniformity == o.uniformity &&
+         rms_relative_stderr_percent == o.rms_relative_stderr_percent &&
+         max_relative_stderr_percent == o.max_relative_stderr_percent;
 }
 bool Verdict::operator==(const Verdict& o) const {
   return standard == o.standard && criterion == o.criterion && requirement == o.requirement && value == o.value &&

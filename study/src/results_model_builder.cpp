@@ -384,8 +384,10 @@ void add_verdict_uncertainty(GridResult& grid, const VerdictUncertainty& u) {
   if (grid.annual) grid.annual->da_verdicts_within_2_sigma = u.da_verdicts_uncertain;
 }
 
-void add_point_in_time(GridResult& grid, const std::string& name, const std::string& sky, const GridStatistics& st) {
-  grid.points_in_time.push_back({name, sky, st.mean, st.median, st.min, st.max, st.uniformity});
+void add_point_in_time(GridResult& grid, const std::string& name, const std::string& sky, const GridStatistics& st,
+                       const DaylightFactorUncertainty& u) {
+  grid.points_in_time.push_back({name, sky, st.mean, st.median, st.min, st.max, st.uniformity,
+                                 u.rms_relative_stderr_percent, u.max_relative_stderr_percent});
   grid.quantities.push_back({"point_in_time_" + name, "point_in_time.csv", name + "_lux", "point_in_time",
                              "illuminance at point in time '" + name + "'", "lx", QuantityScale::Illuminance,
                              "illuminance"});

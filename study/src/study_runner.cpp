@@ -184,7 +184,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   const bool annual_product = project.study != project::StudyKind::DaylightFactor &&
                               (project.outputs.annual_illuminance || project.outputs.metrics);
   std::vector<std::vector<double>> sky_variances;  // sensors x sources per grid (sky_variance_of)
-  // Per grid, for the point-in-time cases: the direct part alone (with its continuous skies).
+  // Per grid, for the point-in-time cases: the direct part (with its continuous skies) and the
+  // photon part's variances (by bin and on the DF sky), not the photon part's values.
   std::vector<engine::DaylightCoefficients> point_direct_parts;
   std::vector<std::vector<double>> point_photon_corrections;  // per grid, lux under the DF sky
   // Per grid, the whole coefficients' and the photon part's sub-patch shares (sub_patch_shares.h).
@@ -308,6 +309,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       part.direct = std::move(coefficients[g]->direct);
       part.direct_variance = std::move(coefficients[g]->direct_variance);
       part.direct_on_skies = std::move(coefficients[g]->direct_on_skies);
+      // The photon part's variances, for the cases' standard errors (point_in_time_uncertainty.h).
+      part.photon_variance = std::move(coefficients[g]->photon_variance);
+      part.photon_on_sky = std::move(coefficients[g]->photon_on_sky);
       point_direct_parts.push_back(std::move(part));
     }
     coefficients[g].reset();

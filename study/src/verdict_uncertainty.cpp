@@ -106,12 +106,7 @@ VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky
           for (std::size_t j = 0; j < n_occupied; ++j)
             for (const std::size_t i : suns_at[j]) {
               const sky::SunRecord& record = (*sun->suns)[i];
-              const engine::SunStencil& st = stencils[i];
-              double vs = 0;
-              for (int k = 0; k < st.count; ++k) {
-                const double w = st.weight[static_cast<std::size_t>(k)];
-                vs += w * w * (*sun->variance)[s * n_bins + static_cast<std::size_t>(st.index[static_cast<std::size_t>(k)])];
-              }
+              const double vs = interpolated_sun_variance(stencils[i], sun->variance->data() + s * n_bins);
               row[j] += efficacy2 * record.disc_radiance * record.disc_radiance * vs;
             }
         }

@@ -94,3 +94,43 @@ TEST(ReportFromResults, NeedsNothingButTheResultsFolder) {
   EXPECT_EQ(html.find("could not read"), std::string::npos);
   fs::remove_all(root);
 }
+
+TEST(ReportFromResults, PointInTimeCasesCarryTheirUncertainty) {
+  // A CIE overcast case is the daylight factor times its sky's horizontal illuminance, and so
+  // is its standard error (study/point_in_time_uncertainty.h): its relative uncertainty is the
+  // DF's, stated in summary.json, in results.json and in the report's point-in-time part.
+  const fs::path root = test::process_temp_dir() / "dayphoton_report_point_in_time";
+  fs::remove_all(root);
+  fs::create_directories(root / "project");
+  std::ofstream(root / "project" / "project.yaml")
+      << Project << "points_in_time: [{name: noon, date: 03-21, time: \"12:00\", sky: cie_overcast}]\n";
+  const project::Project project = project::load_project((root / "project" / "project.yaml").string());
+  const fs::path out = root / "run";
+  study::RunSettings settings;
+  settings.output_dir = out.string();
+  settings.write_views = report::write_views;
+  std::ostringstream quiet;
+  study::Progress progress(quiet, study::ProgressStyle::Quiet);
+  study::run_study(project, settings, progress);
+  const study::ResultsModel model = study::read_results_model(out.string());
+  const study::GridResult& grid = model.cases.at(0).grids.at(0);
+  ASSERT_EQ(grid.points_in_time.size(), 1u);
+  const study::PointInTimeSummary& noon = grid.points_in_time[0];
+  ASSERT_TRUE(noon.rms_relative_stderr_percent && noon.max_relative_stderr_percent);
+  ASSERT_TRUE(grid.daylight_factor.has_value());
+  EXPECT_GT(*noon.rms_relative_stderr_percent, 0.0);
+  // The illuminance table is float: 1e-6 relative.
+  EXPECT_NEAR(*noon.rms_relative_stderr_percent, grid.daylight_factor->rms_relative_stderr_percent,
+              1e-5 * grid.daylight_factor->rms_relative_stderr_percent);
+  EXPECT_NEAR(*noon.max_relative_stderr_percent, grid.daylight_factor->max_relative_stderr_percent,
+              1e-5 * grid.daylight_factor->max_relative_stderr_percent);
+  const std::string summary = read_text(out / "summary.json");
+  EXPECT_NE(summary.find("\"rms_relative_stderr_percent\""), std::string::npos);
+  EXPECT_NE(summary.find("\"sensors_with_light\""), std::string::npos);
+  const std::string html = read_text(out / "report.html");
+  const std::size_t part = html.find("id=\"grid-floor-pit\"");
+  ASSERT_NE(part, std::string::npos);
+  EXPECT_NE(html.find("standard error, RMS over sensors (relative)", part), std::string::npos);
+  EXPECT_EQ(html.find("not stated", part), std::string::npos);
+  fs::remove_all(root);
+}

@@ -36,8 +36,8 @@
 //
 // Tolerances, never tuned: the daylight factor against its own reported standard error
 // (`df_stderr_percent`), |DF - reference| <= z se + the printing (0.5e-4 %), z the normal
-// quantile at the Sidak-corrected two-sided 1e-3 per test; point_in_time.csv reports no
-// standard error, so the general skies are run with R = 12 seeds and the replicate mean is held
+// quantile at the Sidak-corrected two-sided 1e-3 per test; the general skies are run with
+// R = 12 seeds (their mean is the tighter test) and the replicate mean is held
 // to t SE (Student, R - 1 degrees of freedom, Sidak-corrected 1e-3 per test) + the printing
 // (0.05 lx); and t SE must stay below 2 % of the reference, so a 2 % error is seen. Both add
 // the quadrature's own error bound (5e-4 relative, checked against Lambert's formula).
@@ -553,7 +553,7 @@ void check_case(const CaseSpec& c) {
     for (int type = 1; type <= 15; ++type) {
       std::unique_ptr<ObstructionIlluminance> ev;
       const Seen seen = seen_under(general_sky(type, sun, HorizontalLux), ev);
-      const std::size_t col = 4 + si * 15 + static_cast<std::size_t>(type - 1);
+      const std::size_t col = 4 + 2 * (si * 15 + static_cast<std::size_t>(type - 1));  // <case>_lux, <case>_stderr_lux
       for (std::size_t i = 0; i < ss.size(); ++i) {
         const double ref = through_opening(ss[i], o, seen, c.glazed);
         double m = 0, m2 = 0;

@@ -112,18 +112,26 @@ std::vector<std::vector<double>> PointInTime::s_df, PointInTime::s_pit;
 std::vector<std::string> PointInTime::s_pit_header;
 
 TEST_F(PointInTime, OvercastIsTheDaylightFactorTimesTheHorizontalIlluminance) {
-  ASSERT_EQ(s_pit_header, (std::vector<std::string>{"index", "x", "y", "z", "overcast_lux", "clear_lux"}));
+  ASSERT_EQ(s_pit_header, (std::vector<std::string>{"index", "x", "y", "z", "overcast_lux", "overcast_stderr_lux",
+                                                    "clear_lux", "clear_stderr_lux"}));
   ASSERT_EQ(s_pit.size(), s_df.size());
   ASSERT_EQ(s_pit.size(), 16u * 20u);
-  double largest = 0;
+  double largest = 0, largest_stderr = 0;
   for (std::size_t i = 0; i < s_pit.size(); ++i) {
     const double expected = s_df[i][4] * OvercastLux / 100.0;
     // Printing: DF with 4 decimals (0.5e-4 % of E_h), lux with 1 decimal; the table is float.
     const double tolerance = 0.5e-4 * OvercastLux / 100.0 + 0.05 + 1e-6 * expected;
     EXPECT_NEAR(s_pit[i][4], expected, tolerance) << "sensor " << i;
     largest = std::max(largest, expected);
+    // Its standard error is the DF's, scaled alike (the same estimates under the same sky's
+    // shape: point_in_time_uncertainty.h).
+    const double expected_stderr = s_df[i][5] * OvercastLux / 100.0;
+    EXPECT_NEAR(s_pit[i][5], expected_stderr, 0.5e-4 * OvercastLux / 100.0 + 0.05 + 1e-6 * expected_stderr)
+        << "sensor " << i;
+    largest_stderr = std::max(largest_stderr, expected_stderr);
   }
   EXPECT_GT(largest, 100.0);  // the comparison is not between zeros
+  EXPECT_GT(largest_stderr, 1.0);
 }
 
 TEST_F(PointInTime, TheSunPatchLandsWhereTheGeometrySays) {
@@ -138,7 +146,7 @@ TEST_F(PointInTime, TheSunPatchLandsWhereTheGeometrySays) {
   const double direct_floor = SunLux * d.z;
   int lit = 0, dark = 0;
   for (const std::vector<double>& row : s_pit) {
-    const double x = row[1], y = row[2], e = row[5];
+    const double x = row[1], y = row[2], e = row[6];  // clear_lux
     const double t = -y / d.y;  // to the window's plane y = 0
     const double xw = x + t * d.x, zw = SensorZ + t * d.z;
     // The distance of the crossing point from the opening's edge (negative: outside it).
@@ -210,7 +218,7 @@ TEST(PointInTimeSkyComponent, ACieClearSkysSkyComponentIsTheContinuousSkys) {
   std::vector<std::string> header;
   const std::vector<std::vector<double>> rows = read_csv(dir / "out" / "depth" / "point_in_time.csv", header);
   fs::remove_all(dir);
-  ASSERT_EQ(header, (std::vector<std::string>{"index", "x", "y", "z", "clear_lux"}));
+  ASSERT_EQ(header, (std::vector<std::string>{"index", "x", "y", "z", "clear_lux", "clear_stderr_lux"}));
   ASSERT_EQ(rows.size(), 4u);
 
   const sky::SolarSite site{37.72, -122.22, -8, 0};
@@ -354,14 +362,16 @@ TEST(PointInTimeLeapDay, AWeatherCaseTakesTheLeapDaysRecordOfALeapYearsFile) {
   std::vector<std::string> header;
   const std::vector<std::vector<double>> pit = read_csv(dir / "out" / "floor" / "point_in_time.csv", header);
   fs::remove_all(dir);
-  ASSERT_EQ(header.size(), 6u);
+  ASSERT_EQ(header.size(), 8u);
   EXPECT_EQ(header[4], "leap_noon_lux");
-  EXPECT_EQ(header[5], "leap_clear_lux");
+  EXPECT_EQ(header[5], "leap_noon_stderr_lux");
+  EXPECT_EQ(header[6], "leap_clear_lux");
+  EXPECT_EQ(header[7], "leap_clear_stderr_lux");
   ASSERT_FALSE(pit.empty());
   double weather_sum = 0, clear_sum = 0;
   for (const std::vector<double>& row : pit) {
     weather_sum += row.at(4);
-    clear_sum += row.at(5);
+    clear_sum += row.at(6);
   }
   EXPECT_GT(weather_sum, 0.0);
   EXPECT_GT(clear_sum, 0.0);

@@ -3,23 +3,13 @@
 // test takes tens of seconds), every sensor's observed spread of the daylight factor agrees
 // with the standard error the runs report beside it (daylight_factor.csv, df_stderr_percent).
 //
-// Per sensor s: S_s, the sample standard deviation of DF over the runs, against sigma_s, the
-// mean reported standard error. For normal errors (n - 1) S^2 / sigma^2 ~ chi^2(n - 1), so
-// E[S] = c4(n) sigma (c4 = sqrt(2 / (n - 1)) Gamma(n / 2) / Gamma((n - 1) / 2), 0.987 at
-// n = 20) and the ratio R_s = S_s / (c4 sigma_s) has mean 1. The statistic is the mean of R_s
-// over the sensors. The sensors are NOT independent (neighbouring sensors share photons, and
-// every sensor shares the direct component's sources), so its standard deviation is not
-// sd(R) / sqrt(sensors): by the delta method, Cov(S_s / sigma_s, S_t / sigma_t) =
-// rho_st^2 / (2 (n - 1)) for normal errors of correlation rho_st, so
-//
-//   sd(mean R) = sqrt(mean over s, t of rho_st^2 / (2 (n - 1))),
-//
-// with rho_st^2 estimated by the runs' own sample correlations (biased upward by about
-// 1 / (n - 1) for uncorrelated pairs, so the bound is conservative). The mean ratio must lie
-// within 4 of those standard deviations of 1 (two-sided p = 6e-5 per project), and within
-// the acceptance target 0.8 - 1.25. For the office the same holds for the sensors of the
-// grid's outer rows and columns alone, where the ground bin's estimates are local-quadratic
-// (its own correlations give that subset's tolerance).
+// Per sensor, the ratio of the observed spread to the reported standard error, and the
+// standard deviation of its mean over the sensors from the runs' own correlations
+// (seed_spread.h). The mean ratio must lie within 4 of those standard deviations of 1
+// (two-sided p = 6e-5 per project), and within the acceptance target 0.8 - 1.25. For the
+// office the same holds for the sensors of the grid's outer rows and columns alone, where the
+// ground bin's estimates are local-quadratic (its own correlations give that subset's
+// tolerance).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,6 +21,7 @@
 #include <vector>
 
 #include "fresh_run.h"
+#include "seed_spread.h"
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
@@ -69,12 +60,7 @@ void read_daylight_factor(const fs::path& csv, SensorValues& into) {
   }
 }
 
-double c4(int n) { return std::sqrt(2.0 / (n - 1)) * std::exp(std::lgamma(n / 2.0) - std::lgamma((n - 1) / 2.0)); }
-
-struct Honesty {
-  double mean_ratio = 0, sd_of_mean = 0;
-  std::size_t sensors = 0;
-};
+using Honesty = test::SeedSpread;
 
 /// Run `project` Seeds times (grids' DF only); per run, the sensors of `grids` in order.
 std::vector<SensorValues> seed_runs(project::Project p, const std::string& name, const std::vector<std::string>& grids) {
@@ -108,43 +94,12 @@ std::vector<SensorValues> sensors_of(const std::vector<SensorValues>& runs, std:
 /// Compare the runs' spread with the reported error over the sensors `select` keeps.
 template <class Select>
 Honesty honesty(const std::vector<SensorValues>& runs, const std::string& name, Select select) {
-  const std::size_t m_all = runs[0].df.size();
-  // Sensors with light and a reported error (a sensor in the dark has neither spread nor error).
-  std::vector<std::size_t> used;
-  std::vector<double> mean(m_all, 0.0), sd(m_all, 0.0), sigma(m_all, 0.0);
-  for (std::size_t s = 0; s < m_all; ++s) {
-    for (const SensorValues& r : runs) {
-      mean[s] += r.df[s] / Seeds;
-      sigma[s] += r.stderr_percent[s] / Seeds;
-    }
-    for (const SensorValues& r : runs) sd[s] += (r.df[s] - mean[s]) * (r.df[s] - mean[s]);
-    sd[s] = std::sqrt(sd[s] / (Seeds - 1));
-    if (mean[s] > 0 && sigma[s] > 0 && sd[s] > 0 && select(runs[0].x[s], runs[0].y[s])) used.push_back(s);
+  std::vector<std::vector<double>> df, se;
+  for (const SensorValues& r : runs) {
+    df.push_back(r.df);
+    se.push_back(r.stderr_percent);
   }
-  Honesty h;
-  h.sensors = used.size();
-  if (used.empty()) return h;
-  double worst_low = 1e30, worst_high = 0;
-  for (const std::size_t s : used) {
-    const double r = sd[s] / (c4(Seeds) * sigma[s]);
-    h.mean_ratio += r / double(used.size());
-    worst_low = std::min(worst_low, r);
-    worst_high = std::max(worst_high, r);
-  }
-  double rho2 = 0;
-  for (const std::size_t s : used)
-    for (const std::size_t t : used) {
-      double cov = 0;
-      for (const SensorValues& r : runs) cov += (r.df[s] - mean[s]) * (r.df[t] - mean[t]);
-      const double rho = cov / ((Seeds - 1) * sd[s] * sd[t]);
-      rho2 += rho * rho;
-    }
-  rho2 /= double(used.size()) * double(used.size());
-  h.sd_of_mean = std::sqrt(rho2 / (2.0 * (Seeds - 1)));
-  std::printf("%s: %zu sensors, mean observed / reported standard error %.4f (sd of the mean %.4f, "
-              "mean rho^2 %.3f; per sensor %.3f .. %.3f)\n",
-              name.c_str(), h.sensors, h.mean_ratio, h.sd_of_mean, rho2, worst_low, worst_high);
-  return h;
+  return test::seed_spread(df, se, name, [&](std::size_t s) { return select(runs[0].x[s], runs[0].y[s]); });
 }
 
 /// The selection of honesty() that keeps every sensor.

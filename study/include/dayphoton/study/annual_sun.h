@@ -115,6 +115,11 @@ std::vector<sky::SunRecord> suns_from_matrix(const RadianceMatrix& m);
 /// component per sun instead of three: (0.265 R + 0.670 G + 0.065 B) of the same sums, the
 /// quantity every illuminance is made of (weight 179 as a one-component matrix), in a third of
 /// the memory (what the pipeline keeps for a grid's hourly suns; docs/photon-tracing.md "Scale").
+/// `variance`, if given, receives the Monte Carlo variance of each value's luminance (rows x
+/// suns, per unit disc radiance squared; engine/estimate_variance.h): the k x k strata of the
+/// disc, one ray each, by engine::StratifiedVariance (collapsed strata, second differences
+/// along each row of k). It is zero wherever the disc is wholly seen or wholly hidden (every
+/// ray the same), and counts the penumbra, where a frame or a shading edge crosses the disc.
 enum class DirectSunValues { Rgb, Luminance };
 RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
                                        const std::vector<engine::Material>& materials,
@@ -122,7 +127,7 @@ RadianceMatrix direct_sun_coefficients(const engine::Scene& scene,
                                        const std::vector<sky::SunRecord>& suns,
                                        int samples = SunDirectSamples, std::uint64_t seed = 1,
                                        DirectSunValues values = DirectSunValues::Rgb,
-                                       engine::SensorRange rows = {});
+                                       engine::SensorRange rows = {}, std::vector<double>* variance = nullptr);
 
 /// Photon part (caustic + global) of the sun-bin coefficients at `sensors`: sensors x bins x
 /// RGB, W/m^2 per unit disc radiance (what coefficients_sun.mtx holds). `photons` are the

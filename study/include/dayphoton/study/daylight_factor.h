@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -40,23 +41,46 @@ std::vector<double> daylight_factor_stderr_percent(const std::vector<double>& va
                                                    const RadianceMatrix& sky_vector,
                                                    double horizontal_illuminance_lux);
 
-/// A grid's DF and its variance by part, from coefficients that may carry the direct part
-/// under the DF sky itself (engine::DaylightCoefficients::direct_on_skies; engine/
+/// The Monte Carlo variance, by part, of an illuminance under one sky made from the
+/// coefficients (engine/estimate_variance.h): the daylight factor's (daylight_factor_parts)
+/// and each point-in-time case's sky part (point_in_time_uncertainty.h), in (unit)^2 for a
+/// value in `unit_per_lux` x lux. The sources are independent, so a part summed over the
+/// basis has the variance sum_p (179 L_p)^2 Var(y_sp); a part taken under a continuous sky
+/// (the direct part by its shadow rays, the photon part by the photons' sky ratios) has that
+/// estimate's own variance, which already holds the covariances of one ray or one photon
+/// counted in several patches.
+struct SkyIlluminanceVariance {
+  std::vector<double> direct_variance;  ///< per sensor
+  /// [sensor x bins + bin]: the basis's, by bin (what the accuracy rounds share out over the
+  /// sources), also when the photon part is the continuous sky's.
+  std::vector<double> photon_variance;
+  /// Per sensor: the photon part's under the continuous sky, when the value takes it from
+  /// there; empty otherwise.
+  std::vector<double> photon_sky_variance;
+  /// direct + photon variance per sensor: the photon part's on the sky when there is one,
+  /// else the sum over the bins.
+  std::vector<double> total() const;
+};
+/// `sky_vector`: the sky over the basis (bins x 1, 1 or 3 components; its luminance weights
+/// the bins); `direct_sky`: the index among the coefficients' continuous skies of the sky
+/// whose direct part the value takes (nullopt: the basis's sum); `photon_sky_scale`: the value
+/// takes the photon part of the coefficients' photon_on_sky (the DF sky's) times this factor
+/// (nullopt: the basis's sum). Throws std::invalid_argument on a size mismatch or missing
+/// variances.
+SkyIlluminanceVariance sky_illuminance_variance(const engine::DaylightCoefficients& coefficients,
+                                                const RadianceMatrix& sky_vector, double unit_per_lux,
+                                                std::optional<std::size_t> direct_sky,
+                                                std::optional<double> photon_sky_scale);
+
+/// A grid's DF and its variance by part ((DF points)^2), from coefficients that may carry the
+/// direct part under the DF sky itself (engine::DaylightCoefficients::direct_on_skies; engine/
 /// direct_component.h, "Continuous skies") and the photon part under it
 /// (DaylightCoefficients::photon_on_sky; engine/photon_part_on_sky.h): each part the
 /// continuous sky's where the coefficients carry it, free of the basis's patch-uniform
 /// radiance, and the sky-weighted sum over the basis where they do not.
-struct DaylightFactorParts {
-  std::vector<double> df_percent;       ///< per sensor
-  std::vector<double> direct_variance;  ///< per sensor, (DF points)^2
-  /// [sensor x bins + bin], (DF points)^2: the basis's, by bin (what the accuracy rounds share
-  /// out over the sources), also when the DF's photon part is the continuous sky's.
-  std::vector<double> photon_variance;
-  /// Per sensor, (DF points)^2: the photon part's under the continuous sky, when the DF takes
-  /// it from there; empty otherwise.
-  std::vector<double> photon_sky_variance;
-  /// sqrt(direct + photon variance) per sensor: the photon part's on the sky when there is
-  /// one, else the sum over the bins.
+struct DaylightFactorParts : SkyIlluminanceVariance {
+  std::vector<double> df_percent;  ///< per sensor
+  /// sqrt(total()) per sensor.
   std::vector<double> stderr_percent() const;
 };
 /// `sky_vector`: the DF sky over the basis (bins x 1, 1 or 3 components); `sky_index`: the

@@ -23,9 +23,12 @@ void write_daylight_factor_csv(const std::vector<SensorPoint>& sensors,
                                const std::vector<double>& df_percent, const std::string& path,
                                const std::vector<double>& stderr_percent = {});
 /// point_in_time.csv: index,x,y,z then one `<case>_lux` column per point-in-time case
-/// (`case_names`, in file order), lux with 1 decimal. `table` has one step per case.
+/// (`case_names`, in file order), lux with 1 decimal, each followed by `<case>_stderr_lux`
+/// (its Monte Carlo standard error, lux with 1 decimal; point_in_time_uncertainty.h) when
+/// `stderr_lux` (per case, per sensor) is not empty. `table` has one step per case.
 void write_point_in_time_csv(const std::vector<SensorPoint>& sensors, const std::vector<std::string>& case_names,
-                             const metrics::IlluminanceTable& table, const std::string& path);
+                             const metrics::IlluminanceTable& table, const std::string& path,
+                             const std::vector<std::vector<double>>& stderr_lux = {});
 /// metrics.csv: index,x,y,z then da<X>_percent, cda<X>_percent, damax_percent,
 /// udi_below<L>_percent, udi<L>_<U1>_percent, udi_above<U1>_percent,
 /// udi_supplementary<L>_<X>_percent, udi_autonomous<X>_<U2>_percent, udi_above<U2>_percent,

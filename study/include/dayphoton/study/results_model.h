@@ -191,6 +191,10 @@ struct AnnualSummary {
 struct PointInTimeSummary {
   std::string name, sky;
   double mean_lux = 0, median_lux = 0, min_lux = 0, max_lux = 0, uniformity = 0;
+  /// The Monte Carlo uncertainty over the sensors with light (point_in_time.csv
+  /// `<case>_stderr_lux` / `<case>_lux`): RMS and largest relative standard error, percent;
+  /// absent from files of runs made before it was stated.
+  std::optional<double> rms_relative_stderr_percent, max_relative_stderr_percent;
 
   bool operator==(const PointInTimeSummary& o) const;
 };

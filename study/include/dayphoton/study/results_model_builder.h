@@ -78,7 +78,9 @@ void add_annual(GridResult& grid, const AnnualStudy& study, const AnnualStudySet
 void add_verdict_uncertainty(GridResult& grid, const VerdictUncertainty& u);
 
 /// One point-in-time case's statistics, and its column of point_in_time.csv.
-void add_point_in_time(GridResult& grid, const std::string& name, const std::string& sky, const GridStatistics& st);
+/// `u`: the case's Monte Carlo uncertainty (its relative standard errors).
+void add_point_in_time(GridResult& grid, const std::string& name, const std::string& sky, const GridStatistics& st,
+                       const DaylightFactorUncertainty& u);
 
 /// `folder` relative to `output_dir`, '/'-separated ("" for the output folder itself).
 std::string relative_folder(const std::string& output_dir, const std::string& folder);

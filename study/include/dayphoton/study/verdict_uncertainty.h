@@ -25,6 +25,20 @@ struct SunBinVariance {
   const std::vector<sky::SunRecord>* suns = nullptr;
 };
 
+/// The variance of the luminance of the sun-bin coefficients interpolated to one sun, per unit
+/// disc radiance squared: sum_k w_k^2 Var(y_bin_k), `variance_row` one sensor's row of
+/// SunBinVariance::variance (the bins are traced and estimated independently). Times
+/// (179 disc radiance)^2 it is the indirect sun's variance in lux^2 (the verdicts' hours, the
+/// point-in-time cases).
+inline double interpolated_sun_variance(const engine::SunStencil& stencil, const float* variance_row) {
+  double v = 0;
+  for (int k = 0; k < stencil.count; ++k) {
+    const double w = stencil.weight[static_cast<std::size_t>(k)];
+    v += w * w * variance_row[static_cast<std::size_t>(stencil.index[static_cast<std::size_t>(k)])];
+  }
+  return v;
+}
+
 /// Multiplier of the standard error in the verdict test.
 constexpr double VerdictSigmas = 2.0;
 
