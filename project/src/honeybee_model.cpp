@@ -34,7 +34,6 @@
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/project/length_units.h"
-#include "dayphoton/project/radiance_material.h"
 #include "honeybee_modifiers.h"
 #include "json_locator.h"
 #include "polygon_holes.h"
@@ -626,9 +625,7 @@ class Reader {
           if (g.identifier == id) mod = g;
       }
       MaterialSpec material;
-      // A dielectric's absorption per model unit, per metre (radiance_material.h).
-      if (detail::honeybee_modifier_material(mod, where, m_diag, material))
-        m_out.materials.push_back(radiance_material_in_metres(std::move(material), m_out.metres_per_unit));
+      if (detail::honeybee_modifier_material(mod, where, m_diag, material)) m_out.materials.push_back(std::move(material));
     }
   }
 
