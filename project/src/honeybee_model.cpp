@@ -33,20 +33,14 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/core/polygon.h"
+#include "dayphoton/project/length_units.h"
 #include "honeybee_modifiers.h"
 #include "json_locator.h"
 #include "polygon_holes.h"
 
 namespace dayphoton::project {
 
-double honeybee_metres_per_unit(const std::string& units) {
-  if (units == "Meters") return 1.0;
-  if (units == "Millimeters") return 0.001;
-  if (units == "Centimeters") return 0.01;
-  if (units == "Feet") return 0.3048;    // international foot, exact
-  if (units == "Inches") return 0.0254;  // exact
-  return 0;
-}
+double honeybee_metres_per_unit(const std::string& units) { return metres_per_length_unit(units); }
 
 namespace {
 

@@ -23,6 +23,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/honeybee_model.h"
+#include "dayphoton/project/length_units.h"
 #include "dayphoton/project/path_name.h"
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/engine/material_registry.h"
@@ -649,6 +650,9 @@ class Loader {
     std::string unsupported = "error";
     if (r.has("unsupported")) r.read_choice("unsupported", unsupported);
     spec.skip_unsupported = unsupported == "skip";
+    spec.units_written = r.has("units");
+    if (spec.units_written && r.read_choice("units", spec.units))
+      spec.metres_per_unit = metres_per_length_unit(spec.units);
     r.finish();
     return spec;
   }
@@ -1275,6 +1279,12 @@ class Loader {
         existing_file("points file", p.file_as_written, r.location_of("file"), p.file);
     } else {
       r.take("file");
+    }
+    if (r.has("units")) {
+      if (!has_file)
+        m_reporter.error(r.location_of("units"),
+                         "'units' is the unit of a .pts 'file'; inline 'points' are in metres");
+      if (r.read_choice("units", p.units)) p.metres_per_unit = metres_per_length_unit(p.units);
     }
     if (has_points && has_file)
       m_reporter.error(r.location_of("file"), "points takes 'points' or 'file', not both");

@@ -89,12 +89,17 @@ class ObjParser {
     } else if (keyword == "f" || keyword == "fo") {
       parse_face(tokens, line, line_no);
     } else if (keyword == "usemtl") {
-      if (tokens.size() != 2) {
-        error(line, line_no, tokens.size() < 2 ? end_column(tokens) : tokens[2].column,
-              "usemtl takes exactly one material name");
+      if (tokens.size() < 2) {
+        error(line, line_no, end_column(tokens), "usemtl needs a material name");
         return;
       }
-      m_material = tokens[1].text;
+      // usemtl takes one material_name (Appendix B1; mtllib, by contrast, takes a list of
+      // files). The MTL format says names "cannot include blanks", but exporters write them
+      // ("usemtl Glass Pane"), so the rest of the line, up to a comment, is the one name, as
+      // three.js, MeshLab and trimesh read it; runs of blanks inside it are kept as written.
+      const Token& last = tokens.back();
+      m_material = line.substr(static_cast<std::size_t>(tokens[1].column - 1),
+                               static_cast<std::size_t>(last.column - tokens[1].column) + last.text.size());
       const bool seen = std::any_of(m_mesh.materials.begin(), m_mesh.materials.end(),
                                     [&](const ObjMaterialUse& m) { return m.name == m_material; });
       if (!seen) m_mesh.materials.push_back({m_material, {m_path, line_no, tokens[1].column}});

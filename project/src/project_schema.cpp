@@ -11,6 +11,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/resource_limits.h"
 #include "dayphoton/engine/material_registry.h"
+#include "dayphoton/project/length_units.h"
 
 namespace dayphoton::project {
 
@@ -197,11 +198,12 @@ std::vector<SectionSchema> build_schema() {
       P("radiance", T::SectionList, "RADIANCE scene files read in place, their materials mapped (docs/radiance-import.md)").section("radiance scene"),
       P("honeybee", T::Path, "Honeybee model (HBJSON), relative to the project file: its rooms, apertures (photon ports), doors, shades, modifiers and sensor grids (docs/honeybee-import.md)"),
   }});
-  s.push_back({"radiance scene", "RADIANCE scene description files (.rad) read as oconv reads them; metres, +Y north (docs/radiance-import.md)", {
+  s.push_back({"radiance scene", "RADIANCE scene description files (.rad) read as oconv reads them; metres unless `units` says otherwise, +Y north (docs/radiance-import.md)", {
       P("files", T::NameList, "scene files read in order (a modifier must be defined before it is used), relative to the project file; each must exist").required(),
       P("ports", T::Special, "auto: the surfaces of transmitting materials (glass, dielectric, trans, ...) with exactly one side seeing the sky become photon ports; or a list of modifier names whose surfaces are ports (facing auto)").def("auto"),
       P("outdoor", T::NameList, "modifier names whose surfaces lie outside the building and are outdoor scatterers: sky and sun photons also land on them, and the light they reflect or transmit toward the ports is traced (as `outdoor: true` on a polygon); the others only shade the ports"),
       P("unsupported", T::Choice, "modifiers and primitives dayphoton does not model (patterns, BSDFs, meshes, ...): an error, or left out with a warning").choices({"error", "skip"}).def("error"),
+      P("units", T::Choice, "length unit of the files' numbers (Honeybee's names): coordinates, radii, !xform -t and a dielectric's absorption per unit length are converted to metres; without it the metre is assumed, with a warning when the rooms only make sense in another unit").choices(length_unit_names()).def("Meters"),
   }});
   s.push_back({"room", "a box-shaped room, surfaces facing inward", {
       P("name", T::String, "unique room name").required(),
@@ -403,6 +405,7 @@ std::vector<SectionSchema> build_schema() {
       P("name", T::String, "unique sensor-set name, also its output folder: a path name (see Names that become folders), not `variants` or `operated`").required(),
       P("points", T::Special, "[[x, y, z, nx, ny, nz], ...] in metres"),
       P("file", T::Path, "RADIANCE .pts file (x y z nx ny nz per line), must exist"),
+      P("units", T::Choice, "with `file`: length unit of the file's positions (Honeybee's names), converted to metres").choices(length_unit_names()).def("Meters"),
       P("drop_occluded", T::Boolean, "drop the sensors that lie outside every room, inside a solid or on a surface crossing the work plane (counted in run.log, summary.json and the report) instead of stopping with an error").def("false"),
       P("occupancy", T::Section, "this sensor set's own occupancy schedule (as metrics.occupancy), instead of the project's").section("occupancy"),
   }});

@@ -2,9 +2,13 @@
 // docs/radiance-import.md). The reading and the material mapping are radiance_scene.cpp's
 // and radiance_material.cpp's; this file decides the materials' final indices and the ports.
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
 
 #include "dayphoton/engine/bsdf_material.h"
 #include "dayphoton/project/radiance_scene.h"
+#include "dayphoton/project/scene_unit_check.h"
 #include "geometry_generators.h"
 
 namespace dayphoton::project::detail {
@@ -47,7 +51,30 @@ void generate_radiance(const RadianceSceneSpec& spec, std::size_t project_materi
   }
   RadianceSceneOptions options;
   options.skip_unsupported = spec.skip_unsupported;
+  options.metres_per_unit = spec.metres_per_unit;
+  const std::size_t errors_before = diag.error_count();
   const RadianceScene scene = read_radiance_scene(paths, options, diag, written_at);
+
+  // Without `units` the metre is assumed: say so where the rooms only make sense in another
+  // unit (scene_unit_check.h).
+  if (!spec.units_written && diag.error_count() == errors_before) {
+    std::vector<UnitCheckFacet> facets;
+    facets.reserve(scene.surfaces.size());
+    for (const RadianceSurface& r : scene.surfaces)
+      facets.push_back({r.vertices, transmits(scene.materials[static_cast<std::size_t>(r.material)])});
+    if (const std::optional<SceneUnitSuggestion> u = suggest_scene_units(facets)) {
+      std::string unit = u->units;
+      for (char& c : unit) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      diag.warning(spec.location,
+                   "RADIANCE scene without 'units', read in metres: its rooms are " +
+                       format_number(u->room_height_as_read) + " m from floor to ceiling (" +
+                       format_number(std::round(100 * u->share)) + " % of its lit floor area), " +
+                       format_number(u->room_height_m) + " m in " + unit + ": if the files are in " + unit +
+                       ", set 'units: " + u->units + "' on this entry; if they are in metres, write 'units: "
+                       "Meters' to say so",
+                   read_source_line(spec.location.file, spec.location.line));
+    }
+  }
 
   // Scene index of each imported material: the project's own of that name, an equal one
   // another RADIANCE scene added, or a new one (renamed if the name is taken).

@@ -185,7 +185,8 @@ class Mapper {
     return m_result;
   }
 
-  // dielectric: transmission per unit length (per metre: the scene is read in metres),
+  // dielectric: transmission per unit length (per metre here; radiance_material_in_metres
+  // converts a scene in another unit),
   // refractive index n, Hartmann constant hc (dispersion; not modelled).
   RadianceMaterialResult dielectric() {
     Vec3 per_m;
@@ -338,6 +339,12 @@ class Mapper {
 };
 
 }  // namespace
+
+MaterialSpec radiance_material_in_metres(MaterialSpec material, double metres_per_unit) {
+  if (material.type == MaterialType::Dielectric && metres_per_unit != 1.0)
+    for (int c = 0; c < 3; ++c) material.transmittance[c] = std::pow(material.transmittance[c], 1.0 / metres_per_unit);
+  return material;
+}
 
 RadianceMaterialResult radiance_material(std::string_view type, std::string_view name,
                                          const std::vector<double>& real_args,

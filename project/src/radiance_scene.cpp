@@ -199,7 +199,11 @@ void frame_of(const Vec3& n, Vec3& u, Vec3& v) {
 
 class Reader {
  public:
-  Reader(const RadianceSceneOptions& options, Diagnostics& diag) : m_options(options), m_diag(diag) {}
+  Reader(const RadianceSceneOptions& options, Diagnostics& diag) : m_options(options), m_diag(diag) {
+    // The scene's unit: the transform every file is read under, before any !xform of its own.
+    for (std::size_t k = 0; k < 3; ++k) m_transform.rows[k][static_cast<int>(k)] = options.metres_per_unit;
+    m_transform.scale = options.metres_per_unit;
+  }
 
   void read_file(const std::string& path, const SourceLocation& referenced_from) {
     const std::string problem = input_file_problem(path);
@@ -567,7 +571,9 @@ class Reader {
     }
     if (m.role == Role::Material && !r.bsdf_file.empty() && !bsdf_material(r, type, id, m)) m.role = Role::Invalid;
     if (m.role == Role::Material) {
-      MaterialSpec spec = m.bsdf ? *m.bsdf : r.material;
+      // Lengths in the material (a dielectric's absorption) in metres: the scale the file is
+      // read under, the scene's unit and any !xform -s, as xform itself rewrites them.
+      MaterialSpec spec = m.bsdf ? *m.bsdf : radiance_material_in_metres(r.material, m_transform.scale);
       spec.location = id.location;
       m.material = add_material(spec);
       m.material_modifier = id.text;

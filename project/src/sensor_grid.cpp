@@ -279,6 +279,7 @@ bool generate_points(const PointsSpec& spec, std::uint64_t max_points, Diagnosti
     const std::uint64_t room_left = max_points > out.points.size() ? max_points - out.points.size() : 0;
     std::vector<SensorPoint> from_file = read_pts(path, diag, spec.location, room_left);
     if (diag.error_count() != errors_before) ok = false;
+    for (SensorPoint& p : from_file) p.position = p.position * spec.metres_per_unit;  // `units`
     out.points.insert(out.points.end(), from_file.begin(), from_file.end());
   }
   if (ok && out.points.empty()) {

@@ -2,6 +2,7 @@
 #include "dayphoton/study/placement_check.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -15,6 +16,7 @@
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sensor_placement.h"
+#include "dayphoton/project/length_units.h"
 #include "dayphoton/project/north_rotation.h"
 #include "dayphoton/study/simulation_plan.h"
 
@@ -129,6 +131,47 @@ void check_outline(const engine::Scene& scene, const SensorGrid& grid, const Mod
           " m, see the sky without a port); the work plane counts the light crossing it inside the outline, "
           "and none crosses beyond the walls, so the sensors near that part read low. Draw the outline along "
           "the room's inside faces"));
+}
+
+/// For a point set read from a .pts file with sensors outside the model's bounding box: the
+/// hint to set `units` when the file's positions, scaled from another length unit
+/// (project/length_units.h), would all lie inside it (a file in feet beside a model in metres
+/// puts the sensors 3.3 times as far from the origin); empty otherwise.
+std::string pts_units_hint(const engine::Scene& scene, const SensorGrid& grid, const project::Project& proj) {
+  const project::PointsSpec* spec = nullptr;
+  for (const project::PointsSpec& p : proj.sensors.points)
+    if (p.name == grid.name && !p.file_as_written.empty()) spec = &p;
+  if (!spec || grid.points.empty()) return {};
+  const engine::Bounds3& b = scene.bounds();
+  const double tolerance_m = 1e-6 * (1 + length(b.extent()));
+  auto inside = [&](const Vec3& p) {
+    for (int k = 0; k < 3; ++k)
+      if (p[k] < b.lower[k] - tolerance_m || p[k] > b.upper[k] + tolerance_m) return false;
+    return true;
+  };
+  auto all_inside = [&](double factor) {
+    for (const SensorPoint& s : grid.points)
+      if (!inside(s.position * factor)) return false;
+    return true;
+  };
+  if (all_inside(1.0)) return {};
+  // The unit nearest the one used that fits: shrunk enough, any set fits a model holding the
+  // origin, so the smallest change of scale is the likely one.
+  std::vector<std::string> names = project::length_unit_names();
+  auto change = [&](const std::string& name) {
+    return std::fabs(std::log(project::metres_per_length_unit(name) / spec->metres_per_unit));
+  };
+  std::stable_sort(names.begin(), names.end(),
+                   [&](const std::string& a, const std::string& b) { return change(a) < change(b); });
+  for (const std::string& name : names) {
+    const double factor = project::metres_per_length_unit(name) / spec->metres_per_unit;
+    if (name == spec->units || !all_inside(factor)) continue;
+    std::string unit = name == "Meters" ? std::string("metres") : name;
+    for (char& c : unit) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return "; scaled by " + format_number(factor) + " they all lie inside the model's bounding box: if '" +
+           spec->file_as_written + "' is in " + unit + ", set 'units: " + name + "' on this entry";
+  }
+  return {};
 }
 
 /// The words for a sensor on a surface that crosses its work plane, and why it is refused
@@ -529,6 +572,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
       }
       if (bad.size() > PlacementExamples) m << "; ...";
       m << ")";
+      if (set.outside > 0) m << pts_units_hint(scene, grid, proj);
       set.description = m.str();
       if (grid.drop_occluded) {
         set.dropped = true;

@@ -41,6 +41,18 @@ const char* const UnitCubeTopAndSide =
     "f -2 -1 2 1\n"
     "f 5/1 6/2 2/3\n";
 
+TEST(ObjReader, AMaterialNameWithBlanksIsOneName) {
+  // usemtl takes one name (Wavefront OBJ, Appendix B1); exporters write names with blanks.
+  Diagnostics diag;
+  const ObjMesh mesh = read_obj_from_string(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Glass  Pane 01   # double-glazed\nf 1 2 3\n", "pane.obj", diag);
+  ASSERT_FALSE(diag.has_errors()) << diag.format();
+  ASSERT_EQ(mesh.faces.size(), 1u);
+  EXPECT_EQ(mesh.faces[0].material, "Glass  Pane 01");
+  ASSERT_EQ(mesh.materials.size(), 1u);
+  EXPECT_EQ(mesh.materials[0].location.column, 8);
+}
+
 TEST(ObjReader, ReadsEveryVertexReferenceForm) {
   Diagnostics diag;
   const ObjMesh mesh = read_obj_from_string(UnitCubeTopAndSide, "shelf.obj", diag);
@@ -103,7 +115,7 @@ TEST(ObjReader, MalformedObjGivesLocatedErrors) {
       "bad.obj:11:3: error: vertex coordinate is not finite ('nan')\n",
       "bad.obj:12:7: error: face uses vertex 5, which is invalid\n",
       "bad.obj:13:9: error: expected a texture coordinate index, found 'x'\n",
-      "bad.obj:14:7: error: usemtl takes exactly one material name\n",
+      "bad.obj:14:7: error: usemtl needs a material name\n",
       "bad.obj:15:7: error: face uses vertex 4, which is invalid\n",
   };
   for (const char* e : expected) EXPECT_NE(out.find(e), std::string::npos) << "missing: " << e << "\nin:\n" << out;

@@ -48,6 +48,7 @@
 #include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
+#include "../radiance_in_units.h"
 #include "../temp_folder.h"
 
 namespace dayphoton::study {
@@ -130,6 +131,36 @@ TEST(RadianceImportStudy, PlacementChecksWorkWithoutRooms) {
   const std::vector<std::string> none = placement_errors(no_ports);
   ASSERT_FALSE(none.empty());
   EXPECT_NE(none[0].find("the project has no photon port"), std::string::npos) << none[0];
+}
+
+TEST(RadianceImportStudy, APtsFileInFeetOutsideTheModelNamesTheUnitsKey) {
+  // The office's work plane written in feet, beside the office in metres: sensors up to
+  // 24.6 ft = 24.6 "m" away, outside the room; scaled by 0.3048 they all lie in it.
+  const fs::path dir = test::process_temp_dir() / "pts_in_feet";
+  fs::create_directories(dir);
+  {
+    std::ifstream in(RepositoryCopies / "grid_0p8m.pts");
+    std::ofstream out(dir / "grid_ft.pts");
+    for (double x, y, z, nx, ny, nz; in >> x >> y >> z >> nx >> ny >> nz;)
+      out << x / 0.3048 << ' ' << y / 0.3048 << ' ' << z / 0.3048 << ' ' << nx << ' ' << ny << ' ' << nz << '\n';
+  }
+  const std::string file = (dir / "grid_ft.pts").string();
+  const std::vector<std::string> errors =
+      placement_errors(imported_office_yaml("  points:\n    - {name: desks, file: " + file + "}\n"));
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_NE(errors[0].find("lie outside every room"), std::string::npos) << errors[0];
+  EXPECT_NE(errors[0].find("; scaled by 0.3048 they all lie inside the model's bounding box: if '" + file +
+                           "' is in feet, set 'units: Feet' on this entry"),
+            std::string::npos)
+      << errors[0];
+  // With the key the sensors are the work plane's, all in the room.
+  EXPECT_TRUE(placement_errors(imported_office_yaml("  points:\n    - {name: desks, file: " + file + ", units: Feet}\n"))
+                  .empty());
+  // Inline points outside the room get no such hint (they are in metres by definition).
+  const std::vector<std::string> inline_errors = placement_errors(
+      imported_office_yaml("  points:\n    - {name: desks, points: [[3, 4, 0.8, 0, 0, 1], [9.8, 13.1, 2.6, 0, 0, 1]]}\n"));
+  ASSERT_EQ(inline_errors.size(), 1u);
+  EXPECT_EQ(inline_errors[0].find("scaled by"), std::string::npos) << inline_errors[0];
 }
 
 // ---- the acceptance test ------------------------------------------------------------------
@@ -248,6 +279,86 @@ TEST(RadianceImportStudy, ImportedOfficeGivesTheOfficesDaylightFactorAndDa300) {
   expect_same_within_noise("DF %", o1.df_percent, o2.df_percent, i1.df_percent, i2.df_percent);
   expect_same_within_noise("DA300 points", o1.da300_percent, o2.da300_percent, i1.da300_percent,
                            i2.da300_percent);
+}
+
+// ---- the office in feet ----------------------------------------------------------------------
+
+/// One daylight-factor run: DF, its stated standard error and the sensors' positions.
+struct DfResults {
+  std::vector<double> df_percent, stderr_percent, x, y, z;
+};
+
+DfResults run_df_case(project::Project p, unsigned long long seed, const std::string& label) {
+  p.simulation.seed = seed;
+  p.outputs.images = p.outputs.report = p.outputs.coefficients = false;
+  const fs::path out = test::process_temp_dir() / ("radiance_units_" + label + std::to_string(seed));
+  test::run_in_fresh_folder(p, out);
+  const fs::path csv = out / "workplane" / "daylight_factor.csv";
+  DfResults r{csv_column(csv, "df_percent"), csv_column(csv, "df_stderr_percent"), csv_column(csv, "x"),
+              csv_column(csv, "y"), csv_column(csv, "z")};
+  fs::remove_all(out);
+  return r;
+}
+
+// The office's scene files rewritten in feet (every vertex / 0.3048, as a US exporter writes
+// them) and read with `units: Feet`, against the same files in metres (docs/radiance-import.md,
+// "Units"): the same sensors and port area, and the same daylight factors within the noise, by
+// the statistics of the acceptance test above (two seeds each) and per sensor against the
+// stated standard errors (seed 1 in metres against seed 2 in feet: independent runs, so
+// z = (a - b) / sqrt(se_a^2 + se_b^2) has unit variance if the errors are honest; its RMS over
+// 165 sensors is 1 +- 0.06, bounded at 1.5). Without `units` the room is 3.28 times as large
+// and the sensors sit in its corner: every statistic fails by far. Measured: see the printout.
+TEST(RadianceImportStudy, OfficeInFeetWithUnitsGivesTheOfficesDaylightFactors) {
+  const fs::path dir = test::process_temp_dir() / "office_in_feet";
+  fs::create_directories(dir);
+  {
+    std::ifstream in(scene_folder() / "office.rad");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::ofstream(dir / "office_ft.rad") << test::radiance_in_units(text.str(), 0.3048);
+  }
+  std::string feet_yaml = imported_office_yaml(WorkPlane);
+  const std::string office_rad = (scene_folder() / "office.rad").string();
+  feet_yaml.replace(feet_yaml.find(office_rad), office_rad.size(), (dir / "office_ft.rad").string());
+  const std::string ports = "      ports: auto\n";
+  feet_yaml.replace(feet_yaml.find(ports), ports.size(), ports + "      units: Feet\n");
+  const std::string office_path = std::string(DAYPHOTON_SOURCE_DIR) + "/projects/office/project.yaml";
+  project::Project metric = project::load_project_from_string(imported_office_yaml(WorkPlane), office_path);
+  project::Project feet = project::load_project_from_string(feet_yaml, office_path);
+  ASSERT_EQ(feet.geometry.radiance[0].units, "Feet");
+  const project::Project office = project::load_project(office_path);
+  for (project::Project* p : {&metric, &feet}) {
+    p->simulation = office.simulation;
+    p->simulation.photons_per_bin /= 4;  // as the acceptance test above
+    ASSERT_EQ(p->study, project::StudyKind::DaylightFactor);
+  }
+  {  // the same port, area in m2
+    SceneDescription d = project::build_scene_description(feet);
+    EXPECT_TRUE(d.warnings.empty());
+    const engine::Scene scene = engine::Scene::build(d);
+    ASSERT_EQ(scene.ports().size(), 1u);
+    EXPECT_NEAR(scene.ports()[0].area_m2, 6.0, 1e-9);
+  }
+  const DfResults m1 = run_df_case(metric, 1, "metric"), m2 = run_df_case(metric, 2, "metric");
+  const DfResults f1 = run_df_case(feet, 1, "feet"), f2 = run_df_case(feet, 2, "feet");
+  ASSERT_EQ(m1.df_percent.size(), 165u);
+  ASSERT_EQ(f1.df_percent.size(), 165u);
+  double sum_z2 = 0, same_seed_m = 0;
+  for (std::size_t s = 0; s < 165; ++s) {
+    same_seed_m = std::max(same_seed_m, std::abs(f1.df_percent[s] - m1.df_percent[s]));
+    EXPECT_DOUBLE_EQ(f1.x[s], m1.x[s]);
+    EXPECT_DOUBLE_EQ(f1.y[s], m1.y[s]);
+    EXPECT_DOUBLE_EQ(f1.z[s], m1.z[s]);
+    const double z = (f2.df_percent[s] - m1.df_percent[s]) /
+                     std::sqrt(f2.stderr_percent[s] * f2.stderr_percent[s] + m1.stderr_percent[s] * m1.stderr_percent[s]);
+    sum_z2 += z * z;
+  }
+  const double rms_z = std::sqrt(sum_z2 / 165);
+  std::printf("[ radiance units ] feet against metres, per sensor by the stated errors: RMS z = %.3f; the same seed: "
+              "largest difference %.2g DF %%\n",
+              rms_z, same_seed_m);
+  EXPECT_LT(rms_z, 1.5);
+  expect_same_within_noise("DF % (feet)", m1.df_percent, m2.df_percent, f1.df_percent, f2.df_percent);
 }
 
 }  // namespace

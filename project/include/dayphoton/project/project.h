@@ -351,6 +351,13 @@ struct RadianceSceneSpec {
   /// is an error.
   std::vector<Located<std::string>> outdoor_modifiers;
   bool skip_unsupported = false;  ///< `unsupported: skip` (else `error`)
+  /// `units` (project/length_units.h): the unit of the files' numbers, metres per unit; the
+  /// reader scales every coordinate and length to metres. units_written: the key was given
+  /// (else the metre is assumed, and an implausible scene is warned about:
+  /// scene_unit_check.h).
+  std::string units = "Meters";
+  double metres_per_unit = 1.0;
+  bool units_written = false;
   SourceLocation location;
 };
 
@@ -445,6 +452,10 @@ struct PointsSpec {
   std::vector<SensorPoint> points;  ///< inline points
   std::string file;                 ///< resolved .pts path (x y z nx ny nz per line), or empty
   std::string file_as_written;
+  /// `units` of the .pts file (project/length_units.h), metres per unit: its positions are
+  /// scaled to metres (directions are not lengths). Inline `points` are in metres.
+  std::string units = "Meters";
+  double metres_per_unit = 1.0;
   bool drop_occluded = false;  ///< drop sensors outside every room or inside a solid
   OccupancySpec occupancy;     ///< this set's own schedule, if given (else the project's)
   SourceLocation location;

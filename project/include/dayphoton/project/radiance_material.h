@@ -18,8 +18,9 @@
 //   glass    rtn gtn btn [n]             glass: transmittance Tn per channel from the
 //                                        transmissivity tn (below), refractive index n
 //                                        (default 1.52)
-//   dielectric rtn gtn btn n hc          dielectric: transmission per metre (the scene's
-//                                        unit is taken as the metre), index n; hc ignored
+//   dielectric rtn gtn btn n hc          dielectric: transmission per unit length (per
+//                                        metre; radiance_material_in_metres converts from
+//                                        another unit), index n; hc ignored
 //   BSDF thick file ux uy uz . [0|3|6|9 zeros]   bsdf: a Klems BSDF file (read by the caller:
 //   aBSDF     file ux uy uz . [...]      bsdf_file, bsdf_up), up vector ux uy uz; a non-zero
 //                                        thickness is ignored (warning); aBSDF is used as BSDF
@@ -93,6 +94,14 @@ RadianceMaterialResult radiance_material(std::string_view type, std::string_view
                                          const std::vector<double>& real_args,
                                          const std::vector<std::string>& string_args = {},
                                          std::size_t integer_arg_count = 0);
+
+/// `material`, mapped from a modifier written in a scene whose unit is `metres_per_unit`
+/// metres (a `units` key, or the scale of the `!xform -s` that places it), with its lengths
+/// in metres: a dielectric's transmission per unit length t becomes t^(1 / metres_per_unit)
+/// per metre (over L units, t^L = (t^(1/s))^(L s)), as RADIANCE's xform rewrites a scaled
+/// dielectric (xform.c, m_dielectric: pow(t, 1/scale)). No other mapped material carries a
+/// length.
+MaterialSpec radiance_material_in_metres(MaterialSpec material, double metres_per_unit);
 
 /// Normal-incidence transmittance Tn of a RADIANCE `glass` pane of transmissivity `tn` in
 /// [0, 1] and refractive index `n` >= 1 (formula above).

@@ -32,7 +32,8 @@
 // undefined modifiers. With skip_unsupported, modifiers and primitives that are valid
 // RADIANCE but not modelled (Unsupported) are skipped with a warning instead; syntax errors
 // and bad values stay errors.
-// Units: the scene's unit is taken as the metre.
+// Units: the scene's unit is the metre unless RadianceSceneOptions::metres_per_unit says
+// otherwise (the project's `units` key); the result is in metres either way.
 #pragma once
 
 #include <string>
@@ -61,6 +62,10 @@ constexpr int RadianceMaxWarnings = 20;
 
 struct RadianceSceneOptions {
   bool skip_unsupported = false;  ///< `unsupported: skip`
+  /// Metres per unit of the scene (`units`, project/length_units.h): every coordinate, radius
+  /// and `!xform -t` is scaled by it, and lengths in materials are converted
+  /// (radiance_material_in_metres), as if the files were read under `!xform -s` of it.
+  double metres_per_unit = 1.0;
 };
 
 /// One planar facet read from the scene.
