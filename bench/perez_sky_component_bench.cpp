@@ -70,6 +70,7 @@
 #include "dayphoton/weather/epw_reader.h"
 #include "dayphoton/weather/site_clock.h"
 #include "df_only_run.h"
+#include "error_stats.h"
 #include "perez_hour.h"
 
 using namespace dayphoton;
@@ -201,23 +202,15 @@ std::vector<std::pair<std::string, std::vector<std::size_t>>> sensor_classes(con
   return out;
 }
 
-/// Relative errors (%): mean, RMS, worst (largest magnitude, signed).
-struct ErrorStats {
-  double sum = 0, sum2 = 0, worst = 0;
-  std::size_t n = 0;
-  void add(double e) {
-    sum += e;
-    sum2 += e * e;
-    if (std::fabs(e) > std::fabs(worst)) worst = e;
-    ++n;
-  }
-  std::string text() const {
-    char b[96];
-    if (n == 0) return "      -        -        -";
-    std::snprintf(b, sizeof b, "%+7.2f %7.2f %+8.2f", sum / double(n), std::sqrt(sum2 / double(n)), worst);
-    return b;
-  }
-};
+using bench::ErrorStats;
+
+/// Relative errors (%): mean, RMS, worst (largest magnitude, signed), as a table's columns.
+std::string text(const ErrorStats& e) {
+  char b[96];
+  if (e.n == 0) return "      -        -        -";
+  std::snprintf(b, sizeof b, "%+7.2f %7.2f %+8.2f", e.mean(), e.rms(), e.worst);
+  return b;
+}
 
 /// Hour indices of the given clearness bins, n of them evenly spread over the daytime records.
 std::vector<std::size_t> pick_hours(const Climate& c, int bin_lo, int bin_hi, int n) {
@@ -502,16 +495,13 @@ void hours_mode(const std::vector<Climate>& climates, int per_class, const fs::p
         if (black && x >= EstimatorCount) continue;
         const auto& st = stats[label][std::size_t(x)];
         char rms[64];
-        auto class_rms = [&](std::size_t k) {
-          return std::sqrt(st[k].sum2 / double(std::max<std::size_t>(1, st[k].n)));
-        };
-        std::snprintf(rms, sizeof rms, "%6.2f %6.2f %6.2f", class_rms(0), class_rms(1), class_rms(2));
+        std::snprintf(rms, sizeof rms, "%6.2f %6.2f %6.2f", st[0].rms(), st[1].rms(), st[2].rms());
         std::printf("  %-16s %-34s %s | %s\n", label.c_str(),
                     x == EstimatorCount       ? "patch-uniform, share of the total"
                     : x == EstimatorCount + 1 ? "the study, share of the total"
                                               : estimator_name(x),
                     rms,
-                    st[3].text().c_str());
+                    text(st[3]).c_str());
       }
   }
 }
@@ -593,7 +583,7 @@ void year_mode(const std::vector<Climate>& climates, int samples, const fs::path
                     "      DA300 (table - reference) mean %+.2f, worst %+.2f points, DA300 >= 50 %% verdicts moved: "
                     "%zu; UDI 300-3000 mean %+.2f, worst %+.2f points, >= 50 %% verdicts moved: %zu; mean occupied "
                     "lux %+.2f %%\n",
-                    k == 0 ? "patch-uniform" : "the study", error[k].text().c_str(),
+                    k == 0 ? "patch-uniform" : "the study", text(error[k]).c_str(),
                     100.0 * double(over_2[k]) / double(std::max<std::size_t>(1, error[k].n)),
                     100.0 * double(over_5[k]) / double(std::max<std::size_t>(1, error[k].n)), c.steps[wt].month,
                     c.steps[wt].day, c.steps[wt].hour_lst, std::asin(c.sun[wt]->z) * 180.0 / Pi, ws,

@@ -16,6 +16,7 @@
 #include "dayphoton/study/results_model.h"
 #include "dayphoton/study/study_runner.h"
 #include "../temp_folder.h"
+#include "run_with_report.h"
 
 using namespace dayphoton;
 namespace fs = std::filesystem;
@@ -54,12 +55,7 @@ TEST(ReportFromResults, NeedsNothingButTheResultsFolder) {
   std::ofstream(root / "project" / "project.yaml") << Project;
   const project::Project project = project::load_project((root / "project" / "project.yaml").string());
   const fs::path out = root / "run";
-  study::RunSettings settings;
-  settings.output_dir = out.string();
-  settings.write_views = report::write_views;
-  std::ostringstream quiet;
-  study::Progress progress(quiet, study::ProgressStyle::Quiet);
-  study::run_study(project, settings, progress);
+  test::run_with_report(project, out);
   ASSERT_TRUE(fs::exists(out / "results.json"));
   ASSERT_TRUE(fs::exists(out / "report.html"));
   // summary.json lists results.json among the outputs.
@@ -106,12 +102,7 @@ TEST(ReportFromResults, PointInTimeCasesCarryTheirUncertainty) {
       << Project << "points_in_time: [{name: noon, date: 03-21, time: \"12:00\", sky: cie_overcast}]\n";
   const project::Project project = project::load_project((root / "project" / "project.yaml").string());
   const fs::path out = root / "run";
-  study::RunSettings settings;
-  settings.output_dir = out.string();
-  settings.write_views = report::write_views;
-  std::ostringstream quiet;
-  study::Progress progress(quiet, study::ProgressStyle::Quiet);
-  study::run_study(project, settings, progress);
+  test::run_with_report(project, out);
   const study::ResultsModel model = study::read_results_model(out.string());
   const study::GridResult& grid = model.cases.at(0).grids.at(0);
   ASSERT_EQ(grid.points_in_time.size(), 1u);

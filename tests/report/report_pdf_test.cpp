@@ -21,6 +21,7 @@
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
 #include "../temp_folder.h"
+#include "run_with_report.h"
 
 using namespace dayphoton;
 namespace fs = std::filesystem;
@@ -78,12 +79,7 @@ TEST(ReportPdf, ChromiumPrintsTheReportOnSeveralPages) {
   std::ofstream(root / "project.yaml") << Project;
   const project::Project project = project::load_project((root / "project.yaml").string());
   const fs::path out = root / "run";
-  study::RunSettings settings;
-  settings.output_dir = out.string();
-  settings.write_views = report::write_views;
-  std::ostringstream quiet;
-  study::Progress progress(quiet, study::ProgressStyle::Quiet);
-  study::run_study(project, settings, progress);
+  test::run_with_report(project, out);
   ASSERT_TRUE(fs::exists(out / "report.html"));
 
   const std::string pdf = report::print_pdf((out / "report.html").string(), (out / "report.pdf").string());

@@ -8,15 +8,14 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/project/project.h"
-#include "dayphoton/study/progress.h"
-#include "dayphoton/study/study_runner.h"
+#include "fresh_run.h"
 #include "../temp_folder.h"
 
 namespace dayphoton::study {
@@ -24,8 +23,8 @@ namespace {
 
 using Openings = metrics::MetricSettings::Openings;
 
-/// A 6 x 6 x 3 m room with `openings` (YAML lines under the room) and `systems`.
-DaylightOpenings openings_of(const std::string& room_openings, const std::string& systems = "") {
+/// A 6 x 6 x 3 m room with `openings` (YAML lines under the room) and `systems`, and a grid.
+SceneDescription hall_description(const std::string& room_openings, const std::string& systems = "") {
   const std::string text =
       "site: {latitude: 50, longitude: 8.5, time_zone: 1}\n"
       "study: daylight_factor\n"
@@ -42,8 +41,17 @@ DaylightOpenings openings_of(const std::string& room_openings, const std::string
       "  grids: [{name: plane, room: hall, height: 0.85, spacing: 1}]\n";
   const project::Project project =
       project::load_project_from_string(text, std::string(DAYPHOTON_SOURCE_DIR) + "/projects/roof_light/test.yaml");
-  const SceneDescription description = project::build_scene_description(project);
-  return daylight_openings(engine::Scene::build(description));
+  return project::build_scene_description(project);
+}
+
+DaylightOpenings openings_of(const std::string& room_openings, const std::string& systems = "") {
+  return daylight_openings(engine::Scene::build(hall_description(room_openings, systems)));
+}
+
+std::vector<engine::Material> materials_of(const SceneDescription& description) {
+  std::vector<engine::Material> materials;
+  for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
+  return materials;
 }
 
 const std::string Window = "      windows: [{name: south, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]\n";
@@ -106,10 +114,8 @@ ThreeRooms three_rooms(const std::string& mixed_window_width = "3") {
   ThreeRooms out;
   out.description = project::build_scene_description(project);
   const engine::Scene scene = engine::Scene::build(out.description);
-  std::vector<engine::Material> materials;
-  for (const MaterialSpec& m : out.description.materials) materials.push_back(engine::Material::from_spec(m));
   out.model = daylight_openings(scene);
-  out.per_grid = grid_daylight_openings(scene, materials, out.description.grids, out.model);
+  out.per_grid = grid_daylight_openings(scene, materials_of(out.description), out.description.grids, out.model);
   return out;
 }
 
@@ -154,27 +160,11 @@ TEST(DaylightOpenings, AGlimpseOfTheOtherKindDoesNotChangeTheRule) {
 
 // One kind in the model: every set takes it, with no view traced and no message.
 TEST(DaylightOpenings, OneKindInTheModelDecidesEverySet) {
-  const std::string text =
-      "site: {latitude: 50, longitude: 8.5, time_zone: 1}\n"
-      "study: daylight_factor\n"
-      "materials:\n"
-      "  grey: {type: lambertian, reflectance: 0.5}\n"
-      "  glass: {type: glass, transmittance: 0.7}\n"
-      "geometry:\n"
-      "  rooms:\n"
-      "    - name: hall\n"
-      "      size: [6, 6, 3]\n"
-      "      materials: {floor: grey, ceiling: grey, walls: grey}\n" + RoofLight +
-      "sensors:\n"
-      "  grids: [{name: plane, room: hall, height: 0.85, spacing: 1}]\n";
-  const project::Project project =
-      project::load_project_from_string(text, std::string(DAYPHOTON_SOURCE_DIR) + "/projects/roof_light/test.yaml");
-  const SceneDescription description = project::build_scene_description(project);
+  const SceneDescription description = hall_description(RoofLight);
   const engine::Scene scene = engine::Scene::build(description);
-  std::vector<engine::Material> materials;
-  for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
   const DaylightOpenings model = daylight_openings(scene);
-  const std::vector<GridOpenings> per_grid = grid_daylight_openings(scene, materials, description.grids, model);
+  const std::vector<GridOpenings> per_grid =
+      grid_daylight_openings(scene, materials_of(description), description.grids, model);
   ASSERT_EQ(per_grid.size(), 1u);
   EXPECT_EQ(per_grid[0].kind, Openings::Horizontal);
   EXPECT_FALSE(per_grid[0].by_view);
@@ -294,14 +284,7 @@ TEST(DaylightOpenings, ARunAssessesEachSensorSetByItsOwnOpenings) {
          "    - {name: hall_plane, room: hall, height: 0.8, spacing: 1, inset: 0.5}\n"
          "simulation: {basis: tregenza, photons_per_bin: 200, bandwidth: 20, seed: 3}\n"
          "outputs: {folder: results, images: false, report: false, matrix_format: float}\n";
-  project::LoadOptions options;
-  options.output_folder_overridden = true;
-  const project::Project project = project::load_project((dir / "project.yaml").string(), options);
-  RunSettings settings;
-  settings.output_dir = (dir / "out").string();
-  std::ostringstream quiet;
-  Progress progress(quiet, ProgressStyle::Quiet);
-  run_study(project, settings, progress);
+  test::run_file_in_fresh_folder(dir / "project.yaml", dir / "out");
   const nlohmann::json summary = nlohmann::json::parse(std::ifstream(dir / "out" / "summary.json"));
   std::map<std::string, nlohmann::json> en17037;
   for (const nlohmann::json& g : summary.at("grids")) en17037[g.at("name")] = g.at("annual").at("en17037");

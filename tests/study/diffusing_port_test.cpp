@@ -32,6 +32,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
+#include "fresh_run.h"
 #include "../temp_folder.h"
 
 namespace dayphoton::study {
@@ -100,14 +101,7 @@ void expect_closed_form(const std::string& simulation_extra) {
       "               [0.5, 2, 1.5, 1, 0, 0]]\n"
       "simulation: {photons_per_bin: 4000, seed: 7, ground_reflectance: 0" + simulation_extra + "}\n"
       "outputs: {images: false, report: false}\n";
-  project::LoadOptions options;
-  options.output_folder_overridden = true;
-  const project::Project project = project::load_project((dir / "project.yaml").string(), options);
-  RunSettings settings;
-  settings.output_dir = (dir / "out").string();
-  std::ostringstream quiet;
-  Progress progress(quiet, ProgressStyle::Quiet);
-  run_study(project, settings, progress);
+  test::run_file_in_fresh_folder(dir / "project.yaml", dir / "out");
   const std::vector<std::vector<double>> points = read_csv(dir / "out" / "points" / "daylight_factor.csv");
   const std::vector<std::vector<double>> plane = read_csv(dir / "out" / "plane" / "daylight_factor.csv");
   fs::remove_all(dir);

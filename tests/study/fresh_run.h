@@ -23,4 +23,13 @@ inline study::RunReport run_in_fresh_folder(const project::Project& project, con
   return study::run_study(project, settings, progress);
 }
 
+/// The project file `project_file` run as run_in_fresh_folder runs a project, into `out`
+/// instead of its own `outputs.folder` (as `dayphoton run -o` does).
+inline study::RunReport run_file_in_fresh_folder(const std::filesystem::path& project_file,
+                                                 const std::filesystem::path& out) {
+  project::LoadOptions options;
+  options.output_folder_overridden = true;
+  return run_in_fresh_folder(project::load_project(project_file.string(), options), out);
+}
+
 }  // namespace dayphoton::test

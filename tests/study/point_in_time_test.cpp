@@ -25,6 +25,7 @@
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/run_timings.h"
 #include "dayphoton/study/study_runner.h"
+#include "fresh_run.h"
 #include "../temp_folder.h"
 
 namespace dayphoton::study {
@@ -80,14 +81,7 @@ void run_project(const fs::path& dir, const std::string& yaml) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "project.yaml") << yaml;
-  project::LoadOptions options;
-  options.output_folder_overridden = true;
-  const project::Project project = project::load_project((dir / "project.yaml").string(), options);
-  RunSettings settings;
-  settings.output_dir = (dir / "out").string();
-  std::ostringstream quiet;
-  Progress progress(quiet, ProgressStyle::Quiet);
-  run_study(project, settings, progress);
+  test::run_file_in_fresh_folder(dir / "project.yaml", dir / "out");
 }
 
 class PointInTime : public ::testing::Test {

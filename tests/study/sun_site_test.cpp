@@ -40,6 +40,7 @@
 #include "dayphoton/study/study_runner.h"
 #include "dayphoton/weather/site_clock.h"
 #include "../temp_folder.h"
+#include "../report/run_with_report.h"
 
 namespace dayphoton::study {
 namespace {
@@ -104,12 +105,7 @@ void run_into(const project::Project& p, const fs::path& folder, const fs::path&
       if ((!sky || copy_sky) && e.path().extension() == ".bin") fs::copy_file(e.path(), cache / name);
     }
   }
-  RunSettings settings;
-  settings.output_dir = folder.string();
-  settings.write_views = report::write_views;  // report.html, whose sentences are checked below
-  std::ostringstream quiet;
-  Progress progress(quiet, ProgressStyle::Quiet);
-  run_study(p, settings, progress);
+  test::run_with_report(p, folder);  // report.html, whose sentences are checked below
 }
 
 /// Text as report.html writes it (its five escaped characters; the sentences have only ').

@@ -36,6 +36,7 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/study_runner.h"
+#include "fresh_run.h"
 #include "../temp_folder.h"
 
 namespace dayphoton::study {
@@ -257,14 +258,7 @@ Outputs run(ProjectText make, const std::string& name, double x0, double y0, con
                      ", size: [7, 9, 4]}, ");
   }
   std::ofstream(dir / "project.yaml") << yaml;
-  project::LoadOptions options;
-  options.output_folder_overridden = true;
-  const project::Project project = project::load_project((dir / "project.yaml").string(), options);
-  RunSettings settings;
-  settings.output_dir = (dir / "out").string();
-  std::ostringstream quiet;
-  Progress progress(quiet, ProgressStyle::Quiet);
-  run_study(project, settings, progress);
+  test::run_file_in_fresh_folder(dir / "project.yaml", dir / "out");
   Outputs o{text_of(dir / "out" / "depth" / "sensors.csv"), text_of(dir / "out" / "depth" / "daylight_factor.csv"),
             nlohmann::json::parse(text_of(dir / "out" / "results.json"))};
   fs::remove_all(dir);
