@@ -99,8 +99,7 @@ study::AnnualStudySettings annual_settings(const AnnualOptions& o, const std::st
       const study::DaylightOpenings model = study::daylight_openings(scene);
       openings = model.kind == metrics::MetricSettings::Openings::Both ? metrics::MetricSettings::Openings::VerticalOrInclined
                                                                        : model.kind;
-      std::vector<engine::Material> materials;
-      for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
+      const std::vector<engine::Material> materials = engine::materials_of(description.materials);
       for (const SensorGrid& g : description.grids)
         if (g.name == grid.filename().string())
           openings = study::grid_daylight_openings(scene, materials, {g}, model).front().kind;

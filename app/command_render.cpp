@@ -75,8 +75,7 @@ int run_render(const RenderOptions& options, std::ostream& out) {
       options.project_path, {/*output_folder_overridden=*/true});  // writes -o, not outputs.folder
   const SceneDescription description = project::build_scene_description(project);
   const engine::Scene scene = engine::Scene::build(description);
-  std::vector<engine::Material> materials;
-  for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
+  const std::vector<engine::Material> materials = engine::materials_of(description.materials);
   const sky::PatchBasis basis = study::basis_of(project.simulation);
   study::RenderSkySettings sky_settings;
   sky_settings.spec = options.sky;

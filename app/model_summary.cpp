@@ -233,8 +233,7 @@ ModelSummary summarize_model(const project::Project& proj) {
     s.interior_windows.push_back({name, w.adjoining_room, area_of(name)});
   }
   s.triangle_count = scene.triangle_count();
-  std::vector<engine::Material> models;
-  for (const MaterialSpec& m : s.scene.materials) models.push_back(engine::Material::from_spec(m));
+  const std::vector<engine::Material> models = engine::materials_of(s.scene.materials);
   Diagnostics diag;
   const project::Simulation& sim = proj.simulation;
   for (const SensorGrid& grid : s.scene.grids) {

@@ -60,6 +60,13 @@ Vec3 diffuse_reflectance(const MaterialSpec& spec) {
   }
 }
 
+std::vector<Material> materials_of(const std::vector<MaterialSpec>& specs) {
+  std::vector<Material> materials;
+  materials.reserve(specs.size());
+  for (const MaterialSpec& m : specs) materials.push_back(Material::from_spec(m));
+  return materials;
+}
+
 Vec3 diffuse_transmittance(const MaterialSpec& spec) {
   if (spec.type != MaterialType::Translucent) return {0, 0, 0};
   return spec.reflectance * ((1.0 - spec.specularity) * spec.transmissivity * (1.0 - spec.transmitted_specular));

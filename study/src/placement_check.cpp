@@ -629,10 +629,8 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
   check_exterior_geometry(scene, out.warnings);
   check_gather_outside_region(scene, grids, near_cut_rows, proj, out.warnings);
   if (proj.study == project::StudyKind::Annual && proj.outputs.metrics) {
-    std::vector<engine::Material> materials;
-    for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
     const DaylightOpenings model = daylight_openings(scene);
-    out.openings = grid_daylight_openings(scene, materials, grids, model);
+    out.openings = grid_daylight_openings(scene, engine::materials_of(description.materials), grids, model);
     daylight_openings_diagnostics(grids, model, out.openings, out.warnings, out.notes);
   }
   if (grids.empty())

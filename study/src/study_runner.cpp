@@ -144,9 +144,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   ctx.openings.clear();
   for (std::size_t g = 0; g < placement.openings.size() && g < description.grids.size(); ++g)
     ctx.openings[description.grids[g].name] = placement.openings[g].kind;
-  std::vector<engine::Material> materials;
-  for (const MaterialSpec& m : description.materials)
-    materials.push_back(engine::Material::from_spec(m));
+  const std::vector<engine::Material> materials = engine::materials_of(description.materials);
   const SimulationPlan& plan = ctx.plan;
   const sky::PatchBasis& basis = plan.basis;
   set_plan_geometry(*ctx.results, description);  // in world coordinates

@@ -62,6 +62,7 @@
 #include "dayphoton/study/study_runner.h"
 #include "fresh_run.h"
 #include "../temp_folder.h"
+#include "numeric_csv.h"
 
 namespace dayphoton::study {
 namespace {
@@ -455,19 +456,7 @@ std::string project_text(const CaseSpec& c, int seed) {
   return y.str();
 }
 
-std::vector<std::vector<double>> read_csv(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::stringstream s(line);
-    std::vector<double> row;
-    for (std::string cell; std::getline(s, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
-}
+using test::read_csv;
 
 struct RunOutput {
   std::vector<std::vector<double>> df, pit;  // rows: index, x, y, z, values...

@@ -23,16 +23,20 @@ namespace {
 
 using Openings = metrics::MetricSettings::Openings;
 
-/// A 6 x 6 x 3 m room with `openings` (YAML lines under the room) and `systems`, and a grid.
-SceneDescription hall_description(const std::string& room_openings, const std::string& systems = "") {
-  const std::string text =
+/// The site, materials and the start of the rooms list of the models below.
+const std::string ModelHead =
       "site: {latitude: 50, longitude: 8.5, time_zone: 1}\n"
       "study: daylight_factor\n"
       "materials:\n"
       "  grey: {type: lambertian, reflectance: 0.5}\n"
       "  glass: {type: glass, transmittance: 0.7}\n"
       "geometry:\n"
-      "  rooms:\n"
+      "  rooms:\n";
+
+/// A 6 x 6 x 3 m room with `openings` (YAML lines under the room) and `systems`, and a grid.
+SceneDescription hall_description(const std::string& room_openings, const std::string& systems = "") {
+  const std::string text =
+      ModelHead +
       "    - name: hall\n"
       "      size: [6, 6, 3]\n"
       "      materials: {floor: grey, ceiling: grey, walls: grey}\n" +
@@ -46,12 +50,6 @@ SceneDescription hall_description(const std::string& room_openings, const std::s
 
 DaylightOpenings openings_of(const std::string& room_openings, const std::string& systems = "") {
   return daylight_openings(engine::Scene::build(hall_description(room_openings, systems)));
-}
-
-std::vector<engine::Material> materials_of(const SceneDescription& description) {
-  std::vector<engine::Material> materials;
-  for (const MaterialSpec& m : description.materials) materials.push_back(engine::Material::from_spec(m));
-  return materials;
 }
 
 const std::string Window = "      windows: [{name: south, wall: south, width: 3, height: 1.5, sill: 0.9, material: glass}]\n";
@@ -83,13 +81,7 @@ struct ThreeRooms {
 
 ThreeRooms three_rooms(const std::string& mixed_window_width = "3") {
   const std::string text =
-      "site: {latitude: 50, longitude: 8.5, time_zone: 1}\n"
-      "study: daylight_factor\n"
-      "materials:\n"
-      "  grey: {type: lambertian, reflectance: 0.5}\n"
-      "  glass: {type: glass, transmittance: 0.7}\n"
-      "geometry:\n"
-      "  rooms:\n"
+      ModelHead +
       "    - name: side\n"
       "      size: [6, 6, 3]\n"
       "      materials: {floor: grey, ceiling: grey, walls: grey}\n" + Window +
@@ -115,7 +107,7 @@ ThreeRooms three_rooms(const std::string& mixed_window_width = "3") {
   out.description = project::build_scene_description(project);
   const engine::Scene scene = engine::Scene::build(out.description);
   out.model = daylight_openings(scene);
-  out.per_grid = grid_daylight_openings(scene, materials_of(out.description), out.description.grids, out.model);
+  out.per_grid = grid_daylight_openings(scene, engine::materials_of(out.description.materials), out.description.grids, out.model);
   return out;
 }
 
@@ -164,7 +156,7 @@ TEST(DaylightOpenings, OneKindInTheModelDecidesEverySet) {
   const engine::Scene scene = engine::Scene::build(description);
   const DaylightOpenings model = daylight_openings(scene);
   const std::vector<GridOpenings> per_grid =
-      grid_daylight_openings(scene, materials_of(description), description.grids, model);
+      grid_daylight_openings(scene, engine::materials_of(description.materials), description.grids, model);
   ASSERT_EQ(per_grid.size(), 1u);
   EXPECT_EQ(per_grid[0].kind, Openings::Horizontal);
   EXPECT_FALSE(per_grid[0].by_view);

@@ -34,6 +34,7 @@
 #include "dayphoton/study/study_runner.h"
 #include "fresh_run.h"
 #include "../temp_folder.h"
+#include "numeric_csv.h"
 
 namespace dayphoton::study {
 namespace {
@@ -59,19 +60,7 @@ double pane_projected_solid_angle(const Vec3& x, const Vec3& n) {
   return 0.5 * std::fabs(sum);
 }
 
-std::vector<std::vector<double>> read_csv(const fs::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::stringstream s(line);
-    std::vector<double> row;
-    for (std::string cell; std::getline(s, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
-}
+using test::read_csv;
 
 /// Runs the black room with the opal roof light (`simulation_extra` appended to the
 /// simulation map) and checks the points, and the plane at the same points, against the

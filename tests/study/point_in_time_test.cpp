@@ -27,6 +27,7 @@
 #include "dayphoton/study/study_runner.h"
 #include "fresh_run.h"
 #include "../temp_folder.h"
+#include "numeric_csv.h"
 
 namespace dayphoton::study {
 namespace {
@@ -58,23 +59,7 @@ const std::string Project =
     "  - {name: clear, date: 12-21, time: \"11:30\", sky: cie, cie_type: 12, diffuse_horizontal_illuminance: 5000,\n"
     "     direct_normal_illuminance: 80000}\n";
 
-/// The rows of a CSV file as name -> values, numeric columns only.
-std::vector<std::vector<double>> read_csv(const fs::path& path, std::vector<std::string>& header) {
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  std::stringstream h(line);
-  header.clear();
-  for (std::string cell; std::getline(h, cell, ',');) header.push_back(cell);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::stringstream s(line);
-    std::vector<double> row;
-    for (std::string cell; std::getline(s, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
-}
+using test::read_csv;
 
 /// Writes `yaml` as dir/project.yaml and runs it into dir/out (a fresh dir).
 void run_project(const fs::path& dir, const std::string& yaml) {

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 #include <optional>
 
 #include "dayphoton/core/scene_description.h"
@@ -109,5 +110,8 @@ Vec3 diffuse_transmittance(const MaterialSpec& spec);
 /// transmittance `normal_transmittance` for refractive index 1.52: RADIANCE's documented
 /// conversion tn = (sqrt(0.8402528435 + 0.0072522239 Tn^2) - 0.9166530661) / 0.0036261119 / Tn.
 double radiance_glass_transmissivity(double normal_transmittance);
+
+/// The engine material of every spec, in order (a scene's materials by index).
+std::vector<Material> materials_of(const std::vector<MaterialSpec>& specs);
 
 }  // namespace dayphoton::engine
