@@ -228,6 +228,13 @@ ModelSummary summarize_model(const project::Project& proj) {
                                " sensor grids; units " + m.units + ", tolerance " + format_number(m.tolerance_m) + " m");
     s.honeybee_lines.insert(s.honeybee_lines.end(), m.notes.begin(), m.notes.end());
   }
+  for (const project::RadianceSceneSpec& r : proj.geometry.radiance) {
+    std::string files;
+    for (const std::string& f : r.files_as_written) files += (files.empty() ? "" : " ") + f;
+    s.radiance_lines.push_back(files + ": units " + r.units + " (" + format_number(r.metres_per_unit) + " m per unit" +
+                               (r.units_written ? ")" : ", assumed: the entry has no `units`)") +
+                               (r.ports_auto ? ", ports auto" : ""));
+  }
   for (const project::InteriorWindow& w : project::interior_windows(proj.geometry)) {
     const std::string name = w.room + "." + w.window;
     s.interior_windows.push_back({name, w.adjoining_room, area_of(name)});
@@ -365,6 +372,10 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
 
   for (std::size_t i = 0; i < s.honeybee_lines.size(); ++i)
     out << (i == 0 ? "honeybee " : "  ") << s.honeybee_lines[i] << '\n';
+  if (!s.radiance_lines.empty()) {
+    out << "radiance " << s.radiance_lines.size() << (s.radiance_lines.size() == 1 ? " scene" : " scenes") << '\n';
+    for (const std::string& line : s.radiance_lines) out << "  " << line << '\n';
+  }
 
   out << "sensors  " << s.grids.size() << (s.grids.size() == 1 ? " grid" : " grids") << '\n';
   for (const GridInfo& g : s.grids) {

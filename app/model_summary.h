@@ -86,6 +86,9 @@ struct ModelSummary {
   /// The imported Honeybee model (docs/honeybee-import.md): what it brought, then its notes
   /// (faces left out: the far sides of shared walls, air boundaries).
   std::vector<std::string> honeybee_lines;
+  /// One line per `geometry.radiance` entry: its files and the unit their numbers are read in
+  /// (docs/radiance-import.md, "Units"), said to be assumed when the entry has no `units`.
+  std::vector<std::string> radiance_lines;
   std::vector<GridInfo> grids;
   std::vector<std::string> placement_lines;  ///< sensor sets that dropped sensors (drop_occluded)
   SceneDescription scene;

@@ -104,8 +104,8 @@ int main(int argc, char** argv) {
   // The records with their sky ratio codes as 0: the digest predates the codes (photon.h), so
   // it pins the positions, fluxes, sources, normals and classes as they were recorded.
   std::uint64_t digest = 14695981039346656037ull;
-  auto digest_records = [&digest](const std::vector<engine::Photon>& photons) {
-    for (engine::Photon p : photons) {
+  auto digest_records = [&digest](const std::vector<engine::Photon>& records) {
+    for (engine::Photon p : records) {
       p.sky_ratio_code = 0;
       digest = fnv1a(digest, &p, sizeof p);
     }

@@ -280,6 +280,7 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
   auto data = std::make_shared<KlemsBsdfData>();
   data->file = shown_as;
   data->content_sha256 = sha256_hex(r.text());
+  data->device_type = trimmed(child(child(layer, "Material"), "DeviceType").child_value());
   const char* const direction_names[] = {"Transmission Front", "Transmission Back", "Reflection Front",
                                          "Reflection Back"};
   std::vector<double>* matrices[] = {&data->transmission_front, &data->transmission_back, &data->reflection_front,

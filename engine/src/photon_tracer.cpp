@@ -75,7 +75,7 @@ class BlockSink final : public PhotonSink {
   void set_attempt(RngSourceKey key, std::uint64_t index) {
     m_key = key;
     m_index = index;
-    m_storage.reset();
+    m_storage_ready = false;
   }
 
   void record(int plane, const Photon& photon) override {
@@ -95,8 +95,11 @@ class BlockSink final : public PhotonSink {
                                                                : m_d.direct;
     // Stored or not; the flux is set per class after the passes (stored_photon_flux).
     if (d < 1) {
-      if (!m_storage) m_storage.emplace(m_key, m_index, RandomStream::Storage);
-      if (!(m_storage->uniform() < d)) return;
+      if (!m_storage_ready) {
+        m_storage = Rng(m_key, m_index, RandomStream::Storage);
+        m_storage_ready = true;
+      }
+      if (!(m_storage.uniform() < d)) return;
     }
     (photon.path_class == PathClass::Global    ? m_out.global
      : photon.path_class == PathClass::Caustic ? m_out.caustic
@@ -111,7 +114,10 @@ class BlockSink final : public PhotonSink {
   BlockResult& m_out;
   const TracingOptions& m_options;
   StorageProbabilities m_d;
-  std::optional<Rng> m_storage;
+  // The attempt's storage stream, made on its first stored photon (a plain Rng and a flag, as
+  // GCC 12 misreads a std::optional<Rng> as maybe uninitialized).
+  Rng m_storage{RngSourceKey{0}, 0, RandomStream::Storage};
+  bool m_storage_ready = false;
   RngSourceKey m_key{0};
   std::uint64_t m_index = 0;
 };

@@ -492,6 +492,7 @@ class Loader {
       if (type == "translucent") {
         r.read_number("transmissivity", m.transmissivity);
         r.read_number("transmitted_specular", m.transmitted_specular);
+        read_shading_role(r, m);
       }
     } else if (type == "mirror") {
       m.type = MaterialType::Mirror;
@@ -516,12 +517,20 @@ class Loader {
       m.type = MaterialType::Registered;
       m.model = type;
       MaterialKeys keys(r, *this);
+      if (model->takes_transmittance_factor) read_shading_role(r, m);
       m.parameters = model->parse(keys, m);
       r.finish();
       return m.parameters != nullptr;
     }
     r.finish();
     return true;
+  }
+
+  /// The `shading` key of a material that can stand for a blind or a shade.
+  static void read_shading_role(ParamReader& r, MaterialSpec& m) {
+    std::string role;
+    if (r.has("shading") && r.read_choice("shading", role))
+      m.shading = role == "operable" ? ShadingRole::Operable : ShadingRole::Fixed;
   }
 
   /// A registered material model's view of its map (engine::MaterialKeyReader): the

@@ -51,6 +51,16 @@ ParamSchema material_type() {
   return P("type", T::Choice, "material model").required().choices(material_types());
 }
 
+// A window material's role as a shading device (MaterialSpec::shading): LM-83 takes ASE with
+// operable shading retracted (study/shading_materials.h).
+ParamSchema shading_role() {
+  return P("shading", T::Choice,
+           "the material stands for a shading device that is moved (operable: LM-83's sDA and ASE are then not "
+           "assessed with it in place) or a fixed one; a bsdf whose file's DeviceType names a blind, shade or screen "
+           "is taken as operable unless this says fixed")
+      .choices({"operable", "fixed"});
+}
+
 // A registered material model's keys, from its registry entry.
 SectionSchema registered_material_section(const engine::MaterialModelEntry& e) {
   SectionSchema section{e.type_name + " material", e.help, {material_type()}};
@@ -68,6 +78,7 @@ SectionSchema registered_material_section(const engine::MaterialModelEntry& e) {
     if (!k.default_text.empty()) p.def(k.default_text);
     section.params.push_back(p);
   }
+  if (e.takes_transmittance_factor) section.params.push_back(shading_role());
   return section;
 }
 ParamSchema reflectance(const char* help) {
@@ -183,6 +194,7 @@ std::vector<SectionSchema> build_schema() {
       material_type(), reflectance("reflectance, grey or [r, g, b]"), specularity(false), roughness(),
       P("transmissivity", T::Number, "fraction of the non-specularly reflected light that is transmitted").range(0, 1).required(),
       P("transmitted_specular", T::Number, "fraction of the transmitted light transmitted specularly").range(0, 1).def("0"),
+      shading_role(),
   }});
   s.push_back({"opening material", "fully transparent aperture: an open window or an invisible photon port", {
       material_type(),

@@ -57,21 +57,33 @@ int leed_v41_points(double sda_percent) {
 
 namespace {
 /// Why LM-83's sDA and ASE are not assessed on a case with blinds in place; "" when none are.
-std::string blinds_why(const std::vector<std::string>& blinds, bool operated) {
-  if (blinds.empty()) return {};
-  std::string names;
-  for (std::size_t i = 0; i < blinds.size(); ++i)
-    names += (i == 0 ? "" : i + 1 == blinds.size() ? " and " : ", ") + ("'" + blinds[i] + "'");
+std::string shading_in_place_why(const std::vector<std::string>& blinds,
+                                 const std::vector<ShadingMaterialInPlace>& materials, bool operated) {
+  std::vector<std::string> parts;
+  if (!blinds.empty()) {
+    std::string names;
+    for (std::size_t i = 0; i < blinds.size(); ++i)
+      names += (i == 0 ? "" : i + 1 == blinds.size() ? " and " : ", ") + ("'" + blinds[i] + "'");
+    parts.push_back("the blinds " + names);
+  }
+  for (const ShadingMaterialInPlace& m : materials)
+    parts.push_back("the operable shading material '" + m.material + "' (" + m.why + ")");
+  if (parts.empty()) return {};
+  std::string list;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
   if (operated)
-    return "the open case has the blinds " + names + " in place: LM-83 takes ASE and the 2 % rule's direct sun with "
-           "every operable shading device retracted (section 2.2.6); make the open case one without blinds";
-  return "the blinds " + names + " are in place every hour: LM-83 takes ASE with every operable shading device "
+    return "the open case has " + list + " in place: LM-83 takes ASE and the 2 % rule's direct sun with every "
+           "operable shading device retracted (section 2.2.6); make the open case one without them";
+  const bool one = blinds.empty() && materials.size() == 1;  // "the blinds ... are"
+  return list + (one ? " is" : " are") + " in place every hour: LM-83 takes ASE with every operable shading device "
          "retracted and sDA with the blinds operated hour by hour (section 2.2.6); give the project an `operation` "
-         "whose open case has no blinds and read the operated result";
+         "whose open case has none of them and read the operated result";
 }
 }  // namespace
 
-std::vector<Verdict> grid_verdicts(const GridResult& g, const std::vector<std::string>& blinds_in_place, bool operated) {
+std::vector<Verdict> grid_verdicts(const GridResult& g, const std::vector<std::string>& blinds_in_place, bool operated,
+                                   const std::vector<ShadingMaterialInPlace>& shading_materials) {
   const std::string sda = "sDA" + n(Lm83DaThresholdLux) + "/" + n(100 * Lm83SdaTimeFraction) + "%";
   const std::string ase = "ASE" + n(Lm83AseThresholdLux) + "," + n(Lm83AseHours);
   const std::string sda_req = ">= " + n(Lm83SdaAcceptedPercent) + " % of the area (nominally accepted), >= " +
@@ -98,7 +110,7 @@ std::vector<Verdict> grid_verdicts(const GridResult& g, const std::vector<std::s
     const std::string run_sda = "sDA" + n(a->da_threshold_lux) + "/" + n(100 * a->sda_time_fraction) + "%";
     std::string period_why;
     const bool lm83_period = lm83_analysis_period(*a, period_why);
-    const std::string shading_why = blinds_why(blinds_in_place, operated);
+    const std::string shading_why = shading_in_place_why(blinds_in_place, shading_materials, operated);
     if (!lm83_period) {
       out.push_back(not_assessed(Lm83, sda, sda_req, period_why));
       out.push_back(not_assessed(Leed, sda, leed_req, period_why));
@@ -168,7 +180,7 @@ void assess_compliance(ResultsModel& model) {
   bool annual = false, ase_missing = false, en_missing = false;
   for (CaseResult& c : model.cases)
     for (GridResult& g : c.grids) {
-      g.verdicts = grid_verdicts(g, c.blinds_in_place, c.kind == "operated");
+      g.verdicts = grid_verdicts(g, c.blinds_in_place, c.kind == "operated", c.shading_materials_in_place);
       if (g.annual) {
         annual = true;
         ase_missing = ase_missing || !g.annual->ase_percent;

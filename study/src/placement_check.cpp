@@ -162,7 +162,7 @@ std::string pts_units_hint(const engine::Scene& scene, const SensorGrid& grid, c
     return std::fabs(std::log(project::metres_per_length_unit(name) / spec->metres_per_unit));
   };
   std::stable_sort(names.begin(), names.end(),
-                   [&](const std::string& a, const std::string& b) { return change(a) < change(b); });
+                   [&](const std::string& x, const std::string& y) { return change(x) < change(y); });
   for (const std::string& name : names) {
     const double factor = project::metres_per_length_unit(name) / spec->metres_per_unit;
     if (name == spec->units || !all_inside(factor)) continue;

@@ -754,7 +754,8 @@ bool GridResult::operator==(const GridResult& o) const {
 bool CaseResult::operator==(const CaseResult& o) const {
   return kind == o.kind && name == o.name && folder == o.folder && changes == o.changes && openings == o.openings &&
          systems == o.systems && materials == o.materials && rooms == o.rooms &&
-         opening_area_m2 == o.opening_area_m2 && blinds_in_place == o.blinds_in_place && grids == o.grids;
+         opening_area_m2 == o.opening_area_m2 && blinds_in_place == o.blinds_in_place &&
+         shading_materials_in_place == o.shading_materials_in_place && grids == o.grids;
 }
 bool ResultsModel::operator==(const ResultsModel& o) const {
   return schema_version == o.schema_version && project_name == o.project_name && project_file == o.project_file &&
@@ -780,6 +781,12 @@ std::string results_json(const ResultsModel& m) {
                      {"materials", materials_json(c.materials)}, {"rooms", rooms_json(c.rooms)},
                      {"opening_area_m2", c.opening_area_m2}, {"grids", grids}});
     if (!c.blinds_in_place.empty()) cases.back()["blinds_in_place"] = c.blinds_in_place;
+    if (!c.shading_materials_in_place.empty()) {
+      json materials = json::array();
+      for (const ShadingMaterialInPlace& s : c.shading_materials_in_place)
+        materials.push_back({{"material", s.material}, {"why", s.why}});
+      cases.back()["shading_materials_in_place"] = materials;
+    }
   }
   json site = {{"name", m.site_name}, {"latitude_deg", m.latitude_deg}, {"longitude_deg", m.longitude_deg},
                {"time_zone_h", m.time_zone_h}, {"elevation_m", m.elevation_m}, {"sun_from_weather", m.sun_from_weather},
@@ -862,6 +869,10 @@ ResultsModel parse_results_json(const std::string& text, const std::string& path
     cr.rooms = r.rooms(c, "cases[" + cr.name + "]");
     cr.opening_area_m2 = r.number(c, "cases", "opening_area_m2");
     if (c.contains("blinds_in_place")) cr.blinds_in_place = r.texts(c, "cases", "blinds_in_place");
+    if (c.contains("shading_materials_in_place"))
+      for (const json& s : r.array(c, "cases", "shading_materials_in_place"))
+        cr.shading_materials_in_place.push_back({r.text(s, "cases.shading_materials_in_place", "material"),
+                                                 r.text(s, "cases.shading_materials_in_place", "why")});
     for (const json& g : r.array(c, "cases", "grids")) {
       cr.grids.push_back(r.grid(g, "cases[" + cr.name + "].grids"));
       for (int k : cr.grids.back().openings_drawn)

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <variant>
 
@@ -14,6 +15,7 @@
 #include "dayphoton/engine/material.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/sensor_lattice.h"
+#include "dayphoton/study/shading_materials.h"
 
 namespace dayphoton::study {
 
@@ -106,6 +108,7 @@ void set_building(CaseResult& c, const project::Project& project, const SceneDes
   for (const project::SystemSpec& system : project.geometry.systems)
     if (system.enabled && std::holds_alternative<project::BlindsSpec>(system.params))
       c.blinds_in_place.push_back(system.name);
+  c.shading_materials_in_place.clear();
   std::vector<double> area(scene.materials.size(), 0.0);
   for (const Surface& s : scene.surfaces) {
     if (s.material >= 0 && static_cast<std::size_t>(s.material) < area.size())
@@ -115,6 +118,8 @@ void set_building(CaseResult& c, const project::Project& project, const SceneDes
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     if (area[i] <= 0) continue;  // defined but on no surface of this case
     const MaterialSpec& spec = scene.materials[i];
+    if (const std::optional<std::string> why = operable_shading_reason(spec))
+      c.shading_materials_in_place.push_back({spec.name, *why});
     MaterialSummary m;
     m.name = spec.name;
     m.type = material_type_as_written(spec);

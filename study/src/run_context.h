@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -81,6 +82,9 @@ struct RunContext {
   /// (daylight_openings.h; operated shading's two cases differ by their shading only, so they
   /// share them).
   std::map<std::string, metrics::MetricSettings::Openings> openings{};
+  /// The scene warnings already in the log (location and message): a variant's scene repeats
+  /// its base's imported files, and their warnings are logged once, by the first case.
+  std::set<std::string> scene_warnings_logged{};
   /// Sensor set `name`'s openings; vertical or inclined for a name not recorded.
   metrics::MetricSettings::Openings openings_of(const std::string& name) const {
     const auto it = openings.find(name);

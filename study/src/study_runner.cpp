@@ -123,7 +123,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   progress.start(prefix + "scene", 1, "model");
   SceneDescription description = project::build_scene_description(project);
   // What an imported RADIANCE scene left out or approximated (docs/radiance-import.md).
-  for (const Diagnostic& w : description.warnings) log.line(prefix + "warning: " + w.location.to_string() + ": " + w.message);
+  for (const Diagnostic& w : description.warnings)
+    if (ctx.scene_warnings_logged.insert(w.location.to_string() + ": " + w.message).second)
+      log.line(prefix + "warning: " + w.location.to_string() + ": " + w.message);
   const engine::Scene scene = engine::Scene::build(description);
   // No port, no sensor, a port that faces no decidable way, sensors outside every room or in
   // a solid: located errors; sets with drop_occluded lose those sensors (placement_check.h).
@@ -692,8 +694,11 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
                                        "operated");
     // Its ASE and its 2 % rule are the open case's direct sun: LM-83 takes them without blinds.
     for (const CaseResult& c : cases)
-      if ((c.kind == "base" && op->open.value == project::BaseCaseName) || (c.kind == "variant" && c.name == op->open.value))
+      if ((c.kind == "base" && op->open.value == project::BaseCaseName) ||
+          (c.kind == "variant" && c.name == op->open.value)) {
         shading.blinds_in_place = c.blinds_in_place;
+        shading.shading_materials_in_place = c.shading_materials_in_place;
+      }
     ctx.results = &shading;
     operated = run_operated(project, *op, open_tables, shaded_tables, join_path(report.output_dir, "operated"), ctx);
     cases.push_back(std::move(shading));

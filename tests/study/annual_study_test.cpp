@@ -333,8 +333,12 @@ TEST(DaylightHours, AnIlluminanceFieldOfZerosRanksByTheIrradiance) {
   EXPECT_NE(source.find("16 records reading 0 lx"), std::string::npos) << source;
   const metrics::OccupancySchedule own = metrics::OccupancySchedule::brightest_half(q);
   for (std::size_t t = 0; t < oakland.records.size(); ++t) {
-    if (*oakland.records[t].diffuse_horizontal_w_m2 > 0) EXPECT_TRUE(own.occupied(t)) << "record " << t;
-    if (*oakland.records[t].diffuse_horizontal_lux > 0) EXPECT_EQ(q[t], *oakland.records[t].diffuse_horizontal_lux);
+    if (*oakland.records[t].diffuse_horizontal_w_m2 > 0) {
+      EXPECT_TRUE(own.occupied(t)) << "record " << t;
+    }
+    if (*oakland.records[t].diffuse_horizontal_lux > 0) {
+      EXPECT_EQ(q[t], *oakland.records[t].diffuse_horizontal_lux);
+    }
   }
 }
 

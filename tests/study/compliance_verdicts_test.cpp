@@ -337,3 +337,37 @@ TEST(ResultsModelBuilder, BlindsInPlaceAreTheEnabledBlinds) {
   set_building(c, p, SceneDescription{});
   EXPECT_EQ(c.blinds_in_place, std::vector<std::string>{"venetian"});
 }
+
+// A blind drawn as a material (a measured BSDF of a venetian blind, a roller shade as
+// `translucent` with `shading: operable`) is operable shading in place as much as a `blinds`
+// system: projects/bsdf_blind (a 45-degree blind BSDF in the window every hour) run as an annual
+// study read "ASE 0 % pass" from the sun through its slats, where the room with clear glass has
+// ASE 44 % (fail). Now not assessed, naming the material and why it counts.
+TEST(ComplianceVerdicts, Lm83IsNotAssessedWithAnOperableShadingMaterialInPlace) {
+  const GridResult grid = horizontal_grid(42.9, 0, 2, 1, 0.5);
+  const std::vector<ShadingMaterialInPlace> blind = {{"blind", "its BSDF file's DeviceType is 'Venetian blind'"}};
+  for (const char* criterion : {"sDA", "ASE"}) {
+    const Verdict v = find(grid_verdicts(grid, {}, false, blind), "IES", criterion);
+    EXPECT_EQ(v.outcome, "not assessed") << criterion;
+    EXPECT_NE(v.reason.find("the operable shading material 'blind' (its BSDF file's DeviceType is 'Venetian blind') "
+                            "is in place every hour"),
+              std::string::npos)
+        << v.reason;
+  }
+  EXPECT_EQ(find(grid_verdicts(grid, {}, false, blind), "LEED", "sDA").outcome, "not assessed");
+  EXPECT_EQ(find(grid_verdicts(grid, {}, false, blind), "EN 17037", "level").outcome, "pass");
+  // With blinds too, both are named; the operated result names its open case's.
+  const Verdict both = find(grid_verdicts(grid, {"venetian"}, false, blind), "IES", "ASE");
+  EXPECT_NE(both.reason.find("the blinds 'venetian' and the operable shading material 'blind'"), std::string::npos)
+      << both.reason;
+  ResultsModel m;
+  CaseResult operated;
+  operated.kind = "operated";
+  operated.grids = {grid};
+  operated.shading_materials_in_place = blind;
+  m.cases = {operated};
+  assess_compliance(m);
+  const Verdict o = find(m.cases[0].grids[0].verdicts, "IES", "ASE");
+  EXPECT_EQ(o.outcome, "not assessed");
+  EXPECT_NE(o.reason.find("the open case has the operable shading material 'blind'"), std::string::npos) << o.reason;
+}

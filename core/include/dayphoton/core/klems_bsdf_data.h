@@ -36,6 +36,10 @@ constexpr double BsdfAlbedoTolerance = 0.01;
 struct KlemsBsdfData {
   std::string file;  ///< the file as written in the project (for messages)
   std::string content_sha256;  ///< of the file's bytes (for cache keys)
+  /// The layer's <Material><DeviceType> as the file writes it, trimmed ("Venetian blind",
+  /// "Integral" ...); empty when the file has none. It names what the matrix stands for: a
+  /// glazing or a shading device (study/shading_materials.h reads it for LM-83's verdicts).
+  std::string device_type;
   KlemsBasis basis;
   std::vector<double> transmission_front, transmission_back, reflection_front, reflection_back;
 

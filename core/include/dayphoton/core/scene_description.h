@@ -58,6 +58,13 @@ struct GlazingPaneSpec {
   bool coating_on_inner_face = false;
 };
 
+/// A material's role as a shading device (MaterialSpec::shading).
+enum class ShadingRole {
+  Unstated,  ///< not said: a BSDF whose file names a shading device is taken as operable
+  Operable,  ///< `shading: operable`: a blind, shade or screen that is moved
+  Fixed,     ///< `shading: fixed`: part of the building (a fixed screen, a fritted or diffusing glazing)
+};
+
 /// The parameters of a MaterialType::Registered model, as its registry entry's parser made
 /// them from the project file. Each model derives its own struct from this one and reads it
 /// back with dynamic_cast in its factory; immutable once made (shared by copies of a spec).
@@ -104,6 +111,12 @@ struct MaterialSpec {
   std::string model;
   /// MaterialType::Registered: the model's parameters, made by its registry entry's parser.
   std::shared_ptr<const MaterialParameters> parameters;
+  /// Translucent materials and registered models that take a transmittance factor (`bsdf`):
+  /// the project's `shading` key, whether the material stands for a shading device that is
+  /// moved (a blind, a roller shade) or a fixed one. LM-83 takes ASE with every operable
+  /// shading device retracted (study/shading_materials.h); Unstated lets a BSDF file's
+  /// DeviceType decide.
+  ShadingRole shading = ShadingRole::Unstated;
 };
 
 /// Which side of a port is the room (the engine's Port::normal points into it).

@@ -54,10 +54,12 @@ bool lm83_analysis_period(const AnnualSummary& annual, std::string& why);
 int leed_v41_points(double sda_percent);
 
 /// The verdicts of one grid (the grid's own summaries; its orientation decides whether any
-/// applies). `blinds_in_place`: the case's (CaseResult::blinds_in_place); `operated`: the case
-/// is the operated result (its blinds are those of its open case).
+/// applies). `blinds_in_place` and `shading_materials`: the case's (CaseResult::
+/// blinds_in_place, shading_materials_in_place); `operated`: the case is the operated result
+/// (its shading is that of its open case).
 std::vector<Verdict> grid_verdicts(const GridResult& grid, const std::vector<std::string>& blinds_in_place = {},
-                                   bool operated = false);
+                                   bool operated = false,
+                                   const std::vector<ShadingMaterialInPlace>& shading_materials = {});
 
 /// Fill every grid's verdicts and the model's not-assessed statements.
 void assess_compliance(ResultsModel& model);

@@ -281,6 +281,13 @@ struct MaterialSummary {
   bool operator==(const MaterialSummary& o) const;
 };
 
+/// A material taken as operable shading in a case, and why (study/shading_materials.h).
+struct ShadingMaterialInPlace {
+  std::string material;
+  std::string why;  ///< "`shading: operable`", or the BSDF file's DeviceType that names a shading device
+  bool operator==(const ShadingMaterialInPlace& o) const { return material == o.material && why == o.why; }
+};
+
 /// A window or roof light of a room generator.
 struct WindowSummary {
   std::string name;
@@ -327,6 +334,11 @@ struct CaseResult {
   /// verdict is given for a case with blinds in place (compliance_verdicts.h). In results.json
   /// only when some are.
   std::vector<std::string> blinds_in_place;
+  /// Materials of the case's surfaces taken as operable shading (study/shading_materials.h):
+  /// a blind or a shade drawn as a material; for the operated result, those of its open case.
+  /// Neither LM-83 verdict is given with one in place, as with blinds. In results.json only
+  /// when some are.
+  std::vector<ShadingMaterialInPlace> shading_materials_in_place;
   std::vector<GridResult> grids;
 
   bool operator==(const CaseResult& o) const;

@@ -43,7 +43,8 @@ void set_plan_geometry(CaseResult& c, const SceneDescription& scene);
 /// (photometric reflectance, normal-incidence transmittance, area) and the rooms of the
 /// case's project (the variant's own, e.g. with a window added) with their windows, roof
 /// lights, window-to-wall and window-to-floor areas; the total area of the scene's openings;
-/// the enabled blinds (CaseResult::blinds_in_place).
+/// the enabled blinds (CaseResult::blinds_in_place) and the materials taken as operable shading
+/// (CaseResult::shading_materials_in_place, shading_materials.h).
 void set_building(CaseResult& c, const project::Project& project, const SceneDescription& scene);
 
 /// The project's name for titles (ResultsModel::title): the folder's name for a file called
