@@ -444,12 +444,13 @@ struct Reader {
     for (const json& s : array(j, at_grid, "sensors")) {
       g.positions_m.push_back(vector(at(s, sk, "position_m"), sk + ".position_m"));
       g.normals.push_back(vector(at(s, sk, "normal"), sk + ".normal"));
-      if (const auto area = optional_number(s, sk, "area_m2")) g.area_m2.push_back(*area);
+      if (s.is_object() && s.contains("area_m2")) g.area_m2.push_back(number(s, sk, "area_m2"));
       const int c = integer(s, sk, "column"), r = integer(s, sk, "row");
       if (c < 0 || r < 0 || c >= g.lattice.columns || r >= g.lattice.rows) fail(sk, "has a cell outside the lattice");
       g.lattice.column_of.push_back(c);
       g.lattice.row_of.push_back(r);
     }
+    if (!g.area_m2.empty() && g.area_m2.size() != g.positions_m.size()) fail(sk, "gives area_m2 for some sensors, not all");
     g.outline = polygon(at(j, at_grid, "outline"), at_grid + ".outline");
     for (const json& e : array(j, at_grid, "openings_drawn")) {
       if (!e.is_number_integer() || e.get<int>() < 0) fail(at_grid + ".openings_drawn", "holds a value that is not an index");
@@ -563,7 +564,8 @@ struct Reader {
       a.sky = text(an, ak, "sky");
       if (const auto v = optional_number(an, ak, "da_verdicts_within_2_sigma"))
         a.da_verdicts_within_2_sigma = static_cast<std::size_t>(*v);
-      a.da_verdicts_within_2_sigma_area_percent = optional_number(an, ak, "da_verdicts_within_2_sigma_area_percent");
+      if (an.contains("da_verdicts_within_2_sigma_area_percent"))
+        a.da_verdicts_within_2_sigma_area_percent = number(an, ak, "da_verdicts_within_2_sigma_area_percent");
       g.annual = a;
     }
     for (const json& p : array(j, at_grid, "points_in_time")) {
