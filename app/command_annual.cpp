@@ -244,7 +244,8 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
   read_options.non_negative = true;
   read_options.max_values = o.max_matrix_values;
   const RadianceMatrix coefficients = RadianceMatrix::read_file(coefficients_path, read_options);
-  const std::vector<SensorPoint> sensors = study::read_sensors_csv(sensors_path);
+  std::vector<double> sensor_area_m2;  // the run's sensor areas (sensors.csv's area_m2), if any
+  const std::vector<SensorPoint> sensors = study::read_sensors_csv(sensors_path, &sensor_area_m2);
   if (sensors.size() != coefficients.rows())
     throw InputError(SourceLocation{sensors_path, 0, 0},
                      "has " + std::to_string(sensors.size()) + " sensors but " + coefficients_path + " has " +
@@ -323,7 +324,8 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
   require_matrix_within_limit("the illuminance table (" + std::to_string(sensors.size()) + " sensors, one row per record)",
                               sensors.size(), the_sky.steps.size(), 1, o.max_matrix_values);
   std::string settings_source;
-  const study::AnnualStudySettings settings = annual_settings(o, grid_dir, project, recorded, weather, settings_source);
+  study::AnnualStudySettings settings = annual_settings(o, grid_dir, project, recorded, weather, settings_source);
+  settings.sensor_area_m2 = sensor_area_m2;
   // The coefficients' sub-patch shares, exported beside the coefficients by a run: with them
   // (and a sky built here, which has the quadrant deltas) the table is the run's. The photon
   // part's shares are unclamped fits (docs/photon-map.md, "The annual photon part on

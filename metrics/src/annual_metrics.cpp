@@ -43,6 +43,20 @@ double weighted_mean(const std::vector<double>& values, const std::vector<double
   return weight_sum > 0 ? sum / weight_sum : 0;
 }
 
+/// The share (percent) of the area whose sensors pass (`passes`: 100 or 0 per sensor), each
+/// sensor weighted by `weights` (equal when empty): 100 x the passing weight over the total,
+/// so that every sensor passing gives exactly 100 whatever the weights (a weighted mean of
+/// the 100s need not), and equal weights give 100 k / n as a count does.
+double share_percent(const std::vector<double>& passes, const std::vector<double>& weights) {
+  double passing = 0, total = 0;
+  for (std::size_t i = 0; i < passes.size(); ++i) {
+    const double w = weights.empty() ? 1.0 : weights[i];
+    if (passes[i] > 0) passing += w;
+    total += w;
+  }
+  return total > 0 ? 100.0 * passing / total : 0;
+}
+
 }  // namespace
 
 std::vector<SensorMetrics> compute_sensor_metrics(const IlluminanceTable& table,
@@ -127,12 +141,12 @@ GridMetrics summarize_grid(const std::vector<SensorMetrics>& sensors, const Metr
   std::vector<double> passes(sensors.size());
   for (std::size_t i = 0; i < sensors.size(); ++i)
     passes[i] = sensors[i].da_percent >= 100.0 * settings.sda_time_fraction ? 100.0 : 0.0;
-  grid.sda_percent = weighted_mean(passes, area_weights);
+  grid.sda_percent = share_percent(passes, area_weights);
 
   if (ase_hours) {
     std::vector<double> fails(ase_hours->size());
     for (std::size_t i = 0; i < fails.size(); ++i) fails[i] = (*ase_hours)[i] > settings.ase_hours ? 100.0 : 0.0;
-    grid.ase_percent = weighted_mean(fails, area_weights);
+    grid.ase_percent = share_percent(fails, area_weights);
   }
   return grid;
 }
@@ -199,8 +213,8 @@ std::vector<En17037Result> en17037_daylight_provision(const IlluminanceTable& ta
     const En17037Level& level = En17037Levels[l];
     En17037Result r;
     r.level = level.name;
-    r.target_area_percent = weighted_mean(target[l], area_weights);
-    r.minimum_target_area_percent = weighted_mean(minimum[l], area_weights);
+    r.target_area_percent = share_percent(target[l], area_weights);
+    r.minimum_target_area_percent = share_percent(minimum[l], area_weights);
     r.target_area_required_percent = en17037_target_area_required_percent(settings);
     r.passes = r.target_area_percent >= r.target_area_required_percent &&
                r.minimum_target_area_percent >= En17037MinimumTargetAreaPercent;

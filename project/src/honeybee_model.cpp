@@ -927,18 +927,25 @@ class Reader {
         }
       }
       if (!ok) continue;
-      if (const json* mesh = find(g, "mesh")) {
+      if (const json* mesh = find(g, "mesh"); mesh && !mesh->is_null()) {
         grid.mesh_face_areas_m2 = mesh_face_areas_m2(*mesh);
         grid.mesh_location = m_loc.locate(json_member(path, "mesh"));
-        if (grid.mesh_face_areas_m2.size() != grid.points.size()) grid.mesh_face_areas_m2.clear();
+        if (grid.mesh_face_areas_m2.empty()) {
+          grid.mesh_problem = "cannot be read as a Mesh3D ('vertices' [[x, y, z], ...] and 'faces' of 3 or more "
+                              "vertex indices, of a positive total area)";
+        } else if (grid.mesh_face_areas_m2.size() != grid.points.size()) {
+          grid.mesh_problem = "has " + std::to_string(grid.mesh_face_areas_m2.size()) + " faces for " +
+                              std::to_string(grid.points.size()) + " sensors";
+          grid.mesh_face_areas_m2.clear();
+        }
       }
       m_out.grids.push_back(std::move(grid));
     }
   }
 
   /// The face areas of a Mesh3D (`vertices` [[x, y, z], ...], `faces` [[i, j, k(, l)], ...]),
-  /// in m^2; empty for anything else (the mesh only weighs the sensors' areas, so a mesh that
-  /// cannot be read is left out, not an error).
+  /// in m^2; empty for anything else, or a mesh of no area (the mesh only weighs the sensors'
+  /// areas, so a mesh that cannot be read is warned about and left out, not an error).
   std::vector<double> mesh_face_areas_m2(const json& mesh) const {
     const json* vertices = mesh.is_object() ? find(mesh, "vertices") : nullptr;
     const json* faces = mesh.is_object() ? find(mesh, "faces") : nullptr;
@@ -959,6 +966,9 @@ class Reader {
       }
       areas.push_back(polygon_area_m2(polygon));
     }
+    double total_m2 = 0;
+    for (double a : areas) total_m2 += a;
+    if (!std::isfinite(total_m2) || !(total_m2 > 0)) return {};
     return areas;
   }
 
@@ -981,16 +991,6 @@ class Reader {
 };
 
 }  // namespace
-
-double honeybee_mesh_share_bound_points(const std::vector<double>& areas_m2) {
-  double total = 0;
-  for (double a : areas_m2) total += a;
-  if (areas_m2.empty() || !(total > 0)) return 0;
-  const double n = static_cast<double>(areas_m2.size());
-  double sum = 0;
-  for (double a : areas_m2) sum += std::abs(a / total - 1 / n);
-  return 50 * sum;
-}
 
 HoneybeeModel read_honeybee_model_from_string(const std::string& text, const std::string& file) {
   Diagnostics diag;

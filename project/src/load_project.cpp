@@ -32,6 +32,7 @@
 #include "dayphoton/project/site_geodesy.h"
 #include "occupancy_reader.h"
 #include "param_reader.h"
+#include "sensor_areas.h"
 #include "variant_checks.h"
 #include "yaml_document.h"
 
@@ -1129,29 +1130,39 @@ class Loader {
         m_reporter.error(at, message);
         return;
       }
-      if (!it->mesh_face_areas_m2.empty()) {
-        const double bound = honeybee_mesh_share_bound_points(it->mesh_face_areas_m2);
-        if (bound >= HoneybeeMeshShareWarnPoints) {
-          const auto [lo, hi] = std::minmax_element(it->mesh_face_areas_m2.begin(), it->mesh_face_areas_m2.end());
-          // With the model's own warnings, which the scene carries to check and run.
-          Diagnostic w;
-          w.severity = Severity::Warning;
-          w.location = it->mesh_location;
-          w.source_line = read_source_line(it->mesh_location.file, it->mesh_location.line);
-          w.message =
-              "sensor grid '" + grid + "': the faces of its mesh differ in area (" + format_number(std::round(*lo * 1e4) / 1e4) +
-                  " to " + format_number(std::round(*hi * 1e4) / 1e4) +
-                  " m^2): Honeybee weighs each sensor by its face's area, dayphoton counts every sensor as an equal "
-                  "share of the area, so sDA, ASE and EN 17037's target areas can differ from Honeybee's by up to " +
-                  format_number(std::round(bound * 10) / 10) +
-                  " percentage points (the grid means too); give the grid cells of equal area, or weigh "
-                  "metrics.csv by the face areas";
-          m_project.geometry.honeybee->model.warnings.push_back(std::move(w));
-        }
+      // The mesh's faces weigh the sensors' shares as Honeybee does (docs/metrics.md,
+      // "Sensor areas"); with the model's warnings, which the scene carries to check and run.
+      std::vector<double> area_m2 = detail::unequal_areas_m2(it->mesh_face_areas_m2);
+      auto model_diagnostic = [&](Severity severity, std::string message) {
+        Diagnostic d;
+        d.severity = severity;
+        d.location = it->mesh_location;
+        d.source_line = read_source_line(it->mesh_location.file, it->mesh_location.line);
+        d.message = std::move(message);
+        m_project.geometry.honeybee->model.warnings.push_back(std::move(d));
+      };
+      if (!it->mesh_problem.empty()) {
+        model_diagnostic(Severity::Warning,
+                         "sensor grid '" + grid + "': its mesh " + it->mesh_problem +
+                             ", so it is not used: every sensor counts as an equal share of the area, where Honeybee "
+                             "weighs each by its mesh face's area (sDA, ASE, EN 17037's target areas and the grid "
+                             "means can differ from Honeybee's); give the grid a mesh of one face per sensor");
+      } else if (!area_m2.empty()) {
+        const auto [lo, hi] = std::minmax_element(area_m2.begin(), area_m2.end());
+        double total_m2 = 0;
+        for (double a : area_m2) total_m2 += a;
+        model_diagnostic(Severity::Note,
+                         "sensor grid '" + grid + "': the faces of its mesh differ in area (" +
+                             format_number(std::round(*lo * 1e4) / 1e4) + " to " +
+                             format_number(std::round(*hi * 1e4) / 1e4) + " m^2, " +
+                             format_number(std::round(total_m2 * 1e2) / 1e2) +
+                             " m^2 in all): each sensor's share of the area (sDA, ASE, EN 17037's target areas, "
+                             "the grid means) is weighted by its face's area, as Honeybee does");
       }
       PointsSpec p;
       p.name = name.value;
       p.points = it->points;
+      p.area_m2 = std::move(area_m2);
       p.drop_occluded = drop;
       p.location = at;
       m_sensor_folders.add("point set", p.name, name.location, m_reporter);

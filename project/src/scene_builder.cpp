@@ -209,9 +209,13 @@ SceneDescription build_scene_description(const Project& project) {
   for (const RadianceSceneSpec& rad : g.radiance)
     detail::generate_radiance(rad, project.materials.size(), scene.materials, diag, surfaces);
   mark(SurfaceOrigin::Radiance);
+  std::vector<Diagnostic> model_notes;  // the model's notes, which are no warnings (a grid's weighting mesh)
   if (g.honeybee) {
     generate_honeybee(*g.honeybee, materials, surfaces);
-    for (const Diagnostic& w : g.honeybee->model.warnings) diag.warning(w.location, w.message, w.source_line);
+    for (const Diagnostic& w : g.honeybee->model.warnings) {
+      if (w.severity == Severity::Note) model_notes.push_back(w);
+      else diag.warning(w.location, w.message, w.source_line);
+    }
   }
   mark(SurfaceOrigin::Honeybee);
   surfaces.insert(surfaces.end(), systems.surfaces.begin(), systems.surfaces.end());
@@ -268,6 +272,7 @@ SceneDescription build_scene_description(const Project& project) {
   diag.throw_if_errors();
   for (const Diagnostic& d : diag.entries())
     if (d.severity == Severity::Warning) scene.warnings.push_back(d);
+  scene.warnings.insert(scene.warnings.end(), model_notes.begin(), model_notes.end());
   rotate_scene(scene, north_deg);
   // Survey coordinates near (0, 0, 0) before anything becomes a float (local_origin.h).
   move_to_local_origin(scene);

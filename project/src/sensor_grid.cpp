@@ -23,6 +23,10 @@
 // Point sets: inline points followed by the points of a .pts file (pts_reader.h), normals
 // normalised.
 //
+// Sensor areas (sensor_areas.h): a room or polygon grid whose outline cuts the lattice cells
+// of its sensors (an inset below spacing / sqrt(2)) gives each sensor its cell clipped to the
+// outline; a Honeybee grid's point set its mesh faces (PointsSpec::area_m2).
+//
 // Limits (core/resource_limits.h): a grid or point set holds at most limits.sensors_per_grid
 // sensors. The count is computed in floating point from the spans and the spacing and
 // checked before any point is made (a spacing of 1e-6 m, or a room of 1e6 m, gives a count
@@ -35,6 +39,7 @@
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/project/pts_reader.h"
 #include "geometry_generators.h"
+#include "sensor_areas.h"
 
 namespace dayphoton::project::detail {
 
@@ -174,6 +179,7 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, std
     const Vec3 o{room->origin.x, room->origin.y, z};
     out.outline = {o, o + Vec3{room->size_m.x, 0, 0}, o + Vec3{room->size_m.x, room->size_m.y, 0},
                    o + Vec3{0, room->size_m.y, 0}};
+    out.area_m2 = lattice_cell_areas_m2(out.points, out.outline, spec.spacing_m);  // the walls' cut cells
     set_plane(out, normal, z);
     return true;
   }
@@ -247,6 +253,7 @@ bool generate_grid(const GridSpec& spec, const std::vector<RoomSpec>& rooms, std
     return false;
   }
   out.outline = outline;
+  out.area_m2 = lattice_cell_areas_m2(out.points, out.outline, spec.spacing_m);  // the outline's cut cells
   set_plane(out, normal, spec.height_m);
   return true;
 }
@@ -272,6 +279,11 @@ bool generate_points(const PointsSpec& spec, std::uint64_t max_points, Diagnosti
       continue;
     }
     out.points.push_back({p.position, p.normal / len});
+  }
+  if (ok && !spec.area_m2.empty()) {
+    if (spec.area_m2.size() != spec.points.size() || !spec.file.empty() || !spec.file_as_written.empty())
+      throw std::logic_error("sensor points: areas given for another count of points");
+    out.area_m2 = spec.area_m2;
   }
   const std::string path = spec.file.empty() ? spec.file_as_written : spec.file;
   if (!path.empty()) {

@@ -21,6 +21,7 @@
 #include "dayphoton/report/plan_picture.h"
 #include "dayphoton/study/image_files.h"
 #include "dayphoton/report/report_format.h"
+#include "dayphoton/report/temporal_map.h"
 #include "report_sections.h"
 
 #ifndef DAYPHOTON_VERSION
@@ -291,17 +292,23 @@ std::string plan_svg(const GridData& g, const study::SensorLattice& lattice, con
   return s.str();
 }
 
-/// A histogram of `values` over `edges` (the last bin open above), bars coloured by the scale.
+/// A histogram of `values` over `edges` (the last bin open above), bars coloured by the scale;
+/// each value counts its sensor's area when `area_m2` is given (GridResult::area_m2).
 std::string histogram_svg(const std::vector<double>& values, const std::vector<double>& edges,
-                          const ColourScale& scale, const std::string& x_label, const std::string& what) {
+                          const ColourScale& scale, const std::string& x_label, const std::string& what,
+                          const std::vector<double>& area_m2) {
   const std::size_t bins = edges.size();  // bin i = [edges[i], edges[i+1]); last = [edges.back(), inf)
+  const bool weighted = area_m2.size() == values.size() && !area_m2.empty();
   std::vector<double> counts(bins, 0);
-  for (double v : values) {
+  double total = 0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
     std::size_t b = 0;
-    while (b + 1 < bins && v >= edges[b + 1]) ++b;
-    counts[b] += 1;
+    while (b + 1 < bins && values[i] >= edges[b + 1]) ++b;
+    const double w = weighted ? area_m2[i] : 1.0;
+    counts[b] += w;
+    total += w;
   }
-  const double n = std::max<double>(1, static_cast<double>(values.size()));
+  const double n = weighted ? (total > 0 ? total : 1.0) : std::max<double>(1, static_cast<double>(values.size()));
   double peak = 0;
   for (double& c : counts) {
     c = 100 * c / n;
@@ -325,7 +332,8 @@ std::string histogram_svg(const std::vector<double>& values, const std::vector<d
       << num(bw - 2, 1) << "\" height=\"" << num(std::max(bh, 0.0), 1) << "\" fill=\""
       << hex_colour(scale.colour(centre)) << "\"><title>" << tick(edges[b])
       << (b + 1 < bins ? "&#8211;" + tick(edges[b + 1]) : std::string(" and above")) << ' ' << esc(scale.unit) << ": "
-      << format_value(counts[b], Precision::Percent) << " % of sensors</title></rect>";
+      << format_value(counts[b], Precision::Percent) << (weighted ? " % of the area" : " % of sensors")
+      << "</title></rect>";
   }
   const std::size_t label_every = bins > 12 ? 2 : 1;
   for (std::size_t b = 0; b < bins; b += label_every)
@@ -401,36 +409,21 @@ std::string occupancy_note(const study::OccupancySummary& occupancy) {
   return " (" + esc(occupancy.description) + ")";
 }
 
-/// Day of year x hour map of the grid's mean illuminance; occupancy window dashed.
+/// Day of year x hour map of the grid's mean illuminance (over the sensors' areas when
+/// `area_m2` is given); occupancy window dashed.
 std::string temporal_svg(const metrics::IlluminanceTable& table, double occupancy_start_h, double occupancy_end_h,
-                         const ColourScale& scale) {
-  // Days in file order; one slot per clock hour (sub-hourly records are averaged).
-  std::vector<std::pair<int, int>> days;
-  std::vector<int> day_of_step(table.step_count());
-  for (std::size_t t = 0; t < table.step_count(); ++t) {
-    const auto& st = table.steps()[t];
-    if (days.empty() || days.back() != std::make_pair(st.month, st.day)) days.emplace_back(st.month, st.day);
-    day_of_step[t] = static_cast<int>(days.size()) - 1;
-  }
+                         const ColourScale& scale, const std::vector<double>& area_m2) {
+  // Days in file order; one slot per clock hour (sub-hourly records are averaged): the map of
+  // temporal_map.png (report/temporal_map.h).
+  const TemporalMap map = temporal_map(table, area_m2);
+  const std::vector<std::pair<int, int>>& days = map.days;
   const int nd = std::max<int>(1, static_cast<int>(days.size()));
-  std::vector<double> sum(static_cast<std::size_t>(nd) * 24, 0.0), count(sum.size(), 0.0);
-  const std::size_t sensors = std::max<std::size_t>(1, table.sensor_count());
-  for (std::size_t t = 0; t < table.step_count(); ++t) {
-    double m = 0;
-    for (std::size_t s = 0; s < table.sensor_count(); ++s) m += table.lux(t, s);
-    m /= static_cast<double>(sensors);
-    const int slot = std::clamp(static_cast<int>(std::floor(table.steps()[t].hour)), 0, 23);
-    const std::size_t i = static_cast<std::size_t>(day_of_step[t]) * 24 + static_cast<std::size_t>(slot);
-    sum[i] += m;
-    count[i] += 1;
-  }
   // Pixel (day, hour) with hour 0 at the bottom; below 1 lx (night) grey.
   RgbaImage image(nd, 24, {255, 255, 255, 0});
-  for (int d = 0; d < nd; ++d)
+  for (int d = 0; d < static_cast<int>(days.size()); ++d)
     for (int h = 0; h < 24; ++h) {
-      const std::size_t i = static_cast<std::size_t>(d) * 24 + static_cast<std::size_t>(h);
-      if (count[i] == 0) continue;
-      const double v = sum[i] / count[i];
+      const double v = map.at(d, h);
+      if (std::isnan(v)) continue;
       const auto c = v < 1 ? std::array<std::uint8_t, 3>{60, 60, 60} : scale.colour(v);
       image.at(d, 23 - h) = {c[0], c[1], c[2], 255};
     }
@@ -571,6 +564,12 @@ std::string grid_section(const GridData& g, PageIds& page) {
   s << "<p class=\"meta\">" << g.positions.size() << " sensors"
     << (spacing > 0 ? ", spacing " + format_value(spacing, Precision::Length) + " m" : std::string()) << ", "
     << study::orientation_name(g.grid->orientation);
+  if (!g.grid->area_m2.empty()) {
+    double total_m2 = 0;
+    for (double a : g.grid->area_m2) total_m2 += a;
+    s << "; each sensor weighted by the area it stands for (" << format_value(total_m2, Precision::Length)
+      << " m&#178; in all): every share and mean below is of the area";
+  }
   if (!g.changes.empty()) {
     std::string changes;
     for (const std::string& c : g.changes) changes += (changes.empty() ? "" : ", ") + c;
@@ -580,6 +579,9 @@ std::string grid_section(const GridData& g, PageIds& page) {
   for (const std::string& p : g.problems) s << "<p class=\"problem\">could not read: " << esc(p) << "</p>";
   const study::SensorLattice& lattice = g.grid->lattice;
   const AnnualSummary* annual = g.annual();
+  // Sensors standing for unequal areas: every share and mean is of the area.
+  const bool by_area = !g.grid->area_m2.empty();
+  const char* const shares_of = by_area ? "the area" : "sensors";
 
   // Daylight factor.
   s << "<div class=\"part\" id=\"" << g.id << "-df\"><h3>Daylight factor (CIE overcast sky)</h3>";
@@ -606,7 +608,11 @@ std::string grid_section(const GridData& g, PageIds& page) {
     rows.emplace_back("standard error of DF, largest (relative)", df_text(st.max_relative_stderr_percent));
     if (annual && annual->da_verdicts_within_2_sigma)
       rows.emplace_back("sensors whose DA verdict could change within 2 standard errors",
-                        std::to_string(*annual->da_verdicts_within_2_sigma));
+                        std::to_string(*annual->da_verdicts_within_2_sigma) +
+                            (annual->da_verdicts_within_2_sigma_area_percent
+                                 ? " (" + format_value(*annual->da_verdicts_within_2_sigma_area_percent, Precision::Percent) +
+                                       " % of the area)"
+                                 : std::string()));
     s << key_value_table(rows);
   } else {
     s << "<p class=\"na\">daylight_factor.csv not found: the daylight factor was not computed.</p>";
@@ -719,10 +725,10 @@ std::string grid_section(const GridData& g, PageIds& page) {
     const ColourScale scale = illuminance_scale();
     s << "<figure><div class=\"row\">"
       << temporal_svg(*g.illuminance, daily ? (annual ? annual->occupancy.start_h : 8.0) : NAN,
-                      daily ? (annual ? annual->occupancy.end_h : 18.0) : NAN, scale)
+                      daily ? (annual ? annual->occupancy.end_h : 18.0) : NAN, scale, g.grid->area_m2)
       << legend_svg(scale, page)
       << "</div><figcaption>Mean illuminance over the grid's " << g.illuminance->sensor_count()
-      << " sensors for every hour of the weather year (lx, logarithmic; below 1 lx grey).</figcaption></figure>";
+      << (by_area ? " sensors, each weighted by its area," : " sensors") << " for every hour of the weather year (lx, logarithmic; below 1 lx grey).</figcaption></figure>";
     if (fs::exists(join(g.folder_path, "temporal_map.png")))  // report/temporal_map.h
       s << "<p class=\"note\">As a picture: <a href=\"" << esc(g.folder) << "/temporal_map.png\">" << esc(g.folder)
         << "/temporal_map.png</a>.</p>";
@@ -737,17 +743,19 @@ std::string grid_section(const GridData& g, PageIds& page) {
   if (g.df) {
     std::vector<double> edges;
     for (int i = 0; i <= 20; ++i) edges.push_back(0.5 * i);
-    s << "<figure>" << histogram_svg(*g.df, edges, daylight_factor_scale(), "daylight factor (%)",
-                                     "daylight factor histogram")
-      << "<figcaption>Daylight factor: share of sensors per 0.5 % bin (last bin: 10 % and above).</figcaption></figure>";
+    s << "<figure>"
+      << histogram_svg(*g.df, edges, daylight_factor_scale(), "daylight factor (%)", "daylight factor histogram",
+                       g.grid->area_m2)
+      << "<figcaption>Daylight factor: share of " << shares_of << " per 0.5 % bin (last bin: 10 % and above).</figcaption></figure>";
     any = true;
   }
   if (!da.empty()) {
     std::vector<double> edges;
     for (int i = 0; i < 10; ++i) edges.push_back(10.0 * i);
-    s << "<figure>" << histogram_svg(da, edges, percent_scale("DA"), "daylight autonomy (% of occupied hours)",
-                                     "daylight autonomy histogram")
-      << "<figcaption>Daylight autonomy: share of sensors per 10 % bin.</figcaption></figure>";
+    s << "<figure>"
+      << histogram_svg(da, edges, percent_scale("DA"), "daylight autonomy (% of occupied hours)",
+                       "daylight autonomy histogram", g.grid->area_m2)
+      << "<figcaption>Daylight autonomy: share of " << shares_of << " per 10 % bin.</figcaption></figure>";
     any = true;
   }
   if (!any) s << "<p class=\"na\">no per-sensor results.</p>";
@@ -756,12 +764,14 @@ std::string grid_section(const GridData& g, PageIds& page) {
   // Metrics table.
   s << "<div class=\"part\" id=\"" << g.id << "-metrics\"><h3>Grid metrics</h3>";
   if (annual) {
-    s << "<table class=\"grid-table\"><tr><th>metric (grid mean over sensors)</th><th>value</th><th>unit</th></tr>";
+    s << "<table class=\"grid-table\"><tr><th>metric (grid mean over " << (by_area ? "the area" : "sensors")
+      << ")</th><th>value</th><th>unit</th></tr>";
     for (const MetricRow& row : metric_rows(*annual))
       s << "<tr><td>" << row.label << "</td><td class=\"n\">" << format_value(row.value, row.precision) << "</td><td>" << row.unit
         << "</td></tr>";
-    s << "<tr><td>sDA (share of sensors)</td><td class=\"n\">" << format_value(annual->sda_percent, Precision::Percent) << "</td><td>%</td></tr>";
-    s << "<tr><td>ASE (share of sensors)</td><td class=\"n\">"
+    s << "<tr><td>sDA (share of " << shares_of << ")</td><td class=\"n\">"
+      << format_value(annual->sda_percent, Precision::Percent) << "</td><td>%</td></tr>";
+    s << "<tr><td>ASE (share of " << shares_of << ")</td><td class=\"n\">"
       << format_value(annual->ase_percent, Precision::Percent) << "</td><td>%</td></tr>";
     s << "<tr><td>occupied hours" << occupancy_note(annual->occupancy) << "</td><td class=\"n\">"
       << annual->occupied_hours << "</td><td>h</td></tr>";

@@ -18,7 +18,7 @@ constexpr int TextScale = 2, MarginPx = 8, TickPx = 4;
 
 }  // namespace
 
-TemporalMap temporal_map(const metrics::IlluminanceTable& table) {
+TemporalMap temporal_map(const metrics::IlluminanceTable& table, const std::vector<double>& area_m2) {
   TemporalMap map;
   std::vector<int> day_of_step(table.step_count());
   for (std::size_t t = 0; t < table.step_count(); ++t) {
@@ -27,10 +27,18 @@ TemporalMap temporal_map(const metrics::IlluminanceTable& table) {
     day_of_step[t] = static_cast<int>(map.days.size()) - 1;
   }
   std::vector<double> sum(map.days.size() * 24, 0.0), count(sum.size(), 0.0);
+  const bool weighted = area_m2.size() == table.sensor_count() && !area_m2.empty();
+  double total_m2 = 0;
+  for (double a : area_m2) total_m2 += a;
   for (std::size_t t = 0; t < table.step_count(); ++t) {
     double m = 0;
-    for (std::size_t s = 0; s < table.sensor_count(); ++s) m += table.lux(t, s);
-    if (table.sensor_count() > 0) m /= static_cast<double>(table.sensor_count());
+    if (weighted) {
+      for (std::size_t s = 0; s < table.sensor_count(); ++s) m += area_m2[s] * table.lux(t, s);
+      m = total_m2 > 0 ? m / total_m2 : 0;
+    } else {
+      for (std::size_t s = 0; s < table.sensor_count(); ++s) m += table.lux(t, s);
+      if (table.sensor_count() > 0) m /= static_cast<double>(table.sensor_count());
+    }
     const int slot = std::clamp(static_cast<int>(std::floor(table.steps()[t].hour)), 0, 23);
     const std::size_t i = static_cast<std::size_t>(day_of_step[t]) * 24 + static_cast<std::size_t>(slot);
     sum[i] += m;
@@ -100,7 +108,7 @@ study::RgbaImage temporal_png(const TemporalMap& map, const ColourScale& scale) 
 
 std::string write_temporal_map(const std::string& results_dir, const study::GridResult& grid) {
   if (!grid.has_illuminance_table) return {};
-  const TemporalMap map = temporal_map(study::read_illuminance_table(results_dir, grid));
+  const TemporalMap map = temporal_map(study::read_illuminance_table(results_dir, grid), grid.area_m2);
   if (map.days.empty()) return {};
   const std::string path = (std::filesystem::path(study::grid_folder(results_dir, grid)) / "temporal_map.png").string();
   study::write_png(temporal_png(map, illuminance_scale()), path);

@@ -100,12 +100,7 @@ std::optional<AnnualStudy> annual_study_in_blocks(StepExecutor& executor, const 
     first += n;
   }
   if (first != n_sensors) throw std::runtime_error("annual blocks: fewer sensors than the grid's");
-  study.grid = metrics::summarize_grid(study.sensors, settings.metrics, {}, sun ? &study.ase_hours : nullptr);
-  if (!sky.daylight_hours_quantity.empty()) {
-    study.grid.en17037 = metrics::en17037_daylight_provision(
-        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity), {}, settings.metrics);
-    study.daylight_hours_source = sky.daylight_hours_source;
-  }
+  summarize_annual_study(study, settings, sun != nullptr, sky.daylight_hours_quantity, sky.daylight_hours_source);
   return study;
 }
 

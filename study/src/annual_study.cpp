@@ -213,17 +213,26 @@ AnnualStudy compute_annual_study(const RadianceMatrix& coefficients, const Annua
                                   std::to_string(coefficients.rows()));
     study.ase_hours = metrics::ase_hours_per_sensor(*direct_sun, occupancy, settings.metrics);
   }
-  study.grid = metrics::summarize_grid(study.sensors, settings.metrics, {},
-                                       direct_sun ? &study.ase_hours : nullptr);
-  if (!sky.daylight_hours_quantity.empty()) {
-    if (sky.daylight_hours_quantity.size() != sky.steps.size())
-      throw std::invalid_argument("daylight-hours quantity has " + std::to_string(sky.daylight_hours_quantity.size()) +
-                                  " values for " + std::to_string(sky.steps.size()) + " steps");
-    study.grid.en17037 = metrics::en17037_daylight_provision(
-        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity), {}, settings.metrics);
-    study.daylight_hours_source = sky.daylight_hours_source;
-  }
+  summarize_annual_study(study, settings, direct_sun != nullptr, sky.daylight_hours_quantity,
+                         sky.daylight_hours_source);
   return study;
+}
+
+void summarize_annual_study(AnnualStudy& study, const AnnualStudySettings& settings, bool with_ase,
+                            const std::vector<double>& daylight_hours_quantity,
+                            const std::string& daylight_hours_source) {
+  const std::vector<double>& area_m2 = settings.sensor_area_m2;
+  if (!area_m2.empty() && area_m2.size() != study.sensors.size())
+    throw std::invalid_argument("the grid has " + std::to_string(area_m2.size()) + " sensor areas for " +
+                                std::to_string(study.sensors.size()) + " sensors");
+  study.grid = metrics::summarize_grid(study.sensors, settings.metrics, area_m2, with_ase ? &study.ase_hours : nullptr);
+  if (daylight_hours_quantity.empty()) return;
+  if (daylight_hours_quantity.size() != study.illuminance.step_count())
+    throw std::invalid_argument("daylight-hours quantity has " + std::to_string(daylight_hours_quantity.size()) +
+                                " values for " + std::to_string(study.illuminance.step_count()) + " steps");
+  study.grid.en17037 = metrics::en17037_daylight_provision(
+      study.illuminance, metrics::OccupancySchedule::brightest_half(daylight_hours_quantity), area_m2, settings.metrics);
+  study.daylight_hours_source = daylight_hours_source;
 }
 
 static nlohmann::json occupancy_json(const AnnualStudySettings& settings) {

@@ -380,10 +380,7 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
                                                        double(indirect_sun.lux(t, s)));
   const metrics::OccupancySchedule occupancy = occupancy_schedule(settings, sky.steps);
   study.sensors = metrics::compute_sensor_metrics(study.illuminance, occupancy, settings.metrics);
-  study.grid = metrics::summarize_grid(study.sensors, settings.metrics, {}, &study.ase_hours);
-  if (!sky.daylight_hours_quantity.empty())
-    study.grid.en17037 = metrics::en17037_daylight_provision(
-        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity), {}, settings.metrics);
+  summarize_annual_study(study, settings, true, sky.daylight_hours_quantity, sky.daylight_hours_source);
   return study;
 }
 
@@ -467,15 +464,7 @@ AnnualStudy compute_annual_study_with_sun(const RadianceMatrix& sky_coefficients
     }
   });
   study.sensors = metrics::compute_sensor_metrics(study.illuminance, occupancy, settings.metrics);
-  study.grid = metrics::summarize_grid(study.sensors, settings.metrics, {}, &study.ase_hours);
-  if (!sky.daylight_hours_quantity.empty()) {
-    if (sky.daylight_hours_quantity.size() != n_steps)
-      throw std::invalid_argument("daylight-hours quantity has " + std::to_string(sky.daylight_hours_quantity.size()) +
-                                  " values for " + std::to_string(n_steps) + " steps");
-    study.grid.en17037 = metrics::en17037_daylight_provision(
-        study.illuminance, metrics::OccupancySchedule::brightest_half(sky.daylight_hours_quantity), {}, settings.metrics);
-    study.daylight_hours_source = sky.daylight_hours_source;
-  }
+  summarize_annual_study(study, settings, true, sky.daylight_hours_quantity, sky.daylight_hours_source);
   return study;
 }
 

@@ -263,10 +263,57 @@ DaylightFactorUncertainty daylight_factor_uncertainty(const std::vector<double>&
   return u;
 }
 
-GridStatistics grid_statistics(const std::vector<double>& values, const std::vector<double>& thresholds) {
+namespace {
+
+/// grid_statistics over sensors standing for the areas `area_m2` (sums in sensor order, the
+/// median's walk in value order, ties by sensor index: no value depends on the threads).
+GridStatistics weighted_grid_statistics(const std::vector<double>& values, const std::vector<double>& thresholds,
+                                        const std::vector<double>& area_m2) {
+  GridStatistics g;
+  const std::size_t n = values.size();
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return values[a] < values[b]; });
+  g.min = values[order.front()];
+  g.max = values[order.back()];
+  double total_m2 = 0, sum = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    total_m2 += area_m2[i];
+    sum += area_m2[i] * values[i];
+  }
+  if (!(total_m2 > 0)) throw std::invalid_argument("grid statistics: the sensors' areas add up to no area");
+  g.mean = sum / total_m2;
+  // The value where the area, sorted by value, reaches half of the total.
+  double below_m2 = 0;
+  g.median = g.max;
+  for (std::size_t k = 0; k < n; ++k) {
+    below_m2 += area_m2[order[k]];
+    if (below_m2 < 0.5 * total_m2) continue;
+    g.median = below_m2 == 0.5 * total_m2 && k + 1 < n ? 0.5 * (values[order[k]] + values[order[k + 1]])
+                                                        : values[order[k]];
+    break;
+  }
+  g.uniformity = g.mean != 0 ? g.min / g.mean : 0;
+  for (double threshold : thresholds) {
+    double at_or_above_m2 = 0;  // ">=", as the unweighted count
+    for (std::size_t i = 0; i < n; ++i)
+      if (values[i] >= threshold) at_or_above_m2 += area_m2[i];
+    g.area_at_or_above_percent.emplace_back(threshold, 100.0 * at_or_above_m2 / total_m2);
+  }
+  return g;
+}
+
+}  // namespace
+
+GridStatistics grid_statistics(const std::vector<double>& values, const std::vector<double>& thresholds,
+                               const std::vector<double>& area_m2) {
   if (values.empty()) throw std::invalid_argument("grid statistics of an empty set of sensors");
   for (double v : values)
     if (!std::isfinite(v)) throw std::invalid_argument("grid statistics: a sensor value is not finite");
+  if (!area_m2.empty() && area_m2.size() != values.size())
+    throw std::invalid_argument("grid statistics: " + std::to_string(area_m2.size()) + " areas for " +
+                                std::to_string(values.size()) + " sensors");
+  if (!area_m2.empty()) return weighted_grid_statistics(values, thresholds, area_m2);
   GridStatistics g;
   std::vector<double> sorted = values;
   std::sort(sorted.begin(), sorted.end());

@@ -31,7 +31,8 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
   for (std::size_t g = 0; g < open.grids.size(); ++g) {
     const CaseTables::Grid& o = open.grids[g];
     const CaseTables::Grid& c = shaded.grids.at(g);  // the same grids: variants share the sensors
-    const AnnualStudySettings settings = annual_settings_of(project, ctx.weather, ctx.openings_of(o.name), o.name);
+    AnnualStudySettings settings = annual_settings_of(project, ctx.weather, ctx.openings_of(o.name), o.name);
+    settings.sensor_area_m2 = o.area_m2;
     const std::string folder = join_path(dir, o.name);
     ctx.progress.start("operated " + o.name, o.illuminance.step_count(), "hours");
     const OperatedStudy operated = compute_operated_study(
@@ -40,7 +41,7 @@ nlohmann::json run_operated(const project::Project& project, const project::Oper
         "operated shading: per hour '" + shaded_name + "' when more than " + format_number(rule.sunlit_limit_percent) +
             " % of the sensors see direct sun in '" + open_name + "', else '" + open_name + "'; " + ss.sky.description);
     std::filesystem::create_directories(folder);
-    write_sensors_csv(o.sensors, join_path(folder, "sensors.csv"));
+    write_sensors_csv(o.sensors, o.area_m2, join_path(folder, "sensors.csv"));
     ctx.outputs.record(join_path(folder, "sensors.csv"));
     ctx.outputs.record(write_annual_outputs(operated.study, o.sensors, settings, folder, which));
     write_shading_schedule_csv(operated, join_path(folder, "shading_schedule.csv"));

@@ -20,6 +20,7 @@ struct CaseTables {
   struct Grid {
     std::string name;
     std::vector<SensorPoint> sensors;
+    std::vector<double> area_m2;  ///< SensorGrid::area_m2
     metrics::IlluminanceTable illuminance;  ///< the annual illuminance
     metrics::IlluminanceTable direct_sun;   ///< direct-sun-only, zero-bounce (ASE's table)
   };

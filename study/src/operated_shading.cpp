@@ -103,15 +103,7 @@ OperatedStudy compute_operated_study(const metrics::IlluminanceTable& open,
   result.shaded_occupied_hours = result.schedule.shaded_steps(result.occupied);
   study.sensors = metrics::compute_sensor_metrics(study.illuminance, occupancy, settings.metrics);
   study.ase_hours = metrics::ase_hours_per_sensor(open_direct_sun, occupancy, settings.metrics);
-  study.grid = metrics::summarize_grid(study.sensors, settings.metrics, {}, &study.ase_hours);
-  if (!daylight_hours_quantity.empty()) {
-    if (daylight_hours_quantity.size() != open.step_count())
-      throw std::invalid_argument("daylight-hours quantity has " + std::to_string(daylight_hours_quantity.size()) +
-                                  " values for " + std::to_string(open.step_count()) + " steps");
-    study.grid.en17037 = metrics::en17037_daylight_provision(
-        study.illuminance, metrics::OccupancySchedule::brightest_half(daylight_hours_quantity), {}, settings.metrics);
-    study.daylight_hours_source = daylight_hours_source;
-  }
+  summarize_annual_study(study, settings, true, daylight_hours_quantity, daylight_hours_source);
   return result;
 }
 

@@ -581,6 +581,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
         if (set.on_cut > 0)
           out.warnings.push_back(warning_at(grid.location, set.description + "; " + OnCutWhy));
         std::vector<SensorPoint> kept;
+        std::vector<double> kept_area_m2;  // a dropped sensor's area leaves with it
         kept.reserve(grid.points.size() - bad.size());
         std::size_t j = 0;
         for (std::size_t i = 0; i < grid.points.size(); ++i) {
@@ -589,8 +590,10 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
             continue;
           }
           kept.push_back(grid.points[i]);
+          if (!grid.area_m2.empty()) kept_area_m2.push_back(grid.area_m2[i]);
         }
         grid.points = std::move(kept);
+        grid.area_m2 = std::move(kept_area_m2);
         grid.columns = grid.rows = 0;
         if (grid.points.empty())
           report(diag, grid.location,

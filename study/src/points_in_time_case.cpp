@@ -145,7 +145,7 @@ void run_points_in_time(const project::Project& project, const std::string& pref
     for (std::size_t k = 0; k < cases.size(); ++k) {
       std::vector<double> values(table.sensor_count());
       for (std::size_t i = 0; i < values.size(); ++i) values[i] = table.lux(k, i);
-      const GridStatistics st = grid_statistics(values, {});
+      const GridStatistics st = grid_statistics(values, {}, grid.area_m2);
       // The case's relative standard error over the sensors with light, as the DF's.
       const DaylightFactorUncertainty u = daylight_factor_uncertainty(values, stderr_lux[k]);
       add_point_in_time(ctx.results->grids[g], cases[k].name, project::point_sky_name(cases[k].sky), st, u);

@@ -56,24 +56,35 @@ void check_count(std::size_t sensors, std::size_t values, const std::string& pat
 
 }  // namespace
 
-void write_sensors_csv(const std::vector<SensorPoint>& sensors, const std::string& path) {
+void write_sensors_csv(const std::vector<SensorPoint>& sensors, const std::vector<double>& area_m2,
+                       const std::string& path) {
+  if (!area_m2.empty()) check_count(sensors.size(), area_m2.size(), path);
   write_file_atomically(path, [&](std::ostream& out) {
-    out << "index,x,y,z,nx,ny,nz\n";
-    for (std::size_t i = 0; i < sensors.size(); ++i)
+    out << "index,x,y,z,nx,ny,nz" << (area_m2.empty() ? "" : ",area_m2") << '\n';
+    for (std::size_t i = 0; i < sensors.size(); ++i) {
       out << index_xyz(i, sensors[i]) << ',' << coordinate(sensors[i].normal.x) << ','
-          << coordinate(sensors[i].normal.y) << ',' << coordinate(sensors[i].normal.z) << '\n';
+          << coordinate(sensors[i].normal.y) << ',' << coordinate(sensors[i].normal.z);
+      // The shortest text that reads back as the same double: `annual` weighs with the
+      // run's very areas (threshold_name's form).
+      if (!area_m2.empty()) out << ',' << threshold_name(area_m2[i]);
+      out << '\n';
+    }
   });
 }
 
-std::vector<SensorPoint> read_sensors_csv(const std::string& path) {
+std::vector<SensorPoint> read_sensors_csv(const std::string& path, std::vector<double>* area_m2) {
   std::ifstream in = open_input_file(path, "sensor file");
   const std::string expected_header = "index,x,y,z,nx,ny,nz";
+  const std::string with_areas = expected_header + ",area_m2";
   std::string line;
   if (!std::getline(in, line)) throw InputError(SourceLocation{path, 1, 0}, "empty file, expected the header '" + expected_header + "'");
   if (!line.empty() && line.back() == '\r') line.pop_back();
-  if (line != expected_header)
-    throw InputError(SourceLocation{path, 1, 1}, "expected the header '" + expected_header + "'", line);
+  if (line != expected_header && line != with_areas)
+    throw InputError(SourceLocation{path, 1, 1}, "expected the header '" + expected_header + "' or '" + with_areas + "'",
+                     line);
+  const std::size_t n_fields = line == with_areas ? 8 : 7;
   std::vector<SensorPoint> sensors;
+  std::vector<double> areas;
   int line_number = 1;
   while (std::getline(in, line)) {
     ++line_number;
@@ -84,22 +95,26 @@ std::vector<SensorPoint> read_sensors_csv(const std::string& path) {
     std::string field;
     while (std::getline(split, field, ',')) fields.push_back(field);
     if (!line.empty() && line.back() == ',') fields.emplace_back();
-    if (fields.size() != 7)
+    if (fields.size() != n_fields)
       throw InputError(SourceLocation{path, line_number, 0},
-                       "expected 7 fields, found " + std::to_string(fields.size()), line);
-    double v[7];
-    for (int f = 0; f < 7; ++f) {
+                       "expected " + std::to_string(n_fields) + " fields, found " + std::to_string(fields.size()), line);
+    double v[8];
+    for (std::size_t f = 0; f < n_fields; ++f) {
       char* end = nullptr;
       v[f] = std::strtod(fields[f].c_str(), &end);
       if (fields[f].empty() || *end != '\0' || !std::isfinite(v[f]))
-        throw InputError(SourceLocation{path, line_number, f + 1},
+        throw InputError(SourceLocation{path, line_number, static_cast<int>(f) + 1},
                          "field " + std::to_string(f + 1) + " is not a finite number: '" + fields[f] + "'", line);
     }
     if (v[0] != static_cast<double>(sensors.size()))
       throw InputError(SourceLocation{path, line_number, 1},
                        "index " + fields[0] + " out of sequence, expected " + std::to_string(sensors.size()), line);
+    if (n_fields == 8 && !(v[7] >= 0))
+      throw InputError(SourceLocation{path, line_number, 8}, "area_m2 is negative: '" + fields[7] + "'", line);
     sensors.push_back(SensorPoint{Vec3{v[1], v[2], v[3]}, Vec3{v[4], v[5], v[6]}});
+    if (n_fields == 8) areas.push_back(v[7]);
   }
+  if (area_m2) *area_m2 = std::move(areas);
   return sensors;
 }
 

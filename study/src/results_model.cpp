@@ -101,6 +101,7 @@ json grid_json(const GridResult& g) {
   json sensors = json::array();
   for (std::size_t i = 0; i < g.positions_m.size(); ++i) {
     json s = {{"position_m", vec(g.positions_m[i])}, {"normal", vec(g.normals[i])}};
+    if (i < g.area_m2.size()) s["area_m2"] = g.area_m2[i];
     if (i < g.lattice.column_of.size()) {
       s["column"] = g.lattice.column_of[i];
       s["row"] = g.lattice.row_of[i];
@@ -192,6 +193,8 @@ json grid_json(const GridResult& g) {
         {"sky", a->sky},
         {"da_verdicts_within_2_sigma",
          a->da_verdicts_within_2_sigma ? json(*a->da_verdicts_within_2_sigma) : json(nullptr)}};
+    if (a->da_verdicts_within_2_sigma_area_percent)
+      j["annual"]["da_verdicts_within_2_sigma_area_percent"] = *a->da_verdicts_within_2_sigma_area_percent;
   }
   j["sun_accuracy"] = nullptr;
   if (const auto& sa = g.sun_accuracy) {
@@ -441,11 +444,13 @@ struct Reader {
     for (const json& s : array(j, at_grid, "sensors")) {
       g.positions_m.push_back(vector(at(s, sk, "position_m"), sk + ".position_m"));
       g.normals.push_back(vector(at(s, sk, "normal"), sk + ".normal"));
+      if (s.is_object() && s.contains("area_m2")) g.area_m2.push_back(number(s, sk, "area_m2"));
       const int c = integer(s, sk, "column"), r = integer(s, sk, "row");
       if (c < 0 || r < 0 || c >= g.lattice.columns || r >= g.lattice.rows) fail(sk, "has a cell outside the lattice");
       g.lattice.column_of.push_back(c);
       g.lattice.row_of.push_back(r);
     }
+    if (!g.area_m2.empty() && g.area_m2.size() != g.positions_m.size()) fail(sk, "gives area_m2 for some sensors, not all");
     g.outline = polygon(at(j, at_grid, "outline"), at_grid + ".outline");
     for (const json& e : array(j, at_grid, "openings_drawn")) {
       if (!e.is_number_integer() || e.get<int>() < 0) fail(at_grid + ".openings_drawn", "holds a value that is not an index");
@@ -559,6 +564,8 @@ struct Reader {
       a.sky = text(an, ak, "sky");
       if (const auto v = optional_number(an, ak, "da_verdicts_within_2_sigma"))
         a.da_verdicts_within_2_sigma = static_cast<std::size_t>(*v);
+      if (an.contains("da_verdicts_within_2_sigma_area_percent"))
+        a.da_verdicts_within_2_sigma_area_percent = number(an, ak, "da_verdicts_within_2_sigma_area_percent");
       g.annual = a;
     }
     for (const json& p : array(j, at_grid, "points_in_time")) {
@@ -703,7 +710,8 @@ bool AnnualSummary::operator==(const AnnualSummary& o) const {
          en17037_daylight_hours_source == o.en17037_daylight_hours_source && en17037_openings == o.en17037_openings &&
          en17037_target_area_required_percent == o.en17037_target_area_required_percent && en17037 == o.en17037 &&
          sky == o.sky &&
-         da_verdicts_within_2_sigma == o.da_verdicts_within_2_sigma;
+         da_verdicts_within_2_sigma == o.da_verdicts_within_2_sigma &&
+         da_verdicts_within_2_sigma_area_percent == o.da_verdicts_within_2_sigma_area_percent;
 }
 std::string AnnualSummary::en17037_level() const {
   if (en17037.empty()) return "";
@@ -743,7 +751,7 @@ const SensorQuantity* GridResult::find_quantity(const std::string& kind) const {
   return nullptr;
 }
 bool GridResult::operator==(const GridResult& o) const {
-  return name == o.name && folder == o.folder && positions_m == o.positions_m && normals == o.normals &&
+  return name == o.name && folder == o.folder && positions_m == o.positions_m && normals == o.normals && area_m2 == o.area_m2 &&
          orientation == o.orientation && plan == o.plan && lattice == o.lattice && outline == o.outline &&
          openings_drawn == o.openings_drawn && dropped_outside_rooms == o.dropped_outside_rooms &&
          dropped_inside_solid == o.dropped_inside_solid && dropped_on_cut_surface == o.dropped_on_cut_surface &&

@@ -249,6 +249,7 @@ GridResult results_grid(const SensorGrid& grid, const std::string& folder, const
     g.positions_m.push_back(p.position);
     g.normals.push_back(p.normal);
   }
+  g.area_m2 = grid.area_m2;
   g.orientation = orientation_of(grid.points);
   g.lattice = sensor_lattice(grid.points);
   g.outline = grid.outline;
@@ -386,7 +387,9 @@ void add_annual(GridResult& grid, const AnnualStudy& study, const AnnualStudySet
 }
 
 void add_verdict_uncertainty(GridResult& grid, const VerdictUncertainty& u) {
-  if (grid.annual) grid.annual->da_verdicts_within_2_sigma = u.da_verdicts_uncertain;
+  if (!grid.annual) return;
+  grid.annual->da_verdicts_within_2_sigma = u.da_verdicts_uncertain;
+  grid.annual->da_verdicts_within_2_sigma_area_percent = u.da_verdicts_uncertain_area_percent;
 }
 
 void add_point_in_time(GridResult& grid, const std::string& name, const std::string& sky, const GridStatistics& st,

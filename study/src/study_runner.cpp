@@ -73,6 +73,8 @@ std::vector<double> sky_variance_of(const engine::DaylightCoefficients& c) {
 void add_verdict_uncertainty(nlohmann::json& grid, const VerdictUncertainty& u, bool ase) {
   nlohmann::json& j = grid["uncertainty"];
   j["da_verdicts_within_2_sigma"] = u.da_verdicts_uncertain;
+  if (u.da_verdicts_uncertain_area_percent)
+    j["da_verdicts_within_2_sigma_area_percent"] = *u.da_verdicts_uncertain_area_percent;
   j["illuminance_rms_stderr_lux"] = u.mean_occupied_stderr_lux;
   j["ase_verdicts_within_2_sigma"] = nullptr;
   if (ase) j["ase_note"] = "the exact direct sun's standard error is not estimated";
@@ -125,7 +127,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   // What an imported RADIANCE scene left out or approximated (docs/radiance-import.md).
   for (const Diagnostic& w : description.warnings)
     if (ctx.scene_warnings_logged.insert(w.location.to_string() + ": " + w.message).second)
-      log.line(prefix + "warning: " + w.location.to_string() + ": " + w.message);
+      log.line(prefix + (w.severity == Severity::Note ? "note: " : "warning: ") + w.location.to_string() + ": " +
+               w.message);
   const engine::Scene scene = engine::Scene::build(description);
   // No port, no sensor, a port that faces no decidable way, sensors outside every room or in
   // a solid: located errors; sets with drop_occluded lose those sensors (placement_check.h).
@@ -202,7 +205,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
                                                                          : SubPatchShares{});
     const RadianceMatrix& c = coefficient_matrices.back();
     if (ctx.executor.writes_results()) {
-      write_sensors_csv(world_grids[g].points, join_path(folder, "sensors.csv"));
+      write_sensors_csv(world_grids[g].points, world_grids[g].area_m2, join_path(folder, "sensors.csv"));
       ctx.outputs.record(join_path(folder, "sensors.csv"));
     }
     nlohmann::json gj = {{"name", grid.name}, {"sensors", grid.points.size()}, {"folder", folder}};
@@ -246,7 +249,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
         write_daylight_factor_csv(world_grids[g].points, df, join_path(folder, "daylight_factor.csv"), df_stderr);
         ctx.outputs.record(join_path(folder, "daylight_factor.csv"));
       }
-      const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent);
+      const GridStatistics st = grid_statistics(df, project.metrics.daylight_factor_thresholds_percent, grid.area_m2);
       nlohmann::json areas = nlohmann::json::array();
       for (const auto& [threshold, area] : st.area_at_or_above_percent)
         areas.push_back({{"threshold_percent", threshold}, {"area_percent", area}});
@@ -429,7 +432,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       sun[g].other_suns = {};
       if (!multiply) continue;
       progress.start(prefix + "annual " + grid.name, ss.sky.steps.size(), "hours");
-      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, ctx.openings_of(grid.name), grid.name);
+      AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, ctx.openings_of(grid.name), grid.name);
+      annual_settings.sensor_area_m2 = grid.area_m2;
       GridSunCoefficients grid_sun{&sun[g].direct, &ss.suns, &sun[g].bin_coefficients, &bins};
       // The direct sun held sparse from here on, where nothing else reads it (the operated
       // result reads its hourly table, the blocks of an MPI run their dense rows).
@@ -451,7 +455,7 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
       }
       if (computed && keep)  // operated shading picks hours by the direct sun's table
         keep->grids.push_back(
-            {grid.name, world_grids[g].points, computed->illuminance, direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps)});
+            {grid.name, world_grids[g].points, grid.area_m2, computed->illuminance, direct_sun_table(sun[g].direct, ss.suns, ss.sky.steps)});
       // The hourly table holds the sun now: its direct sun (sensors x suns) and sun-bin
       // coefficients (sensors x bins x RGB) are released before the outputs and the verdicts,
       // which read the table and the bins' variances alone (docs/photon-tracing.md "Scale").
@@ -482,7 +486,8 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     for (std::size_t g = 0; g < description.grids.size() && multiply; ++g) {
       const SensorGrid& grid = description.grids[g];
       progress.start(prefix + "annual " + grid.name, sky.steps.size(), "hours");
-      const AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, ctx.openings_of(grid.name), grid.name);
+      AnnualStudySettings annual_settings = annual_settings_of(project, ctx.weather, ctx.openings_of(grid.name), grid.name);
+      annual_settings.sensor_area_m2 = grid.area_m2;
       // By sensor blocks over the ranks of an MPI run; rank 0 alone gets the study and writes it.
       const std::optional<AnnualStudy> computed =
           ctx.executor.shares_sensor_blocks()

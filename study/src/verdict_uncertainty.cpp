@@ -81,6 +81,11 @@ VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky
   const double threshold = settings.metrics.da_threshold_lux;
   const double need = settings.metrics.sda_time_fraction * double(n_occupied);
   double sum_variance = 0;
+  const std::vector<double>& area_m2 = settings.sensor_area_m2;
+  if (!area_m2.empty() && area_m2.size() != n_sensors)
+    throw std::invalid_argument("verdict uncertainty: " + std::to_string(area_m2.size()) + " sensor areas for " +
+                                std::to_string(n_sensors) + " sensors");
+  double uncertain_m2 = 0, total_m2 = 0;  // in sensor order
   for (std::size_t first = 0; first < n_sensors; first += block) {
     const std::size_t last = std::min(n_sensors, first + block);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -128,10 +133,15 @@ VerdictUncertainty verdict_uncertainty(const AnnualStudy& study, const AnnualSky
       const double* row = variance.data() + (s - first) * n_occupied;
       for (std::size_t j = 0; j < n_occupied; ++j) sum_variance += row[j];
       if (uncertain[s - first]) ++out.da_verdicts_uncertain;
+      if (!area_m2.empty()) {
+        total_m2 += area_m2[s];
+        if (uncertain[s - first]) uncertain_m2 += area_m2[s];
+      }
     }
   }
   const std::size_t occupied = n_occupied;
   out.mean_occupied_stderr_lux = std::sqrt(sum_variance / (double(occupied) * double(n_sensors)));
+  if (!area_m2.empty() && total_m2 > 0) out.da_verdicts_uncertain_area_percent = 100.0 * uncertain_m2 / total_m2;
   return out;
 }
 

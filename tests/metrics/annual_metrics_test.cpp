@@ -129,7 +129,8 @@ TEST(AnnualMetrics, AreaWeightsWeightTheGridSummary) {
 TEST(AnnualMetrics, En17037CountsStepByStepAsSensorBySensor) {
   // The hours are counted step by step (the table's order); against a count sensor by sensor
   // written here, on a random table with values on and around every threshold, part of the
-  // steps daylight hours, and area weights: the same areas, bit for bit.
+  // steps daylight hours, and area weights: the same areas, bit for bit (each share 100 x the
+  // passing weight over the total weight).
   const std::size_t steps = 97, sensors = 41;
   std::vector<TimeStamp> stamps(steps, TimeStamp{6, 21, 12.5});
   IlluminanceTable table(stamps, sensors);
@@ -157,12 +158,12 @@ TEST(AnnualMetrics, En17037CountsStepByStepAsSensorBySensor) {
         target += table.lux(t, s) >= En17037Levels[l].target_lux;
         minimum += table.lux(t, s) >= En17037Levels[l].minimum_target_lux;
       }
-      target_sum += weights[s] * (target >= 0.5 * n ? 100.0 : 0.0);
-      minimum_sum += weights[s] * (minimum >= 0.5 * n ? 100.0 : 0.0);
+      target_sum += target >= 0.5 * n ? weights[s] : 0.0;
+      minimum_sum += minimum >= 0.5 * n ? weights[s] : 0.0;
       weight_sum += weights[s];
     }
-    EXPECT_EQ(got[l].target_area_percent, target_sum / weight_sum) << l;
-    EXPECT_EQ(got[l].minimum_target_area_percent, minimum_sum / weight_sum) << l;
+    EXPECT_EQ(got[l].target_area_percent, 100.0 * target_sum / weight_sum) << l;
+    EXPECT_EQ(got[l].minimum_target_area_percent, 100.0 * minimum_sum / weight_sum) << l;
     passed += got[l].target_area_percent > 0 && got[l].target_area_percent < 100;
   }
   EXPECT_GT(passed, 0);  // not all or nothing: the table reaches the levels in part

@@ -706,43 +706,52 @@ TEST(HoneybeeProject, AnOldModelsNorthAngleOrientsItWhereTheProjectWritesNoNorth
 
 // A Honeybee SensorGrid's `mesh` gives each sensor the floor area Honeybee weighs its result
 // by (honeybee-radiance-postprocess: "these meshes will be used to compute percentages of
-// occupied floor area"); dayphoton counts every sensor equally, and the mesh was ignored
-// without a word. Two sensors on faces of 1 and 0.25 m^2 (a cell trimmed at a wall): if only
-// the small one passes, Honeybee's share is 0.25 / 1.25 = 20 %, dayphoton's 50 %: the bound
-// 50 (|0.8 - 0.5| + |0.2 - 0.5|) = 30 points. Now a located warning at the grid's mesh, with
-// the bound; equal faces (or no mesh) give none.
-TEST(HoneybeeProject, AGridMeshOfUnequalFacesIsAWarningWithTheBound) {
-  EXPECT_NEAR(honeybee_mesh_share_bound_points({1.0, 0.25}), 30.0, 1e-12);
-  EXPECT_NEAR(honeybee_mesh_share_bound_points({0.25, 0.25, 0.25}), 0.0, 1e-12);
-  EXPECT_NEAR(honeybee_mesh_share_bound_points({2, 1, 1}), 50 * (0.5 - 1.0 / 3 + 2 * (1.0 / 3 - 0.25)), 1e-12);
-  auto grids = [](const std::string& second_face) {
+// occupied floor area"). dayphoton counted every sensor equally and only warned. Now the
+// grid's sensors carry their faces' areas (two sensors on faces of 1 and 0.25 m^2, a cell
+// trimmed at a wall) with a located note at the mesh; equal faces give no areas (equal
+// shares, the bytes of an unweighted grid) and no note; a mesh that cannot be read, or whose
+// face count is not the sensors', is a located warning and not used.
+TEST(HoneybeeProject, AGridMeshOfUnequalFacesWeighsItsSensorsByTheirFaces) {
+  auto grids = [](const std::string& faces) {
     return R"("sensor_grids": [{"identifier": "g", "sensors": [)"
            R"({"pos": [1.5, 1.5, 0.8], "dir": [0, 0, 1]}, {"pos": [2.75, 1.5, 0.8], "dir": [0, 0, 1]}],)"
            "\n"
            R"("mesh": {"type": "Mesh3D", "vertices": [[1, 1, 0.8], [2, 1, 0.8], [2, 2, 0.8], [1, 2, 0.8], )"
            R"([2.5, 1, 0.8], [3, 1, 0.8], [3, 1.5, 0.8], [2.5, 1.5, 0.8], [3, 2, 0.8], [2, 1.5, 0.8]], )"
-           R"("faces": [[0, 1, 2, 3], )" + second_face + "]}}]";
+           R"("faces": [)" + faces + "]}}]";
   };
-  for (const auto& [face, warned_expected] : {std::pair<std::string, bool>{"[4, 5, 6, 7]", true},  // 0.5 x 0.5 m
-                                              {"[1, 5, 8, 2]", false}}) {                          // 1 x 1 m
+  struct Case {
+    std::string faces;
+    std::vector<double> area_m2;  // the grid's areas
+    Severity severity;            // of the diagnostic at the mesh (Error: none)
+    std::string text;
+  };
+  const std::vector<Case> cases = {
+      {"[0, 1, 2, 3], [4, 5, 6, 7]", {1.0, 0.25}, Severity::Note,
+       "sensor grid 'g': the faces of its mesh differ in area (0.25 to 1 m^2, 1.25 m^2 in all): each sensor's share of "
+       "the area (sDA, ASE, EN 17037's target areas, the grid means) is weighted by its face's area, as Honeybee does"},
+      {"[0, 1, 2, 3], [1, 5, 8, 2]", {}, Severity::Error, ""},  // 1 x 1 m twice: equal shares
+      {"[0, 1, 2, 3]", {}, Severity::Warning, "sensor grid 'g': its mesh has 1 faces for 2 sensors, so it is not used"},
+      {"[0, 1, 2, 3], [4, 5, 60]", {}, Severity::Warning, "sensor grid 'g': its mesh cannot be read as a Mesh3D"},
+  };
+  for (const Case& c : cases) {
     TempDir dir;
-    dir.write("model.hbjson", model(room("r", box, outdoors(), outdoors()), grids(face)));
+    dir.write("model.hbjson", model(room("r", box, outdoors(), outdoors()), grids(c.faces)));
     const std::string yaml = dir.write("p.yaml", std::string(ProjectHead) +
                                                      "geometry: {honeybee: model.hbjson}\n"
                                                      "sensors:\n  honeybee_grids: all\n");
-    const Project p = load_project(yaml);
-    ASSERT_EQ(p.geometry.honeybee->model.grids.size(), 1u);
-    EXPECT_EQ(p.geometry.honeybee->model.grids[0].mesh_face_areas_m2.size(), 2u);
-    const SceneDescription scene = build_scene_description(p);
-    const Diagnostic* warning = nullptr;
+    const SceneDescription scene = build_scene_description(load_project(yaml));
+    ASSERT_EQ(scene.grids.size(), 1u);
+    EXPECT_EQ(scene.grids[0].area_m2, c.area_m2) << c.faces;
+    const Diagnostic* found = nullptr;
     for (const Diagnostic& w : scene.warnings)
-      if (w.message.find("sensor grid 'g': the faces of its mesh differ") != std::string::npos) warning = &w;
-    ASSERT_EQ(warning != nullptr, warned_expected) << face;
-    if (!warning) continue;
-    EXPECT_EQ(warning->location.file, dir.path + "/model.hbjson");
-    EXPECT_EQ(warning->location.line, 2);  // the line of "mesh"
-    EXPECT_NE(warning->message.find("0.25 to 1 m^2"), std::string::npos) << warning->message;
-    EXPECT_NE(warning->message.find("up to 30 percentage points"), std::string::npos) << warning->message;
+      if (w.message.find("sensor grid 'g'") != std::string::npos) found = &w;
+    ASSERT_EQ(found != nullptr, c.severity != Severity::Error) << c.faces;
+    if (!found) continue;
+    EXPECT_EQ(found->severity, c.severity) << c.faces;
+    EXPECT_EQ(found->location.file, dir.path + "/model.hbjson");
+    EXPECT_EQ(found->location.line, 2);  // the line of "mesh"
+    EXPECT_EQ(found->message.rfind(c.text, 0), 0u) << found->message;
   }
 }
 

@@ -132,6 +132,47 @@ TEST(SensorGrid, PolygonGridKeepsPointsInsideAtTheInset) {
   }
 }
 
+// A sensor whose lattice cell the outline cuts stands for the part of the cell inside it
+// (project/src/sensor_areas.h, where the choice is measured against equal counts). The
+// office (inset 0.5 m, spacing 0.5 m) and the L at inset 0.5 m have whole cells only: no
+// areas, every sensor an equal share. A 6 x 8 m room at inset 0, spacing 1 m, puts its
+// sensors on the walls: half a cell on a wall, a quarter in a corner (0.25 x 4 + 0.5 x 24 +
+// 1 x 35 = 48 m^2, the floor). The L at inset 0: 0.75 m^2 at its re-entrant corner (2, 2),
+// 0.5 on the notch's edges, 12 m^2 in all.
+TEST(SensorGrid, CellsCutByTheOutlineCarryTheirFloorArea) {
+  Project p = office_project();
+  EXPECT_TRUE(build_scene_description(p).grids[0].area_m2.empty());
+  p.sensors.grids = {l_shape_grid(0.5)};
+  EXPECT_TRUE(build_scene_description(p).grids[0].area_m2.empty());
+
+  p = office_project();
+  p.sensors.grids[0].inset_m = 0;
+  p.sensors.grids[0].spacing_m = 1;
+  const SensorGrid room = build_scene_description(p).grids[0];
+  ASSERT_EQ(room.points.size(), 63u);  // 7 x 9
+  ASSERT_EQ(room.area_m2.size(), 63u);
+  double total_m2 = 0;
+  for (std::size_t i = 0; i < room.points.size(); ++i) {
+    const Vec3 q = room.points[i].position;
+    const int on_walls = int(q.x == 0 || q.x == 6) + int(q.y == 0 || q.y == 8);
+    EXPECT_NEAR(room.area_m2[i], on_walls == 2 ? 0.25 : on_walls == 1 ? 0.5 : 1.0, 1e-12) << i;
+    total_m2 += room.area_m2[i];
+  }
+  EXPECT_NEAR(total_m2, 48.0, 1e-9);
+
+  p.sensors.grids = {l_shape_grid(0)};
+  const SensorGrid l = build_scene_description(p).grids[0];
+  ASSERT_EQ(l.area_m2.size(), l.points.size());
+  total_m2 = 0;
+  for (std::size_t i = 0; i < l.points.size(); ++i) {
+    const Vec3 q = l.points[i].position;
+    if (q.x == 2 && q.y == 2) EXPECT_NEAR(l.area_m2[i], 0.75, 1e-12);
+    if (q.x == 3 && q.y == 2) EXPECT_NEAR(l.area_m2[i], 0.5, 1e-12);
+    total_m2 += l.area_m2[i];
+  }
+  EXPECT_NEAR(total_m2, 12.0, 1e-9);
+}
+
 TEST(SensorGrid, GridsWithoutPointsAndUnknownRoomsAreLocatedErrors) {
   Project p = office_project();
   p.sensors.grids[0].inset_m = 3.5;  // 6 - 7 < 0

@@ -67,7 +67,7 @@ void write_grid(const std::string& dir, bool with_metrics) {
     m[i].udi_autonomous_percent = 40;
     m[i].mean_occupied_lux = 100.0 * static_cast<double>(i);
   }
-  write_sensors_csv(sensors, dir + "/sensors.csv");
+  write_sensors_csv(sensors, {}, dir + "/sensors.csv");
   write_daylight_factor_csv(sensors, df, dir + "/daylight_factor.csv");
   if (!with_metrics) return;
   write_metrics_csv(sensors, m, metrics::MetricSettings{}, {}, dir + "/metrics.csv");

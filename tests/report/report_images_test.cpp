@@ -102,7 +102,7 @@ void write_grid_folder(const std::string& dir, const std::vector<SensorPoint>& s
     m[i].udi_autonomous_percent = 100 * u(rng);
     m[i].mean_occupied_lux = 5000 * u(rng);
   }
-  write_sensors_csv(sensors, dir + "/sensors.csv");
+  write_sensors_csv(sensors, {}, dir + "/sensors.csv");
   write_daylight_factor_csv(sensors, df, dir + "/daylight_factor.csv");
   write_metrics_csv(sensors, m, metrics::MetricSettings{}, {}, dir + "/metrics.csv");
 }

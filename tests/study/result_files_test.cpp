@@ -35,7 +35,7 @@ const std::vector<SensorPoint> Sensors = {{{0.5, 1.25, 0.8}, {0, 0, 1}}, {{-2.0,
 
 TEST(ResultFiles, SensorsCsvRoundTrips) {
   const std::string path = temp_path("sensors.csv");
-  write_sensors_csv(Sensors, path);
+  write_sensors_csv(Sensors, {}, path);
   const auto lines = lines_of(path);
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0], "index,x,y,z,nx,ny,nz");

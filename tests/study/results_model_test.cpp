@@ -64,6 +64,7 @@ ResultsModel full_model() {
   g.name = "workplane";
   g.folder = "variants/tinted/workplane";
   g.positions_m = {{0.25, 0.25, 0.8}, {0.75, 0.25, 0.8}, {0.25, 0.75, 0.8}};
+  g.area_m2 = {0.25, 0.25, 0.1};  // a grid whose sensors stand for unequal areas
   g.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
   g.orientation = GridOrientation::Tilted;
   g.plan = false;
@@ -141,6 +142,7 @@ ResultsModel full_model() {
   a.en17037 = {{"minimum", 300, 100, 80, 100, true}, {"medium", 500, 300, 40, 80, false}};
   a.sky = "Perez";
   a.da_verdicts_within_2_sigma = 1;
+  a.da_verdicts_within_2_sigma_area_percent = 16.7;
   g.annual = a;
   g.points_in_time = {{"noon", "cie_overcast", 500, 450, 100, 900, 0.2, 1.25, 3.5},
                       {"older_run", "weather", 800, 700, 90, 2000, 0.1, std::nullopt, std::nullopt}};

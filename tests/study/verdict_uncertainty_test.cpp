@@ -43,7 +43,18 @@ TEST(VerdictUncertainty, SensorsWithinTwoSigmaOfTheDaVerdictAreCounted) {
   }
   const VerdictUncertainty u = verdict_uncertainty(study, sky, {v, v, v}, nullptr, settings);
   EXPECT_EQ(u.da_verdicts_uncertain, 1u);
+  EXPECT_FALSE(u.da_verdicts_uncertain_area_percent);  // equal shares: the count's share
   EXPECT_NEAR(u.mean_occupied_stderr_lux, sigma_lux, 1e-9);
+  // Sensors standing for 0.2, 1 and 1 m^2 (a Honeybee mesh's column of trimmed cells): the
+  // open verdict is 0.2 / 2.2 of the area, the most sDA can move by.
+  AnnualStudySettings weighted = settings;
+  weighted.sensor_area_m2 = {0.2, 1.0, 1.0};
+  const VerdictUncertainty w = verdict_uncertainty(study, sky, {v, v, v}, nullptr, weighted);
+  EXPECT_EQ(w.da_verdicts_uncertain, 1u);
+  ASSERT_TRUE(w.da_verdicts_uncertain_area_percent);
+  EXPECT_NEAR(*w.da_verdicts_uncertain_area_percent, 100.0 * 0.2 / 2.2, 1e-12);
+  weighted.sensor_area_m2 = {1.0, 1.0};
+  EXPECT_THROW(verdict_uncertainty(study, sky, {v, v, v}, nullptr, weighted), std::invalid_argument);
   // Half the standard error: sensor 0's band 300 .. 320 still reaches the threshold
   // ("at least" 300 lx), so no verdict is open.
   const VerdictUncertainty half = verdict_uncertainty(study, sky, {v / 4, v / 4, v / 4}, nullptr, settings);

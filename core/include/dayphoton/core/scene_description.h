@@ -199,6 +199,11 @@ struct SensorGrid {
   /// For generated grids that are a full lattice (row-major, rows outer): room grids and wall
   /// and rectangle grids with no point left out; 0 otherwise.
   int columns = 0, rows = 0;
+  /// The floor area each sensor stands for (m^2), one per point, when the sensors stand for
+  /// unequal areas: the faces of a Honeybee grid's mesh, or a generated grid's cells cut by
+  /// its outline. Empty: every sensor an equal share. Every area share and spatial mean of the
+  /// grid is weighted by these (docs/metrics.md, "Sensor areas").
+  std::vector<double> area_m2;
   SourceLocation location;
 };
 
@@ -219,7 +224,8 @@ struct SceneDescription {
   /// The world point at the description's (0, 0, 0), metres (whole kilometres).
   Vec3 world_origin_m{0, 0, 0};
   /// Non-fatal findings of the geometry stage, located (e.g. what a RADIANCE import left
-  /// out or approximated), for `check` and the run log.
+  /// out or approximated), for `check` and the run log; Severity::Note for what is done
+  /// as the user would expect but worth saying (a Honeybee grid weighted by its mesh).
   std::vector<Diagnostic> warnings;
 
   int find_material(const std::string& name) const;

@@ -43,25 +43,18 @@ struct HoneybeeSurface {
 };
 
 /// One sensor grid of `properties.radiance.sensor_grids`.
-/// A Honeybee grid whose mesh faces could move an area share (sDA, ASE, EN 17037's target
-/// areas) by this many percentage points or more between Honeybee's area weighting and
-/// dayphoton's equal weights is warned about (honeybee_mesh_share_bound_points).
-constexpr double HoneybeeMeshShareWarnPoints = 1.0;
-
-/// The largest difference, in percentage points, between the share of an area weighted by
-/// `areas_m2` and the share of its sensors counted equally, over every set of sensors: the
-/// total variation distance 50 sum_i |a_i / A - 1 / n| (100 for percent, halved).
-double honeybee_mesh_share_bound_points(const std::vector<double>& areas_m2);
-
 struct HoneybeeGrid {
   std::string identifier;
   std::vector<SensorPoint> points;  ///< metres; normals of unit length
   SourceLocation location;
   /// The areas (m^2) of the faces of the grid's `mesh` (Mesh3D: one face per sensor, the
-  /// floor area Honeybee weighs each sensor's result by); empty without a mesh, or when it is
-  /// malformed or its face count is not the sensors'. dayphoton weighs every sensor equally:
-  /// project loading warns when these differ (load_project.cpp).
+  /// floor area Honeybee weighs each sensor's result by, honeybee-radiance-postprocess); empty
+  /// without a mesh, or when it is malformed or its face count is not the sensors'. The
+  /// project loader gives them to the grid's sensors when they differ (load_project.cpp).
   std::vector<double> mesh_face_areas_m2;
+  /// Why a mesh the grid has is not used (cannot be read, or another face count than the
+  /// sensors'), for a located warning at `mesh_location`; empty otherwise.
+  std::string mesh_problem;
   SourceLocation mesh_location;
 };
 
@@ -87,7 +80,8 @@ struct HoneybeeModel {
   /// boundaries).
   std::vector<std::string> notes;
   /// Located warnings of the reader (what is read but not modelled as Honeybee would, e.g.
-  /// the dynamic states of an aperture); `check` and `run` print them with the scene's.
+  /// the dynamic states of an aperture) and notes (Severity::Note: a grid weighted by its
+  /// mesh's face areas); `check` and `run` print them with the scene's.
   std::vector<Diagnostic> warnings;
 };
 

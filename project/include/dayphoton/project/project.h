@@ -450,6 +450,9 @@ struct GridSpec {
 struct PointsSpec {
   std::string name;
   std::vector<SensorPoint> points;  ///< inline points
+  /// The area each inline point stands for (m^2; SensorGrid::area_m2): a Honeybee grid's
+  /// unequal mesh faces; empty: equal shares.
+  std::vector<double> area_m2;
   std::string file;                 ///< resolved .pts path (x y z nx ny nz per line), or empty
   std::string file_as_written;
   /// `units` of the .pts file (project/length_units.h), metres per unit: its positions are

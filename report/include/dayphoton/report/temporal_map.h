@@ -33,8 +33,9 @@ inline constexpr double NightLux = 1.0;
 inline constexpr std::array<std::uint8_t, 4> NightGrey{60, 60, 60, 255};
 inline constexpr int TemporalPxPerDay = 2, TemporalPxPerHour = 8;
 
-/// The map of a table: the mean over its sensors per record, binned by day and clock hour.
-TemporalMap temporal_map(const metrics::IlluminanceTable& table);
+/// The map of a table: the mean over its sensors per record (over their areas when `area_m2`
+/// is given, study::GridResult::area_m2), binned by day and clock hour.
+TemporalMap temporal_map(const metrics::IlluminanceTable& table, const std::vector<double>& area_m2 = {});
 
 /// The picture before the legend, and where pixel (day 0, hour 23) of the map starts.
 struct TemporalPicture {

@@ -104,6 +104,9 @@ struct AnnualStudySettings {
   metrics::MetricSettings metrics;
   metrics::OccupancyPlan occupancy;    ///< default 08:00-18:00 every day, local standard time
   metrics::WeatherCalendar calendar;   ///< of the weather file (weather_calendar)
+  /// The area each sensor stands for (m^2; SensorGrid::area_m2, sensors.csv's `area_m2`):
+  /// every area share and grid mean is weighted by it; empty: equal shares.
+  std::vector<double> sensor_area_m2;
 };
 
 /// The occupied steps of `settings` for `steps`. Throws std::invalid_argument for a daily
@@ -131,6 +134,14 @@ AnnualStudy compute_annual_study(const RadianceMatrix& coefficients, const Annua
                                  const AnnualStudySettings& settings,
                                  const metrics::IlluminanceTable* direct_sun = nullptr,
                                  const SubPatchShares* shares = nullptr);
+
+/// The grid's metrics from `study.sensors` (and `study.ase_hours` when `with_ase`), and
+/// EN 17037's from `study.illuminance` over the brightest half of `daylight_hours_quantity`
+/// (none when it is empty), every share and mean weighted by settings.sensor_area_m2: the
+/// one place the grid's shares are computed. Throws std::invalid_argument on a size mismatch.
+void summarize_annual_study(AnnualStudy& study, const AnnualStudySettings& settings, bool with_ase,
+                            const std::vector<double>& daylight_hours_quantity,
+                            const std::string& daylight_hours_source);
 
 /// The grid metrics as a JSON object (text), for summary.json: sensor and occupied-hour
 /// counts, the settings, the means of every per-sensor metric, sDA, ASE (null if not

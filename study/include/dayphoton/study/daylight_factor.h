@@ -123,13 +123,17 @@ DaylightFactorUncertainty daylight_factor_uncertainty(const std::vector<double>&
 struct GridStatistics {
   double mean = 0, median = 0, min = 0, max = 0;
   double uniformity = 0;  ///< min / mean (0 if mean is 0)
-  /// Per threshold: percentage of sensors with value >= threshold (each sensor stands for
-  /// an equal area on a regular grid).
+  /// Per threshold: percentage of the area with value >= threshold (of the sensors, each an
+  /// equal share, unless area_m2 is given).
   std::vector<std::pair<double, double>> area_at_or_above_percent;
 };
-/// Median of an even count is the mean of the two middle values. Throws
-/// std::invalid_argument for an empty or non-finite set.
-GridStatistics grid_statistics(const std::vector<double>& values,
-                               const std::vector<double>& thresholds);
+/// Median of an even count is the mean of the two middle values. With `area_m2` (one per
+/// value; SensorGrid::area_m2) the mean, the median and the shares are of the area: the
+/// median is the value where the area sorted by value reaches half the total (the mean of
+/// two values where it reaches exactly half between them); min, max and uniformity (min /
+/// mean) stay of the sensors. Empty: equal shares, the unweighted formulas. Throws
+/// std::invalid_argument for an empty or non-finite set, or another count of areas.
+GridStatistics grid_statistics(const std::vector<double>& values, const std::vector<double>& thresholds,
+                               const std::vector<double>& area_m2 = {});
 
 }  // namespace dayphoton::study

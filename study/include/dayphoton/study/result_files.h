@@ -11,12 +11,16 @@
 
 namespace dayphoton::study {
 
-/// sensors.csv: index,x,y,z,nx,ny,nz (metres, world coordinates; micrometre resolution).
-void write_sensors_csv(const std::vector<SensorPoint>& sensors, const std::string& path);
-/// Read a sensors.csv back (`dayphoton annual` takes the coordinates from it). Throws
-/// InputError located file:line:field on a wrong header, a non-number or an index out of
+/// sensors.csv: index,x,y,z,nx,ny,nz (metres, world coordinates; micrometre resolution),
+/// then `area_m2` (SensorGrid::area_m2, the shortest text of each double) when `area_m2` is
+/// not empty: the grid's sensors stand for unequal areas.
+void write_sensors_csv(const std::vector<SensorPoint>& sensors, const std::vector<double>& area_m2,
+                       const std::string& path);
+/// Read a sensors.csv back (`dayphoton annual` takes the coordinates from it, and the areas
+/// into `area_m2` when given: empty without the column). Throws InputError located
+/// file:line:field on a wrong header, a non-number, a negative area or an index out of
 /// sequence.
-std::vector<SensorPoint> read_sensors_csv(const std::string& path);
+std::vector<SensorPoint> read_sensors_csv(const std::string& path, std::vector<double>* area_m2 = nullptr);
 /// daylight_factor.csv: index,x,y,z,df_percent (4 decimals), and df_stderr_percent (the
 /// Monte Carlo standard error of df_percent, 4 decimals) when `stderr_percent` is not empty.
 void write_daylight_factor_csv(const std::vector<SensorPoint>& sensors,

@@ -181,6 +181,9 @@ struct AnnualSummary {
   std::string sky;  ///< where the sky matrix came from
   /// Sensors whose DA verdict (DA >= sDA fraction) could flip within 2 standard errors.
   std::optional<std::size_t> da_verdicts_within_2_sigma;
+  /// Their share of the area (percent), for a grid whose sensors stand for unequal areas
+  /// (GridResult::area_m2); none (and not written) otherwise, where it is the count's share.
+  std::optional<double> da_verdicts_within_2_sigma_area_percent;
 
   /// The highest EN 17037 level passed: "none", or "" when not computed.
   std::string en17037_level() const;
@@ -246,6 +249,10 @@ struct GridResult {
   std::string name;
   std::string folder;  ///< relative to the output folder, '/'-separated
   std::vector<Vec3> positions_m, normals;  ///< per sensor, world coordinates
+  /// Per sensor, the area it stands for (m^2; SensorGrid::area_m2) when the sensors stand
+  /// for unequal areas: every share and mean of the grid is weighted by it. Empty (and not
+  /// written) otherwise.
+  std::vector<double> area_m2;
   GridOrientation orientation = GridOrientation::Horizontal;
   bool plan = true;   ///< drawn as a plan (horizontal, or points); else an elevation in its plane
   SensorLattice lattice;

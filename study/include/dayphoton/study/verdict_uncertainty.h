@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "dayphoton/core/radiance_matrix.h"
@@ -48,6 +49,10 @@ constexpr std::size_t VerdictSensorBlockValues = std::size_t(1) << 21;
 
 struct VerdictUncertainty {
   std::size_t da_verdicts_uncertain = 0;  ///< sensors whose DA verdict could flip
+  /// Their share of the grid's area (percent): the most sDA can move by. Set only for a grid
+  /// whose sensors stand for unequal areas (AnnualStudySettings::sensor_area_m2), where it
+  /// differs from the count's share.
+  std::optional<double> da_verdicts_uncertain_area_percent;
   double mean_occupied_stderr_lux = 0;    ///< RMS over sensors and occupied hours of the standard error
 };
 
