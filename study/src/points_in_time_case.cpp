@@ -9,6 +9,7 @@
 #include "dayphoton/study/annual_sun.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/point_in_time.h"
+#include "dayphoton/study/point_in_time_accuracy.h"
 #include "dayphoton/study/point_in_time_uncertainty.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/results_model_builder.h"
@@ -90,6 +91,7 @@ void run_points_in_time(const project::Project& project, const std::string& pref
                               ctx.plan.seed, DirectSunValues::Luminance, {}, &direct_sun_variance);
     // Per case, the standard error of every sensor's illuminance (point_in_time_uncertainty.h).
     std::vector<std::vector<double>> stderr_lux(cases.size());
+    std::vector<PointInTimeVarianceParts> parts(cases.size());
     for (std::size_t k = 0; k < cases.size(); ++k) {
       const int sky_index = k < ctx.plan.point_in_time_sky.size() ? ctx.plan.point_in_time_sky[k] : -1;
       RadianceMatrix column(skies.sky.matrix.rows(), 1, skies.sky.matrix.components());
@@ -117,7 +119,8 @@ void run_points_in_time(const project::Project& project, const std::string& pref
         v.stencil = bins->weights(skies.suns[i].direction);
         sun_variance = std::move(v);
       }
-      stderr_lux[k] = point_in_time_stderr_lux(sky_variance, sun_variance ? &*sun_variance : nullptr);
+      parts[k] = point_in_time_variance_parts(sky_variance, sun_variance ? &*sun_variance : nullptr);
+      stderr_lux[k] = parts[k].stderr_lux();
       if (sky_index < 0) continue;
       // The CIE cases' direct part from their continuous skies, as the daylight factor's.
       std::vector<double> correction =
@@ -148,6 +151,10 @@ void run_points_in_time(const project::Project& project, const std::string& pref
       const GridStatistics st = grid_statistics(values, {});
       // The case's relative standard error over the sensors with light, as the DF's.
       const DaylightFactorUncertainty u = daylight_factor_uncertainty(values, stderr_lux[k]);
+      const PointInTimeAccuracy accuracy = assess_point_in_time(
+          values, parts[k], sim.accuracy ? sim.accuracy->target_df_relative_stderr_percent : 0.0);
+      ctx.log.line(prefix + "point in time " + grid.name + " " + cases[k].name + ": " +
+                   point_in_time_accuracy_sentence(accuracy) + " (RMS " + std::to_string(u.rms_relative_stderr_percent) + " %)");
       add_point_in_time(ctx.results->grids[g], cases[k].name, project::point_sky_name(cases[k].sky), st, u);
       entries.push_back({{"name", cases[k].name}, {"sky", project::point_sky_name(cases[k].sky)},
                          {"illuminance_lux", {{"mean", st.mean}, {"median", st.median}, {"min", st.min},
