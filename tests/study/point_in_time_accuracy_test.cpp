@@ -69,9 +69,9 @@ TEST(PointInTimeAccuracy, TheStatisticIsTheNinetyFifthPercentileOverTheSensorsWi
   EXPECT_EQ(met.stop_reason, "target met");
   // Without a target: the statistic, no status.
   EXPECT_EQ(assess_point_in_time(value, p, 0.0).status, "");
-  // A sensor without light is no part of it.
-  value[19] = 0;
-  EXPECT_NEAR(assess_point_in_time(value, p, 1.0).reached_percent, 1.8, 1e-12);
+  // Sensors without light are no part of it: of the 18 left the 18th smallest, sensor 17's.
+  value[18] = value[19] = 0;
+  EXPECT_NEAR(assess_point_in_time(value, p, 1.0).reached_percent, 1.7, 1e-12);
 }
 
 TEST(PointInTimeAccuracy, TheStopIsThatOfThePartThatKeepsTheCaseAbove) {
@@ -91,28 +91,30 @@ TEST(PointInTimeAccuracy, TheStopIsThatOfThePartThatKeepsTheCaseAbove) {
 }
 
 TEST(PointInTimeAccuracy, ThePenumbraGetsMoreShadowRaysUntilTheLimit) {
-  // 20 sensors at 1000 lx, others' variance 1 lx^2 (0.1 %); sensor 3 in a penumbra.
+  // 20 sensors at 1000 lx, others' variance 1 lx^2 (0.1 %); sensors 3 and 4 in a penumbra (the
+  // 95th percentile's 19 sensors hold one of them).
   const std::vector<double> value(20, 1000.0), other(20, 1.0);
-  std::vector<double> direct(20, 0.0);
-  EXPECT_EQ(next_direct_sun_samples(value, other, direct, 16, 1.0), 16);  // nothing to raise
+  auto penumbra = [](double v) {
+    std::vector<double> d(20, 0.0);
+    d[3] = d[4] = v;
+    return d;
+  };
+  EXPECT_EQ(next_direct_sun_samples(value, other, penumbra(0.0), 16, 1.0), 16);  // nothing to raise
   // Budget at the aim (0.9 x 1 % of 1000 lx)^2 = 81 lx^2. A direct variance of 100: a fall of
   // 100 / 40.5 = 2.47 asked; 4 x 4 -> 8 x 8 strata give (4/8)^3 = 1/8: enough.
-  direct[3] = 100.0;
-  EXPECT_EQ(next_direct_sun_samples(value, other, direct, 16, 1.0), 64);
+  EXPECT_EQ(next_direct_sun_samples(value, other, penumbra(100.0), 16, 1.0), 64);
   // 1000 lx^2: a fall of 24.7, more than 8 gives: 16 x 16 at once.
-  direct[3] = 1000.0;
-  EXPECT_EQ(next_direct_sun_samples(value, other, direct, 16, 1.0), 256);
+  EXPECT_EQ(next_direct_sun_samples(value, other, penumbra(1000.0), 16, 1.0), 256);
   // At the limit, or a project's own count above it: kept.
-  EXPECT_EQ(next_direct_sun_samples(value, other, direct, MaxDirectSamplesPerBin, 1.0), MaxDirectSamplesPerBin);
-  EXPECT_EQ(next_direct_sun_samples(value, other, direct, 400, 1.0), 400);
-  // Not when the direct sun is under half the budget (the other parts keep it above).
-  direct[3] = 30.0;
+  EXPECT_EQ(next_direct_sun_samples(value, other, penumbra(1000.0), MaxDirectSamplesPerBin, 1.0),
+            MaxDirectSamplesPerBin);
+  EXPECT_EQ(next_direct_sun_samples(value, other, penumbra(1000.0), 400, 1.0), 400);
+  // Not when the direct sun is under half the budget (the other parts keep them above).
   std::vector<double> big_other = other;
-  big_other[3] = 200.0;
-  EXPECT_EQ(next_direct_sun_samples(value, big_other, direct, 16, 1.0), 16);
+  big_other[3] = big_other[4] = 200.0;
+  EXPECT_EQ(next_direct_sun_samples(value, big_other, penumbra(30.0), 16, 1.0), 16);
   // Nor without a target.
-  direct[3] = 1000.0;
-  EXPECT_EQ(next_direct_sun_samples(value, other, direct, 16, 0.0), 16);
+  EXPECT_EQ(next_direct_sun_samples(value, other, penumbra(1000.0), 16, 0.0), 16);
 }
 
 TEST(PointInTimeAccuracy, TheSunRoundsMeasureACaseByItsStencil) {
