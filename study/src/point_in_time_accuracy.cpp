@@ -3,22 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "dayphoton/study/accuracy_rounds.h"
 #include "dayphoton/study/plan_policy.h"
+#include "accuracy_round_loop.h"
 
 namespace dayphoton::study {
-namespace {
-
-std::string percent(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
-
-}  // namespace
-
 PointInTimeAccuracy assess_point_in_time(const std::vector<double>& value_lux, const PointInTimeVarianceParts& parts,
                                          double target_percent) {
   PointInTimeAccuracy a;
@@ -93,12 +83,12 @@ int next_direct_sun_samples(const std::vector<double>& value_lux, const std::vec
 }
 
 std::string point_in_time_accuracy_sentence(const PointInTimeAccuracy& a) {
-  std::string s = "relative standard error (95th percentile) " + percent(a.reached_percent) + " %";
+  std::string s = "relative standard error (95th percentile) " + round_number(a.reached_percent) + " %";
   if (a.target_percent > 0)
-    s += std::string(a.reached_percent <= a.target_percent ? " <= " : " > ") + "target " + percent(a.target_percent) +
+    s += std::string(a.reached_percent <= a.target_percent ? " <= " : " > ") + "target " + round_number(a.target_percent) +
          " %: " + a.stop_reason;
-  s += " (variance: sky " + percent(100 * a.sky_share) + " %, indirect sun " + percent(100 * a.indirect_sun_share) +
-       " %, direct sun " + percent(100 * a.direct_sun_share) + " %";
+  s += " (variance: sky " + round_number(100 * a.sky_share) + " %, indirect sun " + round_number(100 * a.indirect_sun_share) +
+       " %, direct sun " + round_number(100 * a.direct_sun_share) + " %";
   if (a.direct_sun_samples > 0) s += "; " + std::to_string(a.direct_sun_samples) + " shadow rays over the sun's disc";
   return s + ")";
 }

@@ -26,6 +26,7 @@
 #include "dayphoton/study/results_model.h"
 #include "dayphoton/study/study_runner.h"
 #include "dayphoton/study/sun_accuracy_rounds.h"
+#include "numeric_csv.h"
 #include "point_in_time_room.h"
 #include "../temp_folder.h"
 
@@ -176,16 +177,9 @@ DefaultAccuracyRun run_room_at_the_default_accuracy() {
   std::stringstream text;
   text << log.rdbuf();
   r.log = text.str();
-  std::ifstream csv(dir / "out" / "floor" / "point_in_time.csv");
-  std::string line, field;
-  std::getline(csv, line);
   std::vector<std::string> names;
-  std::stringstream header(line);
-  while (std::getline(header, field, ',')) names.push_back(field);
-  while (std::getline(csv, line)) {
-    std::stringstream fields(line);
-    for (std::size_t i = 0; std::getline(fields, field, ','); ++i) r.columns[names.at(i)].push_back(std::stod(field));
-  }
+  for (const std::vector<double>& row : test::read_csv(dir / "out" / "floor" / "point_in_time.csv", names))
+    for (std::size_t i = 0; i < row.size() && i < names.size(); ++i) r.columns[names[i]].push_back(row[i]);
   return r;
 }
 
@@ -193,8 +187,8 @@ TEST(PointInTimeAccuracy, AtTheDefaultAccuracyEveryCaseMeetsTheTargetOrStatesThe
   const DefaultAccuracyRun r = run_room_at_the_default_accuracy();
   const nlohmann::json& grid = r.summary.at("grids").at(0);
   ASSERT_EQ(grid.at("point_in_time").size(), 3u);
-  ASSERT_EQ(r.results.grids.size(), 1u);
-  ASSERT_EQ(r.results.grids[0].points_in_time.size(), 3u);
+  ASSERT_EQ(r.results.cases.at(0).grids.size(), 1u);
+  ASSERT_EQ(r.results.cases.at(0).grids[0].points_in_time.size(), 3u);
   for (std::size_t k = 0; k < 3; ++k) {
     const nlohmann::json& c = grid.at("point_in_time").at(k);
     const std::string name = c.at("name");
@@ -223,7 +217,7 @@ TEST(PointInTimeAccuracy, AtTheDefaultAccuracyEveryCaseMeetsTheTargetOrStatesThe
                           u.at("variance_shares").at("direct_sun").get<double>();
     EXPECT_NEAR(shares, 1.0, 1e-9) << name;
     // results.json carries the same statement, the run log a line per case.
-    const PointInTimeSummary& s = r.results.grids[0].points_in_time[k];
+    const PointInTimeSummary& s = r.results.cases.at(0).grids[0].points_in_time[k];
     ASSERT_TRUE(s.accuracy.has_value()) << name;
     EXPECT_EQ(s.accuracy->status, u.at("status").get<std::string>()) << name;
     EXPECT_EQ(s.accuracy->stop_reason, stop) << name;
