@@ -32,6 +32,20 @@ namespace dayphoton::report {
 
 namespace {
 
+/// A point-in-time case against the accuracy target, in words (docs/report.md): "0.8 % &#8804; 1 %:
+/// met", "3.1 % &gt; 1 %: direct rays limit (direct sun)", or "no target" for a run with photon
+/// counts, "not stated" for files made before it was stated.
+std::string point_in_time_accuracy_words(const study::PointInTimeSummary& p) {
+  if (!p.accuracy) return p.rms_relative_stderr_percent ? "no target" : "not stated";
+  const study::PointInTimeSummary::AccuracyReached& a = *p.accuracy;
+  const std::string reached = format_value(a.reached_percent, Precision::DaylightFactor) + " %";
+  const std::string target = format_value(a.target_percent, Precision::DaylightFactor) + " %";
+  if (a.status == "met") return reached + " &#8804; " + target + ": met";
+  return reached + " &gt; " + target + ": " + esc(a.stop_reason) +
+         (a.limiting_part.empty() ? std::string() : " (" + esc(a.limiting_part) + ")");
+}
+
+
 namespace fs = std::filesystem;
 using study::AnnualSummary;
 using study::GridResult;
@@ -625,7 +639,7 @@ std::string grid_section(const GridData& g, PageIds& page) {
     s << "<div class=\"part\" id=\"" << g.id << "-pit\"><h3>Point in time</h3>"
       << "<table class=\"grid-table\"><tr><th>case</th><th>sky</th><th>mean</th><th>median</th><th>minimum</th>"
          "<th>maximum</th><th>uniformity (min / mean)</th><th>standard error, RMS over sensors (relative)</th>"
-         "<th>standard error, largest (relative)</th></tr>";
+         "<th>standard error, largest (relative)</th><th>accuracy target (95th percentile)</th></tr>";
     auto lux = [](double v) { return format_value(v, Precision::Illuminance) + " lx"; };
     auto relative = [](const std::optional<double>& v) {
       return v ? format_value(*v, Precision::DaylightFactor) + " %" : std::string("not stated");
@@ -636,10 +650,17 @@ std::string grid_section(const GridData& g, PageIds& page) {
         << "</td><td class=\"n\">" << lux(p.max_lux) << "</td><td class=\"n\">"
         << format_value(p.uniformity, Precision::Ratio) << "</td><td class=\"n\">"
         << relative(p.rms_relative_stderr_percent) << "</td><td class=\"n\">"
-        << relative(p.max_relative_stderr_percent) << "</td></tr>";
+        << relative(p.max_relative_stderr_percent) << "</td><td>" << point_in_time_accuracy_words(p)
+        << "</td></tr>";
     s << "</table><p class=\"note\">Illuminance at every sensor at each case's date and time (project key "
          "<code>points_in_time</code>; per sensor in <code>point_in_time.csv</code>, each value with its standard "
-         "error). The standard error is the Monte Carlo one, relative to the value, over the sensors with light.</p>"
+         "error). The standard error is the Monte Carlo one, relative to the value, over the sensors with light. "
+         "With an accuracy target each case is held to it as the daylight factor is (95 % of the sensors with light "
+         "at or below it); a case above it names the part of its error that keeps it there (the sky, the sun's "
+         "reflections through the sun bins, or the direct sun's shadow rays at a shadow edge) and what stopped "
+         "the run: raise <code>accuracy.max_photons</code> for a photon budget, <code>max_seconds</code> for a time "
+         "budget; at the direct rays limit the case's penumbra needs more than 256 shadow rays over the sun's "
+         "disc.</p>"
          "</div>";
   }
 

@@ -181,11 +181,16 @@ RoundLoopOutcome run_round_loop(const RoundSources& sources, const AccuracyGoal&
               " sensor(s) miss the target by their direct component alone at " +
               direct_rays_limit_words(direct_plan.samples_at_limit));
         } else {
-          stop = plan.sensors_direct_limited > 0 ? "direct component" : "no light";
+          stop = plan.sensors_direct_limited > 0 ? "direct component"
+                 : plan.sensors_left_out > 0     ? "other parts"
+                                                 : "no light";
           if (plan.sensors_direct_limited > 0)
             log(text.name + ": " + std::to_string(plan.sensors_direct_limited) +
                 " sensor(s) miss the target by their direct component alone, which photons do not reduce "
                 "(more simulation.direct_samples_per_bin would)");
+          else if (plan.sensors_left_out > 0)
+            log(text.name + ": " + std::to_string(plan.sensors_left_out) +
+                " sensor(s) miss the target by the parts of their error these photons do not reduce");
         }
       }
     }

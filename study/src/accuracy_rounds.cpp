@@ -169,6 +169,10 @@ RoundPlan next_round_scale(const std::vector<GridVariance>& grids, const std::ve
       relative[i] = g.df_percent[i] > 0 ? 100.0 * std::sqrt(std::max(0.0, v)) / g.df_percent[i] : 0.0;
     }
     for (std::size_t i : sensors_at_or_below_percentile(relative, g.df_percent, percentile)) {
+      if (!g.left_out.empty() && g.left_out[i]) {  // whatever its plan's error: not these photons' to chase
+        ++plan.sensors_left_out;
+        continue;
+      }
       if (!(relative[i] > aim_percent)) continue;
       ++plan.sensors_constrained;
       const double allowed = aim_percent / 100.0 * g.df_percent[i];

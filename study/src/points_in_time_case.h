@@ -25,11 +25,16 @@ namespace dayphoton::study {
 /// (point_in_time_cie_quadrant_deltas). `df_photon_corrections_lux`: per grid, what the basis
 /// misses of the DF's photon part (continuous_sky_photon_correction_lux), which a cie_overcast
 /// case, of the DF sky's shape, takes scaled to its own sky, so it stays DF x E_h / 100.
+/// `sky_stop`: per grid, with an accuracy target, the sky rounds' stop for that grid ("target
+/// met" where the grid met the DF's target); empty without one. With a target each case is
+/// stated against it (point_in_time_accuracy.h): its sun rounds measure the cases (SunRoundCase)
+/// and its direct sun's shadow rays are raised where the penumbra keeps it above the target.
 void run_points_in_time(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                         const std::vector<RadianceMatrix>& sky_coefficients,
                         const std::vector<engine::DaylightCoefficients>& direct_parts,
                         const std::vector<SubPatchShares>& shares, const std::vector<SubPatchShares>& photon_shares,
                         const std::vector<std::vector<double>>& df_photon_corrections_lux,
-                        const std::vector<std::string>& folders, nlohmann::json& grids_json, RunContext& ctx);
+                        const std::vector<std::string>& sky_stop, const std::vector<std::string>& folders,
+                        nlohmann::json& grids_json, RunContext& ctx);
 
 }  // namespace dayphoton::study

@@ -202,11 +202,17 @@ json grid_json(const GridResult& g) {
     j["sun_accuracy"]["hourly_percent"] = sa->hourly_percent;
   }
   json points = json::array();
-  for (const PointInTimeSummary& p : g.points_in_time)
+  for (const PointInTimeSummary& p : g.points_in_time) {
     points.push_back({{"name", p.name}, {"sky", p.sky}, {"mean_lux", p.mean_lux}, {"median_lux", p.median_lux},
                       {"min_lux", p.min_lux}, {"max_lux", p.max_lux}, {"uniformity", p.uniformity},
                       {"rms_relative_stderr_percent", optional_number(p.rms_relative_stderr_percent)},
                       {"max_relative_stderr_percent", optional_number(p.max_relative_stderr_percent)}});
+    // Against the accuracy target: only runs with one have it.
+    if (const auto& a = p.accuracy)
+      points.back()["accuracy"] = {{"target_percent", a->target_percent}, {"reached_percent", a->reached_percent},
+                                   {"status", a->status}, {"stop_reason", a->stop_reason},
+                                   {"limiting_part", a->limiting_part.empty() ? json(nullptr) : json(a->limiting_part)}};
+  }
   j["points_in_time"] = points;
   j["spacing_m"] = g.spacing_m;
   json verdicts = json::array();
@@ -573,7 +579,19 @@ struct Reader {
       g.points_in_time.push_back({text(p, pk, "name"), text(p, pk, "sky"), number(p, pk, "mean_lux"),
                                   number(p, pk, "median_lux"), number(p, pk, "min_lux"), number(p, pk, "max_lux"),
                                   number(p, pk, "uniformity"), optional_number(p, pk, "rms_relative_stderr_percent"),
-                                  optional_number(p, pk, "max_relative_stderr_percent")});
+                                  optional_number(p, pk, "max_relative_stderr_percent"), std::nullopt});
+      if (p.contains("accuracy")) {
+        const std::string ak = pk + ".accuracy";
+        const json& a = at(p, pk, "accuracy");
+        PointInTimeSummary::AccuracyReached r;
+        r.target_percent = number(a, ak, "target_percent");
+        r.reached_percent = number(a, ak, "reached_percent");
+        r.status = text(a, ak, "status");
+        if (r.status != "met" && r.status != "above target") fail(name(ak, "status"), "is not met or above target");
+        r.stop_reason = text(a, ak, "stop_reason");
+        if (!at(a, ak, "limiting_part").is_null()) r.limiting_part = text(a, ak, "limiting_part");
+        g.points_in_time.back().accuracy = r;
+      }
     }
     g.spacing_m = number(j, at_grid, "spacing_m");
     const std::string vk = at_grid + ".verdicts";
@@ -724,7 +742,11 @@ bool PointInTimeSummary::operator==(const PointInTimeSummary& o) const {
   return name == o.name && sky == o.sky && mean_lux == o.mean_lux && median_lux == o.median_lux &&
          min_lux == o.min_lux && max_lux == o.max_lux && uniformity == o.uniformity &&
          rms_relative_stderr_percent == o.rms_relative_stderr_percent &&
-         max_relative_stderr_percent == o.max_relative_stderr_percent;
+         max_relative_stderr_percent == o.max_relative_stderr_percent && accuracy == o.accuracy;
+}
+bool PointInTimeSummary::AccuracyReached::operator==(const AccuracyReached& o) const {
+  return target_percent == o.target_percent && reached_percent == o.reached_percent && status == o.status &&
+         stop_reason == o.stop_reason && limiting_part == o.limiting_part;
 }
 bool Verdict::operator==(const Verdict& o) const {
   return standard == o.standard && criterion == o.criterion && requirement == o.requirement && value == o.value &&

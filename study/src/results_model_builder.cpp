@@ -393,9 +393,13 @@ void add_verdict_uncertainty(GridResult& grid, const VerdictUncertainty& u) {
 }
 
 void add_point_in_time(GridResult& grid, const std::string& name, const std::string& sky, const GridStatistics& st,
-                       const DaylightFactorUncertainty& u) {
+                       const DaylightFactorUncertainty& u, const PointInTimeAccuracy* accuracy) {
   grid.points_in_time.push_back({name, sky, st.mean, st.median, st.min, st.max, st.uniformity,
-                                 u.rms_relative_stderr_percent, u.max_relative_stderr_percent});
+                                 u.rms_relative_stderr_percent, u.max_relative_stderr_percent, std::nullopt});
+  if (accuracy)
+    grid.points_in_time.back().accuracy = PointInTimeSummary::AccuracyReached{
+        accuracy->target_percent, accuracy->reached_percent, accuracy->status, accuracy->stop_reason,
+        accuracy->status == "met" ? std::string() : accuracy->limiting_part};
   grid.quantities.push_back({"point_in_time_" + name, "point_in_time.csv", name + "_lux", "point_in_time",
                              "illuminance at point in time '" + name + "'", "lx", QuantityScale::Illuminance,
                              "illuminance"});

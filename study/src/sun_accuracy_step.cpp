@@ -30,7 +30,7 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
                                              const CaseScene& cs, const std::vector<sky::SunRecord>& suns,
                                              const engine::SunBins& bins,
                                              const engine::CoefficientOptions& estimating, RunContext& ctx,
-                                             std::vector<GridSun>& result) {
+                                             std::vector<GridSun>& result, const std::vector<SunRoundCase>* cases) {
   const project::Simulation& sim = project.simulation;
   const SimulationPlan& plan = ctx.plan;
   const std::vector<SensorGrid>& grids = cs.description.grids;
@@ -48,6 +48,7 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
   // As the rounds estimate (the gather's variance weights are the bins' yearly weights): so in
   // the keys too.
   c.estimating = estimating;
+  c.cases = cases;
   AccuracyGoal goal;
   goal.target_percent = sim.accuracy->target_df_relative_stderr_percent;
   goal.max_photons = sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons;
@@ -61,6 +62,17 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
                              sky::SunHalfAngle_rad, c.tracing);
   ContentHash year;
   for (const sky::SunRecord& s : suns) year.integer(std::int64_t(s.step)).vec3(s.direction).number(s.disc_radiance);
+  // Point-in-time cases: the measure is each case's illuminance, so its other parts are inputs.
+  if (cases && !cases->empty()) {
+    year.text("point-in-time cases, budget floor " + exact(SunCaseBudgetFloor) + ", left-out sensors counted");
+    for (const SunRoundCase& pc : *cases) {
+      year.integer(std::int64_t(pc.sun));
+      for (const std::vector<double>& v : pc.other_lux)
+        for (double x : v) year.number(x);
+      for (const std::vector<double>& v : pc.other_variance)
+        for (double x : v) year.number(x);
+    }
+  }
   std::string rounds = "sun-accuracy:" + exact(goal.target_percent) + ":" + std::to_string(goal.max_photons) + ":" +
                        exact(AccuracyPercentile) + ":" + std::to_string(MaxAccuracyRounds) + ":" +
                        exact(AccuracyPilotFraction) + ":" + exact(AccuracyRoundAim) + ":" + exact(goal.max_growth) +
@@ -96,7 +108,8 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
                           {"rounds", o.rounds},                 {"photons", o.photons},
                           {"attempts", o.attempts},             {"stop_reason", o.stop_reason},
                           {"gather", gather_accuracy_json(o.gather)},
-                          {"near_cut", near_cut_reached_json(o.near_cut)}}
+                          {"near_cut", near_cut_reached_json(o.near_cut)},
+                          {"case_reached_percent", o.case_reached_percent}}
         .dump();
   };
   step.compute = [&]() -> std::vector<std::string> {
@@ -140,6 +153,8 @@ SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, co
     o.gather = gather_accuracy_from_json(j.at("gather"));
     if (!j.contains("near_cut")) return false;  // made before the near-cut rows' record
     o.near_cut = near_cut_reached_from_json(j.at("near_cut"));
+    if (j.contains("case_reached_percent"))
+      o.case_reached_percent = j.at("case_reached_percent").get<std::vector<std::vector<double>>>();
     if (o.reached_percent.size() != grids.size() || o.hourly_percent.size() != grids.size() ||
         o.grid_status.size() != grids.size() || o.gather.size() != grids.size() || o.near_cut.size() != grids.size())
       return false;

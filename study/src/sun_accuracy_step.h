@@ -20,10 +20,13 @@ namespace dayphoton::study {
 /// Fills bin_coefficients and bin_variance of every grid in `result` (sized to the grids),
 /// estimated with `estimating` (the sun's, with the year's gather weights:
 /// sun_annual_estimating); logs each round and a sentence per grid; returns the outcome.
+/// `cases`: the point-in-time cases the rounds measure (SunRoundCase; null: the annual value),
+/// their parts in the step's key.
 SunAccuracyOutcome accuracy_sun_coefficients(const project::Project& project, const std::string& prefix,
                                              const CaseScene& cs, const std::vector<sky::SunRecord>& suns,
                                              const engine::SunBins& bins,
                                              const engine::CoefficientOptions& estimating, RunContext& ctx,
-                                             std::vector<GridSun>& result);
+                                             std::vector<GridSun>& result,
+                                             const std::vector<SunRoundCase>* cases = nullptr);
 
 }  // namespace dayphoton::study

@@ -220,7 +220,8 @@ void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, cons
 
 std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                                   const SkyAndSuns& ss, const engine::SunBins& bins, RunContext& ctx,
-                                  bool export_direct, std::optional<SunAccuracyOutcome>* accuracy_outcome) {
+                                  bool export_direct, std::optional<SunAccuracyOutcome>* accuracy_outcome,
+                                  const std::vector<SunRoundCase>* cases) {
   const project::Simulation& sim = project.simulation;
   const SimulationPlan& plan = ctx.plan;
   Progress& progress = ctx.progress;
@@ -257,7 +258,7 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
   std::optional<SunAccuracyOutcome> accuracy;
   if (sim.accuracy) {
     // The accuracy target's sun rounds (sun_accuracy_step.h) instead of the count's steps.
-    accuracy = accuracy_sun_coefficients(project, prefix, cs, ss.suns, bins, estimating, ctx, result);
+    accuracy = accuracy_sun_coefficients(project, prefix, cs, ss.suns, bins, estimating, ctx, result, cases);
   } else {
     count_sun_coefficients(prefix, cs, bins, sources, to_trace, keys, tracing, estimating, ctx, result);
   }

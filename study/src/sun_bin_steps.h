@@ -31,10 +31,12 @@ struct GridSun {
 /// per grid, trace the exact direct sun per grid (with `export_direct`, also at the further
 /// daytime positions of direct_sun.bin.gz). Every step cached. With simulation.accuracy the
 /// bins are traced in rounds (sun_accuracy_step.h) and `accuracy_outcome`, if given, receives
-/// what they did (else it is reset).
+/// what they did (else it is reset). `cases`: with the target, the point-in-time cases the
+/// rounds measure (SunRoundCase; null: the annual sun-bin value).
 std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                                   const SkyAndSuns& ss, const engine::SunBins& bins, RunContext& ctx,
                                   bool export_direct = false,
-                                  std::optional<SunAccuracyOutcome>* accuracy_outcome = nullptr);
+                                  std::optional<SunAccuracyOutcome>* accuracy_outcome = nullptr,
+                                  const std::vector<SunRoundCase>* cases = nullptr);
 
 }  // namespace dayphoton::study

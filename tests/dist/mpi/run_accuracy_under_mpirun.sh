@@ -24,11 +24,16 @@
 # and timings.json (times) and the output folder's name in summary.json, and so must the cached
 # artefacts (the rounds' coefficients, variances and outcome); each run's log must show the
 # two rounds.
-# Usage: run_accuracy_under_mpirun.sh DAYPHOTON MPIEXEC SOURCE_DIR
+# With a fourth argument `points_in_time`, instead: the sun bins' room with two point-in-time
+# cases with a sun (a weather hour, a CIE clear sky), whose own sun rounds measure each case's
+# illuminance (study/sun_accuracy_rounds.h, SunRoundCase) and trace a second round, and each
+# case stated against the target (summary.json `status`).
+# Usage: run_accuracy_under_mpirun.sh DAYPHOTON MPIEXEC SOURCE_DIR [points_in_time]
 set -uo pipefail
 dayphoton=$1
 mpiexec=$2
 source_dir=$3
+only=${4:-}
 source "$(dirname "$0")/common.sh"
 mpi_test_begin
 export TMPDIR=$tmp  # the other ranks' scratch folders go here
@@ -68,6 +73,22 @@ check() {
     [ $ok -eq 1 ] || fail=1
   done
 }
+
+if [ "$only" = points_in_time ]; then
+  sun_room "$tmp/cases" "$source_dir" 3 || exit 1
+  cat >> "$tmp/cases/project.yaml" <<'YAML'
+points_in_time:
+  - {name: weather_sun, date: 12-21, time: "12:00", sky: weather}
+  - {name: clear, date: 12-21, time: "10:30", sky: cie, cie_type: 12, direct_normal_illuminance: 80000}
+YAML
+  case_rounds() {
+    grep -q '^point in time sun accuracy round 2: .*point-in-time illuminance relative standard error' "$1/run.log" &&
+      grep -q '^point in time workplane weather_sun: relative standard error (95th percentile) ' "$1/run.log" &&
+      grep -q '"status": "' "$1/summary.json"
+  }
+  check points_in_time "$tmp/cases/project.yaml" case_rounds
+  exit $fail
+fi
 
 check sky "$tmp/project.yaml" two_rounds
 check sun "$tmp/sun/project.yaml" two_sun_rounds

@@ -108,12 +108,17 @@ struct GridVariance {
   std::vector<double> df_percent;       ///< per sensor
   std::vector<double> direct_variance;  ///< per sensor, all sources
   std::vector<double> photon_variance;  ///< [sensor x sources + source], at the current counts
+  /// Per sensor (empty: none): left to the parts of its error these photons do not reduce, and
+  /// not chased (a point-in-time case's sensor whose sky and direct sun keep it above:
+  /// sun_accuracy_rounds.h, SunRoundCase).
+  std::vector<char> left_out;
 };
 
 struct RoundPlan {
   std::vector<double> scale;        ///< photons per source relative to now (>= 1)
   std::size_t sensors_constrained = 0;
   std::size_t sensors_direct_limited = 0;  ///< above their budget by the direct variance alone
+  std::size_t sensors_left_out = 0;        ///< at or below the percentile, GridVariance::left_out
 };
 
 /// One sensor's share of an allocation (header comment): with `variance[p]` its photon variance

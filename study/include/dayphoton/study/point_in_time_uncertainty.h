@@ -38,9 +38,24 @@ struct PointInTimeSunVariance {
   engine::SunStencil stencil;  ///< the case's sun in the bins (engine::SunBins::weights)
 };
 
-/// Per sensor, the standard error (lux) of a case's illuminance: `sky` in lux^2
-/// (sky_illuminance_variance with unit_per_lux 1), `sun` the case's sun or null (no sun).
-/// Throws std::invalid_argument on a size mismatch.
+/// Per sensor, a case's variance (lux^2) by part (header comment): what each part's own random
+/// streams contribute, so the accuracy rounds and the run's statement can say which part keeps a
+/// case above its target (point_in_time_accuracy.h).
+struct PointInTimeVarianceParts {
+  std::vector<double> sky;           ///< the sky and the ground (photons and shadow rays)
+  std::vector<double> indirect_sun;  ///< the sun bins through the case's stencil
+  std::vector<double> direct_sun;    ///< the exact direct sun's shadow rays over the disc
+  /// sqrt of the three parts' sum per sensor: the standard error (lux).
+  std::vector<double> stderr_lux() const;
+};
+
+/// `sky` in lux^2 (sky_illuminance_variance with unit_per_lux 1), `sun` the case's sun or null
+/// (no sun: the sun parts zero). Throws std::invalid_argument on a size mismatch.
+PointInTimeVarianceParts point_in_time_variance_parts(const SkyIlluminanceVariance& sky,
+                                                      const PointInTimeSunVariance* sun);
+
+/// Per sensor, the standard error (lux) of a case's illuminance: point_in_time_variance_parts'
+/// stderr_lux().
 std::vector<double> point_in_time_stderr_lux(const SkyIlluminanceVariance& sky, const PointInTimeSunVariance* sun);
 
 }  // namespace dayphoton::study

@@ -198,6 +198,17 @@ struct PointInTimeSummary {
   /// `<case>_stderr_lux` / `<case>_lux`): RMS and largest relative standard error, percent;
   /// absent from files of runs made before it was stated.
   std::optional<double> rms_relative_stderr_percent, max_relative_stderr_percent;
+  /// Against the run's accuracy target (point_in_time_accuracy.h); absent without a target and
+  /// in files of runs made before it was stated.
+  struct AccuracyReached {
+    double target_percent = 0;
+    double reached_percent = 0;  ///< 95th percentile of the relative standard error
+    std::string status;          ///< "met" or "above target"
+    std::string stop_reason;     ///< "target met", or the stop of the part that keeps it above
+    std::string limiting_part;   ///< "sky", "indirect sun", "direct sun" (above the target)
+    bool operator==(const AccuracyReached& o) const;
+  };
+  std::optional<AccuracyReached> accuracy;
 
   bool operator==(const PointInTimeSummary& o) const;
 };

@@ -14,6 +14,7 @@
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/study/annual_study.h"
 #include "dayphoton/study/daylight_factor.h"
+#include "dayphoton/study/point_in_time_accuracy.h"
 #include "dayphoton/study/results_model.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/study/verdict_uncertainty.h"
@@ -79,9 +80,10 @@ void add_annual(GridResult& grid, const AnnualStudy& study, const AnnualStudySet
 void add_verdict_uncertainty(GridResult& grid, const VerdictUncertainty& u);
 
 /// One point-in-time case's statistics, and its column of point_in_time.csv.
-/// `u`: the case's Monte Carlo uncertainty (its relative standard errors).
+/// `u`: the case's Monte Carlo uncertainty (its relative standard errors); `accuracy`: the case
+/// against the run's accuracy target (point_in_time_accuracy.h), null without one.
 void add_point_in_time(GridResult& grid, const std::string& name, const std::string& sky, const GridStatistics& st,
-                       const DaylightFactorUncertainty& u);
+                       const DaylightFactorUncertainty& u, const PointInTimeAccuracy* accuracy = nullptr);
 
 /// `folder` relative to `output_dir`, '/'-separated ("" for the output folder itself).
 std::string relative_folder(const std::string& output_dir, const std::string& folder);

@@ -81,6 +81,37 @@ std::vector<double> sun_hourly_relative_stderr_percent(const RadianceMatrix& coe
                                                        const std::vector<sky::SunRecord>& suns,
                                                        const SunYearWeights& weights);
 
+/// A point-in-time case's sun in the sun rounds (point_in_time.h, point_in_time_accuracy.h): with
+/// such cases the rounds measure each case's illuminance at every sensor, E(s) = other(s) + 179
+/// L sum_k w_k C_k(s) (the case's stencil w_k, L its disc radiance), with the variance of its
+/// other parts fixed and 179^2 L^2 w_k^2 var C_k(s) per bin, instead of the annual sun-bin value:
+/// the target then applies to each case's relative standard error at the percentile, as the
+/// daylight factor's, and the allocation goes to the bins of the stencils in proportion to the
+/// light each case takes from them (next_round_scale over one GridVariance per grid and case).
+/// The indirect sun's budget at a case's sensor is what the other parts leave of (aim x E)^2, but
+/// at least SunCaseBudgetFloor of it; a sensor is left to its other parts (GridVariance::
+/// left_out: the sun's photons do not reduce what keeps it above) when they alone exceed
+/// (target x E)^2, or take more than the rest of the budget while its indirect sun is within the
+/// floor. When only such sensors remain the rounds stop with "other parts".
+/// The share of a point-in-time case's variance budget at the aim that its indirect sun is
+/// always given (SunRoundCase): with the sky at the aim itself a quarter more keeps it within
+/// the target (0.9 sqrt(1.25) = 1.006 x aim ~ target), at a bounded count of photons.
+constexpr double SunCaseBudgetFloor = 0.25;
+
+struct SunRoundCase {
+  std::string name;     ///< the case's, for the log lines
+  std::size_t sun = 0;  ///< index into the rounds' suns
+  /// Per grid, per sensor: the case's illuminance without its indirect sun (lux) and the variance
+  /// of those parts (lux^2): the sky, the ground and the exact direct sun.
+  std::vector<std::vector<double>> other_lux, other_variance;
+};
+
+/// The measure of one case at one grid (SunRoundCase): its illuminance in lux as df_percent, the
+/// other parts' variance as direct_variance, per bin the indirect sun's.
+GridVariance sun_case_variance(const RadianceMatrix& coefficients, const std::vector<double>& variance,
+                               const engine::SunBins& bins, const sky::SunRecord& sun,
+                               const std::vector<double>& other_lux, const std::vector<double>& other_variance);
+
 /// Everything one case's sun rounds need.
 struct SunAccuracyCase {
   const engine::Scene* scene = nullptr;
@@ -95,6 +126,9 @@ struct SunAccuracyCase {
   bool gather = true;                    ///< grids off a plane: final gather (else surface photons)
   engine::TracingOptions tracing;        ///< the sun's: seed, photons_per_source = the reference count
   engine::CoefficientOptions estimating; ///< the sun's (sun-bin bandwidth); its gather weights: sun_annual_estimating
+  /// The point-in-time cases whose illuminance the rounds measure (SunRoundCase); null or empty:
+  /// the annual sun-bin value.
+  const std::vector<SunRoundCase>* cases = nullptr;
 };
 
 /// What the sun rounds did (summary.json `accuracy.sun` of each grid, docs/outputs.md).
@@ -105,10 +139,13 @@ struct SunAccuracyOutcome {
   std::vector<std::string> grid_status; ///< per grid: "met", "above target"
   std::vector<GatherAccuracy> gather;    ///< per grid: its gather rounds (gather_accuracy_rounds.h)
   std::vector<NearCutReached> near_cut;  ///< per grid: its sensors next to a cut (accuracy_policy.h)
+  /// With point-in-time cases (SunRoundCase): per grid, per case, the case's relative standard
+  /// error at the percentile after the last round (reached_percent is then the grid's largest).
+  std::vector<std::vector<double>> case_reached_percent;
   std::size_t rounds = 0;
   std::uint64_t photons = 0;            ///< stored photons of all sun bins
   std::uint64_t attempts = 0;
-  /// "target met", "photon budget", "round limit", "no light", or, when only gathered grids
+  /// "target met", "photon budget", "round limit", "no light", "other parts" (point-in-time cases only: SunRoundCase), or, when only gathered grids
   /// were left above the target, the first such grid's gather stop (settle_case_stop)
   std::string stop_reason;
   std::vector<std::uint64_t> pilot_attempts, final_attempts;  ///< per bin (of a run that traced)
