@@ -166,8 +166,12 @@ TEST(SensorGrid, CellsCutByTheOutlineCarryTheirFloorArea) {
   total_m2 = 0;
   for (std::size_t i = 0; i < l.points.size(); ++i) {
     const Vec3 q = l.points[i].position;
-    if (q.x == 2 && q.y == 2) EXPECT_NEAR(l.area_m2[i], 0.75, 1e-12);
-    if (q.x == 3 && q.y == 2) EXPECT_NEAR(l.area_m2[i], 0.5, 1e-12);
+    if (q.x == 2 && q.y == 2) {
+      EXPECT_NEAR(l.area_m2[i], 0.75, 1e-12);
+    }
+    if (q.x == 3 && q.y == 2) {
+      EXPECT_NEAR(l.area_m2[i], 0.5, 1e-12);
+    }
     total_m2 += l.area_m2[i];
   }
   EXPECT_NEAR(total_m2, 12.0, 1e-9);

@@ -144,8 +144,8 @@ ResultsModel full_model() {
   a.da_verdicts_within_2_sigma = 1;
   a.da_verdicts_within_2_sigma_area_percent = 16.7;
   g.annual = a;
-  g.points_in_time = {{"noon", "cie_overcast", 500, 450, 100, 900, 0.2, 1.25, 3.5},
-                      {"older_run", "weather", 800, 700, 90, 2000, 0.1, std::nullopt, std::nullopt}};
+  g.points_in_time = {{"noon", "cie_overcast", 500, 450, 100, 900, 0.2, 1.25, 3.5, std::nullopt},
+                      {"older_run", "weather", 800, 700, 90, 2000, 0.1, std::nullopt, std::nullopt, std::nullopt}};
   g.has_illuminance_table = true;
   g.spacing_m = 0.5;
   g.verdicts = {{"IES LM-83-12", "sDA300/50%", ">= 55 %", 66.7, "%", "pass", ""},
