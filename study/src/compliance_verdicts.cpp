@@ -56,7 +56,8 @@ int leed_v41_points(double sda_percent) {
 }
 
 namespace {
-/// Why LM-83's sDA and ASE are not assessed on a case with blinds in place; "" when none are.
+/// Why LM-83's sDA and ASE are not assessed on a case with operable shading in place (`blinds`
+/// systems, shading materials: shading_materials.h); "" when none is.
 std::string shading_in_place_why(const std::vector<std::string>& blinds,
                                  const std::vector<ShadingMaterialInPlace>& materials, bool operated) {
   std::vector<std::string> parts;
