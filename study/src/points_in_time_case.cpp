@@ -204,7 +204,8 @@ void run_points_in_time(const project::Project& project, const std::string& pref
       }
       round_cases.push_back(std::move(rc));
     }
-    sun = run_sun_bins(project, prefix + "point in time ", cs, skies, *bins, ctx, false, &sun_outcome, &round_cases);
+    sun = run_sun_bins(project, prefix + "point in time ", cs, skies, *bins, ctx, SunBinsDirect::ByTheCaller,
+                       &sun_outcome, &round_cases);
   }
   // The rest makes the files: not on the other ranks of an MPI run (they write nothing).
   if (!ctx.executor.writes_results()) return;

@@ -343,7 +343,9 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
     const engine::SunBins bins = engine::SunBins::for_suns(directions, sim.sun_mf);
     std::optional<SunAccuracyOutcome> sun_accuracy;
     std::vector<GridSun> sun =
-        run_sun_bins(project, prefix, cs, ss, bins, ctx, project.outputs.coefficients, &sun_accuracy);
+        run_sun_bins(project, prefix, cs, ss, bins, ctx,
+                     project.outputs.coefficients ? SunBinsDirect::TracedAndExported : SunBinsDirect::Traced,
+                     &sun_accuracy);
     if (sun_accuracy)
       for (std::size_t g = 0; g < description.grids.size(); ++g) {
         ctx.results->grids[g].sun_accuracy = SunAccuracyReached{

@@ -220,7 +220,7 @@ void count_sun_coefficients(const std::string& prefix, const CaseScene& cs, cons
 
 std::vector<GridSun> run_sun_bins(const project::Project& project, const std::string& prefix, const CaseScene& cs,
                                   const SkyAndSuns& ss, const engine::SunBins& bins, RunContext& ctx,
-                                  bool export_direct, std::optional<SunAccuracyOutcome>* accuracy_outcome,
+                                  SunBinsDirect direct_sun, std::optional<SunAccuracyOutcome>* accuracy_outcome,
                                   const std::vector<SunRoundCase>* cases) {
   const project::Simulation& sim = project.simulation;
   const SimulationPlan& plan = ctx.plan;
@@ -263,6 +263,7 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
     count_sun_coefficients(prefix, cs, bins, sources, to_trace, keys, tracing, estimating, ctx, result);
   }
   if (accuracy_outcome) *accuracy_outcome = accuracy;
+  if (direct_sun == SunBinsDirect::ByTheCaller) return result;
 
   for (std::size_t g = 0; g < n_grids; ++g) {
     const SensorGrid& grid = grids[g];
@@ -282,7 +283,7 @@ std::vector<GridSun> run_sun_bins(const project::Project& project, const std::st
     }
     // The export for `annual` (direct_sun.bin.gz): the daytime positions without direct light
     // in this weather file too, so another file of the site finds every sun it needs.
-    if (export_direct) {
+    if (direct_sun == SunBinsDirect::TracedAndExported) {
       GridSun& out = result[g];
       out.other_suns = daytime_suns_without_direct(*ctx.weather, ctx.sun_site->solar,
                                                    sun_excluded_sky_options(sim.ground_reflectance), ss.suns);
