@@ -14,6 +14,7 @@
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/artifact_store.h"
 #include "dayphoton/study/cache_keys.h"
+#include "dayphoton/study/content_hash.h"
 #include "dayphoton/study/daylight_factor.h"
 #include "dayphoton/study/gather_accuracy_rounds.h"
 #include "dayphoton/study/plan_policy.h"
@@ -355,8 +356,9 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
       // A plane's sensors next to a cut: out of the measure (accuracy_policy.h); where this
       // round does not gather them, their rows hold the plane's estimate until the gather rounds.
       NearCutReached& near = result.outcome.near_cut[g];
-      near = take_out_near_cut_rows(near_cut_rows(*c.planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g),
-                                    v.df_percent, stderr_percent);
+      const std::vector<std::size_t> cut_rows =
+          near_cut_rows(*c.planes, *c.plane_of_grid, c.near_cut_sensors, grids[g].points, g);
+      near = take_out_near_cut_rows(cut_rows, v.df_percent, stderr_percent);
       near.gather_rays = near.sensors > 0 && near_cut_here ? c.estimating.gather.rays_per_sensor : 0;
       const std::string near_cut = near_cut_note(near, goal.target_percent);
       const double reached = percentile_relative_stderr_percent(v.df_percent, stderr_percent, AccuracyPercentile);
@@ -365,11 +367,28 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
       m.grid_status[g] = accuracy_grid_status(chased, reached, goal.target_percent);
       m.grids += (g ? ", " : " ") + grids[g].name + " " + number(reached) + " %" +
                  (chased ? "" : " (gathered: its gather rays follow)") + near_cut;
-      if (chased) {
-        m.met = m.met && reached <= goal.target_percent;
-        m.chased.push_back(std::move(v));
+      if (!chased) continue;
+      m.met = m.met && reached <= goal.target_percent;
+      m.chased.push_back(std::move(v));
+      chased_grid.push_back(g);
+      // The point-in-time cases' sky parts at this grid, each against itself (case_skies).
+      std::string case_words;
+      for (const CaseSky& sky : c.case_skies) {
+        SkyIlluminanceParts sky_part = sky_illuminance_parts(dc, sky.vector, sky.direct_sky);
+        std::vector<double> stderr_lux = sky_part.total();
+        for (double& x : stderr_lux) x = std::sqrt(x);
+        GridVariance cv;
+        cv.df_percent = std::move(sky_part.lux);
+        cv.direct_variance = std::move(sky_part.direct_variance);
+        cv.photon_variance = std::move(sky_part.photon_variance);
+        take_out_near_cut_rows(cut_rows, cv.df_percent, stderr_lux);
+        const double case_reached = percentile_relative_stderr_percent(cv.df_percent, stderr_lux, AccuracyPercentile);
+        case_words += (case_words.empty() ? "" : ", ") + sky.name + " " + number(case_reached) + " %";
+        m.met = m.met && case_reached <= goal.target_percent;
+        m.chased.push_back(std::move(cv));
         chased_grid.push_back(g);
       }
+      if (!case_words.empty()) m.grids += " (point-in-time sky parts: " + case_words + ")";
     }
     chased_variance = m.chased;
     result.outcome.grid_status = m.grid_status;
@@ -393,13 +412,16 @@ AccuracyResult run_accuracy_rounds(const AccuracyCase& c, const AccuracyGoal& go
   };
   round_direct.seconds = [&](const DirectRoundPlan& plan) { return direct_raise_seconds(plan.rays); };
   round_direct.apply = [&](std::size_t round, const DirectRoundPlan& plan) {
-    for (std::size_t j = 0; j < chased_grid.size(); ++j) {
-      const std::size_t g = chased_grid[j];
-      if (plan.samples_per_bin[j] == direct_samples[g]) continue;
+    // A grid measured more than once (its point-in-time cases' skies) takes the largest count.
+    std::vector<int> next = direct_samples;
+    for (std::size_t j = 0; j < chased_grid.size(); ++j)
+      next[chased_grid[j]] = std::max(next[chased_grid[j]], plan.samples_per_bin[j]);
+    for (std::size_t g = 0; g < grids.size(); ++g) {
+      if (next[g] == direct_samples[g]) continue;
       log("accuracy: round " + std::to_string(round) + " raises grid " + grids[g].name +
-          "'s shadow rays per bin " + std::to_string(direct_samples[g]) + " -> " +
-          std::to_string(plan.samples_per_bin[j]) + " (its direct part keeps it above the target)");
-      direct_samples[g] = plan.samples_per_bin[j];
+          "'s shadow rays per bin " + std::to_string(direct_samples[g]) + " -> " + std::to_string(next[g]) +
+          " (its direct part keeps it above the target)");
+      direct_samples[g] = next[g];
       trace_direct(g);
     }
   };
@@ -456,8 +478,16 @@ CaseAccuracy accuracy_coefficients(const AccuracyCase& c, const AccuracyGoal& go
                              ":" + (c.gather ? "gather-rays-photons:" + std::to_string(GatherMaxRounds) + ":" +
                                                    number(GatherMaxGrowth, "%.17g") + ":" + std::to_string(GatherMaxRays)
                                              : std::string("surface"));
+  // The point-in-time skies the rounds hold to the target too.
+  ContentHash skies;
+  for (const CaseSky& sky : c.case_skies) {
+    skies.text(sky.name).integer(sky.direct_sky ? std::int64_t(*sky.direct_sky) : -1);
+    skies.integer(std::int64_t(sky.vector.rows())).integer(sky.vector.components());
+    for (float x : sky.vector.data()) skies.number(x);
+  }
+  const std::string case_skies = c.case_skies.empty() ? std::string() : ":case-skies:" + skies.hex();
   std::vector<std::string> keys = photon_keys;
-  for (std::string& k : keys) k += "|" + rounds;
+  for (std::string& k : keys) k += "|" + rounds + case_skies;
   const std::vector<SensorGrid>& grids = *c.grids;
   std::vector<std::string> grid_keys;
   // Every grid's coefficients depend on all grids' variances (the rounds serve them all).

@@ -158,6 +158,30 @@ SkyIlluminanceVariance sky_illuminance_variance(const engine::DaylightCoefficien
   return out;
 }
 
+SkyIlluminanceParts sky_illuminance_parts(const engine::DaylightCoefficients& c, const RadianceMatrix& sky_vector,
+                                          std::optional<std::size_t> direct_sky) {
+  SkyIlluminanceParts out;
+  static_cast<SkyIlluminanceVariance&>(out) = sky_illuminance_variance(c, sky_vector, 1.0, direct_sky, std::nullopt);
+  if (c.caustic.size() != c.sensors * c.sources || c.global.size() != c.sensors * c.sources ||
+      c.direct.size() != c.sensors * c.sources)
+    throw std::invalid_argument("sky illuminance: coefficients without their parts");
+  const std::vector<double> w = photometric_weights(sky_vector.components());
+  const engine::DirectOnSkies& skies = c.direct_on_skies;
+  out.lux.assign(c.sensors, 0.0);
+  for (std::size_t s = 0; s < c.sensors; ++s) {
+    double e_lux = 0;
+    for (std::size_t p = 0; p < c.sources; ++p) {
+      const std::size_t i = s * c.sources + p;
+      e_lux += sky_weighted_lux(c.caustic[i] + c.global[i], w, sky_vector, p);
+      if (!direct_sky) e_lux += sky_weighted_lux(c.direct[i], w, sky_vector, p);
+    }
+    if (direct_sky)
+      e_lux += RadianceWhiteEfficacy_lm_per_W * engine::luminance_of(skies.irradiance[s * skies.skies + *direct_sky]);
+    out.lux[s] = e_lux;
+  }
+  return out;
+}
+
 DaylightFactorParts daylight_factor_parts(const engine::DaylightCoefficients& c, const RadianceMatrix& sky_vector,
                                           double horizontal_illuminance_lux, std::size_t sky_index) {
   if (!(horizontal_illuminance_lux > 0) || !std::isfinite(horizontal_illuminance_lux))

@@ -252,4 +252,15 @@ std::vector<std::string> describe_points_in_time(const std::vector<project::Poin
   return lines;
 }
 
+RadianceMatrix point_in_time_sky_column(const SkyAndSuns& skies, std::size_t k) {
+  const RadianceMatrix& matrix = skies.sky.matrix;
+  if (k >= matrix.columns())
+    throw std::invalid_argument("point in time: case " + std::to_string(k) + " of " +
+                                std::to_string(matrix.columns()) + " sky columns");
+  RadianceMatrix column(matrix.rows(), 1, matrix.components());
+  for (std::size_t p = 0; p < column.rows(); ++p)
+    for (int c = 0; c < column.components(); ++c) column.at(p, 0, c) = matrix.at(p, k, c);
+  return column;
+}
+
 }  // namespace dayphoton::study

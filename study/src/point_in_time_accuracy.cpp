@@ -53,7 +53,7 @@ std::string point_in_time_stop_reason(const PointInTimeAccuracy& a, const std::s
                             : a.limiting_part == "indirect sun" ? indirect_sun_stop
                                                                 : direct_sun_stop;
   if (stop == "target met" || stop.empty()) {
-    if (a.limiting_part == "sky") return "sky part: the sky rounds chase the daylight factor's sky";
+    if (a.limiting_part == "sky") return "sky part: the sky rounds met the target on each part alone";
     if (a.limiting_part == "indirect sun") return "indirect sun: the sun rounds met their own measure";
     return "direct sun: shadow rays not raised";
   }

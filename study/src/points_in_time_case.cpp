@@ -51,14 +51,6 @@ struct GridCaseParts {
   std::vector<std::string> direct_stop;             ///< per sun: "direct rays limit" when it was raised to it
 };
 
-/// The case's column of the point-in-time sky matrix.
-RadianceMatrix case_column(const RadianceMatrix& matrix, std::size_t k) {
-  RadianceMatrix column(matrix.rows(), 1, matrix.components());
-  for (std::size_t p = 0; p < column.rows(); ++p)
-    for (int c = 0; c < column.components(); ++c) column.at(p, 0, c) = matrix.at(p, k, c);
-  return column;
-}
-
 /// Sensor s's direct sun of `sun` in lux (direct_sun_table's sum).
 double direct_lux(const RadianceMatrix& direct, std::size_t s, std::size_t sun, double disc_radiance) {
   return RadianceWhiteEfficacy_lm_per_W * double(direct.at(s, sun, 0)) * disc_radiance;
@@ -107,7 +99,7 @@ void run_points_in_time(const project::Project& project, const std::string& pref
     gp.correction_lux.resize(cases.size());
     for (std::size_t k = 0; k < cases.size(); ++k) {
       const int sky_index = k < ctx.plan.point_in_time_sky.size() ? ctx.plan.point_in_time_sky[k] : -1;
-      const RadianceMatrix column = case_column(skies.sky.matrix, k);
+      const RadianceMatrix column = point_in_time_sky_column(skies, k);
       // The sky part's variance as the value is made: the direct part from the case's
       // continuous sky (the CIE cases), the photon part from the DF's continuous sky scaled to
       // the case's (cie_overcast, below), else the sums over the basis.

@@ -9,10 +9,12 @@
 #include "dayphoton/study/artifact_codec.h"
 #include "dayphoton/study/cache_keys.h"
 #include "dayphoton/study/photon_range_step.h"
+#include "dayphoton/study/point_in_time.h"
 #include "dayphoton/study/sensor_blocks.h"
 #include "lazy_value.h"
 #include "photon_pass_notes.h"
 #include "photon_step_cost.h"
+#include "sky_steps.h"
 
 namespace dayphoton::study {
 
@@ -151,6 +153,38 @@ void sky_coefficients(const CaseScene& cs, const engine::SourceSet& sources, con
   }
 }
 
+namespace {
+
+/// The point-in-time cases whose sky part the rounds hold to the target (AccuracyCase::
+/// case_skies): every case but the cie_overcast ones, whose sky has the daylight factor's shape
+/// and so its relative error.
+std::vector<CaseSky> point_in_time_case_skies(const project::Project& project, RunContext& ctx) {
+  const std::vector<project::PointInTimeSpec>& cases = project.points_in_time;
+  const bool measured = std::any_of(cases.begin(), cases.end(), [](const project::PointInTimeSpec& c) {
+    return c.sky != project::PointSky::CieOvercast;
+  });
+  if (!measured) return {};
+  const bool weather_cases = std::any_of(cases.begin(), cases.end(), [](const project::PointInTimeSpec& c) {
+    return c.sky == project::PointSky::Weather;
+  });
+  const SkyAndSuns* annual = weather_cases ? &sky_and_suns(project, ctx) : nullptr;
+  const SkyAndSuns skies = point_in_time_skies(cases, point_in_time_site(project, ctx.sun_site), ctx.plan.basis,
+                                               project.simulation.ground_reflectance, annual);
+  std::vector<CaseSky> out;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    if (cases[k].sky == project::PointSky::CieOvercast) continue;
+    CaseSky sky;
+    sky.name = cases[k].name;
+    sky.vector = point_in_time_sky_column(skies, k);
+    const int index = k < ctx.plan.point_in_time_sky.size() ? ctx.plan.point_in_time_sky[k] : -1;
+    if (index >= 0) sky.direct_sky = static_cast<std::size_t>(index);
+    out.push_back(std::move(sky));
+  }
+  return out;
+}
+
+}  // namespace
+
 AccuracyOutcome accuracy_sky_coefficients(const project::Project& project, const CaseScene& cs,
                                           const engine::SourceSet& sources, const engine::TracingOptions& tracing,
                                           const std::vector<std::string>& photon_keys, const std::string& prefix,
@@ -172,6 +206,7 @@ AccuracyOutcome accuracy_sky_coefficients(const project::Project& project, const
   c.estimating = ctx.plan.sky_estimating;
   c.overcast_vector = &overcast_vector;
   c.horizontal_illuminance_lux = ctx.plan.overcast_horizontal_lux;
+  c.case_skies = point_in_time_case_skies(project, ctx);
   AccuracyGoal goal;
   goal.target_percent = sim.accuracy->target_df_relative_stderr_percent;
   goal.max_photons = sim.accuracy->max_photons > 0 ? std::uint64_t(sim.accuracy->max_photons) : project.limits.photons;

@@ -517,10 +517,14 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   }
   // 7. Point-in-time cases.
   if (!project.points_in_time.empty()) {
-    // Per grid, the sky rounds' stop, for the cases the sky part keeps above the target.
+    // Per grid, the sky rounds' stop, for the cases the sky part keeps above the target: the
+    // rounds measure the cases' skies too (AccuracyCase::case_skies), so a grid whose daylight
+    // factor met the target has the rounds' own stop unless they met every measure.
     std::vector<std::string> sky_stop;
-    for (std::size_t g = 0; accuracy && g < description.grids.size(); ++g)
-      sky_stop.push_back(accuracy->grid_status.at(g) == "met" ? "target met" : accuracy->stop_reason);
+    for (std::size_t g = 0; accuracy && g < description.grids.size(); ++g) {
+      const bool all_met = accuracy->stop_reason == "target met" || accuracy->stop_reason == "not reachable by photons";
+      sky_stop.push_back(accuracy->grid_status.at(g) == "met" && all_met ? "target met" : accuracy->stop_reason);
+    }
     run_points_in_time(project, prefix, cs, coefficient_matrices, point_direct_parts, point_shares, point_photon_shares,
                        point_photon_corrections, sky_stop, folders, grids_json, ctx);
   }

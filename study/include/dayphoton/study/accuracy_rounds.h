@@ -27,6 +27,11 @@
 // work) when that is needed or costs fewer rays than the photons, up to
 // MaxDirectSamplesPerBin (plan_policy.h; the stop "direct rays limit").
 //
+// Beside each chased grid's DF the rounds measure the sky part of each point-in-time case whose
+// sky is not of the DF's shape (AccuracyCase::case_skies: a CIE general sky or a weather hour
+// weights the patches otherwise), each against itself, as one more GridVariance of that grid
+// in the allocation; the rounds meet the target only when every measure does.
+//
 // Grids estimated by final gather are measured but not chased by this measure: their error is
 // mostly the gather rays' (accuracy_policy.h); after the photon rounds their rays are raised
 // in gather rounds (gather_accuracy_rounds.h), and the part of their error that rays do not
@@ -48,6 +53,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -202,6 +208,15 @@ struct AccuracyOutcome {
   std::vector<std::uint64_t> pilot_attempts, final_attempts;
 };
 
+/// A point-in-time case's sky the rounds measure (AccuracyCase::case_skies).
+struct CaseSky {
+  std::string name;       ///< the case's name, for the log
+  RadianceMatrix vector;  ///< its sky over the basis (bins x 1)
+  /// The continuous sky of its direct part among the coefficients' (engine::DirectOptions::
+  /// skies); nullopt: the basis's sum (a weather case).
+  std::optional<std::size_t> direct_sky;
+};
+
 /// Everything one case's rounds need.
 struct AccuracyCase {
   const engine::Scene* scene = nullptr;
@@ -220,6 +235,12 @@ struct AccuracyCase {
   /// weight A_k of each bin as a grey vector, so that the "DF" is the annual sun-bin value).
   const RadianceMatrix* overcast_vector = nullptr;
   double horizontal_illuminance_lux = 0;
+  /// Point-in-time cases whose sky part the rounds hold to the target too, at every grid they
+  /// chase (docs/photon-tracing.md "Point-in-time cases"): the 95th percentile of the sky
+  /// part's relative standard error against the sky part itself (sky_illuminance_parts,
+  /// daylight_factor.h). A case's parts each within the target keep their sum within it, so
+  /// the sun rounds then hold its sun parts alike. Empty: the daylight factor alone.
+  std::vector<CaseSky> case_skies;
   /// Each source was traced alone as source 0 (the sun bins): its photons are relabelled as
   /// source p when merged (round_photons, accuracy_round_loop.h).
   bool relabel_sources = false;

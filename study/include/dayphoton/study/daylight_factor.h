@@ -72,6 +72,18 @@ SkyIlluminanceVariance sky_illuminance_variance(const engine::DaylightCoefficien
                                                 std::optional<std::size_t> direct_sky,
                                                 std::optional<double> photon_sky_scale);
 
+/// A sky's illuminance through the coefficients (lux per sensor) with its variance by part
+/// (lux^2): the direct part under continuous sky `direct_sky` of the coefficients (nullopt:
+/// the sky-weighted sum over the basis), the photon part the sum over the basis. A
+/// point-in-time case's sky part as the accuracy rounds measure it (accuracy_rounds.h,
+/// AccuracyCase::case_skies), with the variance point_in_time_uncertainty.h states for it.
+/// Throws std::invalid_argument as sky_illuminance_variance.
+struct SkyIlluminanceParts : SkyIlluminanceVariance {
+  std::vector<double> lux;  ///< per sensor
+};
+SkyIlluminanceParts sky_illuminance_parts(const engine::DaylightCoefficients& coefficients,
+                                          const RadianceMatrix& sky_vector, std::optional<std::size_t> direct_sky);
+
 /// A grid's DF and its variance by part ((DF points)^2), from coefficients that may carry the
 /// direct part under the DF sky itself (engine::DaylightCoefficients::direct_on_skies; engine/
 /// direct_component.h, "Continuous skies") and the photon part under it

@@ -85,6 +85,9 @@ RadianceMatrix point_in_time_cie_quadrant_deltas(const std::vector<project::Poin
                                                  const sky::SolarSite& site, const sky::PatchBasis& basis,
                                                  double ground_reflectance);
 
+/// Case k's column of point_in_time_skies' sky matrix: its sky over the basis (bins x 1).
+RadianceMatrix point_in_time_sky_column(const SkyAndSuns& skies, std::size_t k);
+
 /// One sentence per case for the run log and summary.json: "winter_noon: 12-21 12:00 LST,
 /// CIE general sky type 12, sun at 28.8 deg altitude, 180.1 deg azimuth, 80000 lx direct
 /// normal, 10000 lx diffuse horizontal".

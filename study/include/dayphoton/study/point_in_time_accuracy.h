@@ -46,9 +46,11 @@ PointInTimeAccuracy assess_point_in_time(const std::vector<double>& value_lux, c
 
 /// The stop of a case above its target, from the stop of the rounds that serve its limiting
 /// part: the sky's rounds (the daylight factor's), the point-in-time sun bins' rounds, or the
-/// direct sun's shadow-ray raises. A part's rounds that met their own target while the case is
-/// still above it say so: "sky rounds met the daylight factor's target" (the sky rounds chase
-/// the DF's overcast sky, not the case's), "target met by the sun rounds' percentile".
+/// direct sun's shadow-ray raises. A part's rounds that met their own measure while the case is
+/// still above it say so: "sky part: the sky rounds met the target on each part alone" (the
+/// sky rounds hold the DF and each case's sky part to the target, each against itself: the
+/// sky part of a case measured together with its sun can still be above it),
+/// "indirect sun: the sun rounds met their own measure".
 std::string point_in_time_stop_reason(const PointInTimeAccuracy& a, const std::string& sky_stop,
                                       const std::string& indirect_sun_stop, const std::string& direct_sun_stop);
 
