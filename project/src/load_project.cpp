@@ -1120,6 +1120,7 @@ class Loader {
     }
     std::vector<std::string> identifiers;
     for (const HoneybeeGrid& g : hb->model.grids) identifiers.push_back(g.identifier);
+    std::set<std::string> mesh_told;  // a grid listed twice (under two names) gets its mesh's words once
     auto add = [&](const std::string& grid, const Located<std::string>& name, bool drop, const SourceLocation& at) {
       const auto it = std::find_if(hb->model.grids.begin(), hb->model.grids.end(),
                                    [&](const HoneybeeGrid& g) { return g.identifier == grid; });
@@ -1141,13 +1142,14 @@ class Loader {
         d.message = std::move(message);
         m_project.geometry.honeybee->model.warnings.push_back(std::move(d));
       };
-      if (!it->mesh_problem.empty()) {
+      const bool first_mention = mesh_told.insert(grid).second;
+      if (first_mention && !it->mesh_problem.empty()) {
         model_diagnostic(Severity::Warning,
                          "sensor grid '" + grid + "': its mesh " + it->mesh_problem +
                              ", so it is not used: every sensor counts as an equal share of the area, where Honeybee "
                              "weighs each by its mesh face's area (sDA, ASE, EN 17037's target areas and the grid "
                              "means can differ from Honeybee's); give the grid a mesh of one face per sensor");
-      } else if (!area_m2.empty()) {
+      } else if (first_mention && !area_m2.empty()) {
         const auto [lo, hi] = std::minmax_element(area_m2.begin(), area_m2.end());
         double total_m2 = 0;
         for (double a : area_m2) total_m2 += a;

@@ -755,5 +755,29 @@ TEST(HoneybeeProject, AGridMeshOfUnequalFacesWeighsItsSensorsByTheirFaces) {
   }
 }
 
+// One grid listed twice (under its own name and another) is two point sets with the same
+// areas, and its mesh's note is given once, not once per mention.
+TEST(HoneybeeProject, AGridListedTwiceGetsItsMeshNoteOnce) {
+  const std::string grids =
+      R"("sensor_grids": [{"identifier": "g", "sensors": [)"
+      R"({"pos": [1.5, 1.5, 0.8], "dir": [0, 0, 1]}, {"pos": [2.75, 1.5, 0.8], "dir": [0, 0, 1]}],)"
+      "\n"
+      R"("mesh": {"type": "Mesh3D", "vertices": [[1, 1, 0.8], [2, 1, 0.8], [2, 2, 0.8], [1, 2, 0.8], )"
+      R"([2.5, 1, 0.8], [3, 1, 0.8], [3, 1.5, 0.8], [2.5, 1.5, 0.8]], "faces": [[0, 1, 2, 3], [4, 5, 6, 7]]}}])";
+  TempDir dir;
+  dir.write("model.hbjson", model(room("r", box, outdoors(), outdoors()), grids));
+  const std::string yaml = dir.write("p.yaml", std::string(ProjectHead) +
+                                                   "geometry: {honeybee: model.hbjson}\n"
+                                                   "sensors:\n  honeybee_grids: [g, {grid: g, name: g_again}]\n");
+  const SceneDescription scene = build_scene_description(load_project(yaml));
+  ASSERT_EQ(scene.grids.size(), 2u);
+  EXPECT_EQ(scene.grids[0].area_m2, (std::vector<double>{1.0, 0.25}));
+  EXPECT_EQ(scene.grids[1].area_m2, (std::vector<double>{1.0, 0.25}));
+  std::size_t notes = 0;
+  for (const Diagnostic& w : scene.warnings)
+    if (w.message.find("sensor grid 'g': the faces of its mesh differ in area") != std::string::npos) ++notes;
+  EXPECT_EQ(notes, 1u);
+}
+
 }  // namespace
 }  // namespace dayphoton::project
