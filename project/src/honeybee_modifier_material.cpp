@@ -21,7 +21,7 @@ bool bsdf_modifier_material(const RadianceModifier& modifier, const SourceLocati
   const SourceLocation field = modifier.bsdf_data_location.known() ? modifier.bsdf_data_location : at;
   std::shared_ptr<const KlemsBsdfData> data;
   try {
-    data = read_bsdf_xml_text(modifier.bsdf_xml, modifier.identifier + ".xml");
+    data = read_bsdf_xml_text(modifier.bsdf_xml, at.file + " bsdf_data of '" + modifier.identifier + "'");
   } catch (const InputError& e) {
     for (const Diagnostic& d : e.diagnostics()) {
       const std::string inside = d.location.known() ? " (line " + std::to_string(d.location.line) + ", column " +
