@@ -18,6 +18,7 @@
 #include "dayphoton/project/honeybee_model.h"
 #include "dayphoton/project/project.h"
 #include "../bsdf_xml_writer.h"
+#include "../json_string.h"
 #include "located_errors.h"
 
 namespace dayphoton::project {
@@ -426,19 +427,6 @@ TEST(Honeybee, AGlassFaceIsAPortLikeAnAperture) {
 
 // ---- BSDF modifiers -------------------------------------------------------------------------
 
-/// `text` as a JSON string literal.
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += std::string("\\") + c;
-    else if (c == '\n') out += "\\n";
-    else if (c == '\t') out += "\\t";
-    else if (c == '\r') out += "\\r";
-    else out += c;
-  }
-  return out + "\"";
-}
-
 /// A Lambertian Klems BSDF whose two sides differ (front reflectance 0.1, back 0.6, T 0.3).
 std::string two_sided_xml() {
   return dayphoton::test::bsdf_xml(dayphoton::test::klems_from(
@@ -464,7 +452,7 @@ std::string where(const std::string& text, const std::string& needle) {
 TEST(Honeybee, ABsdfApertureIsTurnedSoThatItsFrontIsOutdoors) {
   const std::string radiance = R"("modifiers": [{"type": "BSDF", "identifier": "blind", "up_orientation": [0, 0, 1],
  "thickness": 0, "function_file": ".", "transform": null, "front_diffuse_reflectance": [0, 0, 0],
- "bsdf_data": )" + json_string(two_sided_xml()) + "}]";
+ "bsdf_data": )" + dayphoton::test::json_string(two_sided_xml()) + "}]";
   std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
   const std::string win = opening("Aperture", "r_window", outdoors(), box.window());
   text.replace(text.find(win), win.size(), opening("Aperture", "r_window", outdoors(), box.window(), rad_modifier("blind")));
@@ -507,7 +495,7 @@ TEST(HoneybeeErrors, BsdfFieldsThatAreNotModelledAreLocatedAtTheirKeys) {
       " \"back_diffuse_reflectance\": [0, 0, 0],\n"
       " \"diffuse_transmittance\": [0.2, 0.2, 0.2],\n"
       " \"up_orientation\": [0, 0, 0],\n"
-      " \"bsdf_data\": " + json_string(two_sided_xml()) + "},\n"
+      " \"bsdf_data\": " + dayphoton::test::json_string(two_sided_xml()) + "},\n"
       " {\"type\": \"BSDF\", \"identifier\": \"broken\",\n"
       " \"bsdf_data\": \"<WindowElement>\\n<Optical>\"}]";
   std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
@@ -534,7 +522,7 @@ TEST(HoneybeeErrors, BsdfFieldsThatAreNotModelledAreLocatedAtTheirKeys) {
   // The thickness alone: a warning at its value, and the model reads.
   std::string thick = model(room("r", box, outdoors(), outdoors()),
                             "\"modifiers\": [{\"type\": \"BSDF\", \"identifier\": \"blind\",\n \"thickness\": 0.05,\n"
-                            " \"bsdf_data\": " + json_string(two_sided_xml()) + "}]");
+                            " \"bsdf_data\": " + dayphoton::test::json_string(two_sided_xml()) + "}]");
   thick.replace(thick.find(win), win.size(), opening("Aperture", "r_window", outdoors(), box.window(), rad_modifier("blind")));
   const HoneybeeModel t = read_honeybee_model_from_string(thick, "m.hbjson");
   ASSERT_EQ(t.warnings.size(), 2u);
@@ -546,7 +534,7 @@ TEST(HoneybeeErrors, BsdfFieldsThatAreNotModelledAreLocatedAtTheirKeys) {
   // A BSDF between two rooms, on an orphaned aperture, on a shade: no room says which side
   // is outdoors (or the object lets no light in), so the file's front cannot be placed.
   const std::string ok = "\"modifiers\": [{\"type\": \"BSDF\", \"identifier\": \"blind\", \"bsdf_data\": " +
-                         json_string(two_sided_xml()) + "}]";
+                         dayphoton::test::json_string(two_sided_xml()) + "}]";
   std::string orphan = model(room("r", box, outdoors(), outdoors()), ok);
   orphan.insert(orphan.size() - 1, ", \"orphaned_apertures\": [" +
                                        opening("Aperture", "loose", outdoors(), {{9, 0, 1}, {10, 0, 1}, {10, 0, 2}, {9, 0, 2}},

@@ -27,6 +27,8 @@
 #include "dayphoton/project/project.h"
 #include "dayphoton/study/results_model_builder.h"
 #include "fresh_run.h"
+#include "numeric_csv.h"
+#include "../json_string.h"
 #include "../temp_folder.h"
 
 namespace dayphoton {
@@ -45,18 +47,6 @@ fs::path folder() {
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += std::string("\\") + c;
-    else if (c == '\n') out += "\\n";
-    else if (c == '\t') out += "\\t";
-    else if (c == '\r') out += "\\r";
-    else out += c;
-  }
-  return out + "\"";
 }
 
 std::string num(double v) { return format_number(v); }
@@ -101,7 +91,7 @@ std::string honeybee_project(const std::string& name, const std::string& up) {
         "   {\"type\": \"Plastic\", \"identifier\": \"ceiling\", \"r_reflectance\": 0.7, \"g_reflectance\": 0.7, \"b_reflectance\": 0.7},\n"
         "   {\"type\": \"BSDF\", \"identifier\": \"blind\", \"modifier\": {\"type\": \"Void\"}, \"up_orientation\": " << up
      << ", \"thickness\": 0, \"function_file\": \".\", \"transform\": null,\n    \"bsdf_data\": "
-     << json_string(read_text(BlindFile)) << "}],\n"
+     << test::json_string(read_text(BlindFile)) << "}],\n"
      << "  \"sensor_grids\": [{\"type\": \"SensorGrid\", \"identifier\": \"points\", \"sensors\": [";
   const std::vector<Vec3> s = sensors();
   for (std::size_t i = 0; i < s.size(); ++i)
@@ -174,16 +164,10 @@ Df run(const std::string& name, const std::string& yaml) {
   const project::Project p = project::load_project_from_string(yaml, project_file.string());
   const fs::path out = folder() / name;
   test::run_in_fresh_folder(p, out);
-  std::ifstream in(out / "points" / "daylight_factor.csv");
-  std::string line;
-  std::getline(in, line);  // index,x,y,z,df_percent,df_stderr_percent
   Df df;
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string cell[6];
-    for (std::string& c : cell) std::getline(ss, c, ',');
-    df.value.push_back(std::stod(cell[4]));
-    df.stderr_.push_back(std::stod(cell[5]));
+  for (const std::vector<double>& row : test::read_csv(out / "points" / "daylight_factor.csv")) {
+    df.value.push_back(row.at(4));  // index,x,y,z,df_percent,df_stderr_percent
+    df.stderr_.push_back(row.at(5));
   }
   fs::remove_all(out);
   return df;
