@@ -533,10 +533,15 @@ class Reader {
     auto problem = [&](const char* key, const std::string& message, bool is_error = true) {
       mod.field_problems.push_back({json_member(path, key), message, is_error});
     };
-    if (get_string(m, path, id, "bsdf_data", mod.bsdf_xml, true))
+    const json* data = find(m, "bsdf_data");
+    if (!data || data->is_null()) {
+      problem("bsdf_data", "missing required field 'bsdf_data' (the BSDF's XML)");
+    } else if (!data->is_string()) {
+      problem("bsdf_data", "expected the BSDF's XML as a string, got " + kind(*data));
+    } else {
+      mod.bsdf_xml = data->get<std::string>();
       mod.bsdf_data_location = m_loc.locate(json_member(path, "bsdf_data"));
-    else
-      problem("bsdf_data", "a BSDF modifier needs its XML in 'bsdf_data'");
+    }
     if (const json* up = member(m, path, id, "up_orientation", false)) {
       const bool three = up->is_array() && up->size() == 3 &&
                          std::all_of(up->begin(), up->end(), [](const json& v) { return v.is_number() && std::isfinite(v.get<double>()); });

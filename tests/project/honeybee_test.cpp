@@ -497,12 +497,15 @@ TEST(HoneybeeErrors, BsdfFieldsThatAreNotModelledAreLocatedAtTheirKeys) {
       " \"up_orientation\": [0, 0, 0],\n"
       " \"bsdf_data\": " + dayphoton::test::json_string(two_sided_xml()) + "},\n"
       " {\"type\": \"BSDF\", \"identifier\": \"broken\",\n"
-      " \"bsdf_data\": \"<WindowElement>\\n<Optical>\"}]";
+      " \"bsdf_data\": \"<WindowElement>\\n<Optical>\"},\n"
+      " {\"type\": \"BSDF\", \"identifier\": \"nodata\"}]";
   std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
   const std::string win = opening("Aperture", "r_window", outdoors(), box.window());
   text.replace(text.find(win), win.size(), opening("Aperture", "r_window", outdoors(), box.window(), rad_modifier("blind")));
   const std::string north = face("r_north", "Wall", outdoors(), box.north());
   text.replace(text.find(north), north.size(), face("r_north", "Wall", outdoors(), box.north(), rad_modifier("broken")));
+  const std::string east = face("r_east", "Wall", outdoors(), box.east());
+  text.replace(text.find(east), east.size(), face("r_east", "Wall", outdoors(), box.east(), rad_modifier("nodata")));
   const auto errors = located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); }, "m.hbjson");
   const std::string m0 = "properties.radiance.modifiers[0].";
   const std::vector<std::string> expected_starts = {
@@ -513,6 +516,8 @@ TEST(HoneybeeErrors, BsdfFieldsThatAreNotModelledAreLocatedAtTheirKeys) {
       where(text, "[0.2, 0.2, 0.2]") + ": " + m0 + "diffuse_transmittance ('blind'): an extra diffuse component is not supported",
       where(text, "[0, 0, 0],\n \"bsdf_data\"") + ": " + m0 + "up_orientation ('blind'): the BSDF's up vector is zero",
       where(text, "\"<WindowElement>") + ": properties.radiance.modifiers[1] ('broken').bsdf_data (line 2, column",
+      where(text, "{\"type\": \"BSDF\", \"identifier\": \"nodata\"") +
+          ": properties.radiance.modifiers[2].bsdf_data ('nodata'): missing required field 'bsdf_data'",
   };
   ASSERT_EQ(errors.size(), expected_starts.size()) << ::testing::PrintToString(errors);
   for (const std::string& e : expected_starts)
