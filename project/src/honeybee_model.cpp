@@ -13,7 +13,9 @@
 // Face3D holes) must lie in that plane and inside it, and are cut out of it
 // (polygon_holes.h). Room faces point out of their room (Honeybee's convention), so an
 // aperture in an Outdoors face is a photon port whose normal points out of the room
-// (PortFacing::Out, tested against the scene like a declared polygon port). Two rooms that
+// (PortFacing::Out, tested against the scene like a declared polygon port); one of a BSDF
+// modifier is turned round (its vertices reversed, PortFacing::In), so that the BSDF's front,
+// the side its normal points away from, is outdoors. Two rooms that
 // share a wall each have a Surface face: only the first in file order becomes a surface (two
 // coincident surfaces would be hit at random, and a ray through a shared window would cross
 // its glass twice); its apertures and doors stand for both.
@@ -352,9 +354,16 @@ class Reader {
     };
     std::string type = m->type;
     std::transform(type.begin(), type.end(), type.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (type == "bsdf") return true;  // measured: its matrices say how much
     if (type == "glass" || type == "dielectric") return any_positive(0, 3);
     if (type == "trans") return m->args.size() >= 6 && m->args[5] > 0 && any_positive(0, 3);
     return false;
+  }
+
+  /// Whether modifier `id` is a BSDF (its surfaces are turned so that its front is outdoors).
+  bool is_bsdf(const std::string& id) const {
+    const auto it = m_modifiers.find(id);
+    return it != m_modifiers.end() && it->second.type == "BSDF";
   }
 
   /// The role of a face or opaque door of modifier `material` with boundary condition `bc`:
@@ -373,6 +382,29 @@ class Reader {
             const std::vector<std::vector<Vec3>>& holes, const std::string& material, HoneybeeRole role,
             PortFacing facing = PortFacing::Out) {
     if (material.empty()) return;
+    // A BSDF's front (WINDOW's exterior side) is the side its surface's normal points away
+    // from, as in RADIANCE (docs/materials.md, "Measured BSDF (Klems)"), and must face
+    // outdoors: a room's aperture, whose normal points out of the room, is turned round (its
+    // vertices reversed, its port facing in). Where no room says which side is outdoors, the
+    // BSDF is refused rather than put either way.
+    const bool bsdf = is_bsdf(material);
+    if (bsdf) {
+      const char* why = role == HoneybeeRole::Port && facing == PortFacing::Out ? nullptr
+                        : role == HoneybeeRole::Port
+                            ? "an orphaned object has no room to say which side is outdoors, where the BSDF's front "
+                              "(WINDOW's exterior side) must face; put it in a room"
+                        : role == HoneybeeRole::InteriorGlass
+                            ? "between two rooms neither side is outdoors, so which side is the BSDF's front (WINDOW's "
+                              "exterior side) cannot be told; give the interior opening a glass or trans modifier"
+                            : "a BSDF modifier is read on the apertures, glass doors and faces of a room facing "
+                              "Outdoors only, whose outside is its front (WINDOW's exterior side); give this object "
+                              "another modifier";
+      if (why) {
+        error(path, id, "has BSDF modifier '" + material + "': " + why);
+        return;
+      }
+      facing = PortFacing::In;
+    }
     HoneybeeSurface s;
     s.material = material;
     s.role = role;
@@ -382,6 +414,7 @@ class Reader {
     if (holes.empty()) {
       s.name = id;
       s.vertices = boundary;
+      if (bsdf) std::reverse(s.vertices.begin(), s.vertices.end());
       m_out.surfaces.push_back(std::move(s));
       return;
     }
@@ -397,6 +430,7 @@ class Reader {
       HoneybeeSurface t = s;
       t.name = id + ":" + std::to_string(k + 1);
       t.vertices.assign(triangles[k].begin(), triangles[k].end());
+      if (bsdf) std::reverse(t.vertices.begin(), t.vertices.end());
       m_out.surfaces.push_back(std::move(t));
     }
   }
@@ -482,10 +516,67 @@ class Reader {
       arg("b_reflectance", 1);
       if (const json* alt = member(m, path, id, "alternate_material", false); alt && !alt->is_null())
         m_problems[id] = "has an alternate_material, which is not supported";
+    } else if (mod.type == "BSDF") {
+      read_bsdf_fields(m, path, mod);
     } else {
-      m_problems[id] = "has type '" + mod.type + "', which the Honeybee import does not support (plastic, metal, trans, glass, mirror)";
+      m_problems[id] = "has type '" + mod.type + "', which the Honeybee import does not support (plastic, metal, trans, glass, mirror, BSDF)";
     }
     return mod;
+  }
+
+  /// The fields of a BSDF modifier (honeybee-schema radiance/modifier.py `BSDF`, as
+  /// honeybee-radiance's BSDF.to_dict writes them). What RADIANCE's BSDF primitive takes that
+  /// dayphoton does not model is refused at its field, as the RADIANCE import refuses it
+  /// (docs/radiance-import.md, "BSDF"); the problems are reported where an object uses it.
+  void read_bsdf_fields(const json& m, const std::string& path, RadianceModifier& mod) {
+    const std::string& id = mod.identifier;
+    auto problem = [&](const char* key, const std::string& message, bool is_error = true) {
+      mod.field_problems.push_back({json_member(path, key), message, is_error});
+    };
+    const json* data = find(m, "bsdf_data");
+    if (!data || data->is_null()) {
+      problem("bsdf_data", "missing required field 'bsdf_data' (the BSDF's XML)");
+    } else if (!data->is_string()) {
+      problem("bsdf_data", "expected the BSDF's XML as a string, got " + kind(*data));
+    } else {
+      mod.bsdf_xml = data->get<std::string>();
+      mod.bsdf_data_location = m_loc.locate(json_member(path, "bsdf_data"));
+    }
+    if (const json* up = member(m, path, id, "up_orientation", false)) {
+      const bool three = up->is_array() && up->size() == 3 &&
+                         std::all_of(up->begin(), up->end(), [](const json& v) { return v.is_number() && std::isfinite(v.get<double>()); });
+      if (!three)
+        problem("up_orientation", "expected a list of three numbers (the BSDF's up vector), got " + kind(*up));
+      else if (Vec3 u{(*up)[0].get<double>(), (*up)[1].get<double>(), (*up)[2].get<double>()}; length(u) == 0)
+        problem("up_orientation", "the BSDF's up vector is zero");
+      else
+        mod.bsdf_up = u;
+    }
+    double thickness = 0;
+    if (get_number(m, path, id, "thickness", thickness, false) && thickness != 0)
+      problem("thickness",
+              "a thickness (" + format_number(thickness) +
+                  " model units) is ignored: the BSDF is applied at the aperture (RADIANCE uses it to hide proxied "
+                  "geometry behind the surface)",
+              false);
+    std::string function_file = ".";
+    if (get_string(m, path, id, "function_file", function_file, false) && function_file != ".")
+      problem("function_file", "a function file ('" + function_file +
+                                   "') is not supported: only the up vector of 'up_orientation' orients the BSDF; "
+                                   "leave it at '.'");
+    if (member(m, path, id, "transform", false))
+      problem("transform", "a transform is not supported: turn the BSDF by its 'up_orientation' instead");
+    for (const char* key : {"front_diffuse_reflectance", "back_diffuse_reflectance", "diffuse_transmittance"}) {
+      const json* v = member(m, path, id, key, false);
+      if (!v) continue;
+      const bool three = v->is_array() && v->size() == 3 &&
+                         std::all_of(v->begin(), v->end(), [](const json& x) { return x.is_number(); });
+      if (!three)
+        problem(key, "expected a list of three numbers, got " + kind(*v));
+      else if (std::any_of(v->begin(), v->end(), [](const json& x) { return x.get<double>() != 0; }))
+        problem(key, std::string("an extra diffuse component is not supported (RADIANCE adds it to the BSDF's ") +
+                         "matrices); add it to the matrices of the XML instead, or set it to zero");
+    }
   }
 
   void read_radiance_properties(const json& root) {
@@ -541,7 +632,8 @@ class Reader {
     if (const auto it = m_modifiers.find(m.identifier); it != m_modifiers.end()) {
       // Modifier sets repeat the model's modifiers, and Honeybee's own files list some twice:
       // a second definition must say the same; the first stays.
-      if (it->second.type != m.type || it->second.args != m.args)
+      if (it->second.type != m.type || it->second.args != m.args || it->second.bsdf_xml != m.bsdf_xml ||
+          it->second.bsdf_up != m.bsdf_up)
         error(m.path, m.identifier, "modifier '" + m.identifier + "' is defined twice, differently (first at " +
                                         it->second.location.to_string() + ")");
       return;
@@ -620,6 +712,13 @@ class Reader {
           error(mod.path, id, "modifier '" + id + "' " + p->second);
           continue;
         }
+        bool refused = false;
+        for (const detail::ModifierFieldProblem& p : mod.field_problems) {
+          if (p.error) error(p.path, id, p.message);
+          else warning(p.path, id, p.message);
+          refused = refused || p.error;
+        }
+        if (refused) continue;
       } else {
         for (const RadianceModifier& g : detail::honeybee_generic_modifiers())
           if (g.identifier == id) mod = g;

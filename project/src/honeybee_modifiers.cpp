@@ -9,10 +9,15 @@ const std::vector<RadianceModifier>& honeybee_generic_modifiers() {
   // honeybee-radiance, lib/data/modifiers/default.mat: plastic arguments are red, green, blue
   // reflectance, specularity, roughness; glass arguments the RGB transmissivities.
   static const std::vector<RadianceModifier> generic = [] {
-    auto plastic = [](const char* id, double r) {
-      return RadianceModifier{id, "plastic", {r, r, r, 0, 0}, "", {}};
+    auto modifier = [](const char* id, const char* type, std::vector<double> args) {
+      RadianceModifier m;
+      m.identifier = id;
+      m.type = type;
+      m.args = std::move(args);
+      return m;
     };
-    auto glass = [](const char* id, double tn) { return RadianceModifier{id, "glass", {tn, tn, tn}, "", {}}; };
+    auto plastic = [&](const char* id, double r) { return modifier(id, "plastic", {r, r, r, 0, 0}); };
+    auto glass = [&](const char* id, double tn) { return modifier(id, "glass", {tn, tn, tn}); };
     return std::vector<RadianceModifier>{
         plastic("generic_floor_0.20", 0.2),
         plastic("generic_wall_0.50", 0.5),

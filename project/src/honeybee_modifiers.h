@@ -12,16 +12,32 @@
 #include <vector>
 
 #include "dayphoton/core/source_location.h"
+#include "dayphoton/core/vec3.h"
 
 namespace dayphoton::project::detail {
+
+/// A problem with one field of a modifier, reported (located at the field) only when an
+/// object uses the modifier, as the modifier's other problems are.
+struct ModifierFieldProblem {
+  std::string path;            ///< JSON path of the field
+  std::string message;
+  bool error = true;           ///< else a warning
+};
 
 /// A RADIANCE material: type and real arguments, as a .rad file would give them.
 struct RadianceModifier {
   std::string identifier;
-  std::string type;            ///< RADIANCE type: plastic, metal, trans, glass, mirror, ...
+  std::string type;            ///< RADIANCE type: plastic, metal, trans, glass, mirror, BSDF, ...
   std::vector<double> args;    ///< the real arguments
   std::string path;            ///< JSON path, for messages ("" for a generic default)
   SourceLocation location;
+  /// BSDF (honeybee-schema radiance/modifier.py `BSDF`): the Klems XML given inline as
+  /// `bsdf_data`, where that field is written (the XML's errors are reported there), and the
+  /// `up_orientation` (model coordinates; the schema's default (0.01, 0.01, 1)).
+  std::string bsdf_xml;
+  SourceLocation bsdf_data_location;
+  Vec3 bsdf_up{0.01, 0.01, 1.0};
+  std::vector<ModifierFieldProblem> field_problems;
 };
 
 /// Honeybee's generic modifiers, as in honeybee-radiance's library of default modifiers

@@ -4,6 +4,7 @@
 // sensor grids, and located errors for bad input; then the project keys that use it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,8 +14,11 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/polygon.h"
+#include "dayphoton/engine/bsdf_material.h"
 #include "dayphoton/project/honeybee_model.h"
 #include "dayphoton/project/project.h"
+#include "../bsdf_xml_writer.h"
+#include "../json_string.h"
 #include "located_errors.h"
 
 namespace dayphoton::project {
@@ -421,6 +425,136 @@ TEST(Honeybee, AGlassFaceIsAPortLikeAnAperture) {
   EXPECT_EQ(surface(d, "d").role, HoneybeeRole::Port);
 }
 
+// ---- BSDF modifiers -------------------------------------------------------------------------
+
+/// A Lambertian Klems BSDF whose two sides differ (front reflectance 0.1, back 0.6, T 0.3).
+std::string two_sided_xml() {
+  return dayphoton::test::bsdf_xml(dayphoton::test::klems_from(
+      KlemsBasis::full(), [](int, int) { return 0.3 / Pi; }, [](int, int) { return 0.3 / Pi; },
+      [](int, int) { return 0.1 / Pi; }, [](int, int) { return 0.6 / Pi; }));
+}
+
+/// "line:column" of the first occurrence of `needle` in `text`.
+std::string where(const std::string& text, const std::string& needle) {
+  const std::size_t at = text.find(needle);
+  EXPECT_NE(at, std::string::npos) << needle;
+  const std::size_t line_start = text.rfind('\n', at);
+  const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+  const std::size_t column = at - (line_start == std::string::npos ? 0 : line_start + 1) + 1;
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+// A BSDF modifier (honeybee-schema radiance/modifier.py BSDF: the Klems XML inline in
+// bsdf_data, up_orientation) on a room's aperture becomes a `bsdf` material with the file's
+// data and up vector, and the aperture is turned round: RADIANCE (and dayphoton) take the side
+// a BSDF surface's normal points to as the file's back (WINDOW's room side), and Honeybee's
+// aperture normals point out of the room. Before, the modifier was refused ("not supported").
+TEST(Honeybee, ABsdfApertureIsTurnedSoThatItsFrontIsOutdoors) {
+  const std::string radiance = R"("modifiers": [{"type": "BSDF", "identifier": "blind", "up_orientation": [0, 0, 1],
+ "thickness": 0, "function_file": ".", "transform": null, "front_diffuse_reflectance": [0, 0, 0],
+ "bsdf_data": )" + dayphoton::test::json_string(two_sided_xml()) + "}]";
+  std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
+  const std::string win = opening("Aperture", "r_window", outdoors(), box.window());
+  text.replace(text.find(win), win.size(), opening("Aperture", "r_window", outdoors(), box.window(), rad_modifier("blind")));
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  const HoneybeeSurface& w = surface(m, "r_window");
+  EXPECT_EQ(w.role, HoneybeeRole::Port);
+  EXPECT_EQ(w.facing, PortFacing::In);
+  const std::vector<Vec3> hb = box.window();
+  ASSERT_EQ(w.vertices.size(), hb.size());
+  for (std::size_t i = 0; i < hb.size(); ++i) EXPECT_EQ(w.vertices[i], hb[hb.size() - 1 - i]);
+  EXPECT_GT(polygon_normal(w.vertices).y, 0.99);  // into the room (y 0..5): the file's front outdoors
+  const engine::BsdfMaterialParameters* bsdf = engine::bsdf_parameters(material(m, "blind"));
+  ASSERT_NE(bsdf, nullptr);
+  EXPECT_EQ(bsdf->up, Vec3(0, 0, 1));
+  EXPECT_EQ(bsdf->data->basis.size(), 145);
+  // The user is told that honeybee-radiance's static export gives the device turned round.
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(m.warnings[0].message.find("properties.radiance.modifiers[0] ('blind'): the BSDF's front"), std::string::npos)
+      << m.warnings[0].message;
+  EXPECT_NE(m.warnings[0].message.find("turned round"), std::string::npos);
+  // The schema's default up vector, (0.01, 0.01, 1), when none is written.
+  std::string plain = text;
+  const std::string up = R"("up_orientation": [0, 0, 1],)";
+  plain.replace(plain.find(up), up.size(), "");
+  EXPECT_EQ(engine::bsdf_parameters(material(read_honeybee_model_from_string(plain, "m.hbjson"), "blind"))->up,
+            Vec3(0.01, 0.01, 1));
+}
+
+// What RADIANCE's BSDF primitive takes and dayphoton does not model is refused at its very key
+// (file:line:column of its value), as the RADIANCE import refuses it; a thickness is ignored
+// with a warning there; the XML's own errors are reported at bsdf_data with their place in
+// the XML; a BSDF where no room says which side is outdoors is refused at the object.
+TEST(HoneybeeErrors, BsdfFieldsThatAreNotModelledAreLocatedAtTheirKeys) {
+  const std::string radiance =
+      "\"modifiers\": [{\"type\": \"BSDF\", \"identifier\": \"blind\",\n"
+      " \"function_file\": \"blind.cal\",\n"
+      " \"transform\": \"-rz 90\",\n"
+      " \"thickness\": 0.05,\n"
+      " \"front_diffuse_reflectance\": [0.1, 0.1, 0.1],\n"
+      " \"back_diffuse_reflectance\": [0, 0, 0],\n"
+      " \"diffuse_transmittance\": [0.2, 0.2, 0.2],\n"
+      " \"up_orientation\": [0, 0, 0],\n"
+      " \"bsdf_data\": " + dayphoton::test::json_string(two_sided_xml()) + "},\n"
+      " {\"type\": \"BSDF\", \"identifier\": \"broken\",\n"
+      " \"bsdf_data\": \"<WindowElement>\\n<Optical>\"},\n"
+      " {\"type\": \"BSDF\", \"identifier\": \"nodata\"}]";
+  std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
+  const std::string win = opening("Aperture", "r_window", outdoors(), box.window());
+  text.replace(text.find(win), win.size(), opening("Aperture", "r_window", outdoors(), box.window(), rad_modifier("blind")));
+  const std::string north = face("r_north", "Wall", outdoors(), box.north());
+  text.replace(text.find(north), north.size(), face("r_north", "Wall", outdoors(), box.north(), rad_modifier("broken")));
+  const std::string east = face("r_east", "Wall", outdoors(), box.east());
+  text.replace(text.find(east), east.size(), face("r_east", "Wall", outdoors(), box.east(), rad_modifier("nodata")));
+  const auto errors = located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); }, "m.hbjson");
+  const std::string m0 = "properties.radiance.modifiers[0].";
+  const std::vector<std::string> expected_starts = {
+      where(text, "\"blind.cal\"") + ": " + m0 + "function_file ('blind'): a function file ('blind.cal') is not supported",
+      where(text, "\"-rz 90\"") + ": " + m0 + "transform ('blind'): a transform is not supported",
+      where(text, "0.05") + ": " + m0 + "thickness ('blind'): a thickness (0.05 model units) is ignored",  // a warning
+      where(text, "[0.1, 0.1, 0.1]") + ": " + m0 + "front_diffuse_reflectance ('blind'): an extra diffuse component is not supported",
+      where(text, "[0.2, 0.2, 0.2]") + ": " + m0 + "diffuse_transmittance ('blind'): an extra diffuse component is not supported",
+      where(text, "[0, 0, 0],\n \"bsdf_data\"") + ": " + m0 + "up_orientation ('blind'): the BSDF's up vector is zero",
+      where(text, "\"<WindowElement>") + ": properties.radiance.modifiers[1] ('broken').bsdf_data (line 2, column",
+      where(text, "{\"type\": \"BSDF\", \"identifier\": \"nodata\"") +
+          ": properties.radiance.modifiers[2].bsdf_data ('nodata'): missing required field 'bsdf_data'",
+  };
+  ASSERT_EQ(errors.size(), expected_starts.size()) << ::testing::PrintToString(errors);
+  for (const std::string& e : expected_starts)
+    EXPECT_TRUE(std::any_of(errors.begin(), errors.end(), [&](const std::string& got) { return got.rfind(e, 0) == 0; }))
+        << e << "\n" << ::testing::PrintToString(errors);
+
+  // The thickness alone: a warning at its value, and the model reads.
+  std::string thick = model(room("r", box, outdoors(), outdoors()),
+                            "\"modifiers\": [{\"type\": \"BSDF\", \"identifier\": \"blind\",\n \"thickness\": 0.05,\n"
+                            " \"bsdf_data\": " + dayphoton::test::json_string(two_sided_xml()) + "}]");
+  thick.replace(thick.find(win), win.size(), opening("Aperture", "r_window", outdoors(), box.window(), rad_modifier("blind")));
+  const HoneybeeModel t = read_honeybee_model_from_string(thick, "m.hbjson");
+  ASSERT_EQ(t.warnings.size(), 2u);
+  EXPECT_EQ(std::to_string(t.warnings[0].location.line) + ":" + std::to_string(t.warnings[0].location.column),
+            where(thick, "0.05"));
+  EXPECT_NE(t.warnings[0].message.find("thickness ('blind'): a thickness (0.05 model units) is ignored"), std::string::npos)
+      << t.warnings[0].message;
+
+  // A BSDF between two rooms, on an orphaned aperture, on a shade: no room says which side
+  // is outdoors (or the object lets no light in), so the file's front cannot be placed.
+  const std::string ok = "\"modifiers\": [{\"type\": \"BSDF\", \"identifier\": \"blind\", \"bsdf_data\": " +
+                         dayphoton::test::json_string(two_sided_xml()) + "}]";
+  std::string orphan = model(room("r", box, outdoors(), outdoors()), ok);
+  orphan.insert(orphan.size() - 1, ", \"orphaned_apertures\": [" +
+                                       opening("Aperture", "loose", outdoors(), {{9, 0, 1}, {10, 0, 1}, {10, 0, 2}, {9, 0, 2}},
+                                               rad_modifier("blind")) +
+                                       "], \"orphaned_shades\": [{\"type\": \"Shade\", \"identifier\": \"screen\", " +
+                                       geometry({{0, -1, 3}, {4, -1, 3}, {4, -1, 4}, {0, -1, 4}}) + rad_modifier("blind") +
+                                       "}]");
+  const auto refused = located_errors([&] { read_honeybee_model_from_string(orphan, "m.hbjson"); });
+  ASSERT_EQ(refused.size(), 3u) << ::testing::PrintToString(refused);  // and the room's window's warning
+  EXPECT_NE(refused[0].find("('screen'): has BSDF modifier 'blind': a BSDF modifier is read on the apertures"),
+            std::string::npos) << refused[0];
+  EXPECT_NE(refused[1].find("('loose'): has BSDF modifier 'blind': an orphaned object has no room"), std::string::npos)
+      << refused[1];
+}
+
 TEST(HoneybeeErrors, SyntaxErrorAtLineAndColumn) {
   const std::string text = "{\n  \"type\": \"Model\",\n  \"rooms\": [,]\n}\n";
   const auto errors = located_errors([&] { read_honeybee_model_from_string(text, "m.hbjson"); }, "m.hbjson");
@@ -471,7 +605,7 @@ TEST(HoneybeeErrors, OddValuesAreLocatedAtTheirField) {
 
 TEST(HoneybeeErrors, UnsupportedAndUnknownModifiers) {
   const std::string radiance =
-      R"("modifiers": [{"type": "BSDF", "identifier": "blind", "bsdf_data": "x"},)"
+      R"("modifiers": [{"type": "aBSDF", "identifier": "blind", "bsdf_data": "x"},)"
       R"( {"type": "plastic", "identifier": "patterned", "r_reflectance": 0.5, "modifier": {"type": "brightfunc"}}])";
   std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
   const std::string north = face("r_north", "Wall", outdoors(), box.north());
@@ -484,7 +618,7 @@ TEST(HoneybeeErrors, UnsupportedAndUnknownModifiers) {
   ASSERT_EQ(errors.size(), 3u) << ::testing::PrintToString(errors);
   EXPECT_NE(errors[0].find("rooms[0].faces[3].properties.radiance.modifier ('r_east'): unknown modifier 'nothing'"),
             std::string::npos) << errors[0];
-  EXPECT_NE(errors[1].find("properties.radiance.modifiers[0] ('blind'): modifier 'blind' has type 'BSDF'"), std::string::npos)
+  EXPECT_NE(errors[1].find("properties.radiance.modifiers[0] ('blind'): modifier 'blind' has type 'aBSDF'"), std::string::npos)
       << errors[1];
   EXPECT_NE(errors[2].find("modifier 'patterned' is modified by another modifier"), std::string::npos) << errors[2];
 }
