@@ -418,10 +418,12 @@ GridPhotons lattice_photons_xy(Field irradiance) {
 }
 
 DaylightCoefficients lattice_estimate(const GridPhotons& grid, const std::vector<SensorPoint>& sensors,
-                                      std::size_t bandwidth, bool local_linear, bool quadratic_at_walls = false) {
+                                      std::size_t bandwidth, bool local_linear, bool quadratic_at_walls = false,
+                                      CurvatureCorrection curvature = CurvatureCorrection::Pilot) {
   CoefficientOptions o;
   o.density.bandwidth = bandwidth;
   o.local_linear = local_linear;
+  o.curvature_correction = curvature;
   if (quadratic_at_walls) o.quadratic_fit_sources = {0};
   return test::estimate_coefficients(grid, sensors, o);
 }
@@ -486,7 +488,7 @@ TEST(DaylightCoefficients, LocalQuadraticEstimateIsExactForACurvedFieldAtCorners
   auto curved = [](double x, double y) { return 6.0 + x + y - 0.3 * x * x + 0.05 * x * y - 0.3 * y * y; };
   const GridPhotons grid = lattice_photons_xy(curved);
   const DaylightCoefficients quadratic = lattice_estimate(grid, sensors, 20000, true, true);
-  const DaylightCoefficients linear = lattice_estimate(grid, sensors, 20000, true, false);
+  const DaylightCoefficients linear = lattice_estimate(grid, sensors, 20000, true, false, CurvatureCorrection::None);
   for (std::size_t s = 0; s < sensors.size(); ++s) {
     const Vec3 q = sensors[s].position;
     const double truth = curved(q.x, q.y);
@@ -509,7 +511,8 @@ TEST(DaylightCoefficients, CurvatureCorrectionRemovesTheInteriorCurvatureBias) {
   // up to the lattice's count error in a disc (the 2e-3 of the tests above): the pilot reads the
   // curvature over a disc of 2r at the centre, and of the 1.09 m to the wall near it; the disc
   // the wall cuts keeps the walls' rule (quadratic_fit_sources: exact when the source is
-  // listed, the plane's -1.4 % when not). On a uniform field the whole-disc variance is, in
+  // listed; when not, exact by the pilot clipped by the wall with Pilot, the plane's -1.4 % with
+  // Quadratic, which corrects whole discs only). On a uniform field the whole-disc variance is, in
   // the plane's units: 4 for the quadratic (equivalent kernel (4 - 6 s^2) / (pi r^2):
   // E[(4 - 6 t)^2] = 4 for t = s^2 uniform); for the pilot at R = 2r, with t = rho^2 / R^2
   // uniform on [0, 1] over the pilot disc (area 4 pi r^2), weights pi r^2 w = 19/16 - 3t/8
@@ -540,7 +543,10 @@ TEST(DaylightCoefficients, CurvatureCorrectionRemovesTheInteriorCurvatureBias) {
     }
     const DaylightCoefficients unlisted = estimate(grid, correction, false);
     EXPECT_NEAR(unlisted.global[0].x / truth_centre, 1.0, 2e-3);
-    EXPECT_LT(unlisted.global[1].x / curved(2.0037, 3.7561), 1.0 - 1e-2);  // the cut disc: the plane
+    if (correction == CurvatureCorrection::Pilot)  // the cut disc: the pilot clipped by the wall
+      EXPECT_NEAR(unlisted.global[1].x / curved(2.0037, 3.7561), 1.0, 2e-3);
+    else  // the cut disc: the plane
+      EXPECT_LT(unlisted.global[1].x / curved(2.0037, 3.7561), 1.0 - 1e-2);
   }
   const GridPhotons flat = lattice_photons_xy([](double, double) { return 2.0; });
   const DaylightCoefficients plane = estimate(flat, CurvatureCorrection::None);
@@ -604,15 +610,19 @@ GridPhotons lattice_photons_in(const std::vector<PlanePoint>& outline, Field irr
 
 TEST(DaylightCoefficients, LocalQuadraticFitOnlyForTheListedSources) {
   // Two sources with the same photons (the curved field of the test above, 20 000 photons per
-  // disc at an edge 0.24 m from the wall): only the listed source gets the quadratic (exact
-  // within the lattice's 2e-3); the other keeps the local-linear fit, whose reading of the
+  // disc at an edge 0.24 m from the wall), no curvature correction: only the listed source gets
+  // the quadratic (exact within the lattice's 2e-3); the other keeps the local-linear fit, whose reading of the
   // concave field is 1.4 % low there, whatever its bandwidth.
   auto curved = [](double x, double y) { return 6.0 + x + y - 0.3 * x * x + 0.05 * x * y - 0.3 * y * y; };
   const GridPhotons grid = lattice_photons_in({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, curved, 2);
   const std::vector<SensorPoint> sensors = {{{2.0037, 3.7561, 0.8}, {0, 0, 1}}};
   const double truth = curved(2.0037, 3.7561);
   for (std::size_t listed : {0u, 1u}) {
-    const DaylightCoefficients c = one_sensor_coefficients(grid, sensors, 2, 20000, {listed});
+    CoefficientOptions o;
+    o.density.bandwidth = 20000;
+    o.quadratic_fit_sources = {listed};
+    o.curvature_correction = CurvatureCorrection::None;  // the cut discs' pilot off (CutDiscCurvature.*)
+    const DaylightCoefficients c = test::estimate_coefficients(grid, sensors, o, 2, true);
     EXPECT_NEAR(c.global[listed].x / truth, 1.0, 2e-3) << "listed source " << listed;
     EXPECT_LT(c.global[1 - listed].x / truth, 1.0 - 1e-2) << "the source not listed, " << 1 - listed;
   }
