@@ -10,6 +10,7 @@
 
 #include "dayphoton/engine/daylight_coefficients.h"
 #include "dayphoton/engine/receiver_plane.h"
+#include "estimate_statistics.h"
 #include "photon_lattice.h"
 
 namespace dayphoton::engine {
@@ -114,18 +115,10 @@ TEST(CutDiscCurvature, TheCorrectedEstimateIsUnbiasedAndReportsItsOwnVariance) {
       estimates.push_back(c.global[0].x / (Peak * truth));  // grey photons: every channel the same
       reported.push_back(c.photon_variance[0] / (Peak * truth * Peak * truth));
     }
-    double mean = 0, var = 0, fourth = 0, rmean = 0, rvar = 0;
-    for (double e : estimates) mean += e / Trials;
-    for (double e : estimates) {
-      var += (e - mean) * (e - mean) / (Trials - 1);
-      fourth += std::pow(e - mean, 4) / Trials;
-    }
-    for (double r : reported) rmean += r / Trials;
-    for (double r : reported) rvar += (r - rmean) * (r - rmean) / (Trials - 1);
-    std::printf("sensor %zu: mean %.5f, observed variance %.6f, reported %.6f\n", s, mean, var, rmean);
-    EXPECT_NEAR(mean, 1.0, 4 * std::sqrt(var / Trials)) << "sensor " << s;
-    const double se = std::sqrt((fourth - var * var) / Trials + rvar / Trials);  // of var - rmean
-    EXPECT_NEAR(var, rmean, 4 * se) << "sensor " << s;
+    const test::ReportedVariance r = test::reported_variance(estimates, reported);
+    std::printf("sensor %zu: mean %.5f, observed variance %.6f, reported %.6f\n", s, r.mean, r.observed, r.reported);
+    EXPECT_NEAR(r.mean, 1.0, 4 * r.mean_se) << "sensor " << s;
+    EXPECT_NEAR(r.observed, r.reported, 4 * r.difference_se) << "sensor " << s;
   }
 }
 

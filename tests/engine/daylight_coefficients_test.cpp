@@ -16,6 +16,7 @@
 #include "dayphoton/engine/daylight_coefficients.h"
 #include "dayphoton/engine/photon_tracer.h"
 #include "dayphoton/sky/solar_position.h"
+#include "estimate_statistics.h"
 #include "light_tracing_reference.h"
 #include "photon_lattice.h"
 #include "test_scenes.h"
@@ -587,18 +588,10 @@ TEST(DaylightCoefficients, LocalQuadraticEstimateReportsItsOwnVariance) {
     estimate.push_back(c.global[0].x / Density);  // grey photons: every channel the same
     reported.push_back(c.photon_variance[0] / (Density * Density));
   }
-  double mean = 0, var = 0, fourth = 0, rmean = 0, rvar = 0;
-  for (double e : estimate) mean += e / Trials;
-  for (double e : estimate) {
-    var += (e - mean) * (e - mean) / (Trials - 1);
-    fourth += std::pow(e - mean, 4) / Trials;
-  }
-  for (double r : reported) rmean += r / Trials;
-  for (double r : reported) rvar += (r - rmean) * (r - rmean) / (Trials - 1);
-  std::printf("mean %.5f, observed variance %.6f, reported %.6f\n", mean, var, rmean);
-  EXPECT_NEAR(mean, 1.0, 4 * std::sqrt(var / Trials));
-  const double se = std::sqrt((fourth - var * var) / Trials + rvar / Trials);  // of var - rmean
-  EXPECT_NEAR(var, rmean, 4 * se);
+  const test::ReportedVariance r = test::reported_variance(estimate, reported);
+  std::printf("mean %.5f, observed variance %.6f, reported %.6f\n", r.mean, r.observed, r.reported);
+  EXPECT_NEAR(r.mean, 1.0, 4 * r.mean_se);
+  EXPECT_NEAR(r.observed, r.reported, 4 * r.difference_se);
 }
 
 /// The photons of lattice_photons_xy inside `outline` (1 cm cells of the 4 x 4 m square whose
