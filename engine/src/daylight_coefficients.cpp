@@ -355,6 +355,81 @@ std::size_t curvature_minimum_photons(double radius_m, double pilot_m) {
   return pilot_m >= 1.5 * radius_m ? 0 : QuadraticEverywhereMinimumPhotons;
 }
 
+/// Clamps a negative total (the correction of a small value against its noise) to 0 in both
+/// classes, as the quadratic's (local_quadratic_estimate).
+void clamp_total(ClassEstimates& e) {
+  for (int c = 0; c < 3; ++c)
+    if (e.caustic[c] + e.global[c] < 0) {
+      e.caustic[c] = 0;
+      e.global[c] = 0;
+    }
+}
+
+/// The largest share of a cut disc's local-linear estimate its curvature correction may
+/// subtract or add (subtract_cut_pilot). The correction is the second-order term of the
+/// field's Taylor expansion over the disc, read by a quadratic over a pilot twice as wide; where
+/// it is not small against the estimate itself (light falling off by orders of magnitude
+/// across the disc: closed slats, the back of a deep room), the expansion does not hold at that
+/// scale and the terms the quadratic leaves out, which the wider pilot amplifies by (R / r)^k,
+/// dominate its reading: the plane is kept. On a narrow shaft's floor the correction is 3-4 %.
+constexpr double CutCurvatureLargestShare = 0.5;
+
+/// The curvature correction of a cut disc (local_quadratic_fit.h, cut_curvature_pilot):
+/// every photon passing `filter` within the pilot radius, its bias weight subtracted per class
+/// from the local-linear estimates in `results` (one per flux of `fluxes`) and from the
+/// sub-patch shares; the variance of the difference is var_plane - 2 sum_disc w_lin w_pilot y^2
+/// + sum_pilot w_pilot^2 y^2 (the disc's photons are among the pilot's, R >= r). Nothing is
+/// done when the pilot is not valid (a region too thin for its fit) or when the correction of
+/// the first flux is over CutCurvatureLargestShare of its estimate: the plane stays.
+void subtract_cut_pilot(const PhotonMap& map, const Vec3& at, const PhotonFilter& filter,
+                        const std::vector<NeighbourPhoton>& found, const KernelDisc& disc,
+                        const CutCurvaturePilot& pilot, double pilot_m, const PhotonFlux fluxes[2],
+                        ClassEstimates* results[2], int modes, PhotonFlux quadrant_flux,
+                        std::vector<NeighbourPhoton>& pilot_found, QuadrantShares* quadrants) {
+  if (!pilot.valid) return;
+  const double inv_pilot = 1.0 / pilot_m, inv_r = 1.0 / disc.radius_m, inv_r2 = inv_r * inv_r;
+  const auto bias_weight = [&](const Photon& ph) {
+    return pilot.bias_weight((double(ph.position[0]) - at.x) * inv_pilot, (double(ph.position[1]) - at.y) * inv_pilot);
+  };
+  map.within(at, pilot_m, filter, pilot_found);
+  Vec3 bias[2][2];
+  double pilot_variance[2] = {0, 0};
+  for (int f = 0; f < modes; ++f) {
+    bias[f][0] = bias[f][1] = Vec3{0, 0, 0};
+    for (const NeighbourPhoton& n : pilot_found) {
+      const Photon& ph = map.photons()[n.index];
+      const Vec3 flux = flux_of(ph, fluxes[f]);
+      const double w = bias_weight(ph);
+      bias[f][ph.path_class == PathClass::Caustic ? 0 : 1] += flux * w;
+      const double wy = w * luminance_of(flux);
+      pilot_variance[f] += wy * wy;
+    }
+  }
+  const double estimate = luminance_of(results[0]->caustic + results[0]->global);
+  if (!(std::fabs(luminance_of(bias[0][0] + bias[0][1])) <= CutCurvatureLargestShare * estimate)) return;
+  if (quadrants)
+    for (const NeighbourPhoton& n : pilot_found) {
+      const Photon& ph = map.photons()[n.index];
+      if (ph.sky_quadrant < StoredQuadrants)
+        (*quadrants)[ph.sky_quadrant] -= bias_weight(ph) * luminance_of(flux_of(ph, quadrant_flux));
+    }
+  for (int f = 0; f < modes; ++f) {
+    double covariance = 0;
+    for (std::size_t j = 0; j < disc.photon_count; ++j) {
+      const Photon& ph = map.photons()[found[j].index];
+      const double y = luminance_of(flux_of(ph, fluxes[f]));
+      const double u = (double(ph.position[0]) - at.x) * inv_r, v = (double(ph.position[1]) - at.y) * inv_r;
+      const double w_linear = (pilot.linear[0] + pilot.linear[1] * u + pilot.linear[2] * v) * inv_r2;
+      covariance += w_linear * bias_weight(ph) * y * y;
+    }
+    ClassEstimates& e = *results[f];
+    e.caustic -= bias[f][0];
+    e.global -= bias[f][1];
+    clamp_total(e);
+    e.variance = std::max(0.0, e.variance - 2 * covariance + pilot_variance[f]);
+  }
+}
+
 /// Caustic and global estimates from the photons of `map` passing `filter`, within the disc
 /// of density.bandwidth of them (density_estimate.h): local-linear on a receiver plane with
 /// the uniform kernel (local-quadratic where the outline cuts the disc, for
@@ -399,6 +474,16 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
                                                                    pilot_limit_m, density.max_radius_m}))
                                : disc.radius_m;
     const bool corrected = whole && disc.photon_count >= curvature_minimum_photons(disc.radius_m, pilot_m);
+    // A cut disc (not the quadratic's) that holds its whole bandwidth, and at least the
+    // quadratic's fewest photons (the clipped pilot's weights have negative lobes that the
+    // clamp at 0 would otherwise bias upwards), gets the pilot correction with the pilot clipped
+    // by the same walls and cuts (cut_curvature_pilot): R = CurvaturePilotRadiusFactor r within
+    // the widest disc, the clip keeping it off what the centre does not see.
+    const double cut_pilot_m = std::max(disc.radius_m, std::min(CurvaturePilotRadiusFactor * disc.radius_m,
+                                                                density.max_radius_m));
+    const bool cut_corrected = curvature == CurvatureCorrection::Pilot && cut && !quadratic_at_walls &&
+                               disc.photon_count >= density.bandwidth &&
+                               disc.photon_count >= QuadraticEverywhereMinimumPhotons;
     if ((corrected && curvature == CurvatureCorrection::Quadratic) || (quadratic_at_walls && cut)) {
       const LocalQuadraticKernel kernel = local_quadratic_kernel(
           visible ? visible->moments4(disc.radius_m) : plane->clipped_disc_moments4(at.x, at.y, disc.radius_m));
@@ -456,6 +541,14 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
     if (quadrants)
       for (std::size_t x = 0; x < StoredQuadrants; ++x)
         (*quadrants)[x] = local_linear_density(m, Vec3{q0[x], 0, 0}, Vec3{q1x[x], 0, 0}, Vec3{q1y[x], 0, 0}).x;
+    if (cut_corrected)
+      subtract_cut_pilot(map, at, filter, found, disc,
+                         cut_curvature_pilot(visible ? visible->moments4(disc.radius_m)
+                                                     : plane->clipped_disc_moments4(at.x, at.y, disc.radius_m),
+                                             visible ? visible->moments4(cut_pilot_m)
+                                                     : plane->clipped_disc_moments4(at.x, at.y, cut_pilot_m),
+                                             disc.radius_m, cut_pilot_m),
+                         cut_pilot_m, fluxes, results, modes, density.flux, pilot_found, quadrants);
     if (!(corrected && curvature == CurvatureCorrection::Pilot)) return out;
     // The pilot's bias, subtracted per class; the variance of the difference: the plane's
     // weight on a whole disc is 1 / area for each of its photons, so
@@ -489,13 +582,7 @@ ClassEstimates estimate_classes(const PhotonMap& map, const ReceiverPlane* plane
       ClassEstimates& e = *results[f];
       e.caustic -= bias[0];
       e.global -= bias[1];
-      // A negative total (the correction of a small value against its noise) is set to 0 in
-      // both classes, as the quadratic's (local_quadratic_estimate).
-      for (int c = 0; c < 3; ++c)
-        if (e.caustic[c] + e.global[c] < 0) {
-          e.caustic[c] = 0;
-          e.global[c] = 0;
-        }
+      clamp_total(e);
       e.variance = std::max(0.0, e.variance - 2 * covariance / m.area + pilot_variance);
     }
     return out;

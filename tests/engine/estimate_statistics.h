@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "dayphoton/engine/photon_map.h"
 
@@ -20,6 +21,30 @@ struct Stats {
   /// 4 standard errors of the mean.
   double tolerance() const { return 4.0 * sigma() / std::sqrt(static_cast<double>(n)); }
 };
+
+/// An estimator's values over independent trials against the variance it reported in each:
+/// the mean and its standard error, the observed variance, the mean reported one, and the
+/// standard error of their difference (the sample variance's, from the fourth central
+/// moment, and the reported mean's).
+struct ReportedVariance {
+  double mean = 0, mean_se = 0, observed = 0, reported = 0, difference_se = 0;
+};
+
+inline ReportedVariance reported_variance(const std::vector<double>& estimates, const std::vector<double>& reported) {
+  const double n = static_cast<double>(estimates.size());
+  ReportedVariance r;
+  double fourth = 0, rvar = 0;
+  for (double e : estimates) r.mean += e / n;
+  for (double e : estimates) {
+    r.observed += (e - r.mean) * (e - r.mean) / (n - 1);
+    fourth += std::pow(e - r.mean, 4) / n;
+  }
+  for (double v : reported) r.reported += v / n;
+  for (double v : reported) rvar += (v - r.reported) * (v - r.reported) / (n - 1);
+  r.mean_se = std::sqrt(r.observed / n);
+  r.difference_se = std::sqrt((fourth - r.observed * r.observed) / n + rvar / n);
+  return r;
+}
 
 inline PhotonFilter all_photons() {
   PhotonFilter f;

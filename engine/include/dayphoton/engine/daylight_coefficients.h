@@ -61,6 +61,12 @@
 //     average its noise out), 4 times at R = r, where it is the quadratic fit itself.
 //   - Quadratic: the local-quadratic fit on the disc itself, exact for every quadratic field
 //     at 4 times the variance.
+// Curvature at cut discs (Pilot): where the outline or the visibility clip cuts a disc (every
+// disc of a shaft's or a light well's narrow floor) and the source is not one of
+// quadratic_fit_sources, the same correction with the pilot disc clipped by the same walls and
+// cuts (local_quadratic_fit.h, cut_curvature_pilot): the local-linear fit's bias over the cut
+// disc from its moments, the curvature from a quadratic fitted over the clipped pilot, its
+// noise in the reported variance (docs/photon-map.md, "Curvature at cut discs").
 // Sparse sources: a source with fewer photons than the median source (a low-yield source cut
 // by the photon cap, a sky patch seen through a sliver) would need a disc far wider than the
 // others' for the same N, and the plane fitted over it would smear its light over the room.
@@ -152,9 +158,10 @@ struct CoefficientOptions {
   std::vector<std::size_t> quadratic_fit_sources;
   /// With local_linear: the correction of the curvature bias on every whole disc (none of it
   /// cut by the outline or the visibility clip) that holds its whole bandwidth, for every
-  /// source (see the header comment, "Curvature away from walls"); cut discs keep
-  /// quadratic_fit_sources' rule. Its variance is reported, so accuracy rounds trace what it
-  /// needs.
+  /// source (see the header comment, "Curvature away from walls"); with Pilot, on cut discs
+  /// too, by a pilot clipped as the disc ("Curvature at cut discs"), except for
+  /// quadratic_fit_sources, whose cut discs keep the quadratic. Its variance is reported, so
+  /// accuracy rounds trace what it needs.
   CurvatureCorrection curvature_correction = CurvatureCorrection::Pilot;
   /// Receiver planes: where an interior cut (a partition, a column: plane_cuts.h, set on the
   /// plane) or a re-entrant corner of the outline lies within a sensor's widest disc, count
