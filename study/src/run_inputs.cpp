@@ -33,9 +33,8 @@ std::optional<Diagnostic> partial_year_warning(const project::Project& project, 
   return d;
 }
 
-std::optional<std::string> radiation_clock_message(const weather::HourlyWeather& weather, const std::string& path,
-                                                   const sky::SolarSite& sun_site) {
-  const sky::RadiationTiming timing = sky::radiation_timing(weather, sun_site);
+std::optional<std::string> radiation_clock_message(const weather::HourlyWeather& weather, const std::string& path) {
+  const sky::RadiationTiming timing = sky::radiation_timing(weather, sky::solar_site_of(weather));
   if (!timing.measured || !(std::abs(timing.offset_h) >= RadiationClockWarning_h)) return std::nullopt;
   char offset[32];
   std::snprintf(offset, sizeof offset, "%.2f", std::abs(timing.offset_h));
@@ -51,10 +50,9 @@ std::optional<std::string> radiation_clock_message(const weather::HourlyWeather&
          "the records on the local standard time of the header's zone, or use a file whose records are";
 }
 
-std::optional<Diagnostic> radiation_clock_warning(const project::Project& project, const weather::HourlyWeather& weather,
-                                                  const sky::SolarSite& sun_site) {
+std::optional<Diagnostic> radiation_clock_warning(const project::Project& project, const weather::HourlyWeather& weather) {
   if (project.study != project::StudyKind::Annual) return std::nullopt;
-  const std::optional<std::string> message = radiation_clock_message(weather, project.weather.path_as_written, sun_site);
+  const std::optional<std::string> message = radiation_clock_message(weather, project.weather.path_as_written);
   if (!message) return std::nullopt;
   Diagnostic d;
   d.severity = Severity::Warning;
@@ -94,7 +92,7 @@ RunInputs read_run_inputs(const project::Project& project) {
     inputs.below_horizon = annual_below_horizon_direct(*inputs.weather, *inputs.sun_site);
     if (std::optional<Diagnostic> w = partial_year_warning(project, *inputs.weather))
       inputs.weather->warnings.push_back(std::move(*w));
-    if (std::optional<Diagnostic> w = radiation_clock_warning(project, *inputs.weather, inputs.sun_site->solar))
+    if (std::optional<Diagnostic> w = radiation_clock_warning(project, *inputs.weather))
       inputs.weather->warnings.push_back(std::move(*w));
     for (Diagnostic& w : southern_daylight_saving_warnings(project, inputs.sun_site->solar.latitude_deg))
       inputs.weather->warnings.push_back(std::move(w));

@@ -2,8 +2,8 @@
 // day's radiation made from the sun itself and moved by a known time is measured to be off by
 // that time; the Oakland TMY3 file, whose records are on its header's clock, is within 0.2 h;
 // its records moved by one hour either way (a UTC-stamped or converter-shifted file) are
-// measured off by about an hour (the study's warning on them: tests/study/
-// radiation_clock_warning_test.cpp); too few sunny days give no measure.
+// measured off by about an hour (the study's warning on them: SunSite.RecordsOnAnotherClock...
+// in tests/study/sun_site_test.cpp); too few sunny days give no measure.
 #include "dayphoton/sky/radiation_timing.h"
 
 #include <gtest/gtest.h>

@@ -251,14 +251,13 @@ TEST(SunSite, APartOfAYearIsAWarningAtTheWeatherKey) {
 TEST(SunSite, RecordsOnAnotherClockThanTheHeadersAreAWarningAtTheWeatherKey) {
   const project::Project p = office_with_site(OfficeSite);
   const weather::HourlyWeather epw = weather::read_hourly_weather(OaklandEpw);
-  const sky::SolarSite site = resolve_sun_site(p.site, epw).solar;
-  EXPECT_FALSE(radiation_clock_warning(p, epw, site).has_value());
+  EXPECT_FALSE(radiation_clock_warning(p, epw).has_value());
   weather::HourlyWeather utc = epw;  // each record takes the light of the next hour
   for (std::size_t t = 0; t + 1 < epw.records.size(); ++t) {
     utc.records[t].direct_normal_w_m2 = epw.records[t + 1].direct_normal_w_m2;
     utc.records[t].diffuse_horizontal_w_m2 = epw.records[t + 1].diffuse_horizontal_w_m2;
   }
-  const std::optional<Diagnostic> w = radiation_clock_warning(p, utc, site);
+  const std::optional<Diagnostic> w = radiation_clock_warning(p, utc);
   ASSERT_TRUE(w.has_value());
   EXPECT_EQ(w->severity, Severity::Warning);
   EXPECT_EQ(w->location.line, p.weather.location.line);
@@ -271,7 +270,7 @@ TEST(SunSite, RecordsOnAnotherClockThanTheHeadersAreAWarningAtTheWeatherKey) {
       << w->message;
   project::Project daylight_factor = p;
   daylight_factor.study = project::StudyKind::DaylightFactor;
-  EXPECT_FALSE(radiation_clock_warning(daylight_factor, utc, site).has_value());
+  EXPECT_FALSE(radiation_clock_warning(daylight_factor, utc).has_value());
 }
 
 // The built-in DST rules are the northern hemisphere's: at a site south of the equator

@@ -42,12 +42,13 @@ std::optional<std::string> partial_year_message(const weather::HourlyWeather& we
 constexpr double RadiationClockWarning_h = 0.5;
 
 /// That warning, located at the project's `weather` key, for an annual study; none when the
-/// offset is below RadiationClockWarning_h or cannot be measured.
-std::optional<Diagnostic> radiation_clock_warning(const project::Project& project, const weather::HourlyWeather& weather,
-                                                  const sky::SolarSite& sun_site);
+/// offset is below RadiationClockWarning_h or cannot be measured. The offset is measured at
+/// the station (the file's header), whatever the project's site: the question is whether the
+/// file's records are on its own header's clock (a site far from the station has its own
+/// warning, station_distance_warning).
+std::optional<Diagnostic> radiation_clock_warning(const project::Project& project, const weather::HourlyWeather& weather);
 /// Its text for the weather file as `path` names it, whatever reads it.
-std::optional<std::string> radiation_clock_message(const weather::HourlyWeather& weather, const std::string& path,
-                                                   const sky::SolarSite& sun_site);
+std::optional<std::string> radiation_clock_message(const weather::HourlyWeather& weather, const std::string& path);
 
 /// The built-in daylight-saving rules (`daylight_saving: eu` or `us`) are the northern
 /// hemisphere's: they set the clock ahead from March to October or November, which is winter
