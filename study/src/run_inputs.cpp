@@ -22,15 +22,24 @@ std::optional<std::string> partial_year_message(const weather::HourlyWeather& we
          "missing days; use a whole-year file for compliance";
 }
 
-std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather) {
-  if (!project.outputs.metrics) return std::nullopt;
-  const std::optional<std::string> message = partial_year_message(weather, project.weather.path_as_written);
+namespace {
+
+/// A warning about the weather file, located at the project's `weather` key.
+std::optional<Diagnostic> warning_at_weather_key(const project::Project& project,
+                                                 const std::optional<std::string>& message) {
   if (!message) return std::nullopt;
   Diagnostic d;
   d.severity = Severity::Warning;
   d.location = project.weather.location;
   d.message = *message;
   return d;
+}
+
+}  // namespace
+
+std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather) {
+  if (!project.outputs.metrics) return std::nullopt;
+  return warning_at_weather_key(project, partial_year_message(weather, project.weather.path_as_written));
 }
 
 std::optional<std::string> radiation_clock_message(const weather::HourlyWeather& weather, const std::string& path) {
@@ -52,13 +61,7 @@ std::optional<std::string> radiation_clock_message(const weather::HourlyWeather&
 
 std::optional<Diagnostic> radiation_clock_warning(const project::Project& project, const weather::HourlyWeather& weather) {
   if (project.study != project::StudyKind::Annual) return std::nullopt;
-  const std::optional<std::string> message = radiation_clock_message(weather, project.weather.path_as_written);
-  if (!message) return std::nullopt;
-  Diagnostic d;
-  d.severity = Severity::Warning;
-  d.location = project.weather.location;
-  d.message = *message;
-  return d;
+  return warning_at_weather_key(project, radiation_clock_message(weather, project.weather.path_as_written));
 }
 
 std::vector<Diagnostic> southern_daylight_saving_warnings(const project::Project& project, double sun_latitude_deg) {
