@@ -9,6 +9,7 @@
 #include "dayphoton/sky/patch_basis.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/sky_model.h"
+#include "dayphoton/study/run_inputs.h"
 #include "dayphoton/weather/hourly_weather.h"
 
 namespace dayphoton::app {
@@ -59,6 +60,10 @@ int run_sky(const SkyOptions& o, const std::string& command_line, std::ostream& 
     const weather::HourlyWeather weather = weather::read_hourly_weather(o.weather_path);
     // What the reader accepted with a warning (ignored fields, filled gaps, header variants).
     for (const Diagnostic& w : weather.warnings) std::cerr << w.format();
+    // Records stamped on another clock than the header's (docs/weather.md), as `check` says it.
+    if (const std::optional<std::string> w =
+            study::radiation_clock_message(weather, o.weather_path))
+      std::cerr << "warning: " << *w << '\n';
     require_matrix_within_limit("the sky matrix (--basis " + o.basis + ": " + std::to_string(basis.bin_count()) +
                                     " bins, one column per record of " + o.weather_path + ")",
                                 static_cast<std::uint64_t>(basis.bin_count()), weather.records.size(), 3,

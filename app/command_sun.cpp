@@ -11,6 +11,7 @@
 #include "dayphoton/core/units.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/sky/solar_position.h"
+#include "dayphoton/study/run_inputs.h"
 #include "dayphoton/weather/hourly_weather.h"
 #include "dayphoton/weather/site_clock.h"
 
@@ -31,6 +32,10 @@ int run_sun(const SunOptions& options, std::ostream& out) {
   const weather::HourlyWeather weather = weather::read_hourly_weather(options.weather_path);
   // What the reader accepted with a warning (ignored fields, filled gaps, header variants).
   for (const Diagnostic& w : weather.warnings) std::cerr << w.format();
+  // Records stamped on another clock than the header's (docs/weather.md), as `check` says it.
+  if (const std::optional<std::string> w =
+          study::radiation_clock_message(weather, options.weather_path))
+    std::cerr << "warning: " << *w << '\n';
   const weather::SiteClock clock = weather::SiteClock::for_weather(weather);
   const sky::SolarSite site = sky::solar_site_of(weather);
   sky::SolarPositionOptions solar;

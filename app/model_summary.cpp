@@ -87,6 +87,8 @@ void describe_weather_and_sun(const project::Project& proj, std::vector<std::str
   const study::SunSite site = study::resolve_sun_site(proj.site, weather);
   for (const Diagnostic& w : study::southern_daylight_saving_warnings(proj, site.solar.latitude_deg))
     lines.push_back("warning: " + w.location.to_string() + ": " + w.message);
+  if (const std::optional<Diagnostic> w = study::radiation_clock_warning(proj, weather))
+    lines.push_back("warning: " + w->location.to_string() + ": " + w->message);
   solar = site.solar;
   sun_lines = {study::sun_site_sentence(site)};
   if (const std::string w = study::station_distance_warning(site); !w.empty()) sun_lines.push_back(w);

@@ -1,6 +1,7 @@
 // What a run reads and checks first: see run_inputs.h.
 #include "dayphoton/study/run_inputs.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include "dayphoton/core/diagnostics.h"
@@ -21,15 +22,46 @@ std::optional<std::string> partial_year_message(const weather::HourlyWeather& we
          "missing days; use a whole-year file for compliance";
 }
 
-std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather) {
-  if (!project.outputs.metrics) return std::nullopt;
-  const std::optional<std::string> message = partial_year_message(weather, project.weather.path_as_written);
+namespace {
+
+/// A warning about the weather file, located at the project's `weather` key.
+std::optional<Diagnostic> warning_at_weather_key(const project::Project& project,
+                                                 const std::optional<std::string>& message) {
   if (!message) return std::nullopt;
   Diagnostic d;
   d.severity = Severity::Warning;
   d.location = project.weather.location;
   d.message = *message;
   return d;
+}
+
+}  // namespace
+
+std::optional<Diagnostic> partial_year_warning(const project::Project& project, const weather::HourlyWeather& weather) {
+  if (!project.outputs.metrics) return std::nullopt;
+  return warning_at_weather_key(project, partial_year_message(weather, project.weather.path_as_written));
+}
+
+std::optional<std::string> radiation_clock_message(const weather::HourlyWeather& weather, const std::string& path) {
+  const sky::RadiationTiming timing = sky::radiation_timing(weather, sky::solar_site_of(weather));
+  if (!timing.measured || !(std::abs(timing.offset_h) >= RadiationClockWarning_h)) return std::nullopt;
+  char offset[32];
+  std::snprintf(offset, sizeof offset, "%.2f", std::abs(timing.offset_h));
+  const double zone = weather.site.time_zone_h;
+  char zone_text[32];
+  std::snprintf(zone_text, sizeof zone_text, "UTC%s%g", zone < 0 ? "-" : "+", std::abs(zone));
+  return "the radiation of the " + std::to_string(timing.days) + " clearest days of " + path + " is centred " +
+         offset + " h " + (timing.offset_h < 0 ? "before" : "after") +
+         " the sun's transit on the clock of its header (" + zone_text +
+         "), where a clear day's light is centred on it: its records seem stamped on another clock (UTC, true "
+         "solar time, daylight saving time, or shifted by a converter), so each hour's sun is traced about " +
+         offset + " h away from where it stood when its light was measured, and the annual metrics move with it; put "
+         "the records on the local standard time of the header's zone, or use a file whose records are";
+}
+
+std::optional<Diagnostic> radiation_clock_warning(const project::Project& project, const weather::HourlyWeather& weather) {
+  if (project.study != project::StudyKind::Annual) return std::nullopt;
+  return warning_at_weather_key(project, radiation_clock_message(weather, project.weather.path_as_written));
 }
 
 std::vector<Diagnostic> southern_daylight_saving_warnings(const project::Project& project, double sun_latitude_deg) {
@@ -62,6 +94,8 @@ RunInputs read_run_inputs(const project::Project& project) {
     inputs.sun_site = resolve_sun_site(project.site, *inputs.weather);
     inputs.below_horizon = annual_below_horizon_direct(*inputs.weather, *inputs.sun_site);
     if (std::optional<Diagnostic> w = partial_year_warning(project, *inputs.weather))
+      inputs.weather->warnings.push_back(std::move(*w));
+    if (std::optional<Diagnostic> w = radiation_clock_warning(project, *inputs.weather))
       inputs.weather->warnings.push_back(std::move(*w));
     for (Diagnostic& w : southern_daylight_saving_warnings(project, inputs.sun_site->solar.latitude_deg))
       inputs.weather->warnings.push_back(std::move(w));

@@ -10,6 +10,7 @@
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/project/project.h"
+#include "dayphoton/sky/radiation_timing.h"
 #include "dayphoton/sky/sky_matrix.h"
 #include "dayphoton/study/sun_site.h"
 #include "dayphoton/weather/hourly_weather.h"
@@ -32,6 +33,22 @@ std::optional<Diagnostic> partial_year_warning(const project::Project& project, 
 /// The text of that warning for the weather file as `path` names it (none for a whole year),
 /// whatever computes the metrics: `dayphoton annual --weather FILE` prints it without a project.
 std::optional<std::string> partial_year_message(const weather::HourlyWeather& weather, const std::string& path);
+
+/// A weather file whose clearest days' radiation is centred this far or farther from the
+/// sun's transit (sky::radiation_timing) gets a warning: its records seem stamped on another
+/// clock than its header's. A policy of dayphoton: the files at hand are within 0.1 h
+/// (Oakland TMY3), the clock errors met in practice are 0.5 h (half-hour stamps, daylight
+/// saving time over half the year) to several hours (UTC); docs/weather.md.
+constexpr double RadiationClockWarning_h = 0.5;
+
+/// That warning, located at the project's `weather` key, for an annual study; none when the
+/// offset is below RadiationClockWarning_h or cannot be measured. The offset is measured at
+/// the station (the file's header), whatever the project's site: the question is whether the
+/// file's records are on its own header's clock (a site far from the station has its own
+/// warning, station_distance_warning).
+std::optional<Diagnostic> radiation_clock_warning(const project::Project& project, const weather::HourlyWeather& weather);
+/// Its text for the weather file as `path` names it, whatever reads it.
+std::optional<std::string> radiation_clock_message(const weather::HourlyWeather& weather, const std::string& path);
 
 /// The built-in daylight-saving rules (`daylight_saving: eu` or `us`) are the northern
 /// hemisphere's: they set the clock ahead from March to October or November, which is winter
