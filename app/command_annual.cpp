@@ -277,6 +277,11 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
     // A part-year file, as `check` and `run` say it (on stderr even with --quiet).
     if (const std::optional<std::string> w = study::partial_year_message(*inputs.weather, inputs.weather_path))
       std::cerr << "warning: " << *w << '\n';
+    // Records stamped on another clock than the header's, as `check` and `run` say it, when
+    // the sky and the sun come from the file (not with --sky-matrix).
+    if (o.sky_matrix_path.empty())
+      if (const std::optional<std::string> w = study::radiation_clock_message(*inputs.weather, inputs.weather_path))
+        std::cerr << "warning: " << *w << '\n';
   }
   const weather::HourlyWeather& weather = *inputs.weather;
   const std::string& weather_path = inputs.weather_path;
@@ -302,9 +307,6 @@ void annual_of_grid(const AnnualOptions& o, const std::string& grid_dir, const s
     // would compute with this file).
     if (const std::string w = study::station_distance_warning(site); !w.empty())
       std::cerr << "warning: " << grid_dir << ": " << (w.rfind("warning: ", 0) == 0 ? w.substr(9) : w) << '\n';
-    // Records stamped on another clock than the header's, as `check` and `run` say it.
-    if (const std::optional<std::string> w = study::radiation_clock_message(weather, weather_path))
-      std::cerr << "warning: " << *w << '\n';
     require_matrix_within_limit("the sky matrix (" + std::to_string(basis.bin_count()) +
                                     " bins, one column per record of " + weather_path + ")",
                                 static_cast<std::uint64_t>(basis.bin_count()), weather.records.size(), 3,
