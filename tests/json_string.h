@@ -1,21 +1,13 @@
-// Test helper: a text as a JSON string literal (quotes, backslashes and control characters
-// escaped), for writing HBJSON with a BSDF's XML inline.
+// Test helper: a text as a JSON string literal (nlohmann::json's escaping), for writing HBJSON
+// with a BSDF's XML inline.
 #pragma once
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 namespace dayphoton::test {
 
-inline std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (char c : text) {
-    if (c == '"' || c == '\\') out += std::string("\\") + c;
-    else if (c == '\n') out += "\\n";
-    else if (c == '\t') out += "\\t";
-    else if (c == '\r') out += "\\r";
-    else out += c;
-  }
-  return out + "\"";
-}
+inline std::string json_string(const std::string& text) { return nlohmann::json(text).dump(); }
 
 }  // namespace dayphoton::test
