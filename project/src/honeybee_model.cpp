@@ -389,21 +389,10 @@ class Reader {
     // BSDF is refused rather than put either way.
     const bool bsdf = is_bsdf(material);
     if (bsdf) {
-      const char* why = role == HoneybeeRole::Port && facing == PortFacing::Out ? nullptr
-                        : role == HoneybeeRole::Port
-                            ? "an orphaned object has no room to say which side is outdoors, where the BSDF's front "
-                              "(WINDOW's exterior side) must face; put it in a room"
-                        : role == HoneybeeRole::InteriorGlass
-                            ? "between two rooms neither side is outdoors, so which side is the BSDF's front (WINDOW's "
-                              "exterior side) cannot be told; give the interior opening a glass or trans modifier"
-                            : "a BSDF modifier is read on the apertures, glass doors and faces of a room facing "
-                              "Outdoors only, whose outside is its front (WINDOW's exterior side); give this object "
-                              "another modifier";
-      if (why) {
+      if (const char* why = honeybee_bsdf_refusal(role, facing)) {
         error(path, id, "has BSDF modifier '" + material + "': " + why);
         return;
       }
-      facing = PortFacing::In;
     }
     HoneybeeSurface s;
     s.material = material;
@@ -414,7 +403,7 @@ class Reader {
     if (holes.empty()) {
       s.name = id;
       s.vertices = boundary;
-      if (bsdf) std::reverse(s.vertices.begin(), s.vertices.end());
+      if (bsdf) turn_for_bsdf(s.vertices, s.facing);
       m_out.surfaces.push_back(std::move(s));
       return;
     }
@@ -430,7 +419,8 @@ class Reader {
       HoneybeeSurface t = s;
       t.name = id + ":" + std::to_string(k + 1);
       t.vertices.assign(triangles[k].begin(), triangles[k].end());
-      if (bsdf) std::reverse(t.vertices.begin(), t.vertices.end());
+      t.facing = facing;
+      if (bsdf) turn_for_bsdf(t.vertices, t.facing);
       m_out.surfaces.push_back(std::move(t));
     }
   }
@@ -1090,6 +1080,24 @@ class Reader {
 };
 
 }  // namespace
+
+const char* honeybee_bsdf_refusal(HoneybeeRole role, PortFacing facing) {
+  if (role == HoneybeeRole::Port)
+    return facing == PortFacing::Auto ? "an orphaned object has no room to say which side is outdoors, where the BSDF's "
+                                        "front (WINDOW's exterior side) must face; put it in a room"
+                                      : nullptr;
+  if (role == HoneybeeRole::InteriorGlass)
+    return "between two rooms neither side is outdoors, so which side is the BSDF's front (WINDOW's exterior side) "
+           "cannot be told; give the interior opening a glass or trans modifier";
+  return "a BSDF is read on the apertures, glass doors and faces of a room facing Outdoors only, whose outside is its "
+         "front (WINDOW's exterior side); give this object another modifier";
+}
+
+void turn_for_bsdf(std::vector<Vec3>& vertices, PortFacing& facing) {
+  if (facing != PortFacing::Out) return;
+  std::reverse(vertices.begin(), vertices.end());
+  facing = PortFacing::In;
+}
 
 HoneybeeModel read_honeybee_model_from_string(const std::string& text, const std::string& file) {
   Diagnostics diag;

@@ -113,9 +113,12 @@ void generate_polygon(const PolygonSpec& spec, detail::MaterialLookup& materials
 /// The surfaces of an imported Honeybee model (honeybee_model.h): apertures in Outdoors faces
 /// are ports whose normal points out of the room (Honeybee's faces point outward), tested
 /// against the scene like a polygon declared `facing: out` (orphaned ones: `facing: auto`);
-/// outdoor shades are outdoor
-/// scatterers, like the parts of exterior systems with `port: system`.
-void generate_honeybee(const HoneybeeImport& hb, detail::MaterialLookup& materials, std::vector<Surface>& out) {
+/// outdoor shades are outdoor scatterers, like the parts of exterior systems with
+/// `port: system`. A project `bsdf` material that a variant puts in an opening's modifier's
+/// place turns the opening round as the model's own BSDF modifier does (its front outdoors:
+/// honeybee_bsdf_refusal, turn_for_bsdf), and is refused where that one would be.
+void generate_honeybee(const HoneybeeImport& hb, detail::MaterialLookup& materials, std::vector<Surface>& out,
+                       Diagnostics& diag) {
   for (const HoneybeeSurface& hs : hb.model.surfaces) {
     Surface s;
     s.name = hs.name;
@@ -123,7 +126,16 @@ void generate_honeybee(const HoneybeeImport& hb, detail::MaterialLookup& materia
     s.vertices = hs.vertices;
     s.location = hs.location;
     s.port = hs.role == HoneybeeRole::Port;
-    if (s.port) s.facing = hs.facing;
+    PortFacing facing = hs.facing;
+    if (s.material >= 0 && engine::bsdf_parameters(materials.spec(s.material))) {
+      if (const char* why = honeybee_bsdf_refusal(hs.role, hs.facing)) {
+        detail::report(diag, hs.location,
+                       hs.path + " ('" + hs.name + "') has BSDF material '" + hs.material + "': " + why);
+        continue;
+      }
+      turn_for_bsdf(s.vertices, facing);
+    }
+    if (s.port) s.facing = facing;
     s.outdoor_scatterer = hs.role == HoneybeeRole::OutdoorShade;
     out.push_back(std::move(s));
   }
@@ -211,7 +223,7 @@ SceneDescription build_scene_description(const Project& project) {
   mark(SurfaceOrigin::Radiance);
   std::vector<Diagnostic> model_notes;  // the model's notes, which are no warnings (a grid's weighting mesh)
   if (g.honeybee) {
-    generate_honeybee(*g.honeybee, materials, surfaces);
+    generate_honeybee(*g.honeybee, materials, surfaces, diag);
     for (const Diagnostic& w : g.honeybee->model.warnings) {
       if (w.severity == Severity::Note) model_notes.push_back(w);
       else diag.warning(w.location, w.message, w.source_line);

@@ -549,7 +549,7 @@ TEST(HoneybeeErrors, BsdfFieldsThatAreNotModelledAreLocatedAtTheirKeys) {
                                        "}]");
   const auto refused = located_errors([&] { read_honeybee_model_from_string(orphan, "m.hbjson"); });
   ASSERT_EQ(refused.size(), 3u) << ::testing::PrintToString(refused);  // and the room's window's warning
-  EXPECT_NE(refused[0].find("('screen'): has BSDF modifier 'blind': a BSDF modifier is read on the apertures"),
+  EXPECT_NE(refused[0].find("('screen'): has BSDF modifier 'blind': a BSDF is read on the apertures"),
             std::string::npos) << refused[0];
   EXPECT_NE(refused[1].find("('loose'): has BSDF modifier 'blind': an orphaned object has no room"), std::string::npos)
       << refused[1];

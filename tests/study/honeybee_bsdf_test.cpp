@@ -15,6 +15,7 @@
 // Tolerances from the runs' own standard errors (df_stderr_percent).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -80,8 +81,10 @@ const std::string Head =
     "outputs: {images: false, report: false, coefficients: false}\n"
     "simulation: {basis: tregenza, photons_per_bin: 2000, seed: 11}\n";
 
-/// The room as a Honeybee model with the blind's XML inline, up vector `up`.
-std::string honeybee_project(const std::string& name, const std::string& up) {
+/// The room as a Honeybee model with the blind's XML inline, up vector `up`; with
+/// `window_modifier` "glass" the aperture is clear glass instead (the blind not used).
+std::string honeybee_project(const std::string& name, const std::string& up,
+                             const std::string& window_modifier = "blind") {
   std::ostringstream hb;
   hb << "{\"type\": \"Model\", \"identifier\": \"blind_room\", \"units\": \"Meters\", \"tolerance\": 0.001,\n"
         " \"properties\": {\"type\": \"ModelProperties\", \"radiance\": {\"type\": \"ModelRadianceProperties\",\n"
@@ -91,7 +94,9 @@ std::string honeybee_project(const std::string& name, const std::string& up) {
         "   {\"type\": \"Plastic\", \"identifier\": \"ceiling\", \"r_reflectance\": 0.7, \"g_reflectance\": 0.7, \"b_reflectance\": 0.7},\n"
         "   {\"type\": \"BSDF\", \"identifier\": \"blind\", \"modifier\": {\"type\": \"Void\"}, \"up_orientation\": " << up
      << ", \"thickness\": 0, \"function_file\": \".\", \"transform\": null,\n    \"bsdf_data\": "
-     << test::json_string(read_text(BlindFile)) << "}],\n"
+     << test::json_string(read_text(BlindFile)) << "},\n"
+     << "   {\"type\": \"Glass\", \"identifier\": \"glass\", \"r_transmissivity\": 0.9, \"g_transmissivity\": 0.9, "
+        "\"b_transmissivity\": 0.9}],\n"
      << "  \"sensor_grids\": [{\"type\": \"SensorGrid\", \"identifier\": \"points\", \"sensors\": [";
   const std::vector<Vec3> s = sensors();
   for (std::size_t i = 0; i < s.size(); ++i)
@@ -112,7 +117,7 @@ std::string honeybee_project(const std::string& name, const std::string& up) {
     if (std::string(f.id) == "south")
       hb << ", \"apertures\": [{\"type\": \"Aperture\", \"identifier\": \"window\", \"boundary_condition\": {\"type\": "
             "\"Outdoors\"}, \"geometry\": {\"type\": \"Face3D\", \"boundary\": "
-         << loop(Window) << "}, \"properties\": {\"radiance\": {\"modifier\": \"blind\"}}}]";
+         << loop(Window) << "}, \"properties\": {\"radiance\": {\"modifier\": \"" << window_modifier << "\"}}}]";
     hb << "}";
     first = false;
   }
@@ -159,13 +164,13 @@ struct Df {
   std::vector<double> value, stderr_;
 };
 
-Df run(const std::string& name, const std::string& yaml) {
+Df run(const std::string& name, const std::string& yaml, const std::string& grid_folder = "points") {
   const fs::path project_file = folder() / (name + ".yaml");
   const project::Project p = project::load_project_from_string(yaml, project_file.string());
   const fs::path out = folder() / name;
   test::run_in_fresh_folder(p, out);
   Df df;
-  for (const std::vector<double>& row : test::read_csv(out / "points" / "daylight_factor.csv")) {
+  for (const std::vector<double>& row : test::read_csv(out / grid_folder / "daylight_factor.csv")) {
     df.value.push_back(row.at(4));  // index,x,y,z,df_percent,df_stderr_percent
     df.stderr_.push_back(row.at(5));
   }
@@ -215,6 +220,55 @@ TEST(HoneybeeBsdf, ABlindInAHoneybeeApertureGivesTheRadianceScenesLightWithItsFr
   EXPECT_LT(same.max_abs_z, 4.0);
   // The blind turned round is far outside that: the test sees the orientation.
   EXPECT_GT(std::abs(reversed.mean_ratio - 1.0), 10 * reversed.mean_ratio_se);
+}
+
+// A variant that gives a Honeybee aperture a project `bsdf` material in place of its glass
+// modifier puts the BSDF's front outdoors, as the model's own BSDF modifier does: the
+// aperture, whose normal points out of the room, is turned round for it.
+TEST(HoneybeeBsdf, AVariantsBsdfMaterialOnAHoneybeeApertureHasItsFrontOutdoors) {
+  fs::copy_file(BlindFile, folder() / "blind.xml", fs::copy_options::overwrite_existing);
+  const std::string yaml = honeybee_project("glass_model", "[0, 0, 1]", "glass") +
+                           "variants:\n  - name: blind\n    materials:\n"
+                           "      glass: {type: bsdf, file: blind.xml, up: [0, 0, 1]}\n";
+  const Df variant = run("glass_variant", yaml, "variants/blind/points");
+  const Df honeybee = run("honeybee_again", honeybee_project("model_again", "[0, 0, 1]"));
+  ASSERT_EQ(variant.value.size(), 12u);
+  const Comparison same = compare(honeybee, variant);
+  std::printf("[ honeybee bsdf variant ] ratio %.4f (se %.4f), max |z| %.2f\n", same.mean_ratio, same.mean_ratio_se,
+              same.max_abs_z);
+  EXPECT_NEAR(same.mean_ratio, 1.0, 5 * same.mean_ratio_se);
+  EXPECT_LT(same.max_abs_z, 4.0);
+}
+
+// Where a model's BSDF modifier is refused (a shade: no side of it is outdoors), a variant's
+// project `bsdf` material in the shade's modifier's place is refused too, at the shade.
+TEST(HoneybeeBsdf, AVariantsBsdfMaterialOnAHoneybeeShadeIsALocatedError) {
+  const std::string yaml = honeybee_project("shaded_model", "[0, 0, 1]", "glass") +
+                           "variants:\n  - name: blind\n    materials:\n"
+                           "      glass: {type: bsdf, file: blind.xml, up: [0, 0, 1]}\n";
+  const fs::path model = folder() / "shaded_model.hbjson";
+  std::string text = read_text(model.string());
+  const std::size_t end = text.rfind('}');
+  text.insert(end, ", \"orphaned_shades\": [{\"type\": \"Shade\", \"identifier\": \"screen\", \"geometry\": {\"type\": "
+                   "\"Face3D\", \"boundary\": [[0, -1, 3], [4, -1, 3], [4, -1, 4], [0, -1, 4]]}, \"properties\": "
+                   "{\"radiance\": {\"modifier\": \"glass\"}}}]");
+  std::ofstream(model) << text;
+  fs::copy_file(BlindFile, folder() / "blind.xml", fs::copy_options::overwrite_existing);
+  const project::Project p = project::load_project_from_string(yaml, (folder() / "shaded.yaml").string());
+  ASSERT_EQ(p.variants.size(), 1u);
+  (void)project::build_scene_description(p);  // the base: clear glass on the shade is read
+  try {
+    (void)project::build_scene_description(project::apply_variant(p, p.variants[0]));
+    ADD_FAILURE() << "the variant's BSDF on a shade was not refused";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    const std::string at = model.string() + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(end), '\n'));
+    EXPECT_NE(what.find(at), std::string::npos) << what;
+    EXPECT_NE(what.find("('screen') has BSDF material 'glass': a BSDF is read on the apertures, glass doors and faces of "
+                        "a room facing Outdoors only"),
+              std::string::npos)
+        << what;
+  }
 }
 
 TEST(HoneybeeBsdf, ABlindInAHoneybeeApertureIsOperableShadingByItsDeviceType) {

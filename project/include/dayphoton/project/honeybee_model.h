@@ -42,6 +42,20 @@ struct HoneybeeSurface {
   SourceLocation location;
 };
 
+/// Why a measured BSDF cannot be put on a surface of `role` and port `facing`, or nullptr where
+/// it can. A BSDF's front (WINDOW's exterior side) is the side its surface's normal points
+/// away from (docs/materials.md, "Measured BSDF (Klems)") and must face outdoors, so it is
+/// read on the openings of room faces facing Outdoors only (facing Out, as Honeybee writes
+/// them, or In once turned round for a BSDF: turn_for_bsdf); where no room says which side is
+/// outdoors (orphaned, between two rooms) or on other objects, it is refused. The import
+/// applies it to a BSDF modifier, the scene builder to a project `bsdf` material that a
+/// variant puts in a modifier's place.
+const char* honeybee_bsdf_refusal(HoneybeeRole role, PortFacing facing);
+
+/// An opening of a room face turned round for a BSDF (vertices reversed, its port facing In),
+/// so that the BSDF's front faces outdoors; a surface already turned is left as it is.
+void turn_for_bsdf(std::vector<Vec3>& vertices, PortFacing& facing);
+
 /// One sensor grid of `properties.radiance.sensor_grids`.
 struct HoneybeeGrid {
   std::string identifier;
