@@ -102,14 +102,17 @@ double total_hours(const std::vector<SunlightInterval>& intervals) {
 }
 
 bool sun_seen(const engine::Scene& scene, const Vec3& point_m, const Vec3& direction) {
+  // Past a pane the ray goes on from the same origin with tmin just beyond the hit, not from
+  // an origin offset along the pane's normal: that offset (ray_epsilon_m, 1e-5 of the scene's
+  // largest coordinate: 5 mm in a scene 500 m across) would move the reference point toward
+  // the obstructions and shift every spell's ends by seconds.
   engine::Ray ray{point_m, direction};
   const auto& materials = scene.description().materials;
   for (int crossing = 0; crossing <= MaxGlazingCrossings; ++crossing) {
     const std::optional<engine::Hit> hit = scene.intersect(ray);
     if (!hit) return true;
     if (hit->material < 0 || !passes_sun(materials[static_cast<std::size_t>(hit->material)].type)) return false;
-    ray.origin = scene.offset_ray_origin(hit->position, hit->normal, direction);
-    ray.tmin = 0;
+    ray.tmin = hit->t + scene.ray_epsilon_m();
   }
   return false;
 }

@@ -19,10 +19,15 @@ namespace {
 
 constexpr double Pi = 3.14159265358979323846;
 constexpr double Deg = Pi / 180.0;
-/// Each spell's ends against the closed form: the sun's declination changes by < 0.4 degree
-/// a day (its value at transit is used for the whole day) and the sampling finds each change
-/// to 1 s; one minute covers both with a wide margin, and is far below any effect tested.
-constexpr double EndTolerance_h = 1.0 / 60.0;
+/// Each spell's ends against the closed form. The closed form gives the hour angle at an end
+/// from the declination; both are taken from SPA's direction to the sun at the end itself
+/// (topocentric, as the run sees it): held at the transit's value the declination, which
+/// changes by 0.4 degree a day near the equinox, moves the ends by up to 50 s; 15 degrees of
+/// hour angle an hour from the transit by 5 s; the geocentric values instead of the
+/// topocentric ones (parallax, 0.0024 degree) by up to 6 s where the profile angle changes
+/// slowly. What remains is the run's bisection, which returns the middle of a bracket of at
+/// most 1 s around each change: within 0.5 s, so 1 s (measured: 0.40 s at most).
+constexpr double EndTolerance_h = 1.0 / 3600.0;
 
 /// A 4 x 5 x 3 m room at the origin with one 2 m wide window (sill 0.9 m, 1.5 m high) in
 /// `wall`, at `latitude`, longitude 0, UTC; `extra` more geometry (polygons).
@@ -60,14 +65,34 @@ Assessed assess(const std::string& yaml) {
   return a;
 }
 
-/// The sun's declination and the transit (local standard hours) of the day, from SPA.
+/// The sun's declination at transit, the transit (local standard hours) of the day, and the
+/// declination at any hour, from SPA.
 struct SunDay {
+  double latitude = 0;
+  int month = 3, day = 21;
   double declination_rad = 0, transit_h = 12;
+  /// The hour `side` (-1 morning, +1 afternoon) of the day at which the sun's hour angle
+  /// equals side x hour_angle(declination) (rad, >= 0), both at that hour and both from SPA's
+  /// direction (E, N, U): sin d = sin phi U + cos phi N, tan H = -E / (cos phi U - sin phi N)
+  /// (fixed point, 6 passes).
+  template <class HourAngle>
+  double at(int side, const HourAngle& hour_angle) const {
+    const double phi = latitude * Deg;
+    double t = transit_h + side * hour_angle(declination_rad) / Deg / 15.0;
+    for (int i = 0; i < 6; ++i) {
+      const Vec3 v = sky::solar_position({latitude, 0, 0, 0}, {PointInTimeSolarYear, month, day, t}).direction;
+      const double d = std::asin(std::sin(phi) * v.z + std::cos(phi) * v.y);
+      const double h = std::atan2(-v.x, std::cos(phi) * v.z - std::sin(phi) * v.y);
+      t += (side * hour_angle(d) - h) / Deg / 15.0;
+    }
+    return t;
+  }
 };
 SunDay sun_day(double latitude, int month, int day) {
   const sky::SolarSite site{latitude, 0, 0, 0};
   const sky::SunEvents e = sky::sun_events(site, PointInTimeSolarYear, month, day);
-  return {sky::solar_position(site, {PointInTimeSolarYear, month, day, e.transit_h}).declination_rad, e.transit_h};
+  return {latitude, month, day, sky::solar_position(site, {PointInTimeSolarYear, month, day, e.transit_h}).declination_rad,
+          e.transit_h};
 }
 
 /// The hour angle (rad, >= 0) at which the sun's altitude is `altitude_rad` (the textbook
@@ -102,8 +127,8 @@ TEST(SunlightExposure, WithNothingInFrontTheMinimumAltitudeBoundsTheEquinoxDay) 
         assess(room_yaml(c.latitude, c.wall, "{date: 03-21, min_altitude: " + std::to_string(c.min_altitude_deg) + "}"));
     ASSERT_EQ(a.rooms.size(), 1u);
     const SunDay s = sun_day(c.latitude, 3, 21);
-    const double h0 = hour_angle_at_altitude(c.latitude * Deg, s.declination_rad, c.min_altitude_deg * Deg) / Deg / 15.0;
-    expect_one_spell(a.rooms[0], s.transit_h - h0, s.transit_h + h0);
+    const auto h0 = [&](double d) { return hour_angle_at_altitude(c.latitude * Deg, d, c.min_altitude_deg * Deg); };
+    expect_one_spell(a.rooms[0], s.at(-1, h0), s.at(+1, h0));
     ASSERT_EQ(a.rooms[0].windows.size(), 1u);
     // The reference point: centre of the width, 1.2 m above the floor (the sill + 0.3 m is lower).
     const Vec3 p = a.rooms[0].windows[0].reference_point_m;
@@ -127,49 +152,78 @@ TEST(SunlightExposure, RevealsLimitTheSunsAzimuthByTheirDepth) {
   const Assessed a = assess(room_yaml(latitude, "south", "{date: 03-21, min_altitude: 5}", fin("left", 1) + fin("right", 3)));
   ASSERT_EQ(a.rooms.size(), 1u);
   const SunDay s = sun_day(latitude, 3, 21);
-  const double phi = latitude * Deg, d = s.declination_rad, limit = std::atan(width / (2 * depth));
-  auto azimuth = [&](double h) { return std::atan2(std::sin(h), std::sin(phi) * std::cos(h) - std::cos(phi) * std::tan(d)); };
-  double lo = 0, hi = Pi / 2;
-  for (int i = 0; i < 60; ++i) (azimuth(0.5 * (lo + hi)) < limit ? lo : hi) = 0.5 * (lo + hi);
-  const double h1 = 0.5 * (lo + hi) / Deg / 15.0;
+  const double phi = latitude * Deg, limit = std::atan(width / (2 * depth));
+  const auto h1 = [&](double d) {
+    auto azimuth = [&](double h) { return std::atan2(std::sin(h), std::sin(phi) * std::cos(h) - std::cos(phi) * std::tan(d)); };
+    double lo = 0, hi = Pi / 2;
+    for (int i = 0; i < 60; ++i) (azimuth(0.5 * (lo + hi)) < limit ? lo : hi) = 0.5 * (lo + hi);
+    return 0.5 * (lo + hi);
+  };
   // The altitude at the limit lies far above the 5 degree minimum.
-  ASSERT_LT(h1, hour_angle_at_altitude(phi, d, 5 * Deg) / Deg / 15.0 - 1);
-  expect_one_spell(a.rooms[0], s.transit_h - h1, s.transit_h + h1);
+  ASSERT_LT(h1(s.declination_rad), hour_angle_at_altitude(phi, s.declination_rad, 5 * Deg) - 15 * Deg);
+  expect_one_spell(a.rooms[0], s.at(-1, h1), s.at(+1, h1));
   // Without the fins the same window sees the sun much longer: the fins are what limits it.
   const Assessed open = assess(room_yaml(latitude, "south", "{date: 03-21, min_altitude: 5}"));
   EXPECT_GT(open.rooms[0].hours, a.rooms[0].hours + 2);
 }
 
+/// A wall parallel to the room's `wall` side, `distance` in front of it, its top `k` x
+/// distance above the reference point (1.2 m), 1 km long.
+std::string obstruction(const std::string& wall, double distance, double k) {
+  const double y = wall == "south" ? -distance : 5 + distance, top = 1.2 + k * distance;
+  const std::string ys = std::to_string(y), z = std::to_string(top);
+  return "    - {name: across, material: grey, vertices: [[-500, " + ys + ", -5], [500, " + ys + ", -5], [500, " + ys +
+         ", " + z + "], [-500, " + ys + ", " + z + "]]}\n";
+}
+
+/// The hour angle (rad) at which the sun's profile angle on an equator-facing facade equals
+/// atan(k): the profile angle p obeys
+///   tan p = (sin phi sin d + cos phi cos d cos H) / (sin phi cos d cos H - cos phi sin d)
+/// (latitude and declination taken positive toward the pole behind the facade), which equals
+/// k at cos H = -sin d (k cos phi + sin phi) / (cos d (cos phi - k sin phi)).
+double hour_angle_at_profile(double phi, double d, double k) {
+  return std::acos(-std::sin(d) * (k * std::cos(phi) + std::sin(phi)) / (std::cos(d) * (std::cos(phi) - k * std::sin(phi))));
+}
+
 TEST(SunlightExposure, ALongObstructionHidesTheSunBelowItsProfileAngle) {
-  // A wall parallel to the facade, D in front, its top h above the reference point, long
-  // enough to be infinite here: the sun is seen while its profile angle on the facade exceeds
-  // atan(h / D), tan p = tan(altitude) / cos(azimuth from the normal). On a south facade
-  // tan p = (sin phi sin d + cos phi cos d cos H) / (sin phi cos d cos H - cos phi sin d),
-  // which equals k = h / D at cos H = -sin d (k cos phi + sin phi) / (cos d (cos phi - k sin phi)).
-  // (At an equinox the profile angle is 90 - phi all day, so a February date is taken.)
-  struct Case {
-    double latitude;
-    const char* wall;
-    double y_wall, outward;  // the obstruction's y and the window's outward y direction
-  };
-  for (const Case c : {Case{45, "south", -10, -1}, Case{-40, "north", 15, 1}}) {
-    SCOPED_TRACE(c.latitude);
-    const double distance = 10, k = std::tan(20 * Deg), top = 1.2 + k * distance;
-    const std::string y = std::to_string(c.y_wall), z = std::to_string(top);
-    const std::string wall_polygon =
-        "    - {name: across, material: grey, vertices: [[-500, " + y + ", -5], [500, " + y + ", -5], [500, " + y +
-        ", " + z + "], [-500, " + y + ", " + z + "]]}\n";
-    const Assessed a = assess(room_yaml(c.latitude, c.wall, "{date: 02-15, min_altitude: 5}", wall_polygon));
+  // A long wall D in front of the facade hides the sun while its profile angle on the facade
+  // is below atan(h / D), h its top above the reference point: tan p = tan(altitude) /
+  // cos(azimuth from the normal). (At an equinox the profile angle on an equator-facing
+  // facade is 90 - phi all day, so a February date is taken.)
+  // 45 N, 15 February, a south window, h / D = tan 20 deg: the winter sun's profile angle is
+  // largest at noon, so one spell about transit.
+  {
+    const double latitude = 45, k = std::tan(20 * Deg);
+    const Assessed a = assess(room_yaml(latitude, "south", "{date: 02-15, min_altitude: 5}", obstruction("south", 10, k)));
     ASSERT_EQ(a.rooms.size(), 1u);
-    const SunDay s = sun_day(c.latitude, 2, 15);
-    // In the southern hemisphere the window faces north: mirror the latitude and declination.
-    const double phi = std::fabs(c.latitude) * Deg, d = (c.latitude > 0 ? 1 : -1) * s.declination_rad;
-    const double cos_h = -std::sin(d) * (k * std::cos(phi) + std::sin(phi)) / (std::cos(d) * (std::cos(phi) - k * std::sin(phi)));
-    const double h1 = std::acos(cos_h) / Deg / 15.0;
-    // The altitude bound (5 degrees) lies outside the obstruction's.
-    ASSERT_LT(h1, hour_angle_at_altitude(phi, d, 5 * Deg) / Deg / 15.0 - 0.5);
-    expect_one_spell(a.rooms[0], s.transit_h - h1, s.transit_h + h1);
-    (void)c.outward;
+    const SunDay s = sun_day(latitude, 2, 15);
+    const double phi = latitude * Deg, d = s.declination_rad;
+    const auto h1 = [&](double dd) { return hour_angle_at_profile(phi, dd, k); };
+    ASSERT_LT(h1(d), hour_angle_at_altitude(phi, d, 5 * Deg) - 7.5 * Deg);  // the wall binds, not the altitude
+    expect_one_spell(a.rooms[0], s.at(-1, h1), s.at(+1, h1));
+  }
+  // 40 S, 15 February (late summer), a north window, h / D = tan 70 deg: the summer sun's
+  // profile angle is smallest at noon (it rises and sets behind the facade), so the wall hides
+  // the middle of the day and two spells remain, each ending where the sun passes into the
+  // facade's plane, cos H = tan d / tan phi.
+  {
+    const double latitude = -40, k = std::tan(70 * Deg);
+    const Assessed a = assess(room_yaml(latitude, "north", "{date: 02-15, min_altitude: 5}", obstruction("north", 10, k)));
+    ASSERT_EQ(a.rooms.size(), 1u);
+    const SunDay s = sun_day(latitude, 2, 15);
+    const double phi = -latitude * Deg;  // mirrored: the south pole behind the facade, declination sign flipped
+    ASSERT_LT(s.declination_rad, 0);
+    const auto h1 = [&](double d) { return hour_angle_at_profile(phi, -d, k); };
+    const auto h2 = [&](double d) { return std::acos(std::tan(-d) / std::tan(phi)); };
+    // The facade binds, not the altitude.
+    ASSERT_LT(h2(s.declination_rad), hour_angle_at_altitude(phi, -s.declination_rad, 5 * Deg) - 7.5 * Deg);
+    const RoomSunlight& room = a.rooms[0];
+    ASSERT_EQ(room.intervals.size(), 2u) << intervals_text(room.intervals);
+    EXPECT_NEAR(room.intervals[0].start_h, s.at(-1, h2), EndTolerance_h);
+    EXPECT_NEAR(room.intervals[0].end_h, s.at(-1, h1), EndTolerance_h);
+    EXPECT_NEAR(room.intervals[1].start_h, s.at(+1, h1), EndTolerance_h);
+    EXPECT_NEAR(room.intervals[1].end_h, s.at(+1, h2), EndTolerance_h);
+    EXPECT_NEAR(room.hours, s.at(+1, h2) - s.at(+1, h1) + s.at(-1, h1) - s.at(-1, h2), 4 * EndTolerance_h);
   }
 }
 
