@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "dayphoton/project/project.h"
+#include "dayphoton/report/report_html.h"
 #include "dayphoton/study/progress.h"
 #include "dayphoton/study/results_model.h"
 #include "dayphoton/study/study_runner.h"
@@ -67,6 +68,7 @@ class SunlightExposureRun : public ::testing::Test {
     options.output_folder_overridden = true;
     RunSettings settings;
     settings.output_dir = (m_dir / "out").string();
+    settings.write_views = report::write_views;  // report.html
     std::ostringstream quiet;
     Progress progress(quiet, ProgressStyle::Quiet);
     run_study(project::load_project((m_dir / "project.yaml").string(), options), settings, progress);
