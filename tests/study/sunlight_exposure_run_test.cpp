@@ -12,10 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "dayphoton/project/project.h"
-#include "dayphoton/report/report_html.h"
-#include "dayphoton/study/progress.h"
 #include "dayphoton/study/results_model.h"
-#include "dayphoton/study/study_runner.h"
+#include "../report/run_with_report.h"
 #include "../temp_folder.h"
 
 namespace dayphoton::study {
@@ -66,12 +64,7 @@ class SunlightExposureRun : public ::testing::Test {
     std::ofstream(m_dir / "project.yaml") << yaml;
     project::LoadOptions options;
     options.output_folder_overridden = true;
-    RunSettings settings;
-    settings.output_dir = (m_dir / "out").string();
-    settings.write_views = report::write_views;  // report.html
-    std::ostringstream quiet;
-    Progress progress(quiet, ProgressStyle::Quiet);
-    run_study(project::load_project((m_dir / "project.yaml").string(), options), settings, progress);
+    test::run_with_report(project::load_project((m_dir / "project.yaml").string(), options), m_dir / "out");
     return m_dir / "out";
   }
 
