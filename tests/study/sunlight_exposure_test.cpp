@@ -138,6 +138,28 @@ TEST(SunlightExposure, WithNothingInFrontTheMinimumAltitudeBoundsTheEquinoxDay) 
   }
 }
 
+TEST(SunlightExposure, TheSitesNorthTurnsTheWindow) {
+  // north: 90 puts true north along model +X, so the model's south wall faces east: at the
+  // equinox its window sees the morning sun from the minimum altitude until the sun crosses
+  // the meridian (hour angle 0); north: 180 turns it to face north, where the equinox sun
+  // above 5 degrees never is.
+  const double latitude = 52;
+  std::string east = room_yaml(latitude, "south", "{date: 03-21, min_altitude: 5}");
+  east.replace(east.find("time_zone: 0}"), 13, "time_zone: 0, north: 90}");
+  const Assessed a = assess(east);
+  const SunDay s = sun_day(latitude, 3, 21);
+  const auto h0 = [&](double d) { return hour_angle_at_altitude(latitude * Deg, d, 5 * Deg); };
+  expect_one_spell(a.rooms[0], s.at(-1, h0), s.at(+1, [](double) { return 0.0; }));
+  // The reference point in world coordinates: model (2, 0) turned counter-clockwise by 90 degrees.
+  EXPECT_NEAR(a.rooms[0].windows[0].reference_point_m.x, 0.0, 1e-9);
+  EXPECT_NEAR(a.rooms[0].windows[0].reference_point_m.y, 2.0, 1e-9);
+  std::string north = room_yaml(latitude, "south", "{date: 03-21, min_altitude: 5}");
+  north.replace(north.find("time_zone: 0}"), 13, "time_zone: 0, north: 180}");
+  const Assessed n = assess(north);
+  EXPECT_EQ(n.rooms[0].hours, 0.0);
+  EXPECT_EQ(n.rooms[0].level, "below minimum");
+}
+
 TEST(SunlightExposure, RevealsLimitTheSunsAzimuthByTheirDepth) {
   // Fins of depth D at both jambs of a window of width W: from the reference point at the
   // centre the sun is seen while its azimuth from the window's normal is below
