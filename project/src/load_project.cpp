@@ -168,6 +168,7 @@ class Loader {
     for_each_item(r, "variants", [&](const YamlNode& n) { read_variant(n); });
     if (const YamlNode* n = r.take("operation")) read_operation(*n);
     for_each_item(r, "points_in_time", [&](const YamlNode& n) { read_point_in_time(n); });
+    if (const YamlNode* n = r.take("sunlight_exposure")) read_sunlight_exposure(*n);
     if (const YamlNode* n = r.take("limits")) read_limits(*n);
     r.finish();
     check_photon_limit();
@@ -333,6 +334,56 @@ class Loader {
                        "'diffuse_horizontal_illuminance' is not used with sky: weather (the weather file gives the sky)");
     r.finish();
     if (ok) m_project.points_in_time.push_back(std::move(c));
+  }
+
+  // ---- EN 17037 exposure to sunlight ------------------------------------------------------
+  void read_sunlight_exposure(const YamlNode& node) {
+    if (!expect_map(node, "sunlight_exposure", m_reporter)) return;
+    SunlightExposureSpec spec;
+    spec.location = node.location;
+    ParamReader r(node, schema_section("sunlight_exposure"), m_reporter);
+    bool ok = true;
+    std::string date;
+    spec.date_location = r.location_of("date");
+    if (r.read_string("date", date)) {
+      if (parse_month_day(date, spec.date_location, spec.month, spec.day)) {
+        const int at = spec.month * 100 + spec.day;
+        if (at < SunlightFirstMonth * 100 + SunlightFirstDay || at > SunlightLastMonth * 100 + SunlightLastDay) {
+          m_reporter.error(spec.date_location, "sunlight_exposure date '" + printable_name(date) +
+                                                   "' is outside EN 17037's dates for the sunlight exposure: "
+                                                   "give a date from 02-01 to 03-21");
+          ok = false;
+        }
+      } else {
+        ok = false;
+      }
+    } else {
+      ok = false;
+    }
+    ok = r.read_number("min_altitude", spec.min_altitude_deg) && ok;
+    ok = r.read_number("time_step", spec.time_step_min) && ok;
+    spec.windows = read_names(r, "windows");
+    r.finish();
+    // The windows named must be windows of the room generator's rooms in an outside wall.
+    std::vector<std::string> known;
+    for (const RoomSpec& room : m_project.geometry.rooms)
+      for (const WindowSpec& w : room.windows) known.push_back(w.name);
+    std::set<std::string> interior;
+    for (const InteriorWindow& iw : interior_windows(m_project.geometry)) interior.insert(iw.window);
+    for (const Located<std::string>& name : spec.windows) {
+      if (std::find(known.begin(), known.end(), name.value) == known.end()) {
+        unknown_name("window", {name.value, name.location}, known, " in sunlight_exposure.windows");
+        ok = false;
+      } else if (interior.count(name.value)) {
+        m_reporter.error(name.location, "window '" + name.value + "' in sunlight_exposure.windows is an interior "
+                                        "window (between two rooms): the sun cannot be seen through it from outside");
+        ok = false;
+      }
+    }
+    if (known.size() == interior.size())
+      m_reporter.error(node.location, "sunlight_exposure needs windows in the outside walls of `geometry.rooms`: "
+                                      "this project has none (polygons, meshes and imported models are not assessed)");
+    if (ok) m_project.sunlight_exposure = std::move(spec);
   }
 
   /// "MM-DD" (also "M-D"): a date of the calendar, 02-29 included (a weather case needs the

@@ -133,6 +133,7 @@ std::vector<SectionSchema> build_schema() {
       P("points_in_time", T::SectionList, "point-in-time cases: the illuminance at every sensor at one date and time under one sky").section("point_in_time"),
       P("operation", T::Section, "operated shading (LM-83 blinds rule): per hour the open or the shaded case").section("operation"),
       P("limits", T::Section, "the largest study the project may make; raise a limit for a study that needs more").section("limits"),
+      P("sunlight_exposure", T::Section, "EN 17037 exposure to sunlight: the hours the sun is seen from each window's reference point on one date").section("sunlight_exposure"),
   }});
   s.push_back({"site", "location of the site and orientation of the model", {
       P("name", T::String, "site name for reports").def(""),
@@ -540,6 +541,13 @@ std::vector<SectionSchema> build_schema() {
       P("shaded", T::String, "case of the shaded state (a variant name or `base`), used in the hours the rule closes the shading").required(),
       P("direct_sun_threshold", T::Number, "a sensor sees direct sun when its direct-sun-only, zero-bounce illuminance in the open case is >= this").unit("lx").above(0).def("1000"),
       P("sunlit_limit", T::Number, "an hour is shaded when MORE than this share of the grid's sensors see direct sun").unit("%").range(0, 100).def("2"),
+  }});
+  // EN 17037:2018, exposure to sunlight (docs/metrics.md "EN 17037 exposure to sunlight").
+  s.push_back({"sunlight_exposure", "EN 17037 exposure to sunlight: per window of `geometry.rooms` the hours of possible sunlight at its reference point (centre of the width, on the inner surface, the lowest height at least 1.2 m above the floor and 0.3 m above the sill), on a cloudless date, the sun above min_altitude; per room the union of its windows' hours", {
+      P("date", T::String, "month-day between 02-01 and 03-21 (EN 17037's dates)").def("03-21"),
+      P("min_altitude", T::Number, "the sun counts only at or above this altitude (geometric, of the disc's centre): EN 17037 makes it depend on the site (its table or the national annex); no default").unit("deg").range(0, 45).required(),
+      P("time_step", T::Number, "the sun is sampled this often and each change of visibility found to 1 s between samples; a sunlit or shaded spell shorter than the step may be missed").unit("min").range(0.1, 15).def("1"),
+      P("windows", T::NameList, "windows of `geometry.rooms` to assess; default every window in an outside wall (roof lights and interior windows are not assessed)"),
   }});
   s.push_back({"point_in_time", "one date and local standard time under one sky: illuminance per sensor (sky, sun and their reflections)", {
       P("name", T::String, "case name: a column of point_in_time.csv and an image name (the folder-name rule)").required(),

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "dayphoton/project/window_rectangle.h"
+
 namespace dayphoton::project::detail {
 
 WallFrame wall_frame(const RoomSpec& room, Wall wall) {
@@ -57,3 +59,20 @@ WindowFrame window_frame(const RoomSpec& room, const WindowSpec& window) {
 }
 
 }  // namespace dayphoton::project::detail
+
+namespace dayphoton::project {
+
+WindowRectangle window_rectangle(const RoomSpec& room, const WindowSpec& window) {
+  const detail::WindowFrame f = detail::window_frame(room, window);
+  WindowRectangle r;
+  r.along = f.e_u;
+  r.outward = f.e_w;
+  r.width_m = f.width_m;
+  r.sill_m = f.sill_m;
+  r.height_m = f.head_m - f.sill_m;
+  r.floor_z_m = room.origin.z;
+  r.left_bottom_m = f.at(0, f.sill_m, 0);
+  return r;
+}
+
+}  // namespace dayphoton::project

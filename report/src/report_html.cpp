@@ -915,7 +915,7 @@ std::string report_html_of(const std::string& results_dir, const ResultsModel& m
   // settings last.
   std::vector<std::string> ids{"summary", "verdicts", "building"};
   std::ostringstream body;
-  body << summary_section(model) << verdicts_section(model) << building_section(model);
+  body << summary_section(model) << verdicts_section(model) << sunlight_section(model) << building_section(model);
   const std::string variants = variants_section(model);
   if (!variants.empty()) ids.push_back("variants");
   body << variants;
@@ -946,8 +946,9 @@ std::string report_html_of(const std::string& results_dir, const ResultsModel& m
        << esc(model.dayphoton_version)
        << "</p><p id=\"report-check\" data-status=\"pending\">pending</p></header>\n";
   html << "<nav class=\"screen-only\"><h2>Contents</h2><ul><li><a href=\"#summary\">Summary</a></li>"
-          "<li><a href=\"#verdicts\">Compliance</a></li><li><a href=\"#building\">Building, materials and "
-          "sensors</a></li>";
+          "<li><a href=\"#verdicts\">Compliance</a></li>";
+  if (model.sunlight_exposure) html << "<li><a href=\"#sunlight\">Exposure to sunlight</a></li>";
+  html << "<li><a href=\"#building\">Building, materials and sensors</a></li>";
   if (!variants.empty()) html << "<li><a href=\"#variants\">Variants side by side</a></li>";
   for (const GridData& g : grids) html << "<li><a href=\"#" << g.id << "\">" << esc(g.title()) << "</a></li>";
   if (std::find(ids.begin(), ids.end(), "sky") != ids.end()) html << "<li><a href=\"#sky\">Sky</a></li>";

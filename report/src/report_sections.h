@@ -18,6 +18,10 @@ std::string summary_section(const study::ResultsModel& model);
 /// and standard.
 std::string verdicts_section(const study::ResultsModel& model);
 
+/// "sunlight" (sunlight_section.cpp): EN 17037 exposure to sunlight, a row per case and room
+/// (hours, level, spells, each window's hours). Empty when the run did not assess it.
+std::string sunlight_section(const study::ResultsModel& model);
+
 /// "building" (building_section.cpp): rooms and windows (dimensions, areas, window-to-wall
 /// and window-to-floor ratios), materials (type, reflectance, transmittance, area), sensor
 /// grids (sensors, spacing, orientation).

@@ -190,7 +190,10 @@ void assess_compliance(ResultsModel& model) {
     }
   std::vector<std::string>& s = model.not_assessed;
   s.clear();
-  s.push_back("EN 17037 view out, exposure to sunlight and protection from glare: not computed by dayphoton.");
+  bool sunlight = false;
+  for (const CaseResult& c : model.cases) sunlight = sunlight || !c.sunlight_exposure.empty();
+  s.push_back(sunlight ? "EN 17037 view out and protection from glare: not computed by dayphoton."
+                       : "EN 17037 view out, exposure to sunlight and protection from glare: not computed by dayphoton.");
   s.push_back("Glare (daylight glare probability or any other glare index): not computed.");
   s.push_back("BREEAM Hea 01 criteria (b) view of sky and (c) room depth, glare control and view out: not assessed; "
               "its daylighting credits also depend on the share of all relevant building areas that comply, which "

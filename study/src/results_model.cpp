@@ -37,6 +37,25 @@ json polygons(const std::vector<Polygon3>& ps) {
 }
 json optional_number(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
+json intervals_json(const std::vector<SunlightInterval>& intervals) {
+  json a = json::array();
+  for (const SunlightInterval& i : intervals) a.push_back(json::array({i.start_h, i.end_h}));
+  return a;
+}
+json sunlight_json(const std::vector<RoomSunlight>& rooms) {
+  json a = json::array();
+  for (const RoomSunlight& r : rooms) {
+    json windows = json::array();
+    for (const WindowSunlight& w : r.windows)
+      windows.push_back({{"name", w.name}, {"reference_point_m", vec(w.reference_point_m)},
+                         {"intervals_h", intervals_json(w.intervals)}, {"hours", w.hours},
+                         {"not_assessed", w.not_assessed}});
+    a.push_back({{"room", r.room}, {"windows", windows}, {"intervals_h", intervals_json(r.intervals)},
+                 {"hours", r.hours}, {"level", r.level}});
+  }
+  return a;
+}
+
 const char* scale_name(QuantityScale s) {
   switch (s) {
     case QuantityScale::DaylightFactor: return "daylight_factor";
@@ -386,6 +405,43 @@ struct Reader {
       w.emplace_back(start, end);
     }
     return w;
+  }
+  std::vector<SunlightInterval> sunlight_intervals(const json& j, const std::string& parent) const {
+    std::vector<SunlightInterval> out;
+    for (const json& e : array(j, parent, "intervals_h")) {
+      if (!e.is_array() || e.size() != 2 || !e[0].is_number() || !e[1].is_number())
+        fail(name(parent, "intervals_h"), "holds an interval that is not [start_h, end_h]");
+      const double start = e[0].get<double>(), end = e[1].get<double>();
+      if (!(start >= 0 && start <= end && end <= 24)) fail(name(parent, "intervals_h"), "holds an interval outside 0..24 h");
+      out.push_back({start, end});
+    }
+    return out;
+  }
+  std::vector<RoomSunlight> sunlight(const json& j, const std::string& parent) const {
+    std::vector<RoomSunlight> rooms;
+    const std::string k = name(parent, "sunlight_exposure");
+    for (const json& rj : array(j, parent, "sunlight_exposure")) {
+      RoomSunlight r;
+      r.room = text(rj, k, "room");
+      for (const json& wj : array(rj, k, "windows")) {
+        WindowSunlight w;
+        const std::string wk = k + ".windows";
+        w.name = text(wj, wk, "name");
+        w.reference_point_m = vector(at(wj, wk, "reference_point_m"), name(wk, "reference_point_m"));
+        w.intervals = sunlight_intervals(wj, wk);
+        w.hours = number(wj, wk, "hours");
+        w.not_assessed = text(wj, wk, "not_assessed");
+        r.windows.push_back(std::move(w));
+      }
+      r.intervals = sunlight_intervals(rj, k);
+      r.hours = number(rj, k, "hours");
+      r.level = text(rj, k, "level");
+      if (r.level != "high" && r.level != "medium" && r.level != "minimum" && r.level != "below minimum" &&
+          r.level != "not assessed")
+        fail(name(k, "level"), "is not high, medium, minimum, below minimum or not assessed");
+      rooms.push_back(std::move(r));
+    }
+    return rooms;
   }
   std::pair<int, int> month_day(const json& v, const std::string& key) const {
     if (!v.is_array() || v.size() != 2 || !v[0].is_number_integer() || !v[1].is_number_integer())
@@ -785,7 +841,19 @@ bool CaseResult::operator==(const CaseResult& o) const {
   return kind == o.kind && name == o.name && folder == o.folder && changes == o.changes && openings == o.openings &&
          systems == o.systems && materials == o.materials && rooms == o.rooms &&
          opening_area_m2 == o.opening_area_m2 && blinds_in_place == o.blinds_in_place &&
-         shading_materials_in_place == o.shading_materials_in_place && grids == o.grids;
+         shading_materials_in_place == o.shading_materials_in_place && grids == o.grids &&
+         sunlight_exposure == o.sunlight_exposure;
+}
+bool WindowSunlight::operator==(const WindowSunlight& o) const {
+  return name == o.name && reference_point_m == o.reference_point_m && intervals == o.intervals && hours == o.hours &&
+         not_assessed == o.not_assessed;
+}
+bool RoomSunlight::operator==(const RoomSunlight& o) const {
+  return room == o.room && windows == o.windows && intervals == o.intervals && hours == o.hours && level == o.level;
+}
+bool SunlightExposureSettings::operator==(const SunlightExposureSettings& o) const {
+  return month == o.month && day == o.day && year == o.year && min_altitude_deg == o.min_altitude_deg &&
+         time_step_min == o.time_step_min;
 }
 bool ResultsModel::operator==(const ResultsModel& o) const {
   return schema_version == o.schema_version && project_name == o.project_name && project_file == o.project_file &&
@@ -796,7 +864,7 @@ bool ResultsModel::operator==(const ResultsModel& o) const {
          below_horizon_hours == o.below_horizon_hours && below_horizon_their_sun == o.below_horizon_their_sun &&
          weather_file == o.weather_file && basis == o.basis && reinhart_mf == o.reinhart_mf &&
          ground_reflectance == o.ground_reflectance && settings == o.settings && notes == o.notes && cases == o.cases &&
-         title == o.title && not_assessed == o.not_assessed;
+         title == o.title && not_assessed == o.not_assessed && sunlight_exposure == o.sunlight_exposure;
 }
 
 std::string results_json(const ResultsModel& m) {
@@ -811,6 +879,7 @@ std::string results_json(const ResultsModel& m) {
                      {"materials", materials_json(c.materials)}, {"rooms", rooms_json(c.rooms)},
                      {"opening_area_m2", c.opening_area_m2}, {"grids", grids}});
     if (!c.blinds_in_place.empty()) cases.back()["blinds_in_place"] = c.blinds_in_place;
+    if (!c.sunlight_exposure.empty()) cases.back()["sunlight_exposure"] = sunlight_json(c.sunlight_exposure);
     if (!c.shading_materials_in_place.empty()) {
       json materials = json::array();
       for (const ShadingMaterialInPlace& s : c.shading_materials_in_place)
@@ -838,7 +907,13 @@ std::string results_json(const ResultsModel& m) {
                   {"notes", m.notes},
                   {"not_assessed", m.not_assessed},
                   {"cases", cases}};
-  return json_text(j) + "\n";
+  json out = j;
+  if (m.sunlight_exposure) {
+    const SunlightExposureSettings& e = *m.sunlight_exposure;
+    out["sunlight_exposure"] = {{"date", json::array({e.month, e.day})}, {"year", e.year},
+                                {"min_altitude_deg", e.min_altitude_deg}, {"time_step_min", e.time_step_min}};
+  }
+  return json_text(out) + "\n";
 }
 
 ResultsModel parse_results_json(const std::string& text, const std::string& path) {
@@ -886,6 +961,17 @@ ResultsModel parse_results_json(const std::string& text, const std::string& path
   for (const json& s : r.array(j, "", "settings")) m.settings.push_back({r.text(s, "settings", "name"), r.text(s, "settings", "value")});
   m.notes = r.texts(j, "", "notes");
   m.not_assessed = r.texts(j, "", "not_assessed");
+  if (j.contains("sunlight_exposure")) {
+    const json& e = r.at(j, "", "sunlight_exposure");
+    SunlightExposureSettings st;
+    const auto [month, day] = r.month_day(r.at(e, "sunlight_exposure", "date"), "sunlight_exposure.date");
+    st.month = month;
+    st.day = day;
+    st.year = r.integer(e, "sunlight_exposure", "year");
+    st.min_altitude_deg = r.number(e, "sunlight_exposure", "min_altitude_deg");
+    st.time_step_min = r.number(e, "sunlight_exposure", "time_step_min");
+    m.sunlight_exposure = st;
+  }
   for (const json& c : r.array(j, "", "cases")) {
     CaseResult cr;
     cr.kind = r.text(c, "cases", "kind");
@@ -899,6 +985,7 @@ ResultsModel parse_results_json(const std::string& text, const std::string& path
     cr.rooms = r.rooms(c, "cases[" + cr.name + "]");
     cr.opening_area_m2 = r.number(c, "cases", "opening_area_m2");
     if (c.contains("blinds_in_place")) cr.blinds_in_place = r.texts(c, "cases", "blinds_in_place");
+    if (c.contains("sunlight_exposure")) cr.sunlight_exposure = r.sunlight(c, "cases");
     if (c.contains("shading_materials_in_place"))
       for (const json& s : r.array(c, "cases", "shading_materials_in_place"))
         cr.shading_materials_in_place.push_back({r.text(s, "cases.shading_materials_in_place", "material"),

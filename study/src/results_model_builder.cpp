@@ -13,6 +13,7 @@
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/material.h"
+#include "dayphoton/study/point_in_time.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/sensor_lattice.h"
 #include "dayphoton/study/shading_materials.h"
@@ -89,6 +90,10 @@ ResultsModel results_model_header(const project::Project& project, const std::st
     m.settings.push_back({name, setting_text(*it)});
   }
   m.notes = notes;
+  if (project.sunlight_exposure) {
+    const project::SunlightExposureSpec& e = *project.sunlight_exposure;
+    m.sunlight_exposure = SunlightExposureSettings{e.month, e.day, PointInTimeSolarYear, e.min_altitude_deg, e.time_step_min};
+  }
   return m;
 }
 
@@ -218,6 +223,7 @@ CaseResult operated_case(const CaseResult& base, const std::string& name, const 
   c.name = name;
   c.folder = folder;
   c.changes.clear();
+  c.sunlight_exposure.clear();  // the sun's hours are the open and shaded cases' own geometry
   for (GridResult& g : c.grids) {
     g.quantities.clear();
     g.daylight_factor.reset();

@@ -35,6 +35,7 @@
 #include "dayphoton/study/output_manifest.h"
 #include "dayphoton/study/placement_check.h"
 #include "dayphoton/study/point_in_time.h"
+#include "dayphoton/study/sunlight_exposure.h"
 #include "dayphoton/study/project_metric_settings.h"
 #include "dayphoton/study/result_files.h"
 #include "dayphoton/study/compliance_verdicts.h"
@@ -111,6 +112,20 @@ nlohmann::json site_json(const project::Site& project_site, const SunSite* sun_s
 /// One case: photons, coefficients, daylight factor, annual results, into `dir`/<grid>/.
 /// Returns the grids' part of summary.json. `label` prefixes log lines of variants. `keep`
 /// (optional) receives the annual tables of every grid for the operated result.
+/// summary.json's "sunlight_exposure" of a case: per room its hours, level and spells.
+nlohmann::json sunlight_summary(const std::vector<RoomSunlight>& rooms) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const RoomSunlight& r : rooms) {
+    nlohmann::json windows = nlohmann::json::array();
+    for (const WindowSunlight& w : r.windows)
+      windows.push_back({{"name", w.name}, {"hours", w.hours}, {"intervals", intervals_text(w.intervals)},
+                         {"not_assessed", w.not_assessed}});
+    a.push_back({{"room", r.room}, {"hours", r.hours}, {"level", r.level}, {"intervals", intervals_text(r.intervals)},
+                 {"windows", windows}});
+  }
+  return a;
+}
+
 nlohmann::json run_case(const project::Project& project, const std::string& label,
                         const std::string& dir, RunContext& ctx, CaseTables* keep = nullptr) {
   const project::Simulation& sim = project.simulation;
@@ -154,6 +169,14 @@ nlohmann::json run_case(const project::Project& project, const std::string& labe
   const sky::PatchBasis& basis = plan.basis;
   set_plan_geometry(*ctx.results, description);  // in world coordinates
   set_building(*ctx.results, project, description);
+  // EN 17037 exposure to sunlight: shadow rays through this case's scene (sunlight_exposure.h).
+  if (project.sunlight_exposure) {
+    const project::SunlightExposureSpec& se = *project.sunlight_exposure;
+    SunlightDay day{point_in_time_site(project, ctx.sun_site), PointInTimeSolarYear, se.month, se.day,
+                    se.min_altitude_deg, se.time_step_min};
+    ctx.results->sunlight_exposure = assess_sunlight_exposure(project, description, scene, day);
+    for (const std::string& line : sunlight_log_lines(ctx.results->sunlight_exposure)) log.line(prefix + line);
+  }
   const engine::SourceSet sources = engine::SourceSet::sky_bins(basis);
   const CaseLayout layout = CaseLayout::of(description.grids, scene, materials);
   const CaseScene cs{description, scene, materials, layout, scene_key(description), planes_key(description.grids)};
@@ -699,6 +722,7 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
     CaseResult variant = results_case("variant", v.name, relative_folder(report.output_dir, dir), changes);
     ctx.results = &variant;
     vj["grids"] = run_case(project::apply_variant(project, v), v.name, dir, ctx, keep(v.name));
+    if (project.sunlight_exposure) vj["sunlight_exposure"] = sunlight_summary(variant.sunlight_exposure);
     cases.push_back(std::move(variant));
     variants.push_back(vj);
   }
@@ -752,6 +776,14 @@ RunReport run_study(const project::Project& project, const RunSettings& settings
       {"variants", variants},
       {"notes", report.notes}};
   if (!operated.is_null()) summary["operated"] = operated;
+  if (project.sunlight_exposure) {
+    const project::SunlightExposureSpec& se = *project.sunlight_exposure;
+    summary["sunlight_exposure"] = {{"date", {se.month, se.day}},
+                                    {"min_altitude_deg", se.min_altitude_deg},
+                                    {"time_step_min", se.time_step_min},
+                                    {"clock", "local standard time"},
+                                    {"rooms", sunlight_summary(cases.front().sunlight_exposure)}};
+  }
   if (sim.accuracy)
     summary["simulation"]["accuracy"] = {
         {"preset", sim.accuracy->preset.empty() ? nlohmann::json() : nlohmann::json(sim.accuracy->preset)},

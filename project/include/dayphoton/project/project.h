@@ -629,6 +629,26 @@ struct OperationSpec {
   SourceLocation location;
 };
 
+/// EN 17037's exposure to sunlight (`sunlight_exposure`, docs/metrics.md "EN 17037 exposure
+/// to sunlight"): the hours of possible sunlight, on one date, at the reference point of each
+/// window of the room generator's rooms (study/sunlight_exposure.h).
+/// EN 17037:2018's dates for the sunlight exposure: a date between 1 February and 21 March
+/// (docs/metrics.md "EN 17037 exposure to sunlight"); the default date is the last of them.
+constexpr int SunlightFirstMonth = 2, SunlightFirstDay = 1;
+constexpr int SunlightLastMonth = 3, SunlightLastDay = 21;
+struct SunlightExposureSpec {
+  int month = SunlightLastMonth, day = SunlightLastDay;  ///< the date, in [02-01, 03-21]
+  SourceLocation date_location;   ///< of `date`, or of the section
+  /// The sun counts only at or above this altitude (degrees, the geometric altitude of the
+  /// disc's centre). No default: EN 17037 makes it depend on the site.
+  double min_altitude_deg = 0;
+  double time_step_min = 1;       ///< the sun is sampled every time_step_min minutes
+  /// The windows assessed (names of windows of `geometry.rooms`); empty: every window in an
+  /// outside wall.
+  std::vector<Located<std::string>> windows;
+  SourceLocation location;
+};
+
 /// The sky of a point-in-time case (`points_in_time[].sky`).
 enum class PointSky {
   CieOvercast,  ///< CIE standard overcast sky (Moon & Spencer), no sun
@@ -673,6 +693,7 @@ struct Project {
   std::vector<VariantSpec> variants;  ///< in file order; empty if the file has none
   std::optional<OperationSpec> operation;  ///< absent: no operated result
   std::vector<PointInTimeSpec> points_in_time;  ///< in file order; empty if the file has none
+  std::optional<SunlightExposureSpec> sunlight_exposure;  ///< absent: not assessed
   /// `limits`: the largest study this project may make (sensors, photons), each checked
   /// before anything of that size is allocated; defaults in core/resource_limits.h.
   ResourceLimits limits;

@@ -335,6 +335,42 @@ struct RoomSummary {
   bool operator==(const RoomSummary& o) const;
 };
 
+/// A spell of sunlight at a reference point: from start_h to end_h, local standard time of the
+/// site's time zone (no daylight saving).
+struct SunlightInterval {
+  double start_h = 0, end_h = 0;
+  bool operator==(const SunlightInterval& o) const { return start_h == o.start_h && end_h == o.end_h; }
+};
+
+/// EN 17037's exposure to sunlight at one window (study/sunlight_exposure.h).
+struct WindowSunlight {
+  std::string name;
+  Vec3 reference_point_m;  ///< world coordinates
+  std::vector<SunlightInterval> intervals;
+  double hours = 0;
+  /// Why the window was not assessed (its head below the reference point's height); "" if it was.
+  std::string not_assessed;
+  bool operator==(const WindowSunlight& o) const;
+};
+
+/// EN 17037's exposure to sunlight of one room: the union of its windows' spells.
+struct RoomSunlight {
+  std::string room;
+  std::vector<WindowSunlight> windows;
+  std::vector<SunlightInterval> intervals;
+  double hours = 0;
+  std::string level;  ///< "high", "medium", "minimum", "below minimum", or "not assessed" (no window could be)
+  bool operator==(const RoomSunlight& o) const;
+};
+
+/// The settings of the sunlight exposure (`sunlight_exposure` of the project).
+struct SunlightExposureSettings {
+  int month = 3, day = 21, year = 2001;  ///< the date (the year of the sun's ephemeris)
+  double min_altitude_deg = 0;
+  double time_step_min = 1;
+  bool operator==(const SunlightExposureSettings& o) const;
+};
+
 /// One case: the project as written ("base"), a variant, or the operated-shading result.
 struct CaseResult {
   std::string kind;   ///< "base", "variant", "operated"
@@ -358,6 +394,8 @@ struct CaseResult {
   /// when some are.
   std::vector<ShadingMaterialInPlace> shading_materials_in_place;
   std::vector<GridResult> grids;
+  /// EN 17037 exposure to sunlight, per room (empty: not assessed).
+  std::vector<RoomSunlight> sunlight_exposure;
 
   bool operator==(const CaseResult& o) const;
 };
@@ -398,6 +436,8 @@ struct ResultsModel {
   /// must name as not assessed, e.g. EN 17037's view out.
   std::vector<std::string> not_assessed;
   std::vector<CaseResult> cases;   ///< base first, then variants, then operated
+  /// The project's `sunlight_exposure` settings; absent: not assessed.
+  std::optional<SunlightExposureSettings> sunlight_exposure;
 
   bool operator==(const ResultsModel& o) const;
 };
