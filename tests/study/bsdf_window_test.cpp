@@ -7,8 +7,9 @@
 //     from shadow rays; the BSDF has no straight component, so all of its light comes from
 //     photons, spread over the Klems patches: the comparison checks the whole BSDF path (file,
 //     orientation, sampling, photon classes, no double counting);
-//   - a Lambertian diffuser BSDF (T = tau / pi, R = rho / pi) gives a translucent window with
-//     the same purely diffuse transmission and reflection;
+//   - a Lambertian diffuser BSDF (T = tau / pi, R = rho / pi), as a Klems matrix and as a
+//     tensor tree, gives a translucent window with the same purely diffuse transmission and
+//     reflection;
 //   - the example project projects/bsdf_blind (a venetian blind BSDF) runs end to end.
 // Tolerances from the runs' own Monte Carlo standard errors (df_stderr_percent).
 #include <gtest/gtest.h>
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "../bsdf_xml_writer.h"
+#include "../tensor_tree_xml_writer.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/project/project.h"
@@ -192,6 +194,17 @@ TEST(BsdfWindow, LambertianDiffuserEqualsATranslucentWindow) {
   EXPECT_LT(c.rms, 1.5 * c.noise_rms);
   EXPECT_NEAR(c.mean_ratio, 1.0, 5 * c.mean_ratio_se);
   EXPECT_LT(5 * c.mean_ratio_se, 0.05) << "the test could not see a 5 % difference";
+  // The same diffuser as a tensor tree (TensorTree3, one constant leaf per block), the same
+  // bounds: the project file takes it where it takes a Klems file.
+  std::ofstream(folder() / "diffuser_tt.xml") << test::tensor_tree_xml(
+      {"{ " + test::bsdf_xml_number(0.6 / Pi) + " }", "{ " + test::bsdf_xml_number(0.6 / Pi) + " }",
+       "{ " + test::bsdf_xml_number(0.2 / Pi) + " }", "{ " + test::bsdf_xml_number(0.2 / Pi) + " }"});
+  const Df tree = run("diffuser_tt", "{type: bsdf, file: diffuser_tt.xml}", 2000);
+  const Comparison ct = compare(trans, tree);
+  std::printf("[ bsdf ] tensor-tree diffuser: RMS difference %.2f %% (Monte Carlo part %.2f %%), mean ratio %.4f (se %.4f)\n",
+              100 * ct.rms, 100 * ct.noise_rms, ct.mean_ratio, ct.mean_ratio_se);
+  EXPECT_LT(ct.rms, 1.5 * ct.noise_rms);
+  EXPECT_NEAR(ct.mean_ratio, 1.0, 5 * ct.mean_ratio_se);
 }
 
 }  // namespace
