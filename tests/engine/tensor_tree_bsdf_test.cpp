@@ -137,6 +137,17 @@ TEST(TensorTreeBsdf, SamplesMatchEvalPdfTheCellDistributionAndTheQuadrature) {
         a += expected[static_cast<std::size_t>(c)] + expected[static_cast<std::size_t>(64 + c)];
       }
       EXPECT_NEAR(m.albedo(in, Normal).x, a, 1e-6) << label;
+      // eval() at scattered directions against the closed form at the tree coordinates
+      // computed here (the outgoing direction turned by the incident azimuth).
+      for (int q = 0; q < 200; ++q) {
+        Rng rng(3, case_index, static_cast<std::uint64_t>(q), RandomStream::Scattering);
+        const double cz = 2 * rng.uniform() - 1, ph = 2 * Pi * rng.uniform(), sz = std::sqrt(1 - cz * cz);
+        const Vec3 o{sz * std::cos(ph), sz * std::sin(ph), cz};
+        double w0 = 0, w1 = 0, w2 = 0;
+        tree_coordinates(d, o, w0, w1, w2);
+        const double expected_f = ((o.z > 0) == front ? t : r)(u0, cell_centre(w1), cell_centre(w2));
+        EXPECT_NEAR(m.eval(in, frame.world(o), Normal).x, expected_f, 1e-6) << label << " " << q;
+      }
       // Quadrature through eval(): a 64 x 64 midpoint rule over the square of each
       // hemisphere (exact for cells of 1/8: every midpoint is inside one cell).
       double quad_t = 0, quad_a = 0;
@@ -238,6 +249,13 @@ TEST(TensorTreeBsdf, RedirectingFilmSendsLightWhereTheClosedFormSays) {
                         std::cos(theta_i - delta)};
       const double a = m.albedo(in, Normal).x;
       EXPECT_NEAR(a, 0.8 + 0.05, 1e-6);
+      {  // eval at the target cell's centre (o* itself lies on a cell edge: y = 0)
+        double cx = 0, cy = 0;
+        shirley_chiu_square_to_disc((std::floor(t1 * n) + 0.5) * s, (std::floor(t2 * n) + 0.5) * s, cx, cy);
+        const Vec3 centre{cx * std::cos(phi) - cy * std::sin(phi), cx * std::sin(phi) + cy * std::cos(phi),
+                          std::sqrt(1 - cx * cx - cy * cy)};
+        EXPECT_NEAR(m.eval(in, frame.world(centre), Normal).x, 0.8 / (Pi * s * s), 1e-3) << k << " " << phi_deg;
+      }
       const int samples = 4000;
       int transmitted = 0;
       double theta_sum = 0;
