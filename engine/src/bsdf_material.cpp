@@ -110,7 +110,13 @@ std::shared_ptr<const MaterialParameters> parse_bsdf(MaterialKeyReader& r, const
   try {
     p->data = read_bsdf_xml(path, path, r.location_of("file"));
   } catch (const InputError& e) {
-    for (const Diagnostic& d : e.diagnostics()) r.error(d.location, d.message);
+    // Errors inside the XML file carry its own lines; a missing file is at the `file` key.
+    for (const Diagnostic& d : e.diagnostics()) {
+      if (d.source_line.empty())
+        r.error(d.location, d.message);
+      else
+        r.forward(d);
+    }
     return nullptr;
   }
   return p;
