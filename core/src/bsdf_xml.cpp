@@ -219,6 +219,28 @@ void read_values(Reader& r, const pugi::xml_node& data, int n, bool rows_are_inc
 const char* const DirectionNames[] = {"Transmission Front", "Transmission Back", "Reflection Front",
                                       "Reflection Back"};
 
+// The index in DirectionNames of a <WavelengthDataBlock>'s direction, recorded in `found`; -1
+// (after a located error) for an unknown direction or a second block of one.
+int block_direction(Reader& r, const pugi::xml_node& block, pugi::xml_node found[4]) {
+  const std::string direction = r.required_text(block, "WavelengthDataDirection");
+  int k = -1;
+  for (int d = 0; d < 4; ++d)
+    if (lower(direction) == lower(DirectionNames[d])) k = d;
+  if (k < 0) {
+    r.error(child(block, "WavelengthDataDirection"),
+            "unknown <WavelengthDataDirection> '" + direction +
+                "' (expected Transmission Front, Transmission Back, Reflection Front or Reflection Back)");
+    return -1;
+  }
+  if (found[k]) {
+    r.error(block, "a second '" + std::string(DirectionNames[k]) + "' block (the first is at line " +
+                       std::to_string(r.at(found[k]).line) + ")");
+    return -1;
+  }
+  found[k] = block;
+  return k;
+}
+
 // The projection of a tensor tree onto the Klems Full basis (klems_bsdf_data.h): incoming
 // patch i at its centre direction; each slice cell split into n x n sub-squares, n =
 // ceil(ProjectionSplit size) (none wider than 1/ProjectionSplit), each sub-square's share
@@ -271,22 +293,8 @@ std::shared_ptr<const KlemsBsdfData> read_tensor_tree(Reader& r, const pugi::xml
     if (lower(r.required_text(wavelength, "Wavelength")) != "visible") continue;  // Solar, NIR, CIE-X/Z
     any_visible = true;
     for (const pugi::xml_node& block : children(wavelength, "WavelengthDataBlock")) {
-      const std::string direction = r.required_text(block, "WavelengthDataDirection");
-      int k = -1;
-      for (int d = 0; d < 4; ++d)
-        if (lower(direction) == lower(DirectionNames[d])) k = d;
-      if (k < 0) {
-        r.error(child(block, "WavelengthDataDirection"),
-                "unknown <WavelengthDataDirection> '" + direction +
-                    "' (expected Transmission Front, Transmission Back, Reflection Front or Reflection Back)");
-        continue;
-      }
-      if (found[k]) {
-        r.error(block, "a second '" + std::string(DirectionNames[k]) + "' block (the first is at line " +
-                           std::to_string(r.at(found[k]).line) + ")");
-        continue;
-      }
-      found[k] = block;
+      const int k = block_direction(r, block, found);
+      if (k < 0) continue;
       const pugi::xml_node basis = child(block, "AngleBasis");
       if (!basis) r.fail(block, "<WavelengthDataBlock> of a tensor tree has no <AngleBasis> (LBNL/Shirley-Chiu)");
       if (lower(trimmed(basis.child_value())) != "lbnl/shirley-chiu")
@@ -418,8 +426,6 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
   data->file = shown_as;
   data->content_sha256 = sha256_hex(r.text());
   data->device_type = trimmed(child(child(layer, "Material"), "DeviceType").child_value());
-  const char* const direction_names[] = {"Transmission Front", "Transmission Back", "Reflection Front",
-                                         "Reflection Back"};
   std::vector<double>* matrices[] = {&data->transmission_front, &data->transmission_back, &data->reflection_front,
                                      &data->reflection_back};
   pugi::xml_node found[4];
@@ -431,22 +437,8 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
                                         std::to_string(r.at(visible).line) + ")");
     visible = wavelength;
     for (const pugi::xml_node& block : children(wavelength, "WavelengthDataBlock")) {
-      const std::string direction = r.required_text(block, "WavelengthDataDirection");
-      int k = -1;
-      for (int d = 0; d < 4; ++d)
-        if (lower(direction) == lower(direction_names[d])) k = d;
-      if (k < 0) {
-        r.error(child(block, "WavelengthDataDirection"),
-                "unknown <WavelengthDataDirection> '" + direction +
-                    "' (expected Transmission Front, Transmission Back, Reflection Front or Reflection Back)");
-        continue;
-      }
-      if (found[k]) {
-        r.error(block, "a second '" + std::string(direction_names[k]) + "' block (the first is at line " +
-                           std::to_string(r.at(found[k]).line) + ")");
-        continue;
-      }
-      found[k] = block;
+      const int k = block_direction(r, block, found);
+      if (k < 0) continue;
       const std::string column_basis = r.required_text(block, "ColumnAngleBasis");
       const std::string row_basis = r.required_text(block, "RowAngleBasis");
       const auto column_it = bases.find(lower(column_basis));
@@ -464,7 +456,7 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
       if (type != (transmission ? "btdf" : "brdf"))
         r.error(child(block, "ScatteringDataType"),
                 "<ScatteringDataType> '" + r.required_text(block, "ScatteringDataType") + "' for '" +
-                    direction_names[k] + "' (expected " + (transmission ? "BTDF" : "BRDF") + ")");
+                    DirectionNames[k] + "' (expected " + (transmission ? "BTDF" : "BRDF") + ")");
       const pugi::xml_node scattering = child(block, "ScatteringData");
       if (!scattering) r.fail(block, "<WavelengthDataBlock> has no <ScatteringData>");
       read_values(r, scattering, basis_used->size(), rows_are_incoming, *matrices[k]);
@@ -472,7 +464,7 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
   }
   if (!visible) r.fail(layer, "<Layer> has no Visible <WavelengthData> (dayphoton uses the visible BSDF)");
   for (int k = 0; k < 4; ++k)
-    if (!found[k]) r.error(visible, "the Visible data has no '" + std::string(direction_names[k]) + "' block");
+    if (!found[k]) r.error(visible, "the Visible data has no '" + std::string(DirectionNames[k]) + "' block");
   r.diagnostics().throw_if_errors();
   data->basis = *basis_used;
 
