@@ -1,4 +1,4 @@
-// Test helper: the text of a TensorTree3 BSDF XML file (the layout of RADIANCE's bsdf2ttree
+// Test helper: the text of a TensorTree3 (or TensorTree4) BSDF XML file (the layout of RADIANCE's bsdf2ttree
 // output: DataDefinition/IncidentDataStructure, one Visible WavelengthData, each block's
 // <AngleBasis>LBNL/Shirley-Chiu</AngleBasis> and its tree in <ScatteringData>), from the four
 // trees' texts, and a leaf grid sampling a function of the tree's coordinates (u0, u1, u2)
@@ -27,6 +27,25 @@ inline std::string tensor_tree_leaf(int log2, const std::function<double(double,
       }
       x << "\n";
     }
+  x << "}";
+  return x.str();
+}
+
+/// A single TensorTree4 leaf of 2^(4 log2) values: f at the centre of each cell.
+inline std::string tensor_tree_leaf4(int log2, const std::function<double(double, double, double, double)>& f) {
+  const int n = 1 << log2;
+  std::ostringstream x;
+  x << "{\n";
+  char buf[32];
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b)
+      for (int c = 0; c < n; ++c) {
+        for (int d = 0; d < n; ++d) {
+          std::snprintf(buf, sizeof buf, "%.9g ", f((a + 0.5) / n, (b + 0.5) / n, (c + 0.5) / n, (d + 0.5) / n));
+          x << buf;
+        }
+        x << "\n";
+      }
   x << "}";
   return x.str();
 }

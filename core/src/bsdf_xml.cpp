@@ -22,6 +22,7 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/core/sha256.h"
+#include "dayphoton/core/shirley_chiu.h"
 #include "dayphoton/core/tensor_tree.h"
 #include "dayphoton/core/units.h"
 
@@ -272,7 +273,7 @@ void project_on_klems(const TensorTreeBsdfData& tt, KlemsBsdfData& d) {
         if (weight == 0) continue;
         for (int a = 0; a < split; ++a)
           for (int b = 0; b < split; ++b) {
-            const Vec3 out = TensorTreeBsdfData::outgoing_direction(in, cell.u + (a + 0.5) * step,
+            const Vec3 out = tt.outgoing_direction(in, cell.u + (a + 0.5) * step,
                                                                     cell.v + (b + 0.5) * step, 1.0);
             m[static_cast<std::size_t>(i) * static_cast<std::size_t>(n) + static_cast<std::size_t>(d.basis.patch(out))] +=
                 weight;
@@ -283,9 +284,12 @@ void project_on_klems(const TensorTreeBsdfData& tt, KlemsBsdfData& d) {
     for (std::size_t k = 0; k < nn; ++k) (*m)[k] /= d.basis.projected_solid_angle(static_cast<int>(k % static_cast<std::size_t>(n)));
 }
 
-// A TensorTree3 layer (tensor_tree_bsdf_data.h; docs/materials.md "Tensor-tree BSDF").
-std::shared_ptr<const KlemsBsdfData> read_tensor_tree(Reader& r, const pugi::xml_node& layer, const std::string& shown_as) {
+// A TensorTree3 or TensorTree4 layer (tensor_tree_bsdf_data.h; docs/materials.md
+// "Tensor-tree BSDF").
+std::shared_ptr<const KlemsBsdfData> read_tensor_tree(Reader& r, const pugi::xml_node& layer, const std::string& shown_as,
+                                                      int ndim) {
   auto tt = std::make_shared<TensorTreeBsdfData>();
+  tt->ndim = ndim;
   pugi::xml_node found[4];
   bool any_visible = false;
   // RADIANCE's bsdf2ttree writes each block in a Visible <WavelengthData> of its own.
@@ -299,7 +303,7 @@ std::shared_ptr<const KlemsBsdfData> read_tensor_tree(Reader& r, const pugi::xml
       if (!basis) r.fail(block, "<WavelengthDataBlock> of a tensor tree has no <AngleBasis> (LBNL/Shirley-Chiu)");
       if (lower(trimmed(basis.child_value())) != "lbnl/shirley-chiu")
         r.fail(basis, "unknown tensor-tree angle basis '" + trimmed(basis.child_value()) +
-                          "' (a TensorTree3 block has 'LBNL/Shirley-Chiu')");
+                          "' (a tensor-tree block has 'LBNL/Shirley-Chiu')");
       // <ScatteringDataType> is not checked: bsdf2ttree writes BTDF on reflection blocks too,
       // and RADIANCE's bsdf_t.c does not read it.
       const pugi::xml_node scattering = child(block, "ScatteringData");
@@ -308,7 +312,7 @@ std::shared_ptr<const KlemsBsdfData> read_tensor_tree(Reader& r, const pugi::xml
       if (!text_node || (text_node.type() != pugi::node_pcdata && text_node.type() != pugi::node_cdata))
         r.fail(scattering, "<ScatteringData> holds no tensor tree");
       try {
-        tt->trees[k] = parse_tensor_tree(text_node.value(), 3);
+        tt->trees[k] = parse_tensor_tree(text_node.value(), ndim);
       } catch (const TensorTreeError& e) {
         r.error(r.at_offset(text_node.offset_debug() + static_cast<std::ptrdiff_t>(e.offset)),
                 std::string(DirectionNames[k]) + ": " + e.message);
@@ -335,11 +339,19 @@ std::shared_ptr<const KlemsBsdfData> read_tensor_tree(Reader& r, const pugi::xml
         if (worst == slices.size() || slices[k].albedo > slices[worst].albedo) worst = k;
       }
     if (worst < slices.size()) {
-      const double u0 = tt->slice_coordinate(side, static_cast<int>(worst));
-      const double theta_deg = rad_to_deg(std::asin(std::min(1.0, 1.0 - 2.0 * u0)));
+      double incident[2] = {0, 0};
+      tt->slice_incident(side, static_cast<int>(worst), incident);
       std::ostringstream msg;
-      msg << (side == 0 ? "front" : "back") << " incidence at theta " << format_number(theta_deg)
-          << " degrees (incident cell " << worst + 1 << " of " << slices.size()
+      msg << (side == 0 ? "front" : "back") << " incidence at theta ";
+      if (ndim == 3) {
+        msg << format_number(rad_to_deg(std::asin(std::min(1.0, 1.0 - 2.0 * incident[0]))));
+      } else {
+        double x = 0, y = 0;
+        shirley_chiu_square_to_disc(incident[0], incident[1], x, y);
+        msg << format_number(rad_to_deg(std::asin(std::min(1.0, std::hypot(x, y))))) << ", phi "
+            << format_number(rad_to_deg(std::atan2(y, x)));
+      }
+      msg << " degrees (incident cell " << worst + 1 << " of " << slices.size()
           << "): hemispherical T + R = " << format_number(slices[worst].albedo) << " (T "
           << format_number(slices[worst].transmittance) << ", R "
           << format_number(slices[worst].albedo - slices[worst].transmittance) << ") exceeds 1 + "
@@ -406,14 +418,11 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
     rows_are_incoming = false;
   else if (layout == "rows")
     rows_are_incoming = true;
-  else if (layout == "tensortree3")
-    return read_tensor_tree(r, layer, shown_as);
-  else if (layout == "tensortree4")
-    r.fail(structure, "anisotropic tensor-tree BSDFs ('" + trimmed(structure.child_value()) +
-                          "') are not supported yet; TensorTree3 (isotropic) and Klems matrix BSDFs are");
+  else if (layout == "tensortree3" || layout == "tensortree4")
+    return read_tensor_tree(r, layer, shown_as, layout == "tensortree3" ? 3 : 4);
   else
     r.fail(structure, "<IncidentDataStructure> '" + trimmed(structure.child_value()) +
-                          "' is not 'Columns', 'Rows' or 'TensorTree3'");
+                          "' is not 'Columns', 'Rows', 'TensorTree3' or 'TensorTree4'");
 
   std::map<std::string, std::pair<KlemsBasis, pugi::xml_node>> bases;
   for (const pugi::xml_node& basis : children(definition, "AngleBasis")) {

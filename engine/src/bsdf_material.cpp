@@ -137,12 +137,12 @@ std::string bsdf_summary(const MaterialSpec& spec) {
   char text[200];
   if (d.tensor_tree) {
     const TensorTreeBsdfData& t = *d.tensor_tree;
-    const TensorTreeBsdfData::Slice& f = t.slices[0].back();  // the normal-incidence cell
-    const TensorTreeBsdfData::Slice& b = t.slices[1].back();
+    const TensorTreeBsdfData::Slice& f = t.slices[0][static_cast<std::size_t>(t.slice_of(0, {0, 0, 1}))];
+    const TensorTreeBsdfData::Slice& b = t.slices[1][static_cast<std::size_t>(t.slice_of(1, {0, 0, -1}))];
     std::snprintf(text, sizeof text,
-                  "tensor-tree BSDF (TensorTree3, cells down to 1/%d), normal incidence front T %.3f R %.3f, back T "
+                  "tensor-tree BSDF (TensorTree%d, cells down to 1/%d), normal incidence front T %.3f R %.3f, back T "
                   "%.3f R %.3f",
-                  1 << std::max({t.trees[0].max_log2, t.trees[1].max_log2, t.trees[2].max_log2, t.trees[3].max_log2}),
+                  t.ndim, 1 << std::max({t.trees[0].max_log2, t.trees[1].max_log2, t.trees[2].max_log2, t.trees[3].max_log2}),
                   f.transmittance, f.albedo - f.transmittance, b.transmittance, b.albedo - b.transmittance);
     return std::string(text) + ", " + d.file;
   }

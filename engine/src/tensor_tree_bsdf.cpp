@@ -35,7 +35,7 @@ std::optional<KlemsBsdf::Sample> TensorTreeBsdf::sample(const Vec3& incoming, co
   const bool transmitted = k < s->transmitted;
   // Transmitted light keeps the z sign of its propagation, reflected light reverses it.
   const double z_sign = (d.z > 0) == transmitted ? 1.0 : -1.0;
-  const Vec3 local = TensorTreeBsdfData::outgoing_direction(d, cell.u + u1 * cell.size, cell.v + u2 * cell.size, z_sign);
+  const Vec3 local = m_tree->outgoing_direction(d, cell.u + u1 * cell.size, cell.v + u2 * cell.size, z_sign);
   return KlemsBsdf::Sample{normalize(f.to_world(local)), s->albedo, transmitted};
 }
 

@@ -141,9 +141,10 @@ TEST(BsdfXml, TooMuchLightIsLocatedAtTheSidesTransmissionBlock) {
 TEST(BsdfXml, StructuralErrorsAreLocated) {
   const std::string good = test::bsdf_xml(distinct_values());
   {
-    const std::string text = replace_first(good, ">Columns<", ">TensorTree4<");
+    const std::string text = replace_first(good, ">Columns<", ">TensorTree5<");
     EXPECT_NE(read_error(text).find("bad.xml:" + where(text, "<IncidentDataStructure>") +
-                                    ": error: anisotropic tensor-tree BSDFs ('TensorTree4') are not supported yet"),
+                                    ": error: <IncidentDataStructure> 'TensorTree5' is not 'Columns', 'Rows', "
+                                    "'TensorTree3' or 'TensorTree4'"),
               std::string::npos)
         << read_error(text);
   }

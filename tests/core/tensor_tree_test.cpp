@@ -208,10 +208,12 @@ TEST(TensorTree, MalformedTreesAreLocated) {
               std::string::npos)
         << read_error(text);
   }
-  {  // TensorTree4: refused, located
-    const std::string text = test::tensor_tree_xml({Constant, Constant, Constant, Constant}, "LBNL/Shirley-Chiu", "TensorTree4");
-    EXPECT_NE(read_error(text).find("tt.xml:" + where(text, "<IncidentDataStructure>") +
-                                    ": error: anisotropic tensor-tree BSDFs ('TensorTree4') are not supported yet"),
+  {  // TensorTree4: a leaf of 8 values (a TensorTree3 leaf) is a wrong count there
+    const std::string text = test::tensor_tree_xml({"{ 0 1 2 3 4 5 6 7 }", Constant, Constant, Constant},
+                                                   "LBNL/Shirley-Chiu", "TensorTree4");
+    EXPECT_NE(read_error(text).find("tt.xml:" + where(text, "{ 0 1 2") +
+                                    ": error: Transmission Front: a tensor-tree leaf has 8 values; a leaf has 2^(4 k) "
+                                    "values (1, 16, 256 ...)"),
               std::string::npos)
         << read_error(text);
   }

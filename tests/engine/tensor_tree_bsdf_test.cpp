@@ -35,8 +35,9 @@ struct Local : engine::test::UpLocalFrame {
   explicit Local(const Vec3& n) : UpLocalFrame(Up, n) {}
 };
 
-Material tree_material(const std::array<std::string, 4>& trees) {
-  return Material::from_spec(bsdf_material_spec("tt", read_bsdf_xml_text(dayphoton::test::tensor_tree_xml(trees), "tt.xml"), Up));
+Material tree_material(const std::array<std::string, 4>& trees, const std::string& structure = "TensorTree3") {
+  return Material::from_spec(bsdf_material_spec(
+      "tt", read_bsdf_xml_text(dayphoton::test::tensor_tree_xml(trees, "LBNL/Shirley-Chiu", structure), "tt.xml"), Up));
 }
 
 std::string constant(double f) { return "{ " + dayphoton::test::bsdf_xml_number(f) + " }"; }
@@ -327,4 +328,88 @@ TEST(TensorTreeBsdf, KlemsAndTreeAgreeOnHemisphericalTransmittanceWithinTheirRes
     }
   // The bounds are the bases' resolutions: the tree's (1/32 cells) is the finer.
   EXPECT_LT(tree_bound, klems_bound);
+}
+
+namespace {
+// An anisotropic tree: one TensorTree4 leaf of 4^4 cells per transmission block.
+double tf4(double u0, double u1, double u2, double u3) { return (0.1 + 0.4 * u0 * u2 + 0.2 * u1 * (1 - u3)) / Pi; }
+double rf4(double, double, double, double u3) { return (0.05 + 0.1 * u3) / Pi; }
+double tb4(double, double u1, double u2, double) { return (0.2 + 0.2 * u1 * u2) / Pi; }
+double quarter_centre(double u) { return (std::floor(std::min(u, 1 - 1e-12) * 4) + 0.5) / 4; }
+}  // namespace
+
+TEST(TensorTreeBsdf, AnisotropicTreeFollowsItsClosedFormAtEveryAzimuth) {
+  // TensorTree4 (RADIANCE bsdf_t.c SDqueryTre, ndim 4): (u0, u1) the Shirley-Chiu square of
+  // the incoming propagation direction's (x, y), (u2, u3) the outgoing direction's, no
+  // azimuth fold. Computed here from that definition: albedo() is the sum over the 16
+  // outgoing cells of f pi / 16 at the incident cell's centre (different per azimuth), eval()
+  // the closed form at scattered directions, samples weigh A and fill the 32 cells
+  // (transmitted, reflected) by chi-square.
+  using dayphoton::test::tensor_tree_leaf4;
+  const Material m = tree_material({tensor_tree_leaf4(2, tf4), tensor_tree_leaf4(2, tb4), tensor_tree_leaf4(2, rf4),
+                                    constant(0.05 / Pi)},
+                                   "TensorTree4");
+  const Local frame(Normal);
+  const int samples = 20000;
+  std::uint64_t case_index = 0;
+  std::vector<double> albedos;
+  for (double theta : {20.0, 55.0})
+    for (double phi : {10.0, 100.0, 190.0, 280.0})
+      for (bool back : {false, true}) {
+        const Vec3 in = engine::test::incident_direction(Normal, theta, phi, back);
+        const std::string label = "theta " + std::to_string(int(theta)) + " phi " + std::to_string(int(phi)) + (back ? " back" : " front");
+        const Vec3 d = frame.to_local(in);
+        const bool front = d.z > 0;
+        double a0 = 0, a1 = 0;
+        shirley_chiu_disc_to_square(d.x, d.y, a0, a1);
+        a0 = quarter_centre(a0);
+        a1 = quarter_centre(a1);
+        auto f = [&](bool transmitted, double u2, double u3) {
+          if (front) return transmitted ? tf4(a0, a1, u2, u3) : rf4(a0, a1, u2, u3);
+          return transmitted ? tb4(a0, a1, u2, u3) : 0.05 / Pi;
+        };
+        std::vector<double> expected(32);
+        double a = 0;
+        for (int c = 0; c < 32; ++c) {
+          expected[static_cast<std::size_t>(c)] = f(c < 16, ((c % 16) / 4 + 0.5) / 4, (c % 4 + 0.5) / 4) * Pi / 16;
+          a += expected[static_cast<std::size_t>(c)];
+        }
+        EXPECT_NEAR(m.albedo(in, Normal).x, a, 1e-6) << label;
+        albedos.push_back(a);
+        for (int q = 0; q < 100; ++q) {
+          Rng rng(17, case_index, static_cast<std::uint64_t>(q), RandomStream::Scattering);
+          const double cz = 2 * rng.uniform() - 1, ph = 2 * Pi * rng.uniform(), sz = std::sqrt(1 - cz * cz);
+          const Vec3 o{sz * std::cos(ph), sz * std::sin(ph), cz};
+          double u2 = 0, u3 = 0;
+          shirley_chiu_disc_to_square(o.x, o.y, u2, u3);
+          EXPECT_NEAR(m.eval(in, frame.world(o), Normal).x, f((o.z > 0) == front, quarter_centre(u2), quarter_centre(u3)), 1e-6)
+              << label << " " << q;
+        }
+        std::vector<double> counts(32, 0.0);
+        for (int k = 0; k < samples; ++k) {
+          Rng rng(19, case_index, static_cast<std::uint64_t>(k), RandomStream::Scattering);
+          const double v0 = rng.uniform(), v1 = rng.uniform(), v2 = rng.uniform();
+          const std::optional<ScatterSample> s = m.sample(in, Normal, v0, v1, v2);
+          ASSERT_TRUE(s);
+          const double pdf = m.pdf(in, s->direction, Normal);
+          ASSERT_GT(pdf, 0) << label;
+          ASSERT_NEAR(s->weight.x, m.eval(in, s->direction, Normal).x * std::fabs(dot(s->direction, Normal)) / pdf,
+                      1e-9 * s->weight.x);
+          ASSERT_NEAR(s->weight.x, a, 1e-6) << label;
+          const Vec3 o = frame.to_local(s->direction);
+          double u2 = 0, u3 = 0;
+          shirley_chiu_disc_to_square(o.x, o.y, u2, u3);
+          const int c = std::min(3, int(u2 * 4)) * 4 + std::min(3, int(u3 * 4));
+          counts[static_cast<std::size_t>(s->type == ScatterType::GlossyTransmission ? c : 16 + c)] += 1;
+        }
+        double chi2 = 0;
+        for (std::size_t c = 0; c < 32; ++c) {
+          const double e = samples * expected[c] / a;
+          chi2 += (counts[c] - e) * (counts[c] - e) / e;
+        }
+        EXPECT_GT(engine::test::chi2_p_value(chi2, 31), 1e-3) << label << " chi2 " << chi2;
+        ++case_index;
+      }
+  // Anisotropic: the front albedo differs between azimuths (the closed form says by how much).
+  EXPECT_GT(std::fabs(albedos[0] - albedos[4]), 0.01);
 }
