@@ -1,5 +1,5 @@
 // Fuzz harness: the BSDF XML reader (read_bsdf_xml_text: LBNL WINDOW / IGSDB Klems files and
-// TensorTree3 files) on arbitrary bytes. Contract under test (core/bsdf_xml.h): any input
+// TensorTree3/4 files) on arbitrary bytes. Contract under test (core/bsdf_xml.h): any input
 // either reads, with every value finite and >= 0 and every incoming patch's (or incident
 // cell's) T + R within the tolerance, or throws InputError; nothing else escapes, and the
 // sanitizers see no memory or undefined-behaviour error (a tree's depth, size and tables are

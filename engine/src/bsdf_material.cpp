@@ -1,5 +1,5 @@
-// Measured BSDF (type `bsdf`): scattering by a Klems BSDF matrix or an isotropic tensor tree
-// (TensorTree3) read from an LBNL WINDOW / IGSDB / RADIANCE BSDF XML file (core/bsdf_xml.h),
+// Measured BSDF (type `bsdf`): scattering by a Klems BSDF matrix or a tensor tree
+// (TensorTree3 or TensorTree4) read from an LBNL WINDOW / IGSDB / RADIANCE BSDF XML file (core/bsdf_xml.h),
 // through KlemsBsdf (klems_bsdf.h) or TensorTreeBsdf (tensor_tree_bsdf.h). Parameters:
 //   file  the XML file, relative to the project file's folder (required)
 //   up    the BSDF's up vector in world coordinates, default [0, 0, 1]
@@ -175,13 +175,13 @@ const BsdfMaterialParameters* bsdf_parameters(const MaterialSpec& spec) {
 MaterialModelEntry bsdf_material_entry() {
   MaterialModelEntry e;
   e.type_name = BsdfMaterialType;
-  e.help = "measured BSDF: a Klems matrix or a TensorTree3 tensor tree from a BSDF XML file (docs/materials.md)";
+  e.help = "measured BSDF: a Klems matrix or a tensor tree (TensorTree3/4) from a BSDF XML file (docs/materials.md)";
   e.make = &make_bsdf;
   e.takes_transmittance_factor = true;
   MaterialParameterSchema file;
   file.key = "file";
   file.kind = MaterialParameterSchema::Kind::Path;
-  file.help = "the BSDF XML file (Klems basis or TensorTree3), relative to the project file";
+  file.help = "the BSDF XML file (Klems basis or TensorTree3/4), relative to the project file";
   file.required = true;
   MaterialParameterSchema up;
   up.key = "up";

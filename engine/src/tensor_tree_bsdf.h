@@ -1,4 +1,4 @@
-// TensorTreeBsdf: scattering by an isotropic tensor-tree BSDF (core/tensor_tree_bsdf_data.h;
+// TensorTreeBsdf: scattering by a tensor-tree BSDF (TensorTree3 or 4; core/tensor_tree_bsdf_data.h;
 // docs/materials.md "Tensor-tree BSDF"), with KlemsBsdf's interface and frame (klems_bsdf.h,
 // bsdf_frame.h UpFrame), so the `bsdf` material uses either.
 //
@@ -7,7 +7,7 @@
 // cell with probability f_c pi s_c^2 / A, A = sum_c f_c pi s_c^2 (the directional albedo,
 // transmitted and reflected cells together), then a point uniform in the cell's square,
 // mapped to the disc by Shirley-Chiu (area preserving, so uniform in projected solid angle
-// over the cell's pre-image) and turned back by the incident azimuth. Its density per
+// over the cell's pre-image) and (TensorTree3) turned back by the incident azimuth. Its density per
 // steradian is therefore p(o) = f(d, o) |cos o| / A and every sample weighs A, exactly as for
 // a Klems matrix; eval() is the tree's f at the slice, pdf() = eval |cos| / A.
 #pragma once

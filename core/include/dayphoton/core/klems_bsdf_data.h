@@ -21,7 +21,7 @@
 // value finite and >= 0, and sum_j (T + R)(i, j) Lambda_j <= 1 + BsdfAlbedoTolerance per
 // incoming patch and side.
 //
-// Tensor trees: a TensorTree3 file (core/tensor_tree_bsdf_data.h) is read into this same
+// Tensor trees: a TensorTree3/4 file (core/tensor_tree_bsdf_data.h) is read into this same
 // struct with `tensor_tree` set. The BSDF is then the tree (the engine evaluates and samples
 // it); the matrices hold its projection onto the LBNL/Klems Full basis for the summaries that
 // read matrices (core/bsdf_xml.cpp project_on_klems): each incoming patch at its centre
