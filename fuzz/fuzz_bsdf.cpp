@@ -30,7 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           if (!(slice.albedo <= 1.0 + dayphoton::BsdfAlbedoTolerance) || !(slice.transmittance >= 0)) std::abort();
         }
       for (const auto& tree : tt->trees) {
-        const double pos[3] = {0.3, 0.999, 0.0};
+        const double pos[4] = {0.3, 0.999, 0.0, 0.5};  // ndim (3 or 4) coordinates
         if (!(tree.lookup(pos) >= 0)) std::abort();
       }
     }
