@@ -1,8 +1,9 @@
-// Fuzz harness: the BSDF XML reader (read_bsdf_xml_text: LBNL WINDOW / IGSDB Klems files) on
-// arbitrary bytes. Contract under test (core/bsdf_xml.h): any input either reads, with every
-// value finite and >= 0 and every incoming patch's T + R within the tolerance, or throws
-// InputError; nothing else escapes, and the sanitizers see no memory or undefined-behaviour
-// error. docs/fuzzing.md.
+// Fuzz harness: the BSDF XML reader (read_bsdf_xml_text: LBNL WINDOW / IGSDB Klems files and
+// TensorTree3/4 files) on arbitrary bytes. Contract under test (core/bsdf_xml.h): any input
+// either reads, with every value finite and >= 0 and every incoming patch's (or incident
+// cell's) T + R within the tolerance, or throws InputError; nothing else escapes, and the
+// sanitizers see no memory or undefined-behaviour error (a tree's depth, size and tables are
+// bounded before anything is allocated). docs/fuzzing.md.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -21,6 +22,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (m->size() != n * n) std::abort();
       for (double v : *m)
         if (!(v >= 0) || !std::isfinite(v)) std::abort();
+    }
+    if (const auto& tt = bsdf->tensor_tree) {
+      for (const auto& side : tt->slices)
+        for (const auto& slice : side) {
+          if (slice.cells.empty() || slice.cumulative.size() != slice.cells.size()) std::abort();
+          if (!(slice.albedo <= 1.0 + dayphoton::BsdfAlbedoTolerance) || !(slice.transmittance >= 0)) std::abort();
+        }
+      for (const auto& tree : tt->trees) {
+        const double pos[4] = {0.3, 0.999, 0.0, 0.5};  // ndim (3 or 4) coordinates
+        if (!(tree.lookup(pos) >= 0)) std::abort();
+      }
     }
   } catch (const dayphoton::InputError& error) {
     (void)error.what();

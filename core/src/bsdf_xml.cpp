@@ -22,6 +22,8 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/input_file.h"
 #include "dayphoton/core/sha256.h"
+#include "dayphoton/core/shirley_chiu.h"
+#include "dayphoton/core/tensor_tree.h"
 #include "dayphoton/core/units.h"
 
 namespace dayphoton {
@@ -215,6 +217,159 @@ void read_values(Reader& r, const pugi::xml_node& data, int n, bool rows_are_inc
   }
 }
 
+const char* const DirectionNames[] = {"Transmission Front", "Transmission Back", "Reflection Front",
+                                      "Reflection Back"};
+
+// The index in DirectionNames of a <WavelengthDataBlock>'s direction, recorded in `found`; -1
+// (after a located error) for an unknown direction or a second block of one.
+int block_direction(Reader& r, const pugi::xml_node& block, pugi::xml_node found[4]) {
+  const std::string direction = r.required_text(block, "WavelengthDataDirection");
+  int k = -1;
+  for (int d = 0; d < 4; ++d)
+    if (lower(direction) == lower(DirectionNames[d])) k = d;
+  if (k < 0) {
+    r.error(child(block, "WavelengthDataDirection"),
+            "unknown <WavelengthDataDirection> '" + direction +
+                "' (expected Transmission Front, Transmission Back, Reflection Front or Reflection Back)");
+    return -1;
+  }
+  if (found[k]) {
+    r.error(block, "a second '" + std::string(DirectionNames[k]) + "' block (the first is at line " +
+                       std::to_string(r.at(found[k]).line) + ")");
+    return -1;
+  }
+  found[k] = block;
+  return k;
+}
+
+// The projection of a tensor tree onto the Klems Full basis (klems_bsdf_data.h): incoming
+// patch i at its centre direction; each slice cell split into n x n sub-squares, n =
+// ceil(ProjectionSplit size) (none wider than 1/ProjectionSplit), each sub-square's share
+// f pi s^2 given to the Klems patch of its centre. Energy is kept exactly per incoming patch
+// (sum_j f(i, j) Lambda_j is the slice's T or R); which outgoing patch gets a sub-square
+// straddling a patch edge is decided by its centre.
+constexpr double ProjectionSplit = 64;
+void project_on_klems(const TensorTreeBsdfData& tt, KlemsBsdfData& d) {
+  d.basis = KlemsBasis::full();
+  const int n = d.basis.size();
+  const std::size_t nn = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  std::vector<double>* matrices[] = {&d.transmission_front, &d.transmission_back, &d.reflection_front,
+                                     &d.reflection_back};
+  for (auto* m : matrices) m->assign(nn, 0.0);
+  constexpr double Pi = 3.14159265358979323846;
+  for (int side = 0; side < 2; ++side)
+    for (int i = 0; i < n; ++i) {
+      const double theta = d.basis.centre_theta_rad(i), phi = d.basis.centre_phi_rad(i);
+      const Vec3 in{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                    (side == 0 ? 1.0 : -1.0) * std::cos(theta)};
+      const TensorTreeBsdfData::Slice& s = tt.slices[side][static_cast<std::size_t>(tt.slice_of(side, in))];
+      for (std::size_t c = 0; c < s.cells.size(); ++c) {
+        const TensorTreeBsdfData::Cell& cell = s.cells[c];
+        const bool transmitted = c < s.transmitted;
+        std::vector<double>& m = *matrices[(transmitted ? 0 : 2) + side];
+        const int split = std::max(1, static_cast<int>(std::ceil(ProjectionSplit * cell.size)));
+        const double step = static_cast<double>(cell.size) / split;
+        const double weight = static_cast<double>(cell.value) * Pi * step * step;
+        if (weight == 0) continue;
+        for (int a = 0; a < split; ++a)
+          for (int b = 0; b < split; ++b) {
+            const Vec3 out = tt.outgoing_direction(in, cell.u + (a + 0.5) * step,
+                                                                    cell.v + (b + 0.5) * step, 1.0);
+            m[static_cast<std::size_t>(i) * static_cast<std::size_t>(n) + static_cast<std::size_t>(d.basis.patch(out))] +=
+                weight;
+          }
+      }
+    }
+  for (auto* m : matrices)
+    for (std::size_t k = 0; k < nn; ++k) (*m)[k] /= d.basis.projected_solid_angle(static_cast<int>(k % static_cast<std::size_t>(n)));
+}
+
+// A TensorTree3 or TensorTree4 layer (tensor_tree_bsdf_data.h; docs/materials.md
+// "Tensor-tree BSDF").
+std::shared_ptr<const KlemsBsdfData> read_tensor_tree(Reader& r, const pugi::xml_node& layer, const std::string& shown_as,
+                                                      int ndim) {
+  auto tt = std::make_shared<TensorTreeBsdfData>();
+  tt->ndim = ndim;
+  pugi::xml_node found[4];
+  bool any_visible = false;
+  // RADIANCE's bsdf2ttree writes each block in a Visible <WavelengthData> of its own.
+  for (const pugi::xml_node& wavelength : children(layer, "WavelengthData")) {
+    if (lower(r.required_text(wavelength, "Wavelength")) != "visible") continue;  // Solar, NIR, CIE-X/Z
+    any_visible = true;
+    for (const pugi::xml_node& block : children(wavelength, "WavelengthDataBlock")) {
+      const int k = block_direction(r, block, found);
+      if (k < 0) continue;
+      const pugi::xml_node basis = child(block, "AngleBasis");
+      if (!basis) r.fail(block, "<WavelengthDataBlock> of a tensor tree has no <AngleBasis> (LBNL/Shirley-Chiu)");
+      if (lower(trimmed(basis.child_value())) != "lbnl/shirley-chiu")
+        r.fail(basis, "unknown tensor-tree angle basis '" + trimmed(basis.child_value()) +
+                          "' (a tensor-tree block has 'LBNL/Shirley-Chiu')");
+      // <ScatteringDataType> is not checked: bsdf2ttree writes BTDF on reflection blocks too,
+      // and RADIANCE's bsdf_t.c does not read it.
+      const pugi::xml_node scattering = child(block, "ScatteringData");
+      if (!scattering) r.fail(block, "<WavelengthDataBlock> has no <ScatteringData>");
+      const pugi::xml_node text_node = scattering.first_child();
+      if (!text_node || (text_node.type() != pugi::node_pcdata && text_node.type() != pugi::node_cdata))
+        r.fail(scattering, "<ScatteringData> holds no tensor tree");
+      try {
+        tt->trees[k] = parse_tensor_tree(text_node.value(), ndim);
+      } catch (const TensorTreeError& e) {
+        r.error(r.at_offset(text_node.offset_debug() + static_cast<std::ptrdiff_t>(e.offset)),
+                std::string(DirectionNames[k]) + ": " + e.message);
+      }
+    }
+  }
+  if (!any_visible) r.fail(layer, "<Layer> has no Visible <WavelengthData> (dayphoton uses the visible BSDF)");
+  for (int k = 0; k < 4; ++k)
+    if (!found[k]) r.error(layer, "the Visible data has no '" + std::string(DirectionNames[k]) + "' block");
+  r.diagnostics().throw_if_errors();
+  const std::size_t cells = tt->slice_cell_count();
+  if (cells > MaxTensorTreeSliceCells)
+    r.fail(layer, "the tensor trees need " + std::to_string(cells) + " cells of outgoing directions over their " +
+                      "incidences, more than the " + std::to_string(MaxTensorTreeSliceCells) + " allowed");
+  tt->build_slices();
+  // Energy: per incident cell and side, T + R <= 1 + tolerance (the worst cell per side).
+  for (int side = 0; side < 2; ++side) {
+    const std::vector<TensorTreeBsdfData::Slice>& slices = tt->slices[side];
+    std::size_t worst = slices.size();
+    int over = 0;
+    for (std::size_t k = 0; k < slices.size(); ++k)
+      if (slices[k].albedo > 1.0 + BsdfAlbedoTolerance) {
+        ++over;
+        if (worst == slices.size() || slices[k].albedo > slices[worst].albedo) worst = k;
+      }
+    if (worst < slices.size()) {
+      double incident[2] = {0, 0};
+      tt->slice_incident(side, static_cast<int>(worst), incident);
+      std::ostringstream msg;
+      msg << (side == 0 ? "front" : "back") << " incidence at theta ";
+      if (ndim == 3) {
+        msg << format_number(rad_to_deg(std::asin(std::min(1.0, 1.0 - 2.0 * incident[0]))));
+      } else {
+        double x = 0, y = 0;
+        shirley_chiu_square_to_disc(incident[0], incident[1], x, y);
+        msg << format_number(rad_to_deg(std::asin(std::min(1.0, std::hypot(x, y))))) << ", phi "
+            << format_number(rad_to_deg(std::atan2(y, x)));
+      }
+      msg << " degrees (incident cell " << worst + 1 << " of " << slices.size()
+          << "): hemispherical T + R = " << format_number(slices[worst].albedo) << " (T "
+          << format_number(slices[worst].transmittance) << ", R "
+          << format_number(slices[worst].albedo - slices[worst].transmittance) << ") exceeds 1 + "
+          << format_number(BsdfAlbedoTolerance);
+      if (over > 1) msg << "; " << over - 1 << " more incident cells exceed it too";
+      r.error(child(found[side], "ScatteringData"), msg.str());
+    }
+  }
+  r.diagnostics().throw_if_errors();
+  auto data = std::make_shared<KlemsBsdfData>();
+  data->file = shown_as;
+  data->content_sha256 = sha256_hex(r.text());
+  data->device_type = trimmed(child(child(layer, "Material"), "DeviceType").child_value());
+  project_on_klems(*tt, *data);
+  data->tensor_tree = std::move(tt);
+  return data;
+}
+
 }  // namespace
 
 std::shared_ptr<const KlemsBsdfData> read_bsdf_xml(const std::string& path, const std::string& shown_as,
@@ -263,12 +418,11 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
     rows_are_incoming = false;
   else if (layout == "rows")
     rows_are_incoming = true;
-  else if (layout.rfind("tensortree", 0) == 0)
-    r.fail(structure, "tensor-tree BSDFs ('" + trimmed(structure.child_value()) +
-                          "') are not supported; use a Klems matrix BSDF (e.g. the LBNL/Klems Full basis)");
+  else if (layout == "tensortree3" || layout == "tensortree4")
+    return read_tensor_tree(r, layer, shown_as, layout == "tensortree3" ? 3 : 4);
   else
     r.fail(structure, "<IncidentDataStructure> '" + trimmed(structure.child_value()) +
-                          "' is neither 'Columns' nor 'Rows'");
+                          "' is not 'Columns', 'Rows', 'TensorTree3' or 'TensorTree4'");
 
   std::map<std::string, std::pair<KlemsBasis, pugi::xml_node>> bases;
   for (const pugi::xml_node& basis : children(definition, "AngleBasis")) {
@@ -281,8 +435,6 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
   data->file = shown_as;
   data->content_sha256 = sha256_hex(r.text());
   data->device_type = trimmed(child(child(layer, "Material"), "DeviceType").child_value());
-  const char* const direction_names[] = {"Transmission Front", "Transmission Back", "Reflection Front",
-                                         "Reflection Back"};
   std::vector<double>* matrices[] = {&data->transmission_front, &data->transmission_back, &data->reflection_front,
                                      &data->reflection_back};
   pugi::xml_node found[4];
@@ -294,22 +446,8 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
                                         std::to_string(r.at(visible).line) + ")");
     visible = wavelength;
     for (const pugi::xml_node& block : children(wavelength, "WavelengthDataBlock")) {
-      const std::string direction = r.required_text(block, "WavelengthDataDirection");
-      int k = -1;
-      for (int d = 0; d < 4; ++d)
-        if (lower(direction) == lower(direction_names[d])) k = d;
-      if (k < 0) {
-        r.error(child(block, "WavelengthDataDirection"),
-                "unknown <WavelengthDataDirection> '" + direction +
-                    "' (expected Transmission Front, Transmission Back, Reflection Front or Reflection Back)");
-        continue;
-      }
-      if (found[k]) {
-        r.error(block, "a second '" + std::string(direction_names[k]) + "' block (the first is at line " +
-                           std::to_string(r.at(found[k]).line) + ")");
-        continue;
-      }
-      found[k] = block;
+      const int k = block_direction(r, block, found);
+      if (k < 0) continue;
       const std::string column_basis = r.required_text(block, "ColumnAngleBasis");
       const std::string row_basis = r.required_text(block, "RowAngleBasis");
       const auto column_it = bases.find(lower(column_basis));
@@ -327,7 +465,7 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
       if (type != (transmission ? "btdf" : "brdf"))
         r.error(child(block, "ScatteringDataType"),
                 "<ScatteringDataType> '" + r.required_text(block, "ScatteringDataType") + "' for '" +
-                    direction_names[k] + "' (expected " + (transmission ? "BTDF" : "BRDF") + ")");
+                    DirectionNames[k] + "' (expected " + (transmission ? "BTDF" : "BRDF") + ")");
       const pugi::xml_node scattering = child(block, "ScatteringData");
       if (!scattering) r.fail(block, "<WavelengthDataBlock> has no <ScatteringData>");
       read_values(r, scattering, basis_used->size(), rows_are_incoming, *matrices[k]);
@@ -335,7 +473,7 @@ std::shared_ptr<const KlemsBsdfData> read_bsdf_xml_text(std::string text, const 
   }
   if (!visible) r.fail(layer, "<Layer> has no Visible <WavelengthData> (dayphoton uses the visible BSDF)");
   for (int k = 0; k < 4; ++k)
-    if (!found[k]) r.error(visible, "the Visible data has no '" + std::string(direction_names[k]) + "' block");
+    if (!found[k]) r.error(visible, "the Visible data has no '" + std::string(DirectionNames[k]) + "' block");
   r.diagnostics().throw_if_errors();
   data->basis = *basis_used;
 

@@ -30,4 +30,29 @@ struct BsdfFrame {
   }
 };
 
+/// The frame of a measured BSDF (Klems or tensor tree; docs/materials.md): z along the
+/// surface normal, y along `up` projected onto the surface, x = y x z (RADIANCE's
+/// SDcompXform). Where `up` is within MinUpSine of the normal the frame is undefined (the
+/// scene refuses such a surface); any orthonormal frame then keeps the numbers finite.
+struct UpFrame {
+  /// |up x n| below this (up within 0.06 degrees of the normal) leaves the frame undefined.
+  static constexpr double MinUpSine = 1e-3;
+  Vec3 x, y, z;
+
+  UpFrame(const Vec3& up, const Vec3& normal) {
+    z = normalize(normal);
+    const Vec3 across = cross(up, z);
+    if (length(across) > MinUpSine * length(up)) {
+      x = normalize(across);
+      y = cross(z, x);
+    } else {
+      const BsdfFrame b(z);
+      x = b.tangent;
+      y = b.bitangent;
+    }
+  }
+  Vec3 to_local(const Vec3& v) const { return {dot(v, x), dot(v, y), dot(v, z)}; }
+  Vec3 to_world(const Vec3& v) const { return x * v.x + y * v.y + z * v.z; }
+};
+
 }  // namespace dayphoton::engine

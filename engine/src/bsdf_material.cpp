@@ -1,5 +1,6 @@
-// Measured BSDF (type `bsdf`): scattering by a Klems BSDF matrix read from an LBNL WINDOW /
-// IGSDB BSDF XML file (core/bsdf_xml.h), through KlemsBsdf (klems_bsdf.h). Parameters:
+// Measured BSDF (type `bsdf`): scattering by a Klems BSDF matrix or a tensor tree
+// (TensorTree3 or TensorTree4) read from an LBNL WINDOW / IGSDB / RADIANCE BSDF XML file (core/bsdf_xml.h),
+// through KlemsBsdf (klems_bsdf.h) or TensorTreeBsdf (tensor_tree_bsdf.h). Parameters:
 //   file  the XML file, relative to the project file's folder (required)
 //   up    the BSDF's up vector in world coordinates, default [0, 0, 1]
 // Example:  blind: {type: bsdf, file: blind_45deg.xml, up: [0, 0, 1]}
@@ -9,6 +10,7 @@
 // "Measured BSDF (Klems)".
 #include "dayphoton/engine/bsdf_material.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -18,9 +20,38 @@
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/engine/material_registry.h"
 #include "klems_bsdf.h"
+#include "tensor_tree_bsdf.h"
 
 namespace dayphoton::engine {
 namespace {
+
+// The measured BSDF behind the material: a Klems matrix or a tensor tree, with one interface.
+class MeasuredBsdf {
+ public:
+  MeasuredBsdf(const std::shared_ptr<const KlemsBsdfData>& data, const Vec3& up) {
+    if (data && data->tensor_tree)
+      m_tree.emplace(data, up);
+    else
+      m_klems.emplace(data, up);
+  }
+  std::optional<KlemsBsdf::Sample> sample(const Vec3& in, const Vec3& n, double u0, double u1, double u2) const {
+    return m_tree ? m_tree->sample(in, n, u0, u1, u2) : m_klems->sample(in, n, u0, u1, u2);
+  }
+  double eval(const Vec3& in, const Vec3& out, const Vec3& n) const {
+    return m_tree ? m_tree->eval(in, out, n) : m_klems->eval(in, out, n);
+  }
+  double pdf(const Vec3& in, const Vec3& out, const Vec3& n) const {
+    return m_tree ? m_tree->pdf(in, out, n) : m_klems->pdf(in, out, n);
+  }
+  double albedo(const Vec3& in, const Vec3& n) const { return m_tree ? m_tree->albedo(in, n) : m_klems->albedo(in, n); }
+  double transmittance(const Vec3& in, const Vec3& n) const {
+    return m_tree ? m_tree->transmittance(in, n) : m_klems->transmittance(in, n);
+  }
+
+ private:
+  std::optional<KlemsBsdf> m_klems;
+  std::optional<TensorTreeBsdf> m_tree;
+};
 
 class BsdfMaterial final : public MaterialModel {
  public:
@@ -52,7 +83,7 @@ class BsdfMaterial final : public MaterialModel {
   }
 
  private:
-  KlemsBsdf m_bsdf;
+  MeasuredBsdf m_bsdf;
   double m_factor;
 };
 
@@ -79,7 +110,13 @@ std::shared_ptr<const MaterialParameters> parse_bsdf(MaterialKeyReader& r, const
   try {
     p->data = read_bsdf_xml(path, path, r.location_of("file"));
   } catch (const InputError& e) {
-    for (const Diagnostic& d : e.diagnostics()) r.error(d.location, d.message);
+    // Errors inside the XML file carry its own lines; a missing file is at the `file` key.
+    for (const Diagnostic& d : e.diagnostics()) {
+      if (d.source_line.empty())
+        r.error(d.location, d.message);
+      else
+        r.forward(d);
+    }
     return nullptr;
   }
   return p;
@@ -97,7 +134,18 @@ std::string bsdf_summary(const MaterialSpec& spec) {
   const BsdfMaterialParameters* p = bsdf_parameters(spec);
   if (!p || !p->data) return "bsdf";
   const KlemsBsdfData& d = *p->data;
-  char text[160];
+  char text[200];
+  if (d.tensor_tree) {
+    const TensorTreeBsdfData& t = *d.tensor_tree;
+    const TensorTreeBsdfData::Slice& f = t.slices[0][static_cast<std::size_t>(t.slice_of(0, {0, 0, 1}))];
+    const TensorTreeBsdfData::Slice& b = t.slices[1][static_cast<std::size_t>(t.slice_of(1, {0, 0, -1}))];
+    std::snprintf(text, sizeof text,
+                  "tensor-tree BSDF (TensorTree%d, cells down to 1/%d), normal incidence front T %.3f R %.3f, back T "
+                  "%.3f R %.3f",
+                  t.ndim, 1 << std::max({t.trees[0].max_log2, t.trees[1].max_log2, t.trees[2].max_log2, t.trees[3].max_log2}),
+                  f.transmittance, f.albedo - f.transmittance, b.transmittance, b.albedo - b.transmittance);
+    return std::string(text) + ", " + d.file;
+  }
   std::snprintf(text, sizeof text, "Klems BSDF %d x %d, normal incidence front T %.3f R %.3f, back T %.3f R %.3f",
                 d.basis.size(), d.basis.size(), d.hemispherical(d.transmission_front, 0),
                 d.hemispherical(d.reflection_front, 0), d.hemispherical(d.transmission_back, 0),
@@ -127,13 +175,13 @@ const BsdfMaterialParameters* bsdf_parameters(const MaterialSpec& spec) {
 MaterialModelEntry bsdf_material_entry() {
   MaterialModelEntry e;
   e.type_name = BsdfMaterialType;
-  e.help = "measured BSDF: a Klems matrix from an LBNL WINDOW / IGSDB BSDF XML file (docs/materials.md)";
+  e.help = "measured BSDF: a Klems matrix or a tensor tree (TensorTree3/4) from a BSDF XML file (docs/materials.md)";
   e.make = &make_bsdf;
   e.takes_transmittance_factor = true;
   MaterialParameterSchema file;
   file.key = "file";
   file.kind = MaterialParameterSchema::Kind::Path;
-  file.help = "the BSDF XML file (Klems basis), relative to the project file";
+  file.help = "the BSDF XML file (Klems basis or TensorTree3/4), relative to the project file";
   file.required = true;
   MaterialParameterSchema up;
   up.key = "up";

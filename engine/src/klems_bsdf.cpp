@@ -9,15 +9,10 @@
 
 namespace dayphoton::engine {
 
-namespace {
-/// |up x n| below this (up within 0.06 degrees of the normal) leaves the frame undefined.
-constexpr double MinUpSine = 1e-3;
-}  // namespace
-
 bool KlemsBsdf::frame_defined(const Vec3& up, const Vec3& normal) {
   const double lu = length(up), ln = length(normal);
   if (!(lu > 0) || !(ln > 0)) return false;
-  return length(cross(up, normal)) > MinUpSine * lu * ln;
+  return length(cross(up, normal)) > UpFrame::MinUpSine * lu * ln;
 }
 
 KlemsBsdf::KlemsBsdf(std::shared_ptr<const KlemsBsdfData> data, const Vec3& up) : m_data(std::move(data)), m_up(up) {
@@ -42,21 +37,6 @@ KlemsBsdf::KlemsBsdf(std::shared_ptr<const KlemsBsdfData> data, const Vec3& up) 
   }
 }
 
-KlemsBsdf::Frame KlemsBsdf::frame(const Vec3& normal) const {
-  Frame f;
-  f.z = normalize(normal);
-  const Vec3 x = cross(m_up, f.z);
-  if (length(x) > MinUpSine * length(m_up)) {
-    f.x = normalize(x);
-    f.y = cross(f.z, f.x);
-  } else {  // undefined frame (refused by Scene::build); any frame keeps the numbers finite
-    const BsdfFrame b(f.z);
-    f.x = b.tangent;
-    f.y = b.bitangent;
-  }
-  return f;
-}
-
 int KlemsBsdf::side_of(const Vec3& local_incoming) const {
   if (local_incoming.z > 0) return 0;  // moving toward +z: arrives from -z, WINDOW's front
   if (local_incoming.z < 0) return 1;
@@ -65,7 +45,7 @@ int KlemsBsdf::side_of(const Vec3& local_incoming) const {
 
 std::optional<KlemsBsdf::Sample> KlemsBsdf::sample(const Vec3& incoming, const Vec3& normal, double u_patch,
                                                    double u1, double u2) const {
-  const Frame f = frame(normal);
+  const UpFrame f(m_up, normal);
   const Vec3 d = f.to_local(incoming);
   const int side = side_of(d);
   if (side < 0) return std::nullopt;
@@ -88,7 +68,7 @@ std::optional<KlemsBsdf::Sample> KlemsBsdf::sample(const Vec3& incoming, const V
 }
 
 double KlemsBsdf::eval(const Vec3& incoming, const Vec3& outgoing, const Vec3& normal) const {
-  const Frame f = frame(normal);
+  const UpFrame f(m_up, normal);
   const Vec3 d = f.to_local(incoming), o = f.to_local(outgoing);
   const int side = side_of(d);
   if (side < 0 || o.z == 0) return 0.0;
@@ -105,7 +85,7 @@ double KlemsBsdf::pdf(const Vec3& incoming, const Vec3& outgoing, const Vec3& no
 }
 
 double KlemsBsdf::albedo(const Vec3& incoming, const Vec3& normal) const {
-  const Frame f = frame(normal);
+  const UpFrame f(m_up, normal);
   const Vec3 d = f.to_local(incoming);
   const int side = side_of(d);
   if (side < 0) return 0.0;
@@ -115,7 +95,7 @@ double KlemsBsdf::albedo(const Vec3& incoming, const Vec3& normal) const {
 }
 
 double KlemsBsdf::transmittance(const Vec3& incoming, const Vec3& normal) const {
-  const Frame f = frame(normal);
+  const UpFrame f(m_up, normal);
   const Vec3 d = f.to_local(incoming);
   const int side = side_of(d);
   if (side < 0) return 0.0;

@@ -55,12 +55,6 @@ class KlemsBsdf {
   static bool frame_defined(const Vec3& up, const Vec3& normal);
 
  private:
-  struct Frame {
-    Vec3 x, y, z;
-    Vec3 to_local(const Vec3& v) const { return {dot(v, x), dot(v, y), dot(v, z)}; }
-    Vec3 to_world(const Vec3& v) const { return x * v.x + y * v.y + z * v.z; }
-  };
-  Frame frame(const Vec3& normal) const;
   /// Side (0 front, 1 back) and incoming patch of a propagation direction; side -1 if grazing.
   int side_of(const Vec3& local_incoming) const;
 

@@ -604,6 +604,7 @@ class Loader {
     void error(const SourceLocation& at, const std::string& message) override {
       m_reader.reporter().error(at, message);
     }
+    void forward(const Diagnostic& diagnostic) override { m_reader.reporter().forward(diagnostic); }
 
    private:
     ParamReader& m_reader;

@@ -141,10 +141,12 @@ TEST(BsdfXml, TooMuchLightIsLocatedAtTheSidesTransmissionBlock) {
 TEST(BsdfXml, StructuralErrorsAreLocated) {
   const std::string good = test::bsdf_xml(distinct_values());
   {
-    const std::string text = replace_first(good, ">Columns<", ">TensorTree3<");
+    const std::string text = replace_first(good, ">Columns<", ">TensorTree5<");
     EXPECT_NE(read_error(text).find("bad.xml:" + where(text, "<IncidentDataStructure>") +
-                                    ": error: tensor-tree BSDFs ('TensorTree3') are not supported"),
-              std::string::npos);
+                                    ": error: <IncidentDataStructure> 'TensorTree5' is not 'Columns', 'Rows', "
+                                    "'TensorTree3' or 'TensorTree4'"),
+              std::string::npos)
+        << read_error(text);
   }
   {
     const std::string text = replace_first(good, "Reflection Back", "Reflection Sideways");

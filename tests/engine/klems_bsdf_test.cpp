@@ -37,15 +37,8 @@ std::shared_ptr<const KlemsBsdfData> structured() {
 const Vec3 Normal = engine::test::tilted_normal();
 const Vec3 Up{0, 0, 1};
 
-// The documented frame, built here independently: z = n, x = up x n (normalised), y = z x x.
-struct Local {
-  Vec3 x, y, z;
-  explicit Local(const Vec3& n) : z(n) {
-    x = normalize(cross(Up, n));
-    y = cross(z, x);
-  }
-  Vec3 to_local(const Vec3& v) const { return {dot(v, x), dot(v, y), dot(v, z)}; }
-  Vec3 world(const Vec3& l) const { return x * l.x + y * l.y + z * l.z; }
+struct Local : engine::test::UpLocalFrame {
+  explicit Local(const Vec3& n) : UpLocalFrame(Up, n) {}
 };
 
 }  // namespace

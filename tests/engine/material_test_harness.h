@@ -53,6 +53,18 @@ struct TestFrame {
   }
 };
 
+/// A measured BSDF's documented frame (docs/materials.md, "Measured BSDF (Klems)"), built here
+/// independently of the engine: z = n, x = up x n (normalised), y = z x x.
+struct UpLocalFrame {
+  Vec3 x, y, z;
+  UpLocalFrame(const Vec3& up, const Vec3& n) : z(n) {
+    x = normalize(cross(up, n));
+    y = cross(z, x);
+  }
+  Vec3 to_local(const Vec3& v) const { return {dot(v, x), dot(v, y), dot(v, z)}; }
+  Vec3 world(const Vec3& l) const { return x * l.x + y * l.y + z * l.z; }
+};
+
 /// A tilted unit normal, so that no test relies on the normal being an axis.
 inline Vec3 tilted_normal() { return normalize(Vec3{0.3, -0.5, 0.8}); }
 

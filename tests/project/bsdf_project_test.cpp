@@ -3,7 +3,10 @@
 // errors located at their keys.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <string>
+
+#include "../tensor_tree_xml_writer.h"
 
 #include "dayphoton/core/diagnostics.h"
 #include "dayphoton/engine/bsdf_material.h"
@@ -68,6 +71,22 @@ TEST(BsdfProject, ErrorsAreLocatedAtTheirKeys) {
             std::string::npos)
       << load_error(text("{type: bsdf, file: blind_45deg.xml, up: [0, 0, 0]}"));
   EXPECT_NE(load_error(text("{type: bsdf}")).find("error:"), std::string::npos);
+}
+
+TEST(BsdfProject, AnErrorInsideTheBsdfFileShowsTheFilesOwnLine) {
+  // The XML's line under the caret, not the project file's line of the same number (before,
+  // the project's line 7 was shown under "bad_tt.xml:7:1").
+  const std::string dir = testing::TempDir();
+  std::ofstream(dir + "bad_tt.xml") << dayphoton::test::tensor_tree_xml({"{ 0.1 }", "{ 0.1 }", "{ 0.01 }", ""});
+  std::string e;
+  try {
+    build_scene_description(load_project_from_string(text("{type: bsdf, file: bad_tt.xml}"), dir + "p.yaml"));
+  } catch (const InputError& error) {
+    e = error.what();
+  }
+  EXPECT_NE(e.find("bad_tt.xml:5:1: error: the Visible data has no 'Reflection Back' block\n    <Layer>\n    ^"),
+            std::string::npos)
+      << e;
 }
 
 }  // namespace

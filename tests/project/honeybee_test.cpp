@@ -17,6 +17,7 @@
 #include "dayphoton/engine/bsdf_material.h"
 #include "dayphoton/project/honeybee_model.h"
 #include "dayphoton/project/project.h"
+#include "../tensor_tree_xml_writer.h"
 #include "../bsdf_xml_writer.h"
 #include "../json_string.h"
 #include "located_errors.h"
@@ -479,6 +480,22 @@ TEST(Honeybee, ABsdfApertureIsTurnedSoThatItsFrontIsOutdoors) {
   plain.replace(plain.find(up), up.size(), "");
   EXPECT_EQ(engine::bsdf_parameters(material(read_honeybee_model_from_string(plain, "m.hbjson"), "blind"))->up,
             Vec3(0.01, 0.01, 1));
+}
+
+// A tensor-tree BSDF (TensorTree3) inline in bsdf_data is read where a Klems one is.
+TEST(Honeybee, ATensorTreeBsdfApertureIsReadLikeAKlemsOne) {
+  const std::string radiance = R"("modifiers": [{"type": "BSDF", "identifier": "film", "up_orientation": [0, 0, 1],
+ "thickness": 0, "function_file": ".", "transform": null, "front_diffuse_reflectance": [0, 0, 0],
+ "bsdf_data": )" + dayphoton::test::json_string(dayphoton::test::tensor_tree_xml({"{ 0.2 }", "{ 0.2 }", "{ 0.05 }", "{ 0.05 }"})) + "}]";
+  std::string text = model(room("r", box, outdoors(), outdoors()), radiance);
+  const std::string win = opening("Aperture", "r_window", outdoors(), box.window());
+  text.replace(text.find(win), win.size(), opening("Aperture", "r_window", outdoors(), box.window(), rad_modifier("film")));
+  const HoneybeeModel m = read_honeybee_model_from_string(text, "m.hbjson");
+  const engine::BsdfMaterialParameters* bsdf = engine::bsdf_parameters(material(m, "film"));
+  ASSERT_NE(bsdf, nullptr);
+  ASSERT_TRUE(bsdf->data->tensor_tree);
+  EXPECT_NEAR(bsdf->data->tensor_tree->slices[0][0].transmittance, 0.2 * Pi, 1e-6);
+  EXPECT_EQ(surface(m, "r_window").role, HoneybeeRole::Port);
 }
 
 // What RADIANCE's BSDF primitive takes and dayphoton does not model is refused at its very key

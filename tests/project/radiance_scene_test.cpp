@@ -11,6 +11,7 @@
 #include "dayphoton/core/polygon.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/bsdf_material.h"
+#include "../tensor_tree_xml_writer.h"
 
 namespace dayphoton::project {
 namespace {
@@ -400,6 +401,17 @@ TEST_F(RadianceXform, BsdfModifiersReadTheirFileAndTurnTheirUpVector) {
   ASSERT_NE(bsdf, nullptr);
   EXPECT_EQ(bsdf->data->basis.size(), 145);
   EXPECT_NEAR(length(bsdf->up - Vec3(0, 1, 0)), 0, 1e-12);
+  {
+    // A tensor-tree file (TensorTree3) is taken where a Klems file is.
+    write("parts/film.xml", dayphoton::test::tensor_tree_xml({"{ 0.2 }", "{ 0.2 }", "{ 0.05 }", "{ 0.05 }"}));
+    Diagnostics d3;
+    const RadianceScene film = read_main("void BSDF film 6 0 parts/film.xml 0 0 1 . 0 0\nfilm polygon f 0 0 9 0 0 0 1 0 0 1 0 1\n", d3);
+    ASSERT_FALSE(d3.has_errors()) << d3.format();
+    const engine::BsdfMaterialParameters* tt = engine::bsdf_parameters(film.materials.at(static_cast<std::size_t>(film.surfaces[0].material)));
+    ASSERT_NE(tt, nullptr);
+    ASSERT_TRUE(tt->data->tensor_tree);
+    EXPECT_NEAR(tt->data->tensor_tree->slices[0][0].transmittance, 0.2 * Pi, 1e-6);
+  }
   {
     // A missing file is an error at the modifier; an error inside the file is located there.
     write("bad.xml", "<WindowElement><Optical></Optical></WindowElement>\n");

@@ -7,8 +7,9 @@
 //     from shadow rays; the BSDF has no straight component, so all of its light comes from
 //     photons, spread over the Klems patches: the comparison checks the whole BSDF path (file,
 //     orientation, sampling, photon classes, no double counting);
-//   - a Lambertian diffuser BSDF (T = tau / pi, R = rho / pi) gives a translucent window with
-//     the same purely diffuse transmission and reflection;
+//   - a Lambertian diffuser BSDF (T = tau / pi, R = rho / pi), as a Klems matrix and as a
+//     tensor tree, gives a translucent window with the same purely diffuse transmission and
+//     reflection;
 //   - the example project projects/bsdf_blind (a venetian blind BSDF) runs end to end.
 // Tolerances from the runs' own Monte Carlo standard errors (df_stderr_percent).
 #include <gtest/gtest.h>
@@ -22,6 +23,7 @@
 #include <vector>
 
 #include "../bsdf_xml_writer.h"
+#include "../tensor_tree_xml_writer.h"
 #include "dayphoton/core/units.h"
 #include "dayphoton/engine/material.h"
 #include "dayphoton/project/project.h"
@@ -175,6 +177,18 @@ TEST(BsdfWindow, KlemsClearGlassGivesTheBuiltInGlassDaylightFactor) {
   EXPECT_LT(5 * c.mean_ratio_se, 0.03);
 }
 
+// Within the noise: the RMS difference at most 1.5 x what the noise explains (63 sensors: the
+// mean of 63 squared z-scores exceeds 2.25 with probability < 1e-6 if independent); both
+// windows' light is all photons here, so no estimator bias separates them.
+void expect_within_noise(const Df& reference, const Df& bsdf, const char* label) {
+  const Comparison c = compare(reference, bsdf);
+  std::printf("[ bsdf ] %s: RMS difference %.2f %% (Monte Carlo part %.2f %%), mean ratio %.4f (se %.4f)\n", label,
+              100 * c.rms, 100 * c.noise_rms, c.mean_ratio, c.mean_ratio_se);
+  EXPECT_LT(c.rms, 1.5 * c.noise_rms) << label;
+  EXPECT_NEAR(c.mean_ratio, 1.0, 5 * c.mean_ratio_se) << label;
+  EXPECT_LT(5 * c.mean_ratio_se, 0.05) << label << ": the test could not see a 5 % difference";
+}
+
 TEST(BsdfWindow, LambertianDiffuserEqualsATranslucentWindow) {
   // Translucent C = 0.8, t = 0.75, no specular part: diffuse transmission 0.6, diffuse
   // reflection 0.2, both sides. The BSDF: T = 0.6 / pi, R = 0.2 / pi everywhere.
@@ -183,15 +197,13 @@ TEST(BsdfWindow, LambertianDiffuserEqualsATranslucentWindow) {
                             [](int, int) { return 0.2 / Pi; }, [](int, int) { return 0.2 / Pi; }));
   const Df trans = run("translucent", "{type: translucent, reflectance: 0.8, transmissivity: 0.75}", 2000);
   const Df bsdf = run("diffuser_bsdf", "{type: bsdf, file: diffuser.xml}", 2000);
-  const Comparison c = compare(trans, bsdf);
-  std::printf("[ bsdf ] diffuser: RMS difference %.2f %% (Monte Carlo part %.2f %%), mean ratio %.4f (se %.4f)\n",
-              100 * c.rms, 100 * c.noise_rms, c.mean_ratio, c.mean_ratio_se);
-  // Within the noise: the RMS difference at most 1.5 x what the noise explains (63 sensors:
-  // the mean of 63 squared z-scores exceeds 2.25 with probability < 1e-6 if independent);
-  // both windows' light is all photons here, so no estimator bias separates them.
-  EXPECT_LT(c.rms, 1.5 * c.noise_rms);
-  EXPECT_NEAR(c.mean_ratio, 1.0, 5 * c.mean_ratio_se);
-  EXPECT_LT(5 * c.mean_ratio_se, 0.05) << "the test could not see a 5 % difference";
+  expect_within_noise(trans, bsdf, "diffuser");
+  // The same diffuser as a tensor tree (TensorTree3, one constant leaf per block), the same
+  // bounds: the project file takes it where it takes a Klems file.
+  std::ofstream(folder() / "diffuser_tt.xml") << test::tensor_tree_xml(
+      {"{ " + test::bsdf_xml_number(0.6 / Pi) + " }", "{ " + test::bsdf_xml_number(0.6 / Pi) + " }",
+       "{ " + test::bsdf_xml_number(0.2 / Pi) + " }", "{ " + test::bsdf_xml_number(0.2 / Pi) + " }"});
+  expect_within_noise(trans, run("diffuser_tt", "{type: bsdf, file: diffuser_tt.xml}", 2000), "tensor-tree diffuser");
 }
 
 }  // namespace

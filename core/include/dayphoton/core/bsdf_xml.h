@@ -1,4 +1,4 @@
-// BSDF XML: reads an LBNL WINDOW / IGSDB BSDF file (WindowElement / Optical / Layer, with
+// BSDF XML: reads an LBNL WINDOW / IGSDB / RADIANCE BSDF file (WindowElement / Optical / Layer, with
 // DataDefinition/AngleBasis and WavelengthData blocks) into KlemsBsdfData
 // (core/klems_bsdf_data.h). docs/materials.md "Measured BSDF (Klems)" describes what is read:
 //   - one Layer; IncidentDataStructure "Columns" (each line of ScatteringData one outgoing
@@ -7,7 +7,9 @@
 //     both), its rings from the file itself (ThetaBounds, nPhis), checked contiguous 0-90;
 //   - the Visible WavelengthData: Transmission Front/Back and Reflection Front/Back, all four
 //     required; other wavelengths (Solar, NIR, CIE-X/Z) are skipped;
-//   - tensor-tree files (IncidentDataStructure TensorTree3/TensorTree4) are not supported.
+//   - IncidentDataStructure TensorTree3 / TensorTree4 (isotropic / anisotropic tensor trees,
+//     LBNL/Shirley-Chiu basis): read into the same struct with `tensor_tree` set
+//     (klems_bsdf_data.h, tensor_tree_bsdf_data.h; docs/materials.md "Tensor-tree BSDF").
 // Every error is located at file:line:column of the element or of the very value at fault:
 // a value count that is not size x size, a value that is not a number, negative or not
 // finite, and an incoming patch whose hemispherical T + R exceeds 1 + BsdfAlbedoTolerance.

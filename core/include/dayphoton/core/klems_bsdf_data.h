@@ -20,12 +20,21 @@
 // Values: f(i, j), 1/sr, stored [incoming * size + outgoing]. The reader has checked every
 // value finite and >= 0, and sum_j (T + R)(i, j) Lambda_j <= 1 + BsdfAlbedoTolerance per
 // incoming patch and side.
+//
+// Tensor trees: a TensorTree3/4 file (core/tensor_tree_bsdf_data.h) is read into this same
+// struct with `tensor_tree` set. The BSDF is then the tree (the engine evaluates and samples
+// it); the matrices hold its projection onto the LBNL/Klems Full basis for the summaries that
+// read matrices (core/bsdf_xml.cpp project_on_klems): each incoming patch at its centre
+// direction, its hemispherical T and R exact, their split over outgoing patches by 1/64
+// sub-squares of the tree's square (a single patch's value within about 26 %).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "dayphoton/core/klems_basis.h"
+#include "dayphoton/core/tensor_tree_bsdf_data.h"
 
 namespace dayphoton {
 
@@ -42,6 +51,8 @@ struct KlemsBsdfData {
   std::string device_type;
   KlemsBasis basis;
   std::vector<double> transmission_front, transmission_back, reflection_front, reflection_back;
+  /// Set for a tensor-tree file: the BSDF itself (the matrices are its Klems projection).
+  std::shared_ptr<const TensorTreeBsdfData> tensor_tree;
 
   double value(const std::vector<double>& matrix, int incoming, int outgoing) const {
     return matrix[static_cast<std::size_t>(incoming) * static_cast<std::size_t>(basis.size()) +

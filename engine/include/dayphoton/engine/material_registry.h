@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "dayphoton/core/diagnostics.h"
 #include "dayphoton/core/scene_description.h"
 #include "dayphoton/core/source_location.h"
 #include "dayphoton/core/vec3.h"
@@ -59,6 +60,9 @@ class MaterialKeyReader {
   /// A located error of the model's own checks (e.g. a value the schema's range cannot
   /// express, or a file that does not parse).
   virtual void error(const SourceLocation& at, const std::string& message) = 0;
+  /// An error found in another file the model reads (a BSDF XML file), with that file's own
+  /// line under the caret.
+  virtual void forward(const Diagnostic& diagnostic) = 0;
 };
 
 /// One project-file key of a registered model: drives the loader's validation, `--help`
