@@ -190,6 +190,22 @@ std::set<std::string> rooms_lit_only_through_interior_windows(const Geometry& ge
   return out;
 }
 
+std::string borrowed_light_room_of(const GridSpec& spec, const SensorGrid& grid, const std::vector<RoomSpec>& rooms,
+                                   const std::set<std::string>& borrowed) {
+  if (!spec.room.empty()) return borrowed.count(spec.room) ? spec.room : "";
+  for (const RoomSpec& room : rooms) {
+    if (!borrowed.count(room.name)) continue;
+    const Vec3 lo = room.origin, hi = room.origin + room.size_m;
+    for (const SensorPoint& p : grid.points) {
+      bool inside = true;
+      for (int k = 0; k < 3; ++k)
+        inside = inside && p.position[k] >= lo[k] - Tolerance_m && p.position[k] <= hi[k] + Tolerance_m;
+      if (inside) return room.name;
+    }
+  }
+  return "";
+}
+
 }  // namespace detail
 
 std::vector<InteriorWindow> interior_windows(const Geometry& geometry) {

@@ -429,6 +429,21 @@ TEST(InteriorWindows, AGridOverARoomLitOnlyThroughThemIsGathered) {
                                    "[2, 6.5, 3], [1, 6.5, 3]]}\n";
   EXPECT_TRUE(grid_named(build_scene_description(load(with_grids(polygon_port))), "corridor").planar);
 
+  // A polygon grid with sensors in the corridor (across both rooms) is gathered too; one over
+  // the office alone is not.
+  const std::string polygons = two_rooms(internal) +
+                               "sensors:\n"
+                               "  grids:\n"
+                               "    - {name: across, polygon: [[0, 0, 0], [4, 0, 0], [4, 7, 0], [0, 7, 0]], spacing: 1}\n"
+                               "    - {name: office_only, polygon: [[0, 0, 0], [4, 0, 0], [4, 5, 0], [0, 5, 0]], spacing: 1}\n";
+  const SceneDescription across = build_scene_description(load(polygons));
+  EXPECT_FALSE(grid_named(across, "across").planar);
+  EXPECT_TRUE(grid_named(across, "office_only").planar);
+  ASSERT_EQ(across.warnings.size(), 1u);
+  EXPECT_EQ(across.warnings[0].location.line, 21);
+  EXPECT_EQ(across.warnings[0].message.substr(0, 67),
+            "grid 'across' has sensors in room 'corridor', whose daylight all co");
+
   // point_estimate: surface cannot gather mid-air sensors: the plane, and a located warning.
   const SceneDescription surface = build_scene_description(
       load(with_grids(two_rooms(internal), "simulation: {point_estimate: surface}\n")));
