@@ -253,7 +253,11 @@ ModelSummary summarize_model(const project::Project& proj) {
     info.rows = grid.rows;
     info.spacing_m = grid.spacing_m;
     info.planar = grid.planar;
-    info.plane_height_m = s.scene.world_grid(grid).plane_height_m;  // world coordinates
+    // The plane's z in world coordinates: plane_height_m is its signed distance along the
+    // sensors' normal, -z for a grid facing down (a ceiling grid at 2.9 m printed -2.90 m).
+    const SensorGrid world = s.scene.world_grid(grid);
+    info.plane_z_m = world.plane_normal.z * world.plane_height_m;
+    info.facing_down = grid.planar && world.plane_normal.z < 0;
     if (grid.planar) {
       info.estimate = "receiver plane";
     } else {
@@ -385,7 +389,7 @@ void print_model_summary(const ModelSummary& s, std::ostream& out) {
         << " sensors";
     if (g.columns > 0 && g.rows > 0)
       out << " (" << g.columns << " x " << g.rows << ", spacing " << fixed(g.spacing_m, 2) << " m)";
-    if (g.planar) out << " on the plane at " << fixed(g.plane_height_m, 2) << " m";
+    if (g.planar) out << " on the plane at " << fixed(g.plane_z_m, 2) << " m" << (g.facing_down ? " facing down" : "");
     out << ", " << g.estimate << '\n';
   }
   for (const std::string& line : s.placement_lines) out << "  " << line << '\n';

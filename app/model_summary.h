@@ -60,7 +60,8 @@ struct GridInfo {
   int columns = 0, rows = 0;
   double spacing_m = 0;
   bool planar = false;
-  double plane_height_m = 0;
+  double plane_z_m = 0;      ///< planar grids: the plane's height z (world coordinates)
+  bool facing_down = false;  ///< planar grids: the sensors face down (a ceiling grid)
   /// How the photon part is estimated: "receiver plane", "final gather" or "surface photons",
   /// with its parameters, and how many sensors lie in mid air / on a surface (gather only).
   std::string estimate;

@@ -17,16 +17,20 @@ constexpr double FloatPadEpsilons = 0.1;
 
 }  // namespace
 
+bool transmits_straight(const Material& material) {
+  for (const Vec3& incoming : {Vec3{0, 0, -1}, normalize(Vec3{1, 0, -0.2})}) {
+    const Vec3 t = material.straight_transmittance(incoming, {0, 0, 1});
+    if (t.x > 0 || t.y > 0 || t.z > 0) return true;
+  }
+  return false;
+}
+
 bool has_straight_transmitting_non_port(const Scene& scene, const std::vector<Material>& materials) {
   const std::vector<Surface>& surfaces = scene.description().surfaces;
-  for (std::size_t i = 0; i < surfaces.size(); ++i) {
-    if (scene.is_port(static_cast<int>(i))) continue;
-    const Material& m = materials.at(static_cast<std::size_t>(surfaces[i].material));
-    for (const Vec3& incoming : {Vec3{0, 0, -1}, normalize(Vec3{1, 0, -0.2})}) {
-      const Vec3 t = m.straight_transmittance(incoming, {0, 0, 1});
-      if (t.x > 0 || t.y > 0 || t.z > 0) return true;
-    }
-  }
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+    if (!scene.is_port(static_cast<int>(i)) &&
+        transmits_straight(materials.at(static_cast<std::size_t>(surfaces[i].material))))
+      return true;
   return false;
 }
 

@@ -106,6 +106,19 @@ struct InteriorOpening {
 /// left to generate_room.
 std::vector<InteriorOpening> find_interior_windows(const std::vector<RoomSpec>& rooms, Diagnostics* diag);
 
+/// The rooms whose daylight all comes through interior windows: each has at least one
+/// interior window (its own or another room's into it) and no photon port of its own (no
+/// exterior window, roof light, light pipe, nor a port polygon whose centroid lies inside
+/// it). Their light on a work plane is the borrowed windows' footprint, made of photons
+/// alone and sparse, which a receiver plane's kernel blurs (docs/photon-map.md, "Rooms lit
+/// only through interior windows").
+std::set<std::string> rooms_lit_only_through_interior_windows(const Geometry& geometry);
+
+/// The room of `borrowed` that planar grid `grid` (made from `spec`) lies in: a room grid's
+/// room, or the first of them holding a sensor of a polygon grid; "" if none.
+std::string borrowed_light_room_of(const GridSpec& spec, const SensorGrid& grid, const std::vector<RoomSpec>& rooms,
+                                   const std::set<std::string>& borrowed);
+
 /// Axis-aligned box rotated about +Z (counter-clockwise for positive rotation_deg) around
 /// its origin corner; six faces with outward normals.
 void generate_box(const BoxSpec& box, MaterialLookup& materials, Diagnostics& diag,

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <variant>
 
 #include "geometry_generators.h"
 
@@ -158,6 +159,51 @@ std::vector<InteriorOpening> find_interior_windows(const std::vector<RoomSpec>& 
       found_spans.push_back(*span);
     }
   return found;
+}
+
+std::set<std::string> rooms_lit_only_through_interior_windows(const Geometry& geometry) {
+  const std::vector<InteriorOpening> openings = find_interior_windows(geometry.rooms, nullptr);
+  std::set<std::string> out;
+  for (const RoomSpec& room : geometry.rooms) {
+    bool borrows = false, own_port = !room.roof_lights.empty();
+    for (const InteriorOpening& o : openings) borrows = borrows || o.room == &room || o.adjoining == &room;
+    for (const WindowSpec& w : room.windows) {
+      bool interior = false;
+      for (const InteriorOpening& o : openings) interior = interior || o.window == &w;
+      own_port = own_port || !interior;
+    }
+    for (const SystemSpec& sys : geometry.systems)
+      if (const auto* pipe = std::get_if<LightPipeSpec>(&sys.params))
+        own_port = own_port || (sys.enabled && pipe->room == room.name);
+    const Vec3 lo = room.origin, hi = room.origin + room.size_m;
+    for (const PolygonSpec& poly : geometry.polygons) {
+      if (!poly.port || poly.vertices.empty()) continue;
+      Vec3 c{0, 0, 0};
+      for (const Vec3& v : poly.vertices) c = c + v;
+      c = c / double(poly.vertices.size());
+      bool inside = true;
+      for (int k = 0; k < 3; ++k) inside = inside && c[k] >= lo[k] - Tolerance_m && c[k] <= hi[k] + Tolerance_m;
+      own_port = own_port || inside;
+    }
+    if (borrows && !own_port) out.insert(room.name);
+  }
+  return out;
+}
+
+std::string borrowed_light_room_of(const GridSpec& spec, const SensorGrid& grid, const std::vector<RoomSpec>& rooms,
+                                   const std::set<std::string>& borrowed) {
+  if (!spec.room.empty()) return borrowed.count(spec.room) ? spec.room : "";
+  for (const RoomSpec& room : rooms) {
+    if (!borrowed.count(room.name)) continue;
+    const Vec3 lo = room.origin, hi = room.origin + room.size_m;
+    for (const SensorPoint& p : grid.points) {
+      bool inside = true;
+      for (int k = 0; k < 3; ++k)
+        inside = inside && p.position[k] >= lo[k] - Tolerance_m && p.position[k] <= hi[k] + Tolerance_m;
+      if (inside) return room.name;
+    }
+  }
+  return "";
 }
 
 }  // namespace detail

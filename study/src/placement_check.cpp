@@ -10,9 +10,11 @@
 #include <sstream>
 
 #include "dayphoton/core/diagnostics.h"
+#include "dayphoton/core/polygon.h"
 #include "dayphoton/engine/plane_cuts.h"
 #include "dayphoton/study/daylight_openings.h"
 #include "dayphoton/engine/port_facing.h"
+#include "dayphoton/engine/port_view.h"
 #include "dayphoton/engine/receiver_plane.h"
 #include "dayphoton/engine/scene.h"
 #include "dayphoton/engine/sensor_placement.h"
@@ -131,6 +133,57 @@ void check_outline(const engine::Scene& scene, const SensorGrid& grid, const Mod
           " m, see the sky without a port); the work plane counts the light crossing it inside the outline, "
           "and none crosses beyond the walls, so the sensors near that part read low. Draw the outline along "
           "the room's inside faces"));
+}
+
+/// The warning for a receiver plane under glazing that is no port inside its outline: an
+/// interior glazed partition drawn as polygons, boxes, a mesh or an imported scene, standing
+/// more than 30 degrees from the plane's own orientation (a room's
+/// interior windows lie on its grid's outline, and a room lit only through them is gathered:
+/// project/scene_builder.cpp). The light the rooms' surfaces send through it reaches the plane
+/// as photons alone, with the glazing's sharp footprint, which the plane's kernel blurs (docs/
+/// validation.md, "A new user's rooms and materials": 0.5 m behind a clear pane over a
+/// 1 m wall, 6-7 % low, z to -6.3).
+void check_glazing_over_plane(const engine::Scene& scene, const std::vector<engine::Material>& materials,
+                              const SensorGrid& grid, const ModelFrame& frame, std::vector<Diagnostic>& warnings) {
+  if (!grid.planar || grid.outline.size() < 3) return;
+  const engine::ReceiverPlane plane = engine::ReceiverPlane::from_grid(grid);
+  const std::vector<Surface>& surfaces = scene.description().surfaces;
+  const std::vector<engine::PlanePoint>& outline = plane.outline();
+  for (std::size_t i = 0; i < surfaces.size(); ++i) {
+    const Surface& s = surfaces[i];
+    if (scene.is_port(static_cast<int>(i)) || s.outdoor_scatterer || s.vertices.size() < 3 ||
+        !engine::transmits_straight(materials.at(static_cast<std::size_t>(s.material))))
+      continue;
+    // A pane lying over the plane (a light pipe's diffuser, a glass floor) sends its light
+    // down as a smooth field (projects/light_pipe against a backward reference: RMS z 0.94).
+    if (std::fabs(dot(polygon_normal(s.vertices), plane.normal())) > GlazingOverPlaneMaxCos) continue;
+    Vec3 c{0, 0, 0};
+    bool lit_side = false;  // some of it on the side of the plane its sensors face
+    for (const Vec3& v : s.vertices) {
+      c = c + v;
+      lit_side = lit_side || dot(v, plane.normal()) > dot(Vec3{0, 0, plane.height_m()}, plane.normal()) + GlazingOverPlaneEdge_m;
+    }
+    c = c / double(s.vertices.size());
+    if (!lit_side || !plane.contains(c.x, c.y)) continue;
+    double edge_m = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < outline.size(); ++k) {
+      const engine::PlanePoint& a = outline[k];
+      const engine::PlanePoint& b = outline[(k + 1) % outline.size()];
+      const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+      const double t = len2 > 0 ? std::clamp(((c.x - a.x) * dx + (c.y - a.y) * dy) / len2, 0.0, 1.0) : 0.0;
+      edge_m = std::min(edge_m, std::hypot(c.x - a.x - t * dx, c.y - a.y - t * dy));
+    }
+    if (edge_m <= GlazingOverPlaneEdge_m) continue;  // on the outline: a room's own window
+    warnings.push_back(warning_at(
+        grid.location,
+        "sensor set '" + grid.name + "': glazing '" + s.name + "' at " + frame.text(c) +
+            " m is no port and stands inside the grid's outline (an interior glazed partition): the light that "
+            "comes through it reaches the work plane as photons alone, and the plane's kernel blurs its footprint "
+            "(measured 6-7 % low 0.5 m behind such a pane). Draw the spaces as rooms with an interior window (a "
+            "room lit only through interior windows is estimated by final gather), or give the sensors behind it "
+            "as a point set"));
+    return;
+  }
 }
 
 /// For a point set read from a .pts file with sensors outside the model's bounding box: the
@@ -495,6 +548,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
   const SourceLocation project{proj.path, 1, 1};
   const SceneDescription& description = scene.description();
   const ModelFrame frame{description, proj.site.rotation_to_true_north_deg()};
+  const std::vector<engine::Material> materials = engine::materials_of(description.materials);
   if (scene.ports().empty())
     report(diag, project,
            "the project has no photon port: no light can enter (add a window to a room, a polygon or mesh with "
@@ -611,6 +665,7 @@ PlacementCheck check_placement(const engine::Scene& scene, std::vector<SensorGri
     }
     check_sky_through_gaps(grid, tests, frame, out.warnings);
     check_outline(scene, grid, frame, out.warnings);
+    check_glazing_over_plane(scene, materials, grid, frame, out.warnings);
     out.sets.push_back(std::move(set));
   }
   // Sensors next to a cut, gathered or not as the run decides (CaseLayout::of).

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -368,6 +369,92 @@ TEST(InteriorWindows, ASystemOutsideAnInteriorWindowIsALocatedError) {
                   .empty());
 }
 
+// Work planes over a room whose daylight all comes through interior windows are estimated
+// by final gather (not planar), with a located note at the grid's `room`; a room with a port
+// of its own keeps its receiver plane; with point_estimate: surface the plane stays, with a
+// located warning (docs/photon-map.md, "Rooms lit only through interior windows"). Before,
+// every room grid was a receiver plane: the corridor read -11 to +6 % against a backward
+// reference (docs/validation.md, cli_borrowed_light_reference).
+const SensorGrid& grid_named(const SceneDescription& d, const std::string& name) {
+  for (const SensorGrid& g : d.grids)
+    if (g.name == name) return g;
+  throw std::runtime_error("no grid " + name);
+}
+
+std::string with_grids(const std::string& rooms, const std::string& simulation = "") {
+  return rooms +
+         "sensors:\n"
+         "  grids:\n"
+         "    - {name: office, room: office, spacing: 1}\n"
+         "    - {name: corridor, room: corridor, spacing: 1}\n" +
+         simulation;
+}
+
+TEST(InteriorWindows, AGridOverARoomLitOnlyThroughThemIsGathered) {
+  const std::string internal =
+      "        - {name: internal, wall: north, width: 2, height: 1, sill: 1, offset: 1, material: glass}\n";
+  const SceneDescription d = build_scene_description(load(with_grids(two_rooms(internal))));
+  EXPECT_TRUE(grid_named(d, "office").planar) << "the office has its facade port";
+  const SensorGrid& corridor = grid_named(d, "corridor");
+  EXPECT_FALSE(corridor.planar) << "the corridor's light all comes through the interior window";
+  EXPECT_EQ(corridor.plane_normal.z, 1.0);
+  ASSERT_EQ(d.warnings.size(), 1u);
+  EXPECT_EQ(d.warnings[0].severity, Severity::Note);
+  EXPECT_EQ(d.warnings[0].location.line, 22);
+  EXPECT_EQ(d.warnings[0].message,
+            "grid 'corridor' covers room 'corridor', whose daylight all comes through interior windows: its sensors "
+            "are estimated by final gather, not as a receiver plane (a plane's kernel blurs those windows' light)");
+
+  // The same opening defined from the corridor: the same rule.
+  const SceneDescription from_corridor = build_scene_description(load(with_grids(two_rooms(
+      "", "        - {name: internal, wall: south, width: 2, height: 1, sill: 1, offset: 1, material: glass}\n"))));
+  EXPECT_TRUE(grid_named(from_corridor, "office").planar);
+  EXPECT_FALSE(grid_named(from_corridor, "corridor").planar);
+
+  // A port of the corridor's own (an east window, a roof light, a port polygon in it): planes.
+  for (const std::string& own : {
+           std::string("        - {name: small, wall: east, width: 0.6, height: 0.6, sill: 1.2, material: glass}\n"),
+       }) {
+    const SceneDescription d2 = build_scene_description(load(with_grids(two_rooms(internal, own))));
+    EXPECT_TRUE(grid_named(d2, "corridor").planar);
+    EXPECT_TRUE(d2.warnings.empty());
+  }
+  const std::string roof = two_rooms(internal) +
+                           "      roof_lights:\n"
+                           "        - {name: top, width: 0.5, length: 0.5, material: glass}\n";
+  EXPECT_TRUE(grid_named(build_scene_description(load(with_grids(roof))), "corridor").planar);
+  const std::string polygon_port = two_rooms(internal) +
+                                   "  polygons:\n"
+                                   "    - {name: hatch, port: true, material: glass, vertices: [[1, 5.5, 3], [2, 5.5, 3], "
+                                   "[2, 6.5, 3], [1, 6.5, 3]]}\n";
+  EXPECT_TRUE(grid_named(build_scene_description(load(with_grids(polygon_port))), "corridor").planar);
+
+  // A polygon grid with sensors in the corridor (across both rooms) is gathered too; one over
+  // the office alone is not.
+  const std::string polygons = two_rooms(internal) +
+                               "sensors:\n"
+                               "  grids:\n"
+                               "    - {name: across, polygon: [[0, 0, 0], [4, 0, 0], [4, 7, 0], [0, 7, 0]], spacing: 1}\n"
+                               "    - {name: office_only, polygon: [[0, 0, 0], [4, 0, 0], [4, 5, 0], [0, 5, 0]], spacing: 1}\n";
+  const SceneDescription across = build_scene_description(load(polygons));
+  EXPECT_FALSE(grid_named(across, "across").planar);
+  EXPECT_TRUE(grid_named(across, "office_only").planar);
+  ASSERT_EQ(across.warnings.size(), 1u);
+  EXPECT_EQ(across.warnings[0].location.line, 21);
+  EXPECT_EQ(across.warnings[0].message.substr(0, 67),
+            "grid 'across' has sensors in room 'corridor', whose daylight all co");
+
+  // point_estimate: surface cannot gather mid-air sensors: the plane, and a located warning.
+  const SceneDescription surface = build_scene_description(
+      load(with_grids(two_rooms(internal), "simulation: {point_estimate: surface}\n")));
+  EXPECT_TRUE(grid_named(surface, "corridor").planar);
+  ASSERT_EQ(surface.warnings.size(), 1u);
+  EXPECT_EQ(surface.warnings[0].severity, Severity::Warning);
+  EXPECT_EQ(surface.warnings[0].location.line, 22);
+  EXPECT_NE(surface.warnings[0].message.find("remove point_estimate: surface"), std::string::npos)
+      << surface.warnings[0].message;
+}
+
 TEST(RoomOpenings, ExampleProjectsLoadAndBuild) {
   const std::string projects = std::string(DAYPHOTON_SOURCE_DIR) + "/projects/";
   const SceneDescription roof = build_scene_description(load_project(projects + "roof_light/project.yaml"));
@@ -382,6 +469,8 @@ TEST(RoomOpenings, ExampleProjectsLoadAndBuild) {
   EXPECT_FALSE(find(d, "office.internal")->port);
   ASSERT_EQ(interior_windows(corridor.geometry).size(), 1u);
   EXPECT_EQ(interior_windows(corridor.geometry)[0].adjoining_room, "corridor");
+  EXPECT_TRUE(grid_named(d, "office").planar);
+  EXPECT_FALSE(grid_named(d, "corridor").planar) << "lit only through the internal window";
 }
 
 }  // namespace

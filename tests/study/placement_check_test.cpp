@@ -321,6 +321,40 @@ TEST(PlacementCheck, AnOutlineReachingPastOneWallIsNamedToo) {
       << o.check.warnings[0].message;
 }
 
+TEST(PlacementCheck, GlazingThatIsNoPortInsideAPlanesOutlineIsALocatedWarning) {
+  // A glazed partition drawn as two boxes and a clear pane across the office at y 3.9-4.0 m:
+  // the light through the pane reaches the plane as photons alone and the kernel blurs it
+  // (measured 6-7 % low 0.5 m behind it: docs/validation.md). Named once, at the grid. The same
+  // pane of a diffusing material (no straight transmission), or lying flat over the plane (a
+  // light pipe's diffuser), is not named.
+  auto project = [](const std::string& pane_material, const std::string& pane) {
+    return Head + "  frosted: {type: translucent, reflectance: 0.3, transmissivity: 0.6}\n" + Office +
+           "  boxes:\n"
+           "    - {name: low, origin: [0, 3.9, 0], size: [6, 0.1, 1], material: walls}\n"
+           "    - {name: high, origin: [0, 3.9, 2], size: [6, 0.1, 1], material: walls}\n"
+           "  polygons:\n"
+           "    - {name: pane, material: " + pane_material + ", vertices: " + pane + "}\n"
+           "sensors:\n  grids:\n    - {name: workplane, room: office, height: 0.8, spacing: 1, inset: 0.5}\n";
+  };
+  const std::string upright = "[[0, 3.95, 1], [6, 3.95, 1], [6, 3.95, 2], [0, 3.95, 2]]";
+  const Outcome clear = check_text(project("glazing", upright));
+  ASSERT_TRUE(clear.errors.empty()) << clear.errors[0];
+  ASSERT_EQ(clear.check.warnings.size(), 1u);
+  EXPECT_EQ(warning_text(clear.check.warnings[0]).rfind(
+                "21:7: sensor set 'workplane': glazing 'pane' at (3, 3.95, 1.5) m is no port and stands inside the "
+                "grid's outline (an interior glazed partition): the light that comes through it reaches the work plane "
+                "as photons alone, and the plane's kernel blurs its footprint",
+                0),
+            0u)
+      << warning_text(clear.check.warnings[0]);
+  const Outcome frosted = check_text(project("frosted", upright));
+  ASSERT_TRUE(frosted.errors.empty()) << frosted.errors[0];
+  EXPECT_TRUE(frosted.check.warnings.empty()) << frosted.check.warnings[0].message;
+  const Outcome flat = check_text(project("glazing", "[[2, 5, 2.5], [3, 5, 2.5], [3, 6, 2.5], [2, 6, 2.5]]"));
+  ASSERT_TRUE(flat.errors.empty()) << flat.errors[0];
+  EXPECT_TRUE(flat.check.warnings.empty()) << flat.check.warnings[0].message;
+}
+
 TEST(PlacementCheck, SensorsNearAColumnAreALocatedNote) {
   // A 0.3 m column at x 2.6-2.9, y 3.6-3.9 and a grid every 1 m from 0.5 m (6 x 8 sensors):
   // the sensor at (2.5, 3.5), index 2 + 3 x 6 = 20, lies 0.141 m from the column's corner and is

@@ -68,6 +68,10 @@ class PortView {
 /// The margin of the header comment for `scene`, metres.
 double port_view_pad_m(const Scene& scene, const std::vector<Material>& materials);
 
+/// True if `material` passes light straight through (its straight transmittance is non-zero
+/// at normal or oblique incidence): glass, glazing, an opening, a dielectric.
+bool transmits_straight(const Material& material);
+
 /// True if some non-port surface of `scene` passes light straight through (its material's
 /// straight transmittance is non-zero at normal or oblique incidence): a shadow ray may then
 /// cross surfaces before it reaches a port.

@@ -39,7 +39,16 @@
 //     named (a polygon, box or mesh without `outdoor: true`, a RADIANCE primitive whose
 //     modifier is not listed under `outdoor`, a room of the generator seen from another's
 //     port, a Honeybee face), located where it is written, with what makes its light traced;
-//     only a daylight system's parts are not (their `port` says how their light is traced).
+//     only a daylight system's parts are not (their `port` says how their light is traced);
+//   - a receiver-plane grid with glazing that is no port (glass, glazing, an opening, a
+//     dielectric) inside its outline, some of it on the side its sensors face, tilted more
+//     than 30 degrees from the plane (a pane lying over it, a light pipe's diffuser, sends a
+//     smooth field down and is not named): an interior
+//     glazed partition drawn as polygons, boxes, a mesh or an imported scene. The light the
+//     rooms' surfaces send through it reaches the plane as photons alone, and the plane's
+//     kernel blurs its sharp footprint (0.5 m behind a 1 m clear pane over a wall: 6-7 % low).
+//     A room's own interior windows lie on its grid's outline (within GlazingOverPlaneEdge_m)
+//     and are not named; a room lit only through them is gathered (project/scene_builder.cpp).
 //
 // And it notes (located, printed by `check`, written to run.log) the receiver-plane sensors
 // nearer than engine::NearCutGather_m to a surface that crosses the work plane inside its
@@ -73,6 +82,14 @@ constexpr std::size_t PlacementExamples = 3;
 /// Outline probes: this far inside a receiver plane's outline, this far apart along it.
 constexpr double OutlineProbeInset_m = 0.02;
 constexpr double OutlineProbeSpacing_m = 0.1;
+/// Glazing over a receiver plane (no port, passing light straight through): its centroid
+/// farther than this inside the outline, and some of it farther than this on the side the
+/// sensors face, is an interior glazed partition (a warning); nearer the outline it is a
+/// room's own interior window.
+constexpr double GlazingOverPlaneEdge_m = 0.01;
+/// ... and standing across the plane: |cos| of the angle between their normals below this
+/// (tilted more than 30 degrees from the plane); a pane lying over the plane is not named.
+constexpr double GlazingOverPlaneMaxCos = 0.866;
 /// Exterior geometry: rays per port (points x directions, both square lattices) and the share
 /// of an opening's cosine-weighted outward view above which an element that only shades is named.
 constexpr int ExteriorViewPoints = 16;
