@@ -177,10 +177,11 @@ std::optional<PathStart> pass_port(const Scene& scene, const PortPane& pane, con
   const Port& port = *pane.port;
   const Material& material = *pane.material;
   if (pane.straight_only) {
-    // These transmit only straight through; what they reflect goes back out of the room and is
-    // not followed. So the photon passes with the transmittance as its weight instead of a
-    // sampled event and roulette: the same expected flux, and no entering photon lost at the
-    // pane (docs/photon-tracing.md, "The first scattering event").
+    // These transmit only straight through, and what they reflect goes back out of the room
+    // (followed outdoors by reflect_off_pane where outdoor scatterers can send it back). So the
+    // photon passes with the transmittance as its weight instead of a sampled event and
+    // roulette: the same expected flux, and no entering photon lost at the pane
+    // (docs/photon-tracing.md, "The first scattering event").
     const Vec3 t = material.straight_transmittance(entry.direction, port.normal);
     if (!(channel_mean(t) > 0)) return std::nullopt;
     PathStart start;
@@ -193,6 +194,29 @@ std::optional<PathStart> pass_port(const Scene& scene, const PortPane& pane, con
   std::optional<PathStart> start =
       first_event(scene, material, entry.position, port.normal, entry.direction, source, scattering, roulette_rng);
   if (start && dot(start->direction, port.normal) <= 0) return std::nullopt;  // back out of the room
+  return start;
+}
+
+// What a glass, glazing or opening port reflects of a photon entering it from the sky: the
+// pane's specular reflection (albedo less straight transmittance: these have no diffuse
+// part), followed outdoors where outdoor scatterers can send it back through a port (a
+// north-light roof facing the next tooth's glazing, a reveal, an overhang, an exterior
+// shelf). Under an open sky it leaves for good and is not started: the scene has no outdoor
+// scatterer then. Nothing, where the pane reflects nothing (an opening).
+std::optional<PathStart> reflect_off_pane(const Scene& scene, const PortPane& pane, const PortEntry& entry,
+                                          std::uint32_t source) {
+  if (!pane.straight_only || scene.outdoor_scatterers().empty()) return std::nullopt;
+  const Port& port = *pane.port;
+  const Vec3 r = pane.material->albedo(entry.direction, port.normal) -
+                 pane.material->straight_transmittance(entry.direction, port.normal);
+  if (!(channel_mean(r) > 1e-9)) return std::nullopt;
+  PathStart start;
+  start.flux = {std::max(0.0, r.x), std::max(0.0, r.y), std::max(0.0, r.z)};
+  start.direction = normalize(entry.direction - port.normal * (2 * dot(entry.direction, port.normal)));
+  start.origin = scene.offset_ray_origin(entry.position, port.normal, start.direction);
+  start.source = source;
+  start.scattered = true;  // a specular reflection: Caustic until a diffuse event
+  start.outdoors = true;
   return start;
 }
 
@@ -404,12 +428,21 @@ AttemptCounts trace_attempts(const Scene& scene, const std::vector<Material>& ma
           sink.record_on_diffusing_port(make_photon(entry->position, {1, 1, 1}, pane.port->normal * -1.0, source,
                                                   ratio_code, quadrant, PathClass::Direct));
       }
-      if (!start) continue;
-      start->sky_ratio_code = ratio_code;
-      start->sky_quadrant = quadrant;
-      const bool indoors = trace_path_to(scene, materials, planes, *start, options, scattering, roulette_rng,
-                                         sink, &out.rays);
-      if (entry->scatterer >= 0 && indoors) ++out.scattered_indoors;
+      if (start) {
+        start->sky_ratio_code = ratio_code;
+        start->sky_quadrant = quadrant;
+        const bool indoors = trace_path_to(scene, materials, planes, *start, options, scattering, roulette_rng,
+                                           sink, &out.rays);
+        if (entry->scatterer >= 0 && indoors) ++out.scattered_indoors;
+      }
+      // The pane's outward reflection, after the transmitted path (from the same streams).
+      if (entry->port >= 0)
+        if (std::optional<PathStart> back =
+                reflect_off_pane(scene, panes[static_cast<std::size_t>(entry->port)], *entry, source)) {
+          back->sky_ratio_code = ratio_code;
+          back->sky_quadrant = quadrant;
+          trace_path_to(scene, materials, planes, *back, options, scattering, roulette_rng, sink, &out.rays);
+        }
     }
     out.complete = true;
   });
