@@ -109,9 +109,6 @@ nlohmann::json site_json(const project::Site& project_site, const SunSite* sun_s
   return j;
 }
 
-/// One case: photons, coefficients, daylight factor, annual results, into `dir`/<grid>/.
-/// Returns the grids' part of summary.json. `label` prefixes log lines of variants. `keep`
-/// (optional) receives the annual tables of every grid for the operated result.
 /// summary.json's "sunlight_exposure" of a case: per room its hours, level and spells.
 nlohmann::json sunlight_summary(const std::vector<RoomSunlight>& rooms) {
   nlohmann::json a = nlohmann::json::array();
@@ -126,6 +123,9 @@ nlohmann::json sunlight_summary(const std::vector<RoomSunlight>& rooms) {
   return a;
 }
 
+/// One case: photons, coefficients, daylight factor, annual results, into `dir`/<grid>/.
+/// Returns the grids' part of summary.json. `label` prefixes log lines of variants. `keep`
+/// (optional) receives the annual tables of every grid for the operated result.
 nlohmann::json run_case(const project::Project& project, const std::string& label,
                         const std::string& dir, RunContext& ctx, CaseTables* keep = nullptr) {
   const project::Simulation& sim = project.simulation;
