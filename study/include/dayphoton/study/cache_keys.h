@@ -49,7 +49,9 @@ namespace dayphoton::study {
 /// 8: a diffusing port (translucent, transmitted_specular < 1) keeps the Direct photons on its
 /// sky side, and the photons on it are stored outside the region of interest too
 /// (docs/photon-tracing.md, "Region of interest").
-constexpr int EngineCacheVersion = 8;
+/// 9: a glass, glazing or opening port's outward reflection is traced outdoors where the scene
+/// has outdoor scatterers (docs/photon-tracing.md, "The first scattering event").
+constexpr int EngineCacheVersion = 9;
 
 ContentHash scene_key(const SceneDescription& scene);
 ContentHash planes_key(const std::vector<SensorGrid>& grids);
